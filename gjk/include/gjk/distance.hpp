@@ -1,0 +1,634 @@
+// GJK distance between two convex shapes in 2D, following Erin Catto, "Computing Distance",
+// GDC 2010 (the talk; section numbers below refer to it):
+//   1. point to line segment      -> solve2      (Voronoi regions from barycentric (u, v))
+//   2. point to triangle          -> solve3      (nine barycentric coordinates, talk's order)
+//   3. point to convex polygon    -> distance()  (GJK: simplex, support point, search direction,
+//                                                  termination cases 1-4)
+//   4. polygon to polygon         -> findSupport on the Minkowski difference, never built
+//
+// Conventions (pinned by tests in tests/gjk/test_distance.cpp, "conventions"):
+// - A shape is the convex hull of its points (any order, duplicates, collinear and interior points
+//   allowed: a non-convex point is simply never a support point), grown by its radius.
+// - The query runs on Z = A - B: a simplex vertex is w = wA - wB with wA a point of A and wB a
+//   point of B. The talk writes Z = Y - X and searches for the point of Z closest to Q; here Q is
+//   the origin, Y = A and X = B, as in Box2D v3.
+// - The query runs in the local frame of shape A (Options::frame = Frame::LocalA): B's points are
+//   mapped by inverse(xfA) * xfB, so a large common offset cancels before any rounding of the gap.
+//   Witness points, normal and trace frame are returned in world coordinates.
+// - normal is the unit vector from pointA to pointB when the shapes are apart, zero otherwise.
+#pragma once
+
+#include "gjk/math.hpp"
+
+#include <cassert>
+#include <cstdint>
+#include <vector>
+
+#if defined(GJK2D_CHECKED)
+#include <cstdio>
+#include <cstdlib>
+#define GJK_ASSERT(c)                                                                              \
+    ((c) ? (void)0                                                                                 \
+         : (std::fprintf(stderr, "%s:%d: GJK contract violated: %s\n", __FILE__, __LINE__, #c),     \
+            std::abort()))
+#else
+#define GJK_ASSERT(c) assert(c)
+#endif
+
+namespace gjk
+{
+
+// A convex shape: the hull of `count` points in its local frame, plus a radius (a rounded shape,
+// capsule or disc). A view: the points are owned by the caller.
+template <class T> struct Polygon
+{
+    const Vec2<T>* points = nullptr;
+    int count = 0;
+    T radius = T(0);
+};
+
+// --- Variants are data ---------------------------------------------------------------------------
+
+enum class SearchDirection : std::uint8_t
+{
+    // Talk, "An accurate search direction": on an edge, d = cross(edge, z) with its sign fixed
+    // towards the origin. dot(d, edge) == 0 exactly in floating point. No division.
+    EdgePerpendicular,
+    // The naive rule, d = Q - P from the barycentric closest point: dot(d, edge) carries roundoff
+    // (the talk's single-precision example gives 3.2e-6), which can pick a wrong support point.
+    ClosestPoint,
+};
+
+enum class StoppingRule : std::uint8_t
+{
+    // Talk, "Termination conditions", case 1: stop when the support point is already a vertex of
+    // the simplex (compared by index pair). Exact: no tolerance at all.
+    RepeatedSupport,
+    // Also stop when the new support point w cannot lower the distance by more than roundoff:
+    // dot(v, v) - dot(v, w) <= Tolerances<T>::dualityGap * dot(v, v) (v: current closest point).
+    // The duality gap bounds the distance error: d(v) - d* <= (v.v - v.w) / |v|.
+    DualityGap,
+};
+
+enum class Frame : std::uint8_t
+{
+    LocalA, // compute in A's local frame (see the conventions above)
+    World,  // transform both shapes to world coordinates first (loses small gaps far from 0)
+};
+
+enum class SupportStrategy : std::uint8_t
+{
+    Linear, // the talk's loop over all vertices: any point order
+};
+
+struct Options
+{
+    SearchDirection direction = SearchDirection::EdgePerpendicular;
+    StoppingRule stopping = StoppingRule::RepeatedSupport;
+    Frame frame = Frame::LocalA;
+    SupportStrategy support = SupportStrategy::Linear;
+    // Iteration limit; 0 means automatic: 32 + 2 * (countA + countB). With exact arithmetic the
+    // distance decreases strictly at every iteration, so a long run means a cycle made by rounding;
+    // reaching the limit is reported as StopReason::IterationLimit, never silently.
+    int maxIterations = 0;
+    // Apply the radii at the end (rounded shapes). false: distance between the core hulls.
+    bool useRadii = true;
+};
+
+// The reference variant, with a stable name. The default Options{} is this variant.
+inline constexpr Options referenceOptions{};
+
+// Why the loop stopped; every stopping rule of the talk has its own name.
+enum class StopReason : std::uint8_t
+{
+    RepeatedSupport, // case 1 (and cases 3b and 4 end here when d points away from new vertices)
+    Containment,     // case 2: all three triangle barycentric coordinates positive
+    ZeroDirection,   // case 3a: the closest point is the origin itself (vertex overlap)
+    DualityGap,      // StoppingRule::DualityGap met
+    IterationLimit,  // Options::maxIterations reached: the answer is the best simplex so far
+};
+
+inline const char* stopReasonName(StopReason r)
+{
+    switch (r)
+    {
+    case StopReason::RepeatedSupport: return "repeated-support";
+    case StopReason::Containment: return "containment";
+    case StopReason::ZeroDirection: return "zero-direction";
+    case StopReason::DualityGap: return "duality-gap";
+    case StopReason::IterationLimit: return "iteration-limit";
+    }
+    return "?";
+}
+
+// --- Simplex -------------------------------------------------------------------------------------
+
+template <class T> struct SimplexVertex
+{
+    Vec2<T> wA;     // support point of A (compute frame)
+    Vec2<T> wB;     // support point of B (compute frame)
+    Vec2<T> w;      // wA - wB, a point of the Minkowski difference Z
+    T a;            // barycentric weight of this vertex in the closest point
+    int indexA;     // index of wA in A's points
+    int indexB;     // index of wB in B's points
+};
+
+template <class T> struct Simplex
+{
+    SimplexVertex<T> v[3];
+    int count = 0;
+};
+
+// Warm start: the indices of the final simplex. A value-initialised cache is a cold start; pass the
+// output cache back in for the next query between the same shapes.
+struct SimplexCache
+{
+    int count = 0;
+    int indexA[3] = {0, 0, 0};
+    int indexB[3] = {0, 0, 0};
+};
+
+// --- Input, output, trace ------------------------------------------------------------------------
+
+template <class T> struct DistanceInput
+{
+    Polygon<T> proxyA;
+    Polygon<T> proxyB;
+    Transform<T> transformA;
+    Transform<T> transformB;
+};
+
+template <class T> struct DistanceOutput
+{
+    Vec2<T> pointA{};    // closest point on A (world), on the rounded surface when radii are used
+    Vec2<T> pointB{};    // closest point on B (world)
+    Vec2<T> normal{};    // unit, from pointA towards pointB when distance > 0; zero otherwise
+    T distance = T(0);   // >= 0
+    int iterations = 0;  // support points computed
+    int simplexCount = 0;
+    StopReason stop = StopReason::RepeatedSupport;
+};
+
+// One GJK iteration as the talk's demo draws it: the simplex after culling, its closest point to
+// the origin, the search direction and the support point it found. Compute-frame coordinates;
+// Trace::frame maps them to world.
+template <class T> struct TraceStep
+{
+    Simplex<T> simplex;
+    Vec2<T> closest;
+    Vec2<T> direction;
+    bool hasSupport = false;
+    SimplexVertex<T> support;
+};
+
+template <class T> struct Trace
+{
+    Transform<T> frame; // world from compute frame
+    std::vector<TraceStep<T>> steps;
+};
+
+// --- Support points (talk section 3 "Support point code", section 4 "Property 2") ---------------
+
+// Index of the vertex furthest along d. d need not be normalised: only comparisons are made.
+// Ties keep the lowest index, so a repeated support point is recognised by its index.
+template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d)
+{
+    int index = 0;
+    T maxValue = dot(d, poly.points[0]);
+    for (int i = 1; i < poly.count; ++i)
+    {
+        const T value = dot(d, poly.points[i]);
+        if (value > maxValue)
+        {
+            index = i;
+            maxValue = value;
+        }
+    }
+    return index;
+}
+
+// A shape seen through a transform into the compute frame: the support runs on the shape's own
+// points with the direction rotated into its frame; only the chosen point is transformed.
+template <class T> struct TransformedShape
+{
+    Polygon<T> poly;
+    Transform<T> xf;
+
+    int support(Vec2<T> d) const { return findSupport(poly, invRotate(xf.q, d)); }
+    Vec2<T> vertex(int i) const { return transformPoint(xf, poly.points[i]); }
+};
+
+// support(Z, d) = support(A, d) - support(B, -d): the Minkowski difference is never built.
+template <class T>
+SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape<T>& B, int iA, int iB)
+{
+    SimplexVertex<T> v;
+    v.indexA = iA;
+    v.indexB = iB;
+    v.wA = A.vertex(iA);
+    v.wB = B.vertex(iB);
+    v.w = v.wA - v.wB;
+    v.a = T(1);
+    return v;
+}
+
+template <class T>
+SimplexVertex<T> findMinkowskiSupport(const TransformedShape<T>& A, const TransformedShape<T>& B,
+                                      Vec2<T> d)
+{
+    return makeVertex(A, B, A.support(d), B.support(-d));
+}
+
+// --- Section 1: point (the origin) to line segment -----------------------------------------------
+//
+// Segment w1 w2 and query point Q = 0. With n = (w2 - w1)/|w2 - w1| the barycentric coordinates
+// of the projection of Q are
+//   u = dot(Q - w2, w1 - w2) / |w2 - w1|^2   (weight of w1)
+//   v = dot(Q - w1, w2 - w1) / |w2 - w1|^2   (weight of w2),   u + v = 1.
+// Only their numerators decide the Voronoi region (no division):
+//   u <= 0 -> region w2,  v <= 0 -> region w1,  otherwise region w1w2 with P = u w1 + v w2.
+template <class T> void solve2(Simplex<T>& s)
+{
+    const Vec2<T> w1 = s.v[0].w;
+    const Vec2<T> w2 = s.v[1].w;
+    const Vec2<T> e12 = w2 - w1;
+
+    const T u = dot(w2, e12);  // numerator of u: dot(0 - w2, w1 - w2)
+    const T v = -dot(w1, e12); // numerator of v: dot(0 - w1, w2 - w1)
+
+    if (v <= T(0)) // region w1
+    {
+        s.v[0].a = T(1);
+        s.count = 1;
+        return;
+    }
+    if (u <= T(0)) // region w2
+    {
+        s.v[1].a = T(1);
+        s.v[0] = s.v[1];
+        s.count = 1;
+        return;
+    }
+    // region w1w2: u, v > 0 so their sum is positive and the division is safe.
+    const T inv = T(1) / (u + v);
+    s.v[0].a = u * inv;
+    s.v[1].a = v * inv;
+    s.count = 2;
+}
+
+// --- Section 2: point (the origin) to triangle ---------------------------------------------------
+//
+// Nine barycentric coordinates (numerators only):
+//   three segments as in solve2: (u12, v12), (u13, v13), (u23, v23),
+//   the triangle from signed areas: u123 = area(Q w2 w3), v123 = area(Q w3 w1), w123 = area(Q w1 w2),
+//   each multiplied by area(w1 w2 w3) so their signs are right whatever the winding:
+//   u123 = n * cross(w2, w3), v123 = n * cross(w3, w1), w123 = n * cross(w1, w2), n = cross(e12, e13).
+// Regions are tested in the talk's order, lowest dimension first: vertices, then edges, then the
+// interior. The area n is never divided by to choose a region: for a collinear (zero-area) triangle
+// all triangle coordinates are 0, every edge test "w123 <= 0" passes, and a vertex or edge region
+// is chosen from the segment coordinates alone (talk, "Collinear vertices").
+template <class T> void solve3(Simplex<T>& s)
+{
+    const Vec2<T> w1 = s.v[0].w;
+    const Vec2<T> w2 = s.v[1].w;
+    const Vec2<T> w3 = s.v[2].w;
+
+    const Vec2<T> e12 = w2 - w1;
+    const T u12 = dot(w2, e12);
+    const T v12 = -dot(w1, e12);
+
+    const Vec2<T> e13 = w3 - w1;
+    const T u13 = dot(w3, e13);
+    const T v13 = -dot(w1, e13);
+
+    const Vec2<T> e23 = w3 - w2;
+    const T u23 = dot(w3, e23);
+    const T v23 = -dot(w2, e23);
+
+    const T n123 = cross(e12, e13);
+    const T u123 = n123 * cross(w2, w3);
+    const T v123 = n123 * cross(w3, w1);
+    const T w123 = n123 * cross(w1, w2);
+
+    auto keepVertex = [&s](int i)
+    {
+        s.v[0] = s.v[i];
+        s.v[0].a = T(1);
+        s.count = 1;
+    };
+    auto keepEdge = [&s](int i, int j, T ui, T vj)
+    {
+        const T inv = T(1) / (ui + vj);
+        const SimplexVertex<T> a = s.v[i], b = s.v[j];
+        s.v[0] = a;
+        s.v[1] = b;
+        s.v[0].a = ui * inv;
+        s.v[1].a = vj * inv;
+        s.count = 2;
+    };
+
+    // First: vertex regions, from the segment coordinates.
+    if (v12 <= T(0) && v13 <= T(0))
+        return keepVertex(0); // region w1
+    if (u12 <= T(0) && v23 <= T(0))
+        return keepVertex(1); // region w2
+    if (u13 <= T(0) && u23 <= T(0))
+        return keepVertex(2); // region w3
+
+    // Second: edge regions: between the edge's endpoints and outside it (triangle coordinate of the
+    // opposite vertex not positive).
+    if (u12 > T(0) && v12 > T(0) && w123 <= T(0))
+        return keepEdge(0, 1, u12, v12); // region w1w2
+    if (u13 > T(0) && v13 > T(0) && v123 <= T(0))
+        return keepEdge(0, 2, u13, v13); // region w1w3
+    if (u23 > T(0) && v23 > T(0) && u123 <= T(0))
+        return keepEdge(1, 2, u23, v23); // region w2w3
+
+    // Third: the interior. All three triangle coordinates are positive here whenever the segment
+    // tests were consistent; then their sum n123^2 is positive and the division is safe.
+    if (u123 > T(0) && v123 > T(0) && w123 > T(0))
+    {
+        const T inv = T(1) / (u123 + v123 + w123);
+        s.v[0].a = u123 * inv;
+        s.v[1].a = v123 * inv;
+        s.v[2].a = w123 * inv;
+        s.count = 3;
+        return;
+    }
+
+    // Rounding made the nine signs inconsistent (a nearly degenerate triangle): no region matched.
+    // Keep the closest of the three edges, each solved as in section 1. Never divides by the area.
+    Simplex<T> best;
+    T bestDist2 = std::numeric_limits<T>::infinity();
+    const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
+    for (const auto& p : pairs)
+    {
+        Simplex<T> e;
+        e.v[0] = s.v[p[0]];
+        e.v[1] = s.v[p[1]];
+        e.count = 2;
+        solve2(e);
+        const Vec2<T> c = e.count == 1 ? e.v[0].w : e.v[0].a * e.v[0].w + e.v[1].a * e.v[1].w;
+        if (dot(c, c) < bestDist2)
+        {
+            bestDist2 = dot(c, c);
+            best = e;
+        }
+    }
+    s = best;
+}
+
+// --- Closest point, search direction, witness points ---------------------------------------------
+
+// P, the point of the simplex closest to the origin, from the barycentric weights.
+template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
+{
+    switch (s.count)
+    {
+    case 1: return s.v[0].w;
+    case 2: return s.v[0].a * s.v[0].w + s.v[1].a * s.v[1].w;
+    default: return Vec2<T>{};
+    }
+}
+
+// The direction from P towards Q = 0 in which to look for the next support point.
+template <class T> Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule)
+{
+    if (s.count == 1)
+        return -s.v[0].w;
+    if (rule == SearchDirection::ClosestPoint)
+        return -closestPoint(s);
+    // Talk, "An accurate search direction" and "Fixing the sign": d = cross(e, z) or cross(z, e),
+    // whichever has dot(d, Q - w1) > 0. When the origin is on the edge (cases 3b and 4) the sign is
+    // arbitrary: we take rightPerp, and the loop ends by a repeated vertex or containment.
+    const Vec2<T> e12 = s.v[1].w - s.v[0].w;
+    const T sgn = cross(e12, -s.v[0].w);
+    return sgn > T(0) ? leftPerp(e12) : rightPerp(e12);
+}
+
+// Closest points on A and B from the barycentric weights (talk section 4, "Closest point on
+// polygons"): the same weights applied to the simplex vertices' own points.
+template <class T> void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, Vec2<T>& pB)
+{
+    switch (s.count)
+    {
+    case 1:
+        pA = s.v[0].wA;
+        pB = s.v[0].wB;
+        break;
+    case 2:
+        pA = s.v[0].a * s.v[0].wA + s.v[1].a * s.v[1].wA;
+        pB = s.v[0].a * s.v[0].wB + s.v[1].a * s.v[1].wB;
+        break;
+    default:
+        pA = s.v[0].a * s.v[0].wA + s.v[1].a * s.v[1].wA + s.v[2].a * s.v[2].wA;
+        pB = pA; // containment: the shapes overlap
+        break;
+    }
+}
+
+// Distance from the origin to the simplex. For an edge we use |cross(w1, w2)| / |w2 - w1|, the
+// height of the triangle (0, w1, w2): it does not suffer the cancellation of |u w1 + v w2|.
+template <class T> T simplexDistance(const Simplex<T>& s)
+{
+    switch (s.count)
+    {
+    case 1: return length(s.v[0].w);
+    case 2:
+    {
+        const Vec2<T> e12 = s.v[1].w - s.v[0].w;
+        return std::abs(cross(s.v[0].w, s.v[1].w)) / length(e12);
+    }
+    default: return T(0);
+    }
+}
+
+// --- Section 3 and 4: the GJK loop ---------------------------------------------------------------
+
+template <class T>
+DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
+                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
+{
+    const Polygon<T>& polyA = input.proxyA;
+    const Polygon<T>& polyB = input.proxyB;
+    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
+    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+
+    // The compute frame: A's local frame (world = xfA * local) or the world itself.
+    Transform<T> world;
+    TransformedShape<T> A{polyA, {}};
+    TransformedShape<T> B{polyB, {}};
+    if (options.frame == Frame::LocalA)
+    {
+        world = input.transformA;
+        B.xf = invMulTransforms(input.transformA, input.transformB);
+    }
+    else
+    {
+        A.xf = input.transformA;
+        B.xf = input.transformB;
+    }
+    if (trace)
+    {
+        trace->frame = world;
+        trace->steps.clear();
+    }
+
+    // Start from the cache (warm) or from the first vertex of each shape (cold, "pick an arbitrary
+    // initial simplex"). Stale indices (shapes changed) fall back to a cold start.
+    Simplex<T> simplex;
+    bool cacheValid = cache.count >= 1 && cache.count <= 3;
+    for (int i = 0; cacheValid && i < cache.count; ++i)
+        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < polyA.count &&
+                     cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
+    if (cacheValid)
+    {
+        simplex.count = cache.count;
+        for (int i = 0; i < cache.count; ++i)
+            simplex.v[i] = makeVertex(A, B, cache.indexA[i], cache.indexB[i]);
+    }
+    else
+    {
+        simplex.count = 1;
+        simplex.v[0] = makeVertex(A, B, 0, 0);
+    }
+
+    const int maxIterations =
+        options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (polyA.count + polyB.count);
+
+    DistanceOutput<T> out;
+    out.stop = StopReason::IterationLimit;
+    int iteration = 0;
+    for (;;)
+    {
+        // Remember the simplex vertices to detect a repeated support point (case 1).
+        int saveA[3], saveB[3];
+        const int saveCount = simplex.count;
+        for (int i = 0; i < saveCount; ++i)
+        {
+            saveA[i] = simplex.v[i].indexA;
+            saveB[i] = simplex.v[i].indexB;
+        }
+
+        // Compute the closest point P on the simplex and cull non-contributing vertices.
+        switch (simplex.count)
+        {
+        case 1: break;
+        case 2: solve2(simplex); break;
+        case 3: solve3(simplex); break;
+        }
+
+        if (simplex.count == 3) // case 2: containment, the origin is inside Z
+        {
+            out.stop = StopReason::Containment;
+            if (trace)
+                trace->steps.push_back({simplex, Vec2<T>{}, Vec2<T>{}, false, {}});
+            break;
+        }
+
+        const Vec2<T> d = searchDirection(simplex, options.direction);
+        if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
+        {
+            out.stop = StopReason::ZeroDirection;
+            if (trace)
+                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
+            break;
+        }
+        if (iteration == maxIterations)
+        {
+            out.stop = StopReason::IterationLimit;
+            if (trace)
+                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
+            break;
+        }
+
+        // New support point of Z in direction d.
+        const SimplexVertex<T> w = findMinkowskiSupport(A, B, d);
+        ++iteration;
+        if (trace)
+            trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
+
+        // Case 1: the support point is already in the simplex: no more progress possible.
+        bool duplicate = false;
+        for (int i = 0; i < saveCount; ++i)
+            duplicate = duplicate || (w.indexA == saveA[i] && w.indexB == saveB[i]);
+        if (duplicate)
+        {
+            out.stop = StopReason::RepeatedSupport;
+            break;
+        }
+
+        if (options.stopping == StoppingRule::DualityGap)
+        {
+            const Vec2<T> v = closestPoint(simplex);
+            const T vv = dot(v, v);
+            if (vv - dot(v, w.w) <= Tolerances<T>::dualityGap * vv)
+            {
+                out.stop = StopReason::DualityGap;
+                break;
+            }
+        }
+
+        simplex.v[simplex.count] = w;
+        ++simplex.count;
+    }
+
+    // Output: closest points from the barycentric weights, in world coordinates.
+    Vec2<T> pA, pB;
+    computeWitnessPoints(simplex, pA, pB);
+    T dist = simplexDistance(simplex);
+    Vec2<T> normal{};
+    if (dist > T(0))
+    {
+        // Unit normal from A to B. On an edge it is the exact perpendicular of the edge, which is
+        // more accurate than normalising the tiny difference pB - pA.
+        const Vec2<T> d = simplex.count == 1 ? -simplex.v[0].w : searchDirection(simplex, SearchDirection::EdgePerpendicular);
+        normal = (T(1) / length(d)) * d;
+    }
+
+    if (options.useRadii && (polyA.radius > T(0) || polyB.radius > T(0)))
+    {
+        const T rA = polyA.radius, rB = polyB.radius;
+        if (dist > rA + rB)
+        {
+            // Move the witness points onto the rounded surfaces.
+            dist -= rA + rB;
+            pA = pA + rA * normal;
+            pB = pB - rB * normal;
+        }
+        else
+        {
+            // The rounded shapes overlap: report the midpoint on both, distance 0.
+            const Vec2<T> p = T(0.5) * (pA + pB);
+            pA = p;
+            pB = p;
+            dist = T(0);
+            normal = Vec2<T>{};
+        }
+    }
+
+    out.pointA = transformPoint(world, pA);
+    out.pointB = transformPoint(world, pB);
+    out.normal = rotate(world.q, normal);
+    out.distance = dist;
+    out.iterations = iteration;
+    out.simplexCount = simplex.count;
+
+    cache.count = simplex.count;
+    for (int i = 0; i < simplex.count; ++i)
+    {
+        cache.indexA[i] = simplex.v[i].indexA;
+        cache.indexB[i] = simplex.v[i].indexB;
+    }
+    return out;
+}
+
+// Convenience: a cold query (value-initialised cache).
+template <class T>
+DistanceOutput<T> distance(const DistanceInput<T>& input, const Options& options = referenceOptions)
+{
+    SimplexCache cache;
+    return distance(input, cache, options);
+}
+
+} // namespace gjk

@@ -1,0 +1,90 @@
+// Small 2D vector algebra for the GJK library: vectors, rotations stored as (cos, sin), rigid
+// transforms, and the scalar traits that hold every tolerance. Header-only, no allocation, no I/O.
+#pragma once
+
+#include <cmath>
+#include <limits>
+
+namespace gjk
+{
+
+template <class T> struct Vec2
+{
+    T x{}, y{};
+};
+
+template <class T> constexpr Vec2<T> operator+(Vec2<T> a, Vec2<T> b) { return {a.x + b.x, a.y + b.y}; }
+template <class T> constexpr Vec2<T> operator-(Vec2<T> a, Vec2<T> b) { return {a.x - b.x, a.y - b.y}; }
+template <class T> constexpr Vec2<T> operator-(Vec2<T> a) { return {-a.x, -a.y}; }
+template <class T> constexpr Vec2<T> operator*(T s, Vec2<T> a) { return {s * a.x, s * a.y}; }
+template <class T> constexpr bool operator==(Vec2<T> a, Vec2<T> b) { return a.x == b.x && a.y == b.y; }
+
+template <class T> constexpr T dot(Vec2<T> a, Vec2<T> b) { return a.x * b.x + a.y * b.y; }
+// The 2D cross product is the scalar z-component of the 3D one: twice the signed area of the
+// triangle (0, a, b), positive when b lies counter-clockwise of a.
+template <class T> constexpr T cross(Vec2<T> a, Vec2<T> b) { return a.x * b.y - a.y * b.x; }
+// cross(v, z) and cross(z, v) with z the plane normal: the two perpendiculars of v. The talk's
+// "accurate search direction": dot(v, leftPerp(v)) = -x*y + y*x, which is exactly zero in floating
+// point because both products round identically (this needs -ffp-contract=off).
+template <class T> constexpr Vec2<T> leftPerp(Vec2<T> v) { return {-v.y, v.x}; }
+template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v) { return {v.y, -v.x}; }
+template <class T> T length(Vec2<T> v) { return std::hypot(v.x, v.y); }
+
+// A rotation stored as the two numbers the caller computed once, c = cos(angle), s = sin(angle).
+// They are used as given (never recomputed from an angle), so the exact side can apply the very
+// same rotation to judge the result.
+template <class T> struct Rot
+{
+    T c = T(1), s = T(0);
+};
+
+template <class T> constexpr Vec2<T> rotate(Rot<T> q, Vec2<T> v)
+{
+    return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
+}
+template <class T> constexpr Vec2<T> invRotate(Rot<T> q, Vec2<T> v)
+{
+    return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
+}
+// inverse(a) * b
+template <class T> constexpr Rot<T> invMulRot(Rot<T> a, Rot<T> b)
+{
+    return {a.c * b.c + a.s * b.s, a.c * b.s - a.s * b.c};
+}
+
+// x_world = rotate(q, x_local) + p, evaluated as c*x - s*y + px (the order the exact side uses).
+template <class T> struct Transform
+{
+    Vec2<T> p{};
+    Rot<T> q{};
+};
+
+template <class T> constexpr Vec2<T> transformPoint(const Transform<T>& xf, Vec2<T> v)
+{
+    return {(xf.q.c * v.x - xf.q.s * v.y) + xf.p.x, (xf.q.s * v.x + xf.q.c * v.y) + xf.p.y};
+}
+template <class T> constexpr Vec2<T> invTransformPoint(const Transform<T>& xf, Vec2<T> v)
+{
+    return invRotate(xf.q, v - xf.p);
+}
+// inverse(a) * b: maps B's local coordinates into A's local frame. The translation is
+// invRotate(qA, pB - pA): the common offset of two shapes far from the origin cancels in the
+// subtraction (exactly, by Sterbenz's lemma, when pB and pA are within a factor two) before any
+// rounding of the small quantities happens.
+template <class T> constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T>& b)
+{
+    return {invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
+}
+
+// Every tolerance of the library, per scalar type. No FLT_EPSILON in templated code.
+template <class T> struct Tolerances
+{
+    // Unit roundoff u = eps/2 of round-to-nearest.
+    static constexpr T unitRoundoff = std::numeric_limits<T>::epsilon() / T(2);
+    // DualityGap stopping rule: stop when dot(v, v) - dot(v, w) <= dualityGap * dot(v, v), i.e.
+    // when the new support point w can lower the squared distance by less than a few roundings of
+    // the dot products (each carries up to ~2u relative error with respect to the larger term).
+    static constexpr T dualityGap = T(16) * unitRoundoff;
+};
+
+} // namespace gjk

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs the Debian packages this project needs, only when some are missing.
+#   scripts/setup.sh          packages to build and run the validation campaign
+#   scripts/setup.sh --tests  also what the test suite needs (Catch2, Chromium for the browser test)
+# Exit codes: 0 everything present (or installed), 3 packages missing and we cannot install them
+# (not root, or no apt-get): the exact command to run is printed.
+set -euo pipefail
+
+packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev)
+if [[ "${1:-}" == "--tests" ]]; then
+  packages+=(catch2 chromium)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  # dpkg-query is fast (no network): the common case, everything present, costs well under a second.
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+
+cmd="apt-get update && apt-get install -y --no-install-recommends ${missing[*]}"
+if [[ $(id -u) -ne 0 ]] || ! command -v apt-get >/dev/null; then
+  echo "setup: missing Debian packages: ${missing[*]}" >&2
+  echo "setup: run as root:  $cmd" >&2
+  exit 3
+fi
+echo "setup: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

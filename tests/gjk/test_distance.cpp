@@ -1,0 +1,588 @@
+// Talk sections 3 and 4: GJK between a point or polygon and a polygon, its termination cases, the
+// numerical issues the talk lists, witness points, radii, transforms, warm start, and the
+// symmetries every distance must have. Expected values are derived by hand beside each case.
+#include "gjk/distance.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+using namespace gjk;
+
+namespace
+{
+template <class T> using Points = std::vector<Vec2<T>>;
+
+template <class T> struct Scene
+{
+    Points<T> a, b;
+    T radiusA = 0, radiusB = 0;
+    Transform<T> xfA{}, xfB{};
+
+    DistanceInput<T> input() const
+    {
+        return {{a.data(), int(a.size()), radiusA}, {b.data(), int(b.size()), radiusB}, xfA, xfB};
+    }
+};
+
+template <class T> DistanceOutput<T> query(const Scene<T>& s, const Options& o = {}, Trace<T>* tr = nullptr)
+{
+    SimplexCache cache;
+    return distance(s.input(), cache, o, tr);
+}
+
+// Largest coordinate magnitude of the scene in world coordinates: the problem's scale R.
+template <class T> T scaleOf(const Scene<T>& s)
+{
+    T r = T(0);
+    for (auto p : s.a)
+    {
+        const Vec2<T> w = transformPoint(s.xfA, p);
+        r = std::max({r, std::abs(w.x), std::abs(w.y)});
+    }
+    for (auto p : s.b)
+    {
+        const Vec2<T> w = transformPoint(s.xfB, p);
+        r = std::max({r, std::abs(w.x), std::abs(w.y)});
+    }
+    return r;
+}
+
+// Distance tolerance for the checks below, relative to the problem's scale R: the distance is
+// formed by about ten rounded operations (transform, w = wA - wB, a cross product, a length and a
+// division) on quantities of magnitude at most a few R, each with error at most u times such a
+// quantity; 64 u R covers them with room to spare, and is still 1e-5 R in float (so it would catch
+// a wrong feature or a wrong region: those are off by a fraction of R).
+template <class T> T tol(T scale) { return T(64) * Tolerances<T>::unitRoundoff * std::max(scale, T(1e-30)); }
+
+// Counter-clockwise convex hull of a small point set (Andrew's monotone chain), in world
+// coordinates: the test's own, independent notion of "the shape".
+template <class T> Points<T> hullOf(const Points<T>& pts, const Transform<T>& xf)
+{
+    Points<T> p;
+    for (auto v : pts)
+        p.push_back(transformPoint(xf, v));
+    std::sort(p.begin(), p.end(), [](Vec2<T> a, Vec2<T> b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3)
+        return p;
+    Points<T> h(2 * p.size());
+    size_t k = 0;
+    for (size_t i = 0; i < p.size(); ++i)
+    {
+        while (k >= 2 && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= T(0))
+            --k;
+        h[k++] = p[i];
+    }
+    for (size_t i = p.size() - 1, t = k + 1; i-- > 0;)
+    {
+        while (k >= t && cross(h[k - 1] - h[k - 2], p[i] - h[k - 2]) <= T(0))
+            --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    return h;
+}
+
+// Distance from p to the hull of pts, negative inside (max over edges of the outward offset).
+// Enough to check that a witness point lies on its shape.
+template <class T> T outsideDistance(const Points<T>& pts, const Transform<T>& xf, Vec2<T> p)
+{
+    const Points<T> h = hullOf(pts, xf);
+    if (h.size() == 1)
+        return length(p - h[0]);
+    if (h.size() == 2)
+    {
+        const Vec2<T> e = h[1] - h[0];
+        const T t = std::clamp(dot(p - h[0], e) / dot(e, e), T(0), T(1));
+        return length(p - (h[0] + t * e));
+    }
+    T worst = -std::numeric_limits<T>::infinity();
+    for (size_t i = 0; i < h.size(); ++i)
+    {
+        const Vec2<T> e = h[(i + 1) % h.size()] - h[i];
+        worst = std::max(worst, -cross(e, p - h[i]) / length(e));
+    }
+    return worst;
+}
+
+// Checks every symmetry of the issue on a scene whose exact distance is `expected`: the query
+// itself, swapping A and B, a common translation, an exact 90 degree rotation and a mirror.
+template <class T> void checkDistanceAndSymmetries(const Scene<T>& s, T expected)
+{
+    const T R = scaleOf(s);
+    const auto out = query(s);
+    CHECK(out.stop != StopReason::IterationLimit);
+    CHECK(out.distance == Approx(expected).margin(tol(R)));
+    // Witness points on their shapes (radius-free scenes) and as far apart as the distance.
+    if (s.radiusA == T(0) && s.radiusB == T(0))
+    {
+        CHECK(outsideDistance(s.a, s.xfA, out.pointA) <= tol(R));
+        CHECK(outsideDistance(s.b, s.xfB, out.pointB) <= tol(R));
+        CHECK(length(out.pointB - out.pointA) == Approx(out.distance).margin(tol(R)));
+    }
+
+    Scene<T> swapped = s;
+    std::swap(swapped.a, swapped.b);
+    std::swap(swapped.radiusA, swapped.radiusB);
+    std::swap(swapped.xfA, swapped.xfB);
+    const auto sw = query(swapped);
+    CHECK(sw.distance == Approx(out.distance).margin(tol(R)));
+    // Swapped witness points: A's point now lies on the old B and vice versa, and the normal
+    // flips (witness points need not be unique, e.g. for parallel edges, so positions are not
+    // compared).
+    if (s.radiusA == T(0) && s.radiusB == T(0))
+    {
+        CHECK(outsideDistance(s.b, s.xfB, sw.pointA) <= tol(R));
+        CHECK(outsideDistance(s.a, s.xfA, sw.pointB) <= tol(R));
+    }
+    CHECK(length(sw.normal + out.normal) <= tol(T(1)));
+
+    // A common translation by (32, -16): exact for every coordinate used in these tests.
+    Scene<T> moved = s;
+    moved.xfA.p = moved.xfA.p + Vec2<T>{32, -16};
+    moved.xfB.p = moved.xfB.p + Vec2<T>{32, -16};
+    CHECK(query(moved).distance == Approx(out.distance).margin(tol(R + 32)));
+
+    // An exact rotation by 90 degrees of the whole scene: (c, s) = (0, 1) composed with each
+    // transform is exact (it only swaps and negates coordinates).
+    Scene<T> turned = s;
+    for (auto* xf : {&turned.xfA, &turned.xfB})
+    {
+        xf->q = {-xf->q.s, xf->q.c};
+        xf->p = {-xf->p.y, xf->p.x};
+    }
+    CHECK(query(turned).distance == Approx(out.distance).margin(tol(R)));
+
+    // A mirror x -> -x of the whole scene: negate x of the points and of the translations, and the
+    // rotation becomes (c, -s).
+    Scene<T> mirrored = s;
+    for (auto* pts : {&mirrored.a, &mirrored.b})
+        for (auto& p : *pts)
+            p.x = -p.x;
+    for (auto* xf : {&mirrored.xfA, &mirrored.xfB})
+    {
+        xf->p.x = -xf->p.x;
+        xf->q.s = -xf->q.s;
+    }
+    CHECK(query(mirrored).distance == Approx(out.distance).margin(tol(R)));
+}
+
+// The talk's polygon walk-through, drawn as a pentagon with vertex E first (the arbitrary initial
+// simplex is vertex 0). Counter-clockwise: D(-1,1) C(3,1) B(3,5) A(-4,6) E(-4,3).
+template <class T> Scene<T> walkThrough()
+{
+    Scene<T> s;
+    s.a = {{-4, 3} /*E*/, {-4, 6} /*A*/, {3, 5} /*B*/, {3, 1} /*C*/, {-1, 1} /*D*/};
+    s.b = {{0, 0}}; // Q
+    return s;
+}
+} // namespace
+
+TEMPLATE_TEST_CASE("talk walk-through: E, then CE, then CDE, cull E, terminate on repeat",
+                   "[gjk][talk]", float, double)
+{
+    using T = TestType;
+    // Hand derivation (Q = origin):
+    //  1. simplex {E}, P = E = (-4,3), d = Q - P = (4,-3). dot(d, .): E -25, A -34, B -3, C 9,
+    //     D -7 -> support C.
+    //  2. simplex {E, C}: e = C - E = (7,-2), u = dot(C, e) = 19 > 0, v = -dot(E, e) = 34 > 0: edge.
+    //     cross(e, -E) = 7*(-3) - (-2)*4 = -13 < 0 -> d = rightPerp(e) = (-2,-7), and
+    //     dot(d, Q - E) = 13 > 0. dot(d, .): E -13, A -34, B -41, C -13, D -5 -> support D.
+    //  3. simplex {E, C, D}: Q is closest to edge CD (y = 1, x from -1 to 3) at P = (0,1), so E
+    //     does not contribute and is culled. P = (1/4) C + (3/4) D.
+    //  4. d = perpendicular of CD towards Q = (0,-4): C and D tie at -4, the lowest index (C) wins:
+    //     a repeated support point (case 1). Three support points were computed.
+    const auto s = walkThrough<T>();
+    Trace<T> trace;
+    const auto out = query(s, {}, &trace);
+    CHECK(out.stop == StopReason::RepeatedSupport);
+    CHECK(out.iterations == 3);
+    CHECK(out.distance == T(1));
+    CHECK(out.pointA == Vec2<T>{0, 1});
+    CHECK(out.pointB == Vec2<T>{0, 0});
+    CHECK(out.normal == Vec2<T>{0, -1});
+    CHECK(out.simplexCount == 2);
+
+    REQUIRE(trace.steps.size() == 3);
+    CHECK(trace.steps[0].simplex.count == 1);
+    CHECK(trace.steps[0].simplex.v[0].indexA == 0); // E
+    CHECK(trace.steps[0].support.indexA == 3);      // C
+    CHECK(trace.steps[1].simplex.count == 2);       // CE
+    CHECK(trace.steps[1].direction == Vec2<T>{-2, -7});
+    CHECK(trace.steps[1].support.indexA == 4);      // D
+    CHECK(trace.steps[2].simplex.count == 2);       // CDE with E culled: CD
+    CHECK(trace.steps[2].simplex.v[0].indexA == 3);
+    CHECK(trace.steps[2].simplex.v[1].indexA == 4);
+    CHECK(trace.steps[2].simplex.v[0].a == T(0.25));
+    CHECK(trace.steps[2].simplex.v[1].a == T(0.75));
+    CHECK(trace.steps[2].closest == Vec2<T>{0, 1});
+    CHECK(trace.steps[2].support.indexA == 3); // C again: repeated
+
+    checkDistanceAndSymmetries(s, T(1));
+}
+
+TEMPLATE_TEST_CASE("the talk's single-precision example: an exactly perpendicular direction",
+                   "[gjk][talk][numerics]", float, double)
+{
+    using T = TestType;
+    // Segment A = (0.021119118, 79.584320), B = (0.020964622, -31.515678), Q = origin.
+    Simplex<T> s;
+    s.v[0].w = {T(0.021119118), T(79.584320)};
+    s.v[1].w = {T(0.020964622), T(-31.515678)};
+    s.v[0].indexA = 0;
+    s.v[1].indexA = 1;
+    s.count = 2;
+    solve2(s);
+    REQUIRE(s.count == 2);
+    const Vec2<T> e = s.v[1].w - s.v[0].w;
+
+    const Vec2<T> d = searchDirection(s, SearchDirection::EdgePerpendicular);
+    CHECK(dot(d, e) == T(0));            // exactly, as the talk promises
+    CHECK(dot(d, -s.v[0].w) > T(0));     // and towards Q
+
+    // The naive direction Q - P is not perpendicular in single precision: the talk measured
+    // dot(d, B - A) = 3.2457051e-006 with its barycentric formulas; ours differ, but not in kind.
+    if constexpr (std::is_same_v<T, float>)
+    {
+        const Vec2<T> naive = searchDirection(s, SearchDirection::ClosestPoint);
+        CHECK(dot(naive, e) != T(0));
+    }
+
+    // The full query: A is that segment, B the point Q. The exact distance is
+    // |cross(A, B)| / |B - A| (height of the triangle (Q, A, B)); in double that formula has
+    // relative error a few 1e-16, far below the float tolerance.
+    Scene<T> scene;
+    scene.a = {s.v[0].w, s.v[1].w};
+    scene.b = {{0, 0}};
+    const double ax = double(scene.a[0].x), ay = double(scene.a[0].y);
+    const double bx = double(scene.a[1].x), by = double(scene.a[1].y);
+    const double expected = std::abs(ax * by - ay * bx) / std::hypot(bx - ax, by - ay);
+    checkDistanceAndSymmetries(scene, T(expected));
+}
+
+TEMPLATE_TEST_CASE("termination cases", "[gjk][termination]", float, double)
+{
+    using T = TestType;
+    Scene<T> s;
+    s.b = {{0, 0}}; // the query point Q
+
+    SECTION("case 2, containment: Q inside the polygon")
+    {
+        // Start (-1,-1), d = (1,1) -> (0,1); the edge's perpendicular towards Q -> (1,-1); the
+        // triangle has all three barycentric coordinates positive (1/4, 1/4, 1/2 as in the
+        // solve3 test).
+        s.a = {{-1, -1}, {0, 1}, {1, -1}};
+        const auto out = query(s);
+        CHECK(out.stop == StopReason::Containment);
+        CHECK(out.distance == T(0));
+        CHECK(out.simplexCount == 3);
+        CHECK(out.normal == Vec2<T>{0, 0});
+    }
+    SECTION("case 3a, vertex overlap: the initial vertex is Q, d = 0")
+    {
+        s.a = {{0, 0}, {1, 0}, {0, 1}};
+        const auto out = query(s);
+        CHECK(out.stop == StopReason::ZeroDirection);
+        CHECK(out.iterations == 0);
+        CHECK(out.distance == T(0));
+    }
+    SECTION("case 3b, edge overlap, d pointing away from the polygon: repeated vertex")
+    {
+        // Q on edge (-1,0)-(1,0) of the square above it. Start (-1,0); d = (1,0) -> (1,0) (ties
+        // with (1,2), lowest index). cross(e, -w1) = 0: the sign is arbitrary, we take
+        // rightPerp(2,0) = (0,-2), pointing out of the square: the support is (-1,0) or (1,0),
+        // already in the simplex.
+        s.a = {{-1, 0}, {1, 0}, {1, 2}, {-1, 2}};
+        const auto out = query(s);
+        CHECK(out.stop == StopReason::RepeatedSupport);
+        CHECK(out.distance == T(0));
+    }
+    SECTION("case 3b, edge overlap, d pointing into the polygon: new vertex, then a repeat")
+    {
+        // Same edge, square below it. d = (0,-2) finds (1,-2); in triangle (-1,0),(1,0),(1,-2)
+        // Q lies on edge w1w2: w123 = n * cross(w1, w2) = 0, so the edge region is kept, the same
+        // d finds (1,-2) again: repeated support.
+        s.a = {{-1, 0}, {1, 0}, {1, -2}, {-1, -2}};
+        const auto out = query(s);
+        CHECK((out.stop == StopReason::RepeatedSupport || out.stop == StopReason::Containment));
+        CHECK(out.distance == T(0));
+    }
+    SECTION("case 4, interior edge: Q on a diagonal of the square")
+    {
+        // Start (-1,-1), d = (1,1) -> (1,1): the simplex is the diagonal through Q, cross = 0,
+        // d = rightPerp(2,2) = (2,-2) -> (1,-1). In the triangle Q is on edge w1w2 again: the
+        // same d repeats (1,-1).
+        s.a = {{-1, -1}, {1, 1}, {1, -1}, {-1, 1}};
+        const auto out = query(s);
+        CHECK((out.stop == StopReason::RepeatedSupport || out.stop == StopReason::Containment));
+        CHECK(out.distance == T(0));
+    }
+    SECTION("the iteration limit is reported, never silent")
+    {
+        const auto walk = walkThrough<T>();
+        Options o;
+        o.maxIterations = 1;
+        SimplexCache cache;
+        const auto out = distance(walk.input(), cache, o);
+        CHECK(out.stop == StopReason::IterationLimit);
+        CHECK(out.iterations == 1);
+        // The best simplex so far is the edge CE: distance 13/sqrt(53) (|cross(E, C)| / |C - E|
+        // = |(-4)(1) - 3*3| / sqrt(49 + 4)), larger than the true 1.
+        CHECK(out.distance == Approx(13 / std::sqrt(T(53))));
+    }
+    SECTION("the duality-gap rule stops where repeated support does, with its own name")
+    {
+        const auto walk = walkThrough<T>();
+        Options o;
+        o.stopping = StoppingRule::DualityGap;
+        const auto out = query(walk, o);
+        // At CD, the support C gives v.v - v.w = 1 - 1 = 0: duality gap met before the repeat check?
+        // No: the repeat check comes first, so the name stays RepeatedSupport when both hold.
+        CHECK(out.distance == T(1));
+        CHECK((out.stop == StopReason::RepeatedSupport || out.stop == StopReason::DualityGap));
+    }
+}
+
+TEMPLATE_TEST_CASE("poorly formed polygons: collinear and non-convex points", "[gjk][talk]", float, double)
+{
+    using T = TestType;
+    SECTION("collinear vertices")
+    {
+        // (-3,1), (-1,1), (1,1), (3,1) are collinear on y = 1, apex (0,4): distance 1 from Q.
+        Scene<T> s;
+        s.a = {{-1, 1}, {3, 1}, {-3, 1}, {1, 1}, {0, 4}};
+        s.b = {{0, 0}};
+        checkDistanceAndSymmetries(s, T(1));
+    }
+    SECTION("a non-convex input point is never a support point")
+    {
+        // Square (-2,1) (2,1) (2,3) (-2,3) with a dent B = (0,2) between (-2,1) and (2,1) in the
+        // input order: the hull is the square, distance 1 from Q; B can never be extreme.
+        Scene<T> s;
+        s.a = {{-2, 1}, {0, 2}, {2, 1}, {2, 3}, {-2, 3}};
+        s.b = {{0, 0}};
+        Trace<T> trace;
+        const auto out = query(s, {}, &trace);
+        CHECK(out.distance == T(1));
+        for (const auto& step : trace.steps)
+            CHECK((!step.hasSupport || step.support.indexA != 1));
+        checkDistanceAndSymmetries(s, T(1));
+    }
+    SECTION("duplicates and unordered points")
+    {
+        Scene<T> s;
+        s.a = {{3, 1}, {-1, 1}, {3, 5}, {-1, 1}, {-4, 6}, {3, 1}, {-4, 3}};
+        s.b = {{0, 0}};
+        checkDistanceAndSymmetries(s, T(1));
+    }
+}
+
+TEMPLATE_TEST_CASE("polygon to polygon: hand-derived distances and symmetries", "[gjk]", float, double)
+{
+    using T = TestType;
+    const Points<T> unit = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    SECTION("parallel edges: x = 1 against x = 3, distance 2")
+    {
+        Scene<T> s;
+        s.a = unit;
+        s.b = {{3, 0}, {4, 1}, {3, 2}};
+        checkDistanceAndSymmetries(s, T(2));
+    }
+    SECTION("vertex to vertex: (1,1) to (2,2), distance sqrt(2)")
+    {
+        Scene<T> s;
+        s.a = unit;
+        s.b = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+        const auto out = query(s);
+        CHECK(out.pointA == Vec2<T>{1, 1});
+        CHECK(out.pointB == Vec2<T>{2, 2});
+        checkDistanceAndSymmetries(s, std::sqrt(T(2)));
+    }
+    SECTION("edge to vertex on a slanted edge: (3,3) to x + y = 4, distance sqrt(2)")
+    {
+        // Distance from (3,3) to the line x + y = 4 is (3 + 3 - 4)/sqrt(2); the foot (2,2) lies
+        // inside the edge (4,0)-(0,4).
+        Scene<T> s;
+        s.a = {{0, 0}, {4, 0}, {0, 4}};
+        s.b = {{3, 3}, {5, 3}, {4, 5}};
+        checkDistanceAndSymmetries(s, std::sqrt(T(2)));
+    }
+    SECTION("overlapping squares: distance 0")
+    {
+        Scene<T> s;
+        s.a = unit;
+        s.b = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+        CHECK(query(s).distance == T(0));
+        checkDistanceAndSymmetries(s, T(0));
+    }
+    SECTION("segment to segment: (0,0)-(2,0) and (1,1)-(1,3), distance 1 at (1,0)-(1,1)")
+    {
+        Scene<T> s;
+        s.a = {{0, 0}, {2, 0}};
+        s.b = {{1, 1}, {1, 3}};
+        const auto out = query(s);
+        CHECK(out.pointA == Vec2<T>{1, 0});
+        CHECK(out.pointB == Vec2<T>{1, 1});
+        checkDistanceAndSymmetries(s, T(1));
+    }
+    SECTION("transforms: B rotated by 90 degrees and moved; A moved")
+    {
+        // A = unit square at p = (10, 0): [10,11] x [0,1]. B = segment (0,0)-(2,0) rotated by
+        // (c, s) = (0, 1) -> (0,0)-(0,2), moved by (13, -0.5): x = 13, y in [-0.5, 1.5].
+        // Gap 13 - 11 = 2 along x.
+        Scene<T> s;
+        s.a = unit;
+        s.xfA.p = {10, 0};
+        s.b = {{0, 0}, {2, 0}};
+        s.xfB = {{13, -0.5}, {0, 1}};
+        checkDistanceAndSymmetries(s, T(2));
+    }
+}
+
+TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]", float, double)
+{
+    using T = TestType;
+    SECTION("two discs apart: centres 5 apart, radii 1 and 2 -> distance 2, points on the circles")
+    {
+        Scene<T> s;
+        s.a = {{0, 0}};
+        s.b = {{5, 0}};
+        s.radiusA = 1;
+        s.radiusB = 2;
+        const auto out = query(s);
+        CHECK(out.distance == T(2));
+        CHECK(out.pointA == Vec2<T>{1, 0});
+        CHECK(out.pointB == Vec2<T>{3, 0});
+        CHECK(out.normal == Vec2<T>{1, 0});
+        checkDistanceAndSymmetries(s, T(2));
+    }
+    SECTION("capsule and disc: core distance 3, radii 0.5 and 0.5 -> 2")
+    {
+        Scene<T> s;
+        s.a = {{0, 0}, {4, 0}};
+        s.b = {{2, 3}};
+        s.radiusA = 0.5;
+        s.radiusB = 0.5;
+        const auto out = query(s);
+        CHECK(out.distance == T(2));
+        CHECK(out.pointA == Vec2<T>{2, 0.5});
+        CHECK(out.pointB == Vec2<T>{2, 2.5});
+        checkDistanceAndSymmetries(s, T(2));
+    }
+    SECTION("overlapping rounded shapes: distance clamped at 0, one common point")
+    {
+        // Core distance 2 < 1 + 2: overlap; the midpoint of the core points (1,0) is reported.
+        Scene<T> s;
+        s.a = {{0, 0}};
+        s.b = {{2, 0}};
+        s.radiusA = 1;
+        s.radiusB = 2;
+        const auto out = query(s);
+        CHECK(out.distance == T(0));
+        CHECK(out.pointA == Vec2<T>{1, 0});
+        CHECK(out.pointB == out.pointA);
+    }
+    SECTION("useRadii = false gives the core distance")
+    {
+        Scene<T> s;
+        s.a = {{0, 0}};
+        s.b = {{5, 0}};
+        s.radiusA = 1;
+        Options o;
+        o.useRadii = false;
+        CHECK(query(s, o).distance == T(5));
+    }
+}
+
+TEMPLATE_TEST_CASE("conventions: frame, sign of w, direction of the normal", "[gjk][conventions]",
+                   float, double)
+{
+    using T = TestType;
+    // A unit square at (4, 4) rotated by 90 degrees, B a point to its right at (7, 4.5).
+    // In world, A covers [3,4] x [4,5] ((x,y) -> (-y,x) + (4,4)). Distance 3, pointA = (4, 4.5).
+    Scene<T> s;
+    s.a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    s.xfA = {{4, 4}, {0, 1}};
+    s.b = {{0, 0}};
+    s.xfB.p = {7, 4.5};
+    Trace<T> trace;
+    const auto out = query(s, {}, &trace);
+    CHECK(out.distance == T(3));
+    CHECK(out.pointA == Vec2<T>{4, 4.5});  // world coordinates
+    CHECK(out.pointB == Vec2<T>{7, 4.5});
+    CHECK(out.normal == Vec2<T>{1, 0});    // unit, from A towards B
+    // The trace is in A's local frame; its frame maps it back to world.
+    CHECK(trace.frame.p == Vec2<T>{4, 4});
+    for (const auto& step : trace.steps)
+        if (step.hasSupport)
+            CHECK(step.support.w == step.support.wA - step.support.wB); // w = wA - wB
+    // World frame variant: same answer here (everything is exact).
+    Options world;
+    world.frame = Frame::World;
+    CHECK(query(s, world).distance == T(3));
+}
+
+TEMPLATE_TEST_CASE("frame of A keeps small gaps far from the origin", "[gjk][numerics]", float, double)
+{
+    using T = TestType;
+    // Two unit squares under the same rounded rotation (cos 0.3, sin 0.3), B offset by (1.5, 0.25)
+    // from A. Moving both by (2^20, 2^20) is exact in float and double (at most 23 significant
+    // bits), and in A's frame the relative offset pB - pA is then bit-identical, so the whole
+    // computation is: the distance must be exactly the same as at the origin.
+    Scene<T> s;
+    s.a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    s.b = s.a;
+    const Rot<T> q{std::cos(T(0.3)), std::sin(T(0.3))};
+    s.xfA = {{0, 0}, q};
+    s.xfB = {{1.5, 0.25}, q};
+    Scene<T> far = s;
+    const T big = T(1 << 20);
+    far.xfA.p = far.xfA.p + Vec2<T>{big, big};
+    far.xfB.p = far.xfB.p + Vec2<T>{big, big};
+    const auto near = query(s);
+    const auto out = query(far);
+    CHECK(out.distance == near.distance);
+    CHECK(near.distance > T(0));
+}
+
+TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk][cache]", float, double)
+{
+    using T = TestType;
+    const auto s = walkThrough<T>();
+    SimplexCache cache; // cold
+    const auto cold = distance(s.input(), cache);
+    REQUIRE(cache.count == 2);
+    CHECK(cache.indexA[0] == 3); // C
+    CHECK(cache.indexA[1] == 4); // D
+    const auto warm = distance(s.input(), cache);
+    CHECK(warm.distance == cold.distance);
+    CHECK(warm.pointA == cold.pointA);
+    CHECK(warm.iterations == 1); // only the repeated support point is computed
+    // A stale cache (indices out of range) falls back to a cold start.
+    SimplexCache stale;
+    stale.count = 2;
+    stale.indexA[0] = 99;
+    CHECK(distance(s.input(), stale).distance == cold.distance);
+}
+
+TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)
+{
+    using T = TestType;
+    // Regular 4096-gon of circumradius 1 at the origin, a point at (3, 0): the closest feature is
+    // the vertex (1, 0) (angle 0 is a vertex), so the distance is exactly 2.
+    Scene<T> s;
+    const int n = 4096;
+    for (int i = 0; i < n; ++i)
+    {
+        const double t = 2 * 3.14159265358979323846 * i / n;
+        s.a.push_back({T(std::cos(t)), T(std::sin(t))});
+    }
+    s.a[0] = {1, 0};
+    s.b = {{3, 0}};
+    const auto out = query(s);
+    CHECK(out.stop != StopReason::IterationLimit);
+    CHECK(out.distance == Approx(T(2)).margin(tol(T(3))));
+}
