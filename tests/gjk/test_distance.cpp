@@ -586,3 +586,105 @@ TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][la
     CHECK(out.stop != StopReason::IterationLimit);
     CHECK(out.distance == Approx(T(2)).margin(tol(T(3))));
 }
+
+TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][certify]", float, double)
+{
+    using T = TestType;
+    // Scenes with hand-derived exact distances (see the tests above). For sqrt(2) the bracket
+    // [down, up] of its double rounding is used: the interval must reach past both ends.
+    struct Known
+    {
+        Scene<T> scene;
+        double exactLow, exactHigh;
+    };
+    const Points<T> unit = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    const double r2 = std::sqrt(2.0);
+    const double r2lo = std::nextafter(r2, 0.0), r2hi = std::nextafter(r2, 4.0);
+    std::vector<Known> cases;
+    cases.push_back({walkThrough<T>(), 1, 1});
+    {
+        Scene<T> s;
+        s.a = unit;
+        s.b = {{3, 0}, {4, 1}, {3, 2}};
+        cases.push_back({s, 2, 2});
+    }
+    {
+        Scene<T> s;
+        s.a = unit;
+        s.b = {{2, 2}, {3, 2}, {3, 3}, {2, 3}};
+        cases.push_back({s, r2lo, r2hi});
+    }
+    {
+        Scene<T> s;
+        s.a = {{0, 0}, {4, 0}, {0, 4}};
+        s.b = {{3, 3}, {5, 3}, {4, 5}};
+        cases.push_back({s, r2lo, r2hi});
+    }
+    {
+        Scene<T> s; // overlap: 0
+        s.a = unit;
+        s.b = {{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}};
+        cases.push_back({s, 0, 0});
+    }
+    {
+        Scene<T> s; // capsule and disc: 2
+        s.a = {{0, 0}, {4, 0}};
+        s.b = {{2, 3}};
+        s.radiusA = 0.5;
+        s.radiusB = 0.5;
+        cases.push_back({s, 2, 2});
+    }
+    {
+        Scene<T> s; // rotated and moved: 2
+        s.a = unit;
+        s.xfA.p = {10, 0};
+        s.b = {{0, 0}, {2, 0}};
+        s.xfB = {{13, -0.5}, {0, 1}};
+        cases.push_back({s, 2, 2});
+    }
+    Options o;
+    o.certify = true;
+    for (const auto& k : cases)
+    {
+        const auto out = query(k.scene, o);
+        REQUIRE(out.certified);
+        CHECK(out.lower <= k.exactLow);
+        CHECK(out.upper >= k.exactHigh);
+        // Tight: a few units of roundoff of the double certificate at scale <= 16.
+        CHECK(out.upper - out.lower <= 1e-13);
+        // The float or double distance lies in it up to the query's own rounding.
+        CHECK(double(out.distance) >= out.lower - double(tol(T(16))));
+        CHECK(double(out.distance) <= out.upper + double(tol(T(16))));
+    }
+    SECTION("containment is certified by exact orientation signs: upper is exactly 0")
+    {
+        Scene<T> s;
+        s.a = {{-1, -1}, {0, 1}, {1, -1}};
+        s.b = {{0, 0}};
+        const auto out = query(s, o);
+        CHECK(out.stop == StopReason::Containment);
+        CHECK(out.lower == 0);
+        CHECK(out.upper == 0);
+    }
+}
+
+TEMPLATE_TEST_CASE("range: support points too large for the type are flagged", "[gjk][range]", float, double)
+{
+    using T = TestType;
+    Scene<T> s;
+    s.a = {{0, 0}, {1, 0}, {0, 1}};
+    s.b = {{3, 0}};
+    CHECK_FALSE(query(s).outOfRange);
+    // Scaled by 2^(max_exponent/2 + 2): the products of two coordinates would overflow.
+    const T big = std::ldexp(T(1), std::numeric_limits<T>::max_exponent / 2 + 2);
+    for (auto* pts : {&s.a, &s.b})
+        for (auto& p : *pts)
+            p = big * p;
+    CHECK(query(s).outOfRange);
+    // Scaled far down instead: products underflow.
+    const T tiny = std::ldexp(T(1), std::numeric_limits<T>::min_exponent / 2 - 4);
+    Scene<T> t;
+    t.a = {{0, 0}, {tiny, 0}, {0, tiny}};
+    t.b = {{3 * tiny, 0}};
+    CHECK(query(t).outOfRange);
+}

@@ -18,8 +18,10 @@
 // - normal is the unit vector from pointA to pointB when the shapes are apart, zero otherwise.
 #pragma once
 
+#include "gjk/certify.hpp"
 #include "gjk/math.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <cstdint>
 #include <vector>
@@ -93,6 +95,9 @@ struct Options
     int maxIterations = 0;
     // Apply the radii at the end (rounded shapes). false: distance between the core hulls.
     bool useRadii = true;
+    // Also return a certified interval [lower, upper] that provably contains the exact distance
+    // (gjk/certify.hpp). Costs one more scan of each shape.
+    bool certify = false;
 };
 
 // The reference variant, with a stable name. The default Options{} is this variant.
@@ -167,6 +172,14 @@ template <class T> struct DistanceOutput
     int iterations = 0;  // support points computed
     int simplexCount = 0;
     StopReason stop = StopReason::RepeatedSupport;
+    // A support point had a coordinate outside [Tolerances<T>::minCoordinate, maxCoordinate] (all
+    // of them below the minimum, or any above the maximum): the products may have overflowed or
+    // underflowed, the distance is not trustworthy. Scale the problem (by a power of two).
+    bool outOfRange = false;
+    // Options::certify: the exact distance lies in [lower, upper] (double, rounded outwards).
+    bool certified = false;
+    double lower = 0;
+    double upper = std::numeric_limits<double>::infinity();
 };
 
 // One GJK iteration as the talk's demo draws it: the simplex after culling, its closest point to
@@ -209,13 +222,16 @@ template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d)
 
 // A shape seen through a transform into the compute frame: the support runs on the shape's own
 // points with the direction rotated into its frame; only the chosen point is transformed.
+// In A's frame, A itself needs no transform: `identity` skips it (bit-identical result, since
+// the identity transform is exact, but faster).
 template <class T> struct TransformedShape
 {
     Polygon<T> poly;
     Transform<T> xf;
+    bool identity = false;
 
-    int support(Vec2<T> d) const { return findSupport(poly, invRotate(xf.q, d)); }
-    Vec2<T> vertex(int i) const { return transformPoint(xf, poly.points[i]); }
+    int support(Vec2<T> d) const { return findSupport(poly, identity ? d : invRotate(xf.q, d)); }
+    Vec2<T> vertex(int i) const { return identity ? poly.points[i] : transformPoint(xf, poly.points[i]); }
 };
 
 // support(Z, d) = support(A, d) - support(B, -d): the Minkowski difference is never built.
@@ -281,8 +297,9 @@ template <class T> void solve2(Simplex<T>& s)
 // Nine barycentric coordinates (numerators only):
 //   three segments as in solve2: (u12, v12), (u13, v13), (u23, v23),
 //   the triangle from signed areas: u123 = area(Q w2 w3), v123 = area(Q w3 w1), w123 = area(Q w1 w2),
-//   each multiplied by area(w1 w2 w3) so their signs are right whatever the winding:
-//   u123 = n * cross(w2, w3), v123 = n * cross(w3, w1), w123 = n * cross(w1, w2), n = cross(e12, e13).
+//   each multiplied by the sign of area(w1 w2 w3) so their signs are right whatever the winding:
+//   u123 = sgn(n) cross(w2, w3), v123 = sgn(n) cross(w3, w1), w123 = sgn(n) cross(w1, w2),
+//   n = cross(e12, e13).
 // Regions are tested in the talk's order, lowest dimension first: vertices, then edges, then the
 // interior. The area n is never divided by to choose a region: for a collinear (zero-area) triangle
 // all triangle coordinates are 0, every edge test "w123 <= 0" passes, and a vertex or edge region
@@ -305,10 +322,15 @@ template <class T> void solve3(Simplex<T>& s)
     const T u23 = dot(w3, e23);
     const T v23 = -dot(w2, e23);
 
+    // The talk multiplies each signed area by n123 = area(w1 w2 w3) to fix its sign for either
+    // winding. We multiply by the sign of n123 instead: the same signs, but the products stay of
+    // size R^2 rather than R^4 (R the size of the simplex), which matters in float (R^4
+    // overflows for R > 4e9). Weights below are ratios, so the missing factor |n123| cancels.
     const T n123 = cross(e12, e13);
-    const T u123 = n123 * cross(w2, w3);
-    const T v123 = n123 * cross(w3, w1);
-    const T w123 = n123 * cross(w1, w2);
+    const T sign = n123 > T(0) ? T(1) : (n123 < T(0) ? T(-1) : T(0));
+    const T u123 = sign * cross(w2, w3);
+    const T v123 = sign * cross(w3, w1);
+    const T w123 = sign * cross(w1, w2);
 
     auto keepVertex = [&s](int i)
     {
@@ -345,7 +367,7 @@ template <class T> void solve3(Simplex<T>& s)
         return keepEdge(1, 2, u23, v23); // region w2w3
 
     // Third: the interior. All three triangle coordinates are positive here whenever the segment
-    // tests were consistent; then their sum n123^2 is positive and the division is safe.
+    // tests were consistent; their sum |n123| is then positive and the division is safe.
     if (u123 > T(0) && v123 > T(0) && w123 > T(0))
     {
         const T inv = T(1) / (u123 + v123 + w123);
@@ -427,8 +449,10 @@ template <class T> void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, V
     }
 }
 
-// Distance from the origin to the simplex. For an edge we use |cross(w1, w2)| / |w2 - w1|, the
-// height of the triangle (0, w1, w2): it does not suffer the cancellation of |u w1 + v w2|.
+// Distance from the origin to the simplex. For an edge we use |cross(w1, e12)| / |e12|, the
+// height of the triangle (0, w1, w2): it does not suffer the cancellation of |u w1 + v w2|, and
+// unlike cross(w1, w2) its rounding error stays of order u |w1| even for a short edge far from
+// the origin (cross(w1, w2) would carry u |w1| |w2| / |e12|).
 template <class T> T simplexDistance(const Simplex<T>& s)
 {
     switch (s.count)
@@ -437,10 +461,86 @@ template <class T> T simplexDistance(const Simplex<T>& s)
     case 2:
     {
         const Vec2<T> e12 = s.v[1].w - s.v[0].w;
-        return std::abs(cross(s.v[0].w, s.v[1].w)) / length(e12);
+        return std::abs(cross(s.v[0].w, e12)) / length(e12);
     }
     default: return T(0);
     }
+}
+
+// --- Certified interval (gjk/certify.hpp) --------------------------------------------------------
+
+// Fills out.lower and out.upper from the final simplex (indices and weights) and the world normal.
+template <class T>
+void certifyDistance(const DistanceInput<T>& in, const Simplex<T>& s, bool useRadii, Vec2<T> normal,
+                     DistanceOutput<T>& out)
+{
+    using namespace certify;
+    const Polygon<T>& A = in.proxyA;
+    const Polygon<T>& B = in.proxyB;
+
+    // Upper bound: the point sum(a_i W_i) / sum(a_i) of Z, W_i = xfA * A[iA] - xfB * B[iB].
+    BoundedVec W[3];
+    for (int i = 0; i < s.count; ++i)
+    {
+        const BoundedVec a = toWorld(in.transformA, A.points[s.v[i].indexA]);
+        const BoundedVec b = toWorld(in.transformB, B.points[s.v[i].indexB]);
+        W[i] = {a.x - b.x, a.y - b.y};
+    }
+    double upperHull = std::numeric_limits<double>::infinity();
+    bool inside = false;
+    if (s.count == 3)
+    {
+        // The origin is strictly inside triangle W1 W2 W3 iff the three orientations
+        // cross(Wi, Wj) (i j cyclic) are nonzero and of one sign; certified when each bound
+        // excludes zero.
+        int positive = 0, negative = 0;
+        for (int i = 0; i < 3; ++i)
+        {
+            const BoundedVec &p = W[i], &q = W[(i + 1) % 3];
+            const Bounded c = p.x * q.y - p.y * q.x;
+            positive += lo(c) > 0;
+            negative += hi(c) < 0;
+        }
+        inside = positive == 3 || negative == 3;
+    }
+    if (inside)
+        upperHull = 0;
+    else
+    {
+        BoundedVec v{};
+        Bounded sum{};
+        for (int i = 0; i < s.count; ++i)
+        {
+            const Bounded a = exactly(std::max(double(s.v[i].a), 0.0));
+            v = {v.x + a * W[i].x, v.y + a * W[i].y};
+            sum = sum + a;
+        }
+        upperHull = upperNorm(v, sum);
+    }
+
+    // Lower bound: support functions along the computed normal n (from A to B):
+    // dist >= (min_j n.B_j - max_i n.A_i) / |n|.
+    double lowerHull = 0;
+    if (normal.x != T(0) || normal.y != T(0))
+    {
+        const Bounded nx = exactly(double(normal.x)), ny = exactly(double(normal.y));
+        const Bounded mnx = exactly(-double(normal.x)), mny = exactly(-double(normal.y));
+        const double hA = supportUpper(in.transformA, A.points, A.count, nx, ny);
+        const double hBneg = supportUpper(in.transformB, B.points, B.count, mnx, mny);
+        const double gap = down(-hBneg - hA);
+        const double nn = up(std::sqrt(up(up(nx.v * nx.v) + up(ny.v * ny.v))));
+        if (gap > 0)
+            lowerHull = down(gap / nn);
+    }
+
+    const double rA = useRadii ? double(A.radius) : 0.0;
+    const double rB = useRadii ? double(B.radius) : 0.0;
+    // Subtracting the radii, rounded outwards (a zero radius subtracts exactly).
+    const double rSum = rA + rB;
+    const double rLow = rB == 0 ? rA : down(rSum), rHigh = rB == 0 ? rA : up(rSum);
+    out.lower = rHigh == 0 ? lowerHull : std::max(0.0, down(lowerHull - rHigh));
+    out.upper = rLow == 0 ? upperHull : std::max(0.0, up(upperHull - rLow));
+    out.certified = true;
 }
 
 // --- Section 3 and 4: the GJK loop ---------------------------------------------------------------
@@ -456,11 +556,12 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
     // The compute frame: A's local frame (world = xfA * local) or the world itself.
     Transform<T> world;
-    TransformedShape<T> A{polyA, {}};
-    TransformedShape<T> B{polyB, {}};
+    TransformedShape<T> A{polyA, {}, false};
+    TransformedShape<T> B{polyB, {}, false};
     if (options.frame == Frame::LocalA)
     {
         world = input.transformA;
+        A.identity = true;
         B.xf = invMulTransforms(input.transformA, input.transformB);
     }
     else
@@ -499,6 +600,10 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     DistanceOutput<T> out;
     out.stop = StopReason::IterationLimit;
     int iteration = 0;
+    // Largest coordinate magnitude of the support points seen, for the range check.
+    T maxAbs = T(0);
+    for (int i = 0; i < simplex.count; ++i)
+        maxAbs = std::max({maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
     for (;;)
     {
         // Remember the simplex vertices to detect a repeated support point (case 1).
@@ -545,6 +650,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         // New support point of Z in direction d.
         const SimplexVertex<T> w = findMinkowskiSupport(A, B, d);
         ++iteration;
+        maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
         if (trace)
             trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
 
@@ -606,6 +712,11 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
             normal = Vec2<T>{};
         }
     }
+
+    out.outOfRange = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
+                     (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate);
+    if (options.certify)
+        certifyDistance(input, simplex, options.useRadii, rotate(world.q, normal), out);
 
     out.pointA = transformPoint(world, pA);
     out.pointB = transformPoint(world, pB);

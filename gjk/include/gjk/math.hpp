@@ -28,7 +28,9 @@ template <class T> constexpr T cross(Vec2<T> a, Vec2<T> b) { return a.x * b.y - 
 // point because both products round identically (this needs -ffp-contract=off).
 template <class T> constexpr Vec2<T> leftPerp(Vec2<T> v) { return {-v.y, v.x}; }
 template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v) { return {v.y, -v.x}; }
-template <class T> T length(Vec2<T> v) { return std::hypot(v.x, v.y); }
+// sqrt(x^2 + y^2) without std::hypot's scaling (slow): inside the query's documented range
+// (Tolerances<T>::maxCoordinate) the squares can neither overflow nor lose accuracy to underflow.
+template <class T> T length(Vec2<T> v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 
 // A rotation stored as the two numbers the caller computed once, c = cos(angle), s = sin(angle).
 // They are used as given (never recomputed from an angle), so the exact side can apply the very
@@ -85,6 +87,15 @@ template <class T> struct Tolerances
     // when the new support point w can lower the squared distance by less than a few roundings of
     // the dot products (each carries up to ~2u relative error with respect to the larger term).
     static constexpr T dualityGap = T(16) * unitRoundoff;
+    // Range in which the query's products neither overflow nor lose precision to underflow.
+    // The largest products are dots and crosses of two simplex vertices, at most ~8 R^2 for
+    // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below
+    // R = sqrt(min_normal / u) the products R^2 fall under min_normal/u and lose relative accuracy
+    // to gradual underflow (float: 4.4e-16, double: 1.5e-146). A query whose support points leave
+    // [minCoordinate, maxCoordinate] is flagged DistanceOutput::outOfRange (issue: float overflow).
+    static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
+    static inline const T minCoordinate =
+        std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
 };
 
 } // namespace gjk

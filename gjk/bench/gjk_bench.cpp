@@ -1,0 +1,165 @@
+// Google Benchmark programs for the GJK query (issue "Speed"). Cases are generated here with the
+// same distribution as the runner's `random` family (3 to 8 vertices on circles of radius 0.5 to
+// 2, positions in [-4, 4]^2, random rotations), from a fixed seed, so runs are comparable.
+//   build/release/gjk/gjk_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "gjk/distance.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+struct ShapeData
+{
+    std::vector<gjk::Vec2<double>> points;
+    gjk::Transform<double> xf;
+};
+
+struct Pair
+{
+    ShapeData a, b;
+};
+
+ShapeData randomShape(std::mt19937_64& rng)
+{
+    std::uniform_int_distribution<int> count(3, 8);
+    std::uniform_real_distribution<double> radius(0.5, 2.0), angle(0.0, 2 * M_PI), pos(-4.0, 4.0);
+    ShapeData s;
+    const int n = count(rng);
+    const double r = radius(rng);
+    std::vector<double> angles(n);
+    for (auto& t : angles)
+        t = angle(rng);
+    std::sort(angles.begin(), angles.end());
+    for (double t : angles)
+        s.points.push_back({r * std::cos(t), r * std::sin(t)});
+    const double q = angle(rng);
+    s.xf = {{pos(rng), pos(rng)}, {std::cos(q), std::sin(q)}};
+    return s;
+}
+
+const std::vector<Pair>& randomPairs()
+{
+    static const std::vector<Pair> pairs = []
+    {
+        std::mt19937_64 rng(20101);
+        std::vector<Pair> p(20000);
+        for (auto& x : p)
+            x = {randomShape(rng), randomShape(rng)};
+        return p;
+    }();
+    return pairs;
+}
+
+template <class T> struct Converted
+{
+    std::vector<std::vector<gjk::Vec2<T>>> storage;
+    std::vector<gjk::DistanceInput<T>> inputs;
+};
+
+template <class T> const Converted<T>& inputs()
+{
+    static const Converted<T> c = []
+    {
+        Converted<T> out;
+        const auto& pairs = randomPairs();
+        out.storage.reserve(2 * pairs.size());
+        for (const auto& p : pairs)
+        {
+            gjk::DistanceInput<T> in;
+            const ShapeData* shapes[2] = {&p.a, &p.b};
+            gjk::Polygon<T>* polys[2] = {&in.proxyA, &in.proxyB};
+            gjk::Transform<T>* xfs[2] = {&in.transformA, &in.transformB};
+            for (int k = 0; k < 2; ++k)
+            {
+                auto& pts = out.storage.emplace_back();
+                for (auto v : shapes[k]->points)
+                    pts.push_back({T(v.x), T(v.y)});
+                *polys[k] = {pts.data(), int(pts.size()), T(0)};
+                const auto& xf = shapes[k]->xf;
+                *xfs[k] = {{T(xf.p.x), T(xf.p.y)}, {T(xf.q.c), T(xf.q.s)}};
+            }
+            out.inputs.push_back(in);
+        }
+        return out;
+    }();
+    return c;
+}
+
+gjk::Options variant(int v)
+{
+    gjk::Options o;
+    if (v == 1)
+        o.certify = true;
+    return o;
+}
+
+// Cold query over the whole random set; reports time per query.
+template <class T> void BM_Random(benchmark::State& state)
+{
+    const auto& in = inputs<T>().inputs;
+    const gjk::Options o = variant(int(state.range(0)));
+    for (auto _ : state)
+    {
+        for (const auto& x : in)
+        {
+            gjk::SimplexCache cache;
+            benchmark::DoNotOptimize(gjk::distance(x, cache, o));
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * int64_t(in.size()));
+    state.counters["ns_per_query"] = benchmark::Counter(
+        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// Warm-started repeated query: each pair queried with the cache of its previous query.
+template <class T> void BM_RandomWarm(benchmark::State& state)
+{
+    const auto& in = inputs<T>().inputs;
+    std::vector<gjk::SimplexCache> caches(in.size());
+    for (size_t i = 0; i < in.size(); ++i)
+        gjk::distance(in[i], caches[i]);
+    for (auto _ : state)
+    {
+        for (size_t i = 0; i < in.size(); ++i)
+            benchmark::DoNotOptimize(gjk::distance(in[i], caches[i]));
+    }
+    state.counters["ns_per_query"] = benchmark::Counter(
+        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// Two regular n-gons (vertices in counter-clockwise order), a small gap, cold start.
+template <class T> void BM_RegularPolygons(benchmark::State& state)
+{
+    const int n = int(state.range(0));
+    std::vector<gjk::Vec2<T>> pts(n);
+    for (int i = 0; i < n; ++i)
+        pts[i] = {T(std::cos(2 * M_PI * i / n)), T(std::sin(2 * M_PI * i / n))};
+    gjk::DistanceInput<T> in;
+    in.proxyA = {pts.data(), n, T(0)};
+    in.proxyB = {pts.data(), n, T(0)};
+    in.transformA = {{T(0), T(0)}, {T(1), T(0)}};
+    in.transformB = {{T(2.01), T(0.3)}, {T(std::cos(0.1)), T(std::sin(0.1))}};
+    gjk::Options o;
+    o.support = gjk::SupportStrategy(state.range(1));
+    for (auto _ : state)
+    {
+        gjk::SimplexCache cache;
+        benchmark::DoNotOptimize(gjk::distance(in, cache, o));
+    }
+}
+} // namespace
+
+BENCHMARK_TEMPLATE(BM_Random, double)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomWarm, float)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RegularPolygons, double)
+    ->ArgsProduct({{8, 64, 512, 4096, 65536}, {0}})
+    ->ArgNames({"n", "support"})
+    ->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_MAIN();
