@@ -158,7 +158,7 @@ BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(b
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RegularPolygons, double)
-    ->ArgsProduct({{8, 64, 512, 4096, 65536}, {0}})
+    ->ArgsProduct({{8, 64, 512, 4096, 65536}, {0, 1}})
     ->ArgNames({"n", "support"})
     ->Unit(benchmark::kMicrosecond);
 

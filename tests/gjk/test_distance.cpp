@@ -688,3 +688,71 @@ TEMPLATE_TEST_CASE("range: support points too large for the type are flagged", "
     t.b = {{3 * tiny, 0}};
     CHECK(query(t).outOfRange);
 }
+
+TEMPLATE_TEST_CASE("binary-search support agrees with the linear scan on convex polygons",
+                   "[gjk][support]", float, double)
+{
+    using T = TestType;
+    // Counter-clockwise regular n-gons (and one with collinear points on its edges), every
+    // direction on a fine circle, including the exact edge normals (ties): the binary search must
+    // find a vertex as far along d as the talk's linear scan, up to the rounding of the dots.
+    for (int n : {17, 64, 1000, 4096})
+    {
+        std::vector<Vec2<T>> pts;
+        for (int i = 0; i < n; ++i)
+            pts.push_back({T(std::cos(2 * M_PI * i / n)), T(std::sin(2 * M_PI * i / n))});
+        const Polygon<T> poly{pts.data(), n, T(0)};
+        for (int k = 0; k < 720; ++k)
+        {
+            const double a = 2 * M_PI * k / 720;
+            const Vec2<T> d{T(std::cos(a)), T(std::sin(a))};
+            const int j = findSupport(poly, d);
+            for (int start : {0, n / 3, n - 1, j}) // every start vertex of the galloping search
+            {
+                const int i = findSupportFrom(poly, d, start);
+                CHECK(dot(d, pts[i]) >= dot(d, pts[j]) - T(4) * Tolerances<T>::unitRoundoff);
+            }
+        }
+        for (int i = 0; i < n; ++i) // edge normals: two vertices tie
+        {
+            const Vec2<T> d = rightPerp(pts[(i + 1) % n] - pts[i]);
+            const int b = findSupportFrom(poly, d, (i + n / 2) % n), l = findSupport(poly, d);
+            CHECK(dot(d, pts[b]) >= dot(d, pts[l]) - T(4) * Tolerances<T>::unitRoundoff);
+        }
+    }
+    // A square with collinear midpoints on every edge: (-1,-1) (0,-1) (1,-1) (1,0) (1,1) ...
+    std::vector<Vec2<T>> sq = {{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}};
+    const Polygon<T> poly{sq.data(), int(sq.size()), T(0)};
+    for (int k = 0; k < 16; ++k)
+    {
+        const double a = 2 * M_PI * k / 16;
+        const Vec2<T> d{T(std::cos(a)), T(std::sin(a))};
+        const int l = findSupport(poly, d);
+        for (int start = 0; start < 8; ++start)
+        {
+            const int b = findSupportFrom(poly, d, start);
+            CHECK(dot(d, sq[b]) >= dot(d, sq[l]) - T(4) * Tolerances<T>::unitRoundoff);
+        }
+    }
+}
+
+TEMPLATE_TEST_CASE("binary-search support gives the same distances", "[gjk][support]", float, double)
+{
+    using T = TestType;
+    // Two regular 4096-gons of circumradius 1, centres 2.5 apart: vertex 0 of each faces the
+    // other exactly (B is rotated by half a turn: (c, s) = (-1, 0)), so the distance is 0.5.
+    const int n = 4096;
+    Scene<T> s;
+    for (int i = 0; i < n; ++i)
+        s.a.push_back({T(std::cos(2 * M_PI * i / n)), T(std::sin(2 * M_PI * i / n))});
+    s.a[0] = {1, 0};
+    s.b = s.a;
+    s.xfB = {{T(2.5), T(0)}, {T(-1), T(0)}};
+    Options o;
+    o.support = SupportStrategy::BinarySearch;
+    const auto fast = query(s, o);
+    const auto slow = query(s);
+    CHECK(fast.distance == Approx(T(0.5)).margin(tol(T(4))));
+    CHECK(fast.distance == Approx(slow.distance).margin(tol(T(4))));
+    CHECK(fast.stop != StopReason::IterationLimit);
+}

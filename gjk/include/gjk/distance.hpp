@@ -80,7 +80,11 @@ enum class Frame : std::uint8_t
 
 enum class SupportStrategy : std::uint8_t
 {
-    Linear, // the talk's loop over all vertices: any point order
+    Linear,       // the talk's loop over all vertices: any point order
+    BinarySearch, // O(log n): needs the points in convex order (either winding, collinear
+                  // points allowed, no repeated consecutive point), e.g. a hull routine's output.
+                  // Gallops from the previous support point, so converging queries cost less.
+                  // Shapes of at most 16 points still use the linear scan (it is faster there).
 };
 
 struct Options
@@ -220,6 +224,81 @@ template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d)
     return index;
 }
 
+// Support by galloping binary search on a convex polygon in counter-clockwise or clockwise order,
+// from a start vertex s (the shape's previous support point): O(log k) for a support point k
+// vertices away, O(log n) at worst.
+//
+// Along a convex polygon the values f(i) = dot(d, P[i]) rise (edges with dot(d, e_i) > 0), fall,
+// and rise again back to s: the maximum ends the first rising run. Starting at s on a rising edge,
+// vertex s + j is "past the maximum" when its outgoing edge does not rise, or when it is already
+// below f(s) (then it is on the second rising run, which climbs from the minimum back to
+// f(s - 1) < f(s)). That predicate is monotone in j, so we gallop (j = 1, 2, 4, ...) until it
+// holds and then bisect. When s is on a falling edge the same runs backwards. A flat edge
+// (dot(d, e) == 0, possible with collinear points) is first stepped over so that s ends a flat
+// run. Rounding can only blur nearly tied vertices, within roundoff of each other along d; a final
+// climb to a strictly better neighbour polishes the result.
+template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
+{
+    const Vec2<T>* P = poly.points;
+    const int n = poly.count;
+    auto wrap = [n](int i) { return i >= n ? i - n : (i < 0 ? i + n : i); };
+    auto f = [&](int i) { return dot(d, P[wrap(i)]); };
+    auto slope = [&](int i) { return dot(d, P[wrap(i + 1)] - P[wrap(i)]); }; // along edge i
+
+    for (int guard = 0; guard < n && slope(s) == T(0); ++guard)
+        s = wrap(s + 1);
+    const T fs = f(s);
+
+    int best = s;
+    if (slope(s) > T(0)) // forward: first j with slope(s + j) <= 0 or f(s + j) < f(s)
+    {
+        auto past = [&](int j) { return slope(s + j) <= T(0) || f(s + j) < fs; };
+        int lo = 0, hi = 1; // !past(lo); past(hi) or hi == n
+        while (hi < n && !past(hi))
+        {
+            lo = hi;
+            hi = std::min(2 * hi, n);
+        }
+        while (hi - lo > 1)
+        {
+            const int mid = lo + (hi - lo) / 2;
+            (past(mid) ? hi : lo) = mid;
+        }
+        best = wrap(s + hi);
+    }
+    else if (slope(s - 1) < T(0)) // backward: f(s - 1) > f(s)
+    {
+        auto past = [&](int j) { return slope(s - j - 1) >= T(0) || f(s - j) < fs; };
+        int lo = 0, hi = 1;
+        while (hi < n && !past(hi))
+        {
+            lo = hi;
+            hi = std::min(2 * hi, n);
+        }
+        while (hi - lo > 1)
+        {
+            const int mid = lo + (hi - lo) / 2;
+            (past(mid) ? hi : lo) = mid;
+        }
+        best = wrap(s - hi);
+    }
+
+    // Polish: climb to a strictly better neighbour (undoes rounding-blurred near-ties).
+    T value = f(best);
+    for (int guard = 0; guard < n; ++guard)
+    {
+        const int next = wrap(best + 1), prev = wrap(best - 1);
+        const T vn = f(next), vp = f(prev);
+        if (vn > value && vn >= vp)
+            best = next, value = vn;
+        else if (vp > value)
+            best = prev, value = vp;
+        else
+            break;
+    }
+    return best;
+}
+
 // A shape seen through a transform into the compute frame: the support runs on the shape's own
 // points with the direction rotated into its frame; only the chosen point is transformed.
 // In A's frame, A itself needs no transform: `identity` skips it (bit-identical result, since
@@ -230,7 +309,17 @@ template <class T> struct TransformedShape
     Transform<T> xf;
     bool identity = false;
 
-    int support(Vec2<T> d) const { return findSupport(poly, identity ? d : invRotate(xf.q, d)); }
+    bool binary = false; // SupportStrategy::BinarySearch and more than 16 points
+    int last = 0;        // previous support index: where the galloping search starts
+
+    int support(Vec2<T> d)
+    {
+        const Vec2<T> local = identity ? d : invRotate(xf.q, d);
+        if (!binary)
+            return findSupport(poly, local);
+        last = findSupportFrom(poly, local, last);
+        return last;
+    }
     Vec2<T> vertex(int i) const { return identity ? poly.points[i] : transformPoint(xf, poly.points[i]); }
 };
 
@@ -249,8 +338,7 @@ SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape
 }
 
 template <class T>
-SimplexVertex<T> findMinkowskiSupport(const TransformedShape<T>& A, const TransformedShape<T>& B,
-                                      Vec2<T> d)
+SimplexVertex<T> findMinkowskiSupport(TransformedShape<T>& A, TransformedShape<T>& B, Vec2<T> d)
 {
     return makeVertex(A, B, A.support(d), B.support(-d));
 }
@@ -556,8 +644,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
     // The compute frame: A's local frame (world = xfA * local) or the world itself.
     Transform<T> world;
-    TransformedShape<T> A{polyA, {}, false};
-    TransformedShape<T> B{polyB, {}, false};
+    TransformedShape<T> A{polyA, {}, false, false, 0};
+    TransformedShape<T> B{polyB, {}, false, false, 0};
     if (options.frame == Frame::LocalA)
     {
         world = input.transformA;
@@ -568,6 +656,11 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     {
         A.xf = input.transformA;
         B.xf = input.transformB;
+    }
+    if (options.support == SupportStrategy::BinarySearch)
+    {
+        A.binary = polyA.count > 16;
+        B.binary = polyB.count > 16;
     }
     if (trace)
     {
@@ -584,6 +677,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
                      cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
     if (cacheValid)
     {
+        A.last = cache.indexA[0];
+        B.last = cache.indexB[0];
         simplex.count = cache.count;
         for (int i = 0; i < cache.count; ++i)
             simplex.v[i] = makeVertex(A, B, cache.indexA[i], cache.indexB[i]);
