@@ -777,14 +777,24 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     // Output: closest points from the barycentric weights, in world coordinates.
     Vec2<T> pA, pB;
     computeWitnessPoints(simplex, pA, pB);
-    T dist = simplexDistance(simplex);
+    // Distance and unit normal from A to B, sharing one square root (simplexDistance's formulas).
+    // On an edge the normal is the exact perpendicular of the edge, more accurate than normalising
+    // the tiny difference pB - pA.
+    T dist = T(0);
     Vec2<T> normal{};
-    if (dist > T(0))
+    if (simplex.count == 1)
     {
-        // Unit normal from A to B. On an edge it is the exact perpendicular of the edge, which is
-        // more accurate than normalising the tiny difference pB - pA.
-        const Vec2<T> d = simplex.count == 1 ? -simplex.v[0].w : searchDirection(simplex, SearchDirection::EdgePerpendicular);
-        normal = (T(1) / length(d)) * d;
+        dist = length(simplex.v[0].w);
+        if (dist > T(0))
+            normal = (T(1) / dist) * -simplex.v[0].w;
+    }
+    else if (simplex.count == 2)
+    {
+        const Vec2<T> e12 = simplex.v[1].w - simplex.v[0].w;
+        const T len = length(e12);
+        dist = std::abs(cross(simplex.v[0].w, e12)) / len;
+        if (dist > T(0))
+            normal = (T(1) / len) * searchDirection(simplex, SearchDirection::EdgePerpendicular);
     }
 
     if (options.useRadii && (polyA.radius > T(0) || polyB.radius > T(0)))
