@@ -720,6 +720,22 @@ TEMPLATE_TEST_CASE("binary-search support agrees with the linear scan on convex 
             CHECK(dot(d, pts[b]) >= dot(d, pts[l]) - T(4) * Tolerances<T>::unitRoundoff);
         }
     }
+    // Clockwise order works the same (the search only uses the rise and fall of dot(d, P[i])).
+    {
+        const int n = 257;
+        std::vector<Vec2<T>> cw;
+        for (int i = 0; i < n; ++i)
+            cw.push_back({T(std::cos(-2 * M_PI * i / n)), T(std::sin(-2 * M_PI * i / n))});
+        const Polygon<T> poly{cw.data(), n, T(0)};
+        for (int k = 0; k < 360; ++k)
+        {
+            const Vec2<T> d{T(std::cos(k * M_PI / 180)), T(std::sin(k * M_PI / 180))};
+            const int l = findSupport(poly, d);
+            for (int start : {0, 100, 200})
+                CHECK(dot(d, cw[findSupportFrom(poly, d, start)]) >=
+                      dot(d, cw[l]) - T(4) * Tolerances<T>::unitRoundoff);
+        }
+    }
     // A square with collinear midpoints on every edge: (-1,-1) (0,-1) (1,-1) (1,0) (1,1) ...
     std::vector<Vec2<T>> sq = {{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}};
     const Polygon<T> poly{sq.data(), int(sq.size()), T(0)};
