@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev)
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(catch2 chromium)
+  packages+=(catch2 chromium python3)
 fi
 
 missing=()

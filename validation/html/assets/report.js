@@ -1,0 +1,1607 @@
+// The report page: reads the JSON inlined in the page's "report-data" block (docs/report-schema.md) and
+// draws everything with plain DOM and hand-written SVG. No libraries, no network.
+// <html data-mode="report"> renders a whole report.json; data-mode="case" renders one CaseDetail.
+// Every optional field may be missing: each section checks what it uses and degrades to a note.
+(function () {
+  'use strict';
+
+  var SVGNS = 'http://www.w3.org/2000/svg'; // an XML namespace name, not a network address
+
+  // --- Small DOM helpers --------------------------------------------------------------------------
+
+  function append(node, kids) {
+    for (var i = 0; i < kids.length; ++i) {
+      var k = kids[i];
+      if (k === null || k === undefined || k === false) continue;
+      if (Array.isArray(k)) append(node, k);
+      else if (typeof k === 'string' || typeof k === 'number') node.appendChild(document.createTextNode(String(k)));
+      else node.appendChild(k);
+    }
+    return node;
+  }
+
+  function setAttrs(node, attrs) {
+    if (!attrs) return node;
+    Object.keys(attrs).forEach(function (key) {
+      var v = attrs[key];
+      if (v === null || v === undefined || v === false) return;
+      if (key.slice(0, 2) === 'on' && typeof v === 'function') node.addEventListener(key.slice(2), v);
+      else if (key === 'text') node.textContent = v;
+      else node.setAttribute(key, v === true ? '' : String(v));
+    });
+    return node;
+  }
+
+  // h('div', {class: 'x'}, child, ...): an HTML element.
+  function h(tag, attrs) {
+    var node = setAttrs(document.createElement(tag), attrs);
+    return append(node, Array.prototype.slice.call(arguments, 2));
+  }
+
+  // sv('line', {x1: ...}, child, ...): an SVG element.
+  function sv(tag, attrs) {
+    var node = setAttrs(document.createElementNS(SVGNS, tag), attrs);
+    return append(node, Array.prototype.slice.call(arguments, 2));
+  }
+
+  function svgTitle(text) { return sv('title', {}, text); }
+
+  // --- Numbers ------------------------------------------------------------------------------------
+
+  function has(v) { return v !== undefined && v !== null; }
+
+  // A JSON number, or the schema's "inf" / "-inf" / "nan" strings; NaN when missing.
+  function num(v) {
+    if (typeof v === 'number') return v;
+    if (typeof v === 'string') {
+      var s = v.trim().toLowerCase();
+      if (s === 'inf' || s === '+inf' || s === 'infinity') return Infinity;
+      if (s === '-inf' || s === '-infinity') return -Infinity;
+      if (s === 'nan') return NaN;
+      var x = Number(s);
+      return s !== '' && isFinite(x) ? x : NaN;
+    }
+    return NaN;
+  }
+
+  function isNum(v) { return isFinite(num(v)); }
+
+  function trimMantissa(s) {
+    // "1.20e-16" -> "1.2e-16", "1.00e+5" -> "1e5"
+    var m = /^(-?\d+)(?:\.(\d*?))?0*e([+-])(\d+)$/.exec(s);
+    if (!m) return s;
+    return m[1] + (m[2] ? '.' + m[2] : '') + 'e' + (m[3] === '-' ? '-' : '') + m[4];
+  }
+
+  // 3 significant digits; exponent notation outside [1e-3, 1e6).
+  function fmt(v, digits) {
+    digits = digits || 3;
+    if (!has(v)) return '—';
+    var x = num(v);
+    if (isNaN(x)) return typeof v === 'string' && v.toLowerCase() === 'nan' ? 'NaN' : '—';
+    if (x === Infinity) return '∞';
+    if (x === -Infinity) return '−∞';
+    if (x === 0) return '0';
+    var a = Math.abs(x);
+    if (a < 1e-3 || a >= 1e6) return trimMantissa(x.toExponential(digits - 1)).replace('-', '−');
+    var s = String(Number(x.toPrecision(digits)));
+    if (a >= 1000) s = Number(s).toLocaleString('en-US');
+    return s.replace('-', '−');
+  }
+
+  function fmtInt(v) {
+    if (!has(v)) return '—';
+    var x = num(v);
+    if (!isFinite(x)) return fmt(v);
+    return Math.round(x).toLocaleString('en-US');
+  }
+
+  // A coordinate shown in full (shortest round-trip form): detail tables, where digits matter.
+  function fmtFull(v) {
+    if (!has(v)) return '—';
+    var x = num(v);
+    if (!isFinite(x)) return fmt(v);
+    var a = Math.abs(x);
+    if (a !== 0 && (a < 1e-4 || a >= 1e15)) return x.toExponential().replace('e+', 'e');
+    return String(x);
+  }
+
+  function fmtPt(p, f) {
+    f = f || fmtFull;
+    if (!Array.isArray(p)) return '—';
+    return '(' + f(p[0]) + ', ' + f(p[1]) + ')';
+  }
+
+  function pct(x) {
+    if (!isFinite(x)) return '—';
+    if (x === 0) return '0 %';
+    if (x < 0.001) return '<0.1 %';
+    return fmt(100 * x) + ' %';
+  }
+
+  function finitePoint(p) { return Array.isArray(p) && p.length >= 2 && isNum(p[0]) && isNum(p[1]); }
+
+  function pt(p) { return [num(p[0]), num(p[1])]; }
+
+  function pts(list) {
+    if (!Array.isArray(list)) return [];
+    return list.filter(finitePoint).map(pt);
+  }
+
+  // --- Colours ------------------------------------------------------------------------------------
+
+  // Variants in plots: distinct, medium saturation (readable as lines and markers).
+  var VARIANT_COLORS = ['#4e86c6', '#e0785f', '#5aa86b', '#a26dc2', '#d8a02c', '#3fa7a3', '#cf5f98', '#7f7f7f'];
+  // The talk's pastels, for geometry.
+  var GEO = {
+    aFill: '#b9d7f0', aStroke: '#5b8fc7',
+    bFill: '#f6c6b8', bStroke: '#d67c66',
+    zFill: '#cdeac0', zStroke: '#6aa35c',
+    simplexFill: '#dccaf0', simplexStroke: '#8a5fc0',
+    closest: '#f08a24', direction: '#d9487a', support: '#e8b923',
+    exact: '#333333', origin: '#222222'
+  };
+  var STOP_COLORS = ['#a8d5e2', '#f9d8a7', '#c5e3bf', '#e6c3e0', '#f4b6b6', '#d5d0f0', '#f3e6a0', '#cfd8dc'];
+
+  var variantColorMap = {};
+  function variantColor(name) {
+    if (!(name in variantColorMap)) {
+      variantColorMap[name] = VARIANT_COLORS[Object.keys(variantColorMap).length % VARIANT_COLORS.length];
+    }
+    return variantColorMap[name];
+  }
+
+  // --- Scales and axes ----------------------------------------------------------------------------
+
+  function linScale(d0, d1, r0, r1) {
+    var f = function (v) { return d1 === d0 ? (r0 + r1) / 2 : r0 + (v - d0) / (d1 - d0) * (r1 - r0); };
+    f.domain = [d0, d1];
+    return f;
+  }
+
+  function logScale(d0, d1, r0, r1) {
+    var l0 = Math.log10(d0), l1 = Math.log10(d1);
+    var f = function (v) { return l1 === l0 ? (r0 + r1) / 2 : r0 + (Math.log10(v) - l0) / (l1 - l0) * (r1 - r0); };
+    f.domain = [d0, d1];
+    return f;
+  }
+
+  // Log-scale domain padded around [lo, hi] (both > 0).
+  function logDomain(lo, hi, padDecades) {
+    if (!(lo > 0) || !(hi > 0) || !isFinite(lo) || !isFinite(hi)) return [1, 10];
+    var l0 = Math.log10(lo), l1 = Math.log10(hi);
+    var pad = padDecades === undefined ? 0.15 : padDecades;
+    if (l1 - l0 < 0.5) { var mid = (l0 + l1) / 2; l0 = mid - 0.25; l1 = mid + 0.25; }
+    return [Math.pow(10, l0 - pad), Math.pow(10, l1 + pad)];
+  }
+
+  // Ticks of a log axis: decades, plus 2 and 5 when the domain spans little.
+  function logTicks(d0, d1) {
+    var l0 = Math.log10(d0), l1 = Math.log10(d1);
+    var span = l1 - l0, ticks = [];
+    var step = span > 12 ? Math.ceil(span / 8) : 1;
+    for (var k = Math.ceil(l0); k <= Math.floor(l1); k += step) ticks.push({v: Math.pow(10, k), exp: k, major: true});
+    if (span < 2.5) {
+      var mults = span < 0.6 ? [2, 3, 4, 5, 6, 7, 8, 9] : span < 1.2 ? [2, 3, 5, 7] : [2, 5];
+      for (var e = Math.floor(l0); e <= Math.ceil(l1); ++e) {
+        mults.forEach(function (m) {
+          var v = m * Math.pow(10, e);
+          if (v >= d0 && v <= d1) ticks.push({v: v, exp: null, major: false});
+        });
+      }
+    }
+    return ticks;
+  }
+
+  function niceStep(span, count) {
+    var raw = span / Math.max(1, count);
+    if (!(raw > 0) || !isFinite(raw)) return 1;
+    var p = Math.pow(10, Math.floor(Math.log10(raw)));
+    var m = raw / p;
+    return (m < 1.5 ? 1 : m < 3.5 ? 2 : m < 7.5 ? 5 : 10) * p;
+  }
+
+  function linTicks(d0, d1, count) {
+    var step = niceStep(d1 - d0, count || 5), ticks = [];
+    for (var v = Math.ceil(d0 / step) * step; v <= d1 + step * 1e-9; v += step) ticks.push({v: Math.abs(v) < step * 1e-9 ? 0 : v});
+    return ticks;
+  }
+
+  // Text for a tick: powers of ten as 10 with a superscript exponent.
+  function tickText(t, attrs) {
+    if (t.exp !== null && t.exp !== undefined && (t.exp < -2 || t.exp > 3)) {
+      return sv('text', attrs, '10', sv('tspan', {dy: -5, 'font-size': 9}, String(t.exp).replace('-', '−')));
+    }
+    return sv('text', attrs, fmt(t.v));
+  }
+
+  // Draws x and y axes, grid, tick labels and axis titles into g for the plot box.
+  // opts.yLabelX0: x of the y tick labels' right edge (default box.x0); opts.xLabelY1: y below which
+  // the x tick labels go (default box.y1), for plots with a band under or beside the axes.
+  function drawAxes(g, box, xs, ys, xt, yt, xLabel, yLabel, opts) {
+    opts = opts || {};
+    var lx0 = opts.yLabelX0 === undefined ? box.x0 : opts.yLabelX0;
+    var ly1 = opts.xLabelY1 === undefined ? box.y1 : opts.xLabelY1;
+    g.appendChild(sv('rect', {x: box.x0, y: box.y0, width: box.x1 - box.x0, height: box.y1 - box.y0, class: 'plot-bg'}));
+    xt.forEach(function (t) {
+      var x = xs(t.v);
+      if (x < box.x0 - 0.5 || x > box.x1 + 0.5) return;
+      g.appendChild(sv('line', {x1: x, x2: x, y1: box.y0, y2: box.y1, class: t.major === false ? 'grid minor' : 'grid'}));
+      g.appendChild(tickText(t, {x: x, y: ly1 + 16, class: 'tick', 'text-anchor': 'middle'}));
+    });
+    yt.forEach(function (t) {
+      var y = ys(t.v);
+      if (y < box.y0 - 0.5 || y > box.y1 + 0.5) return;
+      g.appendChild(sv('line', {x1: box.x0, x2: box.x1, y1: y, y2: y, class: t.major === false ? 'grid minor' : 'grid'}));
+      g.appendChild(tickText(t, {x: lx0 - 6, y: y + 4, class: 'tick', 'text-anchor': 'end'}));
+    });
+    g.appendChild(sv('rect', {x: box.x0, y: box.y0, width: box.x1 - box.x0, height: box.y1 - box.y0, class: 'plot-frame'}));
+    if (xLabel) g.appendChild(sv('text', {x: (box.x0 + box.x1) / 2, y: ly1 + 36, class: 'axis-label', 'text-anchor': 'middle'}, xLabel));
+    if (yLabel) {
+      var cy = (box.y0 + box.y1) / 2;
+      g.appendChild(sv('text', {x: 0, y: 0, transform: 'translate(' + (lx0 - 46) + ',' + cy + ') rotate(-90)', class: 'axis-label', 'text-anchor': 'middle'}, yLabel));
+    }
+  }
+
+  function legendItem(color, label, shape) {
+    var sw = sv('svg', {width: 18, height: 14, class: 'legend-swatch'});
+    if (shape === 'circle') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 5, fill: color, stroke: '#333', 'stroke-width': 0.7}));
+    else if (shape === 'triangle') sw.appendChild(sv('path', {d: 'M9 1.5 L15 12 L3 12 Z', fill: 'white', stroke: color === 'none' ? '#333' : color, 'stroke-width': 1.6}));
+    else if (shape === 'ring') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 4.5, fill: 'white', stroke: color, 'stroke-width': 2.5}));
+    else if (shape === 'cross') sw.appendChild(sv('path', {d: 'M4 2L14 12M4 12L14 2', stroke: color, 'stroke-width': 2.2}));
+    else if (shape === 'diamond') sw.appendChild(sv('path', {d: 'M9 0.5L15.5 7L9 13.5L2.5 7Z', fill: color, stroke: '#6b5200', 'stroke-width': 1}));
+    else if (shape === 'line') sw.appendChild(sv('line', {x1: 1, x2: 17, y1: 7, y2: 7, stroke: color, 'stroke-width': 2}));
+    else if (shape === 'dash') sw.appendChild(sv('line', {x1: 1, x2: 17, y1: 7, y2: 7, stroke: color, 'stroke-width': 2, 'stroke-dasharray': '4 3'}));
+    else sw.appendChild(sv('rect', {x: 1, y: 2, width: 16, height: 10, rx: 2, fill: color, stroke: 'rgba(0,0,0,.35)', 'stroke-width': 0.7}));
+    return h('span', {class: 'legend-item'}, sw, label);
+  }
+
+  // --- Data access ----------------------------------------------------------------------------------
+
+  function families(report) { return Array.isArray(report.families) ? report.families.filter(function (f) { return f && typeof f === 'object'; }) : []; }
+
+  function familyVariants(f) { return f && f.variants && typeof f.variants === 'object' ? f.variants : {}; }
+
+  // Variant names: the report's order first, then any others found in the families.
+  function variantNames(report) {
+    var names = [];
+    (Array.isArray(report.variants) ? report.variants : []).forEach(function (v) {
+      if (v && has(v.name) && names.indexOf(String(v.name)) < 0) names.push(String(v.name));
+    });
+    families(report).forEach(function (f) {
+      Object.keys(familyVariants(f)).forEach(function (n) { if (names.indexOf(n) < 0) names.push(n); });
+    });
+    return names;
+  }
+
+  function hist(stats, metric) {
+    var e = stats && stats.errors;
+    var hh = e && e[metric];
+    if (!hh && metric === 'width_ulps' && stats && stats.interval) hh = stats.interval.width_ulps;
+    return hh && typeof hh === 'object' ? hh : null;
+  }
+
+  function misclassified(st) {
+    return ['false_overlap', 'false_separation', 'undecidable'].reduce(function (s, k) { return s + (isNum(st[k]) ? num(st[k]) : 0); }, 0);
+  }
+
+  // The rule for one scatter point (a family x variant pair): a positive time and a normalised error.
+  function scatterEligible(st) {
+    var ns = num(st && st.ns_per_query);
+    var hh = hist(st, 'normalized');
+    return isFinite(ns) && ns > 0 && !!hh && (isNum(hh.p99) || isNum(hh.max));
+  }
+
+  var METRICS = [
+    {key: 'normalized', label: 'normalised error', axis: 'error / (u·R)  [u: unit roundoff, R: scale]'},
+    {key: 'abs', label: 'absolute error', axis: '|d_gjk − d_exact|  [world units]'},
+    {key: 'ulps', label: 'error in ulps', axis: 'error  [ulps of d_exact]'},
+    {key: 'rel', label: 'relative error', axis: '|d_gjk − d_exact| / d_exact'},
+    {key: 'bound_ratio', label: 'error / bound', axis: 'error / error bound  [≤ 1 passes]'},
+    {key: 'witness', label: 'witness error', axis: 'witness point distance to its shape  [world units]'},
+    {key: 'witness_gap', label: 'witness gap', axis: '| |pA − pB| − d_gjk |  [world units]'},
+    {key: 'input_rounding', label: 'input rounding', axis: '|d_exact(rounded input) − d_exact|  [world units]'},
+    {key: 'width_ulps', label: 'interval width', axis: 'certified interval width  [ulps]'}
+  ];
+
+  // --- Report page -------------------------------------------------------------------------------
+
+  function section(id, title, intro) {
+    return h('section', {id: id, class: 'card'}, h('h2', {}, title), intro ? h('p', {class: 'intro'}, intro) : null);
+  }
+
+  function guarded(name, fn) {
+    try {
+      return fn();
+    } catch (err) {
+      console.error('gjk report: section "' + name + '" failed: ' + (err && err.stack ? err.stack : err));
+      return h('div', {class: 'error-box'}, 'This part of the page could not be drawn (' + name + '): ' + err);
+    }
+  }
+
+  function verdictBadge(passed) {
+    if (passed === true) return h('span', {class: 'badge pass big'}, 'PASS');
+    if (passed === false) return h('span', {class: 'badge fail big'}, 'FAIL');
+    return h('span', {class: 'badge unknown big'}, 'no verdict');
+  }
+
+  function passBadge(p) {
+    if (p === true) return h('span', {class: 'badge pass'}, 'pass');
+    if (p === false) return h('span', {class: 'badge fail'}, 'fail');
+    return h('span', {class: 'badge unknown'}, '—');
+  }
+
+  function renderHeader(report) {
+    var ctx = report.context || {};
+    var nFam = families(report).length, nVar = variantNames(report).length;
+    return h('header', {class: 'page-head'},
+      h('div', {class: 'title-row'},
+        h('div', {},
+          h('h1', {}, 'GJK 2D validation report'),
+          h('div', {class: 'subtitle'},
+            [has(ctx.date) ? String(ctx.date) : null, has(ctx.git_revision) ? 'rev ' + ctx.git_revision : null,
+             fmtInt(ctx.cases_total) + ' cases', nFam + (nFam === 1 ? ' family' : ' families'),
+             nVar + (nVar === 1 ? ' variant' : ' variants')].filter(Boolean).join('  ·  '))),
+        verdictBadge(report.passed)),
+      h('nav', {class: 'toc'},
+        h('a', {href: '#context'}, 'Context'), h('a', {href: '#summary'}, 'Summary'),
+        h('a', {href: '#speed'}, 'Speed vs error'), h('a', {href: '#worst'}, 'Worst cases'),
+        h('a', {href: '#families'}, 'Families'), h('a', {href: '#rejected'}, 'Rejected inputs')));
+  }
+
+  function renderContext(report) {
+    var ctx = report.context || {};
+    var sec = section('context', 'Context');
+    var rows = [];
+    function row(k, v) { if (has(v) && v !== '') rows.push(h('dt', {}, k), h('dd', {}, v)); }
+    row('Date', ctx.date);
+    row('Host', ctx.host);
+    row('Compiler', ctx.compiler);
+    row('Flags', has(ctx.flags) ? h('code', {}, String(ctx.flags)) : null);
+    row('Build type', ctx.build_type);
+    row('Git revision', has(ctx.git_revision) ? h('code', {}, String(ctx.git_revision)) : null);
+    row('Command', has(ctx.command) ? h('code', {}, String(ctx.command)) : null);
+    row('Seed', has(ctx.seed) ? String(ctx.seed) : null);
+    row('Threads', has(ctx.threads) ? String(ctx.threads) : null);
+    if (Array.isArray(ctx.inputs) && ctx.inputs.length) {
+      row('Inputs', h('ul', {class: 'plain'}, ctx.inputs.map(function (inp) {
+        if (!inp || typeof inp !== 'object') return h('li', {}, String(inp));
+        var what = has(inp.family) ? 'family ' + inp.family : has(inp.file) ? 'file ' + inp.file : JSON.stringify(inp);
+        return h('li', {}, what, has(inp.count) ? ': ' + fmtInt(inp.count) + ' cases' : '', has(inp.seed) ? ' (seed ' + inp.seed + ')' : '');
+      })));
+    }
+    row('Cases', has(ctx.cases_total) || has(ctx.cases_rejected)
+      ? fmtInt(ctx.cases_total) + ' total' + (has(ctx.cases_rejected) ? ', ' + fmtInt(ctx.cases_rejected) + ' rejected' : '') : null);
+    row('Exact route', ctx.exact_route);
+    row('Exit code', has(report.exit_code) ? String(report.exit_code) + (report.passed === true ? ' (passed)' : report.passed === false ? ' (failed)' : '') : null);
+    if (ctx.elapsed_s && typeof ctx.elapsed_s === 'object') {
+      row('Elapsed', Object.keys(ctx.elapsed_s).map(function (k) { return k + ' ' + fmt(ctx.elapsed_s[k]) + ' s'; }).join(', '));
+    }
+    // Fields this page does not know yet are still shown.
+    var known = ['date', 'host', 'compiler', 'flags', 'build_type', 'git_revision', 'command', 'seed', 'threads', 'inputs',
+      'cases_total', 'cases_rejected', 'exact_route', 'elapsed_s'];
+    Object.keys(ctx).forEach(function (k) {
+      if (known.indexOf(k) >= 0) return;
+      var v = ctx[k];
+      row(k, typeof v === 'object' ? h('code', {}, JSON.stringify(v)) : String(v));
+    });
+    var grid = h('dl', {class: 'kv'}, rows);
+
+    var vars = Array.isArray(report.variants) ? report.variants : [];
+    var vt = null;
+    if (vars.length) {
+      vt = h('table', {class: 'data compact'},
+        h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'))),
+        h('tbody', {}, vars.map(function (v) {
+          v = v || {};
+          var opts = v.options && typeof v.options === 'object'
+            ? Object.keys(v.options).map(function (k) { return k + ': ' + v.options[k]; }).join(', ') : '';
+          var bound = v.bound && typeof v.bound === 'object'
+            ? [has(v.bound.formula) ? String(v.bound.formula) : null, has(v.bound.unit_roundoff) ? 'u = ' + fmt(v.bound.unit_roundoff) : null].filter(Boolean).join(', ')
+            : '—';
+          return h('tr', {},
+            h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(String(v.name))}), String(v.name),
+              report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null),
+            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, opts), h('td', {class: 'small'}, bound));
+        })));
+    }
+    append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), vt) : null)]);
+    return sec;
+  }
+
+  function renderSummary(report) {
+    var sec = section('summary', 'Summary',
+      'One row per family and variant. Errors are |d_gjk − d_exact|: absolute (world units), in ulps of the exact distance, and normalised by u·R (u: the type\'s unit roundoff, R: the largest coordinate of A − B in the compute frame). p99 is read from the histogram bins (upper bin edge). Misclassified: false overlap, false separation or undecidable. Failures: cases outside the bound or misclassified.');
+    var names = variantNames(report);
+    var fams = families(report);
+    if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no families.')); return sec; }
+    var hasBound = fams.some(function (f) { return Object.keys(familyVariants(f)).some(function (v) { return hist(familyVariants(f)[v], 'bound_ratio'); }); });
+    var head1 = h('tr', {},
+      h('th', {rowspan: 2}, 'Family'), h('th', {rowspan: 2}, 'Variant'), h('th', {rowspan: 2, class: 'num'}, 'Cases'),
+      h('th', {rowspan: 2, class: 'num', title: 'false overlap + false separation + undecidable'}, 'Mis\u00adclass.'), h('th', {rowspan: 2, class: 'num'}, 'Failures'),
+      h('th', {colspan: 2, class: 'grp'}, 'Absolute error'), h('th', {colspan: 2, class: 'grp'}, 'Error [ulps]'),
+      h('th', {colspan: 2, class: 'grp'}, 'Error / (u·R)'),
+      hasBound ? h('th', {class: 'grp'}, 'Error / bound') : null,
+      h('th', {colspan: 2, class: 'grp'}, 'Iterations'),
+      h('th', {rowspan: 2, class: 'num', title: 'mean time per query; below it, the ratio to the baseline variant'}, 'ns / query'),
+      h('th', {rowspan: 2}, 'Result'));
+    var head2 = h('tr', {}, ['max', 'p99', 'max', 'p99', 'max', 'p99'].concat(hasBound ? ['max'] : [], ['mean', 'max']).map(function (t) { return h('th', {class: 'num sub'}, t); }));
+    var body = h('tbody', {});
+    fams.forEach(function (f) {
+      var fv = familyVariants(f);
+      var present = names.filter(function (n) { return n in fv; });
+      var missing = names.filter(function (n) { return !(n in fv); });
+      var rows = present.length + (missing.length ? 1 : 0);
+      present.forEach(function (vn, i) {
+        var st = fv[vn] || {};
+        var tr = h('tr', {class: i === 0 ? 'family-first' : ''});
+        if (i === 0) tr.appendChild(h('td', {rowspan: rows, class: 'family-cell'}, h('a', {href: '#family-' + slug(f.name)}, String(f.name)),
+          has(f.cases) ? h('div', {class: 'small muted'}, fmtInt(f.cases) + ' cases') : null));
+        var mis = misclassified(st);
+        function detail(keys) {
+          return keys.filter(function (k) { return num(st[k]) > 0; }).map(function (k) { return fmtInt(st[k]) + ' ' + k.replace(/_/g, ' '); });
+        }
+        var misDetail = detail(['false_overlap', 'false_separation', 'undecidable']);
+        var failDetail = detail(['nonfinite', 'out_of_range', 'iteration_limit']);
+        var rate = has(st.failure_rate_upper95) && isNum(st.failure_rate_upper95) ? 'failure rate < ' + fmt(st.failure_rate_upper95) + ' (upper 95 % bound)' : null;
+        var ha = hist(st, 'abs'), hu = hist(st, 'ulps'), hn = hist(st, 'normalized'), hb = hist(st, 'bound_ratio');
+        var it = st.iterations || {};
+        var ns = has(st.ns_per_query) ? fmt(st.ns_per_query) : '—';
+        var spread = Array.isArray(st.ns_spread) ? 'spread ' + fmt(st.ns_spread[0]) + ' – ' + fmt(st.ns_spread[1]) + ' ns' : null;
+        append(tr, [
+          h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(vn)}), vn),
+          h('td', {class: 'num'}, fmtInt(st.cases)),
+          h('td', {class: 'num' + (mis > 0 ? ' bad' : '')}, fmtInt(mis), misDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
+          h('td', {class: 'num' + (num(st.failures) > 0 ? ' bad' : ''), title: rate},
+            fmtInt(st.failures), failDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
+          h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
+          h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
+          h('td', {class: 'num'}, fmt(hn && hn.max)), h('td', {class: 'num'}, fmt(hn && hn.p99)),
+          hasBound ? h('td', {class: 'num' + (hb && num(hb.max) > 1 ? ' bad' : '')}, fmt(hb && hb.max)) : null,
+          h('td', {class: 'num'}, fmt(it.mean)), h('td', {class: 'num'}, fmtInt(it.max)),
+          h('td', {class: 'num', title: spread}, ns, has(st.ratio_to_baseline) && vn !== report.baseline_variant ? h('div', {class: 'small muted'}, fmt(st.ratio_to_baseline) + '× baseline') : null),
+          h('td', {}, passBadge(st.pass))]);
+        body.appendChild(tr);
+      });
+      if (missing.length) {
+        var tr = h('tr', {class: 'missing-row' + (present.length ? '' : ' family-first')});
+        if (!present.length) tr.appendChild(h('td', {class: 'family-cell'}, String(f.name)));
+        tr.appendChild(h('td', {colspan: 16, class: 'muted small'}, 'not run in this family: ' + missing.join(', ')));
+        body.appendChild(tr);
+      }
+    });
+    sec.appendChild(h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body)));
+    return sec;
+  }
+
+  function slug(s) { return String(s).toLowerCase().replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, ''); }
+
+  // --- Speed against error --------------------------------------------------------------------------
+
+  function renderScatter(report) {
+    var sec = section('speed', 'Speed against error',
+      'Every family × variant is one point pair: time per query against the normalised error, filled circle at p99 and open triangle at the maximum, joined by a line. Lower-left is better. Hover a marker for its numbers.');
+    var items = [];
+    families(report).forEach(function (f) {
+      var fv = familyVariants(f);
+      Object.keys(fv).forEach(function (vn) {
+        var st = fv[vn];
+        if (!scatterEligible(st)) return;
+        var hn = hist(st, 'normalized');
+        items.push({family: String(f.name), variant: vn, ns: num(st.ns_per_query), p99: num(hn.p99), max: num(hn.max), st: st});
+      });
+    });
+    var W = 1120, H = 480, box = {x0: 84, y0: 20, x1: W - 200, y1: H - 70};
+    var svg = sv('svg', {id: 'scatter', class: 'plot', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H, role: 'img', 'aria-label': 'time per query against normalised error'});
+    if (!items.length) {
+      sec.appendChild(h('p', {class: 'note'}, 'No family × variant has both a timing and a normalised error: nothing to plot.'));
+      svg.setAttribute('data-points', '0');
+      return sec;
+    }
+    var xsVals = items.map(function (it) { return it.ns; });
+    var ysVals = [];
+    items.forEach(function (it) { [it.p99, it.max].forEach(function (v) { if (isFinite(v) && v > 0) ysVals.push(v); }); });
+    var xd = logDomain(Math.min.apply(null, xsVals), Math.max.apply(null, xsVals), 0.08);
+    var yd = ysVals.length ? logDomain(Math.min.apply(null, ysVals), Math.max.apply(null, ysVals), 0.3) : [0.1, 10];
+    var zeroBand = items.some(function (it) { return !(it.p99 > 0) || !(it.max > 0); });
+    var plotBox = {x0: box.x0, y0: box.y0, x1: box.x1, y1: zeroBand ? box.y1 - 26 : box.y1};
+    // The zero band goes under the plot, before the axes, so their labels stay on top.
+    if (zeroBand) {
+      svg.appendChild(sv('rect', {x: plotBox.x0, y: plotBox.y1 + 2, width: plotBox.x1 - plotBox.x0, height: 22, class: 'zero-band'}));
+      svg.appendChild(sv('text', {x: plotBox.x0 - 6, y: plotBox.y1 + 17, class: 'tick', 'text-anchor': 'end'}, '0'));
+    }
+    var xs = logScale(xd[0], xd[1], plotBox.x0 + 10, plotBox.x1 - 10);
+    var ys = logScale(yd[0], yd[1], plotBox.y1 - 6, plotBox.y0 + 6);
+    var g = sv('g', {});
+    svg.appendChild(g);
+    drawAxes(g, plotBox, xs, ys, logTicks(xd[0], xd[1]), logTicks(yd[0], yd[1]),
+      'time per query  [ns, log scale]', 'normalised error  [u·R, log scale]', {xLabelY1: box.y1});
+    function yOf(v) { return v > 0 && isFinite(v) ? ys(v) : plotBox.y1 + 13; }
+    var showLabels = items.length <= 60;
+    var labels = sv('g', {class: 'pt-labels'});
+    // Family labels beside the markers, at the first of a few spots that overlaps no label or marker.
+    var taken = [];
+    items.forEach(function (it) {
+      var x = xs(it.ns);
+      [it.p99, it.max].forEach(function (v) { if (isFinite(v)) { var y = yOf(v); taken.push({x0: x - 8, x1: x + 8, y0: y - 8, y1: y + 8}); } });
+    });
+    function overlaps(b) {
+      return taken.some(function (t) { return b.x0 < t.x1 && b.x1 > t.x0 && b.y0 < t.y1 && b.y1 > t.y0; });
+    }
+    function placeLabel(textS, x, yp, ym) {
+      var w = 5.9 * textS.length + 2, hgt = 13;
+      var ys2 = [ym, yp].filter(function (y) { return y !== null; });
+      var spots = [];
+      ys2.forEach(function (y) {
+        spots.push([x + 10, y - 4], [x + 10, y + 14], [x - 10 - w, y - 4], [x - 10 - w, y + 14], [x + 10, y - 16], [x - w / 2, y - 14], [x - w / 2, y + 24]);
+      });
+      var best = null;
+      for (var i = 0; i < spots.length; ++i) {
+        var b = {x0: spots[i][0], x1: spots[i][0] + w, y0: spots[i][1] - hgt + 2, y1: spots[i][1] + 2};
+        if (b.x0 >= plotBox.x0 && b.x1 <= plotBox.x1 && b.y0 >= plotBox.y0 && b.y1 <= plotBox.y1 + (zeroBand ? 24 : 0) && !overlaps(b)) { best = spots[i]; break; }
+      }
+      // In a crowd, a label that fits nowhere is left out (the marker's hover title still names it).
+      if (!best) { if (items.length > 12) return; best = spots[0]; }
+      taken.push({x0: best[0], x1: best[0] + w, y0: best[1] - hgt + 2, y1: best[1] + 2});
+      var left = best[0] + w <= x - 8;
+      labels.appendChild(sv('text', {x: left ? best[0] + w : best[0], y: best[1], class: 'pt-label', 'text-anchor': left ? 'end' : 'start'}, textS));
+    }
+    var pointsG = sv('g', {});
+    items.forEach(function (it) {
+      var c = variantColor(it.variant), x = xs(it.ns);
+      var tip = it.family + ' / ' + it.variant + '\n' + fmt(it.ns) + ' ns per query\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
+        (it.st.pass === false ? '\nFAIL (' + fmtInt(it.st.failures) + ' failures)' : '');
+      var pg = sv('g', {class: 'pt', 'data-family': it.family, 'data-variant': it.variant}, svgTitle(tip));
+      var yp = isFinite(it.p99) ? yOf(it.p99) : null, ym = isFinite(it.max) ? yOf(it.max) : null;
+      if (yp !== null && ym !== null) pg.appendChild(sv('line', {x1: x, x2: x, y1: yp, y2: ym, stroke: c, 'stroke-width': 1.5, opacity: 0.6}));
+      if (yp !== null) pg.appendChild(sv('circle', {cx: x, cy: yp, r: 6, fill: c, stroke: it.st.pass === false ? '#c0392b' : '#333', 'stroke-width': it.st.pass === false ? 2.5 : 0.8, class: 'mk-p99'}));
+      if (ym !== null) pg.appendChild(sv('path', {d: 'M' + x + ' ' + (ym - 7) + ' l6.5 11 l-13 0 Z', fill: 'white', stroke: c, 'stroke-width': 2, class: 'mk-max'}));
+      pointsG.appendChild(pg);
+      if (showLabels) placeLabel(it.family, x, yp, ym);
+    });
+    g.appendChild(pointsG);
+    g.appendChild(labels);
+    // Legend, right of the plot.
+    var lx = box.x1 + 20, ly = box.y0 + 10;
+    var lg = sv('g', {class: 'legend'});
+    lg.appendChild(sv('text', {x: lx, y: ly, class: 'legend-title'}, 'Variant'));
+    var vnames = [];
+    items.forEach(function (it) { if (vnames.indexOf(it.variant) < 0) vnames.push(it.variant); });
+    vnames.forEach(function (vn, i) {
+      var y = ly + 20 + i * 20;
+      lg.appendChild(sv('circle', {cx: lx + 7, cy: y - 4, r: 6, fill: variantColor(vn), stroke: '#333', 'stroke-width': 0.8}));
+      lg.appendChild(sv('text', {x: lx + 20, y: y, class: 'legend-text'}, vn));
+    });
+    var ly2 = ly + 20 + vnames.length * 20 + 14;
+    lg.appendChild(sv('text', {x: lx, y: ly2, class: 'legend-title'}, 'Marker'));
+    lg.appendChild(sv('circle', {cx: lx + 7, cy: ly2 + 16, r: 6, fill: '#bbb', stroke: '#333', 'stroke-width': 0.8}));
+    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 20, class: 'legend-text'}, 'p99 error'));
+    lg.appendChild(sv('path', {d: 'M' + (lx + 7) + ' ' + (ly2 + 29) + ' l6.5 11 l-13 0 Z', fill: 'white', stroke: '#555', 'stroke-width': 2}));
+    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 40, class: 'legend-text'}, 'max error'));
+    lg.appendChild(sv('circle', {cx: lx + 7, cy: ly2 + 56, r: 6, fill: '#bbb', stroke: '#c0392b', 'stroke-width': 2.5}));
+    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 60, class: 'legend-text'}, 'fails its bound'));
+    if (zeroBand) lg.appendChild(sv('text', {x: lx, y: ly2 + 84, class: 'legend-text small'}, 'bottom band: error 0'));
+    svg.appendChild(lg);
+    svg.setAttribute('data-points', String(items.length));
+    var toggle = showLabels ? h('label', {class: 'inline-check'}, h('input', {type: 'checkbox', checked: true, onchange: function (e) {
+      labels.style.display = e.target.checked ? '' : 'none';
+    }}), ' family labels') : null;
+    append(sec, [h('div', {class: 'plot-wrap'}, svg), toggle]);
+    return sec;
+  }
+
+  // --- Families: histograms -------------------------------------------------------------------------
+
+  function histRange(hists) {
+    var lo = Infinity, hi = -Infinity;
+    hists.forEach(function (hh) {
+      var c = Array.isArray(hh.counts) ? hh.counts : [];
+      for (var i = 0; i < c.length; ++i) if (num(c[i]) > 0) { lo = Math.min(lo, i); hi = Math.max(hi, i); }
+    });
+    return lo <= hi ? [lo, hi] : null;
+  }
+
+  function errorHistogram(fam, metric, names) {
+    var fv = familyVariants(fam);
+    var series = names.filter(function (n) { return hist(fv[n], metric.key); }).map(function (n) { return {name: n, h: hist(fv[n], metric.key)}; });
+    var W = 600, H = 290, box = {x0: 72, y0: 14, x1: W - 14, y1: H - 48};
+    var svg = sv('svg', {class: 'plot', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H});
+    if (!series.length) {
+      svg.appendChild(sv('text', {x: W / 2, y: H / 2, class: 'note-text', 'text-anchor': 'middle'}, 'no ' + metric.label + ' histogram in this family'));
+      return svg;
+    }
+    // Bins in log10 units, per series (they may differ); common display range.
+    var lmin = Infinity, lmax = -Infinity, ymax = 1, anyZeros = false;
+    series.forEach(function (s) {
+      var hh = s.h, l0 = isNum(hh.log10_min) ? num(hh.log10_min) : -40, bpd = num(hh.bins_per_decade) > 0 ? num(hh.bins_per_decade) : 10;
+      var r = histRange([hh]);
+      s.l0 = l0; s.bpd = bpd;
+      if (r) { lmin = Math.min(lmin, l0 + r[0] / bpd); lmax = Math.max(lmax, l0 + (r[1] + 1) / bpd); }
+      (hh.counts || []).forEach(function (c) { ymax = Math.max(ymax, num(c) || 0); });
+      if (num(hh.zeros) > 0) { anyZeros = true; ymax = Math.max(ymax, num(hh.zeros)); }
+      [hh.p99, hh.max].forEach(function (v) { v = num(v); if (v > 0 && isFinite(v)) { lmin = Math.min(lmin, Math.log10(v)); lmax = Math.max(lmax, Math.log10(v)); } });
+    });
+    if (!(lmin <= lmax)) { lmin = -1; lmax = 1; }
+    lmin = Math.floor(lmin - 0.3); lmax = Math.ceil(lmax + 0.3);
+    var zeroW = anyZeros ? 34 : 0;
+    var pbox = {x0: box.x0 + zeroW, y0: box.y0, x1: box.x1, y1: box.y1};
+    var xs = logScale(Math.pow(10, lmin), Math.pow(10, lmax), pbox.x0, pbox.x1);
+    var ys = logScale(0.7, ymax * 1.6, pbox.y1, pbox.y0);
+    var g = sv('g', {});
+    svg.appendChild(g);
+    var xticks = logTicks(Math.pow(10, lmin), Math.pow(10, lmax)).filter(function (t) { return !anyZeros || xs(t.v) > pbox.x0 + 12; });
+    drawAxes(g, pbox, xs, ys, xticks, logTicks(0.7, ymax * 1.6).filter(function (t) { return t.major !== false; }),
+      metric.axis, 'cases  [log scale]', {yLabelX0: box.x0});
+    if (anyZeros) {
+      g.appendChild(sv('rect', {x: box.x0, y: pbox.y0, width: zeroW - 4, height: pbox.y1 - pbox.y0, class: 'zero-band'}));
+      g.appendChild(sv('text', {x: box.x0 + (zeroW - 4) / 2, y: pbox.y1 + 16, class: 'tick', 'text-anchor': 'middle'}, '0'));
+    }
+    var bw = series.length > 1 ? (zeroW - 8) / series.length : zeroW - 8;
+    series.forEach(function (s, si) {
+      var c = variantColor(s.name), hh = s.h, counts = hh.counts || [];
+      var d = '', started = false, lastX = null;
+      for (var i = 0; i < counts.length; ++i) {
+        var cnt = num(counts[i]);
+        var a = s.l0 + i / s.bpd, b = s.l0 + (i + 1) / s.bpd;
+        if (b <= lmin || a >= lmax) continue;
+        var xa = xs(Math.pow(10, Math.max(a, lmin))), xb = xs(Math.pow(10, Math.min(b, lmax)));
+        var y = cnt > 0 ? ys(cnt) : pbox.y1;
+        if (!started) { d += 'M' + xa.toFixed(2) + ' ' + pbox.y1; started = true; }
+        d += 'L' + xa.toFixed(2) + ' ' + y.toFixed(2) + 'L' + xb.toFixed(2) + ' ' + y.toFixed(2);
+        lastX = xb;
+      }
+      if (started) {
+        d += 'L' + lastX.toFixed(2) + ' ' + pbox.y1 + 'Z';
+        g.appendChild(sv('path', {d: d, fill: c, 'fill-opacity': 0.18, stroke: c, 'stroke-width': 1.6}, svgTitle(s.name + ': ' + fmtInt(hh.count) + ' values')));
+      }
+      if (num(hh.zeros) > 0) {
+        var y0 = ys(num(hh.zeros));
+        g.appendChild(sv('rect', {x: box.x0 + 2 + si * bw, y: y0, width: Math.max(2, bw - 1), height: pbox.y1 - y0, fill: c, 'fill-opacity': 0.55, stroke: c},
+          svgTitle(s.name + ': ' + fmtInt(hh.zeros) + ' exact zeros')));
+      }
+      var p99 = num(hh.p99), mx = num(hh.max);
+      if (p99 > 0 && isFinite(p99)) {
+        var xp = xs(p99);
+        g.appendChild(sv('line', {x1: xp, x2: xp, y1: pbox.y0, y2: pbox.y1, stroke: c, 'stroke-width': 1.4, 'stroke-dasharray': '5 3'}, svgTitle(s.name + ' p99 = ' + fmt(p99))));
+      }
+      if (mx > 0 && isFinite(mx)) {
+        var xm = xs(mx);
+        g.appendChild(sv('path', {d: 'M' + xm + ' ' + (pbox.y0 + 12) + ' l-5 -9 l10 0 Z', fill: c, stroke: '#333', 'stroke-width': 0.6}, svgTitle(s.name + ' max = ' + fmt(mx) + (has(hh.max_case) ? ' (' + hh.max_case + ')' : ''))));
+      }
+    });
+    return svg;
+  }
+
+  function iterationHistogram(fam, names) {
+    var fv = familyVariants(fam);
+    var series = names.filter(function (n) { return fv[n] && fv[n].iterations && Array.isArray(fv[n].iterations.counts); })
+      .map(function (n) { return {name: n, counts: fv[n].iterations.counts.map(function (c) { return num(c) || 0; })}; });
+    var W = 420, H = 260, box = {x0: 64, y0: 14, x1: W - 12, y1: H - 48};
+    var svg = sv('svg', {class: 'plot', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H});
+    if (!series.length) {
+      svg.appendChild(sv('text', {x: W / 2, y: H / 2, class: 'note-text', 'text-anchor': 'middle'}, 'no iteration counts'));
+      return svg;
+    }
+    var last = 0, ymax = 1;
+    series.forEach(function (s) { s.counts.forEach(function (c, i) { if (c > 0) last = Math.max(last, i); ymax = Math.max(ymax, c); }); });
+    var n = last + 1;
+    var xs = linScale(-0.5, n - 0.5, box.x0, box.x1);
+    var ys = linScale(0, ymax * 1.08, box.y1, box.y0);
+    var g = sv('g', {});
+    svg.appendChild(g);
+    var xt = [];
+    var stepT = Math.max(1, Math.ceil(n / 16));
+    for (var i = 0; i < n; i += stepT) xt.push({v: i});
+    drawAxes(g, box, xs, ys, xt, linTicks(0, ymax * 1.08, 5), 'GJK iterations  [support points found]', 'cases');
+    var slot = (box.x1 - box.x0) / n, bw = slot * 0.8 / series.length;
+    series.forEach(function (s, si) {
+      s.counts.forEach(function (c, i) {
+        if (i >= n || !(c > 0)) return;
+        var x = box.x0 + i * slot + slot * 0.1 + si * bw, y = ys(c);
+        g.appendChild(sv('rect', {x: x, y: y, width: Math.max(1, bw - 1), height: box.y1 - y, fill: variantColor(s.name), 'fill-opacity': 0.8},
+          svgTitle(s.name + ': ' + fmtInt(c) + ' cases with ' + i + ' iterations')));
+      });
+    });
+    return svg;
+  }
+
+  function stopReasons(fam, names) {
+    var fv = familyVariants(fam);
+    var reasons = [];
+    names.forEach(function (n) {
+      var st = fv[n] && fv[n].stops;
+      if (st && typeof st === 'object') Object.keys(st).forEach(function (k) { if (num(st[k]) > 0 && reasons.indexOf(k) < 0) reasons.push(k); });
+    });
+    var wrap = h('div', {class: 'stops'});
+    if (!reasons.length) { wrap.appendChild(h('p', {class: 'note'}, 'no stop reasons recorded')); return wrap; }
+    names.forEach(function (n) {
+      var st = fv[n] && fv[n].stops;
+      if (!st) return;
+      var total = reasons.reduce(function (s, k) { return s + (num(st[k]) || 0); }, 0);
+      var bar = h('div', {class: 'stop-bar'});
+      reasons.forEach(function (k, i) {
+        var c = num(st[k]) || 0;
+        if (!(c > 0) || !(total > 0)) return;
+        var frac = c / total;
+        bar.appendChild(h('span', {class: 'stop-seg', style: 'width:' + (100 * frac) + '%;background:' + STOP_COLORS[i % STOP_COLORS.length],
+          title: n + ': ' + k + ' ' + fmtInt(c) + ' (' + pct(frac) + ')'}, frac > 0.12 ? pct(frac) : ''));
+      });
+      wrap.appendChild(h('div', {class: 'stop-row'}, h('span', {class: 'stop-name'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n), bar));
+    });
+    wrap.appendChild(h('div', {class: 'legend'}, reasons.map(function (k, i) { return legendItem(STOP_COLORS[i % STOP_COLORS.length], k); })));
+    return wrap;
+  }
+
+  function renderFamilies(report) {
+    var sec = section('families', 'Families',
+      'Error histograms use the report\'s log10 bins (exact zeros in the grey band on the left); dashed lines mark p99, triangles the maximum. Choose the error measure above each histogram.');
+    var names = variantNames(report);
+    var fams = families(report);
+    if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'No families.')); return sec; }
+    fams.forEach(function (f) {
+      sec.appendChild(guarded('family ' + f.name, function () { return renderFamily(f, names); }));
+    });
+    return sec;
+  }
+
+  function renderFamily(f, names) {
+    var fv = familyVariants(f);
+    var present = names.filter(function (n) { return n in fv; });
+    var card = h('div', {class: 'family', id: 'family-' + slug(f.name)});
+    card.appendChild(h('h3', {}, String(f.name), h('span', {class: 'muted small'}, '  ' + fmtInt(f.cases) + ' cases'),
+      present.map(function (n) { return h('span', {class: 'fam-variant'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n, ' ', passBadge(fv[n] && fv[n].pass)); })));
+    if (Array.isArray(f.makeup) && f.makeup.length) {
+      card.appendChild(h('div', {class: 'makeup'}, h('span', {class: 'muted small'}, 'Makeup: '), f.makeup.map(function (m) {
+        m = m || {};
+        return h('span', {class: 'makeup-item ' + (m.ok === false ? 'bad' : 'ok')}, (m.ok === false ? '✗ ' : '✓ ') + m.check + ' ' + fmt(m.value) +
+          (has(m.min) || has(m.max) ? ' (in [' + fmt(m.min) + ', ' + fmt(m.max) + '])' : ''));
+      })));
+    }
+    var metrics = METRICS.filter(function (m) { return present.some(function (n) { return hist(fv[n], m.key); }); });
+    var histHolder = h('div', {class: 'hist-holder'});
+    var current = metrics.length ? metrics[0] : METRICS[0];
+    function draw() { histHolder.textContent = ''; histHolder.appendChild(errorHistogram(f, current, present)); }
+    var select = h('select', {class: 'metric-select', onchange: function (e) {
+      current = metrics.filter(function (m) { return m.key === e.target.value; })[0] || current;
+      draw();
+    }}, metrics.map(function (m) { return h('option', {value: m.key}, m.label); }));
+    draw();
+    var legend = h('div', {class: 'legend'}, present.map(function (n) { return legendItem(variantColor(n), n); }),
+      legendItem('#555', 'p99', 'dash'));
+    card.appendChild(h('div', {class: 'family-plots'},
+      h('div', {class: 'plot-box'}, h('div', {class: 'plot-title'}, 'Error distribution ', metrics.length ? select : null), histHolder, legend),
+      h('div', {class: 'plot-box'}, h('div', {class: 'plot-title'}, 'Iterations'), iterationHistogram(f, present),
+        h('div', {class: 'plot-title'}, 'Stop reasons'), stopReasons(f, present))));
+    return card;
+  }
+
+  function renderWorst(report) {
+    var sec = section('worst', 'Worst cases',
+      'The worst case of each family (over all variants), drawn. Left: the shapes in world coordinates with the exact closest points (black) and GJK\'s (variant colour). Right: the Minkowski difference Z = A − B with the origin, GJK\'s simplex, its closest point to the origin and the search direction at the chosen iteration. Step with the buttons, the slider or the arrow keys.');
+    var worst = Array.isArray(report.worst) ? report.worst.filter(function (w) { return w && typeof w === 'object'; }) : [];
+    if (!worst.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no worst cases.')); return sec; }
+    worst.forEach(function (w, i) {
+      sec.appendChild(guarded('worst case ' + (w.name || i), function () { return new Viewer(w, report).root; }));
+    });
+    return sec;
+  }
+
+  function renderRejected(report) {
+    var sec = section('rejected', 'Rejected inputs');
+    var rej = Array.isArray(report.rejected) ? report.rejected : [];
+    if (!rej.length) { sec.appendChild(h('p', {class: 'note'}, 'No input was rejected.')); }
+    else {
+      sec.appendChild(h('table', {class: 'data compact'}, h('thead', {}, h('tr', {}, h('th', {}, 'Input'), h('th', {}, 'Reason'))),
+        h('tbody', {}, rej.map(function (r) { r = r || {}; return h('tr', {}, h('td', {}, h('code', {}, String(r.name))), h('td', {}, String(r.reason))); }))));
+    }
+    if (has(report.worst_cases_file)) sec.appendChild(h('p', {class: 'small muted'}, 'The worst cases are also in ', h('code', {}, String(report.worst_cases_file)),
+      ' (replay them with gjk-validate explain).'));
+    return sec;
+  }
+
+  // --- Geometry for the viewer ------------------------------------------------------------------------
+
+  function cross3(o, a, b) { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); }
+
+  // Convex hull (Andrew's monotone chain), positive orientation in the points' own coordinates.
+  function hull(points) {
+    var p = points.slice().sort(function (a, b) { return a[0] - b[0] || a[1] - b[1]; });
+    var u = [];
+    for (var i = 0; i < p.length; ++i) if (!u.length || u[u.length - 1][0] !== p[i][0] || u[u.length - 1][1] !== p[i][1]) u.push(p[i]);
+    p = u;
+    if (p.length <= 2) return p;
+    var lower = [], upper = [];
+    p.forEach(function (q) {
+      while (lower.length >= 2 && cross3(lower[lower.length - 2], lower[lower.length - 1], q) <= 0) lower.pop();
+      lower.push(q);
+    });
+    for (var j = p.length - 1; j >= 0; --j) {
+      var q = p[j];
+      while (upper.length >= 2 && cross3(upper[upper.length - 2], upper[upper.length - 1], q) <= 0) upper.pop();
+      upper.push(q);
+    }
+    var out = lower.slice(0, -1).concat(upper.slice(0, -1));
+    return out.length ? out : [p[0], p[p.length - 1]];
+  }
+
+  // The polygon grown by r (pixel units), as a polygon: arcs sampled finely where they can be seen.
+  function rounded(poly, r, view) {
+    if (!(r > 0.3) || !poly.length) return poly;
+    var n = poly.length, out = [];
+    var cx = view.W / 2, cy = view.H / 2, diag = Math.hypot(view.W, view.H);
+    // Orientation: positive area turns left; outward normal of edge e is (e.y, -e.x) then.
+    var area = 0;
+    for (var i = 0; i < n; ++i) area += cross3([0, 0], poly[i], poly[(i + 1) % n]);
+    var sgn = area < 0 ? -1 : 1;
+    for (var k = 0; k < n; ++k) {
+      var v = poly[k], prev = poly[(k - 1 + n) % n], next = poly[(k + 1) % n];
+      var t0, t1;
+      if (n === 1) { t0 = 0; t1 = 2 * Math.PI; }
+      else {
+        var ein = [v[0] - prev[0], v[1] - prev[1]], eout = [next[0] - v[0], next[1] - v[1]];
+        t0 = Math.atan2(-sgn * ein[0], sgn * ein[1]);
+        t1 = Math.atan2(-sgn * eout[0], sgn * eout[1]);
+        var dlt = (t1 - t0) * sgn;
+        while (dlt < 0) dlt += 2 * Math.PI;
+        while (dlt > 2 * Math.PI) dlt -= 2 * Math.PI;
+        if (n === 2 && dlt < 1e-12) dlt = Math.PI;
+        t1 = t0 + sgn * dlt;
+      }
+      var angles = arcAngles(t0, t1, r, v, cx, cy, diag);
+      angles.forEach(function (a) { out.push([v[0] + r * Math.cos(a), v[1] + r * Math.sin(a)]); });
+    }
+    return out;
+  }
+
+  // Angles from t0 to t1 for an arc of radius r around v: chords within a quarter pixel of the arc
+  // where it is near the view, a few samples elsewhere (off view).
+  function arcAngles(t0, t1, r, v, cx, cy, diag) {
+    var span = t1 - t0, step = Math.min(0.25, Math.sqrt(2 / r));
+    var count = Math.ceil(Math.abs(span) / step);
+    var out = [], i;
+    if (count <= 720) {
+      for (i = 0; i <= count; ++i) out.push(t0 + span * i / Math.max(1, count));
+      return out;
+    }
+    var phi = Math.atan2(cy - v[1], cx - v[0]), alpha = 3 * diag / r;
+    var lo = Math.min(t0, t1), hi = Math.max(t0, t1);
+    // Bring phi into [lo, hi] if some turn of it is.
+    while (phi < lo - alpha) phi += 2 * Math.PI;
+    while (phi > hi + alpha) phi -= 2 * Math.PI;
+    var d0 = Math.max(lo, phi - alpha), d1 = Math.min(hi, phi + alpha);
+    var list = [];
+    for (i = 0; i <= 48; ++i) list.push(lo + (hi - lo) * i / 48);
+    if (d0 < d1) {
+      var m = Math.min(2000, Math.ceil((d1 - d0) / step));
+      for (i = 0; i <= m; ++i) list.push(d0 + (d1 - d0) * i / Math.max(1, m));
+    }
+    list.sort(function (a, b) { return a - b; });
+    if (t1 < t0) list.reverse();
+    return list;
+  }
+
+  // Sutherland-Hodgman clip of a convex polygon to a rectangle.
+  function clipPoly(poly, rc) {
+    var edges = [
+      function (p) { return p[0] >= rc.x0; }, function (p) { return p[0] <= rc.x1; },
+      function (p) { return p[1] >= rc.y0; }, function (p) { return p[1] <= rc.y1; }];
+    var cuts = [
+      function (a, b) { var t = (rc.x0 - a[0]) / (b[0] - a[0]); return [rc.x0, a[1] + t * (b[1] - a[1])]; },
+      function (a, b) { var t = (rc.x1 - a[0]) / (b[0] - a[0]); return [rc.x1, a[1] + t * (b[1] - a[1])]; },
+      function (a, b) { var t = (rc.y0 - a[1]) / (b[1] - a[1]); return [a[0] + t * (b[0] - a[0]), rc.y0]; },
+      function (a, b) { var t = (rc.y1 - a[1]) / (b[1] - a[1]); return [a[0] + t * (b[0] - a[0]), rc.y1]; }];
+    var out = poly;
+    for (var e = 0; e < 4 && out.length; ++e) {
+      var inp = out, inside = edges[e];
+      out = [];
+      for (var i = 0; i < inp.length; ++i) {
+        var a = inp[i], b = inp[(i + 1) % inp.length];
+        var ia = inside(a), ib = inside(b);
+        if (ia) out.push(a);
+        if (ia !== ib) out.push(cuts[e](a, b));
+      }
+    }
+    return out;
+  }
+
+  // Liang-Barsky clip of a segment; null when outside.
+  function clipSeg(a, b, rc) {
+    var t0 = 0, t1 = 1, dx = b[0] - a[0], dy = b[1] - a[1];
+    var p = [-dx, dx, -dy, dy], q = [a[0] - rc.x0, rc.x1 - a[0], a[1] - rc.y0, rc.y1 - a[1]];
+    for (var i = 0; i < 4; ++i) {
+      if (p[i] === 0) { if (q[i] < 0) return null; continue; }
+      var t = q[i] / p[i];
+      if (p[i] < 0) { if (t > t1) return null; if (t > t0) t0 = t; }
+      else { if (t < t0) return null; if (t < t1) t1 = t; }
+    }
+    return [[a[0] + t0 * dx, a[1] + t0 * dy], [a[0] + t1 * dx, a[1] + t1 * dy]];
+  }
+
+  function pathOf(poly, close) {
+    if (!poly.length) return '';
+    var d = 'M' + poly[0][0].toFixed(2) + ' ' + poly[0][1].toFixed(2);
+    for (var i = 1; i < poly.length; ++i) d += 'L' + poly[i][0].toFixed(2) + ' ' + poly[i][1].toFixed(2);
+    return d + (close ? 'Z' : '');
+  }
+
+  function bbox(points) {
+    var b = {x0: Infinity, y0: Infinity, x1: -Infinity, y1: -Infinity};
+    points.forEach(function (p) { growBox(b, p, 0); });
+    return b;
+  }
+
+  function growBox(b, p, r) {
+    if (!finitePoint(p)) return;
+    r = r || 0;
+    b.x0 = Math.min(b.x0, p[0] - r); b.x1 = Math.max(b.x1, p[0] + r);
+    b.y0 = Math.min(b.y0, p[1] - r); b.y1 = Math.max(b.y1, p[1] + r);
+  }
+
+  function boxOk(b) { return isFinite(b.x0) && isFinite(b.x1) && isFinite(b.y0) && isFinite(b.y1); }
+
+  // A world-to-pixel map fitting box b into W x H with a margin. Differences to the centre are taken
+  // in double before scaling, so shapes 1e9 from the origin keep their small features.
+  function makeView(b, W, H, margin, minSpan) {
+    if (!boxOk(b)) b = {x0: -1, y0: -1, x1: 1, y1: 1};
+    var cx = b.x0 / 2 + b.x1 / 2, cy = b.y0 / 2 + b.y1 / 2;
+    var w = b.x1 - b.x0, hgt = b.y1 - b.y0;
+    var span = Math.max(w, hgt);
+    var floor = minSpan > 0 ? minSpan : 0;
+    if (!(span > floor)) span = floor > 0 ? floor : (Math.max(Math.abs(cx), Math.abs(cy)) * 1e-3 || 1);
+    w = Math.max(w, span * 1e-3); hgt = Math.max(hgt, span * 1e-3);
+    if (w < floor) w = floor;
+    if (hgt < floor) hgt = floor;
+    var scale = Math.min((W - 2 * margin) / w, (H - 2 * margin) / hgt);
+    if (!(scale > 0) || !isFinite(scale)) scale = 1;
+    var v = {W: W, H: H, cx: cx, cy: cy, s: scale};
+    v.x = function (x) { return W / 2 + (x - cx) * scale; };
+    v.y = function (y) { return H / 2 - (y - cy) * scale; };
+    v.p = function (p) { return [v.x(p[0]), v.y(p[1])]; };
+    v.rect = {x0: -40, y0: -40, x1: W + 40, y1: H + 40};
+    v.inside = function (q) { return q[0] >= -20 && q[0] <= W + 20 && q[1] >= -20 && q[1] <= H + 20; };
+    return v;
+  }
+
+  // Light grid with tick labels in world units. Far from the origin (the ticks' values would need
+  // more digits than fit), labels are offsets from a reference shown in the corner.
+  function drawGrid(g, v, labelsG) {
+    var spanX = v.W / v.s, spanY = v.H / v.s;
+    var step = niceStep(Math.max(spanX, spanY), 7);
+    var big = Math.max(Math.abs(v.cx), Math.abs(v.cy)) / step > 1e5;
+    var refX = big ? Math.round(v.cx / step) * step : 0, refY = big ? Math.round(v.cy / step) * step : 0;
+    var gx = sv('g', {class: 'grid-g'}), gl = sv('g', {class: 'grid-labels'});
+    // Tick k sits at world refX + k*step, drawn at pixel x(refX) + k*step*s (no large sums formed).
+    var px0 = v.W / 2 + (refX - v.cx) * v.s, py0 = v.H / 2 - (refY - v.cy) * v.s;
+    var kx0 = Math.ceil((0 - px0) / (step * v.s)), kx1 = Math.floor((v.W - px0) / (step * v.s));
+    var ky0 = Math.ceil((py0 - v.H) / (step * v.s)), ky1 = Math.floor(py0 / (step * v.s));
+    var axisX = !big && v.x(0) > 0 && v.x(0) < v.W, axisY = !big && v.y(0) > 0 && v.y(0) < v.H;
+    function label(k) {
+      var val = k * step;
+      var s = Math.abs(val) < step * 1e-6 ? '0' : fmt(val, 3);
+      return big ? (val >= 0 ? '+' : '') + s.replace('−', '−') : s;
+    }
+    var k;
+    for (k = kx0; k <= kx1 && k - kx0 < 60; ++k) {
+      var x = px0 + k * step * v.s;
+      gx.appendChild(sv('line', {x1: x, x2: x, y1: 0, y2: v.H, class: k === 0 && !big ? 'grid-axis' : 'grid-line'}));
+      gl.appendChild(sv('text', {x: x + 2, y: v.H - 4, class: 'grid-label'}, label(k + (big ? 0 : refX / step))));
+    }
+    for (k = ky0; k <= ky1 && k - ky0 < 60; ++k) {
+      var y = py0 - k * step * v.s;
+      gx.appendChild(sv('line', {x1: 0, x2: v.W, y1: y, y2: y, class: k === 0 && !big ? 'grid-axis' : 'grid-line'}));
+      gl.appendChild(sv('text', {x: 3, y: y - 3, class: 'grid-label'}, label(k + (big ? 0 : refY / step))));
+    }
+    if (big) {
+      gl.appendChild(sv('text', {x: v.W - 6, y: 14, class: 'grid-ref', 'text-anchor': 'end'}, 'tick labels relative to (' + fmtFull(refX) + ', ' + fmtFull(refY) + ')'));
+    }
+    gl.appendChild(sv('text', {x: v.W - 6, y: v.H - 18, class: 'grid-ref', 'text-anchor': 'end'}, 'grid step ' + fmt(step) + ' world units'));
+    void axisX; void axisY;
+    g.appendChild(gx);
+    labelsG.appendChild(gl);
+  }
+
+  // --- The iteration viewer ----------------------------------------------------------------------------
+
+  var viewerCount = 0;
+
+  function Viewer(detail, report) {
+    this.d = detail;
+    this.id = 'viewer-' + (++viewerCount);
+    var vmap = detail.variants && typeof detail.variants === 'object' ? detail.variants : {};
+    this.variants = Object.keys(vmap);
+    // Order: the report's variant order first.
+    if (report && Array.isArray(report.variants)) {
+      var order = report.variants.map(function (v) { return v && String(v.name); });
+      this.variants.sort(function (a, b) {
+        var ia = order.indexOf(a), ib = order.indexOf(b);
+        return (ia < 0 ? 1e9 : ia) - (ib < 0 ? 1e9 : ib);
+      });
+    }
+    // Start on the variant this case is worst for.
+    var by = detail.worst_by || 'normalized', best = null, bestErr = -Infinity;
+    this.variants.forEach(function (n) {
+      var e = vmap[n] && vmap[n].errors ? num(vmap[n].errors[by]) : NaN;
+      if (isFinite(e) && e > bestErr) { bestErr = e; best = n; }
+    });
+    this.variant = best || this.variants[0] || null;
+    this.step = 0;
+    this.zoom = false;
+    this.build();
+    this.draw();
+  }
+
+  Viewer.prototype.vdata = function () {
+    var vmap = this.d.variants || {};
+    return (this.variant && vmap[this.variant]) || {};
+  };
+
+  Viewer.prototype.trace = function () {
+    var t = this.vdata().trace;
+    return Array.isArray(t) ? t.filter(function (s) { return s && typeof s === 'object'; }) : [];
+  };
+
+  Viewer.prototype.build = function () {
+    var self = this, d = this.d;
+    var ex = d.exact || {};
+    this.root = h('div', {class: 'viewer', id: this.id, tabindex: 0, 'data-case': has(d.name) ? String(d.name) : ''});
+    this.root.addEventListener('keydown', function (e) {
+      if (e.target && e.target.tagName === 'SELECT') return;
+      if (e.key === 'ArrowRight') { self.go(self.step + 1); e.preventDefault(); }
+      else if (e.key === 'ArrowLeft') { self.go(self.step - 1); e.preventDefault(); }
+    });
+    var chips = [
+      has(d.family) ? h('span', {class: 'chip'}, 'family ', h('b', {}, String(d.family))) : null,
+      has(d.worst_by) ? h('span', {class: 'chip'}, 'worst by ', h('b', {}, String(d.worst_by))) : null,
+      h('span', {class: 'chip'}, 'exact distance ', h('b', {}, fmtFull(ex.distance))),
+      ex.overlap === true ? h('span', {class: 'chip warn'}, 'shapes overlap') : null
+    ];
+    this.root.appendChild(h('div', {class: 'viewer-head'}, h('h3', {}, has(d.name) ? String(d.name) : 'case'), chips));
+    this.resultInfo = h('div', {class: 'result-info'});
+    this.root.appendChild(this.resultInfo);
+
+    // Controls.
+    this.select = h('select', {class: 'variant-select', 'aria-label': 'variant', onchange: function (e) { self.variant = e.target.value; self.onVariant(); }},
+      this.variants.map(function (n) { return h('option', {value: n, selected: n === self.variant}, n); }));
+    this.prevBtn = h('button', {type: 'button', class: 'step-prev', title: 'previous iteration (←)', onclick: function () { self.go(self.step - 1); }}, '◀ prev');
+    this.nextBtn = h('button', {type: 'button', class: 'step-next', title: 'next iteration (→)', onclick: function () { self.go(self.step + 1); }}, 'next ▶');
+    this.slider = h('input', {type: 'range', class: 'step-slider', min: 0, max: 0, step: 1, value: 0, 'aria-label': 'iteration',
+      oninput: function (e) { self.go(Number(e.target.value)); }});
+    this.stepLabel = h('span', {class: 'step-label'});
+    this.fitBtn = h('button', {type: 'button', class: 'view-fit toggle on', onclick: function () { self.setZoom(false); }}, 'fit all');
+    this.zoomBtn = h('button', {type: 'button', class: 'view-zoom toggle', onclick: function () { self.setZoom(true); }}, 'zoom to closest points');
+    this.zoomHint = h('span', {class: 'zoom-hint small'});
+    this.root.appendChild(h('div', {class: 'controls'},
+      h('label', {}, 'variant ', this.select),
+      h('span', {class: 'step-group'}, this.prevBtn, this.slider, this.nextBtn, this.stepLabel),
+      h('span', {class: 'view-group'}, 'view ', this.fitBtn, this.zoomBtn, this.zoomHint)));
+
+    var PW = 600, PH = 470;
+    this.PW = PW; this.PH = PH;
+    this.svgShapes = sv('svg', {class: 'panel-svg shapes-panel', viewBox: '0 0 ' + PW + ' ' + PH, width: PW, height: PH});
+    this.svgMink = sv('svg', {class: 'panel-svg minkowski-panel', viewBox: '0 0 ' + PW + ' ' + PH, width: PW, height: PH});
+    this.root.appendChild(h('div', {class: 'panels'},
+      h('figure', {class: 'panel'}, h('figcaption', {}, 'Shapes A and B (world coordinates)'), this.svgShapes),
+      h('figure', {class: 'panel'}, h('figcaption', {}, 'Minkowski difference Z = A − B and the origin'), this.svgMink)));
+    this.legendBox = h('div', {class: 'legend viewer-legend'});
+    this.root.appendChild(this.legendBox);
+    this.stepInfo = h('div', {class: 'step-info'});
+    this.notes = h('div', {class: 'case-notes'});
+    this.root.appendChild(this.stepInfo);
+    this.root.appendChild(this.notes);
+    this.drawResults();
+  };
+
+  Viewer.prototype.onVariant = function () {
+    var n = this.trace().length;
+    this.step = Math.min(this.step, Math.max(0, n - 1));
+    this.draw();
+  };
+
+  Viewer.prototype.go = function (k) {
+    var n = this.trace().length;
+    k = Math.max(0, Math.min(Math.max(0, n - 1), k | 0));
+    if (k === this.step) return;
+    this.step = k;
+    this.draw();
+  };
+
+  Viewer.prototype.setZoom = function (z) {
+    this.zoom = !!z;
+    this.fitBtn.classList.toggle('on', !this.zoom);
+    this.zoomBtn.classList.toggle('on', this.zoom);
+    this.draw();
+  };
+
+  Viewer.prototype.draw = function () {
+    var tr = this.trace(), n = tr.length;
+    this.slider.max = String(Math.max(0, n - 1));
+    this.slider.value = String(this.step);
+    this.slider.disabled = n <= 1;
+    this.prevBtn.disabled = this.step <= 0;
+    this.nextBtn.disabled = this.step >= n - 1;
+    var vd = this.vdata();
+    this.stepLabel.textContent = n ? 'iteration ' + (this.step + 1) + ' of ' + n + (this.step === n - 1 && has(vd.stop) ? '  (stop: ' + vd.stop + ')' : '') : 'no trace for this variant';
+    this.root.setAttribute('data-step', String(this.step));
+    this.root.setAttribute('data-variant', String(this.variant));
+    this.drawShapes();
+    this.drawMinkowski();
+    this.drawStepInfo();
+    this.drawLegend();
+  };
+
+  // World-space content of each panel.
+  Viewer.prototype.shapeGeom = function (which) {
+    var s = this.d[which] || {};
+    var world = pts(s.world);
+    if (!world.length) world = pts(s.points); // without world points, show the local ones
+    return {pts: world, r: Math.max(0, num(s.radius) || 0)};
+  };
+
+  Viewer.prototype.closestPoints = function () {
+    var ex = this.d.exact || {}, vd = this.vdata();
+    return {
+      ea: finitePoint(ex.witnessA) ? pt(ex.witnessA) : null, eb: finitePoint(ex.witnessB) ? pt(ex.witnessB) : null,
+      ga: finitePoint(vd.pointA) ? pt(vd.pointA) : null, gb: finitePoint(vd.pointB) ? pt(vd.pointB) : null
+    };
+  };
+
+  // Zoom box around the closest points (never empty): at least a few times the gap and the error.
+  function zoomBox(points, fullSpan) {
+    var b = bbox(points.filter(Boolean));
+    if (!boxOk(b)) return null;
+    var span = Math.max(b.x1 - b.x0, b.y1 - b.y0);
+    var pad = Math.max(span * 0.6, fullSpan * 1e-9);
+    if (!(pad > 0)) pad = Math.max(Math.abs(b.x0), Math.abs(b.y0), 1) * 1e-9;
+    return {x0: b.x0 - pad, x1: b.x1 + pad, y0: b.y0 - pad, y1: b.y1 + pad};
+  }
+
+  Viewer.prototype.views = function () {
+    var A = this.shapeGeom('a'), B = this.shapeGeom('b'), cp = this.closestPoints();
+    var fullS = bbox([]);
+    A.pts.forEach(function (p) { growBox(fullS, p, A.r); });
+    B.pts.forEach(function (p) { growBox(fullS, p, B.r); });
+    [cp.ea, cp.eb, cp.ga, cp.gb].forEach(function (p) { if (p) growBox(fullS, p, 0); });
+    var Z = pts(this.d.minkowski), rz = A.r + B.r;
+    var fullM = bbox([[0, 0]]);
+    Z.forEach(function (p) { growBox(fullM, p, rz); });
+    if (!Z.length) {
+      // No Minkowski polygon in the data: derive it from the shapes.
+      var zz = [];
+      A.pts.forEach(function (a) { B.pts.forEach(function (b) { zz.push([a[0] - b[0], a[1] - b[1]]); }); });
+      Z = hull(zz);
+      Z.forEach(function (p) { growBox(fullM, p, rz); });
+    }
+    var zE = cp.ea && cp.eb ? [cp.ea[0] - cp.eb[0], cp.ea[1] - cp.eb[1]] : null;
+    var zG = cp.ga && cp.gb ? [cp.ga[0] - cp.gb[0], cp.ga[1] - cp.gb[1]] : null;
+    var spanS = Math.max(fullS.x1 - fullS.x0, fullS.y1 - fullS.y0), spanM = Math.max(fullM.x1 - fullM.x0, fullM.y1 - fullM.y0);
+    var zs = zoomBox([cp.ea, cp.eb, cp.ga, cp.gb], spanS), zm = zoomBox([[0, 0], zE, zG], spanM);
+    var PW = this.PW, PH = this.PH;
+    var vS = makeView(this.zoom && zs ? zs : fullS, PW, PH, 28);
+    var vM = makeView(this.zoom && zm ? zm : fullM, PW, PH, 28);
+    // How much the zoom magnifies: shown as a hint when the closest points are too close to see.
+    var ratio = zs ? spanS / Math.max(zs.x1 - zs.x0, zs.y1 - zs.y0) : 1;
+    this.zoomHint.textContent = !this.zoom && ratio > 30 ? 'the gap is ' + fmt(1 / ratio) + ' of this view: zoom in to see it' :
+      this.zoom ? '×' + fmt(ratio) + ' magnified' : '';
+    return {A: A, B: B, Z: Z, rz: rz, cp: cp, zE: zE, zG: zG, vS: vS, vM: vM};
+  };
+
+  function drawShape(g, v, world, r, fill, stroke, label) {
+    if (!world.length) return;
+    var px = hull(world.map(v.p));
+    var rpx = r * v.s;
+    var out = rounded(px, rpx, v);
+    if (out.length === 1 && !(rpx > 0.3)) {
+      var q = out[0];
+      if (v.inside(q)) {
+        g.appendChild(sv('circle', {cx: q[0], cy: q[1], r: 4.5, fill: stroke, stroke: 'white', 'stroke-width': 1}, label ? svgTitle(label + ' (a point)') : null));
+        if (label && label.length === 1) g.appendChild(sv('text', {x: q[0] - 16, y: q[1] + 18, class: 'shape-label small-shape-label', fill: stroke}, label));
+      }
+    } else if (out.length === 2 && !(rpx > 0.3)) {
+      var sg = clipSeg(out[0], out[1], v.rect);
+      if (sg) g.appendChild(sv('path', {d: pathOf(sg, false), stroke: stroke, 'stroke-width': 4, 'stroke-linecap': 'round', fill: 'none'}));
+    } else {
+      var clipped = clipPoly(out, v.rect);
+      if (clipped.length) g.appendChild(sv('path', {d: pathOf(clipped, true), fill: fill, stroke: stroke, 'stroke-width': 1.8, 'stroke-linejoin': 'round'}));
+    }
+    if (rpx > 0.3 && px.length) {
+      // The core polygon, dashed, inside the rounded outline.
+      if (px.length === 1) {
+        if (v.inside(px[0])) g.appendChild(sv('circle', {cx: px[0][0], cy: px[0][1], r: 2.5, fill: stroke}));
+      } else {
+        var core = px.length === 2 ? clipSeg(px[0], px[1], v.rect) : clipPoly(px, v.rect);
+        if (core && core.length) g.appendChild(sv('path', {d: pathOf(core, px.length > 2), fill: 'none', stroke: stroke, 'stroke-width': 1, 'stroke-dasharray': '4 3', opacity: 0.8}));
+      }
+    }
+    return px;
+  }
+
+  function dot(g, v, p, r, attrs, title) {
+    if (!p) return null;
+    var q = v.p(p);
+    if (!v.inside(q)) return null;
+    var a = {cx: q[0], cy: q[1], r: r};
+    Object.keys(attrs || {}).forEach(function (k) { a[k] = attrs[k]; });
+    var c = sv('circle', a, title ? svgTitle(title) : null);
+    g.appendChild(c);
+    return c;
+  }
+
+  function seg(g, v, p, q, attrs, title) {
+    if (!p || !q) return null;
+    var s = clipSeg(v.p(p), v.p(q), v.rect);
+    if (!s) return null;
+    var a = {d: pathOf(s, false), fill: 'none'};
+    Object.keys(attrs || {}).forEach(function (k) { a[k] = attrs[k]; });
+    var e = sv('path', a, title ? svgTitle(title) : null);
+    g.appendChild(e);
+    return e;
+  }
+
+  function cross(g, v, p, size, color, title) {
+    if (!p) return;
+    var q = v.p(p);
+    if (!v.inside(q)) return;
+    g.appendChild(sv('path', {d: 'M' + (q[0] - size) + ' ' + (q[1] - size) + 'L' + (q[0] + size) + ' ' + (q[1] + size) + 'M' + (q[0] - size) + ' ' + (q[1] + size) + 'L' + (q[0] + size) + ' ' + (q[1] - size),
+      stroke: color, 'stroke-width': 2.2, fill: 'none'}, title ? svgTitle(title) : null));
+  }
+
+  function diamond(g, v, p, size, fill, title) {
+    if (!p) return;
+    var q = v.p(p);
+    if (!v.inside(q)) return;
+    g.appendChild(sv('path', {d: 'M' + q[0] + ' ' + (q[1] - size) + 'L' + (q[0] + size) + ' ' + q[1] + 'L' + q[0] + ' ' + (q[1] + size) + 'L' + (q[0] - size) + ' ' + q[1] + 'Z',
+      fill: fill, stroke: '#6b5200', 'stroke-width': 1.2}, title ? svgTitle(title) : null));
+  }
+
+  function text(g, v, p, s, dx, dy, cls) {
+    if (!p) return;
+    var q = v.p(p);
+    if (!v.inside(q)) return;
+    g.appendChild(sv('text', {x: q[0] + (dx || 0), y: q[1] + (dy || 0), class: cls || 'geo-label'}, s));
+  }
+
+  function stepSimplex(st) {
+    var s = st && Array.isArray(st.simplex) ? st.simplex : [];
+    return s.filter(function (x) { return x && finitePoint(x.w); });
+  }
+
+  Viewer.prototype.drawShapes = function () {
+    var svg = this.svgShapes;
+    svg.textContent = '';
+    var V = this.views(), v = V.vS, g = sv('g', {class: 'layer', 'data-step': String(this.step)});
+    svg.appendChild(sv('rect', {x: 0, y: 0, width: this.PW, height: this.PH, class: 'panel-bg'}));
+    var labelsG = sv('g', {});
+    drawGrid(svg, v, labelsG);
+    svg.appendChild(g);
+    svg.appendChild(labelsG); // tick labels stay readable over filled shapes
+    var pa = drawShape(g, v, V.A.pts, V.A.r, GEO.aFill, GEO.aStroke, 'A');
+    var pb = drawShape(g, v, V.B.pts, V.B.r, GEO.bFill, GEO.bStroke, 'B');
+    // Shape labels at the centroids of their hulls (when visible).
+    [[pa, 'A', GEO.aStroke], [pb, 'B', GEO.bStroke]].forEach(function (x) {
+      if (!x[0] || !x[0].length) return;
+      var c = x[0].reduce(function (s, p) { return [s[0] + p[0] / x[0].length, s[1] + p[1] / x[0].length]; }, [0, 0]);
+      if (c[0] > 10 && c[0] < v.W - 10 && c[1] > 10 && c[1] < v.H - 10) g.appendChild(sv('text', {x: c[0], y: c[1] + 6, class: 'shape-label', fill: x[2], 'text-anchor': 'middle'}, x[1]));
+    });
+    var tr = this.trace(), st = tr[this.step], col = variantColor(String(this.variant));
+    if (st) {
+      var simplex = stepSimplex(st);
+      // Simplex vertices on each shape, and the current closest points P_A = sum a_i wA_i, P_B likewise.
+      var cA = [0, 0], cB = [0, 0], okC = simplex.length > 0;
+      simplex.forEach(function (x, i) {
+        if (finitePoint(x.wA)) dot(g, v, pt(x.wA), 4.5, {fill: GEO.simplexStroke, stroke: 'white', 'stroke-width': 1}, 'simplex vertex ' + (i + 1) + ' on A: ' + fmtPt(x.wA) + (has(x.iA) ? ' (vertex ' + x.iA + ')' : ''));
+        if (finitePoint(x.wB)) dot(g, v, pt(x.wB), 4.5, {fill: GEO.simplexStroke, stroke: 'white', 'stroke-width': 1}, 'simplex vertex ' + (i + 1) + ' on B: ' + fmtPt(x.wB) + (has(x.iB) ? ' (vertex ' + x.iB + ')' : ''));
+        var a = isNum(x.a) ? num(x.a) : (simplex.length === 1 ? 1 : NaN);
+        if (!(finitePoint(x.wA) && finitePoint(x.wB) && isFinite(a))) { okC = false; return; }
+        cA = [cA[0] + a * num(x.wA[0]), cA[1] + a * num(x.wA[1])];
+        cB = [cB[0] + a * num(x.wB[0]), cB[1] + a * num(x.wB[1])];
+      });
+      if (okC) {
+        seg(g, v, cA, cB, {stroke: GEO.closest, 'stroke-width': 2, 'stroke-dasharray': '6 4'}, 'current closest points of this iteration');
+        dot(g, v, cA, 5, {fill: GEO.closest, stroke: 'white', 'stroke-width': 1.2}, 'closest point on A at this iteration: ' + fmtPt(cA));
+        dot(g, v, cB, 5, {fill: GEO.closest, stroke: 'white', 'stroke-width': 1.2}, 'closest point on B at this iteration: ' + fmtPt(cB));
+      }
+      var sp = st.support;
+      if (sp && finitePoint(sp.wA)) diamond(g, v, pt(sp.wA), 7, GEO.support, 'new support point on A: ' + fmtPt(sp.wA));
+      if (sp && finitePoint(sp.wB)) diamond(g, v, pt(sp.wB), 7, GEO.support, 'new support point on B: ' + fmtPt(sp.wB));
+    }
+    var cp = V.cp;
+    seg(g, v, cp.ea, cp.eb, {stroke: GEO.exact, 'stroke-width': 1.2}, 'exact closest points');
+    cross(g, v, cp.ea, 5, GEO.exact, 'exact witness on A: ' + fmtPt(cp.ea));
+    cross(g, v, cp.eb, 5, GEO.exact, 'exact witness on B: ' + fmtPt(cp.eb));
+    dot(g, v, cp.ga, 4, {fill: 'white', stroke: col, 'stroke-width': 2.5}, this.variant + ' GJK point on A: ' + fmtPt(cp.ga));
+    dot(g, v, cp.gb, 4, {fill: 'white', stroke: col, 'stroke-width': 2.5}, this.variant + ' GJK point on B: ' + fmtPt(cp.gb));
+    // Vertex indices (they name iA, iB in the trace) when there is room.
+    var self = this;
+    if (!this.zoom) {
+      [['a', V.A], ['b', V.B]].forEach(function (x) {
+        var s = self.d[x[0]] || {}, w = pts(s.world);
+        if (w.length > 1 && w.length <= 16) w.forEach(function (p, i) { text(g, v, p, String(i), 6, -6, 'vertex-index'); });
+      });
+    }
+  };
+
+  Viewer.prototype.drawMinkowski = function () {
+    var svg = this.svgMink;
+    svg.textContent = '';
+    var V = this.views(), v = V.vM, g = sv('g', {class: 'layer', 'data-step': String(this.step)});
+    svg.appendChild(sv('rect', {x: 0, y: 0, width: this.PW, height: this.PH, class: 'panel-bg'}));
+    var labelsG = sv('g', {});
+    drawGrid(svg, v, labelsG);
+    svg.appendChild(g);
+    svg.appendChild(labelsG); // tick labels stay readable over filled shapes
+    var pz = drawShape(g, v, V.Z, V.rz, GEO.zFill, GEO.zStroke, 'Z = A − B');
+    if (pz && pz.length > 2) {
+      var c = pz.reduce(function (s, p) { return [s[0] + p[0] / pz.length, s[1] + p[1] / pz.length]; }, [0, 0]);
+      if (c[0] > 10 && c[0] < v.W - 10 && c[1] > 10 && c[1] < v.H - 10) g.appendChild(sv('text', {x: c[0], y: c[1] + 6, class: 'shape-label', fill: GEO.zStroke, 'text-anchor': 'middle'}, 'Z'));
+    }
+    // Exact distance: circle around the origin through the closest point of Z.
+    var ex = this.d.exact || {}, dE = num(ex.distance);
+    var o = v.p([0, 0]);
+    if (isFinite(dE) && dE > 0 && dE * v.s > 3 && dE * v.s < 1e6) {
+      g.appendChild(sv('circle', {cx: o[0], cy: o[1], r: dE * v.s, fill: 'none', stroke: '#999', 'stroke-width': 1, 'stroke-dasharray': '2 4'}, svgTitle('exact distance ' + fmtFull(dE))));
+    }
+    var tr = this.trace(), st = tr[this.step], col = variantColor(String(this.variant));
+    if (st) {
+      var simplex = stepSimplex(st), wp = simplex.map(function (x) { return v.p(pt(x.w)); });
+      if (wp.length >= 3) {
+        var tri = clipPoly(hull(wp), v.rect);
+        if (tri.length) g.appendChild(sv('path', {d: pathOf(tri, true), fill: GEO.simplexFill, 'fill-opacity': 0.7, stroke: GEO.simplexStroke, 'stroke-width': 2}));
+      } else if (wp.length === 2) {
+        var sgm = clipSeg(wp[0], wp[1], v.rect);
+        if (sgm) g.appendChild(sv('path', {d: pathOf(sgm, false), stroke: GEO.simplexStroke, 'stroke-width': 3, fill: 'none'}));
+      }
+      simplex.forEach(function (x, i) {
+        dot(g, v, pt(x.w), 5.5, {fill: GEO.simplexStroke, stroke: 'white', 'stroke-width': 1.2},
+          'w' + (i + 1) + ' = ' + fmtPt(x.w) + (isNum(x.a) ? ', weight a = ' + fmt(x.a) : '') + (has(x.iA) ? ', iA ' + x.iA + ', iB ' + x.iB : ''));
+        text(g, v, pt(x.w), 'w' + (i + 1), 8, 14, 'geo-label simplex-label');
+      });
+      var P = finitePoint(st.closest) ? pt(st.closest) : null;
+      if (P) {
+        seg(g, v, [0, 0], P, {stroke: GEO.closest, 'stroke-width': 1.6, 'stroke-dasharray': '6 4'});
+        dot(g, v, P, 5.5, {fill: GEO.closest, stroke: 'white', 'stroke-width': 1.2, class: 'closest-marker'}, 'closest point P of the simplex: ' + fmtPt(P) + ', |P| = ' + fmtFull(Math.hypot(P[0], P[1])));
+        var dd = finitePoint(st.direction) ? pt(st.direction) : null;
+        var dl = dd ? Math.hypot(dd[0], dd[1]) : 0;
+        // P's label on the side away from the direction arrow.
+        if (dd && dl > 0 && isFinite(dl)) text(g, v, P, 'P', -dd[0] / dl * 16 - 4, dd[1] / dl * 16 + 5, 'geo-label closest-label');
+        else text(g, v, P, 'P', 8, -8, 'geo-label closest-label');
+        if (dd && dl > 0 && isFinite(dl)) {
+          var q = v.p(P), ux = dd[0] / dl, uy = -dd[1] / dl, L = 56;
+          if (v.inside(q)) {
+            var e = [q[0] + ux * L, q[1] + uy * L];
+            var hx = -uy, hy = ux;
+            g.appendChild(sv('g', {class: 'direction-arrow'}, svgTitle('search direction d = ' + fmtPt(dd)),
+              sv('line', {x1: q[0], y1: q[1], x2: e[0] - ux * 6, y2: e[1] - uy * 6, stroke: GEO.direction, 'stroke-width': 2.4}),
+              sv('path', {d: 'M' + e[0] + ' ' + e[1] + 'L' + (e[0] - ux * 11 + hx * 5) + ' ' + (e[1] - uy * 11 + hy * 5) + 'L' + (e[0] - ux * 11 - hx * 5) + ' ' + (e[1] - uy * 11 - hy * 5) + 'Z', fill: GEO.direction}),
+              sv('text', {x: e[0] + ux * 8 - 3, y: e[1] + uy * 8 + 4, class: 'geo-label', fill: GEO.direction}, 'd')));
+          }
+        }
+      }
+      var sp = st.support;
+      if (sp && finitePoint(sp.w)) {
+        diamond(g, v, pt(sp.w), 8, GEO.support, 'support point w = ' + fmtPt(sp.w) + (has(sp.iA) ? ' (iA ' + sp.iA + ', iB ' + sp.iB + ')' : ''));
+        text(g, v, pt(sp.w), 'w', -20, -8, 'geo-label support-label');
+      }
+    }
+    // Origin, exact closest point of Z and GJK's.
+    cross(g, v, V.zE, 5, GEO.exact, 'exact closest point of Z: ' + fmtPt(V.zE));
+    dot(g, v, V.zG, 4, {fill: 'white', stroke: col, 'stroke-width': 2.5}, this.variant + ' GJK result pA − pB: ' + fmtPt(V.zG));
+    if (v.inside(o)) {
+      g.appendChild(sv('g', {class: 'origin'}, svgTitle('origin'),
+        sv('circle', {cx: o[0], cy: o[1], r: 3.5, fill: GEO.origin}),
+        sv('line', {x1: o[0] - 10, x2: o[0] + 10, y1: o[1], y2: o[1], stroke: GEO.origin, 'stroke-width': 1}),
+        sv('line', {x1: o[0], x2: o[0], y1: o[1] - 10, y2: o[1] + 10, stroke: GEO.origin, 'stroke-width': 1}),
+        sv('text', {x: o[0] - 14, y: o[1] + 16, class: 'geo-label'}, 'O')));
+    } else {
+      // Point to the origin from the panel edge.
+      var dx = o[0] - v.W / 2, dy = o[1] - v.H / 2, t = Math.min((v.W / 2 - 14) / Math.abs(dx || 1e-9), (v.H / 2 - 14) / Math.abs(dy || 1e-9));
+      var ax = v.W / 2 + dx * t, ay = v.H / 2 + dy * t, l = Math.hypot(dx, dy) || 1;
+      g.appendChild(sv('g', {class: 'origin-off'}, svgTitle('the origin is outside this view'),
+        sv('path', {d: 'M' + ax + ' ' + ay + 'l' + (-dx / l * 12 + dy / l * 5) + ' ' + (-dy / l * 12 - dx / l * 5) + 'l' + (-dy / l * 10) + ' ' + (dx / l * 10) + 'Z', fill: GEO.origin}),
+        sv('text', {x: ax - dx / l * 26, y: ay - dy / l * 26 + 4, class: 'geo-label', 'text-anchor': 'middle'}, 'O')));
+    }
+  };
+
+  Viewer.prototype.drawLegend = function () {
+    var col = variantColor(String(this.variant));
+    this.legendBox.textContent = '';
+    append(this.legendBox, [
+      legendItem(GEO.aFill, 'A'), legendItem(GEO.bFill, 'B'), legendItem(GEO.zFill, 'Z = A − B'),
+      legendItem(GEO.simplexFill, 'simplex (w = wA − wB)'), legendItem(GEO.closest, 'closest point P (this iteration)', 'circle'),
+      legendItem(GEO.direction, 'search direction d', 'line'), legendItem(GEO.support, 'new support point', 'diamond'),
+      legendItem(GEO.exact, 'exact closest points', 'cross'), legendItem(col, this.variant + ': GJK closest points', 'ring'),
+      legendItem('#999', 'exact distance around O', 'dash')]);
+  };
+
+  Viewer.prototype.drawStepInfo = function () {
+    var tr = this.trace(), st = tr[this.step];
+    this.stepInfo.textContent = '';
+    if (!st) { this.stepInfo.appendChild(h('p', {class: 'note'}, 'No trace recorded for this variant.')); return; }
+    var simplex = stepSimplex(st);
+    var rows = simplex.map(function (x, i) {
+      return h('tr', {}, h('td', {}, 'w' + (i + 1)), h('td', {class: 'mono'}, fmtPt(x.w)), h('td', {class: 'num'}, fmt(x.a, 4)),
+        h('td', {class: 'num'}, has(x.iA) ? String(x.iA) : '—'), h('td', {class: 'num'}, has(x.iB) ? String(x.iB) : '—'));
+    });
+    var P = finitePoint(st.closest) ? pt(st.closest) : null;
+    var sp = st.support;
+    var vd = this.vdata();
+    append(this.stepInfo, [
+      h('h4', {}, 'Iteration ' + (this.step + 1) + ' of ' + tr.length),
+      h('div', {class: 'info-row'},
+      h('table', {class: 'data compact'},
+        h('thead', {}, h('tr', {}, h('th', {}, 'simplex'), h('th', {}, 'w = wA − wB'), h('th', {class: 'num'}, 'weight a'), h('th', {class: 'num'}, 'iA'), h('th', {class: 'num'}, 'iB'))),
+        h('tbody', {}, rows)),
+      h('dl', {class: 'kv small-kv'},
+        h('dt', {}, 'closest point P'), h('dd', {class: 'mono'}, P ? fmtPt(P) : '—'),
+        h('dt', {}, '|P|'), h('dd', {class: 'mono'}, P ? fmtFull(Math.hypot(P[0], P[1])) : '—'),
+        h('dt', {}, 'search direction d'), h('dd', {class: 'mono'}, fmtPt(st.direction)),
+        h('dt', {}, 'support point w'), h('dd', {class: 'mono'}, sp && finitePoint(sp.w) ? fmtPt(sp.w) + (has(sp.iA) ? '   (iA ' + sp.iA + ', iB ' + sp.iB + ')' : '') : 'none' + (this.step === tr.length - 1 && has(vd.stop) ? ' — stop: ' + vd.stop : '')),
+        this.step === tr.length - 1 && has(vd.stop) ? [h('dt', {}, 'stop'), h('dd', {}, String(vd.stop))] : null))]);
+  };
+
+  Viewer.prototype.drawResults = function () {
+    var d = this.d, ex = d.exact || {}, vmap = d.variants || {};
+    var names = this.variants;
+    var hasBound = names.some(function (n) { return vmap[n] && vmap[n].errors && has(vmap[n].errors.bound_ratio); });
+    var sq = has(ex.squared) ? String(ex.squared) : null;
+    append(this.resultInfo, [
+      h('div', {class: 'table-wrap'}, h('table', {class: 'data compact results'},
+        h('thead', {}, h('tr', {}, h('th', {}, ''), h('th', {class: 'num'}, 'distance'), h('th', {class: 'num'}, 'abs error'), h('th', {class: 'num'}, 'ulps'),
+          h('th', {class: 'num'}, 'error / (u·R)'), hasBound ? h('th', {class: 'num'}, 'error / bound') : null, h('th', {class: 'num'}, 'iter.'), h('th', {}, 'stop'), h('th', {}, 'class'))),
+        h('tbody', {},
+          h('tr', {class: 'exact-row'}, h('td', {}, 'exact'), h('td', {class: 'num mono'}, fmtFull(ex.distance)), h('td', {colspan: hasBound ? 6 : 5}),
+            h('td', {class: 'small muted'}, ex.overlap === true ? 'overlap' : ex.overlap === false ? 'separated' : '')),
+          names.map(function (n) {
+            var r = vmap[n] || {}, e = r.errors || {};
+            return h('tr', {}, h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n),
+              h('td', {class: 'num mono'}, fmtFull(r.distance)), h('td', {class: 'num'}, fmt(e.abs)), h('td', {class: 'num'}, fmt(e.ulps)),
+              h('td', {class: 'num'}, fmt(e.normalized)), hasBound ? h('td', {class: 'num' + (num(e.bound_ratio) > 1 ? ' bad' : '')}, fmt(e.bound_ratio)) : null,
+              h('td', {class: 'num'}, fmtInt(r.iterations)), h('td', {class: 'small'}, has(r.stop) ? String(r.stop) : '—'),
+              h('td', {class: r.misclassified ? 'bad' : 'small muted'}, r.misclassified ? String(r.misclassified) : 'correct'));
+          })))),
+
+    ]);
+    append(this.notes, [
+      h('p', {class: 'small muted'}, 'A: ' + shapeText(d.a) + '. B: ' + shapeText(d.b) + '.',
+        has(ex.lower) || has(ex.upper) ? ' The exact distance rounds to [' + fmtFull(ex.lower) + ', ' + fmtFull(ex.upper) + '].' : ''),
+      sq ? h('p', {class: 'small muted'}, 'Exact squared distance of the cores: ', h('code', {title: sq}, sq.length > 120 ? sq.slice(0, 58) + ' … ' + sq.slice(-58) : sq)) : null
+    ]);
+  };
+
+  function shapeText(s) {
+    if (!s || typeof s !== 'object') return 'missing';
+    var n = Array.isArray(s.points) ? s.points.length : 0;
+    var r = num(s.radius);
+    var t = s.transform || {};
+    return (n === 1 ? 'a point' : n === 2 ? 'a segment' : n + ' points') + (r > 0 ? ', radius ' + fmt(r) : '') +
+      (finitePoint(t.p) ? ', at ' + fmtPt(t.p, function (x) { return fmt(x, 4); }) : '') +
+      (finitePoint(t.q) ? ', rotated ' + fmt(Math.atan2(num(t.q[1]), num(t.q[0])) * 180 / Math.PI) + '°' : '');
+  }
+
+  // --- Pages --------------------------------------------------------------------------------------
+
+  function readData() {
+    var node = document.getElementById('report-data');
+    if (!node) throw new Error('no report-data block in the page');
+    return JSON.parse(node.textContent);
+  }
+
+  function renderReportPage(app, report) {
+    if (!report || typeof report !== 'object') throw new Error('the report data is not a JSON object');
+    variantNames(report).forEach(variantColor);
+    document.title = 'GJK report — ' + (report.passed === true ? 'PASS' : report.passed === false ? 'FAIL' : 'no verdict') +
+      (report.context && report.context.date ? ' — ' + report.context.date : '');
+    app.appendChild(guarded('header', function () { return renderHeader(report); }));
+    if (has(report.schema) && String(report.schema) !== 'gjk-report/1') {
+      app.appendChild(h('div', {class: 'error-box'}, 'This page was made for schema gjk-report/1; the data says ' + report.schema + '. Some parts may be missing.'));
+    }
+    var main = h('main', {});
+    app.appendChild(main);
+    [['context', renderContext], ['summary', renderSummary], ['speed against error', renderScatter], ['worst cases', renderWorst],
+     ['families', renderFamilies], ['rejected', renderRejected]].forEach(function (x) {
+      main.appendChild(guarded(x[0], function () { return x[1](report); }));
+    });
+    app.appendChild(h('footer', {}, 'Rendered by gjk2d_html from report.json (schema ' + (has(report.schema) ? report.schema : 'unknown') + '). Self-contained: no network, no external files.'));
+  }
+
+  function renderCasePage(app, detail) {
+    if (!detail || typeof detail !== 'object') throw new Error('the case data is not a JSON object');
+    Object.keys(detail.variants || {}).forEach(variantColor);
+    document.title = 'GJK case — ' + (has(detail.name) ? detail.name : 'unnamed');
+    app.appendChild(h('header', {class: 'page-head'}, h('div', {class: 'title-row'}, h('div', {},
+      h('h1', {}, 'GJK iteration viewer'),
+      h('div', {class: 'subtitle'}, 'case ', h('code', {}, has(detail.name) ? String(detail.name) : 'unnamed'))))));
+    var main = h('main', {});
+    app.appendChild(main);
+    var sec = section('worst', 'Case', 'Left: the shapes in world coordinates with the exact closest points (black) and GJK\'s (variant colour). Right: the Minkowski difference Z = A − B with the origin, GJK\'s simplex, its closest point to the origin and the search direction at the chosen iteration. Step with the buttons, the slider or the arrow keys.');
+    sec.appendChild(guarded('case viewer', function () { return new Viewer(detail, null).root; }));
+    main.appendChild(sec);
+    app.appendChild(h('footer', {}, 'Rendered by gjk2d_html (gjk-validate explain --html). Self-contained: no network, no external files.'));
+  }
+
+  // --- Self-test (tests/report): location.hash == "#selftest" --------------------------------------
+
+  function selfTest(mode, data) {
+    var v = {mode: mode, errors: [], checks: {}};
+    function check(name, ok, detail) { v.checks[name] = {ok: !!ok, detail: detail}; }
+    try {
+      if (mode === 'report') {
+        var expected = 0;
+        families(data).forEach(function (f) { var fv = familyVariants(f); Object.keys(fv).forEach(function (n) { if (scatterEligible(fv[n])) ++expected; }); });
+        var got = document.querySelectorAll('#scatter .pt').length;
+        v.scatterPoints = got;
+        v.scatterExpected = expected;
+        check('scatter points', got === expected, got + ' drawn, ' + expected + ' expected');
+        v.families = families(data).map(function (f) { return String(f.name); });
+        v.familyCards = document.querySelectorAll('.family').length;
+        check('family cards', v.familyCards === v.families.length, v.familyCards + ' cards');
+        v.summaryRows = document.querySelectorAll('table.summary tbody tr').length;
+        // Every metric of every histogram draws without error.
+        document.querySelectorAll('select.metric-select').forEach(function (s) {
+          for (var i = 0; i < s.options.length; ++i) { s.selectedIndex = i; s.dispatchEvent(new Event('change')); }
+          s.selectedIndex = 0; s.dispatchEvent(new Event('change'));
+        });
+      }
+      var viewers = document.querySelectorAll('.viewer');
+      v.viewers = viewers.length;
+      var expectedViewers = mode === 'case' ? 1 : (Array.isArray(data.worst) ? data.worst.length : 0);
+      check('viewers', viewers.length === expectedViewers, viewers.length + ' viewers, ' + expectedViewers + ' expected');
+      v.steps = [];
+      viewers.forEach(function (vw, idx) {
+        var r = {name: vw.getAttribute('data-case')};
+        var mink = vw.querySelector('.minkowski-panel');
+        var next = vw.querySelector('.step-next'), prev = vw.querySelector('.step-prev'), slider = vw.querySelector('.step-slider');
+        r.steps = Number(slider.max) + 1;
+        var before = vw.getAttribute('data-step'), drawnBefore = mink.querySelector('.layer').getAttribute('data-step'), svgBefore = mink.innerHTML;
+        next.click();
+        var afterNext = vw.getAttribute('data-step'), drawnAfter = mink.querySelector('.layer').getAttribute('data-step');
+        r.next = {before: before, after: afterNext, drawn: drawnAfter, svgChanged: mink.innerHTML !== svgBefore};
+        slider.value = String(slider.max);
+        slider.dispatchEvent(new Event('input'));
+        r.sliderEnd = vw.getAttribute('data-step');
+        prev.click();
+        r.prev = vw.getAttribute('data-step');
+        vw.querySelector('.view-zoom').click();
+        r.zoomedLayers = vw.querySelectorAll('.layer').length;
+        vw.querySelector('.view-fit').click();
+        var sel = vw.querySelector('.variant-select');
+        r.variants = sel.options.length;
+        for (var i = 0; i < sel.options.length; ++i) { sel.selectedIndex = i; sel.dispatchEvent(new Event('change')); }
+        slider.value = '0';
+        slider.dispatchEvent(new Event('input'));
+        r.stepWorks = r.steps > 1 ? (afterNext === String(Number(before) + 1) && drawnAfter === afterNext && r.next.svgChanged &&
+          r.sliderEnd === String(r.steps - 1) && r.prev === String(r.steps - 2)) : true;
+        v.steps.push(r);
+        if (idx === 0) check('step control (first viewer)', r.steps > 1 && r.stepWorks, JSON.stringify(r));
+        else check('step control (viewer ' + (idx + 1) + ')', r.stepWorks, JSON.stringify(r));
+      });
+    } catch (err) {
+      v.errors.push('self-test: ' + (err && err.stack ? err.stack : err));
+    }
+    v.errors = v.errors.concat(window.__gjkErrors || []);
+    v.ok = v.errors.length === 0 && Object.keys(v.checks).every(function (k) { return v.checks[k].ok; });
+    var pre = document.getElementById('selftest');
+    pre.textContent = JSON.stringify(v);
+    pre.hidden = false;
+    pre.setAttribute('data-done', '1');
+  }
+
+  function main() {
+    var app = document.getElementById('app');
+    app.textContent = '';
+    var mode = document.documentElement.getAttribute('data-mode') === 'case' ? 'case' : 'report';
+    var data = null;
+    try {
+      data = readData();
+      if (mode === 'case') renderCasePage(app, data);
+      else renderReportPage(app, data);
+    } catch (err) {
+      console.error('gjk report: ' + (err && err.stack ? err.stack : err));
+      app.appendChild(h('div', {class: 'error-box'}, 'The page could not be drawn: ' + err));
+    }
+    if (location.hash === '#selftest') selfTest(mode, data || {});
+  }
+
+  window.gjkReport = {fmt: fmt, num: num, hull: hull, rounded: rounded, clipPoly: clipPoly};
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', main);
+  else main();
+})();
