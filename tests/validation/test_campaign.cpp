@@ -1,0 +1,260 @@
+// Campaigns end to end (in process): the report follows docs/report-schema.md, rejected cases do
+// not stop the others, failures are detected, and nothing depends on the number of threads.
+#include "campaign.hpp"
+#include "geometry.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+using namespace gjkval;
+
+namespace
+{
+CampaignConfig smallConfig(int threads)
+{
+    CampaignConfig c;
+    c.families = {"random:200", "hard/talk-segment", "hard/ulp-gap", "hard/rounded", "hard/points"};
+    c.variants = parseVariants("double,float");
+    c.threads = threads;
+    c.maxPasses = 2;
+    c.minPasses = 1;
+    c.timingBudgetSeconds = 0.01;
+    c.perCase = true;
+    c.command = "test";
+    return c;
+}
+
+Campaign run(const CampaignConfig& c)
+{
+    return runCampaign(c, loadInputs(c));
+}
+
+std::string tmpDir(const std::string& name)
+{
+    const std::string d = std::string(VALIDATION_TEST_TMP) + "/" + name;
+    std::filesystem::remove_all(d);
+    return d;
+}
+} // namespace
+
+TEST_CASE("a small campaign passes and its report follows the schema", "[campaign]")
+{
+    const Campaign camp = run(smallConfig(2));
+    const Json& r = camp.report;
+    CHECK(camp.exitCode == kExitPass);
+    CHECK(r["schema"] == "gjk-report/1");
+    CHECK(r["passed"] == true);
+    for (const char* k :
+         {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
+          "threads", "inputs", "cases_total", "cases_rejected", "exact_route", "elapsed_s"})
+        CHECK(r["context"].contains(k));
+    CHECK(r["context"]["cases_total"] == 200 + 16 + 32 + 40 + 16);
+    CHECK(r["context"]["flags"].get<std::string>().find("-ffp-contract=off") != std::string::npos);
+    CHECK(r["baseline_variant"] == "double");
+    REQUIRE(r["variants"].size() == 2);
+    CHECK(r["variants"][0]["bound"].contains("formula"));
+    REQUIRE(r["families"].size() == 5);
+    for (const auto& f : r["families"])
+    {
+        INFO(f["name"]);
+        CHECK(f["pass"] == true);
+        for (const auto& [name, s] : f["variants"].items())
+        {
+            for (const char* k :
+                 {"cases", "failures", "pass", "false_overlap", "false_separation", "undecidable",
+                  "nonfinite", "out_of_range", "iteration_limit", "failure_rate_upper95", "errors",
+                  "iterations", "stops", "ns_per_query", "ns_spread", "ratio_to_baseline"})
+                CHECK(s.contains(k));
+            for (const char* h :
+                 {"abs", "rel", "ulps", "normalized", "bound_ratio", "witness", "witness_gap"})
+            {
+                const Json& hist = s["errors"][h];
+                for (const char* k : {"count", "zeros", "max", "mean", "sum", "p50", "p99", "p999",
+                                      "log10_min", "bins_per_decade", "counts", "max_case"})
+                    CHECK(hist.contains(k));
+            }
+            CHECK(s["errors"].contains("input_rounding") == (name == "float"));
+            CHECK(s["ns_per_query"].get<double>() > 0);
+        }
+    }
+    // One worst case per family, with traces in world coordinates.
+    REQUIRE(r["worst"].size() == 5);
+    for (const auto& w : r["worst"])
+    {
+        CHECK(w.contains("minkowski"));
+        CHECK(w["exact"]["squared"].get<std::string>().find('/') != std::string::npos);
+        for (const auto& [name, v] : w["variants"].items())
+        {
+            REQUIRE(v["trace"].size() >= 1);
+            CHECK(v["trace"][0]["simplex"].size() >= 1);
+        }
+    }
+    // Worst cases: replayable case file.
+    CHECK(camp.worstCases.size() == 5 * 3);
+    CHECK(camp.perCaseLines.size() == 304);
+    const Json line = Json::parse(camp.perCaseLines[0]);
+    CHECK(line["name"] == "random/0");
+    CHECK(line["variants"]["double"].contains("distance"));
+    CHECK(line["variants"]["float"].contains("stop"));
+    CHECK(line["exact"].contains("overlap"));
+
+    // Written files.
+    const std::string dir = tmpDir("small");
+    const std::string page = writeCampaign(camp, dir);
+    CHECK(std::filesystem::path(page).is_absolute());
+    for (const char* f : {"report.json", "report.md", "worst-cases.json", "cases.jsonl"})
+        CHECK(std::filesystem::exists(std::filesystem::path(dir) / f));
+    const CaseFile worst = readCaseFile(dir + "/worst-cases.json");
+    CHECK(worst.entries.size() == 15);
+    CHECK_FALSE(worst.comments.empty());
+    for (const auto& e : worst.entries)
+        CHECK(e.rejected.empty());
+    std::ifstream in(dir + "/report.json");
+    CHECK(Json::parse(in) == r);
+}
+
+TEST_CASE("the report does not depend on the number of threads", "[campaign]")
+{
+    const Campaign one = run(smallConfig(1));
+    const Campaign two = run(smallConfig(2));
+    const Campaign three = run(smallConfig(3));
+    CHECK(stripVolatile(one.report) == stripVolatile(two.report));
+    CHECK(stripVolatile(one.report) == stripVolatile(three.report));
+    CHECK(one.perCaseLines == two.perCaseLines);
+    CHECK(caseFileText({}, one.worstCases) == caseFileText({}, two.worstCases));
+}
+
+TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")
+{
+    CampaignConfig c = smallConfig(2);
+    c.families = {};
+    c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
+    const Campaign camp = run(c);
+    CHECK(camp.exitCode == kExitInput);
+    const Json& r = camp.report;
+    CHECK(r["passed"] == false);
+    CHECK(r["context"]["cases_rejected"] == 7);
+    REQUIRE(r["rejected"].size() == 7);
+    CHECK(r["rejected"][0]["name"] == "bad-cases.json#1 (case 'nan')");
+    CHECK(r["rejected"][0]["reason"] == "a.points[1][0] is NaN");
+    const Json& f = r["families"][0];
+    CHECK(f["name"] == "file:bad-cases.json");
+    CHECK(f["cases"] == 9);
+    CHECK(f["rejected"] == 7);
+    CHECK(f["variants"]["double"]["cases"] == 2);
+    CHECK(f["variants"]["double"]["failures"] == 0);
+    const Json rejectedLine = Json::parse(camp.perCaseLines[1]);
+    CHECK(rejectedLine["rejected"] == "a.points[1][0] is NaN");
+}
+
+TEST_CASE("failures beyond the bound give exit code 1", "[campaign]")
+{
+    // The regression file: the naive closest-point direction misses by ~1e-9 on near-parallel
+    // edges, far beyond 16 u R.
+    CampaignConfig c = smallConfig(2);
+    c.families = {};
+    c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/regressions.json"};
+    c.variants = parseVariants("double,double-closest-point");
+    const Campaign camp = run(c);
+    CHECK(camp.exitCode == kExitFail);
+    const Json& s = camp.report["families"][0]["variants"];
+    CHECK(s["double"]["failures"] == 0);
+    CHECK(s["double-closest-point"]["failures"].get<int>() >= 1);
+    CHECK(s["double-closest-point"]["beyond_bound"].get<int>() >= 1);
+    CHECK(s["double-closest-point"]["failure_rate_upper95"].is_null());
+}
+
+TEST_CASE("the talk's cases: float with the closest-point direction fails, the reference passes",
+          "[campaign]")
+{
+    CampaignConfig c = smallConfig(1);
+    c.families = {};
+    c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/talk.json"};
+    c.variants = parseVariants("double,float,float-closest-point");
+    const Campaign camp = run(c);
+    const Json& s = camp.report["families"][0]["variants"];
+    CHECK(s["double"]["failures"] == 0);
+    CHECK(s["float"]["failures"] == 0);
+    CHECK(s["float-closest-point"]["failures"].get<int>() >= 1);
+}
+
+TEST_CASE("case detail: trace and Minkowski difference in world coordinates", "[campaign]")
+{
+    Case c;
+    c.name = "detail";
+    c.a.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    c.a.c = std::cos(0.7);
+    c.a.s = std::sin(0.7);
+    c.a.px = 10;
+    c.a.py = -3;
+    c.b.points = {{0, 0}, {1, 0}, {0, 1}};
+    c.b.px = 14;
+    c.b.py = -3;
+    EvalContext ctx;
+    ctx.variants = parseVariants("double,float");
+    const CaseOutcome o = evaluateCase(c, ctx);
+    REQUIRE(o.rejected.empty());
+    const Json d = caseDetail(c, "test", ctx, o, "normalized");
+    const auto wa = worldPoints(c.a), wb = worldPoints(c.b);
+    for (const auto& step : d["variants"]["double"]["trace"])
+        for (const auto& v : step["simplex"])
+        {
+            const auto& pa = wa[v["iA"].get<std::size_t>()];
+            const auto& pb = wb[v["iB"].get<std::size_t>()];
+            CHECK(v["wA"][0].get<double>() == Approx(pa[0]).margin(1e-12));
+            CHECK(v["wA"][1].get<double>() == Approx(pa[1]).margin(1e-12));
+            CHECK(v["wB"][0].get<double>() == Approx(pb[0]).margin(1e-12));
+            CHECK(v["w"][0].get<double>() == Approx(pa[0] - pb[0]).margin(1e-12));
+            CHECK(v["w"][1].get<double>() == Approx(pa[1] - pb[1]).margin(1e-12));
+        }
+    // Minkowski difference A - B: counter-clockwise, positive area, 4 + 3 edges at most.
+    const Json& mk = d["minkowski"];
+    REQUIRE(mk.size() >= 3);
+    CHECK(mk.size() <= 7);
+    double area = 0;
+    for (std::size_t i = 0; i < mk.size(); ++i)
+    {
+        const Json& p = mk[i];
+        const Json& q = mk[(i + 1) % mk.size()];
+        area += p[0].get<double>() * q[1].get<double>() - p[1].get<double>() * q[0].get<double>();
+    }
+    CHECK(area > 0);
+    CHECK(d["exact"]["distance"].get<double>() > 0);
+    CHECK(d["variants"]["double"]["errors"]["abs"].get<double>() <=
+          d["variants"]["double"]["bound"].get<double>());
+    CHECK(d.contains("exact_float_input"));
+    // The text of `explain` mentions every variant and the exact result.
+    const std::string text = explainText(d);
+    CHECK_THAT(text, Catch::Contains("variant double") && Catch::Contains("variant float") &&
+                         Catch::Contains("exact: distance"));
+}
+
+TEST_CASE("metrics: ulps, the provisional bound, misclassification", "[campaign]")
+{
+    CHECK(ulpOf(Scalar::Double, 1.0) == std::ldexp(1.0, -52));
+    CHECK(ulpOf(Scalar::Double, 1.5) == std::ldexp(1.0, -52));
+    CHECK(ulpOf(Scalar::Double, 0.75) == std::ldexp(1.0, -53));
+    CHECK(ulpOf(Scalar::Float, 1.0) == std::ldexp(1.0, -23));
+    CHECK(ulpOf(Scalar::Double, 4.9e-324) == 4.9e-324);
+    CHECK(ulpOf(Scalar::Float, 1e-45) == std::ldexp(1.0, -149));
+    CaseMetrics m;
+    m.R = 3;
+    m.unitRoundoff = unitRoundoff(Scalar::Float);
+    CHECK(errorBound(*findVariant("float"), m) == 16 * std::ldexp(1.0, -24) * 3);
+
+    // Exact touching: double GJK may answer a tiny positive distance; within the bound it is
+    // "undecidable", never a failure.
+    Case c;
+    c.name = "touch";
+    c.a.points = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    c.b.points = {{1, 0.5}, {2, 0}, {2, 1}};
+    EvalContext ctx;
+    ctx.variants = parseVariants("double");
+    const CaseOutcome o = evaluateCase(c, ctx);
+    CHECK(o.exact.distance == 0);
+    CHECK_FALSE(o.variants[0].failed);
+    CHECK((o.variants[0].mis == Misclass::None || o.variants[0].mis == Misclass::Undecidable));
+}

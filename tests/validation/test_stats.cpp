@@ -1,0 +1,129 @@
+// Statistics on hand-made data: histogram bins and percentiles, means, and that merging two shards
+// gives exactly the statistics of the whole.
+#include "stats.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace gjkval;
+
+TEST_CASE("histogram counts, extrema, mean and bins", "[stats]")
+{
+    Hist h(-40, 40, 10);
+    h.add(0.0, "z1");
+    h.add(0.0, "z2");
+    h.add(1.0, "one");
+    h.add(0.5, "half");
+    h.add(4.0, "four");
+    h.add(-1.0, "negative ignored");
+    h.add(std::nan(""), "nan ignored");
+    h.add(INFINITY, "inf ignored");
+    CHECK(h.count == 5);
+    CHECK(h.zeros == 2);
+    CHECK(h.max == 4.0);
+    CHECK(h.maxCase == "four");
+    CHECK(h.sum == 5.5);
+    CHECK(h.mean() == 1.1);
+    // 1.0: log10 = 0 -> bin (0 + 40) * 10 = 400; 4.0: log10 = 0.602 -> bin 406; 0.5: -0.301 -> 396.
+    CHECK(h.binOf(1.0) == 400);
+    CHECK(h.binOf(4.0) == 406);
+    CHECK(h.binOf(0.5) == 396);
+    CHECK(h.counts[400] == 1);
+    CHECK(h.counts[406] == 1);
+    CHECK(h.counts[396] == 1);
+    // Clamped at both ends.
+    CHECK(h.binOf(1e-300) == 0);
+    CHECK(h.binOf(1e300) == h.binCount() - 1);
+}
+
+TEST_CASE("percentiles are bin upper edges, zeros first", "[stats]")
+{
+    Hist h(-40, 40, 10);
+    for (int i = 0; i < 50; ++i)
+        h.add(0.0);
+    for (int i = 0; i < 49; ++i)
+        h.add(2e-16);
+    h.add(1.0);
+    REQUIRE(h.count == 100);
+    CHECK(h.percentile(500, 1000) == 0.0); // rank 50: among the zeros
+    // rank 51: first 2e-16 (log10 = -15.699: bin 243 holds [10^-15.7, 10^-15.6)): edge 10^-15.6.
+    CHECK(h.binOf(2e-16) == 243);
+    CHECK(h.percentile(510, 1000) == Approx(std::pow(10.0, -15.6)).epsilon(1e-12));
+    CHECK(h.percentile(990, 1000) == Approx(std::pow(10.0, -15.6)).epsilon(1e-12)); // rank 99
+    CHECK(h.percentile(999, 1000) == Approx(std::pow(10.0, 0.1)).epsilon(1e-12));   // rank 100
+    Hist empty;
+    CHECK(empty.percentile(500, 1000) == 0.0);
+    const Json j = h.toJson();
+    CHECK(j["p50"] == 0.0);
+    CHECK(j["count"] == 100);
+    CHECK(j["zeros"] == 50);
+    CHECK(j["counts"].size() == 401); // trailing empty bins left out; bin 400 holds 1.0
+}
+
+namespace
+{
+Hist filled(int from, int to)
+{
+    Hist h(-40, 40, 10);
+    for (int i = from; i < to; ++i)
+        h.add(i % 7 == 0 ? 0.0 : std::ldexp(1.0, (i * 37) % 40 - 20),
+              std::to_string(i)); // sums exact
+    return h;
+}
+} // namespace
+
+TEST_CASE("merging two shards equals the whole", "[stats]")
+{
+    const Hist whole = filled(0, 1000);
+    Hist left = filled(0, 437);
+    left.merge(filled(437, 1000));
+    CHECK(left.toJson() == whole.toJson());
+
+    Hist emptyFirst;
+    emptyFirst.merge(whole);
+    CHECK(emptyFirst.toJson() == whole.toJson());
+
+    IterHist a, b, all;
+    for (int i = 0; i < 100; ++i)
+    {
+        (i < 30 ? a : b).add(i % 9);
+        all.add(i % 9);
+    }
+    a.merge(b);
+    CHECK(a.toJson() == all.toJson());
+    CHECK(all.max == 8);
+    CHECK(all.counts[0] == 12);
+
+    Stats s1, s2, sAll;
+    auto fill = [](Stats& s, int from, int to)
+    {
+        for (int i = from; i < to; ++i)
+        {
+            const std::string name =
+                std::to_string(i); // ("c" + to_string trips a GCC 12 -Wrestrict false positive)
+            ++s.cases;
+            s.failures += i % 50 == 0;
+            s.undecidable += i % 17 == 0;
+            s.abs.add(std::ldexp(1.0, -(i % 40)), name);
+            s.normalized.add(std::ldexp(1.0, i % 5), name);
+            s.iterations.add(i % 6);
+            ++s.stops[std::size_t(i % 3)];
+        }
+    };
+    fill(s1, 0, 123);
+    fill(s2, 123, 300);
+    fill(sAll, 0, 300);
+    s1.merge(s2);
+    CHECK(s1.toJson() == sAll.toJson());
+    CHECK(sAll.toJson()["failures"] == 6);
+    CHECK(sAll.toJson()["failure_rate_upper95"].is_null());
+}
+
+TEST_CASE("zero failures give the 3/N upper bound on the failure rate", "[stats]")
+{
+    Stats s;
+    s.cases = 20000;
+    CHECK(s.toJson()["failure_rate_upper95"] == Approx(1.5e-4));
+    CHECK(s.toJson()["pass"] == true);
+}

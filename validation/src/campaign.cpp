@@ -1,0 +1,771 @@
+#include "campaign.hpp"
+
+#include "build_info.hpp"
+#include "report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdio>
+#include <ctime>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+#include <unistd.h>
+
+#if defined(GJK2D_HAVE_HTML)
+#include "gjk_html/html.hpp"
+#endif
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+volatile double g_timingSink = 0;
+
+double seconds(Clock::time_point a, Clock::time_point b)
+{
+    return std::chrono::duration<double>(b - a).count();
+}
+
+std::string runCommand(const std::string& cmd)
+{
+    std::string out;
+    if (FILE* p = popen(cmd.c_str(), "r"))
+    {
+        char buf[256];
+        while (std::fgets(buf, sizeof buf, p))
+            out += buf;
+        if (pclose(p) != 0)
+            return {};
+    }
+    while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
+        out.pop_back();
+    return out;
+}
+
+std::string gitRevisionImpl()
+{
+    const std::string dir = GJK2D_SOURCE_DIR;
+    const std::string rev =
+        runCommand("git -C '" + dir + "' rev-parse --short=12 HEAD 2>/dev/null");
+    if (rev.empty())
+        return "unknown";
+    const std::string dirty =
+        runCommand("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null");
+    return dirty.empty() ? rev : rev + " (dirty)";
+}
+
+std::string isoDateUtcImpl()
+{
+    const std::time_t t = std::time(nullptr);
+    std::tm tm{};
+    gmtime_r(&t, &tm);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
+    return buf;
+}
+
+std::string hostName()
+{
+    char buf[256] = {};
+    if (gethostname(buf, sizeof buf - 1) != 0)
+        return "unknown";
+    return buf;
+}
+
+// Progress bar on stderr (only when it is a terminal and asked for).
+class Progress
+{
+  public:
+    Progress(bool enabled, std::string label, std::size_t total)
+        : enabled_(enabled), label_(std::move(label)), total_(total)
+    {
+        if (enabled_)
+            thread_ = std::thread([this] { loop(); });
+    }
+    ~Progress()
+    {
+        if (!enabled_)
+            return;
+        {
+            std::lock_guard lock(m_);
+            stop_ = true;
+        }
+        cv_.notify_all();
+        thread_.join();
+        draw();
+        std::fputc('\n', stderr);
+    }
+    void add(std::size_t n) { done_ += n; }
+
+  private:
+    void loop()
+    {
+        std::unique_lock lock(m_);
+        while (!cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop_; }))
+            draw();
+    }
+    void draw()
+    {
+        const std::size_t d = std::min(done_.load(), total_);
+        const int width = 40;
+        const int fill = total_ ? int(double(d) / double(total_) * width) : width;
+        std::fprintf(stderr, "\r%-8s [%s%s] %zu/%zu", label_.c_str(),
+                     std::string(std::size_t(fill), '#').c_str(),
+                     std::string(std::size_t(width - fill), ' ').c_str(), d, total_);
+        std::fflush(stderr);
+    }
+    bool enabled_;
+    std::string label_;
+    std::size_t total_;
+    std::atomic<std::size_t> done_{0};
+    std::thread thread_;
+    std::mutex m_;
+    std::condition_variable cv_;
+    bool stop_ = false;
+};
+
+// fn(i) for i in [0, n) on `threads` threads, in chunks; each index is computed exactly once and
+// results are stored by index, so the outcome does not depend on the thread count.
+template <class F> void parallelFor(std::size_t n, int threads, Progress& progress, F fn)
+{
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr error;
+    std::mutex errorMutex;
+    const std::size_t chunk = 8;
+    auto worker = [&]
+    {
+        for (;;)
+        {
+            const std::size_t start = next.fetch_add(chunk);
+            if (start >= n)
+                break;
+            const std::size_t end = std::min(n, start + chunk);
+            try
+            {
+                for (std::size_t i = start; i < end; ++i)
+                    fn(i);
+            }
+            catch (...)
+            {
+                std::lock_guard lock(errorMutex);
+                if (!error)
+                    error = std::current_exception();
+            }
+            progress.add(end - start);
+        }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool)
+        t.join();
+    if (error)
+        std::rethrow_exception(error);
+}
+
+void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, const VariantInfo& vi,
+                const CaseOutcome& o)
+{
+    if (v.skipped)
+    {
+        ++s.skipped;
+        return;
+    }
+    ++s.cases;
+    s.failures += v.failed ? 1 : 0;
+    s.outOfRange += v.outOfRange ? 1 : 0;
+    s.nonfinite += v.nonfinite ? 1 : 0;
+    s.iterationLimit += v.iterationLimit ? 1 : 0;
+    if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
+    {
+        s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
+        s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
+        s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
+        s.beyondBound += v.beyondBound ? 1 : 0;
+        if (!v.nonfinite)
+        {
+            s.abs.add(v.abs, name);
+            s.rel.add(v.rel, name); // NaN (not applicable) is ignored by add()
+            s.ulps.add(v.ulps, name);
+            s.normalized.add(v.normalized, name);
+            s.boundRatio.add(v.boundRatio, name);
+            s.witness.add(v.witness, name);
+            s.witnessGap.add(v.witnessGap, name);
+        }
+    }
+    if (vi.scalar == Scalar::Float)
+    {
+        s.hasInputRounding = true;
+        s.inputRounding.add(o.inputRounding, name);
+    }
+    if (vi.options.certify)
+    {
+        s.hasInterval = true;
+        if (v.certified)
+        {
+            ++s.certified;
+            s.contains += v.intervalContains ? 1 : 0;
+            if (v.truth > 0)
+                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name);
+        }
+        else
+            ++s.uncertified;
+    }
+    s.iterations.add(v.iterations);
+    ++s.stops[std::size_t(v.stop)];
+}
+
+// The timed inputs of one family in one scalar type, stored contiguously (points and inputs in
+// case order) so that the timing measures GJK rather than scattered memory.
+template <class T> struct TimingSet
+{
+    std::vector<gjk::Vec2<T>> points;
+    std::vector<gjk::DistanceInput<T>> inputs;
+
+    explicit TimingSet(const std::vector<const PreparedCase*>& cases)
+    {
+        std::size_t n = 0;
+        for (const PreparedCase* p : cases)
+        {
+            const auto in = p->input<T>();
+            n += std::size_t(in.proxyA.count + in.proxyB.count);
+        }
+        points.reserve(n); // no reallocation below: the inputs point into it
+        for (const PreparedCase* p : cases)
+        {
+            auto in = p->input<T>();
+            for (gjk::Polygon<T>* poly : {&in.proxyA, &in.proxyB})
+            {
+                const std::size_t at = points.size();
+                points.insert(points.end(), poly->points, poly->points + poly->count);
+                poly->points = points.data() + at;
+            }
+            inputs.push_back(in);
+        }
+    }
+};
+
+template <class T>
+double timePass(const TimingSet<T>& set, const gjk::Options& o, int reps, double& sink)
+{
+    const auto t0 = Clock::now();
+    double acc = 0;
+    for (int r = 0; r < reps; ++r)
+        for (const auto& in : set.inputs)
+        {
+            gjk::SimplexCache cache; // cold, as in the accuracy run
+            acc += double(gjk::distance(in, cache, o).distance);
+        }
+    const auto t1 = Clock::now();
+    sink += acc;
+    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
+// Median of repeated timed passes over the same cases, single-threaded; each pass repeats the
+// family's loop `reps` times so that one pass lasts at least ~2 ms.
+template <class T>
+void timeVariant(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
+                 const CampaignConfig& cfg, Stats& s, double& sink)
+{
+    if (cases.empty())
+        return;
+    const TimingSet<T> set(cases);
+    const double first = std::max(1.0, timePass<T>(set, o, 1, sink)); // warm-up and calibration
+    const int reps = std::clamp(int(std::ceil(2e6 / first)), 1, 100000);
+    std::vector<double> perQuery;
+    const auto start = Clock::now();
+    while (int(perQuery.size()) < cfg.maxPasses &&
+           (int(perQuery.size()) < cfg.minPasses ||
+            seconds(start, Clock::now()) < cfg.timingBudgetSeconds))
+        perQuery.push_back(timePass<T>(set, o, reps, sink) / (double(reps) * double(cases.size())));
+    std::sort(perQuery.begin(), perQuery.end());
+    const std::size_t n = perQuery.size();
+    s.nsPerQuery = n % 2 ? perQuery[n / 2] : 0.5 * (perQuery[n / 2 - 1] + perQuery[n / 2]);
+    s.nsMin = perQuery.front();
+    s.nsMax = perQuery.back();
+    s.timingPasses = int(n);
+}
+
+Json makeupJson(const std::vector<MakeupResult>& m)
+{
+    Json a = Json::array();
+    for (const auto& r : m)
+    {
+        Json j;
+        j["check"] = r.check;
+        j["value"] = num(r.value);
+        j["min"] = num(r.min);
+        j["max"] = num(r.max);
+        j["ok"] = r.ok;
+        if (r.skipped)
+            j["skipped"] =
+                fmt::format("fewer than {} cases: reported, not judged", kMinCasesForStatistics);
+        a.push_back(std::move(j));
+    }
+    return a;
+}
+
+} // namespace
+
+std::string gitRevision()
+{
+    return gitRevisionImpl();
+}
+std::string isoDateUtc()
+{
+    return isoDateUtcImpl();
+}
+
+std::vector<std::string> defaultFamilies()
+{
+    return {"random:" + std::to_string(kDefaultRandomCount), "hard"};
+}
+
+std::vector<std::string> defaultCaseFiles()
+{
+    std::vector<std::string> files;
+    const fs::path dir = fs::path(GJK2D_SOURCE_DIR) / "validation" / "cases";
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file() && e.path().extension() == ".json")
+            files.push_back(e.path().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::vector<FamilyData> loadInputs(const CampaignConfig& config)
+{
+    std::vector<FamilyData> out;
+    std::set<std::string> names;
+    for (const auto& spec : config.families)
+    {
+        for (auto& g : generateFamilies(spec, config.seed))
+        {
+            if (!names.insert(g.name).second)
+                throw InputError(fmt::format("family '{}' is given twice", g.name));
+            FamilyData f;
+            f.name = g.name;
+            f.reason = g.reason;
+            f.source = "generated";
+            f.seed = g.seed;
+            f.input = {{"family", g.name}, {"count", g.cases.size()}, {"seed", config.seed}};
+            f.labels.reserve(g.cases.size());
+            for (const auto& c : g.cases)
+                f.labels.push_back(c.name);
+            f.rejected.assign(g.cases.size(), {});
+            f.cases = std::move(g.cases);
+            f.makeup = std::move(g.makeup);
+            out.push_back(std::move(f));
+        }
+    }
+    for (const auto& path : config.caseFiles)
+    {
+        CaseFile file = readCaseFile(path);
+        FamilyData f;
+        const std::string base = fs::path(path).filename().string();
+        f.name = "file:" + base;
+        if (!names.insert(f.name).second)
+        {
+            f.name = "file:" + path;
+            if (!names.insert(f.name).second)
+                throw InputError(fmt::format("case file '{}' is given twice", path));
+        }
+        f.source = "file";
+        f.reason =
+            file.comments.empty() ? std::string("cases from ") + path : file.comments.front();
+        f.input = {{"file", path}, {"count", file.entries.size()}};
+        for (auto& e : file.entries)
+        {
+            f.cases.push_back(std::move(e.c));
+            f.labels.push_back(e.label);
+            f.rejected.push_back(e.rejected);
+        }
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> families)
+{
+    const auto tStart = Clock::now();
+    const int threads = config.threads > 0 ? config.threads
+                                           : int(std::max(1u, std::thread::hardware_concurrency()));
+    EvalContext ctx;
+    ctx.variants = config.variants;
+    ctx.exactOptions.route = config.route;
+
+    // Flat work list in campaign order.
+    struct Item
+    {
+        std::size_t f, i;
+    };
+    std::vector<Item> items;
+    std::vector<std::vector<CaseOutcome>> outcomes(families.size());
+    std::vector<std::vector<PreparedCase>> prepared(families.size());
+    for (std::size_t f = 0; f < families.size(); ++f)
+    {
+        outcomes[f].resize(families[f].cases.size());
+        prepared[f].resize(families[f].cases.size());
+        for (std::size_t i = 0; i < families[f].cases.size(); ++i)
+        {
+            items.push_back({f, i});
+            if (!families[f].rejected[i].empty())
+                outcomes[f][i].rejected = families[f].rejected[i];
+        }
+    }
+    const auto tGenerated = Clock::now();
+
+    // Phase 1: exact truths. Phase 2: GJK. Phase 3: witness points (exact).
+    {
+        Progress p(config.progress, "exact", items.size());
+        parallelFor(items.size(), threads, p,
+                    [&](std::size_t k)
+                    {
+                        const Item it = items[k];
+                        CaseOutcome& o = outcomes[it.f][it.i];
+                        if (o.rejected.empty())
+                            computeTruth(families[it.f].cases[it.i], ctx, o);
+                    });
+    }
+    const auto tExact = Clock::now();
+    {
+        Progress p(config.progress, "gjk", items.size());
+        parallelFor(items.size(), threads, p,
+                    [&](std::size_t k)
+                    {
+                        const Item it = items[k];
+                        const Case& c = families[it.f].cases[it.i];
+                        CaseOutcome& o = outcomes[it.f][it.i];
+                        if (!o.rejected.empty())
+                        {
+                            o.variants.assign(ctx.variants.size(), {});
+                            return;
+                        }
+                        prepared[it.f][it.i] = prepare(c);
+                        runVariants(c, prepared[it.f][it.i], ctx, o);
+                    });
+    }
+    const auto tGjk = Clock::now();
+    {
+        Progress p(config.progress, "witness", items.size());
+        parallelFor(items.size(), threads, p,
+                    [&](std::size_t k)
+                    {
+                        const Item it = items[k];
+                        checkWitnesses(families[it.f].cases[it.i], ctx, outcomes[it.f][it.i]);
+                    });
+    }
+    const auto tWitness = Clock::now();
+
+    // Statistics, in case order (single thread: identical whatever the thread count).
+    const std::size_t nv = ctx.variants.size();
+    std::vector<std::vector<Stats>> stats(families.size(), std::vector<Stats>(nv));
+    std::vector<std::vector<MakeupResult>> makeups(families.size());
+    Json rejectedJson = Json::array();
+    std::size_t totalCases = 0, totalRejected = 0;
+    bool anyFailure = false;
+    for (std::size_t f = 0; f < families.size(); ++f)
+    {
+        const FamilyData& fam = families[f];
+        std::vector<const Case*> valid;
+        std::vector<const exact::Result*> truths;
+        for (std::size_t i = 0; i < fam.cases.size(); ++i)
+        {
+            ++totalCases;
+            const CaseOutcome& o = outcomes[f][i];
+            if (!o.rejected.empty())
+            {
+                ++totalRejected;
+                rejectedJson.push_back(
+                    {{"name", fam.labels[i]}, {"family", fam.name}, {"reason", o.rejected}});
+                continue;
+            }
+            valid.push_back(&fam.cases[i]);
+            truths.push_back(&o.exact);
+            for (std::size_t k = 0; k < nv; ++k)
+                accumulate(stats[f][k], o.variants[k], fam.cases[i].name, *ctx.variants[k], o);
+        }
+        makeups[f] = evaluateMakeup(fam.makeup, valid, truths);
+    }
+
+    // Timing: single-threaded, apart from everything else.
+    double sink = 0;
+    if (config.timing)
+    {
+        Progress p(config.progress, "timing", families.size() * nv);
+        for (std::size_t f = 0; f < families.size(); ++f)
+        {
+            for (std::size_t k = 0; k < nv; ++k)
+            {
+                const VariantInfo& vi = *ctx.variants[k];
+                std::vector<const PreparedCase*> cases;
+                for (std::size_t i = 0; i < families[f].cases.size(); ++i)
+                {
+                    const CaseOutcome& o = outcomes[f][i];
+                    if (o.rejected.empty() && !o.variants[k].skipped)
+                        cases.push_back(&prepared[f][i]);
+                }
+                if (vi.scalar == Scalar::Float)
+                    timeVariant<float>(cases, vi.options, config, stats[f][k], sink);
+                else
+                    timeVariant<double>(cases, vi.options, config, stats[f][k], sink);
+                p.add(1);
+            }
+        }
+    }
+    const auto tTiming = Clock::now();
+
+    // Baseline for ratios: "double" when selected, else the first variant.
+    std::size_t baseline = 0;
+    for (std::size_t k = 0; k < nv; ++k)
+        if (ctx.variants[k]->name == "double")
+            baseline = k;
+    for (auto& fs : stats)
+        for (auto& s : fs)
+            if (s.nsPerQuery > 0 && fs[baseline].nsPerQuery > 0)
+                s.ratioToBaseline = s.nsPerQuery / fs[baseline].nsPerQuery;
+
+    // Worst cases of each family.
+    Campaign camp;
+    Json worst = Json::array();
+    std::set<std::string> worstNames;
+    const std::string date = isoDateUtc();
+    const std::string revision = gitRevision();
+    camp.worstComments.push_back(
+        fmt::format("Worst cases of `{}` ({}), git {}, seed {}: per family the {} "
+                    "cases with the largest normalised error over the variants.",
+                    config.command, date, revision, config.seed, config.worstPerFamily));
+    for (std::size_t f = 0; f < families.size(); ++f)
+    {
+        const FamilyData& fam = families[f];
+        std::vector<std::size_t> order;
+        for (std::size_t i = 0; i < fam.cases.size(); ++i)
+            if (outcomes[f][i].rejected.empty())
+                order.push_back(i);
+        std::stable_sort(order.begin(), order.end(),
+                         [&](std::size_t x, std::size_t y)
+                         { return outcomes[f][x].worstKey() > outcomes[f][y].worstKey(); });
+        if (order.size() > std::size_t(std::max(0, config.worstPerFamily)))
+            order.resize(std::size_t(std::max(0, config.worstPerFamily)));
+        for (std::size_t r = 0; r < order.size(); ++r)
+        {
+            const std::size_t i = order[r];
+            const CaseOutcome& o = outcomes[f][i];
+            Case c = fam.cases[i];
+            std::string name = c.name;
+            for (int k = 2; !worstNames.insert(name).second; ++k)
+                name = fmt::format("{}#{}", c.name, k);
+            c.name = name;
+            // Which variant is worst, for the comment.
+            std::size_t wk = 0;
+            double wv = -1;
+            for (std::size_t k = 0; k < nv; ++k)
+            {
+                const auto& v = o.variants[k];
+                const double key =
+                    v.skipped || (v.outOfRange && !v.failed)
+                        ? -1
+                        : ((v.nonfinite || v.iterationLimit) ? INFINITY : v.normalized);
+                if (key > wv)
+                {
+                    wv = key;
+                    wk = k;
+                }
+            }
+            camp.worstComments.push_back(
+                fmt::format("{}: family {}, normalised error {:.3g} ({}), exact distance {:.17g}",
+                            c.name, fam.name, wv, ctx.variants[wk]->name, o.exact.distance));
+            camp.worstCases.push_back(std::move(c));
+            if (r == 0)
+                worst.push_back(caseDetail(fam.cases[i], fam.name, ctx, o, "normalized"));
+        }
+    }
+
+    // Per-case lines.
+    if (config.perCase)
+        for (std::size_t f = 0; f < families.size(); ++f)
+            for (std::size_t i = 0; i < families[f].cases.size(); ++i)
+                camp.perCaseLines.push_back(
+                    perCaseJson(families[f].cases[i], families[f].name, ctx, outcomes[f][i])
+                        .dump());
+
+    // Families.
+    Json famJson = Json::array();
+    for (std::size_t f = 0; f < families.size(); ++f)
+    {
+        const FamilyData& fam = families[f];
+        Json j;
+        j["name"] = fam.name;
+        j["source"] = fam.source;
+        j["reason"] = fam.reason;
+        if (fam.source == "generated")
+            j["seed"] = fam.seed;
+        std::size_t rej = 0;
+        for (const auto& o : outcomes[f])
+            rej += o.rejected.empty() ? 0 : 1;
+        j["cases"] = fam.cases.size();
+        j["rejected"] = rej;
+        j["makeup"] = makeupJson(makeups[f]);
+        bool makeupOk = true;
+        for (const auto& m : makeups[f])
+            makeupOk = makeupOk && m.ok;
+        bool variantsOk = true;
+        Json vs = Json::object();
+        for (std::size_t k = 0; k < nv; ++k)
+        {
+            vs[ctx.variants[k]->name] = stats[f][k].toJson();
+            variantsOk = variantsOk && stats[f][k].failures == 0;
+        }
+        j["makeup_ok"] = makeupOk;
+        j["pass"] = makeupOk && variantsOk;
+        anyFailure = anyFailure || !makeupOk || !variantsOk;
+        j["variants"] = std::move(vs);
+        famJson.push_back(std::move(j));
+    }
+
+    // Variants.
+    Json varJson = Json::array();
+    for (auto* v : ctx.variants)
+    {
+        Json j;
+        j["name"] = v->name;
+        j["type"] = scalarName(v->scalar);
+        j["description"] = v->description;
+        j["options"] = optionsJson(v->options);
+        j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
+        varJson.push_back(std::move(j));
+    }
+
+    camp.exitCode = anyFailure ? kExitFail : (totalRejected > 0 ? kExitInput : kExitPass);
+
+    const auto tEnd = Clock::now();
+    Json inputs = Json::array();
+    std::set<std::string> seenInputs;
+    for (const auto& fam : families)
+        inputs.push_back(fam.input);
+    const double tExactS = seconds(tGenerated, tExact), tGjkS = seconds(tExact, tGjk),
+                 tWitnessS = seconds(tGjk, tWitness);
+    std::size_t validCases = totalCases - totalRejected;
+    double queries = 0, queryNs = 0;
+    for (std::size_t f = 0; f < families.size(); ++f)
+        for (std::size_t k = 0; k < nv; ++k)
+            if (stats[f][k].nsPerQuery > 0)
+            {
+                queries += double(stats[f][k].cases);
+                queryNs += stats[f][k].nsPerQuery * double(stats[f][k].cases);
+            }
+
+    Json context;
+    context["date"] = date;
+    context["host"] = hostName();
+    context["compiler"] = GJK2D_BUILD_COMPILER;
+    context["flags"] = GJK2D_BUILD_FLAGS;
+    context["build_type"] = GJK2D_BUILD_TYPE;
+#if defined(GJK2D_CHECKED)
+    context["gjk_checked"] = true;
+#else
+    context["gjk_checked"] = false;
+#endif
+    context["git_revision"] = revision;
+    context["command"] = config.command;
+    context["seed"] = config.seed;
+    context["threads"] = threads;
+    context["inputs"] = std::move(inputs);
+    context["cases_total"] = totalCases;
+    context["cases_rejected"] = totalRejected;
+    context["exact_route"] = exact::routeName(config.route);
+    context["elapsed_s"] = {{"generate", seconds(tStart, tGenerated)},
+                            {"exact", tExactS},
+                            {"gjk", tGjkS},
+                            {"witness", tWitnessS},
+                            {"timing", seconds(tWitness, tTiming)},
+                            {"total", seconds(tStart, tEnd)}};
+    context["throughput"] = {
+        {"exact_cases_per_s", tExactS > 0 ? double(validCases) / tExactS : 0.0},
+        {"gjk_cases_per_s", tGjkS > 0 ? double(validCases) / tGjkS : 0.0},
+        {"witness_cases_per_s", tWitnessS > 0 ? double(validCases) / tWitnessS : 0.0},
+        {"gjk_ns_per_query_mean", queries > 0 ? Json(queryNs / queries) : Json(nullptr)},
+        {"note",
+         "exact: truths (double input, plus float-rounded input when a float variant runs); "
+         "gjk: every variant's query and its error metrics; witness: exact point-to-shape "
+         "checks; all on `threads` threads. ns per query: single-threaded timed passes."}};
+    g_timingSink = sink; // keeps the timed loops from being optimised away
+
+    Json report;
+    report["schema"] = "gjk-report/1";
+    report["context"] = std::move(context);
+    report["variants"] = std::move(varJson);
+    report["baseline_variant"] = ctx.variants[baseline]->name;
+    report["families"] = std::move(famJson);
+    report["rejected"] = std::move(rejectedJson);
+    report["worst_cases_file"] = "worst-cases.json";
+    report["worst"] = std::move(worst);
+    report["exit_code"] = camp.exitCode;
+    report["passed"] = camp.exitCode == kExitPass;
+    camp.report = std::move(report);
+    return camp;
+}
+
+std::string writeCampaign(const Campaign& camp, const std::string& outDir)
+{
+    const fs::path dir = fs::absolute(fs::path(outDir));
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec)
+        throw InputError(
+            fmt::format("{}: cannot create the directory: {}", dir.string(), ec.message()));
+    auto write = [&](const std::string& name, const std::string& text)
+    {
+        std::ofstream out(dir / name, std::ios::binary);
+        out << text;
+        if (!out)
+            throw InputError(fmt::format("{}: write failed", (dir / name).string()));
+    };
+    write("report.json", camp.report.dump(1) + "\n"); // first: everything else is rendered from it
+    write("report.md", renderMarkdown(camp.report));
+    writeCaseFile((dir / "worst-cases.json").string(), camp.worstComments, camp.worstCases);
+    if (!camp.perCaseLines.empty())
+    {
+        std::string s;
+        for (const auto& l : camp.perCaseLines)
+            s += l + "\n";
+        write("cases.jsonl", s);
+    }
+    else
+        fs::remove(dir / "cases.jsonl", ec); // a stale one would not match this report
+#if defined(GJK2D_HAVE_HTML)
+    write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump())));
+    return (dir / "index.html").lexically_normal().string();
+#else
+    return (dir / "report.md").lexically_normal().string();
+#endif
+}
+
+Json stripVolatile(Json r)
+{
+    Json& c = r["context"];
+    for (const char* k : {"date", "host", "threads", "elapsed_s", "throughput", "command"})
+        c.erase(k);
+    for (auto& f : r["families"])
+        for (auto& [name, s] : f["variants"].items())
+            for (const char* k :
+                 {"ns_per_query", "ns_spread", "ratio_to_baseline", "timing_passes"})
+                s.erase(k);
+    return r;
+}
+
+} // namespace gjkval

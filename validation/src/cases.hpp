@@ -1,0 +1,70 @@
+// Cases and the case-file format `gjk-cases/1` (docs/validation.md, "Case files").
+#pragma once
+
+#include "common.hpp"
+
+#include <exact/exact.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// One shape of a case: the convex hull of `points` mapped by x' = c*x - s*y + px,
+// y' = s*x + c*y + py, grown by `radius`.
+struct ShapeIn
+{
+    std::vector<std::array<double, 2>> points;
+    double radius = 0;
+    double px = 0, py = 0;
+    double c = 1, s = 0;
+};
+
+struct Case
+{
+    std::string name;
+    ShapeIn a, b;
+};
+
+// One entry of a case file in file order: a valid case, or a rejected one (reason non-empty).
+struct CaseEntry
+{
+    Case c;               // as far as it could be read; c.name may be empty
+    std::string label;    // "file.json#3 (case 'x')": how reports name this entry
+    std::string rejected; // empty: valid
+};
+
+struct CaseFile
+{
+    std::string path;
+    std::vector<std::string> comments;
+    std::vector<CaseEntry> entries;
+};
+
+inline constexpr const char* kCaseFormat = "gjk-cases/1";
+
+// Reads and checks a case file. A file that is unreadable, not JSON or not gjk-cases/1 throws
+// InputError naming the file (and line:column for a JSON syntax error). A case with an invalid
+// field is kept as a rejected entry naming file, case and field; the other cases are valid.
+CaseFile readCaseFile(const std::string& path);
+CaseFile parseCaseFile(const std::string& text, const std::string& sourceName);
+
+// Writes a gjk-cases/1 file: one case per line, numbers in shortest round-trip form.
+std::string caseFileText(const std::vector<std::string>& comments, const std::vector<Case>& cases);
+void writeCaseFile(const std::string& path, const std::vector<std::string>& comments,
+                   const std::vector<Case>& cases);
+Json caseToJson(const Case& c);
+Json shapeToJson(const ShapeIn& s);
+
+// Line and column (both from 1) of a byte offset in text.
+std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset);
+
+// The exact side's view of a shape; roundToFloat rounds every input double to float first (the
+// input the float variants actually see).
+exact::Shape toExact(const ShapeIn& s, bool roundToFloat = false);
+// True when every number of the case is finite after rounding to float.
+bool representableInFloat(const Case& c);
+
+} // namespace gjkval

@@ -1,0 +1,125 @@
+// One case: the exact truth, every variant's GJK result, its errors against the truth, its
+// witness-point errors; and the case-detail JSON (docs/report-schema.md, "CaseDetail").
+#pragma once
+
+#include "bounds.hpp"
+#include "cases.hpp"
+#include "variants.hpp"
+
+#include "gjk/distance.hpp"
+
+#include <exact/exact.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// A case's inputs converted once to both scalar types (the timing loop reuses them).
+struct PreparedCase
+{
+    std::vector<gjk::Vec2<double>> ad, bd;
+    std::vector<gjk::Vec2<float>> af, bf;
+    gjk::Transform<double> xad, xbd;
+    gjk::Transform<float> xaf, xbf;
+    double rad = 0, rbd = 0;
+    float raf = 0, rbf = 0;
+    bool floatOk = true; // every input finite after rounding to float
+
+    template <class T> gjk::DistanceInput<T> input() const
+    {
+        if constexpr (std::is_same_v<T, float>)
+            return {{af.data(), int(af.size()), raf}, {bf.data(), int(bf.size()), rbf}, xaf, xbf};
+        else
+            return {{ad.data(), int(ad.size()), rad}, {bd.data(), int(bd.size()), rbd}, xad, xbd};
+    }
+};
+PreparedCase prepare(const Case& c);
+
+// A cold GJK query (fresh cache), as both the accuracy run and the timing loop make it.
+template <class T>
+gjk::DistanceOutput<T> query(const PreparedCase& p, const gjk::Options& o,
+                             gjk::Trace<T>* trace = nullptr)
+{
+    gjk::SimplexCache cache;
+    return gjk::distance(p.input<T>(), cache, o, trace);
+}
+
+enum class Misclass
+{
+    None,
+    FalseOverlap,    // exact distance > 0, GJK 0, |error| > bound
+    FalseSeparation, // exact distance 0, GJK > 0, |error| > bound
+    Undecidable,     // one of the two, but |error| <= bound: not decidable at this precision
+};
+const char* misclassName(Misclass m); // null for None
+
+struct VariantOutcome
+{
+    bool skipped = false; // the input is not representable in the variant's type
+    double distance = 0;
+    std::array<double, 2> pointA{}, pointB{}, normal{};
+    int iterations = 0;
+    gjk::StopReason stop = gjk::StopReason::RepeatedSupport;
+    double truth = 0; // the exact distance this variant is judged against
+    double R = 0;     // scale in the compute frame
+    double bound = 0;
+    // Errors; NaN = not applicable (rel and ulps when the truth is 0, witness before checking).
+    double abs = 0, rel = 0, ulps = 0, normalized = 0, boundRatio = 0;
+    double witness = 0, witnessGap = 0;
+    Misclass mis = Misclass::None;
+    bool nonfinite = false, iterationLimit = false;
+    bool outOfRange =
+        false; // GJK's own flag (DistanceOutput::outOfRange): not judged, counted apart
+    bool beyondBound = false; // |error| > bound (or not finite)
+    // Certified variants (Options::certify): the interval and whether it holds the exact distance.
+    bool certified = false, intervalContains = false;
+    double lower = 0, upper = 0;
+    bool failed = false;
+};
+
+struct CaseOutcome
+{
+    std::string rejected; // non-empty: not evaluated
+    exact::Result exact;
+    bool hasFloatTruth = false;
+    exact::Result exactFloat; // exact truth of the float-rounded input
+    double inputRounding = 0; // |exactFloat.distance - exact.distance|
+    std::vector<VariantOutcome> variants;
+
+    // The key the worst cases are ranked by: max over variants of the normalised error, +inf for
+    // non-finite results and iteration limits.
+    double worstKey() const;
+};
+
+struct EvalContext
+{
+    std::vector<const VariantInfo*> variants;
+    exact::Options exactOptions;
+    bool needFloatTruth() const;
+};
+
+// Phase 1: the exact truths (catches exact's invalid_argument: the case is then rejected).
+void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// Phase 2: GJK for every variant, errors, misclassification, failure.
+void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out);
+// Phase 3: exact distance of each witness point to its shape.
+void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// All three.
+CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
+
+// Unit in the last place of the variant's type at x > 0.
+double ulpOf(Scalar s, double x);
+
+// docs/report-schema.md "CaseDetail", with traces (the query is run again with a trace).
+Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
+                const CaseOutcome& o, const std::string& worstBy);
+// One line of cases.jsonl.
+Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
+                 const CaseOutcome& o);
+// `explain`'s text from a case detail.
+std::string explainText(const Json& detail);
+
+} // namespace gjkval

@@ -1,0 +1,83 @@
+// Case families: seeded generators of cases, each with the checks of its own make-up.
+// `random` is the realistic mix; `hard/<sub>` are the known ways to break GJK, all in ONE table in
+// families.cpp with a reason per sub-family.
+#pragma once
+
+#include "cases.hpp"
+
+#include <exact/exact.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// What a make-up check measures over a family's cases (from the inputs and the exact results).
+enum class MakeupMetric
+{
+    OverlapFraction,      // fraction with exact distance 0 (touching or overlapping)
+    SeparatedFraction,    // 1 - OverlapFraction
+    NearTouchingFraction, // fraction with 0 < exact distance <= 1e-2
+    MinPositiveDistance,  // smallest exact distance among separated cases
+    MaxDistance,          // largest exact distance
+    MaxCoordinate,        // largest |world coordinate| of any point
+    MinVertices,          // fewest points of a shape
+    MinHullVertices,      // fewest distinct hull vertices of a shape (1: a point, 2: a segment)
+    MaxVertices,          // most points of a shape
+    MaxAspect,            // largest diameter / min width of a shape (hulls of <= 64 vertices)
+    RadiusFraction,       // fraction of cases with a rounded shape (radius > 0)
+};
+
+struct MakeupSpec
+{
+    std::string check;
+    MakeupMetric metric;
+    double min, max;
+    bool statistical = false; // skipped (reported, not judged) below kMinCasesForStatistics cases
+};
+
+inline constexpr std::size_t kMinCasesForStatistics = 100;
+
+struct MakeupResult
+{
+    std::string check;
+    double value, min, max;
+    bool ok;
+    bool skipped;
+};
+
+struct GeneratedFamily
+{
+    std::string name;   // "random", "hard/near-parallel"
+    std::string reason; // why the family exists
+    std::uint64_t seed; // the family's own seed (derived from the campaign seed and the name)
+    std::vector<Case> cases;
+    std::vector<MakeupSpec> makeup;
+};
+
+struct HardSubFamilyInfo
+{
+    std::string name; // without "hard/"
+    int count;
+    std::string reason;
+};
+const std::vector<HardSubFamilyInfo>& hardSubFamilies();
+
+inline constexpr int kDefaultRandomCount = 200000;
+
+// "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]". Throws InputError.
+std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed);
+
+std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
+                                         const std::vector<const Case*>& cases,
+                                         const std::vector<const exact::Result*>& truths);
+
+// Exact distance is 0: the (rounded) shapes touch or overlap.
+inline bool exactIsZero(const exact::Result& r)
+{
+    return r.overlap || r.upper == 0;
+}
+
+} // namespace gjkval
