@@ -5,16 +5,38 @@
 namespace gjkval
 {
 
-double errorBound(const VariantInfo& /*variant*/, const CaseMetrics& m)
+// The a-priori bound derived in docs/error-bound.md, to first order in u:
+//   |d_gjk - d| <= u (4 A + 31 B + 7.3 D + 1.5 B~ + 5 W + 4 d + rA + rB)
+// in A's local frame (the reference variant). Term by term (see the doc):
+//   11 B + 7.3 D + 1.5 B~ + 1.5 W   mapping B into A's frame, w = a - b~      (vertex error)
+//   4 A + 20 B                      choosing the support points (rounded dots, rotated direction)
+//   3.5 W + 3 d                     the distance formula |cross(w1, e12)| / |e12|
+//   d + rA + rB                     subtracting the radii
+// World frame: both shapes are transformed, each like B above, and D does not appear.
+// Duality-gap stopping adds the gap it accepts, 16 u |v| <= 16 u W.
+double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 {
-    return kBoundConstant * m.unitRoundoff * m.R;
+    const double u = m.unitRoundoff;
+    const double d = m.exactDistance;
+    double terms;
+    if (variant.options.frame == gjk::Frame::World)
+        terms = 31 * (m.maxA + m.maxBMapped) + 7.3 * m.translation + 5 * m.maxW + 4 * d;
+    else
+        terms = 4 * m.maxA + 31 * m.maxB + 7.3 * m.translation + 1.5 * m.maxBMapped +
+                5 * m.maxW + 4 * d;
+    if (variant.options.stopping == gjk::StoppingRule::DualityGap)
+        terms += 16 * m.maxW;
+    return u * (terms + m.radiusA + m.radiusB);
 }
 
-std::string boundFormula(const VariantInfo& /*variant*/)
+std::string boundFormula(const VariantInfo& variant)
 {
-    return fmt::format("{:g} * u * R (provisional; R = max|coord of A| + max|coord of B| + rA + rB "
-                       "in the compute frame)",
-                       kBoundConstant);
+    std::string f = variant.options.frame == gjk::Frame::World
+                        ? "u (31 (A + B~) + 7.3 D + 5 W + 4 d + rA + rB)"
+                        : "u (4 A + 31 B + 7.3 D + 1.5 B~ + 5 W + 4 d + rA + rB)";
+    if (variant.options.stopping == gjk::StoppingRule::DualityGap)
+        f += " + 16 u W";
+    return f + " (docs/error-bound.md)";
 }
 
 } // namespace gjkval

@@ -26,9 +26,8 @@ struct CaseMetrics
     double maxW = 0; // W  = max |a_i - b~_j| (exact over pairs when n*m <= 1e6, else A + B~)
 };
 
-// Provisional bound, C * u * R with C = kBoundConstant (16). Cases GJK flags outOfRange are not
-// judged against it (counted apart).
-inline constexpr double kBoundConstant = 16;
+// The derived bound of docs/error-bound.md. Cases GJK flags outOfRange are not judged against it
+// (counted apart).
 double errorBound(const VariantInfo& variant, const CaseMetrics& metrics);
 // Human-readable formula for the report ("variants[].bound.formula").
 std::string boundFormula(const VariantInfo& variant);
