@@ -115,6 +115,22 @@ template <class T> void BM_Random(benchmark::State& state)
         double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+// The batch entry point over the same pairs (cold), against BM_Random's single-query loop.
+template <class T> void BM_RandomBatch(benchmark::State& state)
+{
+    const auto& in = inputs<T>().inputs;
+    std::vector<gjk::SimplexCache> caches(in.size());
+    std::vector<gjk::DistanceOutput<T>> out(in.size());
+    for (auto _ : state)
+    {
+        std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
+        gjk::distanceBatch<T>(in, caches, out);
+        benchmark::DoNotOptimize(out.data());
+    }
+    state.counters["ns_per_query"] = benchmark::Counter(
+        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // Warm-started repeated query: each pair queried with the cache of its previous query.
 template <class T> void BM_RandomWarm(benchmark::State& state)
 {
@@ -155,6 +171,8 @@ template <class T> void BM_RegularPolygons(benchmark::State& state)
 
 BENCHMARK_TEMPLATE(BM_Random, double)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomBatch, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RegularPolygons, double)

@@ -772,3 +772,29 @@ TEMPLATE_TEST_CASE("binary-search support gives the same distances", "[gjk][supp
     CHECK(fast.distance == Approx(slow.distance).margin(tol(T(4))));
     CHECK(fast.stop != StopReason::IterationLimit);
 }
+
+TEMPLATE_TEST_CASE("batch: the same results as single queries", "[gjk][batch]", float, double)
+{
+    using T = TestType;
+    std::vector<Scene<T>> scenes;
+    scenes.push_back(walkThrough<T>());
+    Scene<T> s;
+    s.a = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    s.b = {{3, 0}, {4, 1}, {3, 2}};
+    s.xfB = {{T(0.5), T(-1)}, {T(0), T(1)}};
+    scenes.push_back(s);
+    std::vector<DistanceInput<T>> inputs;
+    for (const auto& x : scenes)
+        inputs.push_back(x.input());
+    std::vector<SimplexCache> caches(inputs.size());
+    std::vector<DistanceOutput<T>> outputs(inputs.size());
+    distanceBatch<T>(inputs, caches, outputs);
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+    {
+        SimplexCache c;
+        const auto single = distance(inputs[i], c);
+        CHECK(outputs[i].distance == single.distance);
+        CHECK(outputs[i].pointA == single.pointA);
+        CHECK(caches[i].count == c.count);
+    }
+}

@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #if defined(GJK2D_CHECKED)
@@ -844,6 +845,19 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         cache.indexB[i] = simplex.v[i].indexB;
     }
     return out;
+}
+
+// Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
+// distance(inputs[i], caches[i], options). The spans must have equal sizes. Same results as the
+// single query, bit for bit (test "batch"); its speed against the single-query loop is measured
+// in gjk/bench (docs/speed.md).
+template <class T>
+void distanceBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
+                   std::span<DistanceOutput<T>> outputs, const Options& options = referenceOptions)
+{
+    GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+        outputs[i] = distance(inputs[i], caches[i], options);
 }
 
 // Convenience: a cold query (value-initialised cache).
