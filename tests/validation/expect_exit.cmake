@@ -1,6 +1,8 @@
 # Runs EXE with ARGS ('|'-separated) and checks its exit code is EXPECT; optionally that stderr
-# contains EXPECT_STDERR, that the last stdout line starts with EXPECT_LAST_LINE, and that the
-# file EXPECT_FILE exists afterwards.
+# contains EXPECT_STDERR, that the last stdout line starts with EXPECT_LAST_LINE, that the
+# file EXPECT_FILE exists afterwards, and that it is JSON holding EXPECT_JSON: '|'-separated
+# entries PATH:TYPE, PATH a '/'-separated key path ("variants/double/ns_per_query"), TYPE one of
+# string(JSON TYPE)'s answers (NUMBER, STRING, OBJECT, ARRAY, BOOLEAN, NULL).
 string(REPLACE "|" ";" args "${ARGS}")
 if(DEFINED EXPECT_FILE)
   file(REMOVE "${EXPECT_FILE}")
@@ -25,5 +27,22 @@ if(DEFINED EXPECT_LAST_LINE)
 endif()
 if(DEFINED EXPECT_FILE AND NOT EXISTS "${EXPECT_FILE}")
   message(FATAL_ERROR "${EXPECT_FILE} was not written")
+endif()
+if(DEFINED EXPECT_JSON)
+  file(READ "${EXPECT_FILE}" json)
+  string(REPLACE "|" ";" entries "${EXPECT_JSON}")
+  foreach(entry IN LISTS entries)
+    string(REGEX MATCH "^([^:]+):(.+)$" _ "${entry}")
+    set(path "${CMAKE_MATCH_1}")
+    set(want "${CMAKE_MATCH_2}")
+    string(REPLACE "/" ";" keys "${path}")
+    string(JSON type ERROR_VARIABLE jerr TYPE "${json}" ${keys})
+    if(jerr)
+      message(FATAL_ERROR "${EXPECT_FILE}: ${path}: ${jerr}")
+    endif()
+    if(NOT type STREQUAL want)
+      message(FATAL_ERROR "${EXPECT_FILE}: ${path} is ${type}, expected ${want}")
+    endif()
+  endforeach()
 endif()
 message(STATUS "exit code ${rc} as expected")

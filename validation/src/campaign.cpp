@@ -2,6 +2,7 @@
 
 #include "build_info.hpp"
 #include "report.hpp"
+#include "timing.hpp"
 
 #include <fmt/format.h>
 
@@ -31,8 +32,6 @@ namespace
 {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-volatile double g_timingSink = 0;
 
 double seconds(Clock::time_point a, Clock::time_point b)
 {
@@ -183,6 +182,7 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, cons
     if (v.skipped)
     {
         ++s.skipped;
+        s.notApplicable += v.notApplicable ? 1 : 0;
         return;
     }
     ++s.cases;
@@ -229,77 +229,6 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, cons
     ++s.stops[std::size_t(v.stop)];
 }
 
-// The timed inputs of one family in one scalar type, stored contiguously (points and inputs in
-// case order) so that the timing measures GJK rather than scattered memory.
-template <class T> struct TimingSet
-{
-    std::vector<gjk::Vec2<T>> points;
-    std::vector<gjk::DistanceInput<T>> inputs;
-
-    explicit TimingSet(const std::vector<const PreparedCase*>& cases)
-    {
-        std::size_t n = 0;
-        for (const PreparedCase* p : cases)
-        {
-            const auto in = p->input<T>();
-            n += std::size_t(in.proxyA.count + in.proxyB.count);
-        }
-        points.reserve(n); // no reallocation below: the inputs point into it
-        for (const PreparedCase* p : cases)
-        {
-            auto in = p->input<T>();
-            for (gjk::Polygon<T>* poly : {&in.proxyA, &in.proxyB})
-            {
-                const std::size_t at = points.size();
-                points.insert(points.end(), poly->points, poly->points + poly->count);
-                poly->points = points.data() + at;
-            }
-            inputs.push_back(in);
-        }
-    }
-};
-
-template <class T>
-double timePass(const TimingSet<T>& set, const gjk::Options& o, int reps, double& sink)
-{
-    const auto t0 = Clock::now();
-    double acc = 0;
-    for (int r = 0; r < reps; ++r)
-        for (const auto& in : set.inputs)
-        {
-            gjk::SimplexCache cache; // cold, as in the accuracy run
-            acc += double(gjk::distance(in, cache, o).distance);
-        }
-    const auto t1 = Clock::now();
-    sink += acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
-}
-
-// Median of repeated timed passes over the same cases, single-threaded; each pass repeats the
-// family's loop `reps` times so that one pass lasts at least ~2 ms.
-template <class T>
-void timeVariant(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
-                 const CampaignConfig& cfg, Stats& s, double& sink)
-{
-    if (cases.empty())
-        return;
-    const TimingSet<T> set(cases);
-    const double first = std::max(1.0, timePass<T>(set, o, 1, sink)); // warm-up and calibration
-    const int reps = std::clamp(int(std::ceil(2e6 / first)), 1, 100000);
-    std::vector<double> perQuery;
-    const auto start = Clock::now();
-    while (int(perQuery.size()) < cfg.maxPasses &&
-           (int(perQuery.size()) < cfg.minPasses ||
-            seconds(start, Clock::now()) < cfg.timingBudgetSeconds))
-        perQuery.push_back(timePass<T>(set, o, reps, sink) / (double(reps) * double(cases.size())));
-    std::sort(perQuery.begin(), perQuery.end());
-    const std::size_t n = perQuery.size();
-    s.nsPerQuery = n % 2 ? perQuery[n / 2] : 0.5 * (perQuery[n / 2 - 1] + perQuery[n / 2]);
-    s.nsMin = perQuery.front();
-    s.nsMax = perQuery.back();
-    s.timingPasses = int(n);
-}
-
 Json makeupJson(const std::vector<MakeupResult>& m)
 {
     Json a = Json::array();
@@ -328,6 +257,31 @@ std::string gitRevision()
 std::string isoDateUtc()
 {
     return isoDateUtcImpl();
+}
+
+Json contextJson(const std::string& date, const std::string& revision, const std::string& command,
+                 std::uint64_t seed, int threads, Json inputs, std::size_t casesTotal,
+                 std::size_t casesRejected)
+{
+    Json context;
+    context["date"] = date;
+    context["host"] = hostName();
+    context["compiler"] = GJK2D_BUILD_COMPILER;
+    context["flags"] = GJK2D_BUILD_FLAGS;
+    context["build_type"] = GJK2D_BUILD_TYPE;
+#if defined(GJK2D_CHECKED)
+    context["gjk_checked"] = true;
+#else
+    context["gjk_checked"] = false;
+#endif
+    context["git_revision"] = revision;
+    context["command"] = command;
+    context["seed"] = seed;
+    context["threads"] = threads;
+    context["inputs"] = std::move(inputs);
+    context["cases_total"] = casesTotal;
+    context["cases_rejected"] = casesRejected;
+    return context;
 }
 
 std::vector<std::string> defaultFamilies()
@@ -503,15 +457,17 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
     }
 
     // Timing: single-threaded, apart from everything else.
-    double sink = 0;
     if (config.timing)
     {
+        TimingConfig tc;
+        tc.minPasses = config.minPasses;
+        tc.maxPasses = config.maxPasses;
+        tc.budgetSeconds = config.timingBudgetSeconds;
         Progress p(config.progress, "timing", families.size() * nv);
         for (std::size_t f = 0; f < families.size(); ++f)
         {
             for (std::size_t k = 0; k < nv; ++k)
             {
-                const VariantInfo& vi = *ctx.variants[k];
                 std::vector<const PreparedCase*> cases;
                 for (std::size_t i = 0; i < families[f].cases.size(); ++i)
                 {
@@ -519,10 +475,12 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
                     if (o.rejected.empty() && !o.variants[k].skipped)
                         cases.push_back(&prepared[f][i]);
                 }
-                if (vi.scalar == Scalar::Float)
-                    timeVariant<float>(cases, vi.options, config, stats[f][k], sink);
-                else
-                    timeVariant<double>(cases, vi.options, config, stats[f][k], sink);
+                const TimingResult t = timeQueries(cases, *ctx.variants[k], tc);
+                Stats& s = stats[f][k];
+                s.nsPerQuery = t.nsPerQuery;
+                s.nsMin = t.nsMin;
+                s.nsMax = t.nsMax;
+                s.timingPasses = t.passes;
                 p.add(1);
             }
         }
@@ -628,7 +586,9 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
         for (std::size_t k = 0; k < nv; ++k)
         {
             vs[ctx.variants[k]->name] = stats[f][k].toJson();
-            variantsOk = variantsOk && stats[f][k].failures == 0;
+            // Comparison variants (not judged) are reported, never failed.
+            if (ctx.variants[k]->judged)
+                variantsOk = variantsOk && stats[f][k].failures == 0;
         }
         j["makeup_ok"] = makeupOk;
         j["pass"] = makeupOk && variantsOk;
@@ -645,6 +605,8 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
         j["name"] = v->name;
         j["type"] = scalarName(v->scalar);
         j["description"] = v->description;
+        j["judged"] = v->judged;
+        j["warm"] = v->warm;
         j["options"] = optionsJson(v->options);
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         varJson.push_back(std::move(j));
@@ -669,24 +631,8 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
                 queryNs += stats[f][k].nsPerQuery * double(stats[f][k].cases);
             }
 
-    Json context;
-    context["date"] = date;
-    context["host"] = hostName();
-    context["compiler"] = GJK2D_BUILD_COMPILER;
-    context["flags"] = GJK2D_BUILD_FLAGS;
-    context["build_type"] = GJK2D_BUILD_TYPE;
-#if defined(GJK2D_CHECKED)
-    context["gjk_checked"] = true;
-#else
-    context["gjk_checked"] = false;
-#endif
-    context["git_revision"] = revision;
-    context["command"] = config.command;
-    context["seed"] = config.seed;
-    context["threads"] = threads;
-    context["inputs"] = std::move(inputs);
-    context["cases_total"] = totalCases;
-    context["cases_rejected"] = totalRejected;
+    Json context = contextJson(date, revision, config.command, config.seed, threads,
+                               std::move(inputs), totalCases, totalRejected);
     context["exact_route"] = exact::routeName(config.route);
     context["elapsed_s"] = {{"generate", seconds(tStart, tGenerated)},
                             {"exact", tExactS},
@@ -703,7 +649,6 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
          "exact: truths (double input, plus float-rounded input when a float variant runs); "
          "gjk: every variant's query and its error metrics; witness: exact point-to-shape "
          "checks; all on `threads` threads. ns per query: single-threaded timed passes."}};
-    g_timingSink = sink; // keeps the timed loops from being optimised away
 
     Json report;
     report["schema"] = "gjk-report/1";

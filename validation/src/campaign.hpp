@@ -36,6 +36,13 @@ struct CampaignConfig
 std::string gitRevision();
 std::string isoDateUtc();
 
+// report.json's context block up to "cases_rejected" (date, host, compiler, flags, build_type,
+// gjk_checked, git_revision, command, seed, threads, inputs, cases_total, cases_rejected); `bench`
+// writes the same block.
+Json contextJson(const std::string& date, const std::string& revision, const std::string& command,
+                 std::uint64_t seed, int threads, Json inputs, std::size_t casesTotal,
+                 std::size_t casesRejected);
+
 // The default campaign of `gjk-validate run` without inputs.
 std::vector<std::string> defaultFamilies();
 std::vector<std::string> defaultCaseFiles(); // every *.json in <source>/validation/cases, sorted

@@ -116,11 +116,11 @@ template <class T> Json traceJson(const gjk::Trace<T>& tr)
     return steps;
 }
 
-template <class T> Json tracedRun(const Case& c, const gjk::Options& o, gjk::DistanceOutput<T>& out)
+template <class T> Json tracedRun(const Case& c, const VariantInfo& v, gjk::DistanceOutput<T>& out)
 {
     const PreparedCase p = prepare(c);
     gjk::Trace<T> tr;
-    out = query<T>(p, o, &tr);
+    out = query<T>(p, v, &tr);
     return traceJson(tr);
 }
 
@@ -182,7 +182,29 @@ PreparedCase prepare(const Case& c)
     p.raf = float(c.a.radius);
     p.rbf = float(c.b.radius);
     p.floatOk = representableInFloat(c);
+    auto convex = [](const auto& pts)
+    {
+        if (int(pts.size()) <= kLinearSupportMaxPoints)
+            return true;
+        std::vector<P2> q;
+        q.reserve(pts.size());
+        for (const auto& v : pts)
+            q.push_back({double(v.x), double(v.y)});
+        return inConvexOrder(q);
+    };
+    p.binaryOk[0] = convex(p.ad) && convex(p.bd);
+    p.binaryOk[1] = p.floatOk && convex(p.af) && convex(p.bf);
     return p;
+}
+
+const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput)
+{
+    const bool isFloat = v.scalar == Scalar::Float;
+    if (isFloat && !floatInput)
+        return kSkipNotRepresentable;
+    if (needsConvexOrder(v) && !p.binaryOk[isFloat ? 1 : 0])
+        return kSkipNotConvexOrder;
+    return nullptr;
 }
 
 double ulpOf(Scalar s, double x)
@@ -259,15 +281,16 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         const VariantInfo& vi = *ctx.variants[k];
         VariantOutcome& v = out.variants[k];
         const bool isFloat = vi.scalar == Scalar::Float;
-        if (isFloat && !out.hasFloatTruth)
+        if (const char* why = skipReason(vi, p, out.hasFloatTruth))
         {
             v.skipped = true;
+            v.notApplicable = why == kSkipNotConvexOrder;
             continue;
         }
         if (isFloat)
-            fillOutput(query<float>(p, vi.options), v);
+            fillOutput(query<float>(p, vi), v);
         else
-            fillOutput(query<double>(p, vi.options), v);
+            fillOutput(query<double>(p, vi), v);
 
         const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
         const bool truthZero = exactIsZero(truth);
@@ -355,7 +378,10 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         return;
     exact::Shape ea, eb, fa, fb;
     bool haveD = false, haveF = false;
-    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+    const std::size_t nv = ctx.variants.size();
+    std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
+    std::vector<char> done(nv, 0);
+    for (std::size_t k = 0; k < nv; ++k)
     {
         VariantOutcome& v = out.variants[k];
         if (v.skipped || v.nonfinite)
@@ -375,8 +401,26 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         }
         const exact::Shape& sa = isFloat ? fa : ea;
         const exact::Shape& sb = isFloat ? fb : eb;
-        const double wa = exact::pointToShapeDistance(sa, {v.pointA[0], v.pointA[1]});
-        const double wb = exact::pointToShapeDistance(sb, {v.pointB[0], v.pointB[1]});
+        // Variants often return the very same witness points (same scalar type): each distinct
+        // point is measured once per case (the exact query dominates the campaign's time).
+        double wa = -1, wb = -1;
+        for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
+        {
+            if (done[j] == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
+                continue;
+            const VariantOutcome& u = out.variants[j];
+            if (wa < 0 && u.pointA == v.pointA)
+                wa = witnessA[j];
+            if (wb < 0 && u.pointB == v.pointB)
+                wb = witnessB[j];
+        }
+        if (wa < 0)
+            wa = exact::pointToShapeDistance(sa, {v.pointA[0], v.pointA[1]});
+        if (wb < 0)
+            wb = exact::pointToShapeDistance(sb, {v.pointB[0], v.pointB[1]});
+        witnessA[k] = wa;
+        witnessB[k] = wb;
+        done[k] = 1;
         v.witness = std::max(wa, wb);
     }
 }
@@ -432,7 +476,7 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
         vj["type"] = scalarName(vi.scalar);
         if (v.skipped)
         {
-            vj["skipped"] = "input not representable in float";
+            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
             vs[vi.name] = std::move(vj);
             continue;
         }
@@ -440,12 +484,12 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
         if (vi.scalar == Scalar::Float)
         {
             gjk::DistanceOutput<float> out;
-            trace = tracedRun<float>(c, vi.options, out);
+            trace = tracedRun<float>(c, vi, out);
         }
         else
         {
             gjk::DistanceOutput<double> out;
-            trace = tracedRun<double>(c, vi.options, out);
+            trace = tracedRun<double>(c, vi, out);
         }
         vj["distance"] = num(v.distance);
         vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
@@ -502,7 +546,7 @@ Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ct
         Json vj;
         if (v.skipped)
         {
-            vj["skipped"] = "input not representable in float";
+            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
             vs[ctx.variants[k]->name] = std::move(vj);
             continue;
         }

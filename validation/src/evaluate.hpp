@@ -27,6 +27,9 @@ struct PreparedCase
     double rad = 0, rbd = 0;
     float raf = 0, rbf = 0;
     bool floatOk = true; // every input finite after rounding to float
+    // Both shapes' points in convex order (or at most kLinearSupportMaxPoints of them), as double
+    // [0] and as float-rounded [1]: the precondition of SupportStrategy::BinarySearch.
+    bool binaryOk[2] = {true, true};
 
     template <class T> gjk::DistanceInput<T> input() const
     {
@@ -38,13 +41,25 @@ struct PreparedCase
 };
 PreparedCase prepare(const Case& c);
 
-// A cold GJK query (fresh cache), as both the accuracy run and the timing loop make it.
+// Why a variant does not run on a case (skipped, not a failure), or null. floatInput: the case's
+// float-rounded input is usable (finite, with an exact truth when one is needed).
+const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput);
+inline constexpr const char* kSkipNotRepresentable = "input not representable in float";
+inline constexpr const char* kSkipNotConvexOrder =
+    "not applicable: binary-search support needs each shape's points in convex order";
+
+// The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
+// cache), or for warm variants (VariantInfo::warm) a cold query whose cache starts the one
+// returned (and traced).
 template <class T>
-gjk::DistanceOutput<T> query(const PreparedCase& p, const gjk::Options& o,
+gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
                              gjk::Trace<T>* trace = nullptr)
 {
     gjk::SimplexCache cache;
-    return gjk::distance(p.input<T>(), cache, o, trace);
+    const gjk::DistanceInput<T> in = p.input<T>();
+    if (v.warm)
+        gjk::distance(in, cache, v.options);
+    return gjk::distance(in, cache, v.options, trace);
 }
 
 enum class Misclass
@@ -58,7 +73,8 @@ const char* misclassName(Misclass m); // null for None
 
 struct VariantOutcome
 {
-    bool skipped = false; // the input is not representable in the variant's type
+    bool skipped = false;       // not run: skipReason() (not representable, or not applicable)
+    bool notApplicable = false; // skipped because the variant's precondition fails (convex order)
     double distance = 0;
     std::array<double, 2> pointA{}, pointB{}, normal{};
     int iterations = 0;

@@ -2,6 +2,8 @@
 
 #include "gjk/math.hpp"
 
+#include <gmpxx.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,6 +23,32 @@ double maxAbs(const std::vector<P2>& pts)
         m = std::max({m, std::abs(p[0]), std::abs(p[1])});
     return m;
 }
+// Sign of the orientation of (a, b, c): Shewchuk's filter in double (ccwerrboundA, plus a margin
+// for underflow), exact rationals when it cannot decide.
+int orientSign(const P2& a, const P2& b, const P2& c)
+{
+    const double l = (b[0] - a[0]) * (c[1] - a[1]), r = (b[1] - a[1]) * (c[0] - a[0]);
+    const double det = l - r;
+    const double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (std::abs(l) + std::abs(r)) + 1e-300;
+    if (std::isfinite(det) && std::isfinite(bound) && std::abs(det) > bound)
+        return det > 0 ? 1 : -1;
+    const mpq_class ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]), cx(c[0]), cy(c[1]);
+    return sgn(mpq_class((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
+}
+
+// Sign of dot(b - a, c - b), exactly.
+int dotSign(const P2& a, const P2& b, const P2& c)
+{
+    const mpq_class ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]), cx(c[0]), cy(c[1]);
+    return sgn(mpq_class((bx - ax) * (cx - bx) + (by - ay) * (cy - by)));
+}
+
+// Direction of the edge a -> b (a != b) in the upper half [0, pi) of angles, exactly.
+bool upperHalf(const P2& a, const P2& b)
+{
+    return b[1] > a[1] || (b[1] == a[1] && b[0] > a[0]);
+}
+
 gjk::Transform<double> xf(const ShapeIn& s)
 {
     return {{s.px, s.py}, {s.c, s.s}};
@@ -40,6 +68,41 @@ std::vector<P2> worldPoints(const ShapeIn& s)
     for (const auto& p : s.points)
         out.push_back(applyTransform(s, p));
     return out;
+}
+
+bool inConvexOrder(const std::vector<P2>& p)
+{
+    const std::size_t n = p.size();
+    if (n < 3)
+        return n == 1;
+    for (const auto& q : p)
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]))
+            return false;
+    for (std::size_t i = 0; i < n; ++i)
+        if (p[i] == p[(i + 1) % n])
+            return false;
+    bool pos = false, neg = false;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const P2 &a = p[(i + n - 1) % n], &b = p[i], &c = p[(i + 1) % n];
+        const int o = orientSign(a, b, c);
+        pos = pos || o > 0;
+        neg = neg || o < 0;
+        if (pos && neg)
+            return false;
+        if (o == 0 && dotSign(a, b, c) <= 0)
+            return false; // collinear and turning back
+    }
+    // Every turn is of one sign (in (0, pi)) or straight: the edge direction rotates monotonically
+    // through k full turns, crossing angle 0 exactly k times. k must be 1.
+    std::size_t crossings = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const bool u0 = upperHalf(p[i], p[(i + 1) % n]);
+        const bool u1 = upperHalf(p[(i + 1) % n], p[(i + 2) % n]);
+        crossings += pos ? (!u0 && u1) : (u0 && !u1);
+    }
+    return crossings == 1;
 }
 
 std::vector<P2> convexHull(std::vector<P2> p)

@@ -17,6 +17,12 @@ std::vector<P2> worldPoints(const ShapeIn& s);
 // Counter-clockwise convex hull (Andrew's monotone chain, collinear points dropped); fewer than 3
 // points for degenerate sets.
 std::vector<P2> convexHull(std::vector<P2> pts);
+// True when the sequence is in convex order, what SupportStrategy::BinarySearch needs: no two
+// cyclically consecutive points equal, every turn (p[i-1], p[i], p[i+1]) of one sign or collinear,
+// no collinear turn going back, and one single turn around (a simple convex polygon, either
+// winding, with collinear points allowed on its edges). Exact (filtered double orientation with a
+// GMP fallback). Fewer than 3 points: true for 1 point, false otherwise (a segment turns back).
+bool inConvexOrder(const std::vector<P2>& pts);
 // Hull of A - B (world frame), counter-clockwise, decimated to at most maxVertices vertices.
 std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<P2>& b,
                                     std::size_t maxVertices = 2000);

@@ -2,7 +2,9 @@
 //   run       a campaign: families and case files -> exact truth, GJK variants -> reports
 //   generate  write a family's cases to a gjk-cases/1 file
 //   explain   one case in detail: inputs, each variant's result and trace, the exact result
+//   bench     time the variants on given cases (no exact side)
 //   list      the families and variants
+#include "bench.hpp"
 #include "campaign.hpp"
 #include "cases.hpp"
 #include "evaluate.hpp"
@@ -29,9 +31,11 @@ namespace
 {
 const char* kExitCodes =
     "Exit codes:\n"
-    "  0  every case is within its variant's error bound (run), or success\n"
-    "  1  some case failed: error beyond the bound, misclassification beyond it,\n"
-    "     non-finite output, iteration limit, or a family make-up check failed\n"
+    "  0  every case is within its judged variant's error bound (run), or success\n"
+    "  1  some case failed for a judged variant: error beyond the bound,\n"
+    "     misclassification beyond it, non-finite output, iteration limit, a certified\n"
+    "     interval missing the truth; or a family make-up check failed (comparison\n"
+    "     variants' failures are reported, never judged)\n"
     "  2  usage or input error: bad option, unreadable or invalid case file,\n"
     "     rejected cases (the report is still written), unknown case name";
 
@@ -151,6 +155,30 @@ int main(int argc, char** argv)
                    "write the CaseDetail JSON (docs/report-schema.md) to this file");
     ex->add_option("--html", exHtml, "write the iteration viewer page to this file");
 
+    // --- bench ---
+    BenchConfig bcfg;
+    std::vector<std::string> benchFamilies, benchFiles;
+    std::string benchVariants = "all", benchJson;
+    auto* bench = app.add_subcommand(
+        "bench", "Time GJK variants on your cases (no exact side): per variant, repeated "
+                 "single-threaded passes over all cases; prints the median ns per query, its "
+                 "spread (fastest, slowest pass) and the ratio to `double`.");
+    bench->footer(kExitCodes);
+    bench->add_option("--cases", benchFiles, "a gjk-cases/1 file; repeatable")
+        ->allow_extra_args(false);
+    bench->add_option("--family", benchFamilies, "case family as for run; repeatable")
+        ->allow_extra_args(false);
+    bench->add_option("--seed", bcfg.seed, "campaign seed for --family")->capture_default_str();
+    bench
+        ->add_option("--variants", benchVariants,
+                     "comma-separated variant names, or all (see `list`)")
+        ->capture_default_str();
+    bench->add_flag("--warm", bcfg.warm,
+                    "time warm-started queries: each starts from the SimplexCache of a previous "
+                    "query of the same case");
+    bench->add_option("--passes", bcfg.passes, "timed passes per variant")->capture_default_str();
+    bench->add_option("--json", benchJson, "write the timings as JSON to this file");
+
     // --- list ---
     auto* list =
         app.add_subcommand("list", "List the families (with their reasons) and the variants.");
@@ -190,6 +218,31 @@ int main(int argc, char** argv)
             std::fputs(terminalSummary(camp.report).c_str(), stdout);
             std::printf("report: %s\n", page.c_str());
             return camp.exitCode;
+        }
+        if (*bench)
+        {
+            bcfg.variants = parseVariants(benchVariants);
+            bcfg.command = joinArgs(argc, argv);
+            if (benchFamilies.empty() && benchFiles.empty())
+                throw InputError("bench: which cases? give --cases FILE and/or --family F");
+            if (bcfg.passes < 1)
+                throw InputError("--passes must be at least 1");
+            CampaignConfig in;
+            in.families = bcfg.families = benchFamilies;
+            in.caseFiles = bcfg.caseFiles = benchFiles;
+            in.seed = bcfg.seed;
+            const BenchResult res = runBench(bcfg, loadInputs(in));
+            std::fputs(benchTable(res.json).c_str(), stdout);
+            for (const auto& r : res.json["rejected"])
+                std::fprintf(stderr, "gjk-validate: rejected %s: %s\n",
+                             r["name"].get<std::string>().c_str(),
+                             r["reason"].get<std::string>().c_str());
+            if (!benchJson.empty())
+            {
+                writeText(benchJson, res.json.dump(1) + "\n");
+                std::printf("json: %s\n", benchJson.c_str());
+            }
+            return res.exitCode;
         }
         if (*gen)
         {
@@ -283,10 +336,12 @@ int main(int argc, char** argv)
             for (const auto& h : hardSubFamilies())
                 std::printf("  hard/%-20s %4d cases  %s\n", h.name.c_str(), h.count,
                             h.reason.c_str());
-            std::printf("variants (default %s):\n", kDefaultVariants);
+            std::printf("variants (default %s; judged decide the exit code, comparison are "
+                        "reported only):\n",
+                        kDefaultVariants);
             for (const auto& v : variantTable())
-                std::printf("  %-22s %-6s %s\n", v.name.c_str(), scalarName(v.scalar),
-                            v.description.c_str());
+                std::printf("  %-22s %-6s %-10s %s\n", v.name.c_str(), scalarName(v.scalar),
+                            v.judged ? "judged" : "comparison", v.description.c_str());
             return kExitPass;
         }
     }

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <map>
+
 namespace gjkval
 {
 namespace
@@ -22,6 +24,32 @@ std::string u(const Json& v)
     return v.is_number() ? std::to_string(v.get<std::uint64_t>()) : g(v);
 }
 
+// Variant name -> judged (a report without the field: every variant judged).
+std::map<std::string, bool> judgedMap(const Json& r)
+{
+    std::map<std::string, bool> m;
+    for (const auto& v : r["variants"])
+        m[v["name"].get<std::string>()] = !v.contains("judged") || v["judged"].get<bool>();
+    return m;
+}
+
+bool isJudged(const std::map<std::string, bool>& m, const std::string& name)
+{
+    const auto it = m.find(name);
+    return it == m.end() || it->second;
+}
+
+// Comparison variants' failures over all families: counted, never judged.
+std::uint64_t comparisonFailures(const Json& r, const std::map<std::string, bool>& judged)
+{
+    std::uint64_t n = 0;
+    for (const auto& f : r["families"])
+        for (const auto& [name, st] : f["variants"].items())
+            if (!isJudged(judged, name))
+                n += st["failures"].get<std::uint64_t>();
+    return n;
+}
+
 std::string mdEscape(std::string s)
 {
     std::string o;
@@ -39,10 +67,13 @@ std::string mdEscape(std::string s)
 std::string renderMarkdown(const Json& r)
 {
     const Json& c = r["context"];
+    const auto judged = judgedMap(r);
     std::string s;
     s += "# GJK validation report\n\n";
-    s += fmt::format("**Result: {}** (exit code {})\n\n", r["passed"].get<bool>() ? "PASS" : "FAIL",
-                     r["exit_code"].get<int>());
+    s += fmt::format("**Result: {}** (exit code {}; judged variants only: comparison variants' "
+                     "{} failures are shown, not judged)\n\n",
+                     r["passed"].get<bool>() ? "PASS" : "FAIL", r["exit_code"].get<int>(),
+                     comparisonFailures(r, judged));
     s += "| | |\n|---|---|\n";
     for (const char* k :
          {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
@@ -70,14 +101,19 @@ std::string renderMarkdown(const Json& r)
         s += in.contains("family")
                  ? fmt::format("`{}` x{}; ", in["family"].get<std::string>(), u(in["count"]))
                  : fmt::format("`{}` x{}; ", in["file"].get<std::string>(), u(in["count"]));
-    s += "\n\n## Variants\n\n| variant | type | direction | stopping | frame | support | bound |\n"
-         "|---|---|---|---|---|---|---|\n";
+    s += "\n\n## Variants\n\nJudged variants decide the result; comparison variants (the "
+         "alternatives the talk discusses) are run and reported, their failures not judged.\n\n"
+         "| variant | judged | type | direction | stopping | frame | support | start | bound |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& v : r["variants"])
     {
         const Json& o = v["options"];
-        s += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", v["name"].get<std::string>(),
+        const std::string name = v["name"].get<std::string>();
+        s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", name,
+                         isJudged(judged, name) ? "judged" : "comparison",
                          v["type"].get<std::string>(), g(o["direction"]), g(o["stopping"]),
                          g(o["frame"]), g(o["support"]),
+                         v.contains("warm") && v["warm"].get<bool>() ? "warm" : "cold",
                          mdEscape(v["bound"]["formula"].get<std::string>()));
     }
     s += "\nErrors: `abs` = |d_gjk - d_exact|; `norm` = abs / (u R); `ulps` = abs / ulp(d_exact); "
@@ -113,16 +149,22 @@ std::string renderMarkdown(const Json& r)
         for (const auto& [name, st] : f["variants"].items())
         {
             const Json& e = st["errors"];
+            const bool j = isJudged(judged, name);
+            const std::uint64_t na =
+                st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
             s += fmt::format(
                 "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
                 "{:.2f}/{} | {} | {} |\n",
-                name, u(st["cases"]), u(st["failures"]), u(st["false_overlap"]),
-                u(st["false_separation"]), u(st["undecidable"]), u(st["nonfinite"]),
-                u(st["iteration_limit"]), u(st["out_of_range"]), u(st["skipped"]),
-                g(e["abs"]["max"]), g(e["abs"]["p99"]), g(e["normalized"]["max"]),
-                g(e["normalized"]["p99"]), g(e["ulps"]["p99"]), g(e["witness"]["max"]),
-                st["iterations"]["mean"].get<double>(), st["iterations"]["max"].get<int>(),
-                g(st["ns_per_query"], "{:.1f}"), g(st["ratio_to_baseline"], "{:.2f}"));
+                j ? name : name + " (comparison)", u(st["cases"]),
+                u(st["failures"]) +
+                    (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
+                u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
+                u(st["nonfinite"]), u(st["iteration_limit"]), u(st["out_of_range"]),
+                u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : ""), g(e["abs"]["max"]),
+                g(e["abs"]["p99"]), g(e["normalized"]["max"]), g(e["normalized"]["p99"]),
+                g(e["ulps"]["p99"]), g(e["witness"]["max"]), st["iterations"]["mean"].get<double>(),
+                st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
+                g(st["ratio_to_baseline"], "{:.2f}"));
         }
     }
     if (!r["rejected"].empty())
@@ -169,9 +211,10 @@ std::string renderMarkdown(const Json& r)
 std::string terminalSummary(const Json& r)
 {
     std::string s;
-    s += fmt::format("{:<28} {:<20} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8}\n",
+    const auto judged = judgedMap(r);
+    s += fmt::format("{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}\n",
                      "family", "variant", "cases", "fail", "undec", "max abs", "max norm",
-                     "p99 norm", "p99 ulps", "iters", "ns/query");
+                     "p99 norm", "p99 ulps", "iters", "ns/query", "x base");
     for (const auto& f : r["families"])
     {
         bool first = true;
@@ -181,21 +224,25 @@ std::string terminalSummary(const Json& r)
             std::string fam = first ? f["name"].get<std::string>() : "";
             if (fam.size() > 28)
                 fam = fam.substr(0, 25) + "...";
+            const bool failed = st["failures"].get<std::uint64_t>() > 0;
             s += fmt::format(
-                "{:<28} {:<20} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8}{}\n", fam,
-                name, u(st["cases"]), u(st["failures"]), u(st["undecidable"]),
+                "{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}{}\n",
+                fam, name, u(st["cases"]), u(st["failures"]), u(st["undecidable"]),
                 g(e["abs"]["max"], "{:.2g}"), g(e["normalized"]["max"], "{:.3g}"),
                 g(e["normalized"]["p99"], "{:.2g}"), g(e["ulps"]["p99"], "{:.2g}"),
                 st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
-                st["failures"].get<std::uint64_t>() ? "  FAIL" : "");
+                g(st["ratio_to_baseline"], "{:.2f}"),
+                !failed ? "" : (isJudged(judged, name) ? "  FAIL" : "  fails (not judged)"));
             first = false;
             const auto oor = st["out_of_range"].get<std::uint64_t>(),
                        skipped = st["skipped"].get<std::uint64_t>();
+            const auto na =
+                st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
             if (oor || skipped)
                 s += fmt::format("{:<28}   {} case(s) flagged out of range by GJK (not judged), {} "
-                                 "skipped (input not "
-                                 "representable)\n",
-                                 "", oor, skipped);
+                                 "skipped (input not representable in float: {}, not applicable: "
+                                 "{})\n",
+                                 "", oor, skipped, skipped - na, na);
         }
         for (const auto& m : f["makeup"])
             if (!m["ok"].get<bool>())
@@ -222,8 +269,10 @@ std::string terminalSummary(const Json& r)
         t["gjk_cases_per_s"].get<double>(), e["gjk"].get<double>(), r["variants"].size(),
         t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
         e["timing"].get<double>());
-    s += fmt::format("result: {} (exit code {})\n", r["passed"].get<bool>() ? "PASS" : "FAIL",
-                     r["exit_code"].get<int>());
+    s += fmt::format("result: {} (exit code {}, from the judged variants); comparison variants: {} "
+                     "failure(s), shown, not judged\n",
+                     r["passed"].get<bool>() ? "PASS" : "FAIL", r["exit_code"].get<int>(),
+                     comparisonFailures(r, judged));
     return s;
 }
 

@@ -150,6 +150,7 @@ void Stats::merge(const Stats& o)
     iterationLimit += o.iterationLimit;
     beyondBound += o.beyondBound;
     skipped += o.skipped;
+    notApplicable += o.notApplicable;
     hasInterval = hasInterval || o.hasInterval;
     certified += o.certified;
     contains += o.contains;
@@ -183,6 +184,7 @@ Json Stats::toJson() const
     j["iteration_limit"] = iterationLimit;
     j["beyond_bound"] = beyondBound;
     j["skipped"] = skipped;
+    j["not_applicable"] = notApplicable;
     j["failure_rate_upper95"] =
         (failures == 0 && cases > 0) ? Json(3.0 / double(cases)) : Json(nullptr);
     Json e;

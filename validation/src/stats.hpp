@@ -62,8 +62,9 @@ struct Stats
     std::uint64_t failures = 0;
     std::uint64_t falseOverlap = 0, falseSeparation = 0, undecidable = 0;
     std::uint64_t nonfinite = 0, outOfRange = 0, iterationLimit = 0;
-    std::uint64_t beyondBound = 0; // judged cases with |error| > bound
-    std::uint64_t skipped = 0;     // input not representable in the variant's type
+    std::uint64_t beyondBound = 0;   // judged cases with |error| > bound
+    std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
+    std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
     // Certified variants: intervals given, intervals holding the truth, queries left uncertified.
     bool hasInterval = false;
     std::uint64_t certified = 0, contains = 0, uncertified = 0;

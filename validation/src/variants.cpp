@@ -14,16 +14,22 @@ const std::vector<VariantInfo>& variantTable()
     using D = gjk::SearchDirection;
     using S = gjk::StoppingRule;
     using F = gjk::Frame;
+    using P = gjk::SupportStrategy;
     static const std::vector<VariantInfo> table = {
-        {"double",               Scalar::Double, gjk::referenceOptions,             "reference options (talk's edge-perpendicular direction, repeated-support stop, A's local frame)"},
-        {"float",                Scalar::Float,  gjk::referenceOptions,             "reference options in single precision"},
-        {"double-closest-point", Scalar::Double, Options{.direction = D::ClosestPoint}, "naive search direction d = -P (talk: inaccurate on long edges)"},
-        {"double-world-frame",   Scalar::Double, Options{.frame = F::World},        "compute in world coordinates (loses small gaps far from the origin)"},
-        {"double-duality-gap",   Scalar::Double, Options{.stopping = S::DualityGap}, "also stop on the duality gap"},
-        {"float-closest-point",  Scalar::Float,  Options{.direction = D::ClosestPoint}, "naive search direction in single precision"},
-        {"float-world-frame",    Scalar::Float,  Options{.frame = F::World},        "world-frame computation in single precision"},
-        {"double-certified",     Scalar::Double, Options{.certify = true},          "reference options plus a certified interval [lower, upper]"},
-        {"float-certified",      Scalar::Float,  Options{.certify = true},          "certified interval in single precision"},
+        // name, type, options, description, judged (false: comparison variant), warm
+        {"double",                Scalar::Double, gjk::referenceOptions,                 "reference options (talk's edge-perpendicular direction, repeated-support stop, A's local frame)", true},
+        {"float",                 Scalar::Float,  gjk::referenceOptions,                 "reference options in single precision", true},
+        {"double-closest-point",  Scalar::Double, Options{.direction = D::ClosestPoint}, "naive search direction d = -P (talk: inaccurate on long edges)", false},
+        {"double-world-frame",    Scalar::Double, Options{.frame = F::World},            "compute in world coordinates (loses small gaps far from the origin)", false},
+        {"double-duality-gap",    Scalar::Double, Options{.stopping = S::DualityGap},    "also stop on the duality gap", false},
+        {"float-closest-point",   Scalar::Float,  Options{.direction = D::ClosestPoint}, "naive search direction in single precision", false},
+        {"float-world-frame",     Scalar::Float,  Options{.frame = F::World},            "world-frame computation in single precision", false},
+        {"double-certified",      Scalar::Double, Options{.certify = true},              "reference options plus a certified interval [lower, upper]", true},
+        {"float-certified",       Scalar::Float,  Options{.certify = true},              "certified interval in single precision", true},
+        {"double-binary-support", Scalar::Double, Options{.support = P::BinarySearch},   "reference options with the O(log n) binary-search support (shapes in convex order only)", true},
+        {"float-binary-support",  Scalar::Float,  Options{.support = P::BinarySearch},   "binary-search support in single precision (shapes in convex order only)", true},
+        {"double-warm",           Scalar::Double, gjk::referenceOptions,                 "reference options, warm-started: the query repeated with the cache of the first", true, true},
+        {"float-warm",            Scalar::Float,  gjk::referenceOptions,                 "warm-started reference options in single precision", true, true},
     };
     return table;
 }
@@ -71,6 +77,11 @@ std::vector<const VariantInfo*> parseVariants(const std::string& list)
     if (out.empty())
         throw InputError("no variant selected");
     return out;
+}
+
+bool needsConvexOrder(const VariantInfo& v)
+{
+    return v.options.support == gjk::SupportStrategy::BinarySearch;
 }
 
 const char* scalarName(Scalar s)

@@ -24,14 +24,30 @@ struct VariantInfo
     Scalar scalar;
     gjk::Options options;
     std::string description;
+    // Judged variants decide the exit code and "passed": the reference options and the variants
+    // that must match them (certified, binary-search support, warm start). Comparison variants
+    // (judged = false) are the alternatives the talk discusses: their failures are counted and
+    // shown per family, never judged.
+    bool judged = true;
+    // Warm start: the query is run twice, the second time with the SimplexCache the first one
+    // returned; the second is judged and timed (the timing prepares the caches beforehand).
+    bool warm = false;
 };
 
 const std::vector<VariantInfo>& variantTable();
 // The default of `run --variants`.
-inline constexpr const char* kDefaultVariants = "double,float";
+inline constexpr const char* kDefaultVariants = "all";
 // "all", or names separated by commas. Throws InputError naming the unknown one.
 std::vector<const VariantInfo*> parseVariants(const std::string& list);
 const VariantInfo* findVariant(const std::string& name);
+
+// Options::support == BinarySearch: the shapes' points must be in convex order (either winding,
+// collinear points allowed, no repeated consecutive point); cases where they are not are skipped
+// as not applicable (PreparedCase::binaryOk).
+bool needsConvexOrder(const VariantInfo& v);
+// The library uses the linear scan for shapes of at most this many points whatever the strategy
+// (gjk/distance.hpp, TransformedShape::binary): they always fit.
+inline constexpr int kLinearSupportMaxPoints = 16;
 
 const char* scalarName(Scalar s);
 double unitRoundoff(Scalar s); // u = eps / 2 of the variant's type

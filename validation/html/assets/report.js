@@ -131,7 +131,8 @@
   // --- Colours ------------------------------------------------------------------------------------
 
   // Variants in plots: distinct, medium saturation (readable as lines and markers).
-  var VARIANT_COLORS = ['#4e86c6', '#e0785f', '#5aa86b', '#a26dc2', '#d8a02c', '#3fa7a3', '#cf5f98', '#7f7f7f'];
+  var VARIANT_COLORS = ['#4e86c6', '#e0785f', '#5aa86b', '#a26dc2', '#d8a02c', '#3fa7a3', '#cf5f98', '#7f7f7f',
+    '#1f3f7a', '#9c3d1f', '#2f6b3a', '#b7b33a', '#5a3b8a', '#e3a6c4'];
   // The talk's pastels, for geometry.
   var GEO = {
     aFill: '#b9d7f0', aStroke: '#5b8fc7',
@@ -325,7 +326,22 @@
     return h('span', {class: 'badge unknown big'}, 'no verdict');
   }
 
-  function passBadge(p) {
+  // Comparison variants (report.variants[].judged === false) are reported, never judged.
+  var judgedMap = {};
+  function isJudged(name) { return judgedMap[name] !== false; }
+  function readJudged(report) {
+    judgedMap = {};
+    (Array.isArray(report.variants) ? report.variants : []).forEach(function (v) {
+      if (v && has(v.name) && v.judged === false) judgedMap[String(v.name)] = false;
+    });
+  }
+  function comparisonTag(name) { return isJudged(name) ? null : h('span', {class: 'tag comparison', title: 'comparison variant: reported, not judged'}, 'comparison'); }
+
+  function passBadge(p, name) {
+    if (has(name) && !isJudged(name)) {
+      if (p === false) return h('span', {class: 'badge comparison'}, 'fails (not judged)');
+      if (p === true) return h('span', {class: 'badge comparison-ok'}, 'passes (not judged)');
+    }
     if (p === true) return h('span', {class: 'badge pass'}, 'pass');
     if (p === false) return h('span', {class: 'badge fail'}, 'fail');
     return h('span', {class: 'badge unknown'}, '—');
@@ -401,7 +417,8 @@
             : '—';
           return h('tr', {},
             h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(String(v.name))}), String(v.name),
-              report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null),
+              report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null, comparisonTag(String(v.name)),
+              v.warm === true ? h('span', {class: 'tag'}, 'warm start') : null),
             h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, opts), h('td', {class: 'small'}, bound));
         })));
     }
@@ -449,10 +466,10 @@
         var ns = has(st.ns_per_query) ? fmt(st.ns_per_query) : '—';
         var spread = Array.isArray(st.ns_spread) ? 'spread ' + fmt(st.ns_spread[0]) + ' – ' + fmt(st.ns_spread[1]) + ' ns' : null;
         append(tr, [
-          h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(vn)}), vn),
+          h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(vn)}), vn, comparisonTag(vn)),
           h('td', {class: 'num'}, fmtInt(st.cases)),
           h('td', {class: 'num' + (mis > 0 ? ' bad' : '')}, fmtInt(mis), misDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
-          h('td', {class: 'num' + (num(st.failures) > 0 ? ' bad' : ''), title: rate},
+          h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: rate},
             fmtInt(st.failures), failDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
           h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
           h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
@@ -460,7 +477,7 @@
           hasBound ? h('td', {class: 'num' + (hb && num(hb.max) > 1 ? ' bad' : '')}, fmt(hb && hb.max)) : null,
           h('td', {class: 'num'}, fmt(it.mean)), h('td', {class: 'num'}, fmtInt(it.max)),
           h('td', {class: 'num', title: spread}, ns, has(st.ratio_to_baseline) && vn !== report.baseline_variant ? h('div', {class: 'small muted'}, fmt(st.ratio_to_baseline) + '× baseline') : null),
-          h('td', {}, passBadge(st.pass))]);
+          h('td', {}, passBadge(st.pass, vn))]);
         body.appendChild(tr);
       });
       if (missing.length) {
@@ -550,7 +567,7 @@
     items.forEach(function (it) {
       var c = variantColor(it.variant), x = xs(it.ns);
       var tip = it.family + ' / ' + it.variant + '\n' + fmt(it.ns) + ' ns per query\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
-        (it.st.pass === false ? '\nFAIL (' + fmtInt(it.st.failures) + ' failures)' : '');
+        (it.st.pass === false ? (isJudged(it.variant) ? '\nFAIL (' : '\nfails, not judged (') + fmtInt(it.st.failures) + ' failures)' : '');
       var pg = sv('g', {class: 'pt', 'data-family': it.family, 'data-variant': it.variant}, svgTitle(tip));
       var yp = isFinite(it.p99) ? yOf(it.p99) : null, ym = isFinite(it.max) ? yOf(it.max) : null;
       if (yp !== null && ym !== null) pg.appendChild(sv('line', {x1: x, x2: x, y1: yp, y2: ym, stroke: c, 'stroke-width': 1.5, opacity: 0.6}));
@@ -749,7 +766,7 @@
     var present = names.filter(function (n) { return n in fv; });
     var card = h('div', {class: 'family', id: 'family-' + slug(f.name)});
     card.appendChild(h('h3', {}, String(f.name), h('span', {class: 'muted small'}, '  ' + fmtInt(f.cases) + ' cases'),
-      present.map(function (n) { return h('span', {class: 'fam-variant'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n, ' ', passBadge(fv[n] && fv[n].pass)); })));
+      present.map(function (n) { return h('span', {class: 'fam-variant'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n, ' ', passBadge(fv[n] && fv[n].pass, n)); })));
     if (Array.isArray(f.makeup) && f.makeup.length) {
       card.appendChild(h('div', {class: 'makeup'}, h('span', {class: 'muted small'}, 'Makeup: '), f.makeup.map(function (m) {
         m = m || {};
@@ -1488,6 +1505,7 @@
   function renderReportPage(app, report) {
     if (!report || typeof report !== 'object') throw new Error('the report data is not a JSON object');
     variantNames(report).forEach(variantColor);
+    readJudged(report);
     document.title = 'GJK report — ' + (report.passed === true ? 'PASS' : report.passed === false ? 'FAIL' : 'no verdict') +
       (report.context && report.context.date ? ' — ' + report.context.date : '');
     app.appendChild(guarded('header', function () { return renderHeader(report); }));

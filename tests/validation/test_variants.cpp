@@ -1,0 +1,223 @@
+// The variant table (judged and comparison variants, binary-search support, warm start), the
+// convex-order precondition, a reduced campaign over every variant, and `bench`.
+#include "bench.hpp"
+#include "campaign.hpp"
+#include "geometry.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+
+using namespace gjkval;
+
+namespace
+{
+std::vector<P2> regular(int n, bool ccw = true)
+{
+    std::vector<P2> p;
+    for (int i = 0; i < n; ++i)
+    {
+        const double t = 2 * M_PI * i / n * (ccw ? 1 : -1);
+        p.push_back({std::cos(t), std::sin(t)});
+    }
+    return p;
+}
+
+Case caseOf(std::vector<P2> a, std::vector<P2> b)
+{
+    Case c;
+    c.name = std::string("convex-order");
+    c.a.points = std::move(a);
+    c.b.points = std::move(b);
+    c.b.px = 3;
+    return c;
+}
+} // namespace
+
+TEST_CASE("the variant table: judged and comparison variants", "[variants]")
+{
+    const std::set<std::string> judged = {"double",
+                                          "float",
+                                          "double-certified",
+                                          "float-certified",
+                                          "double-binary-support",
+                                          "float-binary-support",
+                                          "double-warm",
+                                          "float-warm"};
+    const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
+                                              "double-duality-gap", "float-closest-point",
+                                              "float-world-frame"};
+    std::set<std::string> seen;
+    for (const auto& v : variantTable())
+    {
+        INFO(v.name);
+        seen.insert(v.name);
+        CHECK(v.judged == (judged.count(v.name) == 1));
+        CHECK(v.warm == (v.name.find("-warm") != std::string::npos));
+        CHECK(needsConvexOrder(v) == (v.name.find("binary-support") != std::string::npos));
+    }
+    for (const auto& n : judged)
+        CHECK(seen.count(n) == 1);
+    for (const auto& n : comparison)
+        CHECK(seen.count(n) == 1);
+    CHECK(seen.size() == judged.size() + comparison.size());
+    // The default campaign runs every variant; --variants still selects.
+    CHECK(parseVariants(kDefaultVariants).size() == variantTable().size());
+    CHECK(parseVariants("double-warm,float-binary-support").size() == 2);
+}
+
+TEST_CASE("convex order: the binary-search support's precondition", "[variants]")
+{
+    CHECK(inConvexOrder(regular(20)));
+    CHECK(inConvexOrder(regular(4096)));
+    CHECK(inConvexOrder(regular(20, false))); // clockwise
+    auto rotated = regular(20);
+    std::rotate(rotated.begin(), rotated.begin() + 7, rotated.end());
+    CHECK(inConvexOrder(rotated));
+    // Collinear points on the edges, in order.
+    CHECK(inConvexOrder({{0, 0}, {0.5, 0}, {1, 0}, {1, 0.25}, {1, 1}, {0, 1}, {0, 0.5}}));
+    CHECK(inConvexOrder({{0, 0}}));
+    // Not in convex order.
+    CHECK_FALSE(inConvexOrder({{0, 0}, {1, 0}}));                 // a segment turns back
+    CHECK_FALSE(inConvexOrder({{0, 0}, {1, 0}, {1, 0}, {1, 1}})); // repeated point
+    CHECK_FALSE(
+        inConvexOrder({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}})); // repeated across the wrap
+    CHECK_FALSE(inConvexOrder({{0, 0}, {1, 0}, {0.5, 0}, {1, 1}, {0, 1}})); // collinear going back
+    CHECK_FALSE(inConvexOrder({{0, 0}, {2, 0}, {1, 0.1}, {2, 2}, {0, 2}})); // a reflex vertex
+    CHECK_FALSE(inConvexOrder({{0, 0}, {1, 0}, {2, 0}}));                   // all collinear
+    // A pentagram: every turn to the same side, but two turns around.
+    std::vector<P2> star;
+    for (int i = 0; i < 5; ++i)
+        star.push_back(regular(5)[std::size_t(2 * i % 5)]);
+    CHECK_FALSE(inConvexOrder(star));
+    auto swapped = regular(20);
+    std::swap(swapped[3], swapped[4]);
+    CHECK_FALSE(inConvexOrder(swapped));
+    // Exactness: a vertex pushed one ulp outside/inside the edge of its neighbours.
+    const double y = std::nextafter(0.0, 1.0);
+    CHECK(inConvexOrder({{0, 0}, {0.5, -y}, {1, 0}, {1, 1}, {0, 1}}));
+    CHECK_FALSE(inConvexOrder({{0, 0}, {0.5, y}, {1, 0}, {1, 1}, {0, 1}}));
+}
+
+TEST_CASE("binary-search support is skipped as not applicable where its precondition fails",
+          "[variants]")
+{
+    auto shuffled = regular(20);
+    std::swap(shuffled[3], shuffled[11]);
+    const auto small = []
+    {
+        auto p = regular(16);
+        std::swap(p[0], p[5]);
+        return p;
+    }();
+    CHECK(prepare(caseOf(regular(20), regular(30, false))).binaryOk[0]);
+    CHECK(prepare(caseOf(regular(20), regular(30, false))).binaryOk[1]);
+    CHECK_FALSE(prepare(caseOf(regular(20), shuffled)).binaryOk[0]);
+    CHECK(prepare(caseOf(small, regular(3))).binaryOk[0]); // <= 16 points: the linear scan
+
+    EvalContext ctx;
+    ctx.variants = parseVariants("double,double-binary-support,float-binary-support");
+    const CaseOutcome o = evaluateCase(caseOf(regular(20), shuffled), ctx);
+    REQUIRE(o.rejected.empty());
+    CHECK_FALSE(o.variants[0].skipped);
+    CHECK(o.variants[1].skipped);
+    CHECK(o.variants[1].notApplicable);
+    CHECK(o.variants[2].notApplicable);
+    const CaseOutcome ok = evaluateCase(caseOf(regular(20), regular(40)), ctx);
+    CHECK_FALSE(ok.variants[1].skipped);
+    CHECK(ok.variants[1].distance == Approx(ok.variants[0].distance).margin(1e-12));
+}
+
+TEST_CASE("a reduced campaign over every variant: judged variants pass, comparison variants run",
+          "[variants][campaign]")
+{
+    CampaignConfig c;
+    c.families = {"random:10000", "hard"};
+    c.variants = parseVariants("all");
+    c.threads = 2;
+    c.minPasses = c.maxPasses = 1;
+    c.timingBudgetSeconds = 0;
+    c.command = "test";
+    const Campaign camp = runCampaign(c, loadInputs(c));
+    const Json& r = camp.report;
+    CHECK(camp.exitCode == kExitPass);
+    CHECK(r["passed"] == true);
+    REQUIRE(r["variants"].size() == variantTable().size());
+    std::set<std::string> judged, comparison;
+    for (const auto& v : r["variants"])
+        (v["judged"].get<bool>() ? judged : comparison).insert(v["name"].get<std::string>());
+    CHECK(comparison.size() == 5);
+    std::uint64_t comparisonCases = 0, notApplicable = 0;
+    for (const auto& f : r["families"])
+    {
+        const std::string fam = f["name"].get<std::string>();
+        CHECK(f["pass"] == true);
+        for (const auto& [name, s] : f["variants"].items())
+        {
+            INFO(fam << " / " << name);
+            const std::uint64_t cases = s["cases"].get<std::uint64_t>();
+            CHECK(s["ratio_to_baseline"].is_number());
+            if (comparison.count(name))
+            {
+                comparisonCases += cases; // run and counted; failures allowed
+                continue;
+            }
+            CHECK(s["failures"] == 0);
+            const Json& br = s["errors"]["bound_ratio"]["max"];
+            REQUIRE(br.is_number());
+            CHECK(br.get<double>() <= 1.0);
+            if (name.find("certified") != std::string::npos)
+            {
+                CHECK(s["interval"]["contains"] == cases);
+                CHECK(s["interval"]["certified"] == cases);
+            }
+            notApplicable += s["not_applicable"].get<std::uint64_t>();
+            if (fam == "hard/many-vertices")
+                CHECK(s["skipped"] == 0); // the binary search really runs on the big polygons
+        }
+        if (fam == "random")
+        {
+            // Warm start: the second query of the same pose needs (almost) no iteration.
+            const Json& v = f["variants"];
+            CHECK(v["double-warm"]["iterations"]["mean"].get<double>() <
+                  v["double"]["iterations"]["mean"].get<double>());
+            CHECK(v["double"]["ratio_to_baseline"].get<double>() == 1.0);
+        }
+    }
+    CHECK(comparisonCases > 5 * 10000);
+    CHECK(notApplicable > 0); // hard/degenerate-vertices: shuffled shapes of more than 16 points
+}
+
+TEST_CASE("bench: timings per variant without the exact side", "[variants][bench]")
+{
+    CampaignConfig in;
+    in.families = {"random:300", "hard/points"};
+    BenchConfig b;
+    b.variants = parseVariants("double,float,float-warm");
+    b.passes = 3;
+    b.minPassSeconds = 0.001;
+    b.command = "test";
+    const BenchResult res = runBench(b, loadInputs(in));
+    CHECK(res.exitCode == kExitPass);
+    const Json& j = res.json;
+    for (const char* k : {"date", "host", "compiler", "flags", "build_type", "git_revision",
+                          "command", "seed", "threads", "inputs", "cases_total", "cases_rejected"})
+        CHECK(j["context"].contains(k));
+    CHECK(j["context"]["cases_total"] == 316);
+    CHECK(j["baseline_variant"] == "double");
+    REQUIRE(j["variants"].size() == 3);
+    for (const auto& [name, v] : j["variants"].items())
+    {
+        INFO(name);
+        CHECK(v["ns_per_query"].get<double>() > 0);
+        CHECK(v["ns_min"].get<double>() <= v["ns_per_query"].get<double>());
+        CHECK(v["ns_per_query"].get<double>() <= v["ns_max"].get<double>());
+        CHECK(v["passes"] == 3);
+        CHECK(v["cases"] == 316);
+        CHECK(v["ratio_to_double"].is_number());
+        CHECK(v["warm"] == (name == "float-warm"));
+    }
+    CHECK(j["variants"]["double"]["ratio_to_double"] == 1.0);
+    CHECK_THAT(benchTable(j), Catch::Contains("float-warm") && Catch::Contains("x double"));
+}
