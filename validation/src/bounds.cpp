@@ -12,18 +12,15 @@ namespace gjkval
 //   4 A + 20 B                      choosing the support points (rounded dots, rotated direction)
 //   3.5 W + 3 d                     the distance formula |cross(w1, e12)| / |e12|
 //   d + rA + rB                     subtracting the radii
-// World frame: both shapes are transformed, each like B above, and D does not appear.
+// Every variant is judged against this reference bound, computed in A's local frame whatever the
+// variant's own frame (evaluate.cpp): it is what the library promises for the input.
 // Duality-gap stopping adds the gap it accepts, 16 u |v| <= 16 u W.
 double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 {
     const double u = m.unitRoundoff;
     const double d = m.exactDistance;
-    double terms;
-    if (variant.options.frame == gjk::Frame::World)
-        terms = 31 * (m.maxA + m.maxBMapped) + 7.3 * m.translation + 5 * m.maxW + 4 * d;
-    else
-        terms = 4 * m.maxA + 31 * m.maxB + 7.3 * m.translation + 1.5 * m.maxBMapped +
-                5 * m.maxW + 4 * d;
+    double terms = 4 * m.maxA + 31 * m.maxB + 7.3 * m.translation + 1.5 * m.maxBMapped +
+                   5 * m.maxW + 4 * d;
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         terms += 16 * m.maxW;
     return u * (terms + m.radiusA + m.radiusB);
@@ -31,9 +28,7 @@ double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 
 std::string boundFormula(const VariantInfo& variant)
 {
-    std::string f = variant.options.frame == gjk::Frame::World
-                        ? "u (31 (A + B~) + 7.3 D + 5 W + 4 d + rA + rB)"
-                        : "u (4 A + 31 B + 7.3 D + 1.5 B~ + 5 W + 4 d + rA + rB)";
+    std::string f = "u (4 A + 31 B + 7.3 D + 1.5 B~ + 5 W + 4 d + rA + rB), A's local frame";
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         f += " + 16 u W";
     return f + " (docs/error-bound.md)";

@@ -296,20 +296,24 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         const bool truthZero = exactIsZero(truth);
         v.truth = truth.distance;
 
+        // The normalised error uses the scale of the variant's own compute frame; the bound is the
+        // reference variant's (A's local frame): what the library promises for this input, so a
+        // variant that computes differently (world frame) fails where it breaks that promise.
         const int fi = vi.options.frame == gjk::Frame::World ? 1 : 0, ti = isFloat ? 1 : 0;
-        if (!have[fi][ti])
-        {
-            if (isFloat && !haveFloatShapes)
+        for (int f : {0, fi})
+            if (!have[f][ti])
             {
-                fa = roundedToFloat(c.a);
-                fb = roundedToFloat(c.b);
-                haveFloatShapes = true;
+                if (isFloat && !haveFloatShapes)
+                {
+                    fa = roundedToFloat(c.a);
+                    fb = roundedToFloat(c.b);
+                    haveFloatShapes = true;
+                }
+                scales[f][ti] = frameScales(isFloat ? fa : c.a, isFloat ? fb : c.b, f == 1);
+                have[f][ti] = true;
             }
-            scales[fi][ti] = frameScales(isFloat ? fa : c.a, isFloat ? fb : c.b, fi == 1);
-            have[fi][ti] = true;
-        }
-        const FrameScales& sc = scales[fi][ti];
-        v.R = sc.R;
+        v.R = scales[fi][ti].R;
+        const FrameScales& sc = scales[0][ti];
         const double u = unitRoundoff(vi.scalar);
         CaseMetrics m;
         m.R = sc.R;
