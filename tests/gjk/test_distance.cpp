@@ -798,3 +798,24 @@ TEMPLATE_TEST_CASE("batch: the same results as single queries", "[gjk][batch]", 
         CHECK(caches[i].count == c.count);
     }
 }
+
+TEMPLATE_TEST_CASE("range: overflowing support scans are flagged even when the simplex is in range",
+                   "[gjk][range]", float, double)
+{
+    using T = TestType;
+    // Regression (hard/range, validation/cases/range-overflow.json): two squares of side
+    // 2^(emax/2 + 8) (float 2^72, double 2^520), far above maxCoordinate, a gap of 2^(emax/2 - 4)
+    // apart (in range). Vertex 0 of each faces the other, so the first simplex vertex is
+    // w = (-gap, 0), in range, and so are all later ones; but the search direction (size gap)
+    // times the squares' far corners (size side) is 2^(emax + 4): the scans overflow. Before the
+    // scan check the query answered without the flag.
+    const int e = std::numeric_limits<T>::max_exponent / 2;
+    const T side = std::ldexp(T(1), e + 8);
+    const T gap = std::ldexp(T(1), e - 4);
+    REQUIRE(gap <= Tolerances<T>::maxCoordinate);
+    Scene<T> s;
+    s.a = {{0, 0}, {-side, 0}, {-side, -side}, {0, -side}};
+    s.b = {{gap, 0}, {gap + side, 0}, {gap + side, -side}, {gap, -side}};
+    const auto out = query(s);
+    CHECK(out.outOfRange);
+}

@@ -2,8 +2,14 @@
 // reasons, and every family's make-up checks hold on its own cases (measured with the exact side).
 #include "families.hpp"
 
+#include "campaign.hpp"
+#include "geometry.hpp"
+
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 
 using namespace gjkval;
@@ -136,4 +142,285 @@ TEST_CASE("a make-up check fails on cases that do not have that make-up", "[fami
     for (const auto& m : makeupOf(f))
         if (m.skipped)
             CHECK(m.ok);
+}
+
+// --- The numerical-stability sub-families (scale and offset sweeps, short contact edges, near
+// ties, near-zero separations, mixed scales, range, cold starts) -------------------------------
+
+namespace
+{
+const std::vector<std::string> kStabilityFamilies = {"scale-sweep",
+                                                     "offset-sweep",
+                                                     "short-contact-edge",
+                                                     "near-tied-support",
+                                                     "near-zero-separation",
+                                                     "mixed-scale",
+                                                     "range",
+                                                     "cold-start-sweep"};
+
+GeneratedFamily family(const std::string& sub, std::uint64_t seed, int count = -1)
+{
+    const std::string spec = "hard/" + sub + (count < 0 ? "" : ":" + std::to_string(count));
+    auto fs = generateFamilies(spec, seed);
+    REQUIRE(fs.size() == 1);
+    return fs[0];
+}
+
+int failedChecks(const GeneratedFamily& f)
+{
+    int failed = 0;
+    for (const auto& m : makeupOf(f))
+        failed += m.ok ? 0 : 1;
+    return failed;
+}
+
+exact::Result truthOf(const Case& c)
+{
+    return exact::distance(toExact(c.a), toExact(c.b));
+}
+
+bool nameHas(const Case& c, const std::string& s)
+{
+    return c.name.find(s) != std::string::npos;
+}
+} // namespace
+
+TEST_CASE("stability sub-families: present, with reasons, sized for the default campaign",
+          "[families][stability]")
+{
+    std::map<std::string, HardSubFamilyInfo> byName;
+    for (const auto& s : hardSubFamilies())
+        byName.emplace(s.name, s);
+    int total = 0;
+    for (const auto& name : kStabilityFamilies)
+    {
+        INFO(name);
+        REQUIRE(byName.count(name) == 1);
+        CHECK(byName.at(name).reason.size() > 100); // states the mechanism, not just the shape
+        total += byName.at(name).count;
+    }
+    CHECK(total >= 300);
+    CHECK(total <= 2000);
+}
+
+TEST_CASE("stability sub-families: deterministic, prefix-stable, round-trip through a case file",
+          "[families][stability]")
+{
+    for (const auto& name : kStabilityFamilies)
+    {
+        INFO(name);
+        const GeneratedFamily f = family(name, 5);
+        CHECK(caseFileText({}, f.cases) == caseFileText({}, family(name, 5).cases));
+        CHECK(caseFileText({}, f.cases) != caseFileText({}, family(name, 6).cases));
+        // Case i depends only on (seed, family, i), also where cases share a configuration.
+        const auto head = family(name, 5, 30).cases;
+        CHECK(caseFileText({}, head) ==
+              caseFileText({}, std::vector<Case>(f.cases.begin(), f.cases.begin() + 30)));
+        // Every number is finite and round-trips; every case is valid.
+        const std::string text = caseFileText({}, f.cases);
+        const CaseFile back = parseCaseFile(text, name + ".json");
+        REQUIRE(back.entries.size() == f.cases.size());
+        for (const auto& e : back.entries)
+            CHECK(e.rejected.empty());
+        std::vector<Case> cs;
+        for (const auto& e : back.entries)
+            cs.push_back(e.c);
+        CHECK(caseFileText({}, cs) == text);
+    }
+}
+
+TEST_CASE("stability sub-families: make-up checks hold for other seeds too",
+          "[families][stability]")
+{
+    for (std::uint64_t seed : {2u, 3u, 17u})
+        for (const auto& name : kStabilityFamilies)
+        {
+            INFO(name << " seed " << seed);
+            for (const auto& m : makeupOf(family(name, seed)))
+            {
+                INFO(m.check << " = " << m.value << " in [" << m.min << ", " << m.max << "]");
+                CHECK(m.ok);
+            }
+        }
+}
+
+TEST_CASE("stability sub-families: make-up checks fail when the generator drifts",
+          "[families][stability]")
+{
+    // Each family's checks refuse the random family's cases.
+    const auto random = generateFamilies("random:150", 1)[0].cases;
+    for (const auto& name : kStabilityFamilies)
+    {
+        INFO(name);
+        GeneratedFamily f = family(name, 1);
+        f.cases = random;
+        CHECK(failedChecks(f) >= 1);
+    }
+    auto drifted = [](const std::string& name, auto change)
+    {
+        GeneratedFamily f = family(name, 1);
+        for (auto& c : f.cases)
+            change(c);
+        return failedChecks(f);
+    };
+    // Scales: the sweep shifted by a factor 10 misses both ends.
+    CHECK(drifted("scale-sweep",
+                  [](Case& c)
+                  {
+                      for (ShapeIn* s : {&c.a, &c.b})
+                      {
+                          for (auto& p : s->points)
+                              p = {p[0] * 10, p[1] * 10};
+                          s->px *= 10;
+                          s->py *= 10;
+                      }
+                  }) >= 2);
+    // Offsets: a gap of 1e-5 that grows (B moved away by 2e-6 along x) or is lost to baking.
+    CHECK(drifted("offset-sweep",
+                  [](Case& c)
+                  {
+                      c.b.px += 5e-6;
+                      c.b.py += 5e-6;
+                  }) >= 1);
+    // Short edges: A's short edge removed (its end Q dropped): no short edge left.
+    CHECK(drifted("short-contact-edge",
+                  [](Case& c) { c.a.points.erase(c.a.points.begin() + 2); }) >= 1);
+    // Near ties: gaps of 1e-11 that became 1e-9.
+    CHECK(drifted("near-tied-support",
+                  [](Case& c)
+                  {
+                      const double k = 1e-9 / std::hypot(c.b.px - c.a.px, c.b.py - c.a.py);
+                      c.b.px += k * (c.b.px - c.a.px);
+                      c.b.py += k * (c.b.py - c.a.py);
+                  }) >= 1);
+    // Near-zero separations that are not near zero (B moved by 1e-2).
+    CHECK(drifted("near-zero-separation", [](Case& c) { c.b.px += 1e-2; }) >= 1);
+    // Mixed scales: B given A's points (the same size).
+    CHECK(drifted("mixed-scale", [](Case& c) { c.b.points = c.a.points; }) >= 2);
+    // Range: every case brought back to size ~1.
+    CHECK(drifted("range",
+                  [](Case& c)
+                  {
+                      const double k = 1 / maxAbsWorldCoordinate(c);
+                      for (ShapeIn* s : {&c.a, &c.b})
+                      {
+                          for (auto& p : s->points)
+                              p = {p[0] * k, p[1] * k};
+                          s->px *= k;
+                          s->py *= k;
+                      }
+                  }) == 3);
+    // Cold starts: the point orders no longer describe the same pairs, or the origins differ.
+    int n = 0;
+    CHECK(drifted("cold-start-sweep", [&n](Case& c) { c.b.points[0][0] += 1e-9 * ++n; }) >= 1);
+    CHECK(drifted("cold-start-sweep", [](Case& c) { c.b.px += 0.5; }) >= 1);
+}
+
+TEST_CASE("stability sub-families: exact contacts are exact, gaps are gaps",
+          "[families][stability]")
+{
+    // Exact contact survives the scaling by non-powers of two (shared points, shared pose).
+    int touching = 0;
+    for (const auto& c : family("scale-sweep", 1).cases)
+        if (nameHas(c, "touching"))
+        {
+            INFO(c.name);
+            const auto t = truthOf(c);
+            CHECK(exactIsZero(t));
+            CHECK(t.squared == 0); // touching, not overlapping
+            ++touching;
+        }
+    CHECK(touching == 43);
+    // Short contact edges: touching exactly; gaps of a thousandth of an edge of 1e-9 resolved.
+    for (const auto& c : family("short-contact-edge", 1).cases)
+    {
+        INFO(c.name);
+        const auto t = truthOf(c);
+        if (nameHas(c, "touching"))
+            CHECK(t.squared == 0);
+        else if (nameHas(c, "-gap-"))
+            CHECK(t.distance > 0);
+        else
+            CHECK(exactIsZero(t));
+        if (nameHas(c, "l1e-9-gap-l/1000"))
+            CHECK(std::abs(t.distance - 1e-12) < 1e-14);
+    }
+    // Near-zero separations: exact contacts are at distance 0, separations of 1e-3..1e-12 land
+    // within 1e-14 of their target (the construction's rounding is far below them).
+    for (const auto& c : family("near-zero-separation", 1).cases)
+    {
+        INFO(c.name);
+        const auto t = truthOf(c);
+        if (nameHas(c, "exact-contact"))
+            CHECK(t.squared == 0);
+        const auto pos = c.name.rfind("sep1e-");
+        if (pos != std::string::npos)
+        {
+            const int e = std::stoi(c.name.substr(pos + 6));
+            if (e <= 12)
+                CHECK(std::abs(t.distance - std::pow(10.0, -e)) < 1e-14);
+        }
+    }
+}
+
+TEST_CASE("cold-start sweep: every vertex pair starts, every order describes the same pair",
+          "[families][stability]")
+{
+    std::map<std::string, std::vector<Case>> pairs; // "pairN" -> its cases
+    for (const auto& c : family("cold-start-sweep", 1).cases)
+    {
+        const auto p = c.name.find("pair");
+        pairs[c.name.substr(p, c.name.find('-', p) - p)].push_back(c);
+    }
+    CHECK(pairs.size() == 8);
+    for (const auto& [pair, cases] : pairs)
+    {
+        INFO(pair);
+        auto sorted = [](std::vector<std::array<double, 2>> v)
+        {
+            std::sort(v.begin(), v.end());
+            return v;
+        };
+        const auto a0 = sorted(cases[0].a.points), b0 = sorted(cases[0].b.points);
+        std::set<std::pair<std::array<double, 2>, std::array<double, 2>>> starts;
+        int shuffled = 0;
+        for (const auto& c : cases)
+        {
+            CHECK(sorted(c.a.points) == a0);
+            CHECK(sorted(c.b.points) == b0);
+            CHECK(c.a.px == c.b.px);
+            CHECK(c.a.py == c.b.py); // the cold start begins at vertex 0 of each shape
+            starts.insert({c.a.points[0], c.b.points[0]});
+            shuffled += nameHas(c, "shuffled") ? 1 : 0;
+        }
+        CHECK(starts.size() == a0.size() * b0.size());
+        CHECK(shuffled == 3);
+    }
+}
+
+TEST_CASE("range: out-of-range inputs are flagged, never judged as failures",
+          "[families][stability]")
+{
+    CampaignConfig config;
+    config.families = {"hard/range"};
+    config.variants = parseVariants("all");
+    config.threads = 2;
+    config.timing = false;
+    config.command = "test";
+    const Campaign camp = runCampaign(config, loadInputs(config));
+    REQUIRE(camp.report["families"].size() == 1);
+    const Json& fam = camp.report["families"][0];
+    CHECK(fam["makeup_ok"] == true);
+    for (const auto* v : config.variants)
+    {
+        INFO(v->name);
+        const Json& s = fam["variants"][v->name];
+        // Float variants see coordinates 1e19..1e30 and 1e-20..1e-30; double ones 1e+-160.
+        CHECK(s["out_of_range"].get<int>() > 0);
+        if (v->scalar == Scalar::Float)
+            CHECK(s["out_of_range"].get<int>() >= 40);
+        if (v->judged)
+            CHECK(s["failures"].get<int>() == 0);
+    }
+    CHECK(camp.exitCode == kExitPass);
 }

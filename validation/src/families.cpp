@@ -2,13 +2,17 @@
 
 #include "geometry.hpp"
 
+#include "gjk/math.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <limits>
 #include <numbers>
+#include <set>
 
 namespace gjkval
 {
@@ -21,6 +25,10 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 struct Rng
 {
     std::uint64_t state;
+    // The family's own seed (set by generate()): generators that need the same geometry in
+    // several cases (a configuration swept over scales, a pair in every point order) derive it
+    // from this, not from the case's own stream.
+    std::uint64_t family = 0;
     explicit Rng(std::uint64_t seed) : state(seed) {}
     std::uint64_t next()
     {
@@ -147,6 +155,16 @@ void placeAtGap(const ShapeIn& a, ShapeIn& b, double gap, Rng& r)
     const double off = gap + a.radius + b.radius;
     b.px = p[0] + off * n[0] - rk[0];
     b.py = p[1] + off * n[1] - rk[1];
+}
+
+// Largest distance between two of the (hull) points; 0 for a single point.
+double hullDiameter(const std::vector<P2>& h)
+{
+    double d = 0;
+    for (std::size_t i = 0; i < h.size(); ++i)
+        for (std::size_t j = i + 1; j < h.size(); ++j)
+            d = std::max(d, std::hypot(h[j][0] - h[i][0], h[j][1] - h[i][1]));
+    return d;
 }
 
 void scaleShape(ShapeIn& s, double k)
@@ -752,6 +770,431 @@ void genPoints(Rng& r, int i, Case& c, std::string& tag)
     }
 }
 
+// --- Sweeps and near-degenerate constructions: where published GJK implementations fail --------
+
+// A stream for geometry shared by several cases of a family (a configuration swept over scales or
+// offsets, a pair in every point order): derived from the family's seed and a key only.
+Rng sharedRng(const Rng& r, std::uint64_t key)
+{
+    return Rng(mix64(r.family ^ mix64(key)));
+}
+
+void copyPose(const ShapeIn& a, ShapeIn& b)
+{
+    b.c = a.c;
+    b.s = a.s;
+    b.px = a.px;
+    b.py = a.py;
+}
+
+// Boxes with near-parallel long edges (tilt 1e-9) at `gap`, B's pose relative to A's.
+void nearParallelBoxes(Rng& g, Case& c, double gap, double px, double py)
+{
+    c.a = poly({{-1, -0.5}, {1, -0.5}, {1, 0.5}, {-1, 0.5}});
+    c.b = poly({{-0.9, 0}, {0.9, 0}, {0.9, 0.6}, {-0.9, 0.6}});
+    const double tilt = 1e-9, ca = std::cos(tilt), sa = std::sin(tilt);
+    double minY = kInf;
+    for (const auto& p : c.b.points)
+        minY = std::min(minY, sa * p[0] + ca * p[1]);
+    setPose(c.a, g.range(0, 2 * kPi), px, py);
+    poseRelativeTo(c.a, c.b, tilt, {g.range(-0.05, 0.05), 0.5 + gap - minY});
+}
+
+// A triangle's vertex against a pentagon's edge at `gap` (negative: penetration).
+void vertexAgainstEdge(Rng& g, Case& c, double gap, double px, double py)
+{
+    c.a = polygonOnCircle(g, 5, 1);
+    c.b = poly({{0, 0}, {0.8, -0.3}, {0.5, 0.7}});
+    setPose(c.a, g.range(0, 2 * kPi), px, py);
+    setPose(c.b, g.range(0, 2 * kPi), 0, 0);
+    placeAtGap(c.a, c.b, gap, g);
+}
+
+// Exact contact under a shared pose: A on the left of a generic segment P -> Q, B on its right
+// sharing the segment (edge contact) or only the vertex P. Scaling every number by the same k
+// keeps the shared points identical, so the contact stays exact.
+void exactContact(Rng& g, Case& c, bool edge)
+{
+    const P2 P = {g.range(0.3, 0.7), g.range(-0.9, -0.5)},
+             Q = {g.range(0.3, 0.7), g.range(0.5, 0.9)};
+    const double len = std::hypot(Q[0] - P[0], Q[1] - P[1]);
+    const P2 e = {(Q[0] - P[0]) / len, (Q[1] - P[1]) / len}, n = {e[1], -e[0]}; // n: right of P->Q
+    auto at = [&](const P2& o, double t, double s) {
+        return P2{o[0] + t * n[0] + s * e[0], o[1] + t * n[1] + s * e[1]};
+    };
+    c.a = poly({P, Q, at(Q, -1.2, 0.1), at(P, -1.0, -0.2)});
+    if (edge)
+        c.b = poly({Q, P, at(P, 0.8, -0.1), at(Q, 0.7, 0.2)});
+    else
+        c.b = poly({P, at(P, 0.9, -0.4), at(P, 0.6, 0.5)});
+    randomPose(g, c.a);
+    copyPose(c.a, c.b);
+}
+
+constexpr int kScaleSteps = 43; // 1e-12, 3.7e-12, 1e-11, ..., 3.7e8, 1e9
+
+double sweepScale(int step)
+{
+    return (step % 2 == 1 ? 3.7 : 1.0) * std::pow(10.0, -12 + step / 2);
+}
+
+void genScaleSweep(Rng& r, int i, Case& c, std::string& tag)
+{
+    static const char* names[] = {"near-parallel-gap", "vertex-edge-gap", "touching",
+                                  "overlapping"};
+    const int config = i % 4, step = (i / 4) % kScaleSteps;
+    const bool edge = step % 2 == 0; // the touching configuration alternates edge and vertex
+    Rng g = sharedRng(r, 0x5ca1e5eeULL + std::uint64_t(config) * 2 + (config == 2 && !edge));
+    switch (config)
+    {
+    case 0:
+        nearParallelBoxes(g, c, 1e-6, g.range(-4, 4), g.range(-4, 4));
+        break;
+    case 1:
+        vertexAgainstEdge(g, c, 1e-10, g.range(-4, 4), g.range(-4, 4));
+        break;
+    case 2:
+        exactContact(g, c, edge);
+        break;
+    default:
+        vertexAgainstEdge(g, c, -1e-7, g.range(-4, 4), g.range(-4, 4));
+        break;
+    }
+    const double k = sweepScale(step);
+    scaleCase(c, k);
+    tag = fmt::format("{}{}-x{:g}", names[config], config == 2 ? (edge ? "-edge" : "-vertex") : "",
+                      k);
+}
+
+constexpr int kOffsetSteps = 19; // 10^0, 10^0.5, ..., 10^9
+
+void genOffsetSweep(Rng& r, int i, Case& c, std::string& tag)
+{
+    const int config = i % 2, step = (i / 4) % kOffsetSteps;
+    const bool baked = (i / 2) % 2 == 1;
+    const double offset = std::pow(10.0, step / 2.0), gap = 1e-5;
+    Rng g = sharedRng(r, 0x0ff5e75eULL + std::uint64_t(config));
+    if (config == 0)
+        nearParallelBoxes(g, c, gap, g.range(-1, 1), g.range(-1, 1));
+    else
+        vertexAgainstEdge(g, c, gap, g.range(-1, 1), g.range(-1, 1));
+    const double phi = g.range(0, 2 * kPi);
+    const double ox = offset * std::cos(phi), oy = offset * std::sin(phi);
+    for (ShapeIn* s : {&c.a, &c.b})
+    {
+        s->px += ox;
+        s->py += oy;
+        if (baked)
+            bake(*s);
+    }
+    tag = fmt::format("{}-off{:g}-{}", config == 0 ? "near-parallel" : "vertex-edge", offset,
+                      baked ? "coords" : "transform");
+}
+
+void genShortContactEdge(Rng& r, int i, Case& c, std::string& tag)
+{
+    static const char* partners[] = {"short-edge", "long-edge", "vertex"};
+    static const char* gapNames[] = {"gap-l",    "gap-l/10",     "gap-l/1000",
+                                     "touching", "overlap-l/10", "overlap-l/1000"};
+    static const double gapFactor[] = {1, 0.1, 1e-3, 0, -0.1, -1e-3};
+    const int partner = i % 3, gm = (i / 3) % 6, li = (i / 18) % 7;
+    const double ell = std::pow(10.0, -(3 + li));
+    // A's short edge P -> Q has direction (-1, 3) and length ~ell; s is a multiple of 2^-52 so
+    // that P, Q, their midpoint M and every point below on the line 3x + y = 3 are exact.
+    const double s = std::ldexp(std::nearbyint(std::ldexp(ell / std::sqrt(10.0), 52)), -52);
+    const P2 P = {1, 0}, Q = {1 - s, 3 * s}, M = {1 - s / 2, 1.5 * s};
+    c.a = poly({{0.5, -1}, P, Q, {-0.5, 1}, {-1, 0}});
+    switch (partner)
+    {
+    case 0: // A reflected through M: B's own short edge is Q -> P, exactly
+        c.b = c.a;
+        for (auto& p : c.b.points)
+            p = {(2 - s) - p[0], 3 * s - p[1]};
+        break;
+    case 1: // a box whose long edge (0.75, 0.75)-(1.25, -0.75) contains A's short edge
+        c.b = poly({{1.25, -0.75}, {2, -0.5}, {1.5, 1}, {0.75, 0.75}});
+        break;
+    default: // a triangle's vertex at the midpoint of A's short edge
+        c.b = poly({M, {M[0] + 1.2, M[1] + 0.9}, {M[0] + 0.3, M[1] + 1.1}});
+        break;
+    }
+    // Touching in A's frame; B then moved by the gap along the short edge's normal (3, 1)/sqrt(10).
+    const double gap = gapFactor[gm] * ell, nx = 3 / std::sqrt(10.0), ny = 1 / std::sqrt(10.0);
+    randomPose(r, c.a);
+    poseRelativeTo(c.a, c.b, 0, {gap * nx, gap * ny});
+    tag = fmt::format("{}-l1e-{}-{}", partners[partner], 3 + li, gapNames[gm]);
+}
+
+void genNearTiedSupport(Rng& r, int i, Case& c, std::string& tag)
+{
+    static const int ns[] = {6, 32, 256, 2048};
+    static const double widths[] = {1, 0.1, 1e-2, 1e-4};
+    static const double deltas[] = {0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
+    const int kind = i % 3, ni = (i / 3) % 4, di = (i / 12) % 6;
+    const double gap = (i / 72) % 2 == 0 ? 1e-5 : 1e-11, delta = deltas[di];
+    double lateral = 0;
+    if (kind == 2)
+    {
+        // Boxes facing each other with parallel edges (x = w), B turned by delta.
+        const double w = widths[ni];
+        c.a = poly({{-w, -1}, {w, -1}, {w, 1}, {-w, 1}});
+        c.b = c.a;
+        tag = fmt::format("boxes-w{:g}", w);
+    }
+    else
+    {
+        // Regular n-gons: A's edge faces +x; B's edge (kind 0) or, half a vertex angle further,
+        // its vertex (kind 1) faces -x. The vertex is kept inside A's facing edge.
+        const int n = ns[ni];
+        c.a = regularPolygon(n, 1, kPi / n);
+        c.b = regularPolygon(n, 1, kind == 0 ? kPi + kPi / n : kPi);
+        if (kind == 1)
+            lateral = r.range(-0.5, 0.5) * std::sin(kPi / n) + std::sin(delta);
+        tag = fmt::format("{}gon-{}", n, kind == 0 ? "edge-edge" : "edge-vertex");
+    }
+    double maxA = -kInf, minB = kInf;
+    const double cd = std::cos(delta), sd = std::sin(delta);
+    for (const auto& p : c.a.points)
+        maxA = std::max(maxA, p[0]);
+    for (const auto& p : c.b.points)
+        minB = std::min(minB, cd * p[0] - sd * p[1]);
+    randomPose(r, c.a);
+    poseRelativeTo(c.a, c.b, delta, {maxA + gap - minB, lateral});
+    tag += fmt::format("-rot{:g}-gap{:g}", delta, gap);
+}
+
+// Closest points of two convex hulls that are apart (double; vertex against edge, both ways).
+void closestPoints(const std::vector<P2>& a, const std::vector<P2>& b, P2& pa, P2& pb)
+{
+    const auto ha = convexHull(a), hb = convexHull(b);
+    double best = kInf;
+    auto consider = [&](const P2& p, const P2& q0, const P2& q1, bool pOnA)
+    {
+        const double ex = q1[0] - q0[0], ey = q1[1] - q0[1], ee = ex * ex + ey * ey;
+        const double t =
+            ee > 0 ? std::clamp(((p[0] - q0[0]) * ex + (p[1] - q0[1]) * ey) / ee, 0.0, 1.0) : 0;
+        const P2 q = {q0[0] + t * ex, q0[1] + t * ey};
+        const double d = std::hypot(p[0] - q[0], p[1] - q[1]);
+        if (d < best)
+        {
+            best = d;
+            pa = pOnA ? p : q;
+            pb = pOnA ? q : p;
+        }
+    };
+    for (const auto& p : ha)
+        for (std::size_t j = 0; j < hb.size(); ++j)
+            consider(p, hb[j], hb[(j + 1) % hb.size()], true);
+    for (const auto& p : hb)
+        for (std::size_t j = 0; j < ha.size(); ++j)
+            consider(p, ha[j], ha[(j + 1) % ha.size()], false);
+}
+
+constexpr int kSeparationLevels = 15; // 1e-3 .. 1e-15, 0 up to rounding, exact contact
+
+void genNearZeroSeparation(Rng& r, int i, Case& c, std::string& tag)
+{
+    const int level = i % kSeparationLevels;
+    c.a = randomPolygon(r);
+    c.b = randomPolygon(r);
+    setPose(c.a, r.range(0, 2 * kPi), r.range(-1, 1), r.range(-1, 1));
+    if (level == kSeparationLevels - 1)
+    {
+        // Exactly 0: B is given in A's frame (shared pose), rotated at random, and its support
+        // vertex along -n is put exactly on A's support vertex along n (a random direction n):
+        // the shapes touch at that one point.
+        const double t = r.range(0, 2 * kPi), tb = r.range(0, 2 * kPi);
+        const double nx = std::cos(t), ny = std::sin(t), cb = std::cos(tb), sb = std::sin(tb);
+        for (auto& p : c.b.points)
+            p = {cb * p[0] - sb * p[1], sb * p[0] + cb * p[1]};
+        std::size_t ia = 0, ib = 0;
+        for (std::size_t k = 0; k < c.a.points.size(); ++k)
+            if (nx * c.a.points[k][0] + ny * c.a.points[k][1] >
+                nx * c.a.points[ia][0] + ny * c.a.points[ia][1])
+                ia = k;
+        for (std::size_t k = 0; k < c.b.points.size(); ++k)
+            if (nx * c.b.points[k][0] + ny * c.b.points[k][1] <
+                nx * c.b.points[ib][0] + ny * c.b.points[ib][1])
+                ib = k;
+        const double sx = c.a.points[ia][0] - c.b.points[ib][0];
+        const double sy = c.a.points[ia][1] - c.b.points[ib][1];
+        for (auto& p : c.b.points)
+            p = {p[0] + sx, p[1] + sy};
+        c.b.points[ib] = c.a.points[ia];
+        copyPose(c.a, c.b);
+        tag = "exact-contact";
+        return;
+    }
+    // B starts 5 away in a random direction, then moves along the separating direction (from
+    // the closest points, in double) until the separation is the target.
+    const double target = level < kSeparationLevels - 2 ? std::pow(10.0, -(3 + level)) : 0;
+    const double theta = r.range(0, 2 * kPi);
+    setPose(c.b, r.range(0, 2 * kPi), c.a.px + 5 * std::cos(theta), c.a.py + 5 * std::sin(theta));
+    P2 pa{}, pb{};
+    closestPoints(worldPoints(c.a), worldPoints(c.b), pa, pb);
+    const double dx = pb[0] - pa[0], dy = pb[1] - pa[1], d = std::hypot(dx, dy);
+    c.b.px -= (d - target) * (dx / d);
+    c.b.py -= (d - target) * (dy / d);
+    tag = target > 0 ? fmt::format("sep1e-{}", 3 + level) : "sep0";
+}
+
+void genMixedScale(Rng& r, int i, Case& c, std::string& tag)
+{
+    static const double gapFactor[] = {10, 1, 1e-2, -1e-2};
+    const int ei = i % 4, li = (i / 4) % 4, gi = (i / 16) % 4;
+    const bool swap = (i / 64) % 2 == 1;
+    const double eps = std::pow(10.0, -(6 + 2 * ei)), L = std::pow(10.0, 2 * li);
+    ShapeIn big = randomPolygon(r), tiny = randomPolygon(r);
+    randomPose(r, big);
+    scaleShape(big, L);
+    scaleShape(tiny, eps);
+    setPose(tiny, r.range(0, 2 * kPi), 0, 0);
+    placeAtGap(big, tiny, gapFactor[gi] * eps, r);
+    c.a = swap ? tiny : big;
+    c.b = swap ? big : tiny;
+    tag = fmt::format("{}-L1e{}-eps1e-{}-gap{:g}eps", swap ? "tiny-big" : "big-tiny", 2 * li,
+                      6 + 2 * ei, gapFactor[gi]);
+}
+
+// The double analog of the range-gap mode (size 1e160, gap 0.3 maxCoordinate of double). It was
+// off while GJK missed that overflow (validation/cases/range-overflow.json keeps the input): its
+// wrong answer ranked as the family's worst case and the runner's double Minkowski picture stalled
+// on it. Both are fixed; the switch stays so the mode can be isolated when investigating.
+constexpr bool kRangeGapInDouble = true;
+
+void genRange(Rng& r, int i, Case& c, std::string& tag)
+{
+    // Outside float's safe range (above 2.3e18, below 4.4e-16) and double's (1.7e153, 1.5e-146).
+    static const double scales[] = {1e19,    3.3e21, 1e24,    4.4e27, 1e30,  1e-20,
+                                    3.3e-23, 1e-25,  4.4e-28, 1e-30,  1e160, 1e-160};
+    const int si = i % 12, mode = (i / 12) % 6;
+    const double k = scales[si];
+    if (mode == 5 && k > 1 && (k < 1e100 || kRangeGapInDouble))
+    {
+        // Shapes of size ~k, both at the same translation (so the cold start is the vertex pair
+        // (0, 0)), B's vertex 0 at a gap g from A's edge 0 -> 1, at a distance g from A's vertex
+        // 0 along that edge; g = 0.3 maxCoordinate of float (of double for 1e160). Every support
+        // point of the walk stays in range (|w| ~ 0.42 maxCoordinate) while dot(d, point) with
+        // the shapes' own points (|d| ~ g, |point| ~ k) overflows.
+        const double g = 0.3 * (k > 1e100 ? double(gjk::Tolerances<double>::maxCoordinate)
+                                          : double(gjk::Tolerances<float>::maxCoordinate));
+        c.a = polygonOnCircle(r, r.integer(3, 8), 1);
+        c.a.points = convexHull(c.a.points); // counter-clockwise, distinct vertices (at size 1:
+        scaleShape(c.a, k);                  // the hull's products would overflow at 1e160)
+        const std::size_t ia = std::size_t(r.integer(0, int(c.a.points.size()) - 1));
+        std::rotate(c.a.points.begin(), c.a.points.begin() + std::ptrdiff_t(ia), c.a.points.end());
+        const P2 a0 = c.a.points[0], a1 = c.a.points[1];
+        const double len = std::hypot(a1[0] - a0[0], a1[1] - a0[1]);
+        const P2 e = {(a1[0] - a0[0]) / len, (a1[1] - a0[1]) / len}, n = {e[1], -e[0]};
+        const P2 target = {a0[0] + g * e[0] + g * n[0], a0[1] + g * e[1] + g * n[1]};
+        // B: a random polygon turned at random, its extreme vertex along -n moved to target.
+        c.b = randomPolygon(r);
+        scaleShape(c.b, k);
+        const double t = r.range(0, 2 * kPi), ct = std::cos(t), st = std::sin(t);
+        std::size_t ib = 0;
+        double best = kInf;
+        for (std::size_t j = 0; j < c.b.points.size(); ++j)
+        {
+            auto& q = c.b.points[j];
+            q = {ct * q[0] - st * q[1], st * q[0] + ct * q[1]};
+            if (const double v = n[0] * q[0] + n[1] * q[1]; v < best)
+            {
+                best = v;
+                ib = j;
+            }
+        }
+        const P2 shift = {target[0] - c.b.points[ib][0], target[1] - c.b.points[ib][1]};
+        for (auto& q : c.b.points)
+            q = {q[0] + shift[0], q[1] + shift[1]};
+        std::rotate(c.b.points.begin(), c.b.points.begin() + std::ptrdiff_t(ib), c.b.points.end());
+        setPose(c.a, r.range(0, 2 * kPi), r.range(-4, 4) * k, r.range(-4, 4) * k);
+        copyPose(c.a, c.b);
+        tag = "range-gap";
+    }
+    else if (mode < 4 || mode == 5)
+    {
+        randomPair(r, c, mode % 4); // mode 5 below 1: a second penetration
+        scaleCase(c, k);
+        tag = scaledTag(mode % 4);
+    }
+    else if (k > 1)
+    {
+        // Shapes of size ~1 at a small gap, at a common offset k in the transforms.
+        randomPair(r, c, 0);
+        const double phi = r.range(0, 2 * kPi);
+        for (ShapeIn* s : {&c.a, &c.b})
+        {
+            s->px += k * std::cos(phi);
+            s->py += k * std::sin(phi);
+        }
+        tag = "offset";
+    }
+    else
+    {
+        randomPair(r, c, 0);
+        scaleCase(c, k);
+        bake(c.a);
+        bake(c.b);
+        tag = "gap-baked";
+    }
+    tag += fmt::format("-x{:g}", k);
+}
+
+// The cold-start sweep's pairs (points of A, points of B): every rotation of both point orders
+// (na * nb cases) and kColdShuffles shuffled orders each.
+constexpr int kColdPairs[][2] = {{3, 3}, {3, 4}, {4, 4}, {4, 5}, {5, 5}, {3, 6}, {6, 6}, {5, 8}};
+constexpr int kColdShuffles = 3;
+constexpr int kColdBlock = []
+{
+    int n = 0;
+    for (const auto& p : kColdPairs)
+        n += p[0] * p[1] + kColdShuffles;
+    return n;
+}();
+
+void genColdStartSweep(Rng& r, int i, Case& c, std::string& tag)
+{
+    const int block = i / kColdBlock;
+    int j = i % kColdBlock, p = 0;
+    while (j >= kColdPairs[p][0] * kColdPairs[p][1] + kColdShuffles)
+    {
+        j -= kColdPairs[p][0] * kColdPairs[p][1] + kColdShuffles;
+        ++p;
+    }
+    const int na = kColdPairs[p][0], nb = kColdPairs[p][1];
+    const int pair = block * int(std::size(kColdPairs)) + p;
+    Rng g = sharedRng(r, 0xc01d5eedULL + std::uint64_t(pair));
+    c.a = polygonOnCircle(g, na, g.range(0.5, 2));
+    c.b = polygonOnCircle(g, nb, g.range(0.5, 2));
+    randomPose(g, c.a);
+    setPose(c.b, g.range(0, 2 * kPi), 0, 0);
+    const double gap = g.logUniform(-9, -3);
+    placeAtGap(c.a, c.b, pair % 2 == 0 ? gap : -gap, g);
+    // B re-expressed around A's origin (same translation): the cold start then begins at
+    // vertex 0 of each shape (gjk::distance: the direction between the origins is zero).
+    const auto wb = worldPoints(c.b);
+    for (std::size_t k = 0; k < wb.size(); ++k)
+    {
+        const double dx = wb[k][0] - c.a.px, dy = wb[k][1] - c.a.py;
+        c.b.points[k] = {c.b.c * dx + c.b.s * dy, -c.b.s * dx + c.b.c * dy};
+    }
+    c.b.px = c.a.px;
+    c.b.py = c.a.py;
+    if (j < na * nb)
+    {
+        const int ra = j % na, rb = j / na;
+        std::rotate(c.a.points.begin(), c.a.points.begin() + ra, c.a.points.end());
+        std::rotate(c.b.points.begin(), c.b.points.begin() + rb, c.b.points.end());
+        tag = fmt::format("pair{}-{}x{}-start{}-{}", pair, na, nb, ra, rb);
+    }
+    else
+    {
+        r.shuffle(c.a.points);
+        r.shuffle(c.b.points);
+        tag = fmt::format("pair{}-{}x{}-shuffled{}", pair, na, nb, j - na * nb);
+    }
+}
+
 // --- THE table: every hard sub-family, its size, why it is here, and its make-up ---------------
 
 struct HardEntry
@@ -881,6 +1324,106 @@ const std::vector<HardEntry>& hardTable()
          genPoints,
          {{"min vertices", M::MinVertices, 1, 1},
           {"overlapping fraction", M::OverlapFraction, 0.5, 0.5}}},
+        {{"scale-sweep", 172,
+          "The same four configurations (near-parallel edges at a gap of 1e-6, a vertex at 1e-10 "
+          "from an edge, exact edge or vertex contact, a 1e-7 overlap; sizes ~1) scaled by "
+          "1e-12, 3.7e-12, 1e-11, ... 1e9 (factors that are not powers of two, so every number "
+          "rounds): an absolute tolerance (an epsilon on squared lengths, on the duality gap or "
+          "on the overlap test) is right at one scale only and gives false overlaps below it or "
+          "lost accuracy above it; the error must stay proportional to the scale."},
+         genScaleSweep,
+         {{"overlapping fraction", M::OverlapFraction, 0.5, 0.5},
+          {"min positive distance", M::MinPositiveDistance, 0, 2e-22},
+          {"max distance", M::MaxDistance, 0.9e3, 1.1e3},
+          {"smallest case scale", M::MinScale, 0, 1e-11},
+          {"max |coordinate|", M::MaxCoordinate, 1e9, kInf}}},
+        {{"offset-sweep", 76,
+          "A fixed gap of 1e-5 (near-parallel edges, and a vertex against an edge) moved by "
+          "offsets 1, 10^0.5, ... 1e9, the offset in the transforms (A's local frame cancels it "
+          "before the gap is rounded) or baked into the coordinates (then the input itself "
+          "carries ulp(offset)): a computation in world coordinates loses a small gap to a large "
+          "common offset (at 1e9 the gap is ~80 ulps of the coordinates)."},
+         genOffsetSweep,
+         {{"separated fraction", M::SeparatedFraction, 1, 1},
+          {"min positive distance", M::MinPositiveDistance, 0.9e-5, 1.1e-5},
+          {"max distance", M::MaxDistance, 0.9e-5, 1.1e-5},
+          {"smallest case scale", M::MinScale, 0, 10},
+          {"max |coordinate|", M::MaxCoordinate, 7e8, kInf}}},
+        {{"short-contact-edge", 126,
+          "Contact along a very short edge (length 1e-3 .. 1e-9 of the shape's size, exact "
+          "coordinates on the line 3x + y = 3) against a short edge, a long edge or a vertex, at "
+          "gaps of the edge length, a tenth and a thousandth of it, exact touching, and overlaps "
+          "of a tenth and a thousandth: the simplex edge is tiny next to its distance from the "
+          "origin, so an absolute tolerance on edge lengths or barycentric weights, or a "
+          "division by the squared edge length, turns a short-edge contact into a false overlap "
+          "or a wrong Voronoi region."},
+         genShortContactEdge,
+         {{"separated fraction", M::SeparatedFraction, 0.5, 0.5},
+          {"min positive distance", M::MinPositiveDistance, 0.9e-12, 1.1e-12},
+          {"max distance", M::MaxDistance, 0.9e-3, 1.1e-3},
+          {"shortest edge / diameter", M::MinEdgeRatio, 0, 1e-9}}},
+        {{"near-tied-support", 144,
+          "Several vertices nearly tied along the search directions: regular 6- to 2048-gons "
+          "facing each other edge to edge or, half a vertex angle further, edge to vertex, and "
+          "boxes with parallel facing edges, B turned by 0, 1e-15 .. 1e-3, gaps 1e-5 and 1e-11: "
+          "the support point flips between nearly tied vertices from one rounding to the next, "
+          "which repeats support points (a degenerate simplex, NaN from a zero-length edge) or "
+          "cycles until the iteration limit, and the binary-search support must resolve the "
+          "ties like the linear scan."},
+         genNearTiedSupport,
+         {{"separated fraction", M::SeparatedFraction, 1, 1},
+          {"min positive distance", M::MinPositiveDistance, 0.9e-11, 1.1e-11},
+          {"max distance", M::MaxDistance, 0.9e-5, 1.1e-5},
+          {"max vertices", M::MaxVertices, 2048, kInf},
+          {"min vertices", M::MinVertices, 4, 4}}},
+        {{"near-zero-separation", 180,
+          "Random polygons in random directions, B moved along the separating direction "
+          "(closest points in double) to a separation of 1e-3, 1e-4, ... 1e-15 (sizes ~1) or 0, "
+          "plus exact vertex contacts: the overlap decision near zero, where a rounded "
+          "orientation or containment test, or a tolerance, must not report a false overlap "
+          "beyond the bound, nor a false separation of touching shapes."},
+         genNearZeroSeparation,
+         {{"overlapping fraction", M::OverlapFraction, 0.05, 0.5},
+          {"min positive distance", M::MinPositiveDistance, 0, 1e-12},
+          {"max distance", M::MaxDistance, 0.99e-3, 1.01e-3},
+          {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.5, 0.95}}},
+        {{"mixed-scale", 128,
+          "A tiny polygon (size 1e-6 .. 1e-12) near contact (gaps 10, 1, 0.01 times its size, "
+          "overlap 0.01) with a large one (size and position 1 .. 1e6), either one as A (the "
+          "compute frame): the Minkowski difference has the large shape's coordinates while the "
+          "answer is on the tiny one's scale, so tolerances relative to one shape fail and the "
+          "error must follow the larger scale."},
+         genMixedScale,
+         {{"min size ratio", M::MinSizeRatio, 1e5, kInf},
+          {"max size ratio", M::MaxSizeRatio, 1e17, kInf},
+          {"separated fraction", M::SeparatedFraction, 0.5, 0.95},
+          {"max distance", M::MaxDistance, 0, 1e-4}}},
+        {{"range", 72,
+          "Inputs outside float's safe range (coordinates 1e19 .. 1e30, 1e-20 .. 1e-30: squared "
+          "lengths overflow or underflow in float) and double's (1e160, 1e-160): random pairs "
+          "scaled, a common offset, baked coordinates, and shapes of size 1e19..1e30 (and 1e160) "
+          "starting (vertex 0 of each, same translation) at a vertex pair 0.4 times the type's "
+          "maxCoordinate apart: the support points stay in range while dot(d, point) with the "
+          "shapes' own points overflows. GJK must flag them outOfRange (not "
+          "judged, counted apart) instead of returning inf, NaN or a silently wrong distance; "
+          "cases inside a type's range are judged as usual."},
+         genRange,
+         {{"max |coordinate|", M::MaxCoordinate, 1e160, kInf},
+          {"smallest case scale", M::MinScale, 0, 1e-158},
+          {"outside float's safe range", M::OutsideFloatRangeFraction, 1, 1}}},
+        {{"cold-start-sweep", 200,
+          "Eight small random pairs (3 to 8 points, gaps and overlaps of 1e-9 .. 1e-3) with "
+          "both shapes at the same translation, so that the cold start begins at vertex 0 of "
+          "each: every rotation of both point orders (every vertex pair is the start) and "
+          "shuffled orders. A start on the far side, or on a vertex tied with the support, "
+          "walks a different simplex path: repeated support points and degenerate simplices "
+          "that one fixed start never shows."},
+         genColdStartSweep,
+         {{"shared origin fraction", M::SharedOriginFraction, 1, 1},
+          {"distinct exact distances", M::DistinctDistances, 2, 8},
+          {"separated fraction", M::SeparatedFraction, 0.45, 0.55},
+          {"max vertices", M::MaxVertices, 8, 8},
+          {"min vertices", M::MinVertices, 3, 3}}},
     };
     return table;
 }
@@ -919,6 +1462,7 @@ GeneratedFamily generate(const std::string& name, const std::string& reason, int
     for (int i = 0; i < count; ++i)
     {
         Rng r(mix64(f.seed + std::uint64_t(i)));
+        r.family = f.seed;
         std::string tag;
         Case& c = f.cases[std::size_t(i)];
         gen(r, i, c, tag);
@@ -1059,6 +1603,69 @@ std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
             double k = 0;
             for (auto* c : cases)
                 k += (c->a.radius > 0 || c->b.radius > 0) ? 1 : 0;
+            v = n > 0 ? k / n : 0;
+            break;
+        }
+        case M::MinScale:
+            v = kInf;
+            for (auto* c : cases)
+                v = std::min(v, maxAbsWorldCoordinate(*c));
+            break;
+        case M::MinEdgeRatio:
+            v = kInf;
+            for (auto* c : cases)
+                for (const ShapeIn* sh : {&c->a, &c->b})
+                {
+                    const auto h = convexHull(sh->points);
+                    if (h.size() < 3)
+                        continue;
+                    double shortest = kInf;
+                    for (std::size_t i = 0; i < h.size(); ++i)
+                        shortest =
+                            std::min(shortest, std::hypot(h[(i + 1) % h.size()][0] - h[i][0],
+                                                          h[(i + 1) % h.size()][1] - h[i][1]));
+                    v = std::min(v, shortest / hullDiameter(h));
+                }
+            break;
+        case M::MinSizeRatio:
+        case M::MaxSizeRatio:
+            v = s.metric == M::MinSizeRatio ? kInf : 0;
+            for (auto* c : cases)
+            {
+                const double da = hullDiameter(convexHull(c->a.points));
+                const double db = hullDiameter(convexHull(c->b.points));
+                const double ratio =
+                    std::min(da, db) > 0 ? std::max(da, db) / std::min(da, db) : kInf;
+                v = s.metric == M::MinSizeRatio ? std::min(v, ratio) : std::max(v, ratio);
+            }
+            break;
+        case M::OutsideFloatRangeFraction:
+        {
+            double k = 0;
+            for (auto* c : cases)
+            {
+                const double m = maxAbsWorldCoordinate(*c);
+                k += (m >= double(gjk::Tolerances<float>::minCoordinate) &&
+                      m <= double(gjk::Tolerances<float>::maxCoordinate))
+                         ? 0
+                         : 1;
+            }
+            v = n > 0 ? k / n : 0;
+            break;
+        }
+        case M::DistinctDistances:
+        {
+            std::set<double> ds;
+            for (auto* t : truths)
+                ds.insert(t->distance);
+            v = double(ds.size());
+            break;
+        }
+        case M::SharedOriginFraction:
+        {
+            double k = 0;
+            for (auto* c : cases)
+                k += (c->a.px == c->b.px && c->a.py == c->b.py) ? 1 : 0;
             v = n > 0 ? k / n : 0;
             break;
         }

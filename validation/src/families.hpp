@@ -28,6 +28,16 @@ enum class MakeupMetric
     MaxVertices,          // most points of a shape
     MaxAspect,            // largest diameter / min width of a shape (hulls of <= 64 vertices)
     RadiusFraction,       // fraction of cases with a rounded shape (radius > 0)
+    MinScale,             // smallest, over the cases, of a case's largest |world coordinate|
+    MinEdgeRatio,         // shortest hull edge / hull diameter, smallest over the shapes (local
+                          // points; shapes of >= 3 hull vertices)
+    MinSizeRatio,         // per case, larger / smaller hull diameter of the two shapes: smallest
+    MaxSizeRatio,         //   ... and largest over the cases
+    OutsideFloatRangeFraction, // fraction of cases whose largest |world coordinate| lies outside
+                               // float's safe range [Tolerances<float>::minCoordinate,
+                               // maxCoordinate]
+    DistinctDistances,         // number of distinct exact distances (bit patterns) among the cases
+    SharedOriginFraction,      // fraction of cases where both shapes have the same translation
 };
 
 struct MakeupSpec

@@ -164,6 +164,8 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
         const double ex = P[i + 1][0] - P[i][0], ey = P[i + 1][1] - P[i][1];
         const double fx = Q[j + 1][0] - Q[j][0], fy = Q[j + 1][1] - Q[j][1];
         double c = ex * fy - ey * fx;
+        if (std::isnan(c)) // overflow (coordinates near 1e160): advance both, never stall
+            c = 0;
         if (i >= n)
             c = -1;
         else if (j >= m)

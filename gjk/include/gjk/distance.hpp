@@ -177,9 +177,10 @@ template <class T> struct DistanceOutput
     int iterations = 0;  // support points computed
     int simplexCount = 0;
     StopReason stop = StopReason::RepeatedSupport;
-    // A support point had a coordinate outside [Tolerances<T>::minCoordinate, maxCoordinate] (all
-    // of them below the minimum, or any above the maximum): the products may have overflowed or
-    // underflowed, the distance is not trustworthy. Scale the problem (by a power of two).
+    // The query left its safe range: a support point had a coordinate outside
+    // [Tolerances<T>::minCoordinate, maxCoordinate] (all of them below the minimum, or any above
+    // the maximum), or a support scan's dot products overflowed (shape points far larger than the
+    // simplex). The distance is not trustworthy: scale the problem (by a power of two).
     bool outOfRange = false;
     // Options::certify: the exact distance lies in [lower, upper] (double, rounded outwards).
     bool certified = false;
@@ -209,20 +210,33 @@ template <class T> struct Trace
 
 // Index of the vertex furthest along d. d need not be normalised: only comparisons are made.
 // Ties keep the lowest index, so a repeated support point is recognised by its index.
-template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d)
+// `finite` reports whether every dot product was finite: a sum of the values rides along (an
+// independent chain, free next to the comparisons) and is non-finite as soon as one of them
+// overflowed (a shape point times a direction: found by hard/range, validation/cases/
+// range-overflow.json, where the simplex stayed in range while the shapes' points did not).
+template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d, bool& finite)
 {
     int index = 0;
     T maxValue = dot(d, poly.points[0]);
+    T sum = maxValue;
     for (int i = 1; i < poly.count; ++i)
     {
         const T value = dot(d, poly.points[i]);
+        sum += value;
         if (value > maxValue)
         {
             index = i;
             maxValue = value;
         }
     }
+    finite = std::abs(sum) <= std::numeric_limits<T>::max();
     return index;
+}
+
+template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d)
+{
+    bool finite;
+    return findSupport(poly, d, finite);
 }
 
 // Support by galloping binary search on a convex polygon in counter-clockwise or clockwise order,
@@ -310,15 +324,24 @@ template <class T> struct TransformedShape
     Transform<T> xf;
     bool identity = false;
 
-    bool binary = false; // SupportStrategy::BinarySearch and more than 16 points
-    int last = 0;        // previous support index: where the galloping search starts
+    bool binary = false;   // SupportStrategy::BinarySearch and more than 16 points
+    int last = 0;          // previous support index: where the galloping search starts
+    bool overflow = false; // a support scan's products overflowed (DistanceOutput::outOfRange)
 
     int support(Vec2<T> d)
     {
         const Vec2<T> local = identity ? d : invRotate(xf.q, d);
         if (!binary)
-            return findSupport(poly, local);
+        {
+            bool finite;
+            const int i = findSupport(poly, local, finite);
+            overflow = overflow || !finite;
+            return i;
+        }
         last = findSupportFrom(poly, local, last);
+        // The binary search evaluates a few points only: check the chosen point's own size.
+        const Vec2<T> p = poly.points[last];
+        overflow = overflow || !(std::max(std::abs(p.x), std::abs(p.y)) <= Tolerances<T>::maxCoordinate);
         return last;
     }
     Vec2<T> vertex(int i) const { return identity ? poly.points[i] : transformPoint(xf, poly.points[i]); }
@@ -650,8 +673,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
     // The compute frame: A's local frame (world = xfA * local) or the world itself.
     Transform<T> world;
-    TransformedShape<T> A{polyA, {}, false, false, 0};
-    TransformedShape<T> B{polyB, {}, false, false, 0};
+    TransformedShape<T> A{polyA, {}, false, false, 0, false};
+    TransformedShape<T> B{polyB, {}, false, false, 0, false};
     if (options.frame == Frame::LocalA)
     {
         world = input.transformA;
@@ -827,7 +850,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     }
 
     out.outOfRange = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
-                     (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate);
+                     (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) || A.overflow ||
+                     B.overflow;
     if (options.certify)
         certifyDistance(input, simplex, options.useRadii, rotate(world.q, normal), out);
 
