@@ -399,21 +399,38 @@
     Object.keys(ctx).forEach(function (k) {
       if (known.indexOf(k) >= 0) return;
       var v = ctx[k];
-      row(k, typeof v === 'object' ? h('code', {}, JSON.stringify(v)) : String(v));
+      if (v && typeof v === 'object' && !Array.isArray(v)) {
+        // e.g. throughput: numbers as "key value" pairs, text apart.
+        var parts = Object.keys(v).filter(function (x) { return typeof v[x] === 'number'; })
+          .map(function (x) { return x.replace(/_/g, ' ') + ' ' + fmt(v[x]); });
+        var notes = Object.keys(v).filter(function (x) { return typeof v[x] === 'string'; }).map(function (x) { return v[x]; });
+        row(k.replace(/_/g, ' '), h('span', {}, parts.join(', '), notes.length ? h('div', {class: 'small'}, notes.join(' ')) : null));
+      } else
+        row(k.replace(/_/g, ' '), typeof v === 'object' ? h('code', {}, JSON.stringify(v)) : String(v));
     });
     var grid = h('dl', {class: 'kv'}, rows);
 
     var vars = Array.isArray(report.variants) ? report.variants : [];
     var vt = null;
+    var baseVar = vars.filter(function (v) { return v && v.name === report.baseline_variant; })[0];
+    var baseOpts = baseVar && baseVar.options && typeof baseVar.options === 'object' ? baseVar.options : null;
+    // The bound formula most variants share is printed once under the table.
+    var formulas = {};
+    vars.forEach(function (v) { if (v && v.bound && has(v.bound.formula)) formulas[v.bound.formula] = (formulas[v.bound.formula] || 0) + 1; });
+    var commonFormula = Object.keys(formulas).sort(function (a, b) { return formulas[b] - formulas[a]; })[0] || null;
     if (vars.length) {
       vt = h('table', {class: 'data compact'},
         h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'))),
         h('tbody', {}, vars.map(function (v) {
           v = v || {};
+          // Only what differs from the baseline variant's options: the table stays one line a row.
           var opts = v.options && typeof v.options === 'object'
-            ? Object.keys(v.options).map(function (k) { return k + ': ' + v.options[k]; }).join(', ') : '';
+            ? Object.keys(v.options).filter(function (k) { return !baseOpts || baseOpts[k] !== v.options[k]; })
+                .map(function (k) { return k + ': ' + v.options[k]; }).join(', ') : '';
+          if (!opts) opts = baseOpts && v.name !== report.baseline_variant ? 'as baseline' : 'reference options';
+          var formula = v.bound && has(v.bound.formula) ? String(v.bound.formula) : null;
           var bound = v.bound && typeof v.bound === 'object'
-            ? [has(v.bound.formula) ? String(v.bound.formula) : null, has(v.bound.unit_roundoff) ? 'u = ' + fmt(v.bound.unit_roundoff) : null].filter(Boolean).join(', ')
+            ? [formula && formula !== commonFormula ? formula : null, has(v.bound.unit_roundoff) ? 'u = ' + fmt(v.bound.unit_roundoff) : null].filter(Boolean).join(', ')
             : '—';
           return h('tr', {},
             h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(String(v.name))}), String(v.name),
@@ -422,13 +439,14 @@
             h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, opts), h('td', {class: 'small'}, bound));
         })));
     }
-    append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), vt) : null)]);
+    append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), vt,
+      commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null) : null)]);
     return sec;
   }
 
   function renderSummary(report) {
     var sec = section('summary', 'Summary',
-      'One row per family and variant. Errors are |d_gjk − d_exact|: absolute (world units), in ulps of the exact distance, and normalised by u·R (u: the type\'s unit roundoff, R: the largest coordinate of A − B in the compute frame). p99 is read from the histogram bins (upper bin edge). Misclassified: false overlap, false separation or undecidable. Failures: cases outside the bound or misclassified.');
+      'One row per family and variant. Errors are |d_gjk − d_exact|: absolute (world units), in ulps of the exact distance, and normalised by u·R (u: the type\'s unit roundoff, R: the largest coordinate of A − B in the compute frame). p99 is read from the histogram bins (upper bin edge). Misclassified: false overlap, false separation, or undecidable (the exact distance is within the error bound of 0, so no answer at this precision can be wrong: not a failure). Failures: cases outside the bound, misclassified beyond it, non-finite or at the iteration limit.');
     var names = variantNames(report);
     var fams = families(report);
     if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no families.')); return sec; }
@@ -448,12 +466,12 @@
       var fv = familyVariants(f);
       var present = names.filter(function (n) { return n in fv; });
       var missing = names.filter(function (n) { return !(n in fv); });
-      var rows = present.length + (missing.length ? 1 : 0);
       present.forEach(function (vn, i) {
         var st = fv[vn] || {};
-        var tr = h('tr', {class: i === 0 ? 'family-first' : ''});
-        if (i === 0) tr.appendChild(h('td', {rowspan: rows, class: 'family-cell'}, h('a', {href: '#family-' + slug(f.name)}, String(f.name)),
-          has(f.cases) ? h('div', {class: 'small muted'}, fmtInt(f.cases) + ' cases') : null));
+        var tr = h('tr', {class: (i === 0 ? 'family-first' : '') + (isJudged(vn) || i === 0 ? '' : ' comparison-row')});
+        // No rowspan: rows of comparison variants can be hidden, which a rowspan would misalign.
+        tr.appendChild(i === 0 ? h('td', {class: 'family-cell'}, h('a', {href: '#family-' + slug(f.name)}, String(f.name)),
+          has(f.cases) ? h('div', {class: 'small muted'}, fmtInt(f.cases) + ' cases') : null) : h('td', {class: 'family-cell'}));
         var mis = misclassified(st);
         function detail(keys) {
           return keys.filter(function (k) { return num(st[k]) > 0; }).map(function (k) { return fmtInt(st[k]) + ' ' + k.replace(/_/g, ' '); });
@@ -468,7 +486,9 @@
         append(tr, [
           h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(vn)}), vn, comparisonTag(vn)),
           h('td', {class: 'num'}, fmtInt(st.cases)),
-          h('td', {class: 'num' + (mis > 0 ? ' bad' : '')}, fmtInt(mis), misDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
+          // Undecidable (within the error bound of the truth) is not a failure: red only for the rest.
+          h('td', {class: 'num' + (mis - (isNum(st.undecidable) ? num(st.undecidable) : 0) > 0 ? ' bad' : '')}, fmtInt(mis),
+            misDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
           h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: rate},
             fmtInt(st.failures), failDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
           h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
@@ -482,12 +502,22 @@
       });
       if (missing.length) {
         var tr = h('tr', {class: 'missing-row' + (present.length ? '' : ' family-first')});
-        if (!present.length) tr.appendChild(h('td', {class: 'family-cell'}, String(f.name)));
+        tr.appendChild(h('td', {class: 'family-cell'}, present.length ? null : String(f.name)));
         tr.appendChild(h('td', {colspan: 16, class: 'muted small'}, 'not run in this family: ' + missing.join(', ')));
         body.appendChild(tr);
       }
     });
-    sec.appendChild(h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body)));
+    // Comparison variants (reported, not judged) are folded away by default: with every variant
+    // the table has a row per family and variant, too long to read at once.
+    var anyComparison = names.some(function (n) { return !isJudged(n); });
+    var wrap = h('div', {class: 'table-wrap hide-comparison'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
+    if (anyComparison) {
+      var box = h('input', {type: 'checkbox', id: 'show-comparison'});
+      box.addEventListener('change', function () { wrap.classList.toggle('hide-comparison', !box.checked); });
+      sec.appendChild(h('p', {class: 'small'}, h('label', {}, box, ' show the comparison variants (' +
+        names.filter(function (n) { return !isJudged(n); }).join(', ') + ') in this table; the plots below always show them')));
+    }
+    sec.appendChild(wrap);
     return sec;
   }
 
