@@ -264,39 +264,29 @@ template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
         s = wrap(s + 1);
     const T fs = f(s);
 
+    // First j in [1, n] with past(j), for a predicate monotone in j (past(n) is taken as true):
+    // gallop j = 1, 2, 4, ... until it holds, then bisect.
+    auto firstPast = [n](auto past)
+    {
+        int lo = 0, hi = 1; // !past(lo) (lo = 0 by the caller's condition); past(hi) or hi == n
+        while (hi < n && !past(hi))
+        {
+            lo = hi;
+            hi = std::min(2 * hi, n);
+        }
+        while (hi - lo > 1)
+        {
+            const int mid = lo + (hi - lo) / 2;
+            (past(mid) ? hi : lo) = mid;
+        }
+        return hi;
+    };
+
     int best = s;
     if (slope(s) > T(0)) // forward: first j with slope(s + j) <= 0 or f(s + j) < f(s)
-    {
-        auto past = [&](int j) { return slope(s + j) <= T(0) || f(s + j) < fs; };
-        int lo = 0, hi = 1; // !past(lo); past(hi) or hi == n
-        while (hi < n && !past(hi))
-        {
-            lo = hi;
-            hi = std::min(2 * hi, n);
-        }
-        while (hi - lo > 1)
-        {
-            const int mid = lo + (hi - lo) / 2;
-            (past(mid) ? hi : lo) = mid;
-        }
-        best = wrap(s + hi);
-    }
-    else if (slope(s - 1) < T(0)) // backward: f(s - 1) > f(s)
-    {
-        auto past = [&](int j) { return slope(s - j - 1) >= T(0) || f(s - j) < fs; };
-        int lo = 0, hi = 1;
-        while (hi < n && !past(hi))
-        {
-            lo = hi;
-            hi = std::min(2 * hi, n);
-        }
-        while (hi - lo > 1)
-        {
-            const int mid = lo + (hi - lo) / 2;
-            (past(mid) ? hi : lo) = mid;
-        }
-        best = wrap(s - hi);
-    }
+        best = wrap(s + firstPast([&](int j) { return slope(s + j) <= T(0) || f(s + j) < fs; }));
+    else if (slope(s - 1) < T(0)) // backward: f(s - 1) > f(s), the mirror image
+        best = wrap(s - firstPast([&](int j) { return slope(s - j - 1) >= T(0) || f(s - j) < fs; }));
 
     // Polish: climb to a strictly better neighbour (undoes rounding-blurred near-ties).
     T value = f(best);
