@@ -22,10 +22,11 @@
 #include "gjk/math.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <cstdint>
 #include <cmath>
 #include <limits>
+
+#include <cassert>
+#define GJK_CERTIFY_ASSERT(c) assert(c)
 
 namespace gjk::certify
 {
@@ -57,16 +58,21 @@ inline Bounded operator*(Bounded a, Bounded b)
     const double v = a.v * b.v;
     return {v, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + u * std::abs(v) + eta};
 }
-// The next double above (below) x: std::nextafter without the library call (this runs in the
-// query's hot path). Infinities and NaN are returned unchanged.
+// The product of two exact doubles: one rounding (this is the common case here, and the general
+// product above spends most of its work on error terms that are zero).
+inline Bounded mulExact(double a, double b)
+{
+    const double v = a * b;
+    return {v, u * std::abs(v) + eta};
+}
+
+// A double above (below) x: x + |x| 2^-52 + 2^-1074 rounded to nearest. The added amount is at
+// least one ulp of x (|x| 2^-52 >= ulp(x)), so the rounded sum is at least the next double above x
+// -- at most two ulps above, where std::nextafter would give one, but without its library call
+// and branches (this runs in the query's hot path). Infinities and NaN are returned unchanged.
 inline double up(double x)
 {
-    if (!(std::abs(x) < std::numeric_limits<double>::infinity()))
-        return x;
-    if (x == 0)
-        return eta;
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    return std::bit_cast<double>(x > 0 ? bits + 1 : bits - 1);
+    return std::abs(x) <= std::numeric_limits<double>::max() ? x + (std::abs(x) * 0x1p-52 + eta) : x;
 }
 inline double down(double x) { return -up(-x); }
 // Upper and lower ends of the exact value.
@@ -81,9 +87,9 @@ struct BoundedVec
 // World coordinates of a local point under (c, s, p), as the exact side defines them.
 template <class T> BoundedVec toWorld(const Transform<T>& xf, Vec2<T> v)
 {
-    const Bounded c = exactly(double(xf.q.c)), s = exactly(double(xf.q.s));
-    const Bounded x = exactly(double(v.x)), y = exactly(double(v.y));
-    return {(c * x - s * y) + exactly(double(xf.p.x)), (s * x + c * y) + exactly(double(xf.p.y))};
+    const double c = double(xf.q.c), s = double(xf.q.s), x = double(v.x), y = double(v.y);
+    return {(mulExact(c, x) - mulExact(s, y)) + exactly(double(xf.p.x)),
+            (mulExact(s, x) + mulExact(c, y)) + exactly(double(xf.p.y))};
 }
 
 struct Interval
@@ -110,9 +116,11 @@ inline double upperNorm(const BoundedVec& p, Bounded w)
 // rounding of m . x is bounded once from the largest |x| + |y| of the shape.
 template <class T> double supportUpper(const Transform<T>& xf, const Vec2<T>* pts, int count, Bounded nx, Bounded ny)
 {
-    const Bounded c = exactly(double(xf.q.c)), s = exactly(double(xf.q.s));
-    const Bounded mx = c * nx + s * ny;
-    const Bounded my = c * ny - s * nx;
+    GJK_CERTIFY_ASSERT(nx.e == 0 && ny.e == 0);
+    // nx, ny are exact (the computed normal's components), so are c and s.
+    const double c = double(xf.q.c), s = double(xf.q.s);
+    const Bounded mx = mulExact(c, nx.v) + mulExact(s, ny.v);
+    const Bounded my = mulExact(c, ny.v) - mulExact(s, nx.v);
     double best = -std::numeric_limits<double>::infinity();
     double extent = 0;
     for (int i = 0; i < count; ++i)
@@ -126,7 +134,7 @@ template <class T> double supportUpper(const Transform<T>& xf, const Vec2<T>* pt
     const double me = std::max(mx.e, my.e);
     const double mmax = std::max(std::abs(mx.v), std::abs(my.v));
     const double scanError = up(up(me + 2.0000001 * u * mmax) * up(extent * (1 + 2 * u)) + 2 * eta);
-    const Bounded np = exactly(double(xf.p.x)) * nx + exactly(double(xf.p.y)) * ny;
+    const Bounded np = mulExact(double(xf.p.x), nx.v) + mulExact(double(xf.p.y), ny.v);
     return up(up(best + scanError) + hi(np));
 }
 
