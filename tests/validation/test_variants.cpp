@@ -44,7 +44,9 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "double-binary-support",
                                           "float-binary-support",
                                           "double-warm",
-                                          "float-warm"};
+                                          "float-warm",
+                                          "double-every-start",
+                                          "float-every-start"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};
@@ -55,6 +57,7 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
         seen.insert(v.name);
         CHECK(v.judged == (judged.count(v.name) == 1));
         CHECK(v.warm == (v.name.find("-warm") != std::string::npos));
+        CHECK(v.everyStart == (v.name.find("-every-start") != std::string::npos));
         CHECK(needsConvexOrder(v) == (v.name.find("binary-support") != std::string::npos));
     }
     for (const auto& n : judged)
@@ -220,4 +223,23 @@ TEST_CASE("bench: timings per variant without the exact side", "[variants][bench
     }
     CHECK(j["variants"]["double"]["ratio_to_double"] == 1.0);
     CHECK_THAT(benchTable(j), Catch::Contains("float-warm") && Catch::Contains("x double"));
+}
+
+TEST_CASE("every-start variants judge the worst answer over many starts", "[variants]")
+{
+    // The talk's walk-through pentagon against the origin (distance exactly 1): every start the
+    // variant tries must agree with the truth, so the worst one is as good as the cold one; and a
+    // wrong truth makes the worst answer the one farthest from it, whatever the start.
+    Case c;
+    c.name = "walk";
+    c.a.points = {{-4, 3}, {-4, 6}, {3, 5}, {3, 1}, {-1, 1}};
+    c.b.points = {{0, 0}};
+    const PreparedCase p = prepare(c);
+    const VariantInfo* v = findVariant("double-every-start");
+    REQUIRE(v != nullptr);
+    REQUIRE(v->everyStart);
+    const auto worst = worstStart<double>(p, *v, 1.0);
+    CHECK(worst.distance == 1.0);
+    const auto far = worstStart<double>(p, *v, 100.0);
+    CHECK(far.distance == 1.0); // every start gives 1: the farthest from 100 is still 1
 }

@@ -287,12 +287,19 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             v.notApplicable = why == kSkipNotConvexOrder;
             continue;
         }
-        if (isFloat)
+        const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
+        if (vi.everyStart)
+        {
+            if (isFloat)
+                fillOutput(worstStart<float>(p, vi, truth.distance), v);
+            else
+                fillOutput(worstStart<double>(p, vi, truth.distance), v);
+        }
+        else if (isFloat)
             fillOutput(query<float>(p, vi), v);
         else
             fillOutput(query<double>(p, vi), v);
 
-        const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
         const bool truthZero = exactIsZero(truth);
         v.truth = truth.distance;
 

@@ -11,6 +11,7 @@
 #include <exact/exact.hpp>
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,39 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
     if (v.warm)
         gjk::distance(in, cache, v.options);
     return gjk::distance(in, cache, v.options, trace);
+}
+
+// VariantInfo::everyStart: the query from every start the variant tries, the answer farthest
+// from `truth` (a non-finite answer is the farthest) returned.
+template <class T>
+gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, double truth)
+{
+    const gjk::DistanceInput<T> in = p.input<T>();
+    const int nA = in.proxyA.count, nB = in.proxyB.count;
+    gjk::DistanceOutput<T> worst = query<T>(p, v); // the cold start
+    double worstError = std::abs(double(worst.distance) - truth);
+    auto consider = [&](const gjk::SimplexCache& start)
+    {
+        gjk::SimplexCache cache = start;
+        const gjk::DistanceOutput<T> o = gjk::distance(in, cache, v.options);
+        const double e = std::abs(double(o.distance) - truth);
+        if (!(e <= worstError)) // NaN counts as worst
+        {
+            worst = o;
+            worstError = e;
+        }
+    };
+    const int strideA = (nA + 11) / 12, strideB = (nB + 11) / 12;
+    for (int i = 0; i < nA; i += strideA)
+        for (int j = 0; j < nB; j += strideB)
+            consider({1, {i, 0, 0}, {j, 0, 0}});
+    // Edges and triangles of index pairs that are rarely adjacent on Z: whatever GJK makes of them,
+    // every cached vertex is a point of Z, so the answer must still be right.
+    consider({2, {0, nA / 2, 0}, {0, nB / 2, 0}});
+    consider({2, {0, nA - 1, 0}, {nB - 1, 0, 0}});
+    consider({3, {0, nA / 3, (2 * nA) / 3}, {0, nB / 3, (2 * nB) / 3}});
+    consider({3, {0, 0, nA - 1}, {0, nB - 1, 0}});
+    return worst;
 }
 
 enum class Misclass

@@ -16,7 +16,7 @@ const std::vector<VariantInfo>& variantTable()
     using F = gjk::Frame;
     using P = gjk::SupportStrategy;
     static const std::vector<VariantInfo> table = {
-        // name, type, options, description, judged (false: comparison variant), warm
+        // name, type, options, description, judged (false: comparison variant), warm, every start
         {"double",                Scalar::Double, gjk::referenceOptions,                 "reference options (talk's edge-perpendicular direction, repeated-support stop, A's local frame)", true},
         {"float",                 Scalar::Float,  gjk::referenceOptions,                 "reference options in single precision", true},
         {"double-closest-point",  Scalar::Double, Options{.direction = D::ClosestPoint}, "naive search direction d = -P (talk: inaccurate on long edges)", false},
@@ -30,6 +30,8 @@ const std::vector<VariantInfo>& variantTable()
         {"float-binary-support",  Scalar::Float,  Options{.support = P::BinarySearch},   "binary-search support in single precision (shapes in convex order only)", true},
         {"double-warm",           Scalar::Double, gjk::referenceOptions,                 "reference options, warm-started: the query repeated with the cache of the first", true, true},
         {"float-warm",            Scalar::Float,  gjk::referenceOptions,                 "warm-started reference options in single precision", true, true},
+        {"double-every-start",    Scalar::Double, gjk::referenceOptions,                 "reference options started from every initial vertex pair and several multi-vertex caches; the worst answer is judged", true, false, true},
+        {"float-every-start",     Scalar::Float,  gjk::referenceOptions,                 "every start in single precision", true, false, true},
     };
     return table;
 }
