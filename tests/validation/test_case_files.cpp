@@ -211,3 +211,18 @@ TEST_CASE("float rounding of a case for the float variants' truth", "[cases]")
     CHECK(e.points[0].x == double(0.1f));
     CHECK(e.points[0].y == double(1e30f));
 }
+
+TEST_CASE("float rounding survives the optimiser: a point's x and y together", "[cases]")
+{
+    // Regression: GCC 12.2 at -O2/-O3 folded `p = {double(float(p[0])), double(float(p[1]))}`
+    // into the identity (its SLP vectorizer pairs the two round trips and drops them), so the
+    // float variants' truth was computed on unrounded doubles. roundedToFloat must round both.
+    ShapeIn s;
+    s.points = {{0.1, 0.2}, {1e30, -0.3}};
+    const ShapeIn r = roundedToFloat(s);
+    CHECK(r.points[0][0] == double(0.1f));
+    CHECK(r.points[0][1] == double(0.2f));
+    CHECK(r.points[1][0] == double(1e30f));
+    CHECK(r.points[1][1] == double(-0.3f));
+    CHECK(r.points[0][0] != 0.1);
+}

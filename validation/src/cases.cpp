@@ -317,18 +317,34 @@ void writeCaseFile(const std::string& path, const std::vector<std::string>& comm
         throw InputError(fmt::format("{}: write failed", path));
 }
 
-exact::Shape toExact(const ShapeIn& s, bool roundToFloat)
+double roundToFloat(double v) { return double(float(v)); }
+
+ShapeIn roundedToFloat(const ShapeIn& s)
 {
-    auto r = [roundToFloat](double v) { return roundToFloat ? double(float(v)) : v; };
+    const auto r = roundToFloat;
+    ShapeIn o = s;
+    for (auto& p : o.points)
+        p = {r(p[0]), r(p[1])};
+    o.radius = r(s.radius);
+    o.px = r(s.px);
+    o.py = r(s.py);
+    o.c = r(s.c);
+    o.s = r(s.s);
+    return o;
+}
+
+exact::Shape toExact(const ShapeIn& in, bool roundToFloat)
+{
+    const ShapeIn s = roundToFloat ? roundedToFloat(in) : in;
     exact::Shape e;
     e.points.reserve(s.points.size());
     for (const auto& p : s.points)
-        e.points.push_back({r(p[0]), r(p[1])});
-    e.radius = r(s.radius);
-    e.px = r(s.px);
-    e.py = r(s.py);
-    e.c = r(s.c);
-    e.s = r(s.s);
+        e.points.push_back({p[0], p[1]});
+    e.radius = s.radius;
+    e.px = s.px;
+    e.py = s.py;
+    e.c = s.c;
+    e.s = s.s;
     return e;
 }
 

@@ -63,6 +63,14 @@ std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::siz
 
 // The exact side's view of a shape; roundToFloat rounds every input double to float first (the
 // input the float variants actually see).
+// double(float(v)), the value a float variant receives. Deliberately not inline: GCC 12.2's SLP
+// vectorizer folds two adjacent double -> float -> double round trips (a point's x and y) into the
+// identity at -O2 and -O3, so `p = {double(float(p[0])), double(float(p[1]))}` silently kept the
+// doubles (reproduced by the test "float rounding of a case for the float variants' truth").
+// A call per value keeps the vectorizer out.
+[[gnu::noinline]] double roundToFloat(double v);
+// Every number of the shape rounded to float (what the float variants receive), as doubles.
+ShapeIn roundedToFloat(const ShapeIn& s);
 exact::Shape toExact(const ShapeIn& s, bool roundToFloat = false);
 // True when every number of the case is finite after rounding to float.
 bool representableInFloat(const Case& c);

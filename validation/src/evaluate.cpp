@@ -16,19 +16,6 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-ShapeIn roundedToFloat(const ShapeIn& s)
-{
-    auto r = [](double v) { return double(float(v)); };
-    ShapeIn o = s;
-    for (auto& p : o.points)
-        p = {r(p[0]), r(p[1])};
-    o.radius = r(s.radius);
-    o.px = r(s.px);
-    o.py = r(s.py);
-    o.c = r(s.c);
-    o.s = r(s.s);
-    return o;
-}
 
 template <class T> std::array<double, 2> d2(gjk::Vec2<T> v)
 {
@@ -325,8 +312,8 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         CaseMetrics m;
         m.R = sc.R;
         m.unitRoundoff = u;
-        m.radiusA = isFloat ? double(float(c.a.radius)) : c.a.radius;
-        m.radiusB = isFloat ? double(float(c.b.radius)) : c.b.radius;
+        m.radiusA = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
+        m.radiusB = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
         m.countA = int(c.a.points.size());
         m.countB = int(c.b.points.size());
         m.exactDistance = truth.distance;

@@ -191,6 +191,20 @@ void bake(ShapeIn& s)
     s.px = s.py = 0;
 }
 
+// Both shapes moved by `offset` along the angle phi, in their transforms or (baked) into their
+// coordinates: a common offset that A's frame cancels, or that nothing can.
+void moveFar(Case& c, double offset, double phi, bool baked)
+{
+    const double ox = offset * std::cos(phi), oy = offset * std::sin(phi);
+    for (ShapeIn* s : {&c.a, &c.b})
+    {
+        s->px += ox;
+        s->py += oy;
+        if (baked)
+            bake(*s);
+    }
+}
+
 // The same rigid map for both shapes: exact contact in local coordinates stays exact contact for
 // the exact side (an affine map preserves incidence in rational arithmetic).
 void sharedPose(Case& c, double cc, double ss, double px, double py)
@@ -273,7 +287,7 @@ void genTalkSegment(Rng& r, int i, Case& c, std::string& tag)
     {
         tag = "float-input";
         for (auto& p : seg.points)
-            p = {double(float(p[0])), double(float(p[1]))};
+            p = {roundToFloat(p[0]), roundToFloat(p[1])};
     }
     else if (i == 11)
     {
@@ -318,15 +332,7 @@ void genFarFromOrigin(Rng& r, int i, Case& c, std::string& tag)
     setPose(c.a, r.range(0, 2 * kPi), 0, 0);
     setPose(c.b, r.range(0, 2 * kPi), 0, 0);
     placeAtGap(c.a, c.b, gap, r);
-    const double phi = r.range(0, 2 * kPi);
-    const double ox = offset * std::cos(phi), oy = offset * std::sin(phi);
-    for (ShapeIn* s : {&c.a, &c.b})
-    {
-        s->px += ox;
-        s->py += oy;
-        if (coords)
-            bake(*s);
-    }
+    moveFar(c, offset, r.range(0, 2 * kPi), coords);
 }
 
 ShapeIn sliverShape(int kind, double w)
@@ -880,15 +886,7 @@ void genOffsetSweep(Rng& r, int i, Case& c, std::string& tag)
         nearParallelBoxes(g, c, gap, g.range(-1, 1), g.range(-1, 1));
     else
         vertexAgainstEdge(g, c, gap, g.range(-1, 1), g.range(-1, 1));
-    const double phi = g.range(0, 2 * kPi);
-    const double ox = offset * std::cos(phi), oy = offset * std::sin(phi);
-    for (ShapeIn* s : {&c.a, &c.b})
-    {
-        s->px += ox;
-        s->py += oy;
-        if (baked)
-            bake(*s);
-    }
+    moveFar(c, offset, g.range(0, 2 * kPi), baked);
     tag = fmt::format("{}-off{:g}-{}", config == 0 ? "near-parallel" : "vertex-edge", offset,
                       baked ? "coords" : "transform");
 }
