@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # Installs the Debian packages this project needs, only when some are missing.
 #   scripts/setup.sh          packages to build and run the validation campaign
-#   scripts/setup.sh --tests  also what the test suite needs (Catch2, Chromium for the browser test)
+#   scripts/setup.sh --tests  also what the test suite alone needs (Chromium and Python for the browser test)
 # Exit codes: 0 everything present (or installed), 3 packages missing and we cannot install them
 # (not root, or no apt-get): the exact command to run is printed.
 set -euo pipefail
 
+# catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev)
+          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2)
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(catch2 chromium python3)
+  packages+=(chromium python3)
 fi
 
 missing=()
