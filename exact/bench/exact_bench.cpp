@@ -80,22 +80,8 @@ std::vector<std::pair<exact::Shape, exact::Shape>> smallCases() {
     return cases;
 }
 
-void small(benchmark::State& state, exact::Route route) {
+void small(benchmark::State& state, exact::Options o) {
     static const auto cases = smallCases();
-    exact::Options o;
-    o.route = route;
-    std::size_t k = 0;
-    for (auto _ : state) {
-        const auto& c = cases[k++ % cases.size()];
-        exact::Result r = exact::distance(c.first, c.second, o);
-        benchmark::DoNotOptimize(r.distance);
-    }
-}
-
-void smallWithExactWitnesses(benchmark::State& state) {
-    static const auto cases = smallCases();
-    exact::Options o;
-    o.exactWitnesses = true;
     std::size_t k = 0;
     for (auto _ : state) {
         const auto& c = cases[k++ % cases.size()];
@@ -117,7 +103,9 @@ void bruteForceSmall(benchmark::State& state) {
 const int registered = [] {
     for (exact::Route route : exact::kAllRoutes) {
         const std::string name = exact::routeName(route);
-        benchmark::RegisterBenchmark(("Small/" + name).c_str(), small, route)->Unit(benchmark::kMicrosecond);
+        exact::Options o;
+        o.route = route;
+        benchmark::RegisterBenchmark(("Small/" + name).c_str(), small, o)->Unit(benchmark::kMicrosecond);
         auto* b = benchmark::RegisterBenchmark(("Pair/" + name).c_str(), pair, route)->Unit(benchmark::kMicrosecond);
         std::vector<int64_t> sizes = {4, 8, 64, 256, 1024, 8192};
         if (route == exact::Route::HullOfDifferences) sizes = {4, 8, 64, 256};
@@ -125,7 +113,9 @@ const int registered = [] {
         for (int64_t n : sizes)
             for (int64_t t : {0, 1}) b->Args({n, t});
     }
-    benchmark::RegisterBenchmark("Small/edge-merge+exact-witnesses", smallWithExactWitnesses)
+    exact::Options witnesses;
+    witnesses.exactWitnesses = true;
+    benchmark::RegisterBenchmark("Small/edge-merge+exact-witnesses", small, witnesses)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Small/brute-force", bruteForceSmall)->Unit(benchmark::kMicrosecond);
     return 0;
