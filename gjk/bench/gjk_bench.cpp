@@ -115,6 +115,28 @@ template <class T> void BM_Random(benchmark::State& state)
         double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
+// The same cold query, but cycling over only the first `pairs` pairs (20,000 queries per pass, as
+// BM_Random). The work per query is the same on average; what changes is that the branch
+// predictor can learn a few hundred queries' branch patterns by heart (the data stay in cache in
+// both: BM_Random's 20,000 pairs take about 6 MB, and a 20,000-pair set whose points come from 500
+// pairs measured the same as BM_Random). The difference to BM_Random is therefore the cost of
+// mispredicted branches in a cold query (docs/speed.md, "Where the time goes").
+template <class T> void BM_RandomLearned(benchmark::State& state)
+{
+    const auto& in = inputs<T>().inputs;
+    const std::size_t pairs = std::size_t(state.range(0));
+    for (auto _ : state)
+    {
+        for (std::size_t k = 0; k < in.size(); ++k)
+        {
+            gjk::SimplexCache cache;
+            benchmark::DoNotOptimize(gjk::distance(in[k % pairs], cache));
+        }
+    }
+    state.counters["ns_per_query"] = benchmark::Counter(
+        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 // The batch entry point over the same pairs (cold), against BM_Random's single-query loop.
 template <class T> void BM_RandomBatch(benchmark::State& state)
 {
@@ -171,6 +193,8 @@ template <class T> void BM_RegularPolygons(benchmark::State& state)
 
 BENCHMARK_TEMPLATE(BM_Random, double)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLearned, double)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLearned, float)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
