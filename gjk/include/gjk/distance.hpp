@@ -38,6 +38,15 @@
 #define GJK_ASSERT(c) assert(c)
 #endif
 
+// The small steps of one GJK iteration (the Minkowski support, the search direction) are forced
+// inline: GCC 12 kept them as calls (a 64-byte SimplexVertex returned through memory), and
+// inlining them measured 7-11 % faster cold and 9 % faster warm (docs/speed.md, stop 9).
+#if defined(__GNUC__)
+#define GJK_INLINE [[gnu::always_inline]] inline
+#else
+#define GJK_INLINE inline
+#endif
+
 namespace gjk
 {
 
@@ -339,7 +348,7 @@ template <class T> struct TransformedShape
 
 // support(Z, d) = support(A, d) - support(B, -d): the Minkowski difference is never built.
 template <class T>
-SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape<T>& B, int iA, int iB)
+GJK_INLINE SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape<T>& B, int iA, int iB)
 {
     SimplexVertex<T> v;
     v.indexA = iA;
@@ -352,7 +361,7 @@ SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape
 }
 
 template <class T>
-SimplexVertex<T> findMinkowskiSupport(TransformedShape<T>& A, TransformedShape<T>& B, Vec2<T> d)
+GJK_INLINE SimplexVertex<T> findMinkowskiSupport(TransformedShape<T>& A, TransformedShape<T>& B, Vec2<T> d)
 {
     return makeVertex(A, B, A.support(d), B.support(-d));
 }
@@ -516,7 +525,7 @@ template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
 }
 
 // The direction from P towards Q = 0 in which to look for the next support point.
-template <class T> Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule)
+template <class T> GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule)
 {
     if (s.count == 1)
         return -s.v[0].w;
