@@ -97,22 +97,33 @@ gjk::Options variant(int v)
     return o;
 }
 
+// Time per query, as a counter: `queries` queries per benchmark iteration.
+void setNsPerQuery(benchmark::State& state, std::size_t queries)
+{
+    state.counters["ns_per_query"] = benchmark::Counter(double(state.iterations()) * double(queries),
+                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// One pass of cold queries: in.size() queries over the first `pairs` inputs, cycling.
+template <class T>
+void coldPass(const std::vector<gjk::DistanceInput<T>>& in, std::size_t pairs, const gjk::Options& o)
+{
+    for (std::size_t k = 0, j = 0; k < in.size(); ++k, j = j + 1 == pairs ? 0 : j + 1) // no division
+    {
+        gjk::SimplexCache cache;
+        benchmark::DoNotOptimize(gjk::distance(in[j], cache, o));
+    }
+}
+
 // Cold query over the whole random set; reports time per query.
 template <class T> void BM_Random(benchmark::State& state)
 {
     const auto& in = inputs<T>().inputs;
     const gjk::Options o = variant(int(state.range(0)));
     for (auto _ : state)
-    {
-        for (const auto& x : in)
-        {
-            gjk::SimplexCache cache;
-            benchmark::DoNotOptimize(gjk::distance(x, cache, o));
-        }
-    }
+        coldPass(in, in.size(), o);
     state.SetItemsProcessed(state.iterations() * int64_t(in.size()));
-    state.counters["ns_per_query"] = benchmark::Counter(
-        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    setNsPerQuery(state, in.size());
 }
 
 // The same cold query, but cycling over only the first `pairs` pairs (20,000 queries per pass, as
@@ -126,15 +137,8 @@ template <class T> void BM_RandomLearned(benchmark::State& state)
     const auto& in = inputs<T>().inputs;
     const std::size_t pairs = std::size_t(state.range(0));
     for (auto _ : state)
-    {
-        for (std::size_t k = 0; k < in.size(); ++k)
-        {
-            gjk::SimplexCache cache;
-            benchmark::DoNotOptimize(gjk::distance(in[k % pairs], cache));
-        }
-    }
-    state.counters["ns_per_query"] = benchmark::Counter(
-        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+        coldPass(in, pairs, gjk::referenceOptions);
+    setNsPerQuery(state, in.size());
 }
 
 // The batch entry point over the same pairs (cold), against BM_Random's single-query loop.
@@ -149,8 +153,7 @@ template <class T> void BM_RandomBatch(benchmark::State& state)
         gjk::distanceBatch<T>(in, caches, out);
         benchmark::DoNotOptimize(out.data());
     }
-    state.counters["ns_per_query"] = benchmark::Counter(
-        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    setNsPerQuery(state, in.size());
 }
 
 // Warm-started repeated query: each pair queried with the cache of its previous query.
@@ -165,8 +168,7 @@ template <class T> void BM_RandomWarm(benchmark::State& state)
         for (size_t i = 0; i < in.size(); ++i)
             benchmark::DoNotOptimize(gjk::distance(in[i], caches[i]));
     }
-    state.counters["ns_per_query"] = benchmark::Counter(
-        double(state.iterations()) * double(in.size()), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    setNsPerQuery(state, in.size());
 }
 
 // Two regular n-gons (vertices in counter-clockwise order), a small gap, cold start.

@@ -40,7 +40,7 @@
 
 // The small steps of one GJK iteration (the Minkowski support, the search direction) are forced
 // inline: GCC 12 kept them as calls (a 64-byte SimplexVertex returned through memory), and
-// inlining them measured 7-11 % faster cold and 9 % faster warm (docs/speed.md, stop 9).
+// inlining them measured 7-11 % faster cold and 5-13 % faster warm (docs/speed.md, stop 9).
 #if defined(__GNUC__)
 #define GJK_INLINE [[gnu::always_inline]] inline
 #else
