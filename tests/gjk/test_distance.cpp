@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <utility>
 #include <vector>
 
 using namespace gjk;
@@ -566,6 +568,72 @@ TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk]
     stale.count = 2;
     stale.indexA[0] = 99;
     CHECK(distance(s.input(), stale).distance == cold.distance);
+}
+
+TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the cold answer, bit for bit",
+                   "[gjk][cache]", float, double)
+{
+    using T = TestType;
+    // The issue "Speed"'s `random` distribution (3 to 8 points on a circle of radius 0.5 to 2,
+    // positions in [-4, 4]^2, any angle). The cache stores a final edge in canonical order, the
+    // origin on the left of w1 -> w2 in Z = A - B, and SimplexCache::edgeBase lets the warm query
+    // measure the distance from the cold query's vertex (distance.hpp). The order is checked in world
+    // coordinates in long double, where that orientation is far from zero (|cross| > 1e-3; the
+    // shapes are of size ~1, so rounding of the frames cannot change its sign).
+    std::mt19937 rng(7);
+    std::uniform_int_distribution<int> count(3, 8);
+    std::uniform_real_distribution<double> radius(0.5, 2.0), angle(0.0, 6.283185307179586), pos(-4.0, 4.0);
+    auto shape = [&](Points<T>& pts, Transform<T>& xf)
+    {
+        const int n = count(rng);
+        const double r = radius(rng);
+        std::vector<double> a(n);
+        for (auto& t : a)
+            t = angle(rng);
+        std::sort(a.begin(), a.end());
+        for (double t : a)
+            pts.push_back({T(r * std::cos(t)), T(r * std::sin(t))});
+        const double q = angle(rng);
+        xf = {{T(pos(rng)), T(pos(rng))}, {T(std::cos(q)), T(std::sin(q))}};
+    };
+    int edges = 0, oriented = 0;
+    for (int k = 0; k < 500; ++k)
+    {
+        Scene<T> s;
+        shape(s.a, s.xfA);
+        shape(s.b, s.xfB);
+        SimplexCache cache;
+        const auto cold = distance(s.input(), cache);
+        if (cache.count == 2)
+        {
+            using L = long double;
+            auto w = [&](int i)
+            {
+                const Vec2<T> pa = s.a[cache.indexA[i]], pb = s.b[cache.indexB[i]];
+                const L ax = L(s.xfA.q.c) * pa.x - L(s.xfA.q.s) * pa.y + s.xfA.p.x;
+                const L ay = L(s.xfA.q.s) * pa.x + L(s.xfA.q.c) * pa.y + s.xfA.p.y;
+                const L bx = L(s.xfB.q.c) * pb.x - L(s.xfB.q.s) * pb.y + s.xfB.p.x;
+                const L by = L(s.xfB.q.s) * pb.x + L(s.xfB.q.c) * pb.y + s.xfB.p.y;
+                return std::pair<L, L>{ax - bx, ay - by};
+            };
+            const auto [x1, y1] = w(0);
+            const auto [x2, y2] = w(1);
+            const L c = (x2 - x1) * -y1 - (y2 - y1) * -x1; // cross(w2 - w1, 0 - w1)
+            if (std::abs(c) > L(1e-3))
+            {
+                ++edges;
+                oriented += c > 0;
+            }
+        }
+        const auto warm = distance(s.input(), cache);
+        CHECK(warm.distance == cold.distance);
+        CHECK(warm.pointA == cold.pointA);
+        CHECK(warm.pointB == cold.pointB);
+        CHECK(warm.normal == cold.normal);
+        CHECK(warm.iterations <= 1);
+    }
+    CHECK(edges > 100);
+    CHECK(oriented == edges);
 }
 
 TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)

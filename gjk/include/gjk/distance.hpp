@@ -25,6 +25,7 @@
 #include <cassert>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 #if defined(GJK2D_CHECKED)
@@ -160,11 +161,17 @@ template <class T> struct Simplex
 
 // Warm start: the indices of the final simplex. A value-initialised cache is a cold start; pass the
 // output cache back in for the next query between the same shapes.
+// A final edge is stored in canonical order, the origin on the left of Z's edge from slot 0 to
+// slot 1: a warm start's first search direction then always takes the same side of its sign test,
+// which the branch predictor learns (warm queries 2-5 % faster, docs/speed.md). `edgeBase` is the
+// slot the distance was measured from (the query's own first vertex), so that a repeated query
+// returns the very same bits as the cold one.
 struct SimplexCache
 {
     int count = 0;
     int indexA[3] = {0, 0, 0};
     int indexB[3] = {0, 0, 0};
+    int edgeBase = 0;
 };
 
 // --- Input, output, trace ------------------------------------------------------------------------
@@ -706,8 +713,10 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     for (int i = 0; cacheValid && i < cache.count; ++i)
         cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < polyA.count &&
                      cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
+    int edgeBase = 0; // the slot of a final edge the distance is measured from (SimplexCache)
     if (cacheValid)
     {
+        edgeBase = cache.count == 2 ? (cache.edgeBase & 1) : 0;
         A.last = cache.indexA[0];
         B.last = cache.indexB[0];
         simplex.count = cache.count;
@@ -812,6 +821,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     // the tiny difference pB - pA.
     T dist = T(0);
     Vec2<T> normal{};
+    bool flipEdge = false;
     if (simplex.count == 1)
     {
         dist = length(simplex.v[0].w);
@@ -820,11 +830,18 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     }
     else if (simplex.count == 2)
     {
-        const Vec2<T> e12 = simplex.v[1].w - simplex.v[0].w;
-        const T len = length(e12);
-        dist = std::abs(cross(simplex.v[0].w, e12)) / len;
+        // flipEdge: the origin is not on the left of w1 -> w2, so the cache stores the edge
+        // reversed (SimplexCache's canonical order, searchDirection's sign test). The normal is
+        // the left perpendicular of the edge in canonical order: the vector searchDirection gives
+        // (rightPerp(e) == leftPerp(-e), exactly). The distance is the height from the vertex at
+        // slot edgeBase; reversing the edge only negates e, so a warm start from the canonical
+        // cache reproduces the cold query's bits.
+        const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
+        flipEdge = !(cross(e, -simplex.v[0].w) > T(0));
+        const T len = length(e);
+        dist = std::abs(cross(edgeBase ? simplex.v[1].w : simplex.v[0].w, e)) / len;
         if (dist > T(0))
-            normal = (T(1) / len) * searchDirection(simplex, SearchDirection::EdgePerpendicular);
+            normal = (T(1) / len) * leftPerp(flipEdge ? -e : e);
     }
 
     if (options.useRadii && (polyA.radius > T(0) || polyB.radius > T(0)))
@@ -866,6 +883,12 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     {
         cache.indexA[i] = simplex.v[i].indexA;
         cache.indexB[i] = simplex.v[i].indexB;
+    }
+    cache.edgeBase = simplex.count == 2 ? edgeBase ^ int(flipEdge) : 0;
+    if (flipEdge)
+    {
+        std::swap(cache.indexA[0], cache.indexA[1]);
+        std::swap(cache.indexB[0], cache.indexB[1]);
     }
     return out;
 }
