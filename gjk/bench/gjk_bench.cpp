@@ -3,43 +3,23 @@
 // 2, positions in [-4, 4]^2, random rotations), from a fixed seed, so runs are comparable.
 //   build/release/gjk/gjk_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include "gjk/distance.hpp"
+#include "random_shapes.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace
 {
-struct ShapeData
-{
-    std::vector<gjk::Vec2<double>> points;
-    gjk::Transform<double> xf;
-};
+using gjk::bench::randomShape;
+using ShapeData = gjk::bench::ShapeData<double>;
 
 struct Pair
 {
     ShapeData a, b;
 };
-
-ShapeData randomShape(std::mt19937_64& rng)
-{
-    std::uniform_int_distribution<int> count(3, 8);
-    std::uniform_real_distribution<double> radius(0.5, 2.0), angle(0.0, 2 * M_PI), pos(-4.0, 4.0);
-    ShapeData s;
-    const int n = count(rng);
-    const double r = radius(rng);
-    std::vector<double> angles(n);
-    for (auto& t : angles)
-        t = angle(rng);
-    std::sort(angles.begin(), angles.end());
-    for (double t : angles)
-        s.points.push_back({r * std::cos(t), r * std::sin(t)});
-    const double q = angle(rng);
-    s.xf = {{pos(rng), pos(rng)}, {std::cos(q), std::sin(q)}};
-    return s;
-}
 
 const std::vector<Pair>& randomPairs()
 {
@@ -75,12 +55,10 @@ template <class T> const Converted<T>& inputs()
             gjk::Transform<T>* xfs[2] = {&in.transformA, &in.transformB};
             for (int k = 0; k < 2; ++k)
             {
-                auto& pts = out.storage.emplace_back();
-                for (auto v : shapes[k]->points)
-                    pts.push_back({T(v.x), T(v.y)});
+                auto shape = gjk::bench::converted<T>(*shapes[k]);
+                auto& pts = out.storage.emplace_back(std::move(shape.points));
                 *polys[k] = {pts.data(), int(pts.size()), T(0)};
-                const auto& xf = shapes[k]->xf;
-                *xfs[k] = {{T(xf.p.x), T(xf.p.y)}, {T(xf.q.c), T(xf.q.s)}};
+                *xfs[k] = shape.xf;
             }
             out.inputs.push_back(in);
         }

@@ -2,6 +2,7 @@
 // numerical issues the talk lists, witness points, radii, transforms, warm start, and the
 // symmetries every distance must have. Expected values are derived by hand beside each case.
 #include "gjk/distance.hpp"
+#include "random_shapes.hpp" // gjk/bench: the issue "Speed"'s random distribution
 
 #include <catch2/catch.hpp>
 
@@ -574,27 +575,17 @@ TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the col
                    "[gjk][cache]", float, double)
 {
     using T = TestType;
-    // The issue "Speed"'s `random` distribution (3 to 8 points on a circle of radius 0.5 to 2,
-    // positions in [-4, 4]^2, any angle). The cache stores a final edge in canonical order, the
+    // The issue "Speed"'s `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a final edge in canonical order, the
     // origin on the left of w1 -> w2 in Z = A - B, and SimplexCache::edgeBase lets the warm query
     // measure the distance from the cold query's vertex (distance.hpp). The order is checked in world
     // coordinates in long double, where that orientation is far from zero (|cross| > 1e-3; the
     // shapes are of size ~1, so rounding of the frames cannot change its sign).
-    std::mt19937 rng(7);
-    std::uniform_int_distribution<int> count(3, 8);
-    std::uniform_real_distribution<double> radius(0.5, 2.0), angle(0.0, 6.283185307179586), pos(-4.0, 4.0);
+    std::mt19937_64 rng(7);
     auto shape = [&](Points<T>& pts, Transform<T>& xf)
     {
-        const int n = count(rng);
-        const double r = radius(rng);
-        std::vector<double> a(n);
-        for (auto& t : a)
-            t = angle(rng);
-        std::sort(a.begin(), a.end());
-        for (double t : a)
-            pts.push_back({T(r * std::cos(t)), T(r * std::sin(t))});
-        const double q = angle(rng);
-        xf = {{T(pos(rng)), T(pos(rng))}, {T(std::cos(q)), T(std::sin(q))}};
+        auto s = bench::converted<T>(bench::randomShape(rng));
+        pts = std::move(s.points);
+        xf = s.xf;
     };
     int edges = 0, oriented = 0;
     for (int k = 0; k < 500; ++k)
