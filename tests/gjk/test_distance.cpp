@@ -575,10 +575,11 @@ TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the col
                    "[gjk][cache]", float, double)
 {
     using T = TestType;
-    // The issue "Speed"'s `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a final edge in canonical order, the
-    // origin on the left of w1 -> w2 in Z = A - B, and SimplexCache::edgeBase lets the warm query
-    // measure the distance from the cold query's vertex (distance.hpp). The order is checked in world
-    // coordinates in long double, where that orientation is far from zero (|cross| > 1e-3; the
+    // The issue "Speed"'s `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a
+    // final edge in canonical order, the origin on the left of w1 -> w2 in Z = A - B, and
+    // SimplexCache::edgeBase lets the warm query measure the distance from the cold query's vertex
+    // (distance.hpp). The order is checked in world coordinates in long double, independently of
+    // the library's frame, where that orientation is far from zero (|cross| > 1e-3; the
     // shapes are of size ~1, so rounding of the frames cannot change its sign).
     std::mt19937_64 rng(7);
     auto shape = [&](Points<T>& pts, Transform<T>& xf)

@@ -531,6 +531,10 @@ template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
     }
 }
 
+// Whether the origin lies strictly on the left of the edge w1 -> w1 + e12: the talk's sign test
+// for the edge search direction, and the canonical order of a cached edge (SimplexCache).
+template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12) { return cross(e12, -w1) > T(0); }
+
 // The direction from P towards Q = 0 in which to look for the next support point.
 template <class T> GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule)
 {
@@ -542,8 +546,7 @@ template <class T> GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, Searc
     // whichever has dot(d, Q - w1) > 0. When the origin is on the edge (cases 3b and 4) the sign is
     // arbitrary: we take rightPerp, and the loop ends by a repeated vertex or containment.
     const Vec2<T> e12 = s.v[1].w - s.v[0].w;
-    const T sgn = cross(e12, -s.v[0].w);
-    return sgn > T(0) ? leftPerp(e12) : rightPerp(e12);
+    return originOnLeft(s.v[0].w, e12) ? leftPerp(e12) : rightPerp(e12);
 }
 
 // Closest points on A and B from the barycentric weights (talk section 4, "Closest point on
@@ -837,7 +840,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         // slot edgeBase; reversing the edge only negates e, so a warm start from the canonical
         // cache reproduces the cold query's bits.
         const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
-        flipEdge = !(cross(e, -simplex.v[0].w) > T(0));
+        flipEdge = !originOnLeft(simplex.v[0].w, e);
         const T len = length(e);
         dist = std::abs(cross(edgeBase ? simplex.v[1].w : simplex.v[0].w, e)) / len;
         if (dist > T(0))
