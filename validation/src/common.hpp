@@ -21,10 +21,39 @@ class InputError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
-// Exit codes of gjk-validate (docs/validation.md).
-inline constexpr int kExitPass = 0;  // every case within its variant's bound
-inline constexpr int kExitFail = 1;  // some case failed (error beyond bound, non-finite, limit)
-inline constexpr int kExitInput = 2; // usage or input error (bad file, bad option, rejected case)
+// Exit codes of gjk-validate: the one home of their meanings. The --help footer and the table
+// in docs/validation.md are written from kExitCodeTable (a test compares the docs with it).
+inline constexpr int kExitPass = 0;     // every case within its variant's bound
+inline constexpr int kExitFail = 1;     // some case failed (error beyond bound, non-finite, limit)
+inline constexpr int kExitInput = 2;    // usage or input error (bad file, bad option, rejected case)
+inline constexpr int kExitSetup = 3;    // scripts/setup.sh only: missing Debian packages, not root
+inline constexpr int kExitInternal = 4; // a broken invariant of gjk2d itself (a bug, not the input)
+inline constexpr int kExitResources = 5; // out of memory, or writing the outputs failed
+
+struct ExitCodeInfo
+{
+    int code;
+    const char* meaning; // one sentence, plain text (the --help footer wraps it)
+};
+
+inline constexpr ExitCodeInfo kExitCodeTable[] = {
+    {kExitPass, "pass: every case is within its judged variant's error bound and every family "
+                "make-up check holds (run); success (other commands). Comparison variants' "
+                "failures are reported, never judged."},
+    {kExitFail, "some case failed for a judged variant (error beyond the bound, misclassification "
+                "beyond it, non-finite output, iteration limit, a certified interval missing the "
+                "truth), or a family make-up check failed."},
+    {kExitInput, "usage or input error: a bad option or argument, an unreadable or invalid case "
+                 "file, an unknown case name, an output path that cannot be used, a run too large "
+                 "for this machine's memory (all detected before any work starts); also rejected "
+                 "cases (the report is still written, the other cases still run)."},
+    {kExitSetup, "used only by scripts/setup.sh: missing Debian packages and not root."},
+    {kExitInternal, "internal error: a broken invariant of gjk2d itself (std::logic_error or any "
+                    "unexpected exception), printed as 'gjk-validate: internal error: ...'. A bug "
+                    "to report, never a verdict on the input."},
+    {kExitResources, "out of resources: out of memory, or writing the outputs failed (disk full); "
+                     "a previous report or output file stays in place, whole."},
+};
 
 // A double as the report writes it: a JSON number when finite, else "inf", "-inf" or "nan".
 inline Json num(double v)
