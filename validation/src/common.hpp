@@ -1,4 +1,5 @@
-// Shared vocabulary of the validation runner: the JSON type, the input error, number helpers.
+// Shared vocabulary of the validation runner: the JSON type, the input error, number and
+// string helpers.
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -7,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace gjkval
 {
@@ -74,6 +76,85 @@ inline Json optNum(double v)
 inline Json pt(double x, double y)
 {
     return Json::array({num(x), num(y)});
+}
+
+// Length in bytes of the valid UTF-8 sequence that starts at s[i], or 0 when the bytes there are
+// not valid UTF-8 (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF).
+inline std::size_t utf8SequenceLength(std::string_view s, std::size_t i)
+{
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned c = byte(i);
+    if (c < 0x80)
+        return 1;
+    std::size_t n = 0;
+    unsigned lo = 0x80, hi = 0xBF; // range of the second byte
+    if (c >= 0xC2 && c <= 0xDF)
+        n = 2;
+    else if (c == 0xE0)
+        n = 3, lo = 0xA0;
+    else if (c == 0xED)
+        n = 3, hi = 0x9F;
+    else if (c >= 0xE1 && c <= 0xEF)
+        n = 3;
+    else if (c == 0xF0)
+        n = 4, lo = 0x90;
+    else if (c >= 0xF1 && c <= 0xF3)
+        n = 4;
+    else if (c == 0xF4)
+        n = 4, hi = 0x8F;
+    else
+        return 0;
+    if (s.size() - i < n || byte(i + 1) < lo || byte(i + 1) > hi)
+        return 0;
+    for (std::size_t k = 2; k < n; ++k)
+        if (byte(i + k) < 0x80 || byte(i + k) > 0xBF)
+            return 0;
+    return n;
+}
+
+// True when s is valid UTF-8: nlohmann's dump() throws type_error 316 on anything else.
+inline bool isValidUtf8(std::string_view s)
+{
+    for (std::size_t i = 0, n = 0; i < s.size(); i += n)
+        if ((n = utf8SequenceLength(s, i)) == 0)
+            return false;
+    return true;
+}
+
+// How a message quotes a user-provided string: at most about maxBytes bytes of it, valid UTF-8
+// and printable whatever the input. Control characters (C0, DEL, C1) and bytes that are not valid
+// UTF-8 become \xHH, a backslash becomes \\; when cut, "... (N bytes)" follows with the total
+// length. Never quote a user's string or JSON value any other way (issue 12: a 200 MB value was
+// echoed whole, a deep one crashed the dump).
+inline std::string excerpt(std::string_view s, std::size_t maxBytes = 60)
+{
+    static constexpr char kHex[] = "0123456789ABCDEF";
+    std::string out;
+    std::size_t i = 0;
+    while (i < s.size())
+    {
+        const std::size_t n = utf8SequenceLength(s, i);
+        const unsigned c = static_cast<unsigned char>(s[i]);
+        const bool c1 = n == 2 && c == 0xC2 && static_cast<unsigned char>(s[i + 1]) < 0xA0;
+        std::string piece;
+        if (n == 0 || c < 0x20 || c == 0x7F || c1)
+            for (std::size_t k = 0; k < (n == 0 ? 1 : n); ++k)
+            {
+                const unsigned b = static_cast<unsigned char>(s[i + k]);
+                piece += {'\\', 'x', kHex[b >> 4], kHex[b & 15]};
+            }
+        else if (c == '\\')
+            piece = "\\\\";
+        else
+            piece = s.substr(i, n);
+        if (out.size() + piece.size() > maxBytes)
+            break;
+        out += piece;
+        i += n == 0 ? 1 : n;
+    }
+    if (i < s.size())
+        out += "... (" + std::to_string(s.size()) + " bytes)";
+    return out;
 }
 
 // SplitMix64: the families' deterministic generator (same seed, same cases, on any machine).
