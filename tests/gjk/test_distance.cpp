@@ -628,6 +628,40 @@ TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the col
     CHECK(oriented == edges);
 }
 
+TEST_CASE("warm start: a repeat after a culled support point gives the cold answer, bit for bit",
+          "[gjk][cache]")
+{
+    // Regression (issue 12, defect 7, found by the fuzzer): B has a vertex at 3.6e18, so the
+    // triangle of the last iteration is nearly degenerate and rounding makes solve3 cull the vertex
+    // that the next support search finds again: the cold query stops (repeated support) on an edge
+    // that does not contain it and answers 0 for an exact distance of 0.6013 (the error bound
+    // excuses it: ~1.5e4). A warm start from a cache holding only that edge searched on and found
+    // 0.60127678468122: not the cold query's bits, as docs/gjk.md promised. The cache now keeps the
+    // simplex before that last solve, which the warm start solves exactly as the cold query did.
+    using T = double;
+    Scene<T> s;
+    s.a = {{0.0099668502807617188, -0.7109375}};
+    s.xfA = {{-4.7393143177032471e-05, -1.862645149230957e-07}, {0.54540534970280896, 0.83817241932406528}};
+    s.b = {{-0.7109375, 6.7949295043945312e-06},
+           {-5.5511151231257827e-15, -3.5809246537129656e+18},
+           {0, -1.0103029524088925e-14},
+           {1.6200374375330284e-12, 1.4551471139157002e-11},
+           {1.9775847626135601e-16, -8.6736173798840355e-19}};
+    SimplexCache cache;
+    const auto cold = distance(s.input(), cache);
+    REQUIRE(cold.stop == StopReason::RepeatedSupport);
+    CHECK(cache.count == 3); // the culled repeat: the triangle before the last solve
+    for (int repeat = 0; repeat < 2; ++repeat)
+    {
+        const auto warm = distance(s.input(), cache);
+        CHECK(warm.distance == cold.distance);
+        CHECK(warm.pointA == cold.pointA);
+        CHECK(warm.pointB == cold.pointB);
+        CHECK(warm.normal == cold.normal);
+        CHECK(warm.stop == cold.stop);
+    }
+}
+
 TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)
 {
     using T = TestType;
@@ -728,25 +762,92 @@ TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][cert
     }
 }
 
-TEMPLATE_TEST_CASE("range: support points too large for the type are flagged", "[gjk][range]", float, double)
+TEST_CASE("certified interval: an overflow is never certified", "[gjk][certify][range]")
+{
+    // Regression (issue 12, defect 2). Points near 1.5e308 rotated by 45 degrees: the world
+    // coordinates overflow (c*x - s*y > max double), inf - inf = NaN, and std::max(0, NaN) == 0
+    // made the interval a certified [0, 0] for an exact distance near 1e307: in local coordinates
+    // A - B = (0, dy), dy = -1.4e308 - -1.5e308 as doubles (exact, by Sterbenz's lemma), of length
+    // dy |q| with |q| = 1 within 2e-16, less A's radius 1 (by hand). The interval must contain
+    // that or say it could not certify.
+    const double c = 0.7071067811865476;
+    Scene<double> s;
+    s.a = {{1.5e308, -1.4e308}};
+    s.radiusA = 1;
+    s.b = {{1.5e308, -1.5e308}};
+    s.xfA.q = {c, c};
+    s.xfB.q = {c, c};
+    Options o;
+    o.certify = true;
+    const auto out = query(s, o);
+    const double dy = s.a[0].y - s.b[0].y;
+    const double truthLow = dy * (1 - 1e-15), truthHigh = dy * (1 + 1e-15);
+    if (out.certified)
+    {
+        CHECK(out.lower <= truthLow);
+        CHECK(out.upper >= truthHigh);
+    }
+    else
+    {
+        CHECK(out.lower == 0);
+        CHECK(out.upper == std::numeric_limits<double>::infinity());
+    }
+    // The distance itself is answered by the rescaled query, within the error bound's order
+    // (u R with R = 1.5e308, 15 times the distance: a relative 1e-13 is ample).
+    CHECK(out.rescaled);
+    CHECK_FALSE(out.outOfRange);
+    CHECK(out.distance >= dy * (1 - 1e-13));
+    CHECK(out.distance <= dy * (1 + 1e-13));
+}
+
+TEMPLATE_TEST_CASE("range: out-of-range queries are rescaled and answered exactly",
+                   "[gjk][range]", float, double)
 {
     using T = TestType;
+    // Triangle (0,0) (1,0) (0,1) against the point (3,0): distance 2, witness (1,0) on A, by hand.
+    // Scaled by a power of two the exact answer scales exactly, so the rescaled query must give
+    // 2 * scale bit for bit.
     Scene<T> s;
     s.a = {{0, 0}, {1, 0}, {0, 1}};
     s.b = {{3, 0}};
-    CHECK_FALSE(query(s).outOfRange);
-    // Scaled by 2^(max_exponent/2 + 2): the products of two coordinates would overflow.
-    const T big = std::ldexp(T(1), std::numeric_limits<T>::max_exponent / 2 + 2);
-    for (auto* pts : {&s.a, &s.b})
-        for (auto& p : *pts)
-            p = big * p;
+    const auto plain = query(s);
+    CHECK_FALSE(plain.outOfRange);
+    CHECK_FALSE(plain.rescaled);
+    REQUIRE(plain.distance == T(2));
+    const int big = std::numeric_limits<T>::max_exponent / 2 + 2;  // products would overflow
+    const int tiny = std::numeric_limits<T>::min_exponent / 2 - 4; // products would underflow
+    const int subnormal = std::numeric_limits<T>::min_exponent - 4;
+    for (int e : {big, tiny, subnormal, std::numeric_limits<T>::max_exponent - 3})
+    {
+        INFO("scale 2^" << e);
+        Scene<T> t = s;
+        for (auto* pts : {&t.a, &t.b})
+            for (auto& p : *pts)
+                p = {std::ldexp(p.x, e), std::ldexp(p.y, e)};
+        const auto out = query(t);
+        CHECK(out.rescaled);
+        CHECK_FALSE(out.outOfRange);
+        CHECK(out.distance == std::ldexp(T(2), e));
+        CHECK(out.pointA.x == std::ldexp(T(1), e));
+        CHECK(out.pointA.y == T(0));
+        CHECK(out.normal.x == T(1));
+    }
+}
+
+TEMPLATE_TEST_CASE("range: points spanning more than the exponent range stay flagged",
+                   "[gjk][range]", float, double)
+{
+    using T = TestType;
+    // A tiny triangle and a tiny point, 2^(0.8 emin) in size, with a far point of B at 2^(0.8 emax)
+    // that is never a support point: the tiny support points leave the safe range (their products
+    // underflow), and scaling the far point to 1 would scale the tiny ones below the smallest
+    // subnormal. Rescaling cannot help: the query must stay flagged.
+    const T tiny = std::ldexp(T(1), std::numeric_limits<T>::min_exponent * 4 / 5);
+    const T huge = std::ldexp(T(1), std::numeric_limits<T>::max_exponent * 4 / 5);
+    Scene<T> s;
+    s.a = {{0, 0}, {tiny, 0}, {0, tiny}};
+    s.b = {{3 * tiny, 0}, {huge, 0}};
     CHECK(query(s).outOfRange);
-    // Scaled far down instead: products underflow.
-    const T tiny = std::ldexp(T(1), std::numeric_limits<T>::min_exponent / 2 - 4);
-    Scene<T> t;
-    t.a = {{0, 0}, {tiny, 0}, {0, tiny}};
-    t.b = {{3 * tiny, 0}};
-    CHECK(query(t).outOfRange);
 }
 
 TEMPLATE_TEST_CASE("binary-search support agrees with the linear scan on convex polygons",
@@ -859,7 +960,7 @@ TEMPLATE_TEST_CASE("batch: the same results as single queries", "[gjk][batch]", 
     }
 }
 
-TEMPLATE_TEST_CASE("range: overflowing support scans are flagged even when the simplex is in range",
+TEMPLATE_TEST_CASE("range: overflowing support scans are caught even when the simplex is in range",
                    "[gjk][range]", float, double)
 {
     using T = TestType;
@@ -876,8 +977,11 @@ TEMPLATE_TEST_CASE("range: overflowing support scans are flagged even when the s
     Scene<T> s;
     s.a = {{0, 0}, {-side, 0}, {-side, -side}, {0, -side}};
     s.b = {{gap, 0}, {gap + side, 0}, {gap + side, -side}, {gap, -side}};
+    // Since issue 12 the query is rescaled (by 2^-(e + 9) or so) and answered exactly: the gap.
     const auto out = query(s);
-    CHECK(out.outOfRange);
+    CHECK(out.rescaled);
+    CHECK_FALSE(out.outOfRange);
+    CHECK(out.distance == gap);
 }
 
 TEST_CASE("the duality-gap rule stops early on near-parallel edges (why it is not the reference)",

@@ -192,3 +192,34 @@ TEMPLATE_TEST_CASE("solve3: a collinear (zero-area) triangle still picks a verte
         CHECK(closestPoint(s) == Vec2<T>{0, 0});
     }
 }
+
+TEMPLATE_TEST_CASE("solve3: overflowing barycentric coordinates still leave an edge or a vertex",
+                   "[solve3][range]", float, double)
+{
+    using T = TestType;
+    // Regression (issue 12, defect 1). Triangles found by a random search over coordinates of
+    // 1e150..1e300 (double) and 1e17..1e38 (float), where every segment and triangle coordinate
+    // overflows to inf or NaN: no region test passes, and in the fallback every edge's squared
+    // distance is inf or NaN, so "dot(c, c) < bestDist2" never held and the simplex was left with
+    // count 0 and uninitialised weights (valgrind saw the reads; the campaign's report depended on
+    // the thread count). The fallback now keeps edge w1w2 unless another is strictly closer. What
+    // matters is that the simplex is valid (one or two of the input vertices), not which edge: the
+    // query flags such inputs and answers them rescaled.
+    const bool isFloat = std::is_same_v<T, float>;
+    auto s = isFloat ? triangle<T>({T(2.17408303e+19), T(8.60676328e+19)},
+                                   {T(-6.7586342e+19), T(5.91416134e+19)},
+                                   {T(1.01573228e+24), T(4.57676748e+24)})
+                     : triangle<T>({T(2.1740825697870591e+154), T(8.60676308577045e+154)},
+                                   {T(-6.7586340546512837e+154), T(5.9141616201153037e+154)},
+                                   {T(1.0157322278472546e+159), T(4.5767674465201981e+159)});
+    const Simplex<T> before = s;
+    solve3(s);
+    REQUIRE((s.count == 1 || s.count == 2));
+    for (int i = 0; i < s.count; ++i)
+    {
+        bool fromInput = false;
+        for (int j = 0; j < 3; ++j)
+            fromInput = fromInput || (s.v[i].indexA == before.v[j].indexA && s.v[i].w == before.v[j].w);
+        CHECK(fromInput);
+    }
+}

@@ -193,12 +193,18 @@ template <class T> struct DistanceOutput
     int iterations = 0;  // support points computed
     int simplexCount = 0;
     StopReason stop = StopReason::RepeatedSupport;
-    // The query left its safe range: a support point had a coordinate outside
-    // [Tolerances<T>::minCoordinate, maxCoordinate] (all of them below the minimum, or any above
-    // the maximum), or a support scan's dot products overflowed (shape points far larger than the
-    // simplex). The distance is not trustworthy: scale the problem (by a power of two).
+    // The query left its safe range and rescaling could not bring it back: a support point had a
+    // coordinate outside [Tolerances<T>::minCoordinate, maxCoordinate] (all of them below the
+    // minimum, or any above the maximum), or a support scan's dot products overflowed, and the
+    // rescaled retry too (the problem's points span more than the exponent range, so scaling lost
+    // bits of some). The distance is not trustworthy.
     bool outOfRange = false;
+    // The first pass left the safe range and the query ran again on the problem scaled by a power
+    // of two (exact): the answer is then as accurate as in range. outOfRange stays set only when
+    // that could not help.
+    bool rescaled = false;
     // Options::certify: the exact distance lies in [lower, upper] (double, rounded outwards).
+    // certified is false when the bounds could not be computed (an overflow): [0, inf] then.
     bool certified = false;
     double lower = 0;
     double upper = std::numeric_limits<double>::infinity();
@@ -219,6 +225,8 @@ template <class T> struct TraceStep
 template <class T> struct Trace
 {
     Transform<T> frame; // world from compute frame
+    // Compute-frame coordinates are the frame's times 2^scaleExponent (a rescaled query; 0 else).
+    int scaleExponent = 0;
     std::vector<TraceStep<T>> steps;
 };
 
@@ -320,6 +328,73 @@ template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
     return best;
 }
 
+// --- Rescaling: any finite input whose extent fits the exponent range gets an answer -----------
+//
+// Multiplying every point and translation by a power of two 2^k scales the problem exactly (no
+// rounding, unless a value over- or underflows), and every rounding of the query with it: the
+// answer of the scaled problem times 2^-k is the answer the query would give if the exponent range
+// were unbounded. A query whose support points leave Tolerances<T>'s safe range is run once more,
+// scaled so that its extent is about 1 (issue 12: two separated shapes at a scale of 1e-300 were
+// answered 0).
+
+// v * 2^k; `inexact` is set when that loses bits (overflow or gradual underflow).
+template <class T> T scaleExactly(T v, int k, bool& inexact)
+{
+    const T s = std::ldexp(v, k);
+    inexact = inexact || std::ldexp(s, -k) != v;
+    return s;
+}
+
+// Exponent e with 2^e <= m < 2^(e+1) for finite m > 0; a very negative sentinel for 0 (or NaN).
+template <class T> int exponentOf(T m)
+{
+    return m > T(0) && m <= std::numeric_limits<T>::max() ? std::ilogb(m) : -4 * std::numeric_limits<T>::max_exponent;
+}
+
+// A support scan compares dot(d, p) over the shape's own (unscaled) points. On a rescaled query we
+// scale d instead of every point (only comparisons are made, so any positive factor of d gives the
+// same support point in exact arithmetic), choosing |d| ~ 2^e with e the points' scaling exponent
+// (the points are about 2^-e in size), clamped so that d stays normal: the products dot(d, p) of the largest points are then of
+// order 1, neither overflowing nor lost to underflow.
+template <class T> Vec2<T> directionForScan(Vec2<T> d, int e)
+{
+    constexpr int limit = std::numeric_limits<T>::max_exponent - std::numeric_limits<T>::digits;
+    e = std::clamp(e, -limit, limit);
+    const int ed = exponentOf(std::max(std::abs(d.x), std::abs(d.y)));
+    if (ed < std::numeric_limits<T>::min_exponent - std::numeric_limits<T>::digits)
+        return d; // zero (the scan then keeps vertex 0)
+    return {std::ldexp(d.x, e - ed), std::ldexp(d.y, e - ed)};
+}
+
+// The k that brings the compute frame's extent to about 1: minus the largest exponent among the
+// points (times the rotations' size, which (c, s) need not be 1) and the translations. Computed on
+// exponents, so that sizes beyond the floating-point range (1e300 * 1e300) cannot overflow.
+// 0 when everything is zero.
+template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& xfA, const Polygon<T>& B,
+                                      const Transform<T>& xfB, Frame frame)
+{
+    auto pointsExp = [](const Polygon<T>& p)
+    {
+        T m = T(0);
+        for (int i = 0; i < p.count; ++i)
+            m = std::max({m, std::abs(p.points[i].x), std::abs(p.points[i].y)});
+        return exponentOf(m);
+    };
+    auto rotExp = [](Rot<T> q) { return exponentOf(std::max(std::abs(q.c), std::abs(q.s))) + 1; };
+    auto vecExp = [](Vec2<T> v) { return exponentOf(std::max(std::abs(v.x), std::abs(v.y))); };
+    int e;
+    if (frame == Frame::LocalA)
+    {
+        // A's points as they are; B's through both rotations; the offset pB - pA through qA.
+        e = std::max(pointsExp(A), pointsExp(B) + rotExp(xfA.q) + rotExp(xfB.q));
+        e = std::max(e, std::max(vecExp(xfA.p), vecExp(xfB.p)) + 1 + rotExp(xfA.q));
+    }
+    else
+        e = std::max({pointsExp(A) + rotExp(xfA.q), pointsExp(B) + rotExp(xfB.q), vecExp(xfA.p),
+                      vecExp(xfB.p)});
+    return e < std::numeric_limits<T>::min_exponent - 2 * std::numeric_limits<T>::digits - 8 ? 0 : -e;
+}
+
 // A shape seen through a transform into the compute frame: the support runs on the shape's own
 // points with the direction rotated into its frame; only the chosen point is transformed.
 // In A's frame, A itself needs no transform: `identity` skips it (bit-identical result, since
@@ -334,9 +409,16 @@ template <class T> struct TransformedShape
     int last = 0;          // previous support index: where the galloping search starts
     bool overflow = false; // a support scan's products overflowed (DistanceOutput::outOfRange)
 
+    // Rescaled retry (DistanceOutput::rescaled): every point is multiplied by 2^scale, exact unless
+    // it underflows (then `inexact` is set and the query stays flagged outOfRange). 0: no scaling.
+    int scale = 0;
+    bool inexact = false;
+
     int support(Vec2<T> d)
     {
-        const Vec2<T> local = identity ? d : invRotate(xf.q, d);
+        Vec2<T> local = identity ? d : invRotate(xf.q, d);
+        if (scale != 0)
+            local = directionForScan(local, scale);
         if (!binary)
         {
             bool finite;
@@ -350,12 +432,18 @@ template <class T> struct TransformedShape
         overflow = overflow || !(std::max(std::abs(p.x), std::abs(p.y)) <= Tolerances<T>::maxCoordinate);
         return last;
     }
-    Vec2<T> vertex(int i) const { return identity ? poly.points[i] : transformPoint(xf, poly.points[i]); }
+    Vec2<T> vertex(int i)
+    {
+        Vec2<T> p = poly.points[i];
+        if (scale != 0)
+            p = {scaleExactly(p.x, scale, inexact), scaleExactly(p.y, scale, inexact)};
+        return identity ? p : transformPoint(xf, p);
+    }
 };
 
 // support(Z, d) = support(A, d) - support(B, -d): the Minkowski difference is never built.
 template <class T>
-GJK_INLINE SimplexVertex<T> makeVertex(const TransformedShape<T>& A, const TransformedShape<T>& B, int iA, int iB)
+GJK_INLINE SimplexVertex<T> makeVertex(TransformedShape<T>& A, TransformedShape<T>& B, int iA, int iB)
 {
     SimplexVertex<T> v;
     v.indexA = iA;
@@ -498,23 +586,27 @@ template <class T> void solve3(Simplex<T>& s)
 
     // Rounding made the nine signs inconsistent (a nearly degenerate triangle): no region matched.
     // Keep the closest of the three edges, each solved as in section 1. Never divides by the area.
+    // The first edge is kept unless a later one is strictly closer: when every squared distance
+    // overflows (inf or NaN compare false), edge w1w2 is kept, never an unset simplex (issue 12:
+    // coordinates near 1e265 left the simplex empty and its weights uninitialised).
     Simplex<T> best;
-    T bestDist2 = std::numeric_limits<T>::infinity();
+    T bestDist2 = T(0);
     const int pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-    for (const auto& p : pairs)
+    for (int k = 0; k < 3; ++k)
     {
         Simplex<T> e;
-        e.v[0] = s.v[p[0]];
-        e.v[1] = s.v[p[1]];
+        e.v[0] = s.v[pairs[k][0]];
+        e.v[1] = s.v[pairs[k][1]];
         e.count = 2;
         solve2(e);
         const Vec2<T> c = e.count == 1 ? e.v[0].w : e.v[0].a * e.v[0].w + e.v[1].a * e.v[1].w;
-        if (dot(c, c) < bestDist2)
+        if (k == 0 || dot(c, c) < bestDist2)
         {
             bestDist2 = dot(c, c);
             best = e;
         }
     }
+    GJK_ASSERT(best.count == 1 || best.count == 2);
     s = best;
 }
 
@@ -659,9 +751,25 @@ void certifyDistance(const DistanceInput<T>& in, const Simplex<T>& s, bool useRa
     // Subtracting the radii, rounded outwards (a zero radius subtracts exactly).
     const double rSum = rA + rB;
     const double rLow = rB == 0 ? rA : down(rSum), rHigh = rB == 0 ? rA : up(rSum);
-    out.lower = rHigh == 0 ? lowerHull : std::max(0.0, down(lowerHull - rHigh));
-    out.upper = rLow == 0 ? upperHull : std::max(0.0, up(upperHull - rLow));
-    out.certified = true;
+    const double lower = rHigh == 0 ? lowerHull : std::max(0.0, down(lowerHull - rHigh));
+    const double upper = rLow == 0 ? upperHull : up(upperHull - rLow);
+    // Certified only when both ends are numbers and the upper end is finite: an overflow anywhere
+    // above (world coordinates beyond the double range, inf - inf = NaN) must never pass for a
+    // bound. std::max(0, NaN) is 0, which once turned an overflowed upper end into a certified
+    // [0, 0] (issue 12, defect 2: points near 1.5e308 rotated by 45 degrees). Comparisons with NaN
+    // are false, so each test below fails closed.
+    if (lower >= 0 && upper <= std::numeric_limits<double>::max() && lower <= std::max(upper, 0.0))
+    {
+        out.lower = lower;
+        out.upper = std::max(upper, 0.0);
+        out.certified = true;
+    }
+    else
+    {
+        out.lower = 0;
+        out.upper = std::numeric_limits<double>::infinity();
+        out.certified = false;
+    }
 }
 
 inline std::int64_t packIndices(int indexA, int indexB)
@@ -671,55 +779,88 @@ inline std::int64_t packIndices(int indexA, int indexB)
 
 // --- Section 3 and 4: the GJK loop ---------------------------------------------------------------
 
-template <class T>
-DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
-                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
+// What one run of the loop leaves behind, before the output is assembled.
+template <class T> struct LoopResult
 {
-    const Polygon<T>& polyA = input.proxyA;
-    const Polygon<T>& polyB = input.proxyB;
-    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
-    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+    Simplex<T> simplex;          // the final simplex (after culling), with its weights
+    StopReason stop = StopReason::IterationLimit;
+    int iterations = 0;
+    int edgeBase = 0;            // the slot of a final edge the distance is measured from
+    // The simplex before the last solve, as index pairs (packIndices), and whether the stopping
+    // support point was one of its vertices that the last solve culled (see SimplexCache).
+    std::int64_t saved[3] = {-1, -1, -1};
+    int savedCount = 0;
+    bool culledRepeat = false;
+    T maxAbs = T(0);             // largest support point coordinate seen (range check)
+};
 
-    // The compute frame: A's local frame (world = xfA * local) or the world itself.
-    Transform<T> world;
-    TransformedShape<T> A{polyA, {}, false, false, 0, false};
-    TransformedShape<T> B{polyB, {}, false, false, 0, false};
-    if (options.frame == Frame::LocalA)
+// The compute frame's two shapes for a query, scaled by 2^scale (0: as given; see rescaling).
+// Returns the transform from the compute frame to world coordinates (unscaled).
+template <class T>
+Transform<T> setUpShapes(const DistanceInput<T>& input, const Options& options, int scale,
+                         TransformedShape<T>& A, TransformedShape<T>& B)
+{
+    A = TransformedShape<T>{input.proxyA, {}, false, false, 0, false, scale, false};
+    B = TransformedShape<T>{input.proxyB, {}, false, false, 0, false, scale, false};
+    Transform<T> xfA = input.transformA, xfB = input.transformB;
+    if (scale != 0 && options.frame == Frame::LocalA)
     {
-        world = input.transformA;
-        A.identity = true;
-        B.xf = invMulTransforms(input.transformA, input.transformB);
+        // Scale the offset pB - pA, computed as the unscaled query does when it is finite (the
+        // same rounding), else from the scaled ends (it overflowed).
+        const Vec2<T> dp = xfB.p - xfA.p;
+        bool inexact = false;
+        if (std::isfinite(dp.x) && std::isfinite(dp.y))
+            xfB.p = {scaleExactly(dp.x, scale, inexact), scaleExactly(dp.y, scale, inexact)};
+        else
+            xfB.p = Vec2<T>{scaleExactly(xfB.p.x, scale, inexact), scaleExactly(xfB.p.y, scale, inexact)} -
+                    Vec2<T>{scaleExactly(xfA.p.x, scale, inexact), scaleExactly(xfA.p.y, scale, inexact)};
+        xfA.p = Vec2<T>{};
+        B.inexact = inexact;
     }
-    else
+    else if (scale != 0)
     {
-        A.xf = input.transformA;
-        B.xf = input.transformB;
+        xfA.p = {scaleExactly(xfA.p.x, scale, A.inexact), scaleExactly(xfA.p.y, scale, A.inexact)};
+        xfB.p = {scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)};
     }
     if (options.support == SupportStrategy::BinarySearch)
     {
-        A.binary = polyA.count > 16;
-        B.binary = polyB.count > 16;
+        A.binary = input.proxyA.count > 16;
+        B.binary = input.proxyB.count > 16;
     }
-    if (trace)
+    if (options.frame == Frame::LocalA)
     {
-        trace->frame = world;
-        trace->steps.clear();
+        A.identity = true;
+        B.xf = invMulTransforms(xfA, xfB);
+        return input.transformA;
     }
+    A.xf = xfA;
+    B.xf = xfB;
+    return Transform<T>{};
+}
+
+// The talk's GJK loop on the compute frame's shapes, from the cache (warm) or cold.
+template <class T>
+LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const SimplexCache& cache,
+                      const Options& options, Trace<T>* trace)
+{
+    const int countA = A.poly.count, countB = B.poly.count;
+    LoopResult<T> r;
+    Simplex<T>& simplex = r.simplex;
+    if (trace)
+        trace->steps.clear();
 
     // Start from the cache (warm) or, cold, from "an arbitrary initial simplex": the support point
     // of Z in the direction from A's origin to B's, whose closest points usually face each other
     // (this saved a third of the iterations on the `random` family: 2.75 -> 1.88 on average,
     // docs/speed.md), or vertex 0 of each shape when the origins coincide. Stale indices (shapes
     // changed) fall back to a cold start.
-    Simplex<T> simplex;
     bool cacheValid = cache.count >= 1 && cache.count <= 3;
     for (int i = 0; cacheValid && i < cache.count; ++i)
-        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < polyA.count &&
-                     cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
-    int edgeBase = 0; // the slot of a final edge the distance is measured from (SimplexCache)
+        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 &&
+                     cache.indexB[i] < countB;
     if (cacheValid)
     {
-        edgeBase = cache.count == 2 ? (cache.edgeBase & 1) : 0;
+        r.edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
         A.last = cache.indexA[0];
         B.last = cache.indexB[0];
         simplex.count = cache.count;
@@ -733,26 +874,19 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport(A, B, d0) : makeVertex(A, B, 0, 0);
     }
 
-    const int maxIterations =
-        options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (polyA.count + polyB.count);
-
-    DistanceOutput<T> out;
-    out.stop = StopReason::IterationLimit;
-    int iteration = 0;
-    // Largest coordinate magnitude of the support points seen, for the range check.
-    T maxAbs = T(0);
+    const int maxIterations = options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (countA + countB);
     for (int i = 0; i < simplex.count; ++i)
-        maxAbs = std::max({maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
+        r.maxAbs = std::max({r.maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
     for (;;)
     {
         // Remember the simplex vertices to detect a repeated support point (case 1).
         // Index pairs packed in one integer each; unused slots hold a pair no vertex can have.
         // Three fixed comparisons instead of a loop over 1 to 3 vertices: its exit branch was
         // mispredicted on most iterations (docs/speed.md).
-        std::int64_t saved[3] = {-1, -1, -1};
+        std::int64_t* saved = r.saved;
         for (int i = 0; i < 3; ++i)
-            if (i < simplex.count)
-                saved[i] = packIndices(simplex.v[i].indexA, simplex.v[i].indexB);
+            saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
+        r.savedCount = simplex.count;
 
         // Compute the closest point P on the simplex and cull non-contributing vertices.
         switch (simplex.count)
@@ -764,7 +898,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
         if (simplex.count == 3) // case 2: containment, the origin is inside Z
         {
-            out.stop = StopReason::Containment;
+            r.stop = StopReason::Containment;
             if (trace)
                 trace->steps.push_back({simplex, Vec2<T>{}, Vec2<T>{}, false, {}});
             break;
@@ -773,14 +907,14 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         const Vec2<T> d = searchDirection(simplex, options.direction);
         if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
         {
-            out.stop = StopReason::ZeroDirection;
+            r.stop = StopReason::ZeroDirection;
             if (trace)
                 trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
             break;
         }
-        if (iteration == maxIterations)
+        if (r.iterations == maxIterations)
         {
-            out.stop = StopReason::IterationLimit;
+            r.stop = StopReason::IterationLimit;
             if (trace)
                 trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
             break;
@@ -788,8 +922,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
         // New support point of Z in direction d.
         const SimplexVertex<T> w = findMinkowskiSupport(A, B, d);
-        ++iteration;
-        maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
+        ++r.iterations;
+        r.maxAbs = std::max({r.maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
         if (trace)
             trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
 
@@ -797,7 +931,13 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         const std::int64_t key = packIndices(w.indexA, w.indexB);
         if ((key == saved[0]) | (key == saved[1]) | (key == saved[2]))
         {
-            out.stop = StopReason::RepeatedSupport;
+            r.stop = StopReason::RepeatedSupport;
+            // Usually the repeated point is a vertex of the final simplex. When rounding made the
+            // last solve cull it (a nearly degenerate triangle, issue 12 defect 7), the cache
+            // keeps the simplex before that solve, so that a warm start repeats this query.
+            r.culledRepeat = true;
+            for (int i = 0; i < simplex.count; ++i)
+                r.culledRepeat = r.culledRepeat && key != packIndices(simplex.v[i].indexA, simplex.v[i].indexB);
             break;
         }
 
@@ -807,7 +947,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
             const T vv = dot(v, v);
             if (vv - dot(v, w.w) <= Tolerances<T>::dualityGap * vv)
             {
-                out.stop = StopReason::DualityGap;
+                r.stop = StopReason::DualityGap;
                 break;
             }
         }
@@ -815,6 +955,54 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         simplex.v[simplex.count] = w;
         ++simplex.count;
     }
+    return r;
+}
+
+template <class T>
+DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
+                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
+{
+    const Polygon<T>& polyA = input.proxyA;
+    const Polygon<T>& polyB = input.proxyB;
+    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
+    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+
+    // The compute frame: A's local frame (world = xfA * local) or the world itself.
+    TransformedShape<T> A, B;
+    const Transform<T> world = setUpShapes(input, options, 0, A, B);
+    LoopResult<T> loop = runLoop(A, B, cache, options, trace);
+
+    // The range check (Tolerances<T>): support points all below minCoordinate, any above
+    // maxCoordinate, or an overflowing support scan. Then the query runs once more on the problem
+    // scaled by a power of two (rescaling, above), from the same cache; it stays flagged only when
+    // that cannot help: its points span more than the exponent range (a point lost bits to the
+    // scaling), or its support points are still out of range.
+    auto outOfRange = [&]
+    {
+        return !(loop.maxAbs <= Tolerances<T>::maxCoordinate) ||
+               (loop.maxAbs > T(0) && loop.maxAbs < Tolerances<T>::minCoordinate) || A.overflow ||
+               B.overflow || A.inexact || B.inexact;
+    };
+    int scale = 0;
+    DistanceOutput<T> out;
+    if (outOfRange())
+    {
+        scale = rescaleExponent(polyA, input.transformA, polyB, input.transformB, options.frame);
+        if (scale != 0)
+        {
+            setUpShapes(input, options, scale, A, B);
+            loop = runLoop(A, B, cache, options, trace);
+            out.rescaled = true;
+        }
+        out.outOfRange = outOfRange();
+    }
+    if (trace)
+    {
+        trace->frame = world;
+        trace->scaleExponent = scale;
+    }
+    const Simplex<T>& simplex = loop.simplex;
+    out.stop = loop.stop;
 
     // Output: closest points from the barycentric weights, in world coordinates.
     Vec2<T> pA, pB;
@@ -842,9 +1030,17 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
         flipEdge = !originOnLeft(simplex.v[0].w, e);
         const T len = length(e);
-        dist = std::abs(cross(edgeBase ? simplex.v[1].w : simplex.v[0].w, e)) / len;
+        dist = std::abs(cross(loop.edgeBase ? simplex.v[1].w : simplex.v[0].w, e)) / len;
         if (dist > T(0))
             normal = (T(1) / len) * leftPerp(flipEdge ? -e : e);
+    }
+    if (scale != 0)
+    {
+        // Back from the scaled compute frame: exact, but for a distance below the type's normal
+        // range (it then rounds once more, to a subnormal).
+        dist = std::ldexp(dist, -scale);
+        pA = {std::ldexp(pA.x, -scale), std::ldexp(pA.y, -scale)};
+        pB = {std::ldexp(pB.x, -scale), std::ldexp(pB.y, -scale)};
     }
 
     if (options.useRadii && (polyA.radius > T(0) || polyB.radius > T(0)))
@@ -868,9 +1064,6 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         }
     }
 
-    out.outOfRange = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
-                     (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) || A.overflow ||
-                     B.overflow;
     if (options.certify)
         certifyDistance(input, simplex, options.useRadii, rotate(world.q, normal), out);
 
@@ -878,16 +1071,30 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     out.pointB = transformPoint(world, pB);
     out.normal = rotate(world.q, normal);
     out.distance = dist;
-    out.iterations = iteration;
+    out.iterations = loop.iterations;
     out.simplexCount = simplex.count;
 
+    // The cache: the final simplex, a final edge in canonical order. After a culled repeat, the
+    // simplex before the last solve in its own order (and edgeBase as it was), which the warm
+    // start solves exactly as this query did (docs/gjk.md, "Warm start").
+    if (loop.culledRepeat)
+    {
+        cache.count = loop.savedCount;
+        for (int i = 0; i < loop.savedCount; ++i)
+        {
+            cache.indexA[i] = int(loop.saved[i] >> 32);
+            cache.indexB[i] = int(std::uint32_t(loop.saved[i]));
+        }
+        cache.edgeBase = loop.edgeBase;
+        return out;
+    }
     cache.count = simplex.count;
     for (int i = 0; i < simplex.count; ++i)
     {
         cache.indexA[i] = simplex.v[i].indexA;
         cache.indexB[i] = simplex.v[i].indexB;
     }
-    cache.edgeBase = simplex.count == 2 ? edgeBase ^ int(flipEdge) : 0;
+    cache.edgeBase = simplex.count == 2 ? loop.edgeBase ^ int(flipEdge) : 0;
     if (flipEdge)
     {
         std::swap(cache.indexA[0], cache.indexA[1]);
