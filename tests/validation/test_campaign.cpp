@@ -294,3 +294,49 @@ TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
     CHECK_FALSE(o.variants[0].failed);
     CHECK((o.variants[0].mis == Misclass::None || o.variants[0].mis == Misclass::Undecidable));
 }
+
+TEST_CASE("a broken invariant of the truth fails the run; only invalid input rejects a case",
+          "[campaign][errors]")
+{
+    // Regression (issue 12, defect 8): computeTruth caught every std::exception of the exact side
+    // as a rejected case (exit 2, "bad input"), and swallowed any exception of the float-input
+    // truth, skipping the float variants without a word. A validation tool that reports a bug in
+    // its truth as bad input cannot be trusted: only std::invalid_argument is a rejection.
+    Case c;
+    c.name = "two points";
+    c.a.points = {{0, 0}};
+    c.b.points = {{1, 0}};
+    EvalContext ctx;
+    ctx.variants = parseVariants("double,float");
+
+    SECTION("invalid input: the case is rejected")
+    {
+        ctx.truth = [](const exact::Shape&, const exact::Shape&, const exact::Options&) -> exact::Result
+        { throw std::invalid_argument("exact: shape A has no points"); };
+        CaseOutcome o;
+        computeTruth(c, ctx, o);
+        CHECK(o.rejected == "exact: exact: shape A has no points");
+    }
+    SECTION("a broken invariant of the truth propagates")
+    {
+        ctx.truth = [](const exact::Shape&, const exact::Shape&, const exact::Options&) -> exact::Result
+        { throw std::logic_error("exact: rounding did not converge"); };
+        CaseOutcome o;
+        CHECK_THROWS_AS(computeTruth(c, ctx, o), std::logic_error);
+        CHECK(o.rejected.empty());
+    }
+    SECTION("a broken invariant of the float-input truth propagates too")
+    {
+        static int calls;
+        calls = 0;
+        ctx.truth = [](const exact::Shape& a, const exact::Shape& b, const exact::Options& opt)
+        {
+            if (++calls == 2) // the second call is the float-rounded input's truth
+                throw std::logic_error("exact: rounding did not converge");
+            return exact::distance(a, b, opt);
+        };
+        CaseOutcome o;
+        CHECK_THROWS_AS(computeTruth(c, ctx, o), std::logic_error);
+        CHECK(calls == 2);
+    }
+}

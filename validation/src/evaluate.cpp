@@ -65,14 +65,18 @@ template <class T> Json traceJson(const gjk::Trace<T>& tr)
 {
     const gjk::Transform<double> f{{double(tr.frame.p.x), double(tr.frame.p.y)},
                                    {double(tr.frame.q.c), double(tr.frame.q.s)}};
-    auto point = [&f](gjk::Vec2<T> v)
+    // A rescaled query's trace is in the scaled compute frame (Trace::scaleExponent).
+    const int e = -tr.scaleExponent;
+    auto point = [&f, e](gjk::Vec2<T> v)
     {
-        const auto w = gjk::transformPoint(f, gjk::Vec2<double>{double(v.x), double(v.y)});
+        const auto w = gjk::transformPoint(
+            f, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
         return pt(w.x, w.y);
     };
-    auto vec = [&f](gjk::Vec2<T> v)
+    auto vec = [&f, e](gjk::Vec2<T> v)
     {
-        const auto w = gjk::rotate(f.q, gjk::Vec2<double>{double(v.x), double(v.y)});
+        const auto w = gjk::rotate(
+            f.q, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
         return pt(w.x, w.y);
     };
     auto vertex = [&](const gjk::SimplexVertex<T>& sv, bool withWeight)
@@ -226,30 +230,30 @@ bool EvalContext::needFloatTruth() const
     return false;
 }
 
+// Two kinds of failure, never mixed (issue 12, defect 8). The exact side throws
+// std::invalid_argument for an input it cannot take (no points, a non-finite number, a negative
+// radius): that case is rejected, as bad input. Anything else it throws (std::logic_error: a
+// broken invariant of the truth, CGAL's own failed assertions) is a bug of ours and propagates,
+// failing the whole run loudly (gjk-validate: internal error, exit code 4), never a "rejected" case.
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     try
     {
-        out.exact = exact::distance(toExact(c.a), toExact(c.b), ctx.exactOptions);
+        out.exact = ctx.truth(toExact(c.a), toExact(c.b), ctx.exactOptions);
     }
-    catch (const std::exception& e)
+    catch (const std::invalid_argument& e)
     {
         out.rejected = fmt::format("exact: {}", e.what());
         return;
     }
+    // The float variants' truth: the same case with every number rounded to float. Cases whose
+    // numbers do not fit in float skip the float variants, with their reason (kSkipNotRepresentable);
+    // once they fit, the exact side has no reason to refuse them, so nothing is caught here.
     if (ctx.needFloatTruth() && representableInFloat(c))
     {
-        try
-        {
-            out.exactFloat =
-                exact::distance(toExact(c.a, true), toExact(c.b, true), ctx.exactOptions);
-            out.hasFloatTruth = true;
-            out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
-        }
-        catch (const std::exception&)
-        {
-            out.hasFloatTruth = false; // float variants are skipped for this case
-        }
+        out.exactFloat = ctx.truth(toExact(c.a, true), toExact(c.b, true), ctx.exactOptions);
+        out.hasFloatTruth = true;
+        out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
     }
 }
 

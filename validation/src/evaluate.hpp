@@ -148,10 +148,15 @@ struct EvalContext
 {
     std::vector<const VariantInfo*> variants;
     exact::Options exactOptions;
+    // The oracle, behind one adapter: exact::distance. Tests put a failing one here to check that a
+    // broken invariant of the truth fails the run instead of rejecting the case.
+    exact::Result (*truth)(const exact::Shape&, const exact::Shape&, const exact::Options&) =
+        &exact::distance;
     bool needFloatTruth() const;
 };
 
-// Phase 1: the exact truths (catches exact's invalid_argument: the case is then rejected).
+// Phase 1: the exact truths. The truth's std::invalid_argument rejects the case (bad input);
+// any other exception (a broken invariant of ours) propagates and fails the run.
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out);
 // Phase 2: GJK for every variant, errors, misclassification, failure.
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out);
