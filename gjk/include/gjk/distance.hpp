@@ -628,7 +628,13 @@ template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
 template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12) { return cross(e12, -w1) > T(0); }
 
 // The direction from P towards Q = 0 in which to look for the next support point.
-template <class T> GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule)
+// `base` is the edge's slot the sign test measures from: 0, but for the first iteration of a warm
+// start from a reversed edge (SimplexCache::edgeBase), so that it makes the very test the cold
+// query made (reversing the edge negates both factors of the cross product exactly). That matters
+// for a long edge far from the origin: from its far end the test is a cancellation whose sign
+// rounding decides (the fuzzer found warm repeats searching the other way).
+template <class T>
+GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule, int base = 0)
 {
     if (s.count == 1)
         return -s.v[0].w;
@@ -638,7 +644,7 @@ template <class T> GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, Searc
     // whichever has dot(d, Q - w1) > 0. When the origin is on the edge (cases 3b and 4) the sign is
     // arbitrary: we take rightPerp, and the loop ends by a repeated vertex or containment.
     const Vec2<T> e12 = s.v[1].w - s.v[0].w;
-    return originOnLeft(s.v[0].w, e12) ? leftPerp(e12) : rightPerp(e12);
+    return originOnLeft(s.v[base].w, e12) ? leftPerp(e12) : rightPerp(e12);
 }
 
 // Closest points on A and B from the barycentric weights (talk section 4, "Closest point on
@@ -904,7 +910,7 @@ LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const Simp
             break;
         }
 
-        const Vec2<T> d = searchDirection(simplex, options.direction);
+        const Vec2<T> d = searchDirection(simplex, options.direction, r.edgeBase);
         if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
         {
             r.stop = StopReason::ZeroDirection;
@@ -954,6 +960,7 @@ LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const Simp
 
         simplex.v[simplex.count] = w;
         ++simplex.count;
+        r.edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
     }
     return r;
 }
@@ -1021,18 +1028,23 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     }
     else if (simplex.count == 2)
     {
-        // flipEdge: the origin is not on the left of w1 -> w2, so the cache stores the edge
-        // reversed (SimplexCache's canonical order, searchDirection's sign test). The normal is
-        // the left perpendicular of the edge in canonical order: the vector searchDirection gives
-        // (rightPerp(e) == leftPerp(-e), exactly). The distance is the height from the vertex at
-        // slot edgeBase; reversing the edge only negates e, so a warm start from the canonical
-        // cache reproduces the cold query's bits.
+        // Everything is measured from the vertex at slot edgeBase (the query's own first vertex;
+        // searchDirection's sign test uses it too). The normal is the vector searchDirection gives,
+        // normalised: leftPerp(e) when the origin is on the left of w1 -> w2, else
+        // rightPerp(e) == leftPerp(-e), exactly. flipEdge: the origin is strictly on the right, so
+        // the cache stores the edge reversed (SimplexCache's canonical order). Not when it is on
+        // the edge's line (side exactly 0): both orders would then fail the strict test and take
+        // opposite directions, so the order stays (the fuzzer found warm repeats of duality-gap
+        // stops searching on). Reversing the edge only negates e, and edgeBase follows the base
+        // vertex, so a warm start from the cache reproduces the cold query's bits.
         const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
-        flipEdge = !originOnLeft(simplex.v[0].w, e);
+        const Vec2<T> base = loop.edgeBase ? simplex.v[1].w : simplex.v[0].w;
+        const T side = cross(e, -base); // > 0: the origin is on the left (originOnLeft)
+        flipEdge = side < T(0);
         const T len = length(e);
-        dist = std::abs(cross(loop.edgeBase ? simplex.v[1].w : simplex.v[0].w, e)) / len;
+        dist = std::abs(cross(base, e)) / len;
         if (dist > T(0))
-            normal = (T(1) / len) * leftPerp(flipEdge ? -e : e);
+            normal = (T(1) / len) * leftPerp(side > T(0) ? e : -e);
     }
     if (scale != 0)
     {
