@@ -197,7 +197,8 @@ template <class T> struct DistanceOutput
     // coordinate outside [Tolerances<T>::minCoordinate, maxCoordinate] (all of them below the
     // minimum, or any above the maximum), or a support scan's dot products overflowed, and the
     // rescaled retry too (the problem's points span more than the exponent range, so scaling lost
-    // bits of some). The distance is not trustworthy.
+    // bits of some); or the rescaled answer does not fit in T (a distance or world witness point
+    // beyond T's largest value). The output is not trustworthy.
     bool outOfRange = false;
     // The first pass left the safe range and the query ran again on the problem scaled by a power
     // of two (exact): the answer is then as accurate as in range. outOfRange stays set only when
@@ -1083,6 +1084,14 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     out.pointB = transformPoint(world, pB);
     out.normal = rotate(world.q, normal);
     out.distance = dist;
+    // An answer that does not fit in T (a rescaled distance or world witness point beyond T's
+    // largest value: two points near 1.5e308 on opposite sides, found by the fuzzer) is flagged
+    // too: never an unflagged inf or NaN.
+    if (scale != 0)
+        out.outOfRange = out.outOfRange ||
+                         !(std::max({std::abs(dist), std::abs(out.pointA.x), std::abs(out.pointA.y),
+                                     std::abs(out.pointB.x), std::abs(out.pointB.y)}) <=
+                           std::numeric_limits<T>::max());
     out.iterations = loop.iterations;
     out.simplexCount = simplex.count;
 
