@@ -11,7 +11,8 @@
 // Invariants, checked on the cold query and on a warm repeat from the cold query's cache
 // (docs/fuzzing.md); a broken one aborts with a message naming it:
 //  - no sanitizer report (ASan, UBSan) and no GJK contract assert (GJK2D_CHECKED);
-//  - the distance is finite and >= 0, or out.outOfRange is set;
+//  - the distance is finite and >= 0, or out.outOfRange is set, or it is +inf and the exact
+//    distance is at least the largest finite T (+inf is then its correct rounding);
 //  - 1 <= out.simplexCount <= 3 and 0 <= out.iterations <= the iteration limit
 //    (Options::maxIterations, or 32 + 2 (countA + countB) when it is 0);
 //  - when out.certified: lower <= upper and the exact distance (exact::distance, the exact side)
@@ -214,15 +215,25 @@ template <class T> bool decode(Reader& r, std::uint8_t bits, Query<T>& q)
            decodeShape(r, convex, q.pointsB, q.input.proxyB, q.input.transformB);
 }
 
+template <class T> void describe(const char* label, const gjk::DistanceOutput<T>& out)
+{
+    std::fprintf(stderr,
+                 "  %s: distance %a, pointA (%a, %a), pointB (%a, %a), normal (%a, %a), stop %s, "
+                 "iterations %d, simplexCount %d, outOfRange %d, rescaled %d, certified %d "
+                 "[%.17g, %.17g]\n",
+                 label, double(out.distance), double(out.pointA.x), double(out.pointA.y),
+                 double(out.pointB.x), double(out.pointB.y), double(out.normal.x),
+                 double(out.normal.y), gjk::stopReasonName(out.stop), out.iterations,
+                 out.simplexCount, int(out.outOfRange), int(out.rescaled), int(out.certified),
+                 out.lower, out.upper);
+}
+
 template <class T>
 [[noreturn]] void finding(const gjk::DistanceOutput<T>& out, const char* which, const char* what)
 {
-    std::fprintf(stderr,
-                 "fuzz_distance: FINDING (%s, %s query): %s\n  output: distance %.17g, stop %s, "
-                 "iterations %d, simplexCount %d, outOfRange %d, certified %d [%.17g, %.17g]\n",
-                 std::is_same_v<T, float> ? "float" : "double", which, what, double(out.distance),
-                 gjk::stopReasonName(out.stop), out.iterations, out.simplexCount, int(out.outOfRange),
-                 int(out.certified), out.lower, out.upper);
+    std::fprintf(stderr, "fuzz_distance: FINDING (%s, %s query): %s\n",
+                 std::is_same_v<T, float> ? "float" : "double", which, what);
+    describe("output", out);
     std::abort();
 }
 
@@ -236,13 +247,14 @@ template <class T> bool sameBits(gjk::Vec2<T> a, gjk::Vec2<T> b)
     return sameBits(a.x, b.x) && sameBits(a.y, b.y);
 }
 
-// The warm/cold promise of docs/gjk.md ("Warm start"): a query warm-started from the cache of a
-// cold query on the same input repeats the cold answer bit for bit, unless the cold query left
-// its safe range.
+// The warm/cold promise as docs/gjk.md ("Warm start", "The promise, stated exactly") states it: a
+// query warm-started from the cache a query left behind, on the same input and options, returns
+// that query's distance, witness points and normal bit for bit, unless that query stopped at the
+// iteration limit or was rescaled.
 template <class T>
 bool warmRepeatsCold(const gjk::DistanceOutput<T>& cold, const gjk::DistanceOutput<T>& warm)
 {
-    if (cold.outOfRange)
+    if (cold.stop == gjk::StopReason::IterationLimit || cold.rescaled)
         return true;
     return sameBits(cold.distance, warm.distance) && sameBits(cold.pointA, warm.pointA) &&
            sameBits(cold.pointB, warm.pointB) && sameBits(cold.normal, warm.normal);
@@ -265,7 +277,16 @@ exact::Shape exactShape(const gjk::Polygon<T>& poly, const gjk::Transform<T>& xf
 template <class T>
 void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const char* which)
 {
-    if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)))
+    const bool r = q.options.useRadii;
+    auto truth = [&]
+    {
+        return exact::distance(exactShape(q.input.proxyA, q.input.transformA, r),
+                               exactShape(q.input.proxyB, q.input.transformB, r));
+    };
+    // +inf is the correct rounding of an exact distance beyond the largest T: no flag needed.
+    if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)) &&
+        !(out.distance == std::numeric_limits<T>::infinity() &&
+          truth().lower >= double(std::numeric_limits<T>::max())))
         finding(out, which, "distance is negative or not finite and outOfRange is not set");
     if (out.simplexCount < 1 || out.simplexCount > 3)
         finding(out, which, "simplexCount outside 1..3");
@@ -280,16 +301,13 @@ void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const cha
         return;
     if (!(out.lower <= out.upper))
         finding(out, which, "certified interval with lower > upper (or NaN)");
-    const bool r = q.options.useRadii;
-    const exact::Result truth =
-        exact::distance(exactShape(q.input.proxyA, q.input.transformA, r),
-                        exactShape(q.input.proxyB, q.input.transformB, r));
-    // truth.lower and truth.upper are the doubles enclosing the exact value (equal when it is a
+    const exact::Result exactResult = truth();
+    // exactResult.lower and .upper are the doubles enclosing the exact value (equal when it is a
     // double), so [out.lower, out.upper] contains it exactly when it contains both.
-    if (!(out.lower <= truth.lower && truth.upper <= out.upper))
+    if (!(out.lower <= exactResult.lower && exactResult.upper <= out.upper))
     {
         std::fprintf(stderr, "certified [%.17g, %.17g], exact in [%.17g, %.17g]\n", out.lower,
-                     out.upper, truth.lower, truth.upper);
+                     out.upper, exactResult.lower, exactResult.upper);
         finding(out, which, "the certified interval does not contain the exact distance");
     }
 }
@@ -309,8 +327,7 @@ template <class T> void run(Reader& r, std::uint8_t bits)
     checkOutput(q, warm, "warm");
     if (!warmRepeatsCold(cold, warm))
     {
-        std::fprintf(stderr, "  cold: distance %.17g, stop %s, simplexCount %d\n",
-                     double(cold.distance), gjk::stopReasonName(cold.stop), cold.simplexCount);
+        describe("cold", cold);
         finding(warm, "warm", "a warm repeat does not give the cold answer's bits (warmRepeatsCold)");
     }
 }

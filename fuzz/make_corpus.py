@@ -7,7 +7,7 @@ fuzz/corpus/fuzz_case_file/: the case files under validation/cases/ and tests/va
 the reproducers of issue 12 (defects 2, 3, 6 and 7) and hand-made bad files.
 fuzz/corpus/fuzz_distance/: every case of validation/cases/, issue 12's defects 2 and 7 and
 shapes near 1e265 (defect 1), encoded in fuzz_distance's byte layout (fuzz_distance.cpp,
-`decode`) for a few option sets. Findings that were fixed are added by hand as
+`decode`) for a few option sets. Inputs the fuzzer found (reproducers of fixed bugs) are added by hand as
 fuzz/corpus/<target>/finding-*: this script leaves files of that name alone.
 """
 import json

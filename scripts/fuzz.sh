@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets (fuzz/, docs/fuzzing.md) with clang-14 under ASan + UBSan in
 # build/fuzz and runs each for SECONDS_PER_TARGET seconds (default 60), one after the other, one
 # process each, starting from a scratch copy of the committed corpus fuzz/corpus/<target>/.
-#   scripts/fuzz.sh [SECONDS_PER_TARGET]
+#   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (targets: fuzz_case_file fuzz_distance; default both)
 # Prints per target the inputs run (libFuzzer's stat::number_of_executed_units) and the seconds.
 # Exit codes: 0 no finding; 1 a finding (the input is saved under build/fuzz/findings/<target>/,
 # the log under build/fuzz/logs/); 2 bad argument; 3 missing packages (scripts/setup.sh).
@@ -10,10 +10,18 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 seconds="${1:-60}"
+targets=("${@:2}")
+[[ ${#targets[@]} -eq 0 ]] && targets=(fuzz_case_file fuzz_distance)
 if ! [[ "$seconds" =~ ^[1-9][0-9]{0,6}$ ]]; then
-  echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET]  (a positive integer, default 60)" >&2
+  echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]  (a positive integer, default 60)" >&2
   exit 2
 fi
+for target in "${targets[@]}"; do
+  if [[ "$target" != fuzz_case_file && "$target" != fuzz_distance ]]; then
+    echo "scripts/fuzz.sh: unknown target '$target' (fuzz_case_file, fuzz_distance)" >&2
+    exit 2
+  fi
+done
 
 scripts/setup.sh --fuzz
 
@@ -21,7 +29,7 @@ scripts/setup.sh --fuzz
 cmake -S . -B build/fuzz -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DGJK2D_BUILD_FUZZERS=ON -DGJK2D_BUILD_TESTS=OFF -DGJK2D_BUILD_VALIDATION=OFF \
   -DGJK2D_BUILD_BENCHMARKS=OFF >/dev/null
-cmake --build build/fuzz -j 2 --target fuzz_case_file fuzz_distance
+cmake --build build/fuzz -j 2 --target "${targets[@]}"
 
 # Longest input per target: a case file up to 8 KiB (the committed ones are below); a distance
 # query needs at most 2 + 2 * 418 bytes (20 points of raw doubles per shape).
@@ -31,7 +39,7 @@ scratch=$(mktemp -d "${TMPDIR:-/tmp}/gjk2d-fuzz.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT
 mkdir -p build/fuzz/logs
 status=0
-for target in fuzz_case_file fuzz_distance; do
+for target in "${targets[@]}"; do
   corpus="$scratch/$target"
   findings="build/fuzz/findings/$target"
   log="build/fuzz/logs/$target.log"

@@ -17,3 +17,6 @@ ctest --preset release -j "$jobs"
 cmake --preset sanitize -DGJK2D_BUILD_VALIDATION=OFF >/dev/null
 cmake --build --preset sanitize -j "$jobs"
 ctest --preset sanitize -j "$jobs"
+
+# The libFuzzer targets under ASan + UBSan, 30 s each (docs/fuzzing.md).
+scripts/fuzz.sh 30
