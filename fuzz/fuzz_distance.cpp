@@ -11,8 +11,8 @@
 // Invariants, checked on the cold query and on a warm repeat from the cold query's cache
 // (docs/fuzzing.md); a broken one aborts with a message naming it:
 //  - no sanitizer report (ASan, UBSan) and no GJK contract assert (GJK2D_CHECKED);
-//  - the distance is finite and >= 0, or out.outOfRange is set, or it is +inf and the exact
-//    distance is at least the largest finite T (+inf is then its correct rounding);
+//  - the distance is finite and >= 0, or out.outOfRange is set (also when the exact distance is
+//    beyond the largest T: docs/gjk.md, "Rescaling");
 //  - 1 <= out.simplexCount <= 3 and 0 <= out.iterations <= the iteration limit
 //    (Options::maxIterations, or 32 + 2 (countA + countB) when it is 0);
 //  - when out.certified: lower <= upper and the exact distance (exact::distance, the exact side)
@@ -283,10 +283,7 @@ void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const cha
         return exact::distance(exactShape(q.input.proxyA, q.input.transformA, r),
                                exactShape(q.input.proxyB, q.input.transformB, r));
     };
-    // +inf is the correct rounding of an exact distance beyond the largest T: no flag needed.
-    if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)) &&
-        !(out.distance == std::numeric_limits<T>::infinity() &&
-          truth().lower >= double(std::numeric_limits<T>::max())))
+    if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)))
         finding(out, which, "distance is negative or not finite and outOfRange is not set");
     if (out.simplexCount < 1 || out.simplexCount > 3)
         finding(out, which, "simplexCount outside 1..3");
