@@ -357,7 +357,7 @@ template <class T> int exponentOf(T m)
 // same support point in exact arithmetic), choosing |d| ~ 2^e with e the points' scaling exponent
 // (the points are about 2^-e in size), clamped so that d stays normal: the products dot(d, p) of the largest points are then of
 // order 1, neither overflowing nor lost to underflow.
-template <class T> Vec2<T> directionForScan(Vec2<T> d, int e)
+template <class T> [[gnu::noinline]] Vec2<T> directionForScan(Vec2<T> d, int e)
 {
     constexpr int limit = std::numeric_limits<T>::max_exponent - std::numeric_limits<T>::digits;
     e = std::clamp(e, -limit, limit);
@@ -399,8 +399,9 @@ template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& 
 // A shape seen through a transform into the compute frame: the support runs on the shape's own
 // points with the direction rotated into its frame; only the chosen point is transformed.
 // In A's frame, A itself needs no transform: `identity` skips it (bit-identical result, since
-// the identity transform is exact, but faster).
-template <class T> struct TransformedShape
+// the identity transform is exact, but faster). `Scaled`: the rescaled retry's shapes (below);
+// a separate type, so that the common query carries no test for it.
+template <class T, bool Scaled = false> struct TransformedShape
 {
     Polygon<T> poly;
     Transform<T> xf;
@@ -410,15 +411,15 @@ template <class T> struct TransformedShape
     int last = 0;          // previous support index: where the galloping search starts
     bool overflow = false; // a support scan's products overflowed (DistanceOutput::outOfRange)
 
-    // Rescaled retry (DistanceOutput::rescaled): every point is multiplied by 2^scale, exact unless
-    // it underflows (then `inexact` is set and the query stays flagged outOfRange). 0: no scaling.
+    // Scaled: every point is multiplied by 2^scale, exact unless it underflows (then `inexact` is
+    // set and the query stays flagged outOfRange).
     int scale = 0;
     bool inexact = false;
 
     int support(Vec2<T> d)
     {
         Vec2<T> local = identity ? d : invRotate(xf.q, d);
-        if (scale != 0)
+        if constexpr (Scaled)
             local = directionForScan(local, scale);
         if (!binary)
         {
@@ -435,16 +436,20 @@ template <class T> struct TransformedShape
     }
     Vec2<T> vertex(int i)
     {
-        Vec2<T> p = poly.points[i];
-        if (scale != 0)
-            p = {scaleExactly(p.x, scale, inexact), scaleExactly(p.y, scale, inexact)};
-        return identity ? p : transformPoint(xf, p);
+        if constexpr (Scaled)
+        {
+            const Vec2<T> p = {scaleExactly(poly.points[i].x, scale, inexact),
+                               scaleExactly(poly.points[i].y, scale, inexact)};
+            return identity ? p : transformPoint(xf, p);
+        }
+        else
+            return identity ? poly.points[i] : transformPoint(xf, poly.points[i]);
     }
 };
 
 // support(Z, d) = support(A, d) - support(B, -d): the Minkowski difference is never built.
-template <class T>
-GJK_INLINE SimplexVertex<T> makeVertex(TransformedShape<T>& A, TransformedShape<T>& B, int iA, int iB)
+template <class T, class Shape>
+GJK_INLINE SimplexVertex<T> makeVertex(Shape& A, Shape& B, int iA, int iB)
 {
     SimplexVertex<T> v;
     v.indexA = iA;
@@ -456,10 +461,10 @@ GJK_INLINE SimplexVertex<T> makeVertex(TransformedShape<T>& A, TransformedShape<
     return v;
 }
 
-template <class T>
-GJK_INLINE SimplexVertex<T> findMinkowskiSupport(TransformedShape<T>& A, TransformedShape<T>& B, Vec2<T> d)
+template <class T, class Shape>
+GJK_INLINE SimplexVertex<T> findMinkowskiSupport(Shape& A, Shape& B, Vec2<T> d)
 {
-    return makeVertex(A, B, A.support(d), B.support(-d));
+    return makeVertex<T>(A, B, A.support(d), B.support(-d));
 }
 
 // --- Section 1: point (the origin) to line segment -----------------------------------------------
@@ -650,7 +655,7 @@ GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule, in
 
 // Closest points on A and B from the barycentric weights (talk section 4, "Closest point on
 // polygons"): the same weights applied to the simplex vertices' own points.
-template <class T> void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, Vec2<T>& pB)
+template <class T> GJK_INLINE void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, Vec2<T>& pB)
 {
     switch (s.count)
     {
@@ -786,114 +791,133 @@ inline std::int64_t packIndices(int indexA, int indexB)
 
 // --- Section 3 and 4: the GJK loop ---------------------------------------------------------------
 
-// What one run of the loop leaves behind, before the output is assembled.
-template <class T> struct LoopResult
-{
-    Simplex<T> simplex;          // the final simplex (after culling), with its weights
-    StopReason stop = StopReason::IterationLimit;
-    int iterations = 0;
-    int edgeBase = 0;            // the slot of a final edge the distance is measured from
-    // The simplex before the last solve, as index pairs (packIndices), and whether the stopping
-    // support point was one of its vertices that the last solve culled (see SimplexCache).
-    std::int64_t saved[3] = {-1, -1, -1};
-    int savedCount = 0;
-    bool culledRepeat = false;
-    T maxAbs = T(0);             // largest support point coordinate seen (range check)
-};
-
-// The compute frame's two shapes for a query, scaled by 2^scale (0: as given; see rescaling).
-// Returns the transform from the compute frame to world coordinates (unscaled).
+// The compute frame's two shapes for a rescaled query (scale != 0): every point, and the
+// translations, multiplied by 2^scale. Returns the transform from the compute frame to world
+// coordinates (unscaled). A and B arrive value-initialised with their polygons and options set.
 template <class T>
-Transform<T> setUpShapes(const DistanceInput<T>& input, const Options& options, int scale,
-                         TransformedShape<T>& A, TransformedShape<T>& B)
+[[gnu::noinline]] Transform<T> setUpScaledShapes(const DistanceInput<T>& input, const Options& options,
+                                                 int scale, TransformedShape<T, true>& A,
+                                                 TransformedShape<T, true>& B)
 {
-    A = TransformedShape<T>{input.proxyA, {}, false, false, 0, false, scale, false};
-    B = TransformedShape<T>{input.proxyB, {}, false, false, 0, false, scale, false};
+    A.scale = B.scale = scale;
     Transform<T> xfA = input.transformA, xfB = input.transformB;
-    if (scale != 0 && options.frame == Frame::LocalA)
+    if (options.frame == Frame::LocalA)
     {
         // Scale the offset pB - pA, computed as the unscaled query does when it is finite (the
         // same rounding), else from the scaled ends (it overflowed).
         const Vec2<T> dp = xfB.p - xfA.p;
-        bool inexact = false;
         if (std::isfinite(dp.x) && std::isfinite(dp.y))
-            xfB.p = {scaleExactly(dp.x, scale, inexact), scaleExactly(dp.y, scale, inexact)};
+            xfB.p = {scaleExactly(dp.x, scale, B.inexact), scaleExactly(dp.y, scale, B.inexact)};
         else
-            xfB.p = Vec2<T>{scaleExactly(xfB.p.x, scale, inexact), scaleExactly(xfB.p.y, scale, inexact)} -
-                    Vec2<T>{scaleExactly(xfA.p.x, scale, inexact), scaleExactly(xfA.p.y, scale, inexact)};
+            xfB.p = Vec2<T>{scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)} -
+                    Vec2<T>{scaleExactly(xfA.p.x, scale, B.inexact), scaleExactly(xfA.p.y, scale, B.inexact)};
         xfA.p = Vec2<T>{};
-        B.inexact = inexact;
-    }
-    else if (scale != 0)
-    {
-        xfA.p = {scaleExactly(xfA.p.x, scale, A.inexact), scaleExactly(xfA.p.y, scale, A.inexact)};
-        xfB.p = {scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)};
-    }
-    if (options.support == SupportStrategy::BinarySearch)
-    {
-        A.binary = input.proxyA.count > 16;
-        B.binary = input.proxyB.count > 16;
-    }
-    if (options.frame == Frame::LocalA)
-    {
         A.identity = true;
         B.xf = invMulTransforms(xfA, xfB);
         return input.transformA;
     }
-    A.xf = xfA;
-    B.xf = xfB;
+    A.xf = {{scaleExactly(xfA.p.x, scale, A.inexact), scaleExactly(xfA.p.y, scale, A.inexact)}, xfA.q};
+    B.xf = {{scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)}, xfB.q};
     return Transform<T>{};
 }
 
-// The talk's GJK loop on the compute frame's shapes, from the cache (warm) or cold.
 template <class T>
-LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const SimplexCache& cache,
-                      const Options& options, Trace<T>* trace)
+void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
+                      Trace<T>* trace, DistanceOutput<T>& out);
+
+// The query. `Scaled`: the rescaled retry (rescaling, above), a second instantiation kept out of
+// line (distanceRescaled), so that the common query carries no test for it.
+template <class T, bool Scaled>
+GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, SimplexCache& cache,
+                                          const Options& options, Trace<T>* trace, int scale)
 {
-    const int countA = A.poly.count, countB = B.poly.count;
-    LoopResult<T> r;
-    Simplex<T>& simplex = r.simplex;
+    const Polygon<T>& polyA = input.proxyA;
+    const Polygon<T>& polyB = input.proxyB;
+    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
+    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+
+    // The compute frame: A's local frame (world = xfA * local) or the world itself.
+    Transform<T> world;
+    TransformedShape<T, Scaled> A{polyA, {}, false, false, 0, false};
+    TransformedShape<T, Scaled> B{polyB, {}, false, false, 0, false};
+    if constexpr (Scaled)
+        world = setUpScaledShapes(input, options, scale, A, B);
+    else if (options.frame == Frame::LocalA)
+    {
+        world = input.transformA;
+        A.identity = true;
+        B.xf = invMulTransforms(input.transformA, input.transformB);
+    }
+    else
+    {
+        A.xf = input.transformA;
+        B.xf = input.transformB;
+    }
+    if (options.support == SupportStrategy::BinarySearch)
+    {
+        A.binary = polyA.count > 16;
+        B.binary = polyB.count > 16;
+    }
     if (trace)
+    {
+        trace->frame = world;
+        trace->scaleExponent = scale;
         trace->steps.clear();
+    }
 
     // Start from the cache (warm) or, cold, from "an arbitrary initial simplex": the support point
     // of Z in the direction from A's origin to B's, whose closest points usually face each other
     // (this saved a third of the iterations on the `random` family: 2.75 -> 1.88 on average,
     // docs/speed.md), or vertex 0 of each shape when the origins coincide. Stale indices (shapes
     // changed) fall back to a cold start.
+    Simplex<T> simplex;
     bool cacheValid = cache.count >= 1 && cache.count <= 3;
     for (int i = 0; cacheValid && i < cache.count; ++i)
-        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 &&
-                     cache.indexB[i] < countB;
+        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < polyA.count &&
+                     cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
+    // The slot of a final edge the distance and the edge's sign test are measured from: the
+    // query's own first vertex (SimplexCache::edgeBase), 0 once the simplex has changed.
+    int edgeBase = 0;
     if (cacheValid)
     {
-        r.edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
+        edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
         A.last = cache.indexA[0];
         B.last = cache.indexB[0];
         simplex.count = cache.count;
         for (int i = 0; i < cache.count; ++i)
-            simplex.v[i] = makeVertex(A, B, cache.indexA[i], cache.indexB[i]);
+            simplex.v[i] = makeVertex<T>(A, B, cache.indexA[i], cache.indexB[i]);
     }
     else
     {
         simplex.count = 1;
         const Vec2<T> d0 = B.xf.p - A.xf.p;
-        simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport(A, B, d0) : makeVertex(A, B, 0, 0);
+        simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport<T>(A, B, d0) : makeVertex<T>(A, B, 0, 0);
     }
 
-    const int maxIterations = options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (countA + countB);
+    const int maxIterations =
+        options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (polyA.count + polyB.count);
+
+    DistanceOutput<T> out;
+    out.stop = StopReason::IterationLimit;
+    int iteration = 0;
+    // Largest coordinate magnitude of the support points seen, for the range check.
+    T maxAbs = T(0);
     for (int i = 0; i < simplex.count; ++i)
-        r.maxAbs = std::max({r.maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
+        maxAbs = std::max({maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
+    // The simplex before the last solve (index pairs), and whether the stopping support point was
+    // one of its vertices that the last solve culled (see the cache at the end).
+    std::int64_t saved[3] = {-1, -1, -1};
+    int savedCount = 0;
+    bool culledRepeat = false;
     for (;;)
     {
         // Remember the simplex vertices to detect a repeated support point (case 1).
         // Index pairs packed in one integer each; unused slots hold a pair no vertex can have.
         // Three fixed comparisons instead of a loop over 1 to 3 vertices: its exit branch was
         // mispredicted on most iterations (docs/speed.md).
-        std::int64_t* saved = r.saved;
         for (int i = 0; i < 3; ++i)
             saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
-        r.savedCount = simplex.count;
+        savedCount = simplex.count;
 
         // Compute the closest point P on the simplex and cull non-contributing vertices.
         switch (simplex.count)
@@ -905,32 +929,32 @@ LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const Simp
 
         if (simplex.count == 3) // case 2: containment, the origin is inside Z
         {
-            r.stop = StopReason::Containment;
+            out.stop = StopReason::Containment;
             if (trace)
                 trace->steps.push_back({simplex, Vec2<T>{}, Vec2<T>{}, false, {}});
             break;
         }
 
-        const Vec2<T> d = searchDirection(simplex, options.direction, r.edgeBase);
+        const Vec2<T> d = searchDirection(simplex, options.direction, edgeBase);
         if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
         {
-            r.stop = StopReason::ZeroDirection;
+            out.stop = StopReason::ZeroDirection;
             if (trace)
                 trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
             break;
         }
-        if (r.iterations == maxIterations)
+        if (iteration == maxIterations)
         {
-            r.stop = StopReason::IterationLimit;
+            out.stop = StopReason::IterationLimit;
             if (trace)
                 trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
             break;
         }
 
         // New support point of Z in direction d.
-        const SimplexVertex<T> w = findMinkowskiSupport(A, B, d);
-        ++r.iterations;
-        r.maxAbs = std::max({r.maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
+        const SimplexVertex<T> w = findMinkowskiSupport<T>(A, B, d);
+        ++iteration;
+        maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
         if (trace)
             trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
 
@@ -938,13 +962,12 @@ LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const Simp
         const std::int64_t key = packIndices(w.indexA, w.indexB);
         if ((key == saved[0]) | (key == saved[1]) | (key == saved[2]))
         {
-            r.stop = StopReason::RepeatedSupport;
-            // Usually the repeated point is a vertex of the final simplex. When rounding made the
-            // last solve cull it (a nearly degenerate triangle, issue 12 defect 7), the cache
-            // keeps the simplex before that solve, so that a warm start repeats this query.
-            r.culledRepeat = true;
-            for (int i = 0; i < simplex.count; ++i)
-                r.culledRepeat = r.culledRepeat && key != packIndices(simplex.v[i].indexA, simplex.v[i].indexB);
+            out.stop = StopReason::RepeatedSupport;
+            // Usually the repeated point is a vertex of the final simplex (of at most two
+            // vertices here). When rounding made the last solve cull it (a nearly degenerate
+            // triangle, issue 12 defect 7), the cache keeps the simplex before that solve.
+            culledRepeat = key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
+                           (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
             break;
         }
 
@@ -954,63 +977,15 @@ LoopResult<T> runLoop(TransformedShape<T>& A, TransformedShape<T>& B, const Simp
             const T vv = dot(v, v);
             if (vv - dot(v, w.w) <= Tolerances<T>::dualityGap * vv)
             {
-                r.stop = StopReason::DualityGap;
+                out.stop = StopReason::DualityGap;
                 break;
             }
         }
 
         simplex.v[simplex.count] = w;
         ++simplex.count;
-        r.edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
+        edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
     }
-    return r;
-}
-
-template <class T>
-DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
-                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
-{
-    const Polygon<T>& polyA = input.proxyA;
-    const Polygon<T>& polyB = input.proxyB;
-    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
-    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
-
-    // The compute frame: A's local frame (world = xfA * local) or the world itself.
-    TransformedShape<T> A, B;
-    const Transform<T> world = setUpShapes(input, options, 0, A, B);
-    LoopResult<T> loop = runLoop(A, B, cache, options, trace);
-
-    // The range check (Tolerances<T>): support points all below minCoordinate, any above
-    // maxCoordinate, or an overflowing support scan. Then the query runs once more on the problem
-    // scaled by a power of two (rescaling, above), from the same cache; it stays flagged only when
-    // that cannot help: its points span more than the exponent range (a point lost bits to the
-    // scaling), or its support points are still out of range.
-    auto outOfRange = [&]
-    {
-        return !(loop.maxAbs <= Tolerances<T>::maxCoordinate) ||
-               (loop.maxAbs > T(0) && loop.maxAbs < Tolerances<T>::minCoordinate) || A.overflow ||
-               B.overflow || A.inexact || B.inexact;
-    };
-    int scale = 0;
-    DistanceOutput<T> out;
-    if (outOfRange())
-    {
-        scale = rescaleExponent(polyA, input.transformA, polyB, input.transformB, options.frame);
-        if (scale != 0)
-        {
-            setUpShapes(input, options, scale, A, B);
-            loop = runLoop(A, B, cache, options, trace);
-            out.rescaled = true;
-        }
-        out.outOfRange = outOfRange();
-    }
-    if (trace)
-    {
-        trace->frame = world;
-        trace->scaleExponent = scale;
-    }
-    const Simplex<T>& simplex = loop.simplex;
-    out.stop = loop.stop;
 
     // Output: closest points from the barycentric weights, in world coordinates.
     Vec2<T> pA, pB;
@@ -1039,7 +1014,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         // stops searching on). Reversing the edge only negates e, and edgeBase follows the base
         // vertex, so a warm start from the cache reproduces the cold query's bits.
         const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
-        const Vec2<T> base = loop.edgeBase ? simplex.v[1].w : simplex.v[0].w;
+        const Vec2<T> base = edgeBase ? simplex.v[1].w : simplex.v[0].w;
         const T side = cross(e, -base); // > 0: the origin is on the left (originOnLeft)
         flipEdge = side < T(0);
         const T len = length(e);
@@ -1047,7 +1022,7 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
         if (dist > T(0))
             normal = (T(1) / len) * leftPerp(side > T(0) ? e : -e);
     }
-    if (scale != 0)
+    if constexpr (Scaled)
     {
         // Back from the scaled compute frame: exact, but for a distance below the type's normal
         // range (it then rounds once more, to a subnormal).
@@ -1084,44 +1059,88 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     out.pointB = transformPoint(world, pB);
     out.normal = rotate(world.q, normal);
     out.distance = dist;
+    out.iterations = iteration;
+    out.simplexCount = simplex.count;
     // An answer that does not fit in T (a rescaled distance or world witness point beyond T's
     // largest value: two points near 1.5e308 on opposite sides, found by the fuzzer) is flagged
     // too: never an unflagged inf or NaN.
-    if (scale != 0)
+    if constexpr (Scaled)
         out.outOfRange = out.outOfRange ||
                          !(std::max({std::abs(dist), std::abs(out.pointA.x), std::abs(out.pointA.y),
                                      std::abs(out.pointB.x), std::abs(out.pointB.y)}) <=
                            std::numeric_limits<T>::max());
-    out.iterations = loop.iterations;
-    out.simplexCount = simplex.count;
 
     // The cache: the final simplex, a final edge in canonical order. After a culled repeat, the
-    // simplex before the last solve in its own order (and edgeBase as it was), which the warm
-    // start solves exactly as this query did (docs/gjk.md, "Warm start").
-    if (loop.culledRepeat)
+    // simplex before the last solve in its own order (and edgeBase as it was), which a warm start
+    // solves exactly as this query did (docs/gjk.md, "Warm start").
+    if (culledRepeat) [[unlikely]]
     {
-        cache.count = loop.savedCount;
-        for (int i = 0; i < loop.savedCount; ++i)
+        cache.count = savedCount;
+        for (int i = 0; i < savedCount; ++i)
         {
-            cache.indexA[i] = int(loop.saved[i] >> 32);
-            cache.indexB[i] = int(std::uint32_t(loop.saved[i]));
+            cache.indexA[i] = int(saved[i] >> 32);
+            cache.indexB[i] = int(std::uint32_t(saved[i]));
         }
-        cache.edgeBase = loop.edgeBase;
-        return out;
+        cache.edgeBase = edgeBase;
     }
-    cache.count = simplex.count;
-    for (int i = 0; i < simplex.count; ++i)
+    else
     {
-        cache.indexA[i] = simplex.v[i].indexA;
-        cache.indexB[i] = simplex.v[i].indexB;
+        cache.count = simplex.count;
+        for (int i = 0; i < simplex.count; ++i)
+        {
+            cache.indexA[i] = simplex.v[i].indexA;
+            cache.indexB[i] = simplex.v[i].indexB;
+        }
+        cache.edgeBase = simplex.count == 2 ? edgeBase ^ int(flipEdge) : 0;
+        if (flipEdge)
+        {
+            std::swap(cache.indexA[0], cache.indexA[1]);
+            std::swap(cache.indexB[0], cache.indexB[1]);
+        }
     }
-    cache.edgeBase = simplex.count == 2 ? loop.edgeBase ^ int(flipEdge) : 0;
-    if (flipEdge)
+
+    // The range check (Tolerances<T>): support points all below minCoordinate, any above
+    // maxCoordinate, an overflowing support scan, or (rescaled) a point that lost bits to the
+    // scaling. When it fails, the query runs once more on the problem scaled by a power of two
+    // (rescaling, above), at the very end; the rescaled query stays flagged when that could not
+    // help.
+    const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
+                               (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) ||
+                               A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact));
+    if constexpr (Scaled)
     {
-        std::swap(cache.indexA[0], cache.indexA[1]);
-        std::swap(cache.indexB[0], cache.indexB[1]);
+        out.rescaled = true;
+        out.outOfRange = out.outOfRange || rangeExceeded;
     }
+
+    // Out of range: the retry, at the very end, warm-started from the cache this pass just wrote
+    // (any valid indices are a legitimate start; the answer depends on the input and the incoming
+    // cache only). One exit: an early return of the retry's output, or a copy of the incoming
+    // cache for it, each cost the common query 8-15 % more instructions (callgrind,
+    // docs/speed.md).
+    if constexpr (!Scaled)
+        if (rangeExceeded) [[unlikely]]
+            distanceRescaled(input, cache, options, trace, out);
     return out;
+}
+
+// The rescaled retry, out of line: the common query never runs it.
+template <class T>
+[[gnu::noinline]] void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache,
+                                        const Options& options, Trace<T>* trace, DistanceOutput<T>& out)
+{
+    const int k = rescaleExponent(input.proxyA, input.transformA, input.proxyB, input.transformB, options.frame);
+    if (k != 0)
+        out = distanceImpl<T, true>(input, cache, options, trace, k);
+    else
+        out.outOfRange = true;
+}
+
+template <class T>
+DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
+                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
+{
+    return distanceImpl<T, false>(input, cache, options, trace, 0);
 }
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
