@@ -254,7 +254,9 @@ template <class T> bool sameBits(gjk::Vec2<T> a, gjk::Vec2<T> b)
 template <class T>
 bool warmRepeatsCold(const gjk::DistanceOutput<T>& cold, const gjk::DistanceOutput<T>& warm)
 {
-    if (cold.stop == gjk::StopReason::IterationLimit || cold.rescaled)
+    // docs/gjk.md: no promise after an iteration limit, or when either query left the safe range.
+    if (cold.stop == gjk::StopReason::IterationLimit || cold.rescaled || cold.outOfRange ||
+        warm.rescaled || warm.outOfRange)
         return true;
     return sameBits(cold.distance, warm.distance) && sameBits(cold.pointA, warm.pointA) &&
            sameBits(cold.pointB, warm.pointB) && sameBits(cold.normal, warm.normal);

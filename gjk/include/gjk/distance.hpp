@@ -1055,9 +1055,13 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     if (options.certify)
         certifyDistance(input, simplex, options.useRadii, rotate(world.q, normal), out);
 
-    out.pointA = transformPoint(world, pA);
-    out.pointB = transformPoint(world, pB);
-    out.normal = rotate(world.q, normal);
+    // "+ 0" turns a negative zero into +0 and changes nothing else (round to nearest): the sign of
+    // a zero component depends on the order of the edge's vertices (x - x is +0, -(x - x) is -0),
+    // which a warm start may reverse (found by the fuzzer: axis-aligned normals).
+    const Vec2<T> zero{};
+    out.pointA = transformPoint(world, pA) + zero;
+    out.pointB = transformPoint(world, pB) + zero;
+    out.normal = rotate(world.q, normal) + zero;
     out.distance = dist;
     out.iterations = iteration;
     out.simplexCount = simplex.count;
