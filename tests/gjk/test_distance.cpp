@@ -713,6 +713,33 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
     CHECK(differing == 0);
 }
 
+TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]", float, double)
+{
+    using T = TestType;
+    // Regression (fuzzer, issue 12): an axis-aligned final edge has a zero normal component whose
+    // sign came from the order of the edge's vertices (x - x is +0, -(x - x) is -0), and a warm
+    // start from the canonical (reversed) cache gave the other sign. A segment of A on an axis
+    // against a point of B across it, in the four axis directions; by hand the normal is +-(1, 0)
+    // or +-(0, 1), the witness on A has one zero coordinate.
+    const Vec2<T> axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    for (const auto& u : axes)
+    {
+        const Vec2<T> v = leftPerp(u);
+        Scene<T> s;
+        s.a = {T(-1) * v, v};
+        s.b = {T(2) * u};
+        SimplexCache cache;
+        const auto cold = distance(s.input(), cache);
+        const auto warm = distance(s.input(), cache);
+        for (const auto& out : {cold, warm})
+        {
+            REQUIRE(out.distance == T(2));
+            for (T c : {out.normal.x, out.normal.y, out.pointA.x, out.pointA.y, out.pointB.x, out.pointB.y})
+                CHECK_FALSE((c == T(0) && std::signbit(c)));
+        }
+    }
+}
+
 TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)
 {
     using T = TestType;
