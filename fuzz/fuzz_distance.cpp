@@ -250,11 +250,10 @@ template <class T> bool sameBits(gjk::Vec2<T> a, gjk::Vec2<T> b)
 // The warm/cold promise as docs/gjk.md ("Warm start", "The promise, stated exactly") states it: a
 // query warm-started from the cache a query left behind, on the same input and options, returns
 // that query's distance, witness points and normal bit for bit, unless that query stopped at the
-// iteration limit or was rescaled.
+// iteration limit, or either of the two left the safe range (rescaled or outOfRange).
 template <class T>
 bool warmRepeatsCold(const gjk::DistanceOutput<T>& cold, const gjk::DistanceOutput<T>& warm)
 {
-    // docs/gjk.md: no promise after an iteration limit, or when either query left the safe range.
     if (cold.stop == gjk::StopReason::IterationLimit || cold.rescaled || cold.outOfRange ||
         warm.rescaled || warm.outOfRange)
         return true;
