@@ -5,9 +5,18 @@
 
 #include <bit>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <random>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 using namespace gjkval;
 
@@ -225,4 +234,261 @@ TEST_CASE("float rounding survives the optimiser: a point's x and y together", "
     CHECK(r.points[1][0] == double(1e30f));
     CHECK(r.points[1][1] == double(-0.3f));
     CHECK(r.points[0][0] != 0.1);
+}
+
+// ---- Hostile files (issue 12, defect 3 and the reader's part of 4 and 6) ----
+
+namespace
+{
+// A gjk-cases/1 file around the given case entries.
+std::string caseFile(const std::string& cases)
+{
+    return R"({"format": "gjk-cases/1", "cases": [)" + cases + "]}";
+}
+
+std::string oneCase(const std::string& name, const std::string& pointA)
+{
+    return R"({"name": ")" + name + R"(", "a": {"points": [)" + pointA +
+           R"(]}, "b": {"points": [[1, 1]]}})";
+}
+
+// Everything the reader passes on goes into report.json: none of it may make a dump throw.
+void requireDumpable(const CaseFile& f)
+{
+    for (const auto& s : f.comments)
+        REQUIRE_NOTHROW(Json(s).dump());
+    for (const auto& e : f.entries)
+    {
+        REQUIRE_NOTHROW(Json(e.label).dump());
+        REQUIRE_NOTHROW(Json(e.c.name).dump());
+        REQUIRE_NOTHROW(Json(e.rejected).dump());
+    }
+}
+} // namespace
+
+TEST_CASE("excerpt: a short, printable, valid UTF-8 quote of any string", "[cases][excerpt]")
+{
+    CHECK(excerpt("gjk-cases/2") == "gjk-cases/2");
+    CHECK(excerpt("caf\xc3\xa9") == "caf\xc3\xa9"); // valid UTF-8 kept
+    CHECK(excerpt("a\xff"
+                  "b") == "a\\xFFb");                        // invalid byte escaped
+    CHECK(excerpt("\x1b[2J\n\x7f") == "\\x1B[2J\\x0A\\x7F"); // C0 and DEL escaped
+    CHECK(excerpt("\xc2\x9b") == "\\xC2\\x9B");              // C1 (CSI) escaped
+    CHECK(excerpt("\xed\xa0\x80") == "\\xED\\xA0\\x80");     // a surrogate is not UTF-8
+    CHECK(excerpt("a\\b") == "a\\\\b");                      // \xHH stays unambiguous
+    const std::string big(200'000'000, 'x');
+    CHECK(excerpt(big) == std::string(60, 'x') + "... (200000000 bytes)");
+    // Cut between characters, never inside one.
+    std::string e;
+    for (int i = 0; i < 40; ++i)
+        e += "\xc3\xa9";
+    CHECK(excerpt(e) == e.substr(0, 60) + "... (80 bytes)");
+    CHECK(isValidUtf8(excerpt(std::string("\xe2\x82") + std::string(100, '\xff'))));
+    CHECK(isValidUtf8("\xf0\x9f\x98\x80"));
+    CHECK_FALSE(isValidUtf8("\xf4\x90\x80\x80")); // above U+10FFFF
+    CHECK_FALSE(isValidUtf8("\xc0\xaf"));         // overlong
+}
+
+TEST_CASE("deep JSON is refused with line and column, never dumped", "[cases][hostile]")
+{
+    // Regression (issue 12, defect 3): a "format" nested 100,000 deep crashed run and explain
+    // (SIGSEGV) in the recursive dump of the error message. The reader refuses depth 65 while
+    // parsing; a case file needs 6 levels. The column is that of the 65th opening bracket.
+    const std::string deep = R"({"format": )" + std::string(100'000, '[') +
+                             std::string(100'000, ']') + R"(, "cases": []})";
+    CHECK(messageOf(deep, "deep.json") == "deep.json:1:75: JSON nested deeper than 64 levels");
+    const std::string deepCase = caseFile(std::string(100'000, '[') + std::string(100'000, ']'));
+    CHECK_THAT(messageOf(deepCase, "d.json"), Catch::EndsWith("JSON nested deeper than 64 levels"));
+    // 64 levels (the top-level object and 63 arrays in an ignored field) are fine.
+    const std::string ok = R"({"format": "gjk-cases/1", "cases": [], "x": )" +
+                           std::string(63, '[') + std::string(63, ']') + "}";
+    CHECK(parseCaseFile(ok, "ok.json").entries.empty());
+    CHECK_THAT(messageOf(R"({"format": "gjk-cases/1", "cases": [], "x": )" + std::string(64, '[') +
+                             std::string(64, ']') + "}",
+                         "d.json"),
+               Catch::StartsWith("d.json:1:108: JSON nested deeper than 64 levels"));
+}
+
+TEST_CASE("a long value is quoted as a short excerpt", "[cases][hostile]")
+{
+    // Regression (issue 12, defect 3): a 200 MB "format" string was echoed whole to stderr.
+    const std::string m =
+        messageOf(R"({"format": ")" + std::string(1'000'000, 'x') + R"(", "cases": []})", "f.json");
+    CHECK(m == "f.json: not a gjk-cases/1 file: format is \"" + std::string(60, 'x') +
+                   "... (1000000 bytes)\"");
+    // A format of the wrong type is named by its type, not dumped.
+    CHECK(messageOf(R"({"format": {"a": [1, 2]}, "cases": []})", "f.json") ==
+          "f.json: not a gjk-cases/1 file: format is an object");
+    // nlohmann's own syntax errors quote the last token whole (control characters as <U+0001>):
+    // only an excerpt of it remains.
+    const std::string s =
+        messageOf(caseFile("\"" + std::string(1'000'000, 'y') + "\x01\""), "s.json");
+    INFO(s);
+    CHECK(s.size() < 300);
+    CHECK_THAT(s, Catch::StartsWith("s.json:1:1000038: invalid JSON: "));
+    CHECK_THAT(s, Catch::EndsWith("... (1000009 bytes)'"));
+}
+
+TEST_CASE("duplicate keys are refused, naming the key and where it is", "[cases][hostile]")
+{
+    // Regression (issue 12, defect 6): duplicate keys silently took the last value.
+    const std::string text = "{\"format\": \"gjk-cases/1\", \"cases\": [\n" +
+                             std::string(R"({"name": "d", "a": {"points": [[0, 0]]},)") +
+                             R"( "a": {"points": [[5, 5]]}, "b": {"points": [[1, 1]]}}]})";
+    CHECK(messageOf(text, "dup.json") == "dup.json:2:42: invalid JSON: duplicate key \"a\"");
+    CHECK(messageOf(R"({"format": "gjk-cases/1", "format": "gjk-cases/1", "cases": []})",
+                    "dup.json") == "dup.json:1:27: invalid JSON: duplicate key \"format\"");
+    // Escaped quotes in the key: the position is still its opening quote; the key is excerpted.
+    CHECK(messageOf(R"({"format": "gjk-cases/1", "cases": [], "k\"\u0001": 1, "k\"\u0001": 2})",
+                    "dup.json") == "dup.json:1:56: invalid JSON: duplicate key \"k\"\\x01\"");
+    // In an ignored field too.
+    CHECK_THAT(messageOf(R"({"format": "gjk-cases/1", "cases": [], "x": {"y": 1, "y": 1}})", "d"),
+               Catch::Contains("duplicate key \"y\""));
+}
+
+TEST_CASE("a number that overflows or silently becomes 0 is refused", "[cases][hostile]")
+{
+    // Regression (issue 12, defect 6): 1e-999 silently became 0.
+    CHECK(messageOf(caseFile(oneCase("u", "[0, 1e-999]")), "u.json") ==
+          "u.json:1:72: number 1e-999 is not 0 but rounds to 0 in a double");
+    CHECK_THAT(messageOf(caseFile(oneCase("u", "[-2e-324, 0]")), "u.json"),
+               Catch::EndsWith("number -2e-324 is not 0 but rounds to 0 in a double"));
+    CHECK(messageOf(caseFile(oneCase("o", "[0, 1e999]")), "o.json") ==
+          "o.json:1:72: number 1e999 overflows a double");
+    // The literal is quoted as an excerpt.
+    CHECK_THAT(messageOf(caseFile(oneCase("o", "[0, 1" + std::string(500, '0') + "]")), "o.json"),
+               Catch::EndsWith("... (501 bytes) overflows a double"));
+    // Zeros, the smallest subnormal (and a literal rounding up to it) and the largest double are
+    // numbers like any other; "-0" keeps its sign as "-0.0" does.
+    const CaseFile f = parseCaseFile(
+        caseFile(
+            oneCase("z", "[0.0e-999, -0e5], [4.9e-324, 3e-324], [1.7976931348623157e308, -0]")),
+        "z.json");
+    REQUIRE(f.entries.size() == 1);
+    REQUIRE(f.entries[0].rejected.empty());
+    const auto& p = f.entries[0].c.a.points;
+    CHECK(bits(p[0][0]) == bits(0.0));
+    CHECK(bits(p[0][1]) == bits(-0.0));
+    CHECK(p[1][0] == std::numeric_limits<double>::denorm_min());
+    CHECK(p[1][1] == std::numeric_limits<double>::denorm_min());
+    CHECK(p[2][0] == std::numeric_limits<double>::max());
+    CHECK(bits(p[2][1]) == bits(-0.0)); // regression: the integer literal -0 was read as +0
+}
+
+TEST_CASE("names must be short, printable UTF-8; labels are excerpts", "[cases][hostile]")
+{
+    // Regression (issue 12, defect 4): a name or path with bytes that are not UTF-8 went into
+    // labels and report.json, where nlohmann's dump threw type_error (abort). A JSON string is
+    // valid UTF-8 (nlohmann's parser checks it); a control character or a long name is a
+    // per-case rejection; the path is excerpted into the label.
+    CHECK_THAT(messageOf(caseFile(oneCase("a\xff", "[0, 0]")), "f.json"),
+               Catch::Contains("ill-formed UTF-8 byte; last read: '\"a\\xFF'"));
+    const CaseFile f = parseCaseFile(caseFile(oneCase(R"(esc\u001b[2J)", "[0, 0]") + "," +
+                                              oneCase(std::string(300, 'n'), "[0, 0]") + "," +
+                                              oneCase("good", "[0, 0]")),
+                                     "dir/x\xff.json");
+    REQUIRE(f.entries.size() == 3);
+    CHECK(f.entries[0].rejected == "name contains a control character or is not valid UTF-8");
+    CHECK(f.entries[0].label == "x\\xFF.json#0 (case 'esc\\x1B[2J')");
+    CHECK(f.entries[1].rejected == "name is 300 bytes long, more than 256");
+    CHECK(f.entries[1].label ==
+          "x\\xFF.json#1 (case '" + std::string(60, 'n') + "... (300 bytes)')");
+    CHECK(f.entries[2].rejected.empty());
+    CHECK(f.entries[2].c.name == "good");
+    requireDumpable(f);
+    // A duplicate name is quoted as an excerpt.
+    const CaseFile d = parseCaseFile(
+        caseFile(oneCase("\xc3\xa9", "[0, 0]") + "," + oneCase("\xc3\xa9", "[0, 0]")), "d.json");
+    CHECK(d.entries[1].rejected == "duplicate case name '\xc3\xa9'");
+}
+
+TEST_CASE("comments and shapes have documented limits", "[cases][hostile]")
+{
+    const std::string longComment(64 * 1024 + 1, 'c');
+    CHECK_THAT(messageOf(R"({"format": "gjk-cases/1", "cases": [], "comments": ["ok", ")" +
+                             longComment + "\"]}",
+                         "c.json"),
+               Catch::EndsWith("comments[1] is 65537 bytes long, more than 65536"));
+    CHECK(parseCaseFile(R"({"format": "gjk-cases/1", "cases": [], "comments": [")" +
+                            std::string(64 * 1024, 'c') + "\"]}",
+                        "c.json")
+              .comments.size() == 1);
+    // A shape of more than 1,000,000 points is rejected; the other cases run.
+    std::string many = "[0, 0]";
+    for (int i = 0; i < 1'000'000; ++i)
+        many += ",[1,2]";
+    const CaseFile f =
+        parseCaseFile(caseFile(oneCase("many", many) + "," + oneCase("few", "[0, 0]")), "m.json");
+    REQUIRE(f.entries.size() == 2);
+    CHECK(f.entries[0].rejected == "a.points has 1000001 points, more than 1000000");
+    CHECK(f.entries[1].rejected.empty());
+}
+
+TEST_CASE("what is read is bounded: devices, directories, large files, endless pipes",
+          "[cases][files]")
+{
+    // Regression (issue 12, defect 4): `--cases /dev/zero` read until bad_alloc.
+    auto readMessage = [](const std::string& path)
+    {
+        try
+        {
+            readCaseFile(path);
+        }
+        catch (const InputError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    CHECK(readMessage("/dev/zero") ==
+          "/dev/zero: is a character device, expected a case file (a regular file or a pipe)");
+    const std::filesystem::path dir = std::string(VALIDATION_TEST_TMP) + "/case-files";
+    std::filesystem::create_directories(dir);
+    CHECK(readMessage(dir.string()) == dir.string() +
+                                           ": is a directory, expected a case file (a regular "
+                                           "file or a pipe)");
+    CHECK_THAT(readMessage(dir.string() + "/missing.json"),
+               Catch::EndsWith("missing.json: cannot open the file: No such file or directory"));
+    // A regular file above 256 MiB is refused by its size, before it is read (a sparse file).
+    const std::string big = (dir / "big.json").string();
+    {
+        std::ofstream(big) << "{";
+    }
+    std::filesystem::resize_file(big, (std::uintmax_t(256) << 20) + 1);
+    CHECK(readMessage(big) == big + ": larger than 268435456 bytes, the limit for a case file");
+    std::filesystem::remove(big);
+}
+
+TEST_CASE("an endless pipe is cut at the size limit", "[cases][files][pipe]")
+{
+    const std::string fifo = std::string(VALIDATION_TEST_TMP) + "/case-files/endless.fifo";
+    std::filesystem::create_directories(std::filesystem::path(fifo).parent_path());
+    std::filesystem::remove(fifo);
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const auto previous = std::signal(SIGPIPE, SIG_IGN); // the writer sees EPIPE instead
+    std::thread writer(
+        [&]
+        {
+            const int fd = open(fifo.c_str(), O_WRONLY);
+            if (fd < 0)
+                return;
+            const std::string block(1 << 16, ' ');
+            while (write(fd, block.data(), block.size()) > 0)
+            {
+            }
+            close(fd);
+        });
+    std::string message = "(no error)";
+    try
+    {
+        readCaseFile(fifo);
+    }
+    catch (const InputError& e)
+    {
+        message = e.what();
+    }
+    writer.join();
+    std::signal(SIGPIPE, previous);
+    std::filesystem::remove(fifo);
+    CHECK(message == fifo + ": larger than 268435456 bytes, the limit for a case file");
 }

@@ -45,9 +45,25 @@ struct CaseFile
 
 inline constexpr const char* kCaseFormat = "gjk-cases/1";
 
-// Reads and checks a case file. A file that is unreadable, not JSON or not gjk-cases/1 throws
-// InputError naming the file (and line:column for a JSON syntax error). A case with an invalid
-// field is kept as a rejected entry naming file, case and field; the other cases are valid.
+// Limits of the reader (docs/validation.md, "Case files"): what a hostile file can cost in memory
+// is bounded by these, not by what the file claims. Files and JSON beyond them are refused, cases
+// beyond them are rejected.
+inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 MiB
+inline constexpr std::size_t kMaxJsonDepth = 64;             // a case file needs 6 levels
+inline constexpr std::size_t kMaxCasesPerFile = 1'000'000;   // entries of "cases"
+inline constexpr std::size_t kMaxComments = 10'000;          // entries of "comments"
+inline constexpr std::size_t kMaxCommentBytes = 64 << 10;    // one comment
+inline constexpr std::size_t kMaxCaseNameBytes = 256;        // one case name
+inline constexpr std::size_t kMaxShapePoints = 1'000'000;    // points of one shape
+inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of one case
+
+// Reads and checks a case file. A file that is unreadable, not a regular file or a pipe, larger
+// than kMaxCaseFileBytes, not JSON (also: nested deeper than kMaxJsonDepth, a duplicate key, a
+// number that overflows a double or is not 0 but rounds to 0) or not gjk-cases/1 throws InputError
+// naming the file (and line:column where the JSON is at fault). A case with an invalid field is
+// kept as a rejected entry naming file, case and field; the other cases are valid. Every string the
+// reader returns (names, labels, comments, reasons) is valid UTF-8; user strings in messages and
+// labels are quoted through excerpt().
 CaseFile readCaseFile(const std::string& path);
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName);
 
