@@ -1,6 +1,7 @@
 #include "campaign.hpp"
 
 #include "build_info.hpp"
+#include "output.hpp"
 #include "report.hpp"
 #include "timing.hpp"
 
@@ -10,8 +11,10 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <condition_variable>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
 #include <exception>
 #include <filesystem>
@@ -665,39 +668,73 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
     return camp;
 }
 
+namespace
+{
+// Every file a report directory holds; writeCampaign replaces the directory as a whole.
+const char* const kReportFiles[] = {"report.json", "report.md", "worst-cases.json", "cases.jsonl",
+                                    "index.html"};
+} // namespace
+
+void checkReportDir(const std::string& outDir)
+{
+    if (outDir.empty())
+        throw InputError("--out: the output directory is empty");
+    const fs::path dir = reportDirPath(outDir);
+    std::error_code ec;
+    const auto st = fs::status(dir, ec);
+    if (fs::exists(st))
+    {
+        if (!fs::is_directory(st))
+            throw InputError(fmt::format("--out {}: exists and is not a directory", excerpt(outDir)));
+        // The whole directory is replaced: refuse one that holds anything else than a report.
+        for (const auto& e : fs::directory_iterator(dir, ec))
+        {
+            const std::string name = e.path().filename().string();
+            if (std::find(std::begin(kReportFiles), std::end(kReportFiles), name) ==
+                std::end(kReportFiles))
+                throw InputError(fmt::format(
+                    "--out {}: holds '{}', which is not part of a report (the directory is "
+                    "replaced as a whole: give a new or a report directory)",
+                    excerpt(outDir), excerpt(name)));
+        }
+        if (ec)
+            throw InputError(
+                fmt::format("--out {}: cannot read the directory: {}", excerpt(outDir), ec.message()));
+    }
+    // The parent must exist or be creatable, and be writable: the report is staged beside DIR.
+    fs::path parent = dir.parent_path();
+    while (!fs::exists(parent, ec) && parent.has_relative_path())
+        parent = parent.parent_path();
+    if (!fs::is_directory(parent, ec))
+        throw InputError(fmt::format("--out {}: {} is not a directory", excerpt(outDir),
+                                     excerpt(parent.string())));
+    if (::access(parent.c_str(), W_OK | X_OK) != 0)
+        throw InputError(fmt::format("--out {}: cannot write in {}: {}", excerpt(outDir),
+                                     excerpt(parent.string()), std::strerror(errno)));
+}
+
 std::string writeCampaign(const Campaign& camp, const std::string& outDir)
 {
-    const fs::path dir = fs::absolute(fs::path(outDir));
-    std::error_code ec;
-    fs::create_directories(dir, ec);
-    if (ec)
-        throw InputError(
-            fmt::format("{}: cannot create the directory: {}", dir.string(), ec.message()));
-    auto write = [&](const std::string& name, const std::string& text)
-    {
-        std::ofstream out(dir / name, std::ios::binary);
-        out << text;
-        if (!out)
-            throw InputError(fmt::format("{}: write failed", (dir / name).string()));
-    };
-    write("report.json", camp.report.dump(1) + "\n"); // first: everything else is rendered from it
-    write("report.md", renderMarkdown(camp.report));
-    writeCaseFile((dir / "worst-cases.json").string(), camp.worstComments, camp.worstCases);
+    // Staged beside DIR and swapped in: DIR holds this run or the previous one, never a mix.
+    StagedDir out(reportDirPath(outDir));
+    out.write("report.json", camp.report.dump(1) + "\n"); // first: the rest is rendered from it
+    out.write("report.md", renderMarkdown(camp.report));
+    out.write("worst-cases.json", caseFileText(camp.worstComments, camp.worstCases));
     if (!camp.perCaseLines.empty())
     {
         std::string s;
         for (const auto& l : camp.perCaseLines)
             s += l + "\n";
-        write("cases.jsonl", s);
+        out.write("cases.jsonl", s);
     }
-    else
-        fs::remove(dir / "cases.jsonl", ec); // a stale one would not match this report
 #if defined(GJK2D_HAVE_HTML)
-    write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump())));
-    return (dir / "index.html").lexically_normal().string();
+    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump())));
+    const std::string page = "index.html";
 #else
-    return (dir / "report.md").lexically_normal().string();
+    const std::string page = "report.md";
 #endif
+    out.commit();
+    return (out.dir() / page).string();
 }
 
 Json stripVolatile(Json r)

@@ -74,9 +74,14 @@ struct Campaign
 
 Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> families);
 
+// Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
+// directory, holds files that are not a report's, parent not creatable or not writable).
+void checkReportDir(const std::string& outDir);
+
 // Writes report.json, report.md, worst-cases.json, cases.jsonl (if any) and index.html (when the
-// HTML renderer is built in). Returns the absolute path of the page to open (index.html, or
-// report.md without the renderer).
+// HTML renderer is built in) into a directory beside outDir, then swaps it in: outDir holds this
+// run or the previous one, never a mix. Throws OutputError (exit code 5) when a write fails.
+// Returns the absolute path of the page to open (index.html, or report.md without the renderer).
 std::string writeCampaign(const Campaign& campaign, const std::string& outDir);
 
 // The report without what legitimately changes between runs of the same campaign (timings,
