@@ -1,5 +1,6 @@
 # Runs EXE with ARGS ('|'-separated) and checks its exit code is EXPECT; optionally that stderr
-# contains EXPECT_STDERR, that the last stdout line starts with EXPECT_LAST_LINE, that the
+# contains EXPECT_STDERR (and then is one line: every error is one line), that stdout contains
+# EXPECT_STDOUT, that the last stdout line starts with EXPECT_LAST_LINE, that the
 # file EXPECT_FILE exists afterwards, and that it is JSON holding EXPECT_JSON: '|'-separated
 # entries PATH:TYPE, PATH a '/'-separated key path ("variants/double/ns_per_query"), TYPE one of
 # string(JSON TYPE)'s answers (NUMBER, STRING, OBJECT, ARRAY, BOOLEAN, NULL).
@@ -15,6 +16,17 @@ if(DEFINED EXPECT_STDERR)
   string(FIND "${err}" "${EXPECT_STDERR}" at)
   if(at EQUAL -1)
     message(FATAL_ERROR "stderr does not contain '${EXPECT_STDERR}':\n${err}")
+  endif()
+  string(STRIP "${err}" stripped_err)
+  string(FIND "${stripped_err}" "\n" newline)
+  if(NOT newline EQUAL -1 AND NOT EXPECT STREQUAL "0")
+    message(FATAL_ERROR "stderr is not one line:\n${err}")
+  endif()
+endif()
+if(DEFINED EXPECT_STDOUT)
+  string(FIND "${out}" "${EXPECT_STDOUT}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "stdout does not contain '${EXPECT_STDOUT}':\n${out}")
   endif()
 endif()
 if(DEFINED EXPECT_LAST_LINE)

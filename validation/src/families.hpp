@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gjkval
@@ -77,7 +78,22 @@ const std::vector<HardSubFamilyInfo>& hardSubFamilies();
 
 inline constexpr int kDefaultRandomCount = 200000;
 
-// "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]". Throws InputError.
+// The largest N of a family spec (the memory a run needs is checked apart, in main).
+inline constexpr int kMaxFamilyCount = 100000000;
+
+// A family spec parsed: "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]", N a whole
+// number in 1..kMaxFamilyCount. Throws InputError (unknown family, bad count).
+struct FamilySpec
+{
+    std::string name; // "random", "hard", "hard/sliver"
+    int count = -1;   // -1: the default count
+};
+FamilySpec parseFamilySpec(const std::string& spec);
+
+// The families a spec stands for and their case counts, without generating them.
+std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySpec& spec);
+
+// Generates the families of a spec (parseFamilySpec). Throws InputError.
 std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed);
 
 std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 
 namespace gjkval
@@ -70,10 +71,9 @@ std::string renderMarkdown(const Json& r)
     const auto judged = judgedMap(r);
     std::string s;
     s += "# GJK validation report\n\n";
-    s += fmt::format("**Result: {}** (exit code {}; judged variants only: comparison variants' "
+    s += fmt::format("**Result: {}** (judged variants only: comparison variants' "
                      "{} failures are shown, not judged)\n\n",
-                     r["passed"].get<bool>() ? "PASS" : "FAIL", r["exit_code"].get<int>(),
-                     comparisonFailures(r, judged));
+                     resultText(r), comparisonFailures(r, judged));
     s += "| | |\n|---|---|\n";
     for (const char* k :
          {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
@@ -269,10 +269,71 @@ std::string terminalSummary(const Json& r)
         t["gjk_cases_per_s"].get<double>(), e["gjk"].get<double>(), r["variants"].size(),
         t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
         e["timing"].get<double>());
-    s += fmt::format("result: {} (exit code {}, from the judged variants); comparison variants: {} "
-                     "failure(s), shown, not judged\n",
-                     r["passed"].get<bool>() ? "PASS" : "FAIL", r["exit_code"].get<int>(),
-                     comparisonFailures(r, judged));
+    s += fmt::format("result: {}; comparison variants: {} failure(s), shown, not judged\n",
+                     resultText(r), comparisonFailures(r, judged));
+    return s;
+}
+
+std::string resultText(const Json& r)
+{
+    const int code = r["exit_code"].get<int>();
+    if (code == kExitPass)
+        return "PASS (exit code 0)";
+    if (code == kExitInput)
+    {
+        const Json& c = r["context"];
+        const auto rejected = c["cases_rejected"].get<std::uint64_t>(),
+                   total = c["cases_total"].get<std::uint64_t>();
+        if (rejected >= total)
+            return fmt::format("INPUT ERROR (exit code 2): {} case(s) rejected, none judged",
+                               rejected);
+        return fmt::format("INPUT ERROR (exit code 2): {} case(s) rejected; the {} judged "
+                           "case(s) pass",
+                           rejected, total - rejected);
+    }
+    return fmt::format("FAIL (exit code {}, from the judged variants)", code);
+}
+
+namespace
+{
+// Words of `text` in lines of at most `width` characters, each line starting with `indent`.
+std::string wrap(const std::string& text, const std::string& indent, std::size_t width)
+{
+    std::string out, line = indent;
+    std::size_t i = 0;
+    while (i < text.size())
+    {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        const std::string word = text.substr(i, end - i);
+        if (line.size() > indent.size() && line.size() + 1 + word.size() > width)
+        {
+            out += line + "\n";
+            line = indent;
+        }
+        line += (line.size() > indent.size() ? " " : "") + word;
+        i = end + 1;
+    }
+    return out + line + "\n";
+}
+} // namespace
+
+std::string exitCodesHelp(std::size_t width)
+{
+    std::string s = "Exit codes:\n";
+    for (const auto& e : kExitCodeTable)
+    {
+        std::string w = wrap(e.meaning, "     ", width);
+        s += fmt::format("  {}  {}", e.code, w.substr(5));
+    }
+    s.pop_back(); // CLI11 ends the footer with its own newline
+    return s;
+}
+
+std::string exitCodesMarkdown()
+{
+    std::string s = "| code | meaning |\n|---|---|\n";
+    for (const auto& e : kExitCodeTable)
+        s += fmt::format("| {} | {} |\n", e.code, e.meaning);
     return s;
 }
 

@@ -1,0 +1,246 @@
+// The gjk-validate program on hostile command lines and failing writes (issue 12, defects 4-6):
+// what CMake's expect_exit.cmake cannot express (raw non-UTF-8 bytes, a file size limit, file
+// contents before and after). Each test runs the program in a child process.
+#include "common.hpp"
+#include "report.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace gjkval;
+namespace fs = std::filesystem;
+
+namespace
+{
+struct Run
+{
+    int code = -1; // exit code; 128 + signal number when killed
+    std::string err;
+};
+
+// Runs gjk-validate with args; fileSizeLimit > 0 sets RLIMIT_FSIZE (bytes) in the child.
+Run runCli(const std::vector<std::string>& args, rlim_t fileSizeLimit = 0,
+           const char* fault = nullptr)
+{
+    // One file per test process: CTest runs the test cases in parallel.
+    const fs::path errFile =
+        fs::path(VALIDATION_TEST_TMP) / ("cli-stderr-" + std::to_string(::getpid()) + ".txt");
+    fs::create_directories(errFile.parent_path());
+    const pid_t pid = ::fork();
+    if (pid == 0)
+    {
+        const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(err, 2);
+        ::dup2(null, 1);
+        if (fileSizeLimit > 0)
+        {
+            const rlimit lim{fileSizeLimit, fileSizeLimit};
+            ::setrlimit(RLIMIT_FSIZE, &lim);
+        }
+        if (fault != nullptr)
+            ::setenv("GJK2D_VALIDATE_TEST_FAULT", fault, 1);
+        std::vector<char*> argv{const_cast<char*>(GJK_VALIDATE_EXE)};
+        for (const auto& a : args)
+            argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(GJK_VALIDATE_EXE, argv.data());
+        ::_exit(127);
+    }
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    Run r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    std::ifstream in(errFile, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    r.err = ss.str();
+    return r;
+}
+
+std::string slurp(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// Every file of a directory with its contents.
+std::map<std::string, std::string> snapshot(const fs::path& dir)
+{
+    std::map<std::string, std::string> m;
+    for (const auto& e : fs::directory_iterator(dir))
+        m[e.path().filename().string()] = slurp(e.path());
+    return m;
+}
+
+// Entries of dir's parent whose name starts with "." + dir's name: staging leftovers.
+std::vector<std::string> leftovers(const fs::path& dir)
+{
+    std::vector<std::string> v;
+    const std::string prefix = "." + dir.filename().string();
+    for (const auto& e : fs::directory_iterator(dir.parent_path()))
+        if (e.path().filename().string().rfind(prefix, 0) == 0)
+            v.push_back(e.path().string());
+    return v;
+}
+
+fs::path freshDir(const std::string& name)
+{
+    const fs::path d = fs::path(VALIDATION_TEST_TMP) / "cli" / name;
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+bool contains(const std::string& s, const std::string& part)
+{
+    return s.find(part) != std::string::npos;
+}
+} // namespace
+
+// Defect 4: a non-UTF-8 byte in --out, --cases or --comment aborted the program (rc 134) with a
+// JSON type_error while writing the report, after the whole campaign. Now every argument is
+// checked first: exit 2, one line naming the argument, nothing written.
+TEST_CASE("cli refuses non-UTF-8 arguments before any work", "[cli]")
+{
+    const fs::path d = freshDir("utf8");
+    const std::string bad = std::string("r\xff");
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"run", "--family", "random:3", "--out", (d / bad).string()},
+          std::vector<std::string>{"run", "--family", "random:3", "--cases", bad, "--out",
+                                   (d / "r").string()},
+          std::vector<std::string>{"generate", "--family", "random:3", "--comment", "x\xff", "-o",
+                                   (d / "g.json").string()}})
+    {
+        const Run r = runCli(args);
+        CHECK(r.code == kExitInput);
+        CHECK(contains(r.err, "is not valid UTF-8"));
+        CHECK(contains(r.err, "\\xFF"));
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    }
+    CHECK(fs::is_empty(d));
+}
+
+// Defect 4: `run --out ''` aborted. (CMake cannot pass an empty argument, hence here.)
+TEST_CASE("cli refuses an empty --out", "[cli]")
+{
+    const Run r = runCli({"run", "--family", "random:3", "--out", ""});
+    CHECK(r.code == kExitInput);
+    CHECK(contains(r.err, "--out: the output directory is empty"));
+}
+
+// Defect 4: `generate --comment $'x\xff' -o keep.json` first emptied keep.json, then aborted.
+// A failed generate (here a 4 KB file size limit) leaves the old file whole and no temporary
+// file beside it: exit 5.
+TEST_CASE("cli generate leaves an existing file whole when it fails", "[cli]")
+{
+    const fs::path d = freshDir("keep");
+    const fs::path keep = d / "keep.json";
+    std::ofstream(keep) << "the previous file\n";
+    Run r = runCli({"generate", "--family", "random:3", "--comment", "x\xff", "-o", keep.string()});
+    CHECK(r.code == kExitInput);
+    CHECK(slurp(keep) == "the previous file\n");
+
+    r = runCli({"generate", "--family", "random:2000", "-o", keep.string()}, 4096);
+    CHECK(r.code == kExitResources);
+    CHECK(contains(r.err, "write failed"));
+    CHECK(slurp(keep) == "the previous file\n");
+    CHECK(leftovers(keep).empty());
+
+    r = runCli({"generate", "--family", "random:3", "-o", keep.string()});
+    CHECK(r.code == kExitPass);
+    CHECK(contains(slurp(keep), "gjk-cases/1"));
+}
+
+// Defect 5: a report written in place could be cut (killed, disk full) or mix two runs. Now the
+// directory is staged beside DIR and swapped in: a failing write (a 64 KB file size limit: the
+// report.json of 60 cases is ~0.5 MB) leaves every previous file as it was, and no staging
+// directory behind; a successful run replaces every file (a stale cases.jsonl disappears).
+TEST_CASE("cli report directory holds one whole run", "[cli]")
+{
+    const fs::path d = freshDir("report") / "latest";
+    const std::vector<std::string> first = {"run",          "--family", "random:60",
+                                            "--seed",       "1",        "--no-timing",
+                                            "--per-case",   "--out",    d.string()};
+    REQUIRE(runCli(first).code == kExitPass);
+    const auto before = snapshot(d);
+    REQUIRE(before.count("report.json") == 1);
+    REQUIRE(before.count("cases.jsonl") == 1);
+
+    const std::vector<std::string> second = {"run",    "--family",    "random:60",
+                                             "--seed", "2",           "--no-timing",
+                                             "--out",  d.string()};
+    const Run failed = runCli(second, 64 * 1024);
+    INFO(failed.err);
+    CHECK(failed.code == kExitResources);
+    CHECK(contains(failed.err, "report.json: write failed"));
+    CHECK(snapshot(d) == before);
+    CHECK(leftovers(d).empty());
+
+    REQUIRE(runCli(second).code == kExitPass);
+    const auto after = snapshot(d);
+    CHECK(after.count("cases.jsonl") == 0);
+    for (const auto& [name, text] : after)
+    {
+        INFO(name);
+        CHECK(before.count(name) == 1);
+        CHECK(text != before.at(name));
+    }
+    CHECK(contains(after.at("report.json"), "\"seed\": 2"));
+    CHECK(leftovers(d).empty());
+}
+
+// The whole directory is replaced, so one that holds anything else is refused up front (exit 2)
+// and left alone: `--out .` must never swap away a user's files.
+TEST_CASE("cli refuses an output directory holding other files", "[cli]")
+{
+    const fs::path d = freshDir("foreign");
+    std::ofstream(d / "notes.txt") << "mine\n";
+    const Run r = runCli({"run", "--family", "random:3", "--no-timing", "--out", d.string()});
+    CHECK(r.code == kExitInput);
+    CHECK(contains(r.err, "notes.txt"));
+    CHECK(slurp(d / "notes.txt") == "mine\n");
+    CHECK(leftovers(d).empty());
+}
+
+// Defect 4: only InputError was caught; a broken invariant or bad_alloc aborted (rc 134). The
+// test-only fault hook throws after the arguments are checked.
+TEST_CASE("cli top-level handlers give exit codes 4 and 5", "[cli]")
+{
+    const fs::path d = freshDir("fault") / "r";
+    const std::vector<std::string> args = {"run", "--family", "random:3", "--no-timing", "--out",
+                                           d.string()};
+    Run r = runCli(args, 0, "logic_error");
+    CHECK(r.code == kExitInternal);
+    CHECK(contains(r.err, "gjk-validate: internal error: test fault"));
+    r = runCli(args, 0, "unknown");
+    CHECK(r.code == kExitInternal);
+    CHECK(contains(r.err, "internal error"));
+    r = runCli(args, 0, "bad_alloc");
+    CHECK(r.code == kExitResources);
+    CHECK(contains(r.err, "out of memory"));
+    CHECK(!fs::exists(d));
+}
+
+// Defect D: the exit codes have one home, kExitCodeTable; docs/validation.md holds its table.
+TEST_CASE("docs list every exit code as kExitCodeTable says", "[cli]")
+{
+    const std::string docs = slurp(fs::path(GJK2D_SOURCE_DIR) / "docs" / "validation.md");
+    CHECK(contains(docs, exitCodesMarkdown()));
+    const std::string help = exitCodesHelp();
+    for (const auto& e : kExitCodeTable)
+        CHECK(contains(help, "\n  " + std::to_string(e.code) + "  "));
+}
