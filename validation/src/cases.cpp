@@ -263,8 +263,10 @@ CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std:
     e.label = fmt::format("{}#{}", base, index);
     try
     {
-        if (truncated)
-            fieldError(fmt::format("the case has more than {} JSON values", kMaxCaseJsonValues));
+        const std::string tooLarge =
+            fmt::format("the case has more than {} JSON values", kMaxCaseJsonValues);
+        if (truncated && !(c.is_object() && c.contains("name")))
+            fieldError(tooLarge);
         if (!c.is_object())
             fieldError(fmt::format("the case is {}, expected an object", typeName(c)));
         if (!c.contains("name"))
@@ -283,6 +285,8 @@ CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std:
         if (!names.insert(name).second)
             fieldError(fmt::format("duplicate case name '{}'", excerpt(name)));
         e.c.name = name;
+        if (truncated) // named when the name came before the cut
+            fieldError(tooLarge);
         e.c.a = readShape(c, "a");
         e.c.b = readShape(c, "b");
     }
