@@ -13,6 +13,7 @@
 //  - no sanitizer report (ASan, UBSan) and no GJK contract assert (GJK2D_CHECKED);
 //  - the distance is finite and >= 0, or out.outOfRange is set (also when the exact distance is
 //    beyond the largest T: docs/gjk.md, "Rescaling");
+//  - the witness points and the normal are finite, or out.outOfRange is set;
 //  - 1 <= out.simplexCount <= 3 and 0 <= out.iterations <= the iteration limit
 //    (Options::maxIterations, or 32 + 2 (countA + countB) when it is 0);
 //  - when out.certified: lower <= upper and the exact distance (exact::distance, the exact side)
@@ -286,6 +287,9 @@ void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const cha
     };
     if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)))
         finding(out, which, "distance is negative or not finite and outOfRange is not set");
+    auto finite = [](gjk::Vec2<T> v) { return std::isfinite(v.x) && std::isfinite(v.y); };
+    if (!out.outOfRange && !(finite(out.pointA) && finite(out.pointB) && finite(out.normal)))
+        finding(out, which, "a witness point or the normal is not finite and outOfRange is not set");
     if (out.simplexCount < 1 || out.simplexCount > 3)
         finding(out, which, "simplexCount outside 1..3");
     const int limit = q.options.maxIterations > 0
