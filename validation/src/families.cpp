@@ -1195,6 +1195,18 @@ void genColdStartSweep(Rng& r, int i, Case& c, std::string& tag)
     }
 }
 
+// Scales 1e-300 .. 1e300 in steps of 10x: a random pair (gap, penetration, deep overlap, random
+// placement) scaled as a whole. Outside Tolerances<T>'s safe range the query reruns rescaled by a
+// power of two (issue 12, "any finite input gets an answer"): every case here must be answered
+// within its bound, none flagged outOfRange. Float variants see the cases that fit in float.
+void genExtremeScale(Rng& r, int i, Case& c, std::string& tag)
+{
+    const int e = -300 + 10 * (i % 61), mode = (i / 61) % 4;
+    randomPair(r, c, mode);
+    scaleCase(c, std::pow(10.0, e));
+    tag = fmt::format("{}-1e{}", scaledTag(mode), e);
+}
+
 // --- THE table: every hard sub-family, its size, why it is here, and its make-up ---------------
 
 struct HardEntry
@@ -1398,15 +1410,25 @@ const std::vector<HardEntry>& hardTable()
           {"max size ratio", M::MaxSizeRatio, 1e17, kInf},
           {"separated fraction", M::SeparatedFraction, 0.5, 0.95},
           {"max distance", M::MaxDistance, 0, 1e-4}}},
+        {{"extreme-scale", 244,
+          "A random pair (at a gap, penetrating, deeply overlapping, placed at random) scaled by "
+          "1e-300, 1e-290, ... 1e300: outside the type's safe range the query must rescale itself "
+          "by a power of two (exact) and answer within its bound, never flag a finite input whose "
+          "extent fits in the exponent range (issue 12: two separated shapes at 1e-300 were "
+          "answered 0 and flagged)."},
+         genExtremeScale,
+         {{"max |coordinate|", M::MaxCoordinate, 1e299, kInf},
+          {"smallest case scale", M::MinScale, 0, 1e-299},
+          {"separated fraction", M::SeparatedFraction, 0.2, 0.8}}},
         {{"range", 72,
           "Inputs outside float's safe range (coordinates 1e19 .. 1e30, 1e-20 .. 1e-30: squared "
           "lengths overflow or underflow in float) and double's (1e160, 1e-160): random pairs "
           "scaled, a common offset, baked coordinates, and shapes of size 1e19..1e30 (and 1e160) "
           "starting (vertex 0 of each, same translation) at a vertex pair 0.4 times the type's "
           "maxCoordinate apart: the support points stay in range while dot(d, point) with the "
-          "shapes' own points overflows. GJK must flag them outOfRange (not "
-          "judged, counted apart) instead of returning inf, NaN or a silently wrong distance; "
-          "cases inside a type's range are judged as usual."},
+          "shapes' own points overflows. GJK must not return inf, NaN or a silently wrong "
+          "distance: since issue 12 it reruns such queries rescaled by a power of two and they are "
+          "judged within their bound (outOfRange only for inputs that cannot be rescaled)."},
          genRange,
          {{"max |coordinate|", M::MaxCoordinate, 1e160, kInf},
           {"smallest case scale", M::MinScale, 0, 1e-158},
@@ -1485,29 +1507,58 @@ const std::vector<HardSubFamilyInfo>& hardSubFamilies()
     return infos;
 }
 
+FamilySpec parseFamilySpec(const std::string& spec)
+{
+    FamilySpec out;
+    out.name = spec;
+    const auto colon = spec.find(':');
+    if (colon != std::string::npos)
+    {
+        out.name = spec.substr(0, colon);
+        const std::string n = spec.substr(colon + 1);
+        // Decimal digits only ("+5", "-1", " 5", "5x", "1e3" are refused), 1 .. kMaxFamilyCount.
+        long long v = 0;
+        bool ok = !n.empty() && n.size() <= 10;
+        for (char c : n)
+            ok = ok && c >= '0' && c <= '9';
+        if (ok)
+            v = std::stoll(n);
+        if (!ok || v < 1 || v > kMaxFamilyCount)
+            throw InputError(fmt::format("--family {}: the count '{}' is not a whole number in "
+                                         "1..{}",
+                                         excerpt(spec), excerpt(n), kMaxFamilyCount));
+        out.count = int(v);
+    }
+    bool known = out.name == "random" || out.name == "hard";
+    for (const auto& e : hardTable())
+        known = known || out.name == "hard/" + e.info.name;
+    if (!known)
+    {
+        std::string names = "random, hard";
+        for (const auto& e : hardTable())
+            names += ", hard/" + e.info.name;
+        throw InputError(fmt::format("unknown family '{}' (known: {})", excerpt(out.name), names));
+    }
+    return out;
+}
+
+std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySpec& spec)
+{
+    if (spec.name == "random")
+        return {{"random", std::size_t(spec.count < 0 ? kDefaultRandomCount : spec.count)}};
+    std::vector<std::pair<std::string, std::size_t>> out;
+    for (const auto& e : hardTable())
+        if (spec.name == "hard" || spec.name == "hard/" + e.info.name)
+            out.emplace_back("hard/" + e.info.name,
+                             std::size_t(spec.count < 0 ? e.info.count : spec.count));
+    return out;
+}
+
 std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed)
 {
-    std::string name = spec;
-    int count = -1;
-    if (const auto colon = spec.find(':'); colon != std::string::npos)
-    {
-        name = spec.substr(0, colon);
-        const std::string n = spec.substr(colon + 1);
-        std::size_t used = 0;
-        long v = -1;
-        try
-        {
-            v = std::stol(n, &used);
-        }
-        catch (...)
-        {
-            used = 0;
-        }
-        if (used != n.size() || v < 0 || v > 100000000)
-            throw InputError(
-                fmt::format("--family {}: the count '{}' is not a number in 0..1e8", spec, n));
-        count = int(v);
-    }
+    const FamilySpec parsed = parseFamilySpec(spec);
+    const std::string& name = parsed.name;
+    const int count = parsed.count;
     std::vector<GeneratedFamily> out;
     if (name == "random")
     {
@@ -1523,13 +1574,8 @@ std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint
             out.push_back(generate(full, e.info.reason, count < 0 ? e.info.count : count, seed,
                                    e.gen, e.makeup));
     }
-    if (out.empty())
-    {
-        std::string known = "random, hard";
-        for (const auto& e : hardTable())
-            known += ", hard/" + e.info.name;
-        throw InputError(fmt::format("unknown family '{}' (known: {})", name, known));
-    }
+    if (out.empty()) // parseFamilySpec accepted the name: a broken invariant, not bad input
+        throw std::logic_error("generateFamilies: the family '" + name + "' generated nothing");
     return out;
 }
 
