@@ -740,6 +740,48 @@ TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]
     }
 }
 
+TEST_CASE("warm start: the binary-search support starts where the last search started",
+          "[gjk][cache][support]")
+{
+    // Regression (fuzz/corpus/fuzz_distance/finding-warm-cold-float-binary-start, found by
+    // fuzz_distance): the galloping search of SupportStrategy::BinarySearch returns, among nearly
+    // tied vertices, one that depends on its start. A warm start began at the cached simplex's
+    // first vertex, the cold query's last search at its previous support point: the warm repeat
+    // found another vertex (B's 0 instead of 2), went on, and answered 2^-66 for the cold 1.65 *
+    // 2^-64. SimplexCache::searchA/searchB now keep where the last searches started.
+    using T = float;
+    Scene<T> s;
+    s.a = {{0x1.6p-62f, 0x1.e4p-9f},  {0x1p-62f, 0x1p-9f},       {0x1p-63f, 0x1p-11f},
+           {0x1p-64f, 0x1p-13f},      {0x1.8p-65f, 0x1.2p-14f},  {0x1p-65f, 0x1p-15f},
+           {0x1p-66f, 0x1p-17f},      {0x1.fp-61f, 0x1.e08p-6f}, {0x1.ep-61f, 0x1.c2p-6f},
+           {0x1.d8p-61f, 0x1.b32p-6f}, {0x1.c8p-61f, 0x1.962p-6f}, {0x1.cp-61f, 0x1.88p-6f},
+           {0x1.9p-61f, 0x1.388p-6f}, {0x1.6p-61f, 0x1.e4p-7f},  {0x1.58p-61f, 0x1.ce4p-7f},
+           {0x1.5p-61f, 0x1.b9p-7f},  {0x1.38p-61f, 0x1.7c4p-7f}, {0x1.1p-61f, 0x1.21p-7f},
+           {0x1.ep-62f, 0x1.c2p-8f}};
+    s.xfA = {{0, -0x1p-149f}, {0, -1}};
+    s.b = {{0x1.b8p+41f, 0x1.7a2p-103f}, {0x1.ep+41f, 0x1.c2p-103f},  {-0x1.4p+40f, 0x1.9p-106f},
+           {-0x1.ep+39f, 0x1.c2p-107f},  {-0x1.4p+39f, 0x1.9p-108f},  {-0x1.4p+38f, 0x1.9p-110f},
+           {0, 0},                       {0x1.4p+38f, 0x1.9p-110f},   {0x1.4p+39f, 0x1.9p-108f},
+           {0x1.ep+39f, 0x1.c2p-107f},   {0x1.4p+40f, 0x1.9p-106f},   {0x1.9p+40f, 0x1.388p-105f},
+           {0x1.ep+40f, 0x1.c2p-105f},   {0x1.18p+41f, 0x1.324p-104f}, {0x1.4p+41f, 0x1.9p-104f},
+           {0x1.68p+41f, 0x1.fa4p-104f}, {0x1.9p+41f, 0x1.388p-103f}};
+    Options o;
+    o.direction = SearchDirection::ClosestPoint;
+    o.stopping = StoppingRule::DualityGap;
+    o.frame = Frame::World;
+    o.support = SupportStrategy::BinarySearch;
+    SimplexCache cache;
+    const auto cold = distance(s.input(), cache, o);
+    REQUIRE_FALSE(cold.rescaled);
+    REQUIRE_FALSE(cold.outOfRange);
+    const auto warm = distance(s.input(), cache, o);
+    CHECK(warm.distance == cold.distance);
+    CHECK(warm.pointA == cold.pointA);
+    CHECK(warm.pointB == cold.pointB);
+    CHECK(warm.normal == cold.normal);
+    CHECK(warm.iterations == 1);
+}
+
 TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)
 {
     using T = TestType;

@@ -172,6 +172,12 @@ struct SimplexCache
     int indexA[3] = {0, 0, 0};
     int indexB[3] = {0, 0, 0};
     int edgeBase = 0;
+    // Where the last support searches of A and B started (SupportStrategy::BinarySearch gallops
+    // from there, and near ties the result depends on the start): a warm start makes its first
+    // search from the same place, so that it finds what the last search found. -1: from indexA[0]
+    // and indexB[0].
+    int searchA = -1;
+    int searchB = -1;
 };
 
 // --- Input, output, trace ------------------------------------------------------------------------
@@ -582,10 +588,13 @@ template <class T> void solve3(Simplex<T>& s)
     // tests were consistent; their sum |n123| is then positive and the division is safe.
     if (u123 > T(0) && v123 > T(0) && w123 > T(0))
     {
-        const T inv = T(1) / (u123 + v123 + w123);
-        s.v[0].a = u123 * inv;
-        s.v[1].a = v123 * inv;
-        s.v[2].a = w123 * inv;
+        // Three divisions, not a reciprocal: for a sum in the subnormal range 1/sum overflows and
+        // the weights became inf, the witness points NaN (the fuzzer, float coordinates near
+        // 2^-89). Each quotient is in [0, 1]. Once per query (containment ends it).
+        const T sum = u123 + v123 + w123;
+        s.v[0].a = u123 / sum;
+        s.v[1].a = v123 / sum;
+        s.v[2].a = w123 / sum;
         s.count = 3;
         return;
     }
@@ -881,8 +890,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     if (cacheValid)
     {
         edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
-        A.last = cache.indexA[0];
-        B.last = cache.indexB[0];
+        A.last = cache.searchA >= 0 && cache.searchA < polyA.count ? cache.searchA : cache.indexA[0];
+        B.last = cache.searchB >= 0 && cache.searchB < polyB.count ? cache.searchB : cache.indexB[0];
         simplex.count = cache.count;
         for (int i = 0; i < cache.count; ++i)
             simplex.v[i] = makeVertex<T>(A, B, cache.indexA[i], cache.indexB[i]);
@@ -909,6 +918,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     std::int64_t saved[3] = {-1, -1, -1};
     int savedCount = 0;
     bool culledRepeat = false;
+    int searchA = A.last, searchB = B.last; // where the last support searches started
     for (;;)
     {
         // Remember the simplex vertices to detect a repeated support point (case 1).
@@ -952,6 +962,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         }
 
         // New support point of Z in direction d.
+        searchA = A.last;
+        searchB = B.last;
         const SimplexVertex<T> w = findMinkowskiSupport<T>(A, B, d);
         ++iteration;
         maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
@@ -1116,6 +1128,9 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         out.rescaled = true;
         out.outOfRange = out.outOfRange || rangeExceeded;
     }
+
+    cache.searchA = searchA;
+    cache.searchB = searchB;
 
     // Out of range: the retry, at the very end, warm-started from the cache this pass just wrote
     // (any valid indices are a legitimate start; the answer depends on the input and the incoming
