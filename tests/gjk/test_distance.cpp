@@ -743,7 +743,7 @@ TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]
 TEST_CASE("warm start: the binary-search support starts where the last search started",
           "[gjk][cache][support]")
 {
-    // Regression (fuzz/corpus/fuzz_distance/finding-warm-cold-float-binary-start, found by
+    // Regression (fuzz/corpus/fuzz_distance/finding-warm-cold-float-2, found by
     // fuzz_distance): the galloping search of SupportStrategy::BinarySearch returns, among nearly
     // tied vertices, one that depends on its start. A warm start began at the cached simplex's
     // first vertex, the cold query's last search at its previous support point: the warm repeat
