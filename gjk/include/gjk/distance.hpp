@@ -1077,14 +1077,17 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     out.distance = dist;
     out.iterations = iteration;
     out.simplexCount = simplex.count;
-    // An answer that does not fit in T (a rescaled distance or world witness point beyond T's
-    // largest value: two points near 1.5e308 on opposite sides, found by the fuzzer) is flagged
-    // too: never an unflagged inf or NaN.
+    // An answer that does not fit in T is flagged too, never an unflagged inf or NaN: a rescaled
+    // distance or world witness point beyond T's largest value (two points near 1.5e308 on
+    // opposite sides), or witness points of a rotation (c, s) far from unit size (c = 1e213: found
+    // by the fuzzer). Each value is tested on its own: std::max drops a NaN.
     if constexpr (Scaled)
-        out.outOfRange = out.outOfRange ||
-                         !(std::max({std::abs(dist), std::abs(out.pointA.x), std::abs(out.pointA.y),
-                                     std::abs(out.pointB.x), std::abs(out.pointB.y)}) <=
-                           std::numeric_limits<T>::max());
+    {
+        constexpr T big = std::numeric_limits<T>::max();
+        out.outOfRange = out.outOfRange || !(std::abs(dist) <= big) || !(std::abs(out.pointA.x) <= big) ||
+                         !(std::abs(out.pointA.y) <= big) || !(std::abs(out.pointB.x) <= big) ||
+                         !(std::abs(out.pointB.y) <= big);
+    }
 
     // The cache: the final simplex, a final edge in canonical order. After a culled repeat, the
     // simplex before the last solve in its own order (and edgeBase as it was), which a warm start
