@@ -1077,17 +1077,6 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     out.distance = dist;
     out.iterations = iteration;
     out.simplexCount = simplex.count;
-    // An answer that does not fit in T is flagged too, never an unflagged inf or NaN: a rescaled
-    // distance or world witness point beyond T's largest value (two points near 1.5e308 on
-    // opposite sides), or witness points of a rotation (c, s) far from unit size (c = 1e213: found
-    // by the fuzzer). Each value is tested on its own: std::max drops a NaN.
-    if constexpr (Scaled)
-    {
-        constexpr T big = std::numeric_limits<T>::max();
-        out.outOfRange = out.outOfRange || !(std::abs(dist) <= big) || !(std::abs(out.pointA.x) <= big) ||
-                         !(std::abs(out.pointA.y) <= big) || !(std::abs(out.pointB.x) <= big) ||
-                         !(std::abs(out.pointB.y) <= big);
-    }
 
     // The cache: the final simplex, a final edge in canonical order. After a culled repeat, the
     // simplex before the last solve in its own order (and edgeBase as it was), which a warm start
@@ -1123,9 +1112,19 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     // scaling. When it fails, the query runs once more on the problem scaled by a power of two
     // (rescaling, above), at the very end; the rescaled query stays flagged when that could not
     // help.
+    // An answer that does not fit in T fails the check too, never an unflagged inf or NaN: a
+    // rescaled distance or world witness point beyond T's largest value (two points near 1.5e308
+    // on opposite sides), or a rotation (c, s) far from unit size (s = 3e307, c = 1e213: found by
+    // the fuzzer; std::max dropped the NaN from maxAbs). Each value is tested on its own.
+    constexpr T big = std::numeric_limits<T>::max();
+    const bool answerNotFinite = !(std::abs(dist) <= big) | !(std::abs(out.pointA.x) <= big) |
+                                 !(std::abs(out.pointA.y) <= big) | !(std::abs(out.pointB.x) <= big) |
+                                 !(std::abs(out.pointB.y) <= big) | !(std::abs(out.normal.x) <= big) |
+                                 !(std::abs(out.normal.y) <= big);
     const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
                                (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) ||
-                               A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact));
+                               A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact)) ||
+                               answerNotFinite;
     if constexpr (Scaled)
     {
         out.rescaled = true;
