@@ -2,8 +2,9 @@
 # The README's second command: set up, build and run every test.
 #  1. installs missing Debian packages (scripts/setup.sh --tests),
 #  2. builds the release preset (library, exact side, runner, tests) and runs all tests with CTest,
-#  3. builds the GJK core tests again under the address + undefined-behaviour sanitizer preset
-#     (without the CGAL side, which is slow to compile instrumented) and runs them.
+#  3. builds everything again under the address + undefined-behaviour sanitizer preset (the GJK
+#     core, the exact side, the runner and their tests) and runs every test there too,
+#  4. runs the libFuzzer targets for a bounded time under ASan + UBSan (scripts/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
@@ -14,7 +15,7 @@ cmake --preset release >/dev/null
 cmake --build --preset release -j "$jobs"
 ctest --preset release -j "$jobs"
 
-cmake --preset sanitize -DGJK2D_BUILD_VALIDATION=OFF >/dev/null
+cmake --preset sanitize -DGJK2D_BUILD_VALIDATION=ON >/dev/null
 cmake --build --preset sanitize -j "$jobs"
 ctest --preset sanitize -j "$jobs"
 
