@@ -351,6 +351,10 @@ template <class T> T scaleExactly(T v, int k, bool& inexact)
     inexact = inexact || std::ldexp(s, -k) != v;
     return s;
 }
+template <class T> Vec2<T> scaleExactly(Vec2<T> v, int k, bool& inexact)
+{
+    return {scaleExactly(v.x, k, inexact), scaleExactly(v.y, k, inexact)};
+}
 
 // Exponent e with 2^e <= m < 2^(e+1) for finite m > 0; a very negative sentinel for 0 (or NaN).
 template <class T> int exponentOf(T m)
@@ -444,8 +448,7 @@ template <class T, bool Scaled = false> struct TransformedShape
     {
         if constexpr (Scaled)
         {
-            const Vec2<T> p = {scaleExactly(poly.points[i].x, scale, inexact),
-                               scaleExactly(poly.points[i].y, scale, inexact)};
+            const Vec2<T> p = scaleExactly(poly.points[i], scale, inexact);
             return identity ? p : transformPoint(xf, p);
         }
         else
@@ -640,7 +643,9 @@ template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
 
 // Whether the origin lies strictly on the left of the edge w1 -> w1 + e12: the talk's sign test
 // for the edge search direction, and the canonical order of a cached edge (SimplexCache).
-template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12) { return cross(e12, -w1) > T(0); }
+// originSide > 0: on the left; < 0: on the right; 0: on the edge's line (rounded).
+template <class T> T originSide(Vec2<T> w1, Vec2<T> e12) { return cross(e12, -w1); }
+template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12) { return originSide(w1, e12) > T(0); }
 
 // The direction from P towards Q = 0 in which to look for the next support point.
 // `base` is the edge's slot the sign test measures from: 0, but for the first iteration of a warm
@@ -816,17 +821,16 @@ template <class T>
         // same rounding), else from the scaled ends (it overflowed).
         const Vec2<T> dp = xfB.p - xfA.p;
         if (std::isfinite(dp.x) && std::isfinite(dp.y))
-            xfB.p = {scaleExactly(dp.x, scale, B.inexact), scaleExactly(dp.y, scale, B.inexact)};
+            xfB.p = scaleExactly(dp, scale, B.inexact);
         else
-            xfB.p = Vec2<T>{scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)} -
-                    Vec2<T>{scaleExactly(xfA.p.x, scale, B.inexact), scaleExactly(xfA.p.y, scale, B.inexact)};
+            xfB.p = scaleExactly(xfB.p, scale, B.inexact) - scaleExactly(xfA.p, scale, B.inexact);
         xfA.p = Vec2<T>{};
         A.identity = true;
         B.xf = invMulTransforms(xfA, xfB);
         return input.transformA;
     }
-    A.xf = {{scaleExactly(xfA.p.x, scale, A.inexact), scaleExactly(xfA.p.y, scale, A.inexact)}, xfA.q};
-    B.xf = {{scaleExactly(xfB.p.x, scale, B.inexact), scaleExactly(xfB.p.y, scale, B.inexact)}, xfB.q};
+    A.xf = {scaleExactly(xfA.p, scale, A.inexact), xfA.q};
+    B.xf = {scaleExactly(xfB.p, scale, B.inexact), xfB.q};
     return Transform<T>{};
 }
 
@@ -1027,7 +1031,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         // vertex, so a warm start from the cache reproduces the cold query's bits.
         const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
         const Vec2<T> base = edgeBase ? simplex.v[1].w : simplex.v[0].w;
-        const T side = cross(e, -base); // > 0: the origin is on the left (originOnLeft)
+        const T side = originSide(base, e);
         flipEdge = side < T(0);
         const T len = length(e);
         dist = std::abs(cross(base, e)) / len;
