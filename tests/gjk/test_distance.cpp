@@ -552,6 +552,106 @@ TEMPLATE_TEST_CASE("frame of A keeps small gaps far from the origin", "[gjk][num
     CHECK(near.distance > T(0));
 }
 
+TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit vector", "[gjk][transform]",
+                   float, double)
+{
+    using T = TestType;
+    // x' = c x - s y + p scales by |q| = sqrt(c^2 + s^2). By hand: the square [-1, 1]^2 under
+    // q = (2, 0) covers [-2, 2]^2, under q = (0, 2) too (a quarter turn), under (0.5, 0)
+    // [-0.5, 0.5]^2; B, a point at (5, 0.25) with radius 0.5, is then at distance 5 - h - 0.5
+    // (h = 2 or 0.5), pointA = (h, 0.25), normal (1, 0). Every number is exact, so both frames
+    // must give these bits (before issue 13, A's frame inverted qA by transposing it: B landed at
+    // x = 10 in A's frame for q = (2, 0), and the query answered 8.5).
+    Scene<T> s;
+    s.a = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    s.b = {{0, 0}};
+    s.radiusB = T(0.5);
+    s.xfB.p = {5, 0.25};
+    for (const Rot<T> q : {Rot<T>{2, 0}, Rot<T>{0, 2}, Rot<T>{T(0.5), 0}})
+        for (const Frame frame : {Frame::LocalA, Frame::World})
+        {
+            const T half = q.c + q.s; // the world half-width of A
+            INFO("q = (" << q.c << ", " << q.s << "), frame " << int(frame));
+            s.xfA = {{0, 0}, q};
+            Options o;
+            o.frame = frame;
+            o.certify = true;
+            const auto out = query(s, o);
+            CHECK(out.distance == T(5) - half - T(0.5));
+            CHECK(out.pointA == Vec2<T>{half, 0.25});
+            CHECK(out.pointB == Vec2<T>{4.5, 0.25});
+            CHECK(out.normal == Vec2<T>{1, 0});
+            CHECK(out.certified);
+            CHECK(out.lower <= double(T(5) - half - T(0.5)));
+            CHECK(out.upper >= double(T(5) - half - T(0.5)));
+        }
+
+    // B's rotation of any size too: B = the segment (-1, 0)-(1, 0) under qB = (0, 3) is the
+    // vertical segment x = 6, y in [-3, 3] after p = (6, 0); A the unit square [-1, 1]^2, unrotated:
+    // distance 5, the normal (1, 0).
+    Scene<T> t;
+    t.a = s.a;
+    t.b = {{-1, 0}, {1, 0}};
+    t.xfB = {{6, 0}, {0, 3}};
+    CHECK(query(t).distance == T(5));
+    CHECK(query(t).normal == Vec2<T>{1, 0});
+}
+
+TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit size", "[gjk][transform]",
+                   float, double)
+{
+    using T = TestType;
+    // qA = (1 + 2^-20, 0): |qA| is not 1 in float or double. The square [-1, 1]^2 then has the
+    // world half-width 1 + 2^-20 exactly, and the point (4, 0) is at distance 3 - 2^-20, exact in
+    // both types (by hand). Transposing qA instead of inverting it (before issue 13) put B at
+    // 4 (1 + 2^-20)^2 in A's frame: an error of 4.77e-6 in both types (measured). The bound
+    // of docs/error-bound.md for this case is u (4 A + 37 B + 8.8 D + 1.5 B~ + 5 W + 6.5 d) with
+    // A ~ 1.41, B = 0, D = 4, B~ ~ 4, W ~ 5.4, d ~ 3: about 100 u.
+    const T k = T(1) + std::ldexp(T(1), -20);
+    Scene<T> s;
+    s.a = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    s.b = {{0, 0}};
+    s.xfA = {{0, 0}, {k, 0}};
+    s.xfB.p = {4, 0};
+    const T expected = T(3) - std::ldexp(T(1), -20);
+    const T u = std::numeric_limits<T>::epsilon() / 2;
+    for (const Frame frame : {Frame::LocalA, Frame::World})
+    {
+        Options o;
+        o.frame = frame;
+        const auto out = query(s, o);
+        CHECK(std::abs(out.distance - expected) <= 100 * u);
+        CHECK(std::abs(out.pointA.x - k) <= 100 * u);
+        CHECK(std::abs(out.normal.x - T(1)) <= 4 * u);
+    }
+}
+
+TEMPLATE_TEST_CASE("transforms as given: rotations of extreme size are normalised by the rescaled retry",
+                   "[gjk][transform][range]", float, double)
+{
+    using T = TestType;
+    // qA = (2^e, 0) with 2^(2e) beyond T's range: |qA|^2 overflows, so the first pass is out of
+    // range and the rescaled retry normalises qA to (1, 0) and scales A's points by 2^e instead
+    // (exact). A = the triangle (0,0) (1,0) (0,1) then covers up to x = 2^e, B a point at 3 * 2^e:
+    // distance 2 * 2^e, by hand, bit for bit.
+    for (const int e : {std::numeric_limits<T>::max_exponent / 2 + 4, std::numeric_limits<T>::min_exponent / 2 - 4})
+    {
+        INFO("qA = (2^" << e << ", 0)");
+        const T scale = std::ldexp(T(1), e);
+        Scene<T> s;
+        s.a = {{0, 0}, {1, 0}, {0, 1}};
+        s.b = {{0, 0}};
+        s.xfA = {{0, 0}, {scale, 0}};
+        s.xfB.p = {3 * scale, 0};
+        const auto out = query(s);
+        CHECK(out.rescaled);
+        CHECK_FALSE(out.outOfRange);
+        CHECK(out.distance == 2 * scale);
+        CHECK(out.pointA == Vec2<T>{scale, 0});
+        CHECK(out.normal == Vec2<T>{1, 0});
+    }
+}
+
 TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk][cache]", float, double)
 {
     using T = TestType;

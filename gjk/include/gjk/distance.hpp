@@ -377,10 +377,18 @@ template <class T> [[gnu::noinline]] Vec2<T> directionForScan(Vec2<T> d, int e)
     return {std::ldexp(d.x, e - ed), std::ldexp(d.y, e - ed)};
 }
 
+// The exponent e of a rotation's size: q = 2^e q^ with max(|c^|, |s^|) in [1, 2), so that
+// |q^|^2 = c^2 + s^2 lies in [1, 8) and can neither overflow nor underflow. The rescaled query
+// computes with q^ and moves 2^e into the shape's point scaling (exact, like the rescaling).
+template <class T> int rotationExponent(Rot<T> q)
+{
+    return exponentOf(std::max(std::abs(q.c), std::abs(q.s)));
+}
+
 // The k that brings the compute frame's extent to about 1: minus the largest exponent among the
-// points (times the rotations' size, which (c, s) need not be 1) and the translations. Computed on
-// exponents, so that sizes beyond the floating-point range (1e300 * 1e300) cannot overflow.
-// 0 when everything is zero.
+// points (times 2^e of their rotation, rotationExponent: the rotations themselves are normalised)
+// and the translations. Computed on exponents, so that sizes beyond the floating-point range
+// (1e300 * 1e300) cannot overflow. 0 when everything is zero.
 template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& xfA, const Polygon<T>& B,
                                       const Transform<T>& xfB, Frame frame)
 {
@@ -391,18 +399,18 @@ template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& 
             m = std::max({m, std::abs(p.points[i].x), std::abs(p.points[i].y)});
         return exponentOf(m);
     };
-    auto rotExp = [](Rot<T> q) { return exponentOf(std::max(std::abs(q.c), std::abs(q.s))) + 1; };
     auto vecExp = [](Vec2<T> v) { return exponentOf(std::max(std::abs(v.x), std::abs(v.y))); };
+    const int eA = rotationExponent(xfA.q), eB = rotationExponent(xfB.q);
     int e;
     if (frame == Frame::LocalA)
     {
-        // A's points as they are; B's through both rotations; the offset pB - pA through qA.
-        e = std::max(pointsExp(A), pointsExp(B) + rotExp(xfA.q) + rotExp(xfB.q));
-        e = std::max(e, std::max(vecExp(xfA.p), vecExp(xfB.p)) + 1 + rotExp(xfA.q));
+        // A's points times 2^eA; B's through q^B (size < 2^1.5) and the inverse of q^A (size
+        // <= 1); the offset pB - pA (one more bit) through the inverse of q^A.
+        e = std::max(pointsExp(A) + eA, pointsExp(B) + eB + 2);
+        e = std::max(e, std::max(vecExp(xfA.p), vecExp(xfB.p)) + 1);
     }
     else
-        e = std::max({pointsExp(A) + rotExp(xfA.q), pointsExp(B) + rotExp(xfB.q), vecExp(xfA.p),
-                      vecExp(xfB.p)});
+        e = std::max({pointsExp(A) + eA + 2, pointsExp(B) + eB + 2, vecExp(xfA.p), vecExp(xfB.p)});
     return e < std::numeric_limits<T>::min_exponent - 2 * std::numeric_limits<T>::digits - 8 ? 0 : -e;
 }
 
@@ -813,8 +821,15 @@ template <class T>
                                                  int scale, TransformedShape<T, true>& A,
                                                  TransformedShape<T, true>& B)
 {
-    A.scale = B.scale = scale;
     Transform<T> xfA = input.transformA, xfB = input.transformB;
+    // Rotations of any size, normalised: q = 2^e q^, the 2^e moved into the points' scaling.
+    const int eA = rotationExponent(xfA.q), eB = rotationExponent(xfB.q);
+    bool rotInexact = false;
+    xfA.q = {scaleExactly(xfA.q.c, -eA, rotInexact), scaleExactly(xfA.q.s, -eA, rotInexact)};
+    xfB.q = {scaleExactly(xfB.q.c, -eB, rotInexact), scaleExactly(xfB.q.s, -eB, rotInexact)};
+    A.scale = scale + eA;
+    B.scale = scale + eB;
+    A.inexact = rotInexact; // a component lost to underflow: not the given rotation any more
     if (options.frame == Frame::LocalA)
     {
         // Scale the offset pB - pA, computed as the unscaled query does when it is finite (the
@@ -824,10 +839,11 @@ template <class T>
             xfB.p = scaleExactly(dp, scale, B.inexact);
         else
             xfB.p = scaleExactly(xfB.p, scale, B.inexact) - scaleExactly(xfA.p, scale, B.inexact);
+        const Transform<T> world = {xfA.p, xfA.q};
         xfA.p = Vec2<T>{};
         A.identity = true;
         B.xf = invMulTransforms(xfA, xfB);
-        return input.transformA;
+        return world;
     }
     A.xf = {scaleExactly(xfA.p, scale, A.inexact), xfA.q};
     B.xf = {scaleExactly(xfB.p, scale, B.inexact), xfB.q};
@@ -1047,6 +1063,22 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         pB = {std::ldexp(pB.x, -scale), std::ldexp(pB.y, -scale)};
     }
 
+    // Back to world coordinates: the points through the frame's transform, the normal through its
+    // rotation. A's frame of a rotation qA that is not a unit vector in T (a float engine's seen in
+    // double, issue 13) measures lengths in units of |qA|: the distance is multiplied by |qA|, the
+    // normal (which rotate() lengthened by |qA|) divided by it. Skipped when |qA|^2 computes to 1,
+    // as for every world-frame query (world.q is the identity). docs/error-bound.md, term 5.
+    const T frameSize2 = squaredSize(world.q);
+    Vec2<T> worldA = transformPoint(world, pA), worldB = transformPoint(world, pB);
+    normal = rotate(world.q, normal);
+    if (frameSize2 != T(1)) [[unlikely]]
+    {
+        const T size = std::sqrt(frameSize2);
+        dist *= size;
+        normal = {normal.x / size, normal.y / size};
+    }
+
+    // The radii are world lengths.
     if (options.useRadii && (polyA.radius > T(0) || polyB.radius > T(0)))
     {
         const T rA = polyA.radius, rB = polyB.radius;
@@ -1054,30 +1086,30 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         {
             // Move the witness points onto the rounded surfaces.
             dist -= rA + rB;
-            pA = pA + rA * normal;
-            pB = pB - rB * normal;
+            worldA = worldA + rA * normal;
+            worldB = worldB - rB * normal;
         }
         else
         {
             // The rounded shapes overlap: report the midpoint on both, distance 0.
-            const Vec2<T> p = T(0.5) * (pA + pB);
-            pA = p;
-            pB = p;
+            const Vec2<T> p = T(0.5) * (worldA + worldB);
+            worldA = p;
+            worldB = p;
             dist = T(0);
             normal = Vec2<T>{};
         }
     }
 
     if (options.certify)
-        certifyDistance(input, simplex, options.useRadii, rotate(world.q, normal), out);
+        certifyDistance(input, simplex, options.useRadii, normal, out);
 
     // "+ 0" turns a negative zero into +0 and changes nothing else (round to nearest): the sign of
     // a zero component depends on the order of the edge's vertices (x - x is +0, -(x - x) is -0),
     // which a warm start may reverse (found by the fuzzer: axis-aligned normals).
     const Vec2<T> zero{};
-    out.pointA = transformPoint(world, pA) + zero;
-    out.pointB = transformPoint(world, pB) + zero;
-    out.normal = rotate(world.q, normal) + zero;
+    out.pointA = worldA + zero;
+    out.pointB = worldB + zero;
+    out.normal = normal + zero;
     out.distance = dist;
     out.iterations = iteration;
     out.simplexCount = simplex.count;
@@ -1125,7 +1157,12 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
                                  !(std::abs(out.pointA.y) <= big) | !(std::abs(out.pointB.x) <= big) |
                                  !(std::abs(out.pointB.y) <= big) | !(std::abs(out.normal.x) <= big) |
                                  !(std::abs(out.normal.y) <= big);
-    const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) ||
+    // |qA|^2 itself must be in range in A's frame (its square root and the divisions by it keep
+    // their relative accuracy): a rotation of size beyond ~1e-146..1e153 (double) is normalised by
+    // the rescaled retry (rotationExponent).
+    const bool frameOutOfRange = !(frameSize2 >= Tolerances<T>::minCoordinate * Tolerances<T>::minCoordinate &&
+                                   frameSize2 <= Tolerances<T>::maxCoordinate * Tolerances<T>::maxCoordinate);
+    const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) || frameOutOfRange ||
                                (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) ||
                                A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact)) ||
                                answerNotFinite;

@@ -33,22 +33,31 @@ template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v) { return {v.y, -v.x}; 
 template <class T> T length(Vec2<T> v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 
 // A rotation stored as the two numbers the caller computed once, c = cos(angle), s = sin(angle).
-// They are used as given (never recomputed from an angle), so the exact side can apply the very
-// same rotation to judge the result.
+// They are used as given (never recomputed from an angle, never normalised), so the exact side can
+// apply the very same map to judge the result. (c, s) need not be a unit vector: any finite
+// (c, s) != (0, 0) is the map Q = [c -s; s c] = |q| R, a rotation R times the size
+// |q| = sqrt(c^2 + s^2). A float engine's (cos, sin) pair is a unit vector only to float rounding
+// (|c^2 + s^2 - 1| up to ~1e-7 seen in double, issue 13), and the query computes the distance for
+// the map as given (docs/gjk.md, "Transforms").
 template <class T> struct Rot
 {
     T c = T(1), s = T(0);
 };
 
+// |q|^2 = c^2 + s^2: 1 for a unit rotation.
+template <class T> constexpr T squaredSize(Rot<T> q) { return q.c * q.c + q.s * q.s; }
+
 template <class T> constexpr Vec2<T> rotate(Rot<T> q, Vec2<T> v)
 {
     return {q.c * v.x - q.s * v.y, q.s * v.x + q.c * v.y};
 }
+// Q^T v, the transpose. It is Q's inverse only when |q| = 1 (Q^-1 = Q^T / |q|^2), but it is all a
+// support direction needs, whatever |q|: argmax_x d.(Q x) = argmax_x (Q^T d).x.
 template <class T> constexpr Vec2<T> invRotate(Rot<T> q, Vec2<T> v)
 {
     return {q.c * v.x + q.s * v.y, -q.s * v.x + q.c * v.y};
 }
-// inverse(a) * b
+// a^T b (the inverse of a times b when |a| = 1)
 template <class T> constexpr Rot<T> invMulRot(Rot<T> a, Rot<T> b)
 {
     return {a.c * b.c + a.s * b.s, a.c * b.s - a.s * b.c};
@@ -65,17 +74,27 @@ template <class T> constexpr Vec2<T> transformPoint(const Transform<T>& xf, Vec2
 {
     return {(xf.q.c * v.x - xf.q.s * v.y) + xf.p.x, (xf.q.s * v.x + xf.q.c * v.y) + xf.p.y};
 }
+// The true inverse, Q^-1 (v - p) = Q^T (v - p) / |q|^2 (the division only when |q|^2 != 1 in T).
 template <class T> constexpr Vec2<T> invTransformPoint(const Transform<T>& xf, Vec2<T> v)
 {
-    return invRotate(xf.q, v - xf.p);
+    const Vec2<T> r = invRotate(xf.q, v - xf.p);
+    const T n = squaredSize(xf.q);
+    return n == T(1) ? r : Vec2<T>{r.x / n, r.y / n};
 }
 // inverse(a) * b: maps B's local coordinates into A's local frame. The translation is
 // invRotate(qA, pB - pA): the common offset of two shapes far from the origin cancels in the
 // subtraction (exactly, by Sterbenz's lemma, when pB and pA are within a factor two) before any
 // rounding of the small quantities happens.
+// A's rotation of any size: both parts are divided by |qA|^2 = cA^2 + sA^2 (its true inverse is
+// qA^T / |qA|^2), skipped when that computes to exactly 1. Each division adds one rounding, and the
+// computed |qA|^2 carries at most 2u: docs/error-bound.md, term 1.
 template <class T> constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T>& b)
 {
-    return {invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
+    Transform<T> r{invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
+    const T n = squaredSize(a.q);
+    if (n != T(1)) [[unlikely]]
+        r = {{r.p.x / n, r.p.y / n}, {r.q.c / n, r.q.s / n}};
+    return r;
 }
 
 // Every tolerance of the library, per scalar type. No FLT_EPSILON in templated code.
