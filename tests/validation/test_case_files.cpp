@@ -177,12 +177,33 @@ TEST_CASE("invalid cases are rejected naming file, case and field; the others ar
     CHECK(reason(4) == "missing field 'b'");
     CHECK(reason(5) == "a.points is a string, expected an array");
     CHECK(reason(6) == "a.transform.p[0] is infinite");
-    CHECK_THAT(reason(7), Catch::StartsWith("a.transform.q is not a rotation"));
+    CHECK(reason(7) == "a.transform.q is (0, 0): not a rotation");
     CHECK(reason(8).empty());
     CHECK(f.entries[1].label == "bad-cases.json#1 (case 'nan')");
     CHECK(f.entries[8].c.b.c == 0);
     CHECK(f.entries[8].c.b.s == 1);
     CHECK(f.entries[8].c.a.radius == 0.25);
+}
+
+TEST_CASE("any finite rotation (c, s) other than (0, 0) is a transform", "[cases]")
+{
+    // A float engine's (cos, sin) (here of 0.3 rad, rounded to float: |c^2 + s^2 - 1| = 4.8e-8
+    // in double), a scaled rotation (3, 4) of size 5, and tiny and huge ones: all valid input
+    // (issue 13), kept exactly as written.
+    const CaseFile f = parseCaseFile(R"({"format": "gjk-cases/1", "cases": [
+        {"name": "float", "a": {"points": [[0, 0]], "transform": {"q": [0.95533651113510132, 0.29552021622657776]}}, "b": {"points": [[2, 2]]}},
+        {"name": "scaled", "a": {"points": [[0, 0]], "transform": {"q": [3, 4]}}, "b": {"points": [[2, 2]]}},
+        {"name": "tiny", "a": {"points": [[0, 0]], "transform": {"q": [1e-300, 0]}}, "b": {"points": [[2, 2]]}},
+        {"name": "huge", "a": {"points": [[0, 0]], "transform": {"q": [0, -1e300]}}, "b": {"points": [[2, 2]]}}
+    ]})",
+                                     "rot.json");
+    REQUIRE(f.entries.size() == 4);
+    for (const auto& e : f.entries)
+        CHECK(e.rejected.empty());
+    CHECK(f.entries[0].c.a.c == double(0.95533651113510132f));
+    CHECK(std::abs(f.entries[0].c.a.c * f.entries[0].c.a.c + f.entries[0].c.a.s * f.entries[0].c.a.s - 1) > 1e-9);
+    CHECK(f.entries[1].c.a.s == 4);
+    CHECK(f.entries[3].c.a.s == -1e300);
 }
 
 TEST_CASE("more rejections: names, wrong types, duplicates", "[cases]")

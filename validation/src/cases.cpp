@@ -136,12 +136,12 @@ ShapeIn readShape(const RJson& c, const char* key)
             const auto q = readPair(t["q"], k + ".transform.q");
             s.c = q[0];
             s.s = q[1];
-            // The GJK side inverts a rotation by transposing it: (c, s) must be a rotation to
-            // within the rounding of cos and sin (write them with 17 significant digits).
-            const double n = s.c * s.c + s.s * s.s - 1.0;
-            if (!(std::abs(n) <= 1e-12))
-                fieldError(
-                    fmt::format("{}.transform.q is not a rotation: c^2 + s^2 - 1 = {:.3g}", k, n));
+            // Any finite (c, s) other than (0, 0) is a transform (x' = c x - s y + p scales by
+            // sqrt(c^2 + s^2)): GJK and the exact side both apply it as given. A float engine's
+            // (cos, sin) is a unit vector only to float rounding (issue 13). (0, 0) maps the whole
+            // shape to one point: not a transform.
+            if (s.c == 0 && s.s == 0)
+                fieldError(fmt::format("{}.transform.q is (0, 0): not a rotation", k));
         }
     }
     return s;

@@ -39,6 +39,7 @@ enum class MakeupMetric
                                // maxCoordinate]
     DistinctDistances,         // number of distinct exact distances (bit patterns) among the cases
     SharedOriginFraction,      // fraction of cases where both shapes have the same translation
+    NonUnitRotationFraction,   // fraction of cases where a shape's c^2 + s^2 is not 1 in double
 };
 
 struct MakeupSpec

@@ -189,7 +189,8 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
 
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
 {
-    // Points of A and B~ in the compute frame.
+    // Points of A and B~ in the compute frame: the world, or A's local frame through the true
+    // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
     std::vector<gjk::Vec2<double>> pa, pb;
     const gjk::Transform<double> xa = xf(a), xb = xf(b);
     const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
@@ -212,8 +213,6 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     }
     for (const auto& p : b.points)
         s.B = std::max(s.B, std::hypot(p[0], p[1]));
-    s.R = ia + ib + a.radius + b.radius;
-    s.D = std::hypot(b.px - a.px, b.py - a.py);
     if (double(pa.size()) * double(pb.size()) <= 1e6)
     {
         for (const auto& p : pa)
@@ -222,6 +221,15 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     }
     else
         s.W = s.A + s.Bmapped;
+    // World lengths: A's frame measures in units of |qA| (1 for a unit rotation), and B's own
+    // points are lengthened by |qB| in world.
+    const double unit = worldFrame ? 1 : std::hypot(a.c, a.s);
+    s.A *= unit;
+    s.Bmapped *= unit;
+    s.W *= unit;
+    s.B *= std::hypot(b.c, b.s);
+    s.R = unit * (ia + ib) + a.radius + b.radius;
+    s.D = std::hypot(b.px - a.px, b.py - a.py);
     return s;
 }
 

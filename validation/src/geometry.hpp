@@ -28,10 +28,12 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
                                     std::size_t maxVertices = 2000);
 
 // The problem's scales in a compute frame (A's local frame, or the world), the points mapped into
-// the frame in double (the fields of CaseMetrics, bounds.hpp):
-//   R  = max_i |a_i|_inf + max_j |b~_j|_inf + rA + rB
-//   A  = max_i |a_i|, B = max_j |b_j| (own frame), B~ = max_j |b~_j|, D = |pB - pA|,
-//   W  = max_ij |a_i - b~_j| (exact when n*m <= 1e6, else the upper bound A + B~).
+// the frame in double (the fields of CaseMetrics, bounds.hpp), all in world lengths: A's frame
+// measures in units of |qA| = hypot(cA, sA), so its lengths are multiplied by |qA| (1 for a unit
+// rotation):
+//   R  = |qA| (max_i |a_i|_inf + max_j |b~_j|_inf) + rA + rB
+//   A  = |qA| max_i |a_i|, B = |qB| max_j |b_j| (own frame), B~ = |qA| max_j |b~_j|,
+//   D  = |pB - pA|, W = |qA| max_ij |a_i - b~_j| (exact when n*m <= 1e6, else A + B~).
 struct FrameScales
 {
     double R = 0, A = 0, B = 0, Bmapped = 0, D = 0, W = 0;
