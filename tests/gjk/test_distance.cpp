@@ -605,7 +605,7 @@ TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit siz
     // world half-width 1 + 2^-20 exactly, and the point (4, 0) is at distance 3 - 2^-20, exact in
     // both types (by hand). Transposing qA instead of inverting it (before issue 13) put B at
     // 4 (1 + 2^-20)^2 in A's frame: an error of 4.77e-6 in both types (measured). The bound
-    // of docs/error-bound.md for this case is u (4 A + 37 B + 8.8 D + 1.5 B~ + 5 W + 6.5 d) with
+    // of docs/error-bound.md for this case is u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d) with
     // A ~ 1.41, B = 0, D = 4, B~ ~ 4, W ~ 5.4, d ~ 3: about 100 u.
     const T k = T(1) + std::ldexp(T(1), -20);
     Scene<T> s;

@@ -6,11 +6,11 @@ namespace gjkval
 {
 
 // The a-priori bound derived in docs/error-bound.md, to first order in u:
-//   |d_gjk - d| <= u (4 A + 37 B + 8.8 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB))
+//   |d_gjk - d| <= u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB))
 // in A's local frame (the reference variant), every metric in world lengths (geometry.hpp), for
 // any finite rotations (c, s) != (0, 0) (issue 13). Term by term (see the doc):
-//   13 B + 8.8 D + 1.5 B~ + 1.5 W   mapping B into A's frame, w = a - b~      (vertex error)
-//   4 A + 24 B                      choosing the support points (rounded dots, rotated direction)
+//   15 B + 10.2 D + 1.5 B~ + 1.5 W  mapping B into A's frame, w = a - b~      (vertex error)
+//   4 A + 28 B                      choosing the support points (rounded dots, rotated direction)
 //   3.5 W + 3 d                     the distance formula |cross(w1, e12)| / |e12|
 //   2.5 (d + rA + rB)               back to world lengths: times |qA| = sqrt(cA^2 + sA^2)
 //   d + rA + rB                     subtracting the radii
@@ -21,7 +21,7 @@ double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 {
     const double u = m.unitRoundoff;
     const double d = m.exactDistance;
-    double terms = 4 * m.maxA + 37 * m.maxB + 8.8 * m.translation + 1.5 * m.maxBMapped +
+    double terms = 4 * m.maxA + 43 * m.maxB + 10.2 * m.translation + 1.5 * m.maxBMapped +
                    5 * m.maxW + 6.5 * d;
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         terms += 16 * m.maxW;
@@ -30,7 +30,7 @@ double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 
 std::string boundFormula(const VariantInfo& variant)
 {
-    std::string f = "u (4 A + 37 B + 8.8 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)), A's local frame";
+    std::string f = "u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)), A's local frame";
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         f += " + 16 u W";
     return f + " (docs/error-bound.md)";

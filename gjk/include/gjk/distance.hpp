@@ -1066,13 +1066,20 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     // Back to world coordinates: the points through the frame's transform, the normal through its
     // rotation. A's frame of a rotation qA that is not a unit vector in T (a float engine's seen in
     // double, issue 13) measures lengths in units of |qA|: the distance is multiplied by |qA|, the
-    // normal (which rotate() lengthened by |qA|) divided by it. Skipped when |qA|^2 computes to 1,
-    // as for every world-frame query (world.q is the identity). docs/error-bound.md, term 5.
+    // normal (which rotate() lengthened by |qA|) divided by it. Skipped for a unit rotation
+    // (isUnitRotation, the same test as invMulTransforms'), as for every world-frame query
+    // (world.q is the identity). docs/error-bound.md, term 5.
     const T frameSize2 = squaredSize(world.q);
     Vec2<T> worldA = transformPoint(world, pA), worldB = transformPoint(world, pB);
     normal = rotate(world.q, normal);
-    if (frameSize2 != T(1)) [[unlikely]]
+    // |qA|^2 itself must be in range (its square root and the divisions by it keep their
+    // relative accuracy): a rotation of size beyond ~1e-146..1e153 (double) is normalised by the
+    // rescaled retry (rotationExponent).
+    bool frameOutOfRange = false;
+    if (!isUnitRotation(frameSize2)) [[unlikely]]
     {
+        frameOutOfRange = !(frameSize2 >= Tolerances<T>::minCoordinate * Tolerances<T>::minCoordinate &&
+                            frameSize2 <= Tolerances<T>::maxCoordinate * Tolerances<T>::maxCoordinate);
         const T size = std::sqrt(frameSize2);
         dist *= size;
         normal = {normal.x / size, normal.y / size};
@@ -1157,11 +1164,6 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
                                  !(std::abs(out.pointA.y) <= big) | !(std::abs(out.pointB.x) <= big) |
                                  !(std::abs(out.pointB.y) <= big) | !(std::abs(out.normal.x) <= big) |
                                  !(std::abs(out.normal.y) <= big);
-    // |qA|^2 itself must be in range in A's frame (its square root and the divisions by it keep
-    // their relative accuracy): a rotation of size beyond ~1e-146..1e153 (double) is normalised by
-    // the rescaled retry (rotationExponent).
-    const bool frameOutOfRange = !(frameSize2 >= Tolerances<T>::minCoordinate * Tolerances<T>::minCoordinate &&
-                                   frameSize2 <= Tolerances<T>::maxCoordinate * Tolerances<T>::maxCoordinate);
     const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) || frameOutOfRange ||
                                (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) ||
                                A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact)) ||

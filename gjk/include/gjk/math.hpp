@@ -32,6 +32,45 @@ template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v) { return {v.y, -v.x}; 
 // (Tolerances<T>::maxCoordinate) the squares can neither overflow nor lose accuracy to underflow.
 template <class T> T length(Vec2<T> v) { return std::sqrt(v.x * v.x + v.y * v.y); }
 
+// Every tolerance of the library, per scalar type. No FLT_EPSILON in templated code.
+template <class T> struct Tolerances
+{
+    // Unit roundoff u = eps/2 of round-to-nearest.
+    static constexpr T unitRoundoff = std::numeric_limits<T>::epsilon() / T(2);
+    // DualityGap stopping rule: stop when dot(v, v) - dot(v, w) <= dualityGap * dot(v, v), i.e.
+    // when the new support point w can lower the squared distance by less than a few roundings of
+    // the dot products (each carries up to ~2u relative error with respect to the larger term).
+    static constexpr T dualityGap = T(16) * unitRoundoff;
+    // Range in which the query's products neither overflow nor lose precision to underflow.
+    // The largest products are dots and crosses of two simplex vertices, at most ~8 R^2 for
+    // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below
+    // R = sqrt(min_normal / u) the products R^2 fall under min_normal/u and lose relative accuracy
+    // to gradual underflow (float: 4.4e-16, double: 1.5e-146). A query whose support points leave
+    // [minCoordinate, maxCoordinate] is flagged DistanceOutput::outOfRange (issue: float overflow).
+    static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
+    static inline const T minCoordinate =
+        std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
+    // A rotation whose computed squared size c^2 + s^2 is within this of 1 is used as a unit one:
+    // A's frame inverts it by transposing it and skips the division by |qA|^2 and the final
+    // multiplication by |qA| (issue 13). The computed size carries 2u, so the true |qA|^2 is then
+    // within 4u of 1, and the transpose within 4u of the inverse: docs/error-bound.md, term 1
+    // (6u instead of the division's 5u). Why not exactly 1: a double (cos t, sin t) pair has
+    // c^2 + s^2 != 1 in 22 % of random angles, and a test against exactly 1 made the branch
+    // unpredictable (gjk_bench's warm double query: 1.9 more mispredicted branches per query,
+    // docs/speed.md, "Transforms as given"). Within 2u, glibc's (cos t, sin t) is a unit rotation
+    // for all of 1e7 random angles, in double and in float, and a float pair seen in double
+    // (|c^2 + s^2 - 1| ~ 1e-8 .. 1e-7) for none of them.
+    static constexpr T unitRotation = T(2) * unitRoundoff;
+};
+
+// |q|^2 computed, within Tolerances<T>::unitRotation of 1.
+template <class T> constexpr bool isUnitRotation(T n2)
+{
+    return std::abs(n2 - T(1)) <= Tolerances<T>::unitRotation;
+}
+
+
+
 // A rotation stored as the two numbers the caller computed once, c = cos(angle), s = sin(angle).
 // They are used as given (never recomputed from an angle, never normalised), so the exact side can
 // apply the very same map to judge the result. (c, s) need not be a unit vector: any finite
@@ -74,47 +113,28 @@ template <class T> constexpr Vec2<T> transformPoint(const Transform<T>& xf, Vec2
 {
     return {(xf.q.c * v.x - xf.q.s * v.y) + xf.p.x, (xf.q.s * v.x + xf.q.c * v.y) + xf.p.y};
 }
-// The true inverse, Q^-1 (v - p) = Q^T (v - p) / |q|^2 (the division only when |q|^2 != 1 in T).
+// The inverse, Q^-1 (v - p) = Q^T (v - p) / |q|^2 (the division only when q is not a unit rotation
+// to Tolerances<T>::unitRotation).
 template <class T> constexpr Vec2<T> invTransformPoint(const Transform<T>& xf, Vec2<T> v)
 {
     const Vec2<T> r = invRotate(xf.q, v - xf.p);
     const T n = squaredSize(xf.q);
-    return n == T(1) ? r : Vec2<T>{r.x / n, r.y / n};
+    return isUnitRotation(n) ? r : Vec2<T>{r.x / n, r.y / n};
 }
 // inverse(a) * b: maps B's local coordinates into A's local frame. The translation is
 // invRotate(qA, pB - pA): the common offset of two shapes far from the origin cancels in the
 // subtraction (exactly, by Sterbenz's lemma, when pB and pA are within a factor two) before any
 // rounding of the small quantities happens.
 // A's rotation of any size: both parts are divided by |qA|^2 = cA^2 + sA^2 (its true inverse is
-// qA^T / |qA|^2), skipped when that computes to exactly 1. Each division adds one rounding, and the
-// computed |qA|^2 carries at most 2u: docs/error-bound.md, term 1.
+// qA^T / |qA|^2), skipped for a unit rotation (isUnitRotation). Each division adds one rounding,
+// and the computed |qA|^2 carries at most 2u: docs/error-bound.md, term 1.
 template <class T> constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T>& b)
 {
     Transform<T> r{invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
     const T n = squaredSize(a.q);
-    if (n != T(1)) [[unlikely]]
+    if (!isUnitRotation(n)) [[unlikely]]
         r = {{r.p.x / n, r.p.y / n}, {r.q.c / n, r.q.s / n}};
     return r;
 }
-
-// Every tolerance of the library, per scalar type. No FLT_EPSILON in templated code.
-template <class T> struct Tolerances
-{
-    // Unit roundoff u = eps/2 of round-to-nearest.
-    static constexpr T unitRoundoff = std::numeric_limits<T>::epsilon() / T(2);
-    // DualityGap stopping rule: stop when dot(v, v) - dot(v, w) <= dualityGap * dot(v, v), i.e.
-    // when the new support point w can lower the squared distance by less than a few roundings of
-    // the dot products (each carries up to ~2u relative error with respect to the larger term).
-    static constexpr T dualityGap = T(16) * unitRoundoff;
-    // Range in which the query's products neither overflow nor lose precision to underflow.
-    // The largest products are dots and crosses of two simplex vertices, at most ~8 R^2 for
-    // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below
-    // R = sqrt(min_normal / u) the products R^2 fall under min_normal/u and lose relative accuracy
-    // to gradual underflow (float: 4.4e-16, double: 1.5e-146). A query whose support points leave
-    // [minCoordinate, maxCoordinate] is flagged DistanceOutput::outOfRange (issue: float overflow).
-    static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
-    static inline const T minCoordinate =
-        std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
-};
 
 } // namespace gjk
