@@ -40,7 +40,9 @@ template <class T> struct Converted
     std::vector<gjk::DistanceInput<T>> inputs;
 };
 
-template <class T> const Converted<T>& inputs()
+// FloatRotations: every rotation (c, s) rounded to float, as a float engine stores it (in a double
+// query |c^2 + s^2 - 1| is then ~1e-8, never a unit rotation: A's frame divides by |qA|^2).
+template <class T, bool FloatRotations = false> const Converted<T>& inputs()
 {
     static const Converted<T> c = []
     {
@@ -59,6 +61,8 @@ template <class T> const Converted<T>& inputs()
                 auto& pts = out.storage.emplace_back(std::move(shape.points));
                 *polys[k] = {pts.data(), int(pts.size()), T(0)};
                 *xfs[k] = shape.xf;
+                if constexpr (FloatRotations)
+                    xfs[k]->q = {T(float(shape.xf.q.c)), T(float(shape.xf.q.s))};
             }
             out.inputs.push_back(in);
         }
@@ -101,6 +105,16 @@ template <class T> void BM_Random(benchmark::State& state)
     for (auto _ : state)
         coldPass(in, in.size(), o);
     state.SetItemsProcessed(state.iterations() * int64_t(in.size()));
+    setNsPerQuery(state, in.size());
+}
+
+// The cold query on a float engine's rotations (issue 13): against BM_Random, the cost of the
+// non-unit path (docs/speed.md, "Transforms as given").
+template <class T> void BM_RandomFloatRotations(benchmark::State& state)
+{
+    const auto& in = inputs<T, true>().inputs;
+    for (auto _ : state)
+        coldPass(in, in.size(), gjk::referenceOptions);
     setNsPerQuery(state, in.size());
 }
 
@@ -173,6 +187,7 @@ template <class T> void BM_RegularPolygons(benchmark::State& state)
 
 BENCHMARK_TEMPLATE(BM_Random, double)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomFloatRotations, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLearned, double)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLearned, float)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
