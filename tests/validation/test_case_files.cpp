@@ -237,6 +237,13 @@ TEST_CASE("float rounding of a case for the float variants' truth", "[cases]")
     CHECK_FALSE(representableInFloat(c));
     c.a.points = {{0.1, 1e30}};
     CHECK(representableInFloat(c));
+    // A rotation (1e-200, -1e-200) is a transform in double, (0, 0) in float: none.
+    Case r = c;
+    r.b.c = 1e-200;
+    r.b.s = -1e-200;
+    CHECK_FALSE(representableInFloat(r));
+    r.b.s = 1e-30; // (0, 1e-30) in float: a transform
+    CHECK(representableInFloat(r));
     const exact::Shape e = toExact(c.a, true);
     CHECK(e.points[0].x == double(0.1f));
     CHECK(e.points[0].y == double(1e30f));

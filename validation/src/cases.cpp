@@ -751,6 +751,9 @@ bool representableInFloat(const Case& c)
                 return false;
         if (!ok(s->radius) || !ok(s->px) || !ok(s->py) || !ok(s->c) || !ok(s->s))
             return false;
+        // A rotation that underflows to (0, 0) in float is no transform (cases.cpp rejects it).
+        if (float(s->c) == 0 && float(s->s) == 0)
+            return false;
     }
     return true;
 }

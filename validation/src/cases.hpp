@@ -88,7 +88,8 @@ std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::siz
 // Every number of the shape rounded to float (what the float variants receive), as doubles.
 ShapeIn roundedToFloat(const ShapeIn& s);
 exact::Shape toExact(const ShapeIn& s, bool roundToFloat = false);
-// True when every number of the case is finite after rounding to float.
+// True when every number of the case is finite after rounding to float, and no rotation rounds to
+// (0, 0).
 bool representableInFloat(const Case& c);
 
 } // namespace gjkval
