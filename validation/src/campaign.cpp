@@ -289,7 +289,7 @@ Json contextJson(const std::string& date, const std::string& revision, const std
 
 std::vector<std::string> defaultFamilies()
 {
-    return {"random:" + std::to_string(kDefaultRandomCount), "hard"};
+    return {"random:" + std::to_string(kDefaultRandomCount), "hard", "engine"};
 }
 
 std::vector<std::string> defaultCaseFiles()

@@ -1,6 +1,8 @@
 #include "families.hpp"
 
+#include "engine.hpp"
 #include "geometry.hpp"
+#include "rng.hpp"
 
 #include "gjk/math.hpp"
 
@@ -20,35 +22,6 @@ namespace
 {
 constexpr double kPi = std::numbers::pi;
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Deterministic generator (SplitMix64); distributions written out so that every platform agrees.
-struct Rng
-{
-    std::uint64_t state;
-    // The family's own seed (set by generate()): generators that need the same geometry in
-    // several cases (a configuration swept over scales, a pair in every point order) derive it
-    // from this, not from the case's own stream.
-    std::uint64_t family = 0;
-    explicit Rng(std::uint64_t seed) : state(seed) {}
-    std::uint64_t next()
-    {
-        state += 0x9e3779b97f4a7c15ULL;
-        std::uint64_t z = state;
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-    double range(double a, double b) { return a + (b - a) * uniform(); }
-    int integer(int lo, int hi) { return lo + int(next() % std::uint64_t(hi - lo + 1)); }
-    double logUniform(double e0, double e1) { return std::pow(10.0, range(e0, e1)); }
-    double sign() { return (next() & 1) ? 1.0 : -1.0; }
-    template <class V> void shuffle(V& v)
-    {
-        for (std::size_t i = v.size(); i > 1; --i)
-            std::swap(v[i - 1], v[std::size_t(next() % i)]);
-    }
-};
 
 // --- Shape helpers ---------------------------------------------------------------------------
 
@@ -1518,6 +1491,12 @@ std::uint64_t familySeed(std::uint64_t seed, const std::string& name)
     return mix64(seed ^ hashString(name));
 }
 
+// A case's name: "family/i" or "family/i-tag".
+std::string caseName(const std::string& family, int i, const std::string& tag)
+{
+    return family + "/" + std::to_string(i) + (tag.empty() ? "" : "-" + tag);
+}
+
 GeneratedFamily generate(const std::string& name, const std::string& reason, int count,
                          std::uint64_t seed, const Gen& gen, std::vector<MakeupSpec> makeup)
 {
@@ -1534,9 +1513,138 @@ GeneratedFamily generate(const std::string& name, const std::string& reason, int
         std::string tag;
         Case& c = f.cases[std::size_t(i)];
         gen(r, i, c, tag);
-        c.name = name + "/" + std::to_string(i) + (tag.empty() ? "" : "-" + tag);
+        c.name = caseName(name, i, tag);
     }
     return f;
+}
+
+// --- The engine families: queries recorded from Box2D 2.4.1 worlds (engine.cpp) ----------------
+
+struct EngineEntry
+{
+    HardSubFamilyInfo info; // name without "engine/", e.g. "pyramid-toi"
+    EngineScene scene;
+    EngineQueryKind kind;
+    std::vector<MakeupSpec> makeup;
+};
+
+// The engine families' cases come from one simulation each, not one Rng stream per case: the
+// family seed builds the scene and seeds the sampling of `count` queries from the run
+// (engine.hpp), so a smaller count is not a prefix of a larger one.
+GeneratedFamily generateEngine(const EngineEntry& e, int count, std::uint64_t seed)
+{
+    GeneratedFamily f;
+    f.name = "engine/" + e.info.name;
+    f.reason = e.info.reason;
+    f.seed = familySeed(seed, f.name);
+    f.makeup = e.makeup;
+    auto queries = engineQueries(e.scene, e.kind, f.seed, count);
+    f.cases.reserve(queries.size());
+    for (std::size_t i = 0; i < queries.size(); ++i)
+    {
+        f.cases.push_back(std::move(queries[i].c));
+        f.cases.back().name = caseName(f.name, int(i), queries[i].tag);
+    }
+    return f;
+}
+
+// Reasons and make-up checks of the engine families. The ranges are the values measured at the
+// default count (2000) for seeds 1..10 and at 300 cases for seeds 1..8 (`gjk-validate run --family
+// engine[:300] --seed S`, report.json families[].makeup), widened by a margin; exact where Box2D
+// fixes the value: every Box2D proxy has a radius (polygons and edges
+// b2_polygonRadius = 0.01, circles their own), b2TimeOfImpact asks with useRadii = false (radius
+// 0) and stops within b2_linearSlop / 4 of its target max(b2_linearSlop, rA + rB - 3
+// b2_linearSlop) = 0.005 for two skins of 0.01.
+const std::vector<EngineEntry>& engineTable()
+{
+    using S = EngineScene;
+    using K = EngineQueryKind;
+    constexpr double kSkin = 0.01; // b2_polygonRadius as a float: 0.00999999977
+    static const std::vector<EngineEntry> table = {
+        {{"pyramid-proximity", kDefaultEngineCount,
+          "Box2D 2.4.1's testbed pyramid (10 to 20 rows of boxes of half size 0.3 to 0.6) resting "
+          "on an 80 m edge, 600 steps at 60 Hz: per contact of the world's list, the query an "
+          "engine makes (b2DistanceProxy of each fixture, the bodies' float transforms, radii "
+          "used). Boxes touching within their 0.01 skins, a segment 100 times longer than the "
+          "boxes, rotations that are unit vectors only to float rounding."},
+         S::Pyramid,
+         K::Proximity,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
+          {"max polygon radius (b2_polygonRadius only)", M::MaxPolygonRadius, 0.99 * kSkin,
+           1.01 * kSkin},
+          {"min vertices (the ground edge)", M::MinVertices, 2, 2},
+          {"max vertices", M::MaxVertices, 4, 4},
+          {"overlapping fraction", M::OverlapFraction, 0.4, 0.85, true},
+          {"max distance (fat AABBs)", M::MaxDistance, 0.05, 2}}},
+        {{"pyramid-toi", kDefaultEngineCount,
+          "The pyramid's continuous collision: the b2Distance calls b2TimeOfImpact makes for each "
+          "box touching the 80 m ground edge (dynamic against static) at every step, captured "
+          "verbatim by interposing b2Distance. Core shapes (useRadii = false, radius 0) at the "
+          "root finder's target distance 0.005: the naive search direction fails on the long "
+          "edge here, as the talk predicts."},
+         S::Pyramid,
+         K::Toi,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
+          {"min vertices (the ground edge)", M::MinVertices, 2, 2},
+          {"separated fraction", M::SeparatedFraction, 0.99, 1, true},
+          {"min positive distance (TOI target 0.005 - 0.00125)", M::MinPositiveDistance, 0.003,
+           0.0063, true},
+          {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.03, 0.5, true}}},
+        {{"container-proximity", kDefaultEngineCount,
+          "A kinematic box container (inner half size 5 to 8) turning at 0.15 to 0.5 rad/s, filled "
+          "with 3..8-gons, circles and rounded polygons (a b2PolygonShape whose m_radius, 0.05 to "
+          "0.25, exceeds the 0.01 skin): per contact, the engine's query with radii. Mixed types, "
+          "rounded shapes, the turning walls' fat AABBs (pairs up to several metres apart)."},
+         S::Container,
+         K::Proximity,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
+          {"max polygon radius (rounded polygons)", M::MaxPolygonRadius, 0.05, 0.25},
+          {"min vertices (circles)", M::MinVertices, 1, 1},
+          {"max vertices", M::MaxVertices, 6, 8},
+          {"overlapping fraction", M::OverlapFraction, 0.15, 0.5, true},
+          {"max distance (fat AABBs of turning walls)", M::MaxDistance, 1, 20}}},
+        {{"container-toi", kDefaultEngineCount,
+          "The container's continuous collision: b2TimeOfImpact's own b2Distance calls "
+          "(interposed) for every shape near the kinematic walls, core shapes without radius: "
+          "circles become points, rounded polygons their cores."},
+         S::Container,
+         K::Toi,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
+          {"min vertices (circle centres)", M::MinVertices, 1, 1},
+          {"max vertices", M::MaxVertices, 6, 8},
+          {"separated fraction", M::SeparatedFraction, 0.99, 1, true},
+          {"min positive distance (near the TOI targets)", M::MinPositiveDistance, 0.001, 0.02,
+           true}}},
+        {{"bullets-proximity", kDefaultEngineCount,
+          "Bullets (SetBullet: circles, boxes, rounded boxes of 0.05 to 0.25) fired at 40 to 120 "
+          "m/s every 15 to 40 steps into 2 to 4 stacks of 5 to 10 boxes on an 80 m edge: per "
+          "contact, the engine's query with radii; fast bodies far from the origin, a scattered "
+          "stack."},
+         S::Bullets,
+         K::Proximity,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
+          {"max polygon radius (rounded bullets)", M::MaxPolygonRadius, 0.02, 0.1},
+          {"min vertices (circles)", M::MinVertices, 1, 1},
+          {"overlapping fraction", M::OverlapFraction, 0.1, 0.7, true},
+          {"max |coordinate| (bullets in flight)", M::MaxCoordinate, 30, 1e4}}},
+        {{"bullets-toi", kDefaultEngineCount,
+          "The bullets' continuous collision: b2TimeOfImpact's own b2Distance calls (interposed) "
+          "for bullets against boxes and for boxes against the ground, core shapes without "
+          "radius."},
+         S::Bullets,
+         K::Toi,
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+          {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
+          {"min vertices (circle centres)", M::MinVertices, 1, 1},
+          {"separated fraction", M::SeparatedFraction, 0.98, 1, true},
+          {"max |coordinate| (bullets in flight)", M::MaxCoordinate, 30, 1e4}}},
+    };
+    return table;
 }
 
 } // namespace
@@ -1547,6 +1655,18 @@ const std::vector<HardSubFamilyInfo>& hardSubFamilies()
     {
         std::vector<HardSubFamilyInfo> v;
         for (const auto& e : hardTable())
+            v.push_back(e.info);
+        return v;
+    }();
+    return infos;
+}
+
+const std::vector<HardSubFamilyInfo>& engineSubFamilies()
+{
+    static const std::vector<HardSubFamilyInfo> infos = []
+    {
+        std::vector<HardSubFamilyInfo> v;
+        for (const auto& e : engineTable())
             v.push_back(e.info);
         return v;
     }();
@@ -1575,14 +1695,19 @@ FamilySpec parseFamilySpec(const std::string& spec)
                                          excerpt(spec), excerpt(n), kMaxFamilyCount));
         out.count = int(v);
     }
-    bool known = out.name == "random" || out.name == "hard";
+    bool known = out.name == "random" || out.name == "hard" || out.name == "engine";
     for (const auto& e : hardTable())
         known = known || out.name == "hard/" + e.info.name;
+    for (const auto& e : engineTable())
+        known = known || out.name == "engine/" + e.info.name;
     if (!known)
     {
         std::string names = "random, hard";
         for (const auto& e : hardTable())
             names += ", hard/" + e.info.name;
+        names += ", engine";
+        for (const auto& e : engineTable())
+            names += ", engine/" + e.info.name;
         throw InputError(fmt::format("unknown family '{}' (known: {})", excerpt(out.name), names));
     }
     return out;
@@ -1596,6 +1721,10 @@ std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySp
     for (const auto& e : hardTable())
         if (spec.name == "hard" || spec.name == "hard/" + e.info.name)
             out.emplace_back("hard/" + e.info.name,
+                             std::size_t(spec.count < 0 ? e.info.count : spec.count));
+    for (const auto& e : engineTable())
+        if (spec.name == "engine" || spec.name == "engine/" + e.info.name)
+            out.emplace_back("engine/" + e.info.name,
                              std::size_t(spec.count < 0 ? e.info.count : spec.count));
     return out;
 }
@@ -1620,6 +1749,9 @@ std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint
             out.push_back(generate(full, e.info.reason, count < 0 ? e.info.count : count, seed,
                                    e.gen, e.makeup));
     }
+    for (const auto& e : engineTable())
+        if (name == "engine" || name == "engine/" + e.info.name)
+            out.push_back(generateEngine(e, count < 0 ? e.info.count : count, seed));
     if (out.empty()) // parseFamilySpec accepted the name: a broken invariant, not bad input
         throw std::logic_error("generateFamilies: the family '" + name + "' generated nothing");
     return out;
@@ -1761,6 +1893,12 @@ std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
             v = n > 0 ? k / n : 0;
             break;
         }
+        case M::MaxPolygonRadius:
+            for (auto* c : cases)
+                for (const ShapeIn* sh : {&c->a, &c->b})
+                    if (sh->points.size() >= 3)
+                        v = std::max(v, sh->radius);
+            break;
         case M::NonUnitRotationFraction:
         {
             double k = 0;

@@ -1,6 +1,7 @@
 // Case families: seeded generators of cases, each with the checks of its own make-up.
 // `random` is the realistic mix; `hard/<sub>` are the known ways to break GJK, all in ONE table in
-// families.cpp with a reason per sub-family.
+// families.cpp with a reason per sub-family; `engine/<scene>-<kind>` are queries recorded from
+// Box2D worlds (engine.hpp), in a second table there.
 #pragma once
 
 #include "cases.hpp"
@@ -39,6 +40,7 @@ enum class MakeupMetric
                                // maxCoordinate]
     DistinctDistances,         // number of distinct exact distances (bit patterns) among the cases
     SharedOriginFraction,      // fraction of cases where both shapes have the same translation
+    MaxPolygonRadius,          // largest radius of a shape of >= 3 points (rounded polygons)
     NonUnitRotationFraction,   // fraction of cases where a shape's c^2 + s^2 is not 1 in double
 };
 
@@ -76,17 +78,22 @@ struct HardSubFamilyInfo
     std::string reason;
 };
 const std::vector<HardSubFamilyInfo>& hardSubFamilies();
+// The engine families `engine/<scene>-<kind>` (engine.hpp), names without "engine/"; the spec
+// `engine` is all of them.
+const std::vector<HardSubFamilyInfo>& engineSubFamilies();
 
 inline constexpr int kDefaultRandomCount = 200000;
+inline constexpr int kDefaultEngineCount = 2000; // per engine family: 12,000 cases in all
 
 // The largest N of a family spec (the memory a run needs is checked apart, in main).
 inline constexpr int kMaxFamilyCount = 100000000;
 
-// A family spec parsed: "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]", N a whole
-// number in 1..kMaxFamilyCount. Throws InputError (unknown family, bad count).
+// A family spec parsed: "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]",
+// "engine[:N]" (N per engine family), "engine/<scene>-<kind>[:N]", N a whole number in
+// 1..kMaxFamilyCount. Throws InputError (unknown family, bad count).
 struct FamilySpec
 {
-    std::string name; // "random", "hard", "hard/sliver"
+    std::string name; // "random", "hard", "hard/sliver", "engine", "engine/pyramid-toi"
     int count = -1;   // -1: the default count
 };
 FamilySpec parseFamilySpec(const std::string& spec);

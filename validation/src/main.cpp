@@ -214,13 +214,15 @@ int runMain(int argc, char** argv)
     auto* run = app.add_subcommand(
         "run", "Run a campaign and write DIR/report.json, report.md, worst-cases.json "
                "(and cases.jsonl, index.html). Without --family and --cases: the "
-               "default campaign, --family random:200000 --family hard plus every "
+               "default campaign, --family random:200000 --family hard --family engine plus every "
                "validation/cases/*.json.");
     run->footer(exitCodes);
     run->add_option("--family", families,
                     "case family with optional count: random[:N] (default N 200000), hard[:N] (all "
-                    "sub-families, N each, default their built-in counts), hard/<sub>[:N]; N in "
-                    "1..1e8 and within memory; repeatable (see `list`)")
+                    "sub-families, N each, default their built-in counts), hard/<sub>[:N], "
+                    "engine[:N] (all engine families, N each, default 2000), "
+                    "engine/<scene>-<kind>[:N]; N in 1..1e8 and within memory; repeatable (see "
+                    "`list`)")
         ->allow_extra_args(false);
     run->add_option("--cases", files, "a gjk-cases/1 file; repeatable")->allow_extra_args(false);
     run->add_option("--seed", seed, "campaign seed, 0..2^64-1 (each family derives its own)")
@@ -503,6 +505,9 @@ int runMain(int argc, char** argv)
         std::printf("families:\n  random  (default count %d)\n", kDefaultRandomCount);
         for (const auto& h : hardSubFamilies())
             std::printf("  hard/%-20s %4d cases  %s\n", h.name.c_str(), h.count, h.reason.c_str());
+        for (const auto& e : engineSubFamilies())
+            std::printf("  engine/%-19s %4d cases  %s\n", e.name.c_str(), e.count,
+                        e.reason.c_str());
         std::printf("variants (default %s; judged decide the exit code, comparison are "
                     "reported only):\n",
                     kDefaultVariants);
