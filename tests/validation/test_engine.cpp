@@ -3,6 +3,7 @@
 // useRadii = false, so radius 0), every case keeps the engine's float rotation (not a unit vector
 // in double) and is valid case-file input, and every family's make-up checks hold.
 #include "campaign.hpp"
+#include "campaign_support.hpp"
 #include "engine.hpp"
 #include "families.hpp"
 #include "variants.hpp"
@@ -222,12 +223,7 @@ TEST_CASE("engine families: make-up checks hold on a few hundred cases, and fail
 
 TEST_CASE("engine families: the judged variants pass on engine data", "[engine][campaign]")
 {
-    CampaignConfig c;
-    c.families = {"engine:300"};
-    c.variants = parseVariants("all");
-    c.threads = 2;
-    c.timing = false;
-    c.command = "test";
+    const CampaignConfig c = untimedConfig({"engine:300"});
     const Campaign camp = runCampaign(c, loadInputs(c));
     REQUIRE(camp.report["families"].size() == 6);
     for (const Json& fam : camp.report["families"])

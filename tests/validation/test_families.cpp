@@ -3,6 +3,7 @@
 #include "families.hpp"
 
 #include "campaign.hpp"
+#include "campaign_support.hpp"
 #include "geometry.hpp"
 
 #include <catch2/catch.hpp>
@@ -402,12 +403,7 @@ TEST_CASE("cold-start sweep: every vertex pair starts, every order describes the
 TEST_CASE("range and scale: out-of-range inputs are rescaled and judged within their bound",
           "[families][stability]")
 {
-    CampaignConfig config;
-    config.families = {"hard/range", "hard/extreme-scale"};
-    config.variants = parseVariants("all");
-    config.threads = 2;
-    config.timing = false;
-    config.command = "test";
+    const CampaignConfig config = untimedConfig({"hard/range", "hard/extreme-scale"});
     const Campaign camp = runCampaign(config, loadInputs(config));
     // Float variants see coordinates 1e19..1e30 and 1e-20..1e-30 (hard/range) and 1e-300..1e300
     // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before issue 12 they
