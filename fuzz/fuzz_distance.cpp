@@ -5,8 +5,9 @@
 // rotation (c, s) and a translation. Numbers are finite values of every magnitude (small
 // integers, m * 2^e down to the subnormals and up to the overflow threshold, raw bit patterns,
 // repeats and neighbours of the previous value). Inputs that break the query's preconditions
-// (a NaN or infinite number, a value that overflows when rounded to float, points out of convex
-// order for the binary-search support) are skipped; a negative radius is used as its magnitude.
+// (a NaN or infinite number, a value that overflows when rounded to float, a rotation (0, 0),
+// points out of convex order for the binary-search support) are skipped; a negative radius is
+// used as its magnitude.
 //
 // Invariants, checked on the cold query and on a warm repeat from the cold query's cache
 // (docs/fuzzing.md); a broken one aborts with a message naming it:
@@ -178,8 +179,10 @@ bool decodeShape(Reader& r, bool convex, std::vector<gjk::Vec2<T>>& points, gjk:
         xf.q = {T(std::cos(angle)), T(std::sin(angle))};
         break;
     }
-    case 2: // arbitrary finite (c, s), used as given
+    case 2: // arbitrary finite (c, s) != (0, 0), used as given (a rotation times |q|)
         if (!toT(number<T>(r, 1.0), xf.q.c) || !toT(number<T>(r, 0.0), xf.q.s))
+            return false;
+        if (xf.q.c == T(0) && xf.q.s == T(0)) // no transform: the query's precondition
             return false;
         break;
     default: // an exact quarter turn

@@ -864,6 +864,9 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     const Polygon<T>& polyB = input.proxyB;
     GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
     GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+    // Any finite rotation (c, s) but (0, 0), which maps a shape to one point (docs/gjk.md).
+    GJK_ASSERT(!(input.transformA.q.c == T(0) && input.transformA.q.s == T(0)));
+    GJK_ASSERT(!(input.transformB.q.c == T(0) && input.transformB.q.s == T(0)));
 
     // The compute frame: A's local frame (world = xfA * local) or the world itself.
     Transform<T> world;
