@@ -2,6 +2,7 @@
 
 #include "build_info.hpp"
 #include "output.hpp"
+#include "parallel.hpp"
 #include "report.hpp"
 #include "timing.hpp"
 
@@ -85,98 +86,6 @@ std::string hostName()
     if (gethostname(buf, sizeof buf - 1) != 0)
         return "unknown";
     return buf;
-}
-
-// Progress bar on stderr (only when it is a terminal and asked for).
-class Progress
-{
-  public:
-    Progress(bool enabled, std::string label, std::size_t total)
-        : enabled_(enabled), label_(std::move(label)), total_(total)
-    {
-        if (enabled_)
-            thread_ = std::thread([this] { loop(); });
-    }
-    ~Progress()
-    {
-        if (!enabled_)
-            return;
-        {
-            std::lock_guard lock(m_);
-            stop_ = true;
-        }
-        cv_.notify_all();
-        thread_.join();
-        draw();
-        std::fputc('\n', stderr);
-    }
-    void add(std::size_t n) { done_ += n; }
-
-  private:
-    void loop()
-    {
-        std::unique_lock lock(m_);
-        while (!cv_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop_; }))
-            draw();
-    }
-    void draw()
-    {
-        const std::size_t d = std::min(done_.load(), total_);
-        const int width = 40;
-        const int fill = total_ ? int(double(d) / double(total_) * width) : width;
-        std::fprintf(stderr, "\r%-8s [%s%s] %zu/%zu", label_.c_str(),
-                     std::string(std::size_t(fill), '#').c_str(),
-                     std::string(std::size_t(width - fill), ' ').c_str(), d, total_);
-        std::fflush(stderr);
-    }
-    bool enabled_;
-    std::string label_;
-    std::size_t total_;
-    std::atomic<std::size_t> done_{0};
-    std::thread thread_;
-    std::mutex m_;
-    std::condition_variable cv_;
-    bool stop_ = false;
-};
-
-// fn(i) for i in [0, n) on `threads` threads, in chunks; each index is computed exactly once and
-// results are stored by index, so the outcome does not depend on the thread count.
-template <class F> void parallelFor(std::size_t n, int threads, Progress& progress, F fn)
-{
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr error;
-    std::mutex errorMutex;
-    const std::size_t chunk = 8;
-    auto worker = [&]
-    {
-        for (;;)
-        {
-            const std::size_t start = next.fetch_add(chunk);
-            if (start >= n)
-                break;
-            const std::size_t end = std::min(n, start + chunk);
-            try
-            {
-                for (std::size_t i = start; i < end; ++i)
-                    fn(i);
-            }
-            catch (...)
-            {
-                std::lock_guard lock(errorMutex);
-                if (!error)
-                    error = std::current_exception();
-            }
-            progress.add(end - start);
-        }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t)
-        pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool)
-        t.join();
-    if (error)
-        std::rethrow_exception(error);
 }
 
 void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, const VariantInfo& vi,
@@ -359,8 +268,7 @@ std::vector<FamilyData> loadInputs(const CampaignConfig& config)
 Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> families)
 {
     const auto tStart = Clock::now();
-    const int threads = config.threads > 0 ? config.threads
-                                           : int(std::max(1u, std::thread::hardware_concurrency()));
+    const int threads = resolveThreads(config.threads);
     EvalContext ctx;
     ctx.variants = config.variants;
     ctx.exactOptions.route = config.route;
