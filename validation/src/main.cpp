@@ -3,6 +3,7 @@
 //   generate  write a family's cases to a gjk-cases/1 file
 //   explain   one case in detail: inputs, each variant's result and trace, the exact result
 //   bench     time the variants on given cases (no exact side)
+//   search    mutate cases toward the worst error / bound ratio (adversarial search)
 //   list      the families and variants
 #include "bench.hpp"
 #include "campaign.hpp"
@@ -11,6 +12,7 @@
 #include "families.hpp"
 #include "output.hpp"
 #include "report.hpp"
+#include "search.hpp"
 #include "variants.hpp"
 
 #include <CLI/CLI.hpp>
@@ -45,6 +47,8 @@ constexpr int kMaxThreads = 256;
 constexpr int kMaxPasses = 1000;
 constexpr int kMaxWorst = 1000;
 constexpr std::size_t kMaxCommentBytes = 1000;
+constexpr int kMaxSearchPopulation = 1000;
+constexpr std::uint64_t kMaxSearchEvaluations = 1000000000, kDefaultSearchEvaluations = 10000;
 
 // Memory a command needs per case, measured as peak RSS growth over 5000 .. 40000 `random` cases
 // (GCC 12 release build, every variant): run 4.7 KB, run --per-case 24 KB more, generate 1.4 KB,
@@ -316,6 +320,46 @@ int runMain(int argc, char** argv)
         ->capture_default_str();
     bench->add_option("--json", benchJson, "write the timings as JSON to this file");
 
+    // --- search ---
+    SearchConfig scfg;
+    std::vector<std::string> searchFamilies, searchFiles;
+    std::string searchVariants = "double,float", searchSeed = "1", searchOut, searchJson;
+    std::uint64_t searchEvaluations = 0;
+    double searchSeconds = 0;
+    bool searchVerbose = false, searchNoProgress = false;
+    auto* search = app.add_subcommand(
+        "search", "Adversarial search: mutate the cases of families and case files toward the "
+                  "largest error / bound ratio of the chosen variants, within a budget of "
+                  "evaluations and/or seconds. Every chosen variant is judged: a failure found "
+                  "gives exit code 1. Without a budget: --evaluations 10000.");
+    search->footer(exitCodes);
+    search->add_option("--family", searchFamilies, "start family as for run; repeatable")
+        ->allow_extra_args(false);
+    search->add_option("--cases", searchFiles, "start cases from a gjk-cases/1 file; repeatable")
+        ->allow_extra_args(false);
+    search->add_option("--variants", searchVariants,
+                       "comma-separated variant names, or all (see `list`)")
+        ->capture_default_str();
+    search->add_option("--seed", searchSeed, "seed of the families and the mutations, 0..2^64-1")
+        ->capture_default_str();
+    search->add_option("--threads", scfg.threads,
+                       "worker threads, 0..256 (0: all cores; the result does not depend on it)")
+        ->capture_default_str();
+    search->add_option("--evaluations", searchEvaluations,
+                       "budget: case evaluations (start cases included), 1..1e9");
+    search->add_option("--seconds", searchSeconds,
+                       "budget: wall time in seconds, checked between generations, > 0");
+    search->add_option("--population", scfg.population, "best cases kept, 1..1000")
+        ->capture_default_str();
+    search->add_option("--out", searchOut,
+                       "write the final population (best first) and the failing cases as a "
+                       "gjk-cases/1 file");
+    search->add_option("--json", searchJson, "write a JSON summary to this file");
+    search->add_flag("--verbose", searchVerbose,
+                     "a line on stderr per improvement, also when stderr is not a terminal");
+    search->add_flag("--no-progress", searchNoProgress,
+                     "no improvement lines (shown only when stderr is a terminal)");
+
     // --- list ---
     auto* list =
         app.add_subcommand("list", "List the families (with their reasons) and the variants.");
@@ -389,6 +433,54 @@ int runMain(int argc, char** argv)
         {
             writeFileAtomic(benchJson, res.json.dump(1) + "\n");
             std::printf("json: %s\n", benchJson.c_str());
+        }
+        flushStdout();
+        return res.exitCode;
+    }
+    if (*search)
+    {
+        scfg.seed = parseSeed(searchSeed);
+        scfg.variants = parseVariants(searchVariants);
+        scfg.command = joinArgs(argc, argv);
+        if (searchFamilies.empty() && searchFiles.empty())
+            throw InputError("search: which cases to start from? give --family F and/or --cases "
+                             "FILE");
+        checkRange("--threads", scfg.threads, 0, kMaxThreads);
+        checkRange("--population", scfg.population, 1, kMaxSearchPopulation);
+        if (search->count("--evaluations") > 0 &&
+            (searchEvaluations < 1 || searchEvaluations > kMaxSearchEvaluations))
+            throw InputError(fmt::format("--evaluations {}: expected 1..{}", searchEvaluations,
+                                         kMaxSearchEvaluations));
+        if (search->count("--seconds") > 0 && !(searchSeconds > 0 && searchSeconds <= 1e7))
+            throw InputError(fmt::format("--seconds {}: expected a number in (0, 1e7]",
+                                         searchSeconds));
+        scfg.evaluations = searchEvaluations;
+        scfg.seconds = searchSeconds;
+        if (scfg.evaluations == 0 && scfg.seconds == 0)
+            scfg.evaluations = kDefaultSearchEvaluations;
+        scfg.progress = searchVerbose || (!searchNoProgress && isatty(STDERR_FILENO));
+        checkFamilies(searchFamilies, kRunBytesPerCase);
+        checkCaseFiles(searchFiles);
+        if (search->count("--out") > 0)
+            checkOutputFile("--out", searchOut);
+        if (search->count("--json") > 0)
+            checkOutputFile("--json", searchJson);
+        testFault();
+        CampaignConfig in;
+        in.families = scfg.families = searchFamilies;
+        in.caseFiles = scfg.caseFiles = searchFiles;
+        in.seed = scfg.seed;
+        const SearchResult res = runSearch(scfg, loadInputs(in));
+        std::fputs(searchSummary(scfg, res).c_str(), stdout);
+        if (!searchOut.empty())
+        {
+            writeFileAtomic(searchOut, searchCaseFileText(scfg, res));
+            std::printf("cases: %s\n", searchOut.c_str());
+        }
+        if (!searchJson.empty())
+        {
+            writeFileAtomic(searchJson, res.json.dump(1) + "\n");
+            std::printf("json: %s\n", searchJson.c_str());
         }
         flushStdout();
         return res.exitCode;
