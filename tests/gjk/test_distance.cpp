@@ -1056,6 +1056,53 @@ TEMPLATE_TEST_CASE("range: out-of-range queries are rescaled and answered exactl
     }
 }
 
+TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-finite", "[gjk][range]",
+                   float, double)
+{
+    using T = TestType;
+    // Issue 22's reproducers (validation/cases/tiny-edges.json), in T. Each has a vertical edge of
+    // A, x = xe, whose y range contains the point B = (x0, y0): the distance is xe - x0 by hand, a
+    // subtraction that is exact in T (Sterbenz, or x0 = 0). The edge's squared length is
+    // subnormal, or below 1/max. At c925c49 (before issue 22's fix) the inf-weights cases came out
+    // flagged outOfRange with NaN witness points (the weights' reciprocal overflowed, and the
+    // rescaled retry could not help: the problem's extent is already ~1), and the subnormal-edge
+    // cases were answered only by the rescaled retry.
+    struct Case
+    {
+        double x0, y0, ax, xe, ylo, yhi;
+    };
+    const Case cases[] = {
+        // subnormal-edge-float: A = (2^-50, 0) and the edge x = 1.49e-19, y in +-2.9e-23; B = 0
+        {0, 0, 8.881784197001252e-16, 1.4907779871675686e-19, -2.9296678432774486e-23, 2.9296678432774486e-23},
+        // subnormal-edge-double
+        {0, 0, 4.004166190366202e-146, 2.051043701080057e-154, -1.7484367828556776e-162, 1.7484367828556776e-162},
+        // inf-weights-float: A = (1, 0) and the edge x = 8.88395e-16; B = (2^-50, 2^-50)
+        {8.881784197001252e-16, 8.881784197001252e-16, 1.0, 8.883952601346223e-16, 8.881716434365472e-16, 8.881851959637033e-16},
+        // inf-weights-double
+        {2.002083095183101e-146, 2.002083095183101e-146, 1.0, 2.002113644546736e-146, 2.0020830942508083e-146, 2.0020830961153935e-146},
+    };
+    for (const Case& k : cases)
+    {
+        const T x0 = T(k.x0), y0 = T(k.y0), xe = T(k.xe), ylo = T(k.ylo), yhi = T(k.yhi);
+        if (!(xe > T(0)) || !(ylo < y0 && y0 < yhi) || !(xe > x0))
+            continue; // the case does not survive rounding to T (the double ones in float)
+        INFO("xe = " << k.xe << ", x0 = " << k.x0);
+        Scene<T> s;
+        s.a = {{T(k.ax), T(0)}, {xe, ylo}, {xe, yhi}};
+        s.b = {{x0, y0}};
+        const auto out = query(s);
+        CHECK_FALSE(out.outOfRange);
+        CHECK(out.distance == xe - x0);
+        CHECK(std::isfinite(out.pointA.x));
+        CHECK(std::isfinite(out.pointA.y));
+        // On the edge: x = (a1 + a2) xe with weights a1 + a2 = 1 up to two roundings.
+        CHECK(std::abs(out.pointA.x - xe) <= 4 * std::numeric_limits<T>::epsilon() * xe);
+        CHECK(out.pointA.y >= ylo);
+        CHECK(out.pointA.y <= yhi);
+        CHECK(out.normal == Vec2<T>{-1, 0});
+    }
+}
+
 TEMPLATE_TEST_CASE("range: points spanning more than the exponent range stay flagged",
                    "[gjk][range]", float, double)
 {

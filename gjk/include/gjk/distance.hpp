@@ -484,6 +484,45 @@ GJK_INLINE SimplexVertex<T> findMinkowskiSupport(Shape& A, Shape& B, Vec2<T> d)
     return makeVertex<T>(A, B, A.support(d), B.support(-d));
 }
 
+// --- Edges of any length ------------------------------------------------------------------------
+//
+// Every use of a simplex edge e below is homogeneous in it: the barycentric numerators u, v
+// (degree 1, and u + v = |e|^2), the signs of cross products, the search direction (any positive
+// multiple of a perpendicular), the distance |cross(w1, e)| / |e| (degree 0) and the unit normal.
+// So an edge shorter than minEdgeComponent (2^-484 in double, 2^-51 in float, at or just above
+// Tolerances<T>::minCoordinate) in both components is multiplied by the power of two that brings
+// it to size ~1, exactly, and nothing else changes in exact arithmetic. Unscaled, such an edge
+// lost the query (issue 22's reproducers, validation/cases/tiny-edges.json): its squared length
+// went subnormal (a 3.5e-162 edge in double, 5.9e-23 in float: a distance 10 % off, the issue
+// reported), or below 1/max, where the weights' reciprocal 1/(u + v) overflowed (inf weights, NaN
+// witness points, flagged outOfRange with no answer). Scaled, u + v = |e|^2 ~ 1 and the products
+// with in-range points stay normal.
+template <class T> [[gnu::noinline]] Vec2<T> scaleUpEdge(Vec2<T> e)
+{
+    const T m = std::max(std::abs(e.x), std::abs(e.y));
+    if (!(m > T(0)))
+        return e; // a zero edge (repeated point): the vertex regions take it
+    const int k = -std::ilogb(m);
+    return {std::ldexp(e.x, k), std::ldexp(e.y, k)};
+}
+// The threshold, a power of two at or just above minCoordinate = sqrt(min_normal / u), as a
+// compile-time constant (minCoordinate itself is computed with std::sqrt).
+template <class T> constexpr T minEdgeComponent()
+{
+    constexpr int e = (std::numeric_limits<T>::min_exponent - 1 + std::numeric_limits<T>::digits) / 2;
+    T v = T(1);
+    for (int i = 0; i > e; --i)
+        v /= T(2);
+    return v;
+}
+template <class T> GJK_INLINE Vec2<T> edgeOfSafeSize(Vec2<T> e)
+{
+    constexpr T m = minEdgeComponent<T>();
+    if (std::max(std::abs(e.x), std::abs(e.y)) < m) [[unlikely]]
+        return scaleUpEdge(e);
+    return e;
+}
+
 // --- Section 1: point (the origin) to line segment -----------------------------------------------
 //
 // Segment w1 w2 and query point Q = 0. With n = (w2 - w1)/|w2 - w1| the barycentric coordinates
@@ -496,7 +535,7 @@ template <class T> void solve2(Simplex<T>& s)
 {
     const Vec2<T> w1 = s.v[0].w;
     const Vec2<T> w2 = s.v[1].w;
-    const Vec2<T> e12 = w2 - w1;
+    const Vec2<T> e12 = edgeOfSafeSize(w2 - w1);
 
     const T u = dot(w2, e12);  // numerator of u: dot(0 - w2, w1 - w2)
     const T v = -dot(w1, e12); // numerator of v: dot(0 - w1, w2 - w1)
@@ -539,15 +578,15 @@ template <class T> void solve3(Simplex<T>& s)
     const Vec2<T> w2 = s.v[1].w;
     const Vec2<T> w3 = s.v[2].w;
 
-    const Vec2<T> e12 = w2 - w1;
+    const Vec2<T> e12 = edgeOfSafeSize(w2 - w1);
     const T u12 = dot(w2, e12);
     const T v12 = -dot(w1, e12);
 
-    const Vec2<T> e13 = w3 - w1;
+    const Vec2<T> e13 = edgeOfSafeSize(w3 - w1);
     const T u13 = dot(w3, e13);
     const T v13 = -dot(w1, e13);
 
-    const Vec2<T> e23 = w3 - w2;
+    const Vec2<T> e23 = edgeOfSafeSize(w3 - w2);
     const T u23 = dot(w3, e23);
     const T v23 = -dot(w2, e23);
 
@@ -671,7 +710,7 @@ GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule, in
     // Talk, "An accurate search direction" and "Fixing the sign": d = cross(e, z) or cross(z, e),
     // whichever has dot(d, Q - w1) > 0. When the origin is on the edge (cases 3b and 4) the sign is
     // arbitrary: we take rightPerp, and the loop ends by a repeated vertex or containment.
-    const Vec2<T> e12 = s.v[1].w - s.v[0].w;
+    const Vec2<T> e12 = edgeOfSafeSize(s.v[1].w - s.v[0].w);
     return originOnLeft(s.v[base].w, e12) ? leftPerp(e12) : rightPerp(e12);
 }
 
@@ -707,7 +746,7 @@ template <class T> T simplexDistance(const Simplex<T>& s)
     case 1: return length(s.v[0].w);
     case 2:
     {
-        const Vec2<T> e12 = s.v[1].w - s.v[0].w;
+        const Vec2<T> e12 = edgeOfSafeSize(s.v[1].w - s.v[0].w);
         return std::abs(cross(s.v[0].w, e12)) / length(e12);
     }
     default: return T(0);
@@ -1048,7 +1087,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         // opposite directions, so the order stays (the fuzzer found warm repeats of duality-gap
         // stops searching on). Reversing the edge only negates e, and edgeBase follows the base
         // vertex, so a warm start from the cache reproduces the cold query's bits.
-        const Vec2<T> e = simplex.v[1].w - simplex.v[0].w;
+        const Vec2<T> e = edgeOfSafeSize(simplex.v[1].w - simplex.v[0].w);
         const Vec2<T> base = edgeBase ? simplex.v[1].w : simplex.v[0].w;
         const T side = originSide(base, e);
         flipEdge = side < T(0);
