@@ -123,6 +123,10 @@ TEST_CASE("search: a failing variant is reported as failing, exit code 1", "[sea
     CHECK_THAT(r.failing.front().failure, Catch::Contains("double-closest-point"));
     CHECK(r.variantFailures[0] == r.failures.cases);
     CHECK(r.startBest[0] > 1);
+    // Failing cases are kept apart; the population climbs toward the bound on passing cases.
+    CHECK(r.bestPassing[0] <= 1);
+    for (const auto& m : r.population)
+        CHECK(m.failure.empty());
 }
 
 TEST_CASE("search: it finds failures its start cases do not have", "[search]")

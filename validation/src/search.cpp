@@ -352,6 +352,7 @@ class Search
         res_.threads = resolveThreads(config.threads);
         res_.startBest.assign(nv_, kNaN);
         res_.best.assign(nv_, kNaN);
+        res_.bestPassing.assign(nv_, kNaN);
         res_.bestCase.assign(nv_, {});
         res_.variantFailures.assign(nv_, 0);
     }
@@ -555,6 +556,8 @@ class Search
                 continue;
             }
             sc.ratios[k] = v.boundRatio;
+            if (!v.failed && !(v.boundRatio <= res_.bestPassing[k]))
+                res_.bestPassing[k] = v.boundRatio;
             if (!(v.boundRatio <= res_.best[k])) // NaN (no best yet) too
             {
                 res_.best[k] = v.boundRatio;
@@ -583,9 +586,11 @@ class Search
                 std::fprintf(stderr, "search: FAILURE %s (%s)\n", sc.c.name.c_str(),
                              sc.failure.c_str());
         }
-        // The objective: only a case every variant ran on, judged and finite, has one.
+        // The objective: only a case every variant ran on, judged, finite and passing, has one.
+        // A failing case is recorded (counted, kept in `failing`) but never joins the population:
+        // the search goes on climbing toward the bound instead of settling on one failure.
         sc.score = kNaN;
-        if (counted && !skipped && !outOfRange)
+        if (counted && !skipped && !outOfRange && !failed)
             for (std::size_t k = 0; k < nv_; ++k)
                 if (!(sc.ratios[k] <= sc.score))
                     sc.score = sc.ratios[k], sc.bestVariant = k;
@@ -678,6 +683,7 @@ Json searchJson(const SearchConfig& cfg, const SearchResult& r,
     Json vars = Json::object();
     for (std::size_t k = 0; k < cfg.variants.size(); ++k)
         vars[cfg.variants[k]->name] = {{"start_best_ratio", optNum(r.startBest[k])},
+                                       {"best_passing_ratio", optNum(r.bestPassing[k])},
                                        {"best_ratio", optNum(r.best[k])},
                                        {"best_case", r.bestCase[k]},
                                        {"failures", r.variantFailures[k]}};
@@ -722,11 +728,12 @@ std::string searchSummary(const SearchConfig& config, const SearchResult& r)
         "thread(s), seed {}, stopped by {}\n",
         r.evaluations, r.startCases, r.mutated, r.generations, r.seconds, r.threads, config.seed,
         r.stoppedBy.empty() ? "the end of the start cases" : r.stoppedBy);
-    s += fmt::format("{:<22} {:>12} {:>12} {:>9}  {}\n", "variant", "start best", "best",
-                     "failures", "best case");
+    s += fmt::format("{:<22} {:>11} {:>12} {:>11} {:>9}  {}\n", "variant", "start best",
+                     "best passing", "best", "failures", "best case");
     for (std::size_t k = 0; k < config.variants.size(); ++k)
-        s += fmt::format("{:<22} {:>12} {:>12} {:>9}  {}\n", config.variants[k]->name,
-                         ratioText(r.startBest[k]), ratioText(r.best[k]), r.variantFailures[k],
+        s += fmt::format("{:<22} {:>11} {:>12} {:>11} {:>9}  {}\n", config.variants[k]->name,
+                         ratioText(r.startBest[k]), ratioText(r.bestPassing[k]),
+                         ratioText(r.best[k]), r.variantFailures[k],
                          r.bestCase[k].empty() ? "-" : r.bestCase[k]);
     s += fmt::format("not counted: {} invalid mutations, {} with a skipped variant, {} out of "
                      "range, {} duplicates\n",
@@ -753,9 +760,10 @@ std::string searchCaseFileText(const SearchConfig& config, const SearchResult& r
                     "mutated) in {:.1f} s on {} thread(s), stopped by {}",
                     r.evaluations, r.startCases, r.mutated, r.seconds, r.threads,
                     r.stoppedBy.empty() ? "the end of the start cases" : r.stoppedBy)};
-    std::string best = "best bound_ratio per variant:";
+    std::string best = "bound_ratio per variant, largest of a passing case / of any case:";
     for (std::size_t k = 0; k < config.variants.size(); ++k)
-        best += fmt::format(" {} {} ({});", config.variants[k]->name, ratioText(r.best[k]),
+        best += fmt::format(" {} {} / {} ({});", config.variants[k]->name,
+                            ratioText(r.bestPassing[k]), ratioText(r.best[k]),
                             r.bestCase[k].empty() ? "-" : r.bestCase[k]);
     comments.push_back(best);
     comments.push_back(fmt::format("{} failure(s) found; the cases: the final population ({}, "

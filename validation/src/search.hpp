@@ -67,12 +67,14 @@ struct SearchResult
     std::uint64_t outOfRange = 0;       // some variant's GJK set outOfRange
     std::uint64_t duplicates = 0;       // identical to a member of the population
     std::uint64_t inputRejected = 0;    // start cases rejected by the reader
-    // Per variant: the best ratio over the start cases and over the whole search, and its case.
-    std::vector<double> startBest, best;
+    // Per variant: the best ratio over the start cases and over the whole search (failing cases
+    // included), and its case; bestPassing: the best of a case on which the variant passes (the
+    // bound's measured margin, whatever failures were found).
+    std::vector<double> startBest, best, bestPassing;
     std::vector<std::string> bestCase;
     std::vector<std::uint64_t> variantFailures;
     SearchFailures failures;
-    std::vector<SearchCase> population; // best first
+    std::vector<SearchCase> population; // best first; passing cases only
     std::vector<SearchCase> failing;    // the first kMaxFailingKept failing cases, in order found
     Json json;                          // the --json summary (docs/validation.md)
     int exitCode = kExitPass;
