@@ -1103,6 +1103,34 @@ TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-f
     }
 }
 
+TEMPLATE_TEST_CASE("range: support points that underflow to exactly 0 are rescaled", "[gjk][range]",
+                   float, double)
+{
+    using T = TestType;
+    // B = the point (m, m), m = T's smallest subnormal, under qB = (0.45, 0): in world
+    // (0.45 m, 0.45 m), each coordinate rounds to 0 in T, so every support point of the first
+    // pass is exactly 0 (an exact overlap, to the range check). The exact distance to A = the
+    // origin is 0.45 sqrt(2) m = 0.64 m, which rounds to m in T (by hand). Before the fix the
+    // query answered 0, unflagged (found by `gjk-validate search` on float inputs near 1e-45).
+    const T m = std::numeric_limits<T>::denorm_min();
+    Scene<T> s;
+    s.a = {{0, 0}};
+    s.b = {{m, m}};
+    s.xfB.q = {T(0.45), T(0)};
+    const auto out = query(s);
+    CHECK(out.rescaled);
+    CHECK_FALSE(out.outOfRange);
+    CHECK(out.distance == m);
+    // Two shapes that overlap exactly, of normal size: the zero stands, no retry.
+    Scene<T> t;
+    t.a = {{1, 1}};
+    t.b = {{1, 1}};
+    const auto zero = query(t);
+    CHECK(zero.distance == T(0));
+    CHECK_FALSE(zero.rescaled);
+    CHECK_FALSE(zero.outOfRange);
+}
+
 TEMPLATE_TEST_CASE("range: points spanning more than the exponent range stay flagged",
                    "[gjk][range]", float, double)
 {

@@ -555,6 +555,15 @@ class Search
                 counted = false;
                 continue;
             }
+            // A bound within 1024 subnormals of its floor (bounds.cpp: + T's smallest subnormal)
+            // measures the answer's resolution, not the derived bound: such a case is judged (a
+            // failure above counts) but is no ratio to climb; otherwise the search settles on one
+            // rounding of a subnormal distance, ratio 1 (a 300 s run did, in both types).
+            if (v.bound < 1024 * smallestSubnormal(ctx_.variants[k]->scalar))
+            {
+                counted = false;
+                continue;
+            }
             sc.ratios[k] = v.boundRatio;
             if (!v.failed && !(v.boundRatio <= res_.bestPassing[k]))
                 res_.bestPassing[k] = v.boundRatio;

@@ -97,6 +97,12 @@ double unitRoundoff(Scalar s)
                               : std::numeric_limits<double>::epsilon() / 2;
 }
 
+double smallestSubnormal(Scalar s)
+{
+    return s == Scalar::Float ? double(std::numeric_limits<float>::denorm_min())
+                              : std::numeric_limits<double>::denorm_min();
+}
+
 int scalarDigits(Scalar s)
 {
     return s == Scalar::Float ? std::numeric_limits<float>::digits

@@ -891,7 +891,7 @@ template <class T>
 
 template <class T>
 void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
-                      Trace<T>* trace, DistanceOutput<T>& out);
+                      Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
 // The query. `Scaled`: the rescaled retry (rescaling, above), a second instantiation kept out of
 // line (distanceRescaled), so that the common query carries no test for it.
@@ -1224,18 +1224,29 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     // cache only). One exit: an early return of the retry's output, or a copy of the incoming
     // cache for it, each cost the common query 8-15 % more instructions (callgrind,
     // docs/speed.md).
+    // Every support point exactly 0 is not a range failure by itself (two shapes that overlap
+    // exactly), but it is also what shapes of subnormal size give once their transformed points
+    // underflow (float inputs near 1e-45: exact distance 1.4e-45, answered 0; found by
+    // `gjk-validate search`). distanceRescaled tells the two apart from the shapes' extent.
     if constexpr (!Scaled)
-        if (rangeExceeded) [[unlikely]]
-            distanceRescaled(input, cache, options, trace, out);
+        if (rangeExceeded | (maxAbs == T(0))) [[unlikely]]
+            distanceRescaled(input, cache, options, trace, out, !rangeExceeded);
     return out;
 }
 
 // The rescaled retry, out of line: the common query never runs it.
+// onlyZeroSupports: the first pass was in range, but every support point was exactly 0. That
+// answer stands when the shapes are of normal size (an exact overlap: nothing underflowed) or all
+// zero (k = 0); it is retried when their extent is below minCoordinate, where the transform's
+// products may have underflowed to 0.
 template <class T>
 [[gnu::noinline]] void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache,
-                                        const Options& options, Trace<T>* trace, DistanceOutput<T>& out)
+                                        const Options& options, Trace<T>* trace, DistanceOutput<T>& out,
+                                        bool onlyZeroSupports)
 {
     const int k = rescaleExponent(input.proxyA, input.transformA, input.proxyB, input.transformB, options.frame);
+    if (onlyZeroSupports && !(k > -exponentOf(Tolerances<T>::minCoordinate)))
+        return;
     if (k != 0)
         out = distanceImpl<T, true>(input, cache, options, trace, k);
     else
