@@ -2,7 +2,10 @@
 #pragma once
 
 #include "campaign.hpp"
+#include "families.hpp"
 #include "variants.hpp"
+
+#include <exact/exact.hpp>
 
 #include <string>
 #include <vector>
@@ -19,5 +22,21 @@ inline CampaignConfig untimedConfig(std::vector<std::string> families, const std
     c.timing = false;
     c.command = "test";
     return c;
+}
+
+// The make-up checks `specs` evaluated on `cases`, with their exact truths.
+inline std::vector<MakeupResult> makeupOn(const std::vector<MakeupSpec>& specs, const std::vector<Case>& cases)
+{
+    std::vector<exact::Result> truths;
+    for (const auto& c : cases)
+        truths.push_back(exact::distance(toExact(c.a), toExact(c.b)));
+    std::vector<const Case*> cs;
+    std::vector<const exact::Result*> ts;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+    {
+        cs.push_back(&cases[i]);
+        ts.push_back(&truths[i]);
+    }
+    return evaluateMakeup(specs, cs, ts);
 }
 } // namespace gjkval

@@ -184,18 +184,8 @@ TEST_CASE("engine families: make-up checks hold on a few hundred cases, and fail
         {
             INFO(fam << " seed " << seed);
             GeneratedFamily f = engineFamily(fam, seed, 300);
-            std::vector<exact::Result> truths;
-            for (const auto& c : f.cases)
-                truths.push_back(exact::distance(toExact(c.a), toExact(c.b)));
-            std::vector<const Case*> cs;
-            std::vector<const exact::Result*> ts;
-            for (std::size_t i = 0; i < f.cases.size(); ++i)
-            {
-                cs.push_back(&f.cases[i]);
-                ts.push_back(&truths[i]);
-            }
             CHECK(f.makeup.size() >= 5);
-            for (const auto& m : evaluateMakeup(f.makeup, cs, ts))
+            for (const auto& m : makeupOn(f.makeup, f.cases))
             {
                 INFO(m.check << " = " << m.value << " in [" << m.min << ", " << m.max << "]");
                 CHECK(m.ok);
@@ -204,18 +194,8 @@ TEST_CASE("engine families: make-up checks hold on a few hundred cases, and fail
             if (seed != 1)
                 continue;
             // The random family (double rotations, no radii) fails each engine family's checks.
-            truths.clear();
-            for (const auto& c : random)
-                truths.push_back(exact::distance(toExact(c.a), toExact(c.b)));
-            cs.clear();
-            ts.clear();
-            for (std::size_t i = 0; i < random.size(); ++i)
-            {
-                cs.push_back(&random[i]);
-                ts.push_back(&truths[i]);
-            }
             int failed = 0;
-            for (const auto& m : evaluateMakeup(f.makeup, cs, ts))
+            for (const auto& m : makeupOn(f.makeup, random))
                 failed += m.ok ? 0 : 1;
             CHECK(failed >= 2);
         }

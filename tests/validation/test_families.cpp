@@ -27,17 +27,7 @@ std::string textOf(const std::vector<GeneratedFamily>& fs)
 
 std::vector<MakeupResult> makeupOf(const GeneratedFamily& f)
 {
-    std::vector<exact::Result> truths;
-    for (const auto& c : f.cases)
-        truths.push_back(exact::distance(toExact(c.a), toExact(c.b)));
-    std::vector<const Case*> cs;
-    std::vector<const exact::Result*> ts;
-    for (std::size_t i = 0; i < f.cases.size(); ++i)
-    {
-        cs.push_back(&f.cases[i]);
-        ts.push_back(&truths[i]);
-    }
-    return evaluateMakeup(f.makeup, cs, ts);
+    return makeupOn(f.makeup, f.cases);
 }
 } // namespace
 
