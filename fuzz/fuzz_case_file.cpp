@@ -1,4 +1,4 @@
-// libFuzzer target: the case-file parser, gjkval::parseCaseFile (validation/src/cases.hpp).
+// libFuzzer target: the case-file parser, gjkval::parseCaseFile (validation/src/inputs/cases.hpp).
 //
 // Invariants (docs/fuzzing.md):
 //  - no sanitizer report, no crash, no stack overflow (deep nesting), no hang;
@@ -7,7 +7,7 @@
 //  - every accepted case is valid (at least one point per shape, finite numbers, radius >= 0);
 //  - writing the accepted cases back (caseFileText) and reading that text again gives the same
 //    comments and cases, bit for bit (the format's numbers round-trip exactly).
-#include "cases.hpp"
+#include "inputs/cases.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -1,9 +1,9 @@
 // Shared by the validation tests: the configuration of a campaign run inside a test.
 #pragma once
 
-#include "campaign.hpp"
-#include "families.hpp"
-#include "variants.hpp"
+#include "campaign/campaign.hpp"
+#include "inputs/families.hpp"
+#include "evaluate/variants.hpp"
 
 #include <exact/exact.hpp>
 

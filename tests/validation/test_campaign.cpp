@@ -1,8 +1,8 @@
 // Campaigns end to end (in process): the report follows docs/report-schema.md, rejected cases do
 // not stop the others, failures are detected, and nothing depends on the number of threads.
-#include "campaign.hpp"
-#include "geometry.hpp"
-#include "report.hpp"
+#include "campaign/campaign.hpp"
+#include "inputs/geometry.hpp"
+#include "report/report.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 // The gjk-cases/1 format: bit-exact round trip, refused files, rejected cases.
-#include "cases.hpp"
+#include "inputs/cases.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // The gjk-validate program on hostile command lines and failing writes (issue 12, defects 4-6):
 // what CMake's expect_exit.cmake cannot express (raw non-UTF-8 bytes, a file size limit, file
 // contents before and after). Each test runs the program in a child process.
-#include "common.hpp"
-#include "report.hpp"
+#include "common/common.hpp"
+#include "report/report.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,10 +1,10 @@
 // The case families: deterministic from the seed, the hard sub-families all present with their
 // reasons, and every family's make-up checks hold on its own cases (measured with the exact side).
-#include "families.hpp"
+#include "inputs/families.hpp"
 
-#include "campaign.hpp"
+#include "campaign/campaign.hpp"
 #include "campaign_support.hpp"
-#include "geometry.hpp"
+#include "inputs/geometry.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // `gjk-validate search` in process (docs/validation.md, "Adversarial search"): the same seed and
 // budget give the same search whatever the thread count, the search raises the ratio above its
 // start cases', what it writes is valid input, and a variant known to fail is reported as failing.
-#include "search.hpp"
+#include "campaign/search.hpp"
 
 #include <catch2/catch.hpp>
 

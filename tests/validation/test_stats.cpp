@@ -1,6 +1,6 @@
 // Statistics on hand-made data: histogram bins and percentiles, means, and that merging two shards
 // gives exactly the statistics of the whole.
-#include "stats.hpp"
+#include "statistics/stats.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // The variant table (judged and comparison variants, binary-search support, warm start), the
 // convex-order precondition, a reduced campaign over every variant, and `bench`.
-#include "bench.hpp"
-#include "campaign.hpp"
-#include "geometry.hpp"
+#include "timing/bench.hpp"
+#include "campaign/campaign.hpp"
+#include "inputs/geometry.hpp"
 
 #include <catch2/catch.hpp>
 

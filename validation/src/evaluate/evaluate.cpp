@@ -1,0 +1,660 @@
+#include "evaluate/evaluate.hpp"
+
+#include "inputs/families.hpp"
+#include "inputs/geometry.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace gjkval
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+
+template <class T> std::array<double, 2> d2(gjk::Vec2<T> v)
+{
+    return {double(v.x), double(v.y)};
+}
+
+template <class T> void fillOutput(const gjk::DistanceOutput<T>& o, VariantOutcome& v)
+{
+    v.distance = double(o.distance);
+    v.pointA = d2(o.pointA);
+    v.pointB = d2(o.pointB);
+    v.normal = d2(o.normal);
+    v.iterations = o.iterations;
+    v.stop = o.stop;
+    v.outOfRange = o.outOfRange;
+    v.certified = o.certified;
+    v.lower = o.lower;
+    v.upper = o.upper;
+}
+
+Json exactJson(const exact::Result& r)
+{
+    Json j;
+    j["distance"] = num(r.distance);
+    j["squared"] = r.squaredNum + "/" + r.squaredDen;
+    j["overlap"] = r.overlap;
+    return j;
+}
+
+Json shapeDetail(const ShapeIn& s)
+{
+    Json j;
+    Json pts = Json::array();
+    for (const auto& p : s.points)
+        pts.push_back(pt(p[0], p[1]));
+    j["points"] = std::move(pts);
+    j["radius"] = num(s.radius);
+    j["transform"] = {{"p", pt(s.px, s.py)}, {"q", pt(s.c, s.s)}};
+    Json w = Json::array();
+    for (const auto& p : worldPoints(s))
+        w.push_back(pt(p[0], p[1]));
+    j["world"] = std::move(w);
+    return j;
+}
+
+template <class T> Json traceJson(const gjk::Trace<T>& tr)
+{
+    const gjk::Transform<double> f{{double(tr.frame.p.x), double(tr.frame.p.y)},
+                                   {double(tr.frame.q.c), double(tr.frame.q.s)}};
+    // A rescaled query's trace is in the scaled compute frame (Trace::scaleExponent).
+    const int e = -tr.scaleExponent;
+    auto point = [&f, e](gjk::Vec2<T> v)
+    {
+        const auto w = gjk::transformPoint(
+            f, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
+        return pt(w.x, w.y);
+    };
+    auto vec = [&f, e](gjk::Vec2<T> v)
+    {
+        const auto w = gjk::rotate(
+            f.q, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
+        return pt(w.x, w.y);
+    };
+    auto vertex = [&](const gjk::SimplexVertex<T>& sv, bool withWeight)
+    {
+        Json j;
+        j["w"] = vec(sv.w);
+        j["wA"] = point(sv.wA);
+        j["wB"] = point(sv.wB);
+        if (withWeight)
+            j["a"] = num(double(sv.a));
+        j["iA"] = sv.indexA;
+        j["iB"] = sv.indexB;
+        return j;
+    };
+    Json steps = Json::array();
+    for (const auto& s : tr.steps)
+    {
+        Json j;
+        Json simplex = Json::array();
+        for (int i = 0; i < s.simplex.count; ++i)
+            simplex.push_back(vertex(s.simplex.v[i], true));
+        j["simplex"] = std::move(simplex);
+        j["closest"] = vec(s.closest);
+        j["direction"] = vec(s.direction);
+        j["support"] = s.hasSupport ? vertex(s.support, false) : Json(nullptr);
+        steps.push_back(std::move(j));
+    }
+    return steps;
+}
+
+template <class T> Json tracedRun(const Case& c, const VariantInfo& v, gjk::DistanceOutput<T>& out)
+{
+    const PreparedCase p = prepare(c);
+    gjk::Trace<T> tr;
+    out = query<T>(p, v, &tr);
+    return traceJson(tr);
+}
+
+std::string fmtPt(const Json& p)
+{
+    auto f = [](const Json& v)
+    { return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump(); };
+    return p.is_array() && p.size() == 2 ? fmt::format("({}, {})", f(p[0]), f(p[1])) : p.dump();
+}
+
+std::string fmtFull(const Json& v)
+{
+    return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump();
+}
+
+std::string fmtNum(const Json& v)
+{
+    if (v.is_number())
+        return fmt::format("{:.6g}", v.get<double>());
+    return v.is_null() ? "n/a" : v.dump();
+}
+
+} // namespace
+
+const char* misclassName(Misclass m)
+{
+    switch (m)
+    {
+    case Misclass::FalseOverlap:
+        return "false-overlap";
+    case Misclass::FalseSeparation:
+        return "false-separation";
+    case Misclass::Undecidable:
+        return "undecidable";
+    default:
+        return nullptr;
+    }
+}
+
+PreparedCase prepare(const Case& c)
+{
+    PreparedCase p;
+    for (const auto& q : c.a.points)
+    {
+        p.ad.push_back({q[0], q[1]});
+        p.af.push_back({float(q[0]), float(q[1])});
+    }
+    for (const auto& q : c.b.points)
+    {
+        p.bd.push_back({q[0], q[1]});
+        p.bf.push_back({float(q[0]), float(q[1])});
+    }
+    p.xad = {{c.a.px, c.a.py}, {c.a.c, c.a.s}};
+    p.xbd = {{c.b.px, c.b.py}, {c.b.c, c.b.s}};
+    p.xaf = {{float(c.a.px), float(c.a.py)}, {float(c.a.c), float(c.a.s)}};
+    p.xbf = {{float(c.b.px), float(c.b.py)}, {float(c.b.c), float(c.b.s)}};
+    p.rad = c.a.radius;
+    p.rbd = c.b.radius;
+    p.raf = float(c.a.radius);
+    p.rbf = float(c.b.radius);
+    p.floatOk = representableInFloat(c);
+    auto convex = [](const auto& pts)
+    {
+        if (int(pts.size()) <= kLinearSupportMaxPoints)
+            return true;
+        std::vector<P2> q;
+        q.reserve(pts.size());
+        for (const auto& v : pts)
+            q.push_back({double(v.x), double(v.y)});
+        return inConvexOrder(q);
+    };
+    p.binaryOk[0] = convex(p.ad) && convex(p.bd);
+    p.binaryOk[1] = p.floatOk && convex(p.af) && convex(p.bf);
+    return p;
+}
+
+const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput)
+{
+    const bool isFloat = v.scalar == Scalar::Float;
+    if (isFloat && !floatInput)
+        return kSkipNotRepresentable;
+    if (needsConvexOrder(v) && !p.binaryOk[isFloat ? 1 : 0])
+        return kSkipNotConvexOrder;
+    return nullptr;
+}
+
+double ulpOf(Scalar s, double x)
+{
+    int e = 0;
+    std::frexp(x, &e);
+    return std::ldexp(1.0, std::max(e, scalarMinExponent(s)) - scalarDigits(s));
+}
+
+double CaseOutcome::worstKey() const
+{
+    double k = -1;
+    for (const auto& v : variants)
+    {
+        if (v.skipped)
+            continue;
+        if (v.outOfRange && !v.failed)
+            continue; // not judged
+        const double key = (v.nonfinite || v.iterationLimit || (v.certified && !v.intervalContains))
+                               ? kInf
+                               : v.normalized;
+        k = std::max(k, key);
+    }
+    return k;
+}
+
+bool EvalContext::needFloatTruth() const
+{
+    for (auto* v : variants)
+        if (v->scalar == Scalar::Float)
+            return true;
+    return false;
+}
+
+// Two kinds of failure, never mixed (issue 12, defect 8). The exact side throws
+// std::invalid_argument for an input it cannot take (no points, a non-finite number, a negative
+// radius): that case is rejected, as bad input. Anything else it throws (std::logic_error: a
+// broken invariant of the truth, CGAL's own failed assertions) is a bug of ours and propagates,
+// failing the whole run loudly (gjk-validate: internal error, exit code 4), never a "rejected" case.
+void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
+{
+    try
+    {
+        out.exact = ctx.truth(toExact(c.a), toExact(c.b), ctx.exactOptions);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        out.rejected = fmt::format("exact: {}", e.what());
+        return;
+    }
+    // The float variants' truth: the same case with every number rounded to float. Cases whose
+    // numbers do not fit in float skip the float variants, with their reason (kSkipNotRepresentable);
+    // once they fit, the exact side has no reason to refuse them, so nothing is caught here.
+    if (ctx.needFloatTruth() && representableInFloat(c))
+    {
+        out.exactFloat = ctx.truth(toExact(c.a, true), toExact(c.b, true), ctx.exactOptions);
+        out.hasFloatTruth = true;
+        out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
+    }
+}
+
+void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
+{
+    out.variants.assign(ctx.variants.size(), {});
+    if (!out.rejected.empty())
+        return;
+    // Scales per (frame, float-rounded input), computed when first needed.
+    FrameScales scales[2][2];
+    bool have[2][2] = {{false, false}, {false, false}};
+    ShapeIn fa, fb;
+    bool haveFloatShapes = false;
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+    {
+        const VariantInfo& vi = *ctx.variants[k];
+        VariantOutcome& v = out.variants[k];
+        const bool isFloat = vi.scalar == Scalar::Float;
+        if (const char* why = skipReason(vi, p, out.hasFloatTruth))
+        {
+            v.skipped = true;
+            v.notApplicable = why == kSkipNotConvexOrder;
+            continue;
+        }
+        const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
+        if (vi.everyStart)
+        {
+            if (isFloat)
+                fillOutput(worstStart<float>(p, vi, truth.distance), v);
+            else
+                fillOutput(worstStart<double>(p, vi, truth.distance), v);
+        }
+        else if (isFloat)
+            fillOutput(query<float>(p, vi), v);
+        else
+            fillOutput(query<double>(p, vi), v);
+
+        const bool truthZero = exactIsZero(truth);
+        v.truth = truth.distance;
+
+        // The normalised error uses the scale of the variant's own compute frame; the bound is the
+        // reference variant's (A's local frame): what the library promises for this input, so a
+        // variant that computes differently (world frame) fails where it breaks that promise.
+        const int fi = vi.options.frame == gjk::Frame::World ? 1 : 0, ti = isFloat ? 1 : 0;
+        for (int f : {0, fi})
+            if (!have[f][ti])
+            {
+                if (isFloat && !haveFloatShapes)
+                {
+                    fa = roundedToFloat(c.a);
+                    fb = roundedToFloat(c.b);
+                    haveFloatShapes = true;
+                }
+                scales[f][ti] = frameScales(isFloat ? fa : c.a, isFloat ? fb : c.b, f == 1);
+                have[f][ti] = true;
+            }
+        v.R = scales[fi][ti].R;
+        const FrameScales& sc = scales[0][ti];
+        const double u = unitRoundoff(vi.scalar);
+        CaseMetrics m;
+        m.R = sc.R;
+        m.unitRoundoff = u;
+        m.radiusA = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
+        m.radiusB = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
+        m.countA = int(c.a.points.size());
+        m.countB = int(c.b.points.size());
+        m.exactDistance = truth.distance;
+        m.maxA = sc.A;
+        m.maxB = sc.B;
+        m.maxBMapped = sc.Bmapped;
+        m.translation = sc.D;
+        m.maxW = sc.W;
+        v.bound = errorBound(vi, m);
+
+        v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
+                      !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
+                      !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
+                      !std::isfinite(v.normal[1]);
+        v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
+        const double td = truth.distance;
+        if (v.nonfinite)
+        {
+            v.abs = v.normalized = v.boundRatio = kInf;
+            v.rel = td > 0 ? kInf : kNaN;
+            v.ulps = td > 0 ? kInf : kNaN;
+            v.witnessGap = kInf;
+            v.beyondBound = true;
+        }
+        else
+        {
+            v.abs = std::abs(v.distance - td);
+            v.rel = td > 0 ? v.abs / td : kNaN;
+            v.ulps = td > 0 ? v.abs / ulpOf(vi.scalar, td) : kNaN;
+            v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
+            v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
+            v.witnessGap = std::abs(
+                std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+            v.beyondBound = !(v.abs <= v.bound);
+            if (!v.outOfRange)
+            {
+                if (truthZero && v.distance > 0)
+                    v.mis = Misclass::FalseSeparation;
+                else if (!truthZero && v.distance == 0)
+                    v.mis = Misclass::FalseOverlap;
+                if (v.mis != Misclass::None && !v.beyondBound)
+                    v.mis = Misclass::Undecidable;
+            }
+        }
+        // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
+        // value strictly between): the double interval [lower, upper] contains it iff it contains
+        // that enclosure.
+        v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
+        v.witness = kNaN;
+        // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
+        // certified interval that misses the truth always fails.
+        v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
+                   (v.certified && !v.intervalContains);
+    }
+}
+
+void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
+{
+    if (!out.rejected.empty())
+        return;
+    exact::Shape ea, eb, fa, fb;
+    bool haveD = false, haveF = false;
+    const std::size_t nv = ctx.variants.size();
+    std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
+    std::vector<char> done(nv, 0);
+    for (std::size_t k = 0; k < nv; ++k)
+    {
+        VariantOutcome& v = out.variants[k];
+        if (v.skipped || v.nonfinite)
+            continue;
+        const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
+        if (isFloat && !haveF)
+        {
+            fa = toExact(c.a, true);
+            fb = toExact(c.b, true);
+            haveF = true;
+        }
+        if (!isFloat && !haveD)
+        {
+            ea = toExact(c.a);
+            eb = toExact(c.b);
+            haveD = true;
+        }
+        const exact::Shape& sa = isFloat ? fa : ea;
+        const exact::Shape& sb = isFloat ? fb : eb;
+        // Variants often return the very same witness points (same scalar type): each distinct
+        // point is measured once per case (the exact query dominates the campaign's time).
+        double wa = -1, wb = -1;
+        for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
+        {
+            if (done[j] == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
+                continue;
+            const VariantOutcome& u = out.variants[j];
+            if (wa < 0 && u.pointA == v.pointA)
+                wa = witnessA[j];
+            if (wb < 0 && u.pointB == v.pointB)
+                wb = witnessB[j];
+        }
+        if (wa < 0)
+            wa = exact::pointToShapeDistance(sa, {v.pointA[0], v.pointA[1]});
+        if (wb < 0)
+            wb = exact::pointToShapeDistance(sb, {v.pointB[0], v.pointB[1]});
+        witnessA[k] = wa;
+        witnessB[k] = wb;
+        done[k] = 1;
+        v.witness = std::max(wa, wb);
+    }
+}
+
+CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx)
+{
+    CaseOutcome o;
+    computeTruth(c, ctx, o);
+    runVariants(c, prepare(c), ctx, o);
+    checkWitnesses(c, ctx, o);
+    return o;
+}
+
+Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
+                const CaseOutcome& o, const std::string& worstBy)
+{
+    Json j;
+    j["name"] = c.name;
+    j["family"] = family;
+    j["worst_by"] = worstBy;
+    j["a"] = shapeDetail(c.a);
+    j["b"] = shapeDetail(c.b);
+    Json mk = Json::array();
+    for (const auto& p : minkowskiDifference(worldPoints(c.a), worldPoints(c.b)))
+        mk.push_back(pt(p[0], p[1]));
+    j["minkowski"] = std::move(mk);
+    if (!o.rejected.empty())
+    {
+        j["rejected"] = o.rejected;
+        return j;
+    }
+    auto exactDetail = [](const exact::Result& r)
+    {
+        Json e = exactJson(r);
+        e["witnessA"] = pt(r.witnessA.x, r.witnessA.y);
+        e["witnessB"] = pt(r.witnessB.x, r.witnessB.y);
+        e["lower"] = num(r.lower);
+        e["upper"] = num(r.upper);
+        return e;
+    };
+    j["exact"] = exactDetail(o.exact);
+    if (o.hasFloatTruth)
+    {
+        j["exact_float_input"] = exactDetail(o.exactFloat);
+        j["input_rounding"] = num(o.inputRounding);
+    }
+    Json vs = Json::object();
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+    {
+        const VariantInfo& vi = *ctx.variants[k];
+        const VariantOutcome& v = o.variants[k];
+        Json vj;
+        vj["type"] = scalarName(vi.scalar);
+        if (v.skipped)
+        {
+            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
+            vs[vi.name] = std::move(vj);
+            continue;
+        }
+        Json trace;
+        if (vi.scalar == Scalar::Float)
+        {
+            gjk::DistanceOutput<float> out;
+            trace = tracedRun<float>(c, vi, out);
+        }
+        else
+        {
+            gjk::DistanceOutput<double> out;
+            trace = tracedRun<double>(c, vi, out);
+        }
+        vj["distance"] = num(v.distance);
+        vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
+        vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
+        vj["normal"] = pt(v.normal[0], v.normal[1]);
+        vj["iterations"] = v.iterations;
+        vj["stop"] = gjk::stopReasonName(v.stop);
+        vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
+        vj["R"] = num(v.R);
+        vj["bound"] = num(v.bound);
+        vj["errors"] = {{"abs", num(v.abs)},
+                        {"rel", optNum(v.rel)},
+                        {"ulps", optNum(v.ulps)},
+                        {"normalized", num(v.normalized)},
+                        {"bound_ratio", num(v.boundRatio)},
+                        {"witness", optNum(v.witness)},
+                        {"witness_gap", num(v.witnessGap)}};
+        const char* mis = misclassName(v.mis);
+        vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
+        vj["out_of_range"] = v.outOfRange;
+        if (vi.options.certify)
+        {
+            vj["certified"] = v.certified;
+            vj["lower"] = num(v.lower);
+            vj["upper"] = num(v.upper);
+            vj["interval_contains"] = v.intervalContains;
+        }
+        vj["failed"] = v.failed;
+        vj["trace"] = std::move(trace);
+        vs[vi.name] = std::move(vj);
+    }
+    j["variants"] = std::move(vs);
+    return j;
+}
+
+Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
+                 const CaseOutcome& o)
+{
+    Json j;
+    j["name"] = c.name;
+    j["family"] = family;
+    if (!o.rejected.empty())
+    {
+        j["rejected"] = o.rejected;
+        return j;
+    }
+    j["exact"] = exactJson(o.exact);
+    if (o.hasFloatTruth)
+        j["exact_float_input"] = exactJson(o.exactFloat);
+    Json vs = Json::object();
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+    {
+        const VariantOutcome& v = o.variants[k];
+        Json vj;
+        if (v.skipped)
+        {
+            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
+            vs[ctx.variants[k]->name] = std::move(vj);
+            continue;
+        }
+        vj["distance"] = num(v.distance);
+        vj["iterations"] = v.iterations;
+        vj["stop"] = gjk::stopReasonName(v.stop);
+        vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
+        vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
+        vj["abs"] = num(v.abs);
+        vj["rel"] = optNum(v.rel);
+        vj["ulps"] = optNum(v.ulps);
+        vj["normalized"] = num(v.normalized);
+        vj["bound"] = num(v.bound);
+        vj["bound_ratio"] = num(v.boundRatio);
+        vj["witness"] = optNum(v.witness);
+        vj["witness_gap"] = num(v.witnessGap);
+        const char* mis = misclassName(v.mis);
+        vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
+        vj["out_of_range"] = v.outOfRange;
+        if (ctx.variants[k]->options.certify)
+        {
+            vj["certified"] = v.certified;
+            vj["lower"] = num(v.lower);
+            vj["upper"] = num(v.upper);
+            vj["interval_contains"] = v.intervalContains;
+        }
+        vj["failed"] = v.failed;
+        vs[ctx.variants[k]->name] = std::move(vj);
+    }
+    j["variants"] = std::move(vs);
+    return j;
+}
+
+std::string explainText(const Json& d)
+{
+    std::string s;
+    s += fmt::format("case {}  (family {})\n", d["name"].get<std::string>(),
+                     d["family"].get<std::string>());
+    for (const char* k : {"a", "b"})
+    {
+        const Json& sh = d[k];
+        s += fmt::format("  {}: {} points, radius {}, transform p = {}, q = {}\n", k,
+                         sh["points"].size(), fmtNum(sh["radius"]), fmtPt(sh["transform"]["p"]),
+                         fmtPt(sh["transform"]["q"]));
+        const std::size_t shown = std::min<std::size_t>(sh["points"].size(), 12);
+        for (std::size_t i = 0; i < shown; ++i)
+            s += fmt::format("     [{}] local {}  world {}\n", i, fmtPt(sh["points"][i]),
+                             fmtPt(sh["world"][i]));
+        if (shown < sh["points"].size())
+            s += fmt::format("     ... {} more\n", sh["points"].size() - shown);
+    }
+    if (d.contains("rejected"))
+        return s + fmt::format("  REJECTED: {}\n", d["rejected"].get<std::string>());
+    auto exactLine = [&](const char* label, const Json& e)
+    {
+        s += fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label,
+                         fmtFull(e["distance"]), fmtFull(e["lower"]), fmtFull(e["upper"]),
+                         e["overlap"].get<bool>());
+        s += fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
+                         e["squared"].get<std::string>(), fmtPt(e["witnessA"]),
+                         fmtPt(e["witnessB"]));
+    };
+    exactLine("exact", d["exact"]);
+    if (d.contains("exact_float_input"))
+    {
+        exactLine("exact (float-rounded input)", d["exact_float_input"]);
+        s += fmt::format("     input rounding error {}\n", fmtNum(d["input_rounding"]));
+    }
+    for (const auto& [name, v] : d["variants"].items())
+    {
+        if (v.contains("skipped"))
+        {
+            s += fmt::format("  variant {}: skipped ({})\n", name, v["skipped"].get<std::string>());
+            continue;
+        }
+        s += fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
+                         v["type"].get<std::string>(), fmtFull(v["distance"]),
+                         v["iterations"].get<int>(), v["stop"].get<std::string>(),
+                         v["failed"].get<bool>() ? "  ** FAILED **" : "");
+        s += fmt::format("     pointA {}  pointB {}  normal {}\n", fmtPt(v["pointA"]),
+                         fmtPt(v["pointB"]), fmtPt(v["normal"]));
+        const Json& e = v["errors"];
+        s += fmt::format(
+            "     errors: abs {}  rel {}  ulps {}  normalized {}  bound {} (ratio {})  "
+            "witness {}  witness gap {}  misclassified {}\n",
+            fmtNum(e["abs"]), fmtNum(e["rel"]), fmtNum(e["ulps"]), fmtNum(e["normalized"]),
+            fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
+            fmtNum(e["witness_gap"]),
+            v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
+        int k = 0;
+        for (const auto& step : v["trace"])
+        {
+            s += fmt::format("     step {}: simplex", k++);
+            for (const auto& sv : step["simplex"])
+                s += fmt::format(" [w {} a {} iA {} iB {}]", fmtPt(sv["w"]), fmtNum(sv["a"]),
+                                 sv["iA"].get<int>(), sv["iB"].get<int>());
+            s += fmt::format("\n            closest {}  direction {}", fmtPt(step["closest"]),
+                             fmtPt(step["direction"]));
+            if (!step["support"].is_null())
+                s +=
+                    fmt::format("  support w {} (iA {}, iB {})", fmtPt(step["support"]["w"]),
+                                step["support"]["iA"].get<int>(), step["support"]["iB"].get<int>());
+            s += "\n";
+        }
+    }
+    return s;
+}
+
+} // namespace gjkval

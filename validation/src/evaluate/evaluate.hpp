@@ -1,0 +1,180 @@
+// One case: the exact truth, every variant's GJK result, its errors against the truth, its
+// witness-point errors; and the case-detail JSON (docs/report-schema.md, "CaseDetail").
+#pragma once
+
+#include "evaluate/bounds.hpp"
+#include "inputs/cases.hpp"
+#include "evaluate/variants.hpp"
+
+#include "gjk/distance.hpp"
+
+#include <exact/exact.hpp>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// A case's inputs converted once to both scalar types (the timing loop reuses them).
+struct PreparedCase
+{
+    std::vector<gjk::Vec2<double>> ad, bd;
+    std::vector<gjk::Vec2<float>> af, bf;
+    gjk::Transform<double> xad, xbd;
+    gjk::Transform<float> xaf, xbf;
+    double rad = 0, rbd = 0;
+    float raf = 0, rbf = 0;
+    bool floatOk = true; // every input finite after rounding to float
+    // Both shapes' points in convex order (or at most kLinearSupportMaxPoints of them), as double
+    // [0] and as float-rounded [1]: the precondition of SupportStrategy::BinarySearch.
+    bool binaryOk[2] = {true, true};
+
+    template <class T> gjk::DistanceInput<T> input() const
+    {
+        if constexpr (std::is_same_v<T, float>)
+            return {{af.data(), int(af.size()), raf}, {bf.data(), int(bf.size()), rbf}, xaf, xbf};
+        else
+            return {{ad.data(), int(ad.size()), rad}, {bd.data(), int(bd.size()), rbd}, xad, xbd};
+    }
+};
+PreparedCase prepare(const Case& c);
+
+// Why a variant does not run on a case (skipped, not a failure), or null. floatInput: the case's
+// float-rounded input is usable (finite, with an exact truth when one is needed).
+const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput);
+inline constexpr const char* kSkipNotRepresentable = "input not representable in float";
+inline constexpr const char* kSkipNotConvexOrder =
+    "not applicable: binary-search support needs each shape's points in convex order";
+
+// The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
+// cache), or for warm variants (VariantInfo::warm) a cold query whose cache starts the one
+// returned (and traced).
+template <class T>
+gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
+                             gjk::Trace<T>* trace = nullptr)
+{
+    gjk::SimplexCache cache;
+    const gjk::DistanceInput<T> in = p.input<T>();
+    if (v.warm)
+        gjk::distance(in, cache, v.options);
+    return gjk::distance(in, cache, v.options, trace);
+}
+
+// VariantInfo::everyStart: the query from every start the variant tries, the answer farthest
+// from `truth` (a non-finite answer is the farthest) returned.
+template <class T>
+gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, double truth)
+{
+    const gjk::DistanceInput<T> in = p.input<T>();
+    const int nA = in.proxyA.count, nB = in.proxyB.count;
+    gjk::DistanceOutput<T> worst = query<T>(p, v); // the cold start
+    double worstError = std::abs(double(worst.distance) - truth);
+    auto consider = [&](const gjk::SimplexCache& start)
+    {
+        gjk::SimplexCache cache = start;
+        const gjk::DistanceOutput<T> o = gjk::distance(in, cache, v.options);
+        const double e = std::abs(double(o.distance) - truth);
+        if (!(e <= worstError)) // NaN counts as worst
+        {
+            worst = o;
+            worstError = e;
+        }
+    };
+    const int strideA = (nA + 11) / 12, strideB = (nB + 11) / 12;
+    for (int i = 0; i < nA; i += strideA)
+        for (int j = 0; j < nB; j += strideB)
+            consider({1, {i, 0, 0}, {j, 0, 0}});
+    // Edges and triangles of index pairs that are rarely adjacent on Z: whatever GJK makes of them,
+    // every cached vertex is a point of Z, so the answer must still be right.
+    consider({2, {0, nA / 2, 0}, {0, nB / 2, 0}});
+    consider({2, {0, nA - 1, 0}, {nB - 1, 0, 0}});
+    consider({3, {0, nA / 3, (2 * nA) / 3}, {0, nB / 3, (2 * nB) / 3}});
+    consider({3, {0, 0, nA - 1}, {0, nB - 1, 0}});
+    return worst;
+}
+
+enum class Misclass
+{
+    None,
+    FalseOverlap,    // exact distance > 0, GJK 0, |error| > bound
+    FalseSeparation, // exact distance 0, GJK > 0, |error| > bound
+    Undecidable,     // one of the two, but |error| <= bound: not decidable at this precision
+};
+const char* misclassName(Misclass m); // null for None
+
+struct VariantOutcome
+{
+    bool skipped = false;       // not run: skipReason() (not representable, or not applicable)
+    bool notApplicable = false; // skipped because the variant's precondition fails (convex order)
+    double distance = 0;
+    std::array<double, 2> pointA{}, pointB{}, normal{};
+    int iterations = 0;
+    gjk::StopReason stop = gjk::StopReason::RepeatedSupport;
+    double truth = 0; // the exact distance this variant is judged against
+    double R = 0;     // scale in the compute frame
+    double bound = 0;
+    // Errors; NaN = not applicable (rel and ulps when the truth is 0, witness before checking).
+    double abs = 0, rel = 0, ulps = 0, normalized = 0, boundRatio = 0;
+    double witness = 0, witnessGap = 0;
+    Misclass mis = Misclass::None;
+    bool nonfinite = false, iterationLimit = false;
+    bool outOfRange =
+        false; // GJK's own flag (DistanceOutput::outOfRange): not judged, counted apart
+    bool beyondBound = false; // |error| > bound (or not finite)
+    // Certified variants (Options::certify): the interval and whether it holds the exact distance.
+    bool certified = false, intervalContains = false;
+    double lower = 0, upper = 0;
+    bool failed = false;
+};
+
+struct CaseOutcome
+{
+    std::string rejected; // non-empty: not evaluated
+    exact::Result exact;
+    bool hasFloatTruth = false;
+    exact::Result exactFloat; // exact truth of the float-rounded input
+    double inputRounding = 0; // |exactFloat.distance - exact.distance|
+    std::vector<VariantOutcome> variants;
+
+    // The key the worst cases are ranked by: max over variants of the normalised error, +inf for
+    // non-finite results and iteration limits.
+    double worstKey() const;
+};
+
+struct EvalContext
+{
+    std::vector<const VariantInfo*> variants;
+    exact::Options exactOptions;
+    // The oracle, behind one adapter: exact::distance. Tests put a failing one here to check that a
+    // broken invariant of the truth fails the run instead of rejecting the case.
+    exact::Result (*truth)(const exact::Shape&, const exact::Shape&, const exact::Options&) =
+        &exact::distance;
+    bool needFloatTruth() const;
+};
+
+// Phase 1: the exact truths. The truth's std::invalid_argument rejects the case (bad input);
+// any other exception (a broken invariant of ours) propagates and fails the run.
+void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// Phase 2: GJK for every variant, errors, misclassification, failure.
+void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out);
+// Phase 3: exact distance of each witness point to its shape.
+void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// All three.
+CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
+
+// Unit in the last place of the variant's type at x > 0.
+double ulpOf(Scalar s, double x);
+
+// docs/report-schema.md "CaseDetail", with traces (the query is run again with a trace).
+Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
+                const CaseOutcome& o, const std::string& worstBy);
+// One line of cases.jsonl.
+Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
+                 const CaseOutcome& o);
+// `explain`'s text from a case detail.
+std::string explainText(const Json& detail);
+
+} // namespace gjkval

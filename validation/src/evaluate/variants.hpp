@@ -1,0 +1,70 @@
+// The GJK variants the runner knows: one table (variants.cpp) from a stable name to a scalar type
+// and a gjk::Options. Adding a variant is one line in that table.
+#pragma once
+
+#include "common/common.hpp"
+
+#include "gjk/distance.hpp"
+
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+enum class Scalar
+{
+    Float,
+    Double
+};
+
+struct VariantInfo
+{
+    std::string name; // stable: used on the command line and in every report
+    Scalar scalar;
+    gjk::Options options;
+    std::string description;
+    // Judged variants decide the exit code and "passed": the reference options and the variants
+    // that must match them (certified, binary-search support, warm start). Comparison variants
+    // (judged = false) are the alternatives the talk discusses: their failures are counted and
+    // shown per family, never judged.
+    bool judged = true;
+    // Warm start: the query is run twice, the second time with the SimplexCache the first one
+    // returned; the second is judged and timed (the timing prepares the caches beforehand).
+    bool warm = false;
+    // Every start: the accuracy run repeats the query from many caches (every initial vertex pair,
+    // strided to at most 12 x 12, and a few two- and three-vertex caches) and keeps the answer
+    // farthest from the truth: a start-dependent failure cannot hide behind the one cold start.
+    // Timed like a cold query.
+    bool everyStart = false;
+};
+
+const std::vector<VariantInfo>& variantTable();
+// The default of `run --variants`.
+inline constexpr const char* kDefaultVariants = "all";
+// "all", or names separated by commas. Throws InputError naming the unknown one.
+std::vector<const VariantInfo*> parseVariants(const std::string& list);
+const VariantInfo* findVariant(const std::string& name);
+
+// Options::support == BinarySearch: the shapes' points must be in convex order (either winding,
+// collinear points allowed, no repeated consecutive point); cases where they are not are skipped
+// as not applicable (PreparedCase::binaryOk).
+bool needsConvexOrder(const VariantInfo& v);
+// The library uses the linear scan for shapes of at most this many points whatever the strategy
+// (gjk/distance.hpp, TransformedShape::binary): they always fit.
+inline constexpr int kLinearSupportMaxPoints = 16;
+
+const char* scalarName(Scalar s);
+double unitRoundoff(Scalar s); // u = eps / 2 of the variant's type
+double smallestSubnormal(Scalar s); // denorm_min of the variant's type
+int scalarDigits(Scalar s);    // significand bits (24, 53)
+int scalarMinExponent(Scalar s);
+
+// {"direction": ..., "stopping": ..., "frame": ..., "support": ..., "certified": ...}
+Json optionsJson(const gjk::Options& o);
+const char* directionName(gjk::SearchDirection d);
+const char* stoppingName(gjk::StoppingRule r);
+const char* frameName(gjk::Frame f);
+const char* supportName(gjk::SupportStrategy s);
+
+} // namespace gjkval

@@ -1,0 +1,95 @@
+// Cases and the case-file format `gjk-cases/1` (docs/validation.md, "Case files").
+#pragma once
+
+#include "common/common.hpp"
+
+#include <exact/exact.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// One shape of a case: the convex hull of `points` mapped by x' = c*x - s*y + px,
+// y' = s*x + c*y + py, grown by `radius`.
+struct ShapeIn
+{
+    std::vector<std::array<double, 2>> points;
+    double radius = 0;
+    double px = 0, py = 0;
+    double c = 1, s = 0;
+};
+
+struct Case
+{
+    std::string name;
+    ShapeIn a, b;
+};
+
+// One entry of a case file in file order: a valid case, or a rejected one (reason non-empty).
+struct CaseEntry
+{
+    Case c;               // as far as it could be read; c.name may be empty
+    std::string label;    // "file.json#3 (case 'x')": how reports name this entry
+    std::string rejected; // empty: valid
+};
+
+struct CaseFile
+{
+    std::string path;
+    std::vector<std::string> comments;
+    std::vector<CaseEntry> entries;
+};
+
+inline constexpr const char* kCaseFormat = "gjk-cases/1";
+
+// Limits of the reader (docs/validation.md, "Case files"): what a hostile file can cost in memory
+// is bounded by these, not by what the file claims. Files and JSON beyond them are refused, cases
+// beyond them are rejected.
+inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 MiB
+inline constexpr std::size_t kMaxJsonDepth = 64;             // a case file needs 6 levels
+inline constexpr std::size_t kMaxCasesPerFile = 1'000'000;   // entries of "cases"
+inline constexpr std::size_t kMaxComments = 10'000;          // entries of "comments"
+inline constexpr std::size_t kMaxCommentBytes = 64 << 10;    // one comment
+inline constexpr std::size_t kMaxCaseNameBytes = 256;        // one case name
+inline constexpr std::size_t kMaxShapePoints = 1'000'000;    // points of one shape
+inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of one case
+
+// Reads and checks a case file. A file that is unreadable, not a regular file or a pipe, larger
+// than kMaxCaseFileBytes, not JSON (also: nested deeper than kMaxJsonDepth, a duplicate key, a
+// number that overflows a double or is not 0 but rounds to 0) or not gjk-cases/1 throws InputError
+// naming the file (and line:column where the JSON is at fault). A case with an invalid field is
+// kept as a rejected entry naming file, case and field; the other cases are valid. Every string the
+// reader returns (names, labels, comments, reasons) is valid UTF-8; user strings in messages and
+// labels are quoted through excerpt().
+CaseFile readCaseFile(const std::string& path);
+CaseFile parseCaseFile(const std::string& text, const std::string& sourceName);
+
+// Writes a gjk-cases/1 file: one case per line, numbers in shortest round-trip form.
+std::string caseFileText(const std::vector<std::string>& comments, const std::vector<Case>& cases);
+void writeCaseFile(const std::string& path, const std::vector<std::string>& comments,
+                   const std::vector<Case>& cases);
+Json caseToJson(const Case& c);
+Json shapeToJson(const ShapeIn& s);
+
+// Line and column (both from 1) of a byte offset in text.
+std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset);
+
+// The exact side's view of a shape; roundToFloat rounds every input double to float first (the
+// input the float variants actually see).
+// double(float(v)), the value a float variant receives. Deliberately not inline: GCC 12.2's SLP
+// vectorizer folds two adjacent double -> float -> double round trips (a point's x and y) into the
+// identity at -O2 and -O3, so `p = {double(float(p[0])), double(float(p[1]))}` silently kept the
+// doubles (reproduced by the test "float rounding of a case for the float variants' truth").
+// A call per value keeps the vectorizer out.
+[[gnu::noinline]] double roundToFloat(double v);
+// Every number of the shape rounded to float (what the float variants receive), as doubles.
+ShapeIn roundedToFloat(const ShapeIn& s);
+exact::Shape toExact(const ShapeIn& s, bool roundToFloat = false);
+// True when every number of the case is finite after rounding to float, and no rotation rounds to
+// (0, 0).
+bool representableInFloat(const Case& c);
+
+} // namespace gjkval

@@ -1,0 +1,117 @@
+// Case families: seeded generators of cases, each with the checks of its own make-up.
+// `random` is the realistic mix; `hard/<sub>` are the known ways to break GJK, all in ONE table in
+// families.cpp with a reason per sub-family; `engine/<scene>-<kind>` are queries recorded from
+// Box2D worlds (engine.hpp), in a second table there.
+#pragma once
+
+#include "inputs/cases.hpp"
+
+#include <exact/exact.hpp>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gjkval
+{
+
+// What a make-up check measures over a family's cases (from the inputs and the exact results).
+enum class MakeupMetric
+{
+    OverlapFraction,      // fraction with exact distance 0 (touching or overlapping)
+    SeparatedFraction,    // 1 - OverlapFraction
+    NearTouchingFraction, // fraction with 0 < exact distance <= 1e-2
+    MinPositiveDistance,  // smallest exact distance among separated cases
+    MaxDistance,          // largest exact distance
+    MaxCoordinate,        // largest |world coordinate| of any point
+    MinVertices,          // fewest points of a shape
+    MinHullVertices,      // fewest distinct hull vertices of a shape (1: a point, 2: a segment)
+    MaxVertices,          // most points of a shape
+    MaxAspect,            // largest diameter / min width of a shape (hulls of <= 64 vertices)
+    RadiusFraction,       // fraction of cases with a rounded shape (radius > 0)
+    MinScale,             // smallest, over the cases, of a case's largest |world coordinate|
+    MinEdgeRatio,         // shortest hull edge / hull diameter, smallest over the shapes (local
+                          // points; shapes of >= 3 hull vertices)
+    MinSizeRatio,         // per case, larger / smaller hull diameter of the two shapes: smallest
+    MaxSizeRatio,         //   ... and largest over the cases
+    OutsideFloatRangeFraction, // fraction of cases whose largest |world coordinate| lies outside
+                               // float's safe range [Tolerances<float>::minCoordinate,
+                               // maxCoordinate]
+    DistinctDistances,         // number of distinct exact distances (bit patterns) among the cases
+    SharedOriginFraction,      // fraction of cases where both shapes have the same translation
+    MaxPolygonRadius,          // largest radius of a shape of >= 3 points (rounded polygons)
+    NonUnitRotationFraction,   // fraction of cases where a shape's c^2 + s^2 is not 1 in double
+};
+
+struct MakeupSpec
+{
+    std::string check;
+    MakeupMetric metric;
+    double min, max;
+    bool statistical = false; // skipped (reported, not judged) below kMinCasesForStatistics cases
+};
+
+inline constexpr std::size_t kMinCasesForStatistics = 100;
+
+struct MakeupResult
+{
+    std::string check;
+    double value, min, max;
+    bool ok;
+    bool skipped;
+};
+
+struct GeneratedFamily
+{
+    std::string name;   // "random", "hard/near-parallel"
+    std::string reason; // why the family exists
+    std::uint64_t seed; // the family's own seed (derived from the campaign seed and the name)
+    std::vector<Case> cases;
+    std::vector<MakeupSpec> makeup;
+};
+
+struct HardSubFamilyInfo
+{
+    std::string name; // without "hard/"
+    int count;
+    std::string reason;
+};
+const std::vector<HardSubFamilyInfo>& hardSubFamilies();
+// The engine families `engine/<scene>-<kind>` (engine.hpp), names without "engine/"; the spec
+// `engine` is all of them.
+const std::vector<HardSubFamilyInfo>& engineSubFamilies();
+
+inline constexpr int kDefaultRandomCount = 200000;
+inline constexpr int kDefaultEngineCount = 2000; // per engine family: 12,000 cases in all
+
+// The largest N of a family spec (the memory a run needs is checked apart, in main).
+inline constexpr int kMaxFamilyCount = 100000000;
+
+// A family spec parsed: "random[:N]", "hard[:N]" (N per sub-family), "hard/<sub>[:N]",
+// "engine[:N]" (N per engine family), "engine/<scene>-<kind>[:N]", N a whole number in
+// 1..kMaxFamilyCount. Throws InputError (unknown family, bad count).
+struct FamilySpec
+{
+    std::string name; // "random", "hard", "hard/sliver", "engine", "engine/pyramid-toi"
+    int count = -1;   // -1: the default count
+};
+FamilySpec parseFamilySpec(const std::string& spec);
+
+// The families a spec stands for and their case counts, without generating them.
+std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySpec& spec);
+
+// Generates the families of a spec (parseFamilySpec). Throws InputError.
+std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed);
+
+std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
+                                         const std::vector<const Case*>& cases,
+                                         const std::vector<const exact::Result*>& truths);
+
+// Exact distance is 0: the (rounded) shapes touch or overlap.
+inline bool exactIsZero(const exact::Result& r)
+{
+    return r.overlap || r.upper == 0;
+}
+
+} // namespace gjkval

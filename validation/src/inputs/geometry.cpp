@@ -1,0 +1,270 @@
+#include "inputs/geometry.hpp"
+
+#include "gjk/math.hpp"
+
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gjkval
+{
+namespace
+{
+double cross3(const P2& o, const P2& a, const P2& b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+double maxAbs(const std::vector<P2>& pts)
+{
+    double m = 0;
+    for (const auto& p : pts)
+        m = std::max({m, std::abs(p[0]), std::abs(p[1])});
+    return m;
+}
+// Sign of the orientation of (a, b, c): Shewchuk's filter in double (ccwerrboundA, plus a margin
+// for underflow), exact rationals when it cannot decide.
+int orientSign(const P2& a, const P2& b, const P2& c)
+{
+    const double l = (b[0] - a[0]) * (c[1] - a[1]), r = (b[1] - a[1]) * (c[0] - a[0]);
+    const double det = l - r;
+    const double bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53 * (std::abs(l) + std::abs(r)) + 1e-300;
+    if (std::isfinite(det) && std::isfinite(bound) && std::abs(det) > bound)
+        return det > 0 ? 1 : -1;
+    const mpq_class ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]), cx(c[0]), cy(c[1]);
+    return sgn(mpq_class((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)));
+}
+
+// Sign of dot(b - a, c - b), exactly.
+int dotSign(const P2& a, const P2& b, const P2& c)
+{
+    const mpq_class ax(a[0]), ay(a[1]), bx(b[0]), by(b[1]), cx(c[0]), cy(c[1]);
+    return sgn(mpq_class((bx - ax) * (cx - bx) + (by - ay) * (cy - by)));
+}
+
+// Direction of the edge a -> b (a != b) in the upper half [0, pi) of angles, exactly.
+bool upperHalf(const P2& a, const P2& b)
+{
+    return b[1] > a[1] || (b[1] == a[1] && b[0] > a[0]);
+}
+
+gjk::Transform<double> xf(const ShapeIn& s)
+{
+    return {{s.px, s.py}, {s.c, s.s}};
+}
+} // namespace
+
+P2 applyTransform(const ShapeIn& s, P2 p)
+{
+    const auto w = gjk::transformPoint(xf(s), gjk::Vec2<double>{p[0], p[1]});
+    return {w.x, w.y};
+}
+
+std::vector<P2> worldPoints(const ShapeIn& s)
+{
+    std::vector<P2> out;
+    out.reserve(s.points.size());
+    for (const auto& p : s.points)
+        out.push_back(applyTransform(s, p));
+    return out;
+}
+
+bool inConvexOrder(const std::vector<P2>& p)
+{
+    const std::size_t n = p.size();
+    if (n < 3)
+        return n == 1;
+    for (const auto& q : p)
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]))
+            return false;
+    for (std::size_t i = 0; i < n; ++i)
+        if (p[i] == p[(i + 1) % n])
+            return false;
+    bool pos = false, neg = false;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const P2 &a = p[(i + n - 1) % n], &b = p[i], &c = p[(i + 1) % n];
+        const int o = orientSign(a, b, c);
+        pos = pos || o > 0;
+        neg = neg || o < 0;
+        if (pos && neg)
+            return false;
+        if (o == 0 && dotSign(a, b, c) <= 0)
+            return false; // collinear and turning back
+    }
+    // Every turn is of one sign (in (0, pi)) or straight: the edge direction rotates monotonically
+    // through k full turns, crossing angle 0 exactly k times. k must be 1.
+    std::size_t crossings = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const bool u0 = upperHalf(p[i], p[(i + 1) % n]);
+        const bool u1 = upperHalf(p[(i + 1) % n], p[(i + 2) % n]);
+        crossings += pos ? (!u0 && u1) : (u0 && !u1);
+    }
+    return crossings == 1;
+}
+
+std::vector<P2> convexHull(std::vector<P2> p)
+{
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3)
+        return p;
+    std::vector<P2> h(2 * p.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+    {
+        while (k >= 2 && cross3(h[k - 2], h[k - 1], p[i]) <= 0)
+            --k;
+        h[k++] = p[i];
+    }
+    for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;)
+    {
+        while (k >= t && cross3(h[k - 2], h[k - 1], p[i]) <= 0)
+            --k;
+        h[k++] = p[i];
+    }
+    h.resize(k - 1);
+    if (h.size() == 2 && h[0] == h[1])
+        h.resize(1);
+    return h;
+}
+
+std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<P2>& b,
+                                    std::size_t maxVertices)
+{
+    std::vector<P2> P = convexHull(a);
+    std::vector<P2> nb;
+    for (const auto& q : b)
+        nb.push_back({-q[0], -q[1]});
+    std::vector<P2> Q = convexHull(nb);
+    if (P.empty() || Q.empty())
+        return {};
+    auto rotMin = [](std::vector<P2>& v)
+    {
+        std::size_t m = 0;
+        for (std::size_t i = 1; i < v.size(); ++i)
+            if (v[i][1] < v[m][1] || (v[i][1] == v[m][1] && v[i][0] < v[m][0]))
+                m = i;
+        std::rotate(v.begin(), v.begin() + std::ptrdiff_t(m), v.end());
+    };
+    rotMin(P);
+    rotMin(Q);
+    const std::size_t n = P.size(), m = Q.size();
+    P.push_back(P[0]);
+    P.push_back(P[1 % n]);
+    Q.push_back(Q[0]);
+    Q.push_back(Q[1 % m]);
+    std::vector<P2> r;
+    std::size_t i = 0, j = 0;
+    while (i < n || j < m)
+    {
+        r.push_back({P[i][0] + Q[j][0], P[i][1] + Q[j][1]});
+        const double ex = P[i + 1][0] - P[i][0], ey = P[i + 1][1] - P[i][1];
+        const double fx = Q[j + 1][0] - Q[j][0], fy = Q[j + 1][1] - Q[j][1];
+        double c = ex * fy - ey * fx;
+        if (std::isnan(c)) // overflow (coordinates near 1e160): advance both, never stall
+            c = 0;
+        if (i >= n)
+            c = -1;
+        else if (j >= m)
+            c = 1;
+        if (c >= 0 && i < n)
+            ++i;
+        if (c <= 0 && j < m)
+            ++j;
+    }
+    r = convexHull(r); // tidy: drop collinear and repeated vertices
+    if (r.size() > maxVertices)
+    {
+        const std::size_t step = (r.size() + maxVertices - 1) / maxVertices;
+        std::vector<P2> d;
+        for (std::size_t k = 0; k < r.size(); k += step)
+            d.push_back(r[k]);
+        r = std::move(d);
+    }
+    return r;
+}
+
+FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
+{
+    // Points of A and B~ in the compute frame: the world, or A's local frame through the true
+    // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
+    std::vector<gjk::Vec2<double>> pa, pb;
+    const gjk::Transform<double> xa = xf(a), xb = xf(b);
+    const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
+    for (const auto& p : a.points)
+        pa.push_back(worldFrame ? gjk::transformPoint(xa, gjk::Vec2<double>{p[0], p[1]})
+                                : gjk::Vec2<double>{p[0], p[1]});
+    for (const auto& p : b.points)
+        pb.push_back(gjk::transformPoint(rel, gjk::Vec2<double>{p[0], p[1]}));
+    FrameScales s;
+    double ia = 0, ib = 0;
+    for (const auto& p : pa)
+    {
+        ia = std::max({ia, std::abs(p.x), std::abs(p.y)});
+        s.A = std::max(s.A, std::hypot(p.x, p.y));
+    }
+    for (const auto& p : pb)
+    {
+        ib = std::max({ib, std::abs(p.x), std::abs(p.y)});
+        s.Bmapped = std::max(s.Bmapped, std::hypot(p.x, p.y));
+    }
+    for (const auto& p : b.points)
+        s.B = std::max(s.B, std::hypot(p[0], p[1]));
+    if (double(pa.size()) * double(pb.size()) <= 1e6)
+    {
+        for (const auto& p : pa)
+            for (const auto& q : pb)
+                s.W = std::max(s.W, std::hypot(p.x - q.x, p.y - q.y));
+    }
+    else
+        s.W = s.A + s.Bmapped;
+    // World lengths: A's frame measures in units of |qA| (1 for a unit rotation), and B's own
+    // points are lengthened by |qB| in world.
+    const double unit = worldFrame ? 1 : std::hypot(a.c, a.s);
+    s.A *= unit;
+    s.Bmapped *= unit;
+    s.W *= unit;
+    s.B *= std::hypot(b.c, b.s);
+    s.R = unit * (ia + ib) + a.radius + b.radius;
+    s.D = std::hypot(b.px - a.px, b.py - a.py);
+    return s;
+}
+
+double maxAbsWorldCoordinate(const Case& c)
+{
+    return std::max(maxAbs(worldPoints(c.a)), maxAbs(worldPoints(c.b)));
+}
+
+double maxAbsTranslation(const Case& c)
+{
+    return std::max({std::abs(c.a.px), std::abs(c.a.py), std::abs(c.b.px), std::abs(c.b.py)});
+}
+
+double aspectRatio(const ShapeIn& s)
+{
+    const auto h = convexHull(s.points);
+    if (h.size() < 3)
+        return std::numeric_limits<double>::infinity();
+    if (h.size() > 64)
+        return 0;
+    double diameter = 0, width = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < h.size(); ++i)
+    {
+        const P2& p = h[i];
+        const P2& q = h[(i + 1) % h.size()];
+        const double ex = q[0] - p[0], ey = q[1] - p[1], len = std::hypot(ex, ey);
+        double w = 0;
+        for (const auto& r : h)
+        {
+            diameter = std::max(diameter, std::hypot(r[0] - p[0], r[1] - p[1]));
+            w = std::max(w, std::abs(ex * (r[1] - p[1]) - ey * (r[0] - p[0])) / len);
+        }
+        width = std::min(width, w);
+    }
+    return width > 0 ? diameter / width : std::numeric_limits<double>::infinity();
+}
+
+} // namespace gjkval

@@ -1,0 +1,340 @@
+#include "report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+
+namespace gjkval
+{
+namespace
+{
+std::string g(const Json& v, const char* spec = "{:.3g}")
+{
+    if (v.is_number())
+        return fmt::format(fmt::runtime(spec), v.get<double>());
+    if (v.is_null())
+        return "-";
+    if (v.is_string())
+        return v.get<std::string>();
+    return v.dump();
+}
+
+std::string u(const Json& v)
+{
+    return v.is_number() ? std::to_string(v.get<std::uint64_t>()) : g(v);
+}
+
+// Variant name -> judged (a report without the field: every variant judged).
+std::map<std::string, bool> judgedMap(const Json& r)
+{
+    std::map<std::string, bool> m;
+    for (const auto& v : r["variants"])
+        m[v["name"].get<std::string>()] = !v.contains("judged") || v["judged"].get<bool>();
+    return m;
+}
+
+bool isJudged(const std::map<std::string, bool>& m, const std::string& name)
+{
+    const auto it = m.find(name);
+    return it == m.end() || it->second;
+}
+
+// Comparison variants' failures over all families: counted, never judged.
+std::uint64_t comparisonFailures(const Json& r, const std::map<std::string, bool>& judged)
+{
+    std::uint64_t n = 0;
+    for (const auto& f : r["families"])
+        for (const auto& [name, st] : f["variants"].items())
+            if (!isJudged(judged, name))
+                n += st["failures"].get<std::uint64_t>();
+    return n;
+}
+
+std::string mdEscape(std::string s)
+{
+    std::string o;
+    for (char c : s)
+    {
+        if (c == '|')
+            o += "\\|";
+        else
+            o += c;
+    }
+    return o;
+}
+} // namespace
+
+std::string renderMarkdown(const Json& r)
+{
+    const Json& c = r["context"];
+    const auto judged = judgedMap(r);
+    std::string s;
+    s += "# GJK validation report\n\n";
+    s += fmt::format("**Result: {}** (judged variants only: comparison variants' "
+                     "{} failures are shown, not judged)\n\n",
+                     resultText(r), comparisonFailures(r, judged));
+    s += "| | |\n|---|---|\n";
+    for (const char* k :
+         {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
+          "threads", "cases_total", "cases_rejected", "exact_route"})
+        if (c.contains(k))
+            s += fmt::format("| {} | `{}` |\n", k, mdEscape(g(c[k], "{}")));
+    if (c.contains("elapsed_s"))
+    {
+        std::string e;
+        for (const auto& [k, v] : c["elapsed_s"].items())
+            e += fmt::format("{} {:.2f} s, ", k, v.get<double>());
+        s += fmt::format("| elapsed | {} |\n", e.substr(0, e.size() - 2));
+    }
+    if (c.contains("throughput"))
+    {
+        const Json& t = c["throughput"];
+        s += fmt::format(
+            "| throughput | exact {:.0f} cases/s, GJK evaluation {:.0f} cases/s, witness checks "
+            "{:.0f} cases/s, GJK query {} ns (mean of family medians) |\n",
+            t["exact_cases_per_s"].get<double>(), t["gjk_cases_per_s"].get<double>(),
+            t["witness_cases_per_s"].get<double>(), g(t["gjk_ns_per_query_mean"], "{:.1f}"));
+    }
+    s += "\nInputs: ";
+    for (const auto& in : c["inputs"])
+        s += in.contains("family")
+                 ? fmt::format("`{}` x{}; ", in["family"].get<std::string>(), u(in["count"]))
+                 : fmt::format("`{}` x{}; ", in["file"].get<std::string>(), u(in["count"]));
+    s += "\n\n## Variants\n\nJudged variants decide the result; comparison variants (the "
+         "alternatives the talk discusses) are run and reported, their failures not judged.\n\n"
+         "| variant | judged | type | direction | stopping | frame | support | start | bound |\n"
+         "|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& v : r["variants"])
+    {
+        const Json& o = v["options"];
+        const std::string name = v["name"].get<std::string>();
+        s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", name,
+                         isJudged(judged, name) ? "judged" : "comparison",
+                         v["type"].get<std::string>(), g(o["direction"]), g(o["stopping"]),
+                         g(o["frame"]), g(o["support"]),
+                         v.contains("warm") && v["warm"].get<bool>() ? "warm" : "cold",
+                         mdEscape(v["bound"]["formula"].get<std::string>()));
+    }
+    s += "\nErrors: `abs` = |d_gjk - d_exact|; `norm` = abs / (u R); `ulps` = abs / ulp(d_exact); "
+         "float variants "
+         "are judged against the exact distance of the float-rounded input. p99 values are bin "
+         "upper edges.\n";
+    s += "\n## Families\n";
+    for (const auto& f : r["families"])
+    {
+        s += fmt::format("\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
+                         f["pass"].get<bool>() ? "pass" : "**FAIL**", u(f["cases"]),
+                         f["rejected"].get<std::uint64_t>()
+                             ? fmt::format(", {} rejected", u(f["rejected"]))
+                             : "");
+        s += mdEscape(f["reason"].get<std::string>()) + "\n\n";
+        if (!f["makeup"].empty())
+        {
+            s += "Make-up: ";
+            for (const auto& m : f["makeup"])
+                s += fmt::format("{} = {} in [{}, {}] {}; ", m["check"].get<std::string>(),
+                                 g(m["value"]), g(m["min"]), g(m["max"]),
+                                 m.contains("skipped")
+                                     ? "(not judged)"
+                                     : (m["ok"].get<bool>() ? "ok" : "**FAILED**"));
+            s += "\n\n";
+        }
+        s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | iter lim | "
+             "out of range | "
+             "skipped | max abs | p99 abs | max norm | p99 norm | p99 ulps | max witness | iters "
+             "mean/max | "
+             "ns/query | x base |\n"
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            const Json& e = st["errors"];
+            const bool j = isJudged(judged, name);
+            const std::uint64_t na =
+                st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
+            s += fmt::format(
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
+                "{:.2f}/{} | {} | {} |\n",
+                j ? name : name + " (comparison)", u(st["cases"]),
+                u(st["failures"]) +
+                    (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
+                u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
+                u(st["nonfinite"]), u(st["iteration_limit"]), u(st["out_of_range"]),
+                u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : ""), g(e["abs"]["max"]),
+                g(e["abs"]["p99"]), g(e["normalized"]["max"]), g(e["normalized"]["p99"]),
+                g(e["ulps"]["p99"]), g(e["witness"]["max"]), st["iterations"]["mean"].get<double>(),
+                st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
+                g(st["ratio_to_baseline"], "{:.2f}"));
+        }
+    }
+    if (!r["rejected"].empty())
+    {
+        s += "\n## Rejected cases\n\n";
+        for (const auto& j : r["rejected"])
+            s += fmt::format("- {}: {}\n", mdEscape(j["name"].get<std::string>()),
+                             mdEscape(j["reason"].get<std::string>()));
+    }
+    s += fmt::format(
+        "\n## Worst cases\n\nReplay them with `gjk-validate run --cases {}`; inspect one with "
+        "`gjk-validate explain {} NAME`.\n\n| family | case | exact distance |",
+        r["worst_cases_file"].get<std::string>(), r["worst_cases_file"].get<std::string>());
+    for (const auto& v : r["variants"])
+        s += fmt::format(" {} (norm err, stop) |", v["name"].get<std::string>());
+    s += "\n|---|---|---|";
+    for (std::size_t i = 0; i < r["variants"].size(); ++i)
+        s += "---|";
+    s += "\n";
+    for (const auto& w : r["worst"])
+    {
+        s += fmt::format("| {} | `{}` | {} |", w["family"].get<std::string>(),
+                         w["name"].get<std::string>(),
+                         w.contains("exact") ? g(w["exact"]["distance"], "{:.17g}") : "-");
+        for (const auto& v : r["variants"])
+        {
+            const std::string n = v["name"].get<std::string>();
+            if (!w.contains("variants") || !w["variants"].contains(n) ||
+                w["variants"][n].contains("skipped"))
+            {
+                s += " - |";
+                continue;
+            }
+            const Json& x = w["variants"][n];
+            s += fmt::format(" {}, {}{} |", g(x["errors"]["normalized"]),
+                             x["stop"].get<std::string>(),
+                             x["failed"].get<bool>() ? " **FAIL**" : "");
+        }
+        s += "\n";
+    }
+    return s;
+}
+
+std::string terminalSummary(const Json& r)
+{
+    std::string s;
+    const auto judged = judgedMap(r);
+    s += fmt::format("{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}\n",
+                     "family", "variant", "cases", "fail", "undec", "max abs", "max norm",
+                     "p99 norm", "p99 ulps", "iters", "ns/query", "x base");
+    for (const auto& f : r["families"])
+    {
+        bool first = true;
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            const Json& e = st["errors"];
+            std::string fam = first ? f["name"].get<std::string>() : "";
+            if (fam.size() > 28)
+                fam = fam.substr(0, 25) + "...";
+            const bool failed = st["failures"].get<std::uint64_t>() > 0;
+            s += fmt::format(
+                "{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}{}\n",
+                fam, name, u(st["cases"]), u(st["failures"]), u(st["undecidable"]),
+                g(e["abs"]["max"], "{:.2g}"), g(e["normalized"]["max"], "{:.3g}"),
+                g(e["normalized"]["p99"], "{:.2g}"), g(e["ulps"]["p99"], "{:.2g}"),
+                st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
+                g(st["ratio_to_baseline"], "{:.2f}"),
+                !failed ? "" : (isJudged(judged, name) ? "  FAIL" : "  fails (not judged)"));
+            first = false;
+            const auto oor = st["out_of_range"].get<std::uint64_t>(),
+                       skipped = st["skipped"].get<std::uint64_t>();
+            const auto na =
+                st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
+            if (oor || skipped)
+                s += fmt::format("{:<28}   {} case(s) flagged out of range by GJK (not judged), {} "
+                                 "skipped (input not representable in float: {}, not applicable: "
+                                 "{})\n",
+                                 "", oor, skipped, skipped - na, na);
+        }
+        for (const auto& m : f["makeup"])
+            if (!m["ok"].get<bool>())
+                s += fmt::format("  make-up check failed: {} = {} not in [{}, {}]\n",
+                                 m["check"].get<std::string>(), g(m["value"]), g(m["min"]),
+                                 g(m["max"]));
+    }
+    const Json& c = r["context"];
+    if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
+        s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
+                         u(c["cases_rejected"]));
+    std::size_t shown = 0;
+    for (const auto& j : r["rejected"])
+        if (shown++ < 10)
+            s += fmt::format("  {}: {}\n", j["name"].get<std::string>(),
+                             j["reason"].get<std::string>());
+    const Json& t = c["throughput"];
+    const Json& e = c["elapsed_s"];
+    s += fmt::format(
+        "{} cases on {} threads in {:.1f} s: exact {:.0f} cases/s ({:.1f} s), GJK {:.0f} cases/s "
+        "({:.2f} s, {} variants), witness checks {:.0f} cases/s ({:.1f} s), timing {:.1f} s\n",
+        u(c["cases_total"]), c["threads"].get<int>(), e["total"].get<double>(),
+        t["exact_cases_per_s"].get<double>(), e["exact"].get<double>(),
+        t["gjk_cases_per_s"].get<double>(), e["gjk"].get<double>(), r["variants"].size(),
+        t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
+        e["timing"].get<double>());
+    s += fmt::format("result: {}; comparison variants: {} failure(s), shown, not judged\n",
+                     resultText(r), comparisonFailures(r, judged));
+    return s;
+}
+
+std::string resultText(const Json& r)
+{
+    const int code = r["exit_code"].get<int>();
+    if (code == kExitPass)
+        return "PASS (exit code 0)";
+    if (code == kExitInput)
+    {
+        const Json& c = r["context"];
+        const auto rejected = c["cases_rejected"].get<std::uint64_t>(),
+                   total = c["cases_total"].get<std::uint64_t>();
+        if (rejected >= total)
+            return fmt::format("INPUT ERROR (exit code 2): {} case(s) rejected, none judged",
+                               rejected);
+        return fmt::format("INPUT ERROR (exit code 2): {} case(s) rejected; the {} judged "
+                           "case(s) pass",
+                           rejected, total - rejected);
+    }
+    return fmt::format("FAIL (exit code {}, from the judged variants)", code);
+}
+
+namespace
+{
+// Words of `text` in lines of at most `width` characters, each line starting with `indent`.
+std::string wrap(const std::string& text, const std::string& indent, std::size_t width)
+{
+    std::string out, line = indent;
+    std::size_t i = 0;
+    while (i < text.size())
+    {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        const std::string word = text.substr(i, end - i);
+        if (line.size() > indent.size() && line.size() + 1 + word.size() > width)
+        {
+            out += line + "\n";
+            line = indent;
+        }
+        line += (line.size() > indent.size() ? " " : "") + word;
+        i = end + 1;
+    }
+    return out + line + "\n";
+}
+} // namespace
+
+std::string exitCodesHelp(std::size_t width)
+{
+    std::string s = "Exit codes:\n";
+    for (const auto& e : kExitCodeTable)
+    {
+        std::string w = wrap(e.meaning, "     ", width);
+        s += fmt::format("  {}  {}", e.code, w.substr(5));
+    }
+    s.pop_back(); // CLI11 ends the footer with its own newline
+    return s;
+}
+
+std::string exitCodesMarkdown()
+{
+    std::string s = "| code | meaning |\n|---|---|\n";
+    for (const auto& e : kExitCodeTable)
+        s += fmt::format("| {} | {} |\n", e.code, e.meaning);
+    return s;
+}
+
+} // namespace gjkval

@@ -1,0 +1,23 @@
+// Renderings of report.json: report.md and the terminal summary (both from the JSON only).
+#pragma once
+
+#include "common/common.hpp"
+
+#include <string>
+
+namespace gjkval
+{
+
+std::string renderMarkdown(const Json& report);
+std::string terminalSummary(const Json& report);
+
+// The result in words, from report.json's exit_code: "PASS (exit code 0)", "FAIL (exit code 1,
+// from the judged variants)", "INPUT ERROR (exit code 2): 3 case(s) rejected, none judged".
+std::string resultText(const Json& report);
+
+// kExitCodeTable (common.hpp) rendered: the --help footer (plain text, lines of at most `width`
+// characters) and the Markdown table of docs/validation.md (a test checks the docs hold it).
+std::string exitCodesHelp(std::size_t width = 80);
+std::string exitCodesMarkdown();
+
+} // namespace gjkval

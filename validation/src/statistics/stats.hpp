@@ -1,0 +1,86 @@
+// Mergeable statistics: counts, extrema, sums and fixed log10 bins (percentiles are read from the
+// bins), so that shards merge exactly and the report does not depend on the number of threads.
+#pragma once
+
+#include "common/common.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+struct Hist
+{
+    int log10Min = -40;
+    int log10Max = 40;
+    int binsPerDecade = 10;
+    std::uint64_t count = 0; // values added (zeros included)
+    std::uint64_t zeros = 0;
+    double max = 0;
+    double sum = 0;
+    std::string maxCase;
+    std::vector<std::uint64_t> counts; // bins; sized on first use
+
+    Hist() = default;
+    Hist(int lo, int hi, int perDecade = 10) : log10Min(lo), log10Max(hi), binsPerDecade(perDecade)
+    {
+    }
+
+    std::size_t binCount() const { return std::size_t((log10Max - log10Min) * binsPerDecade); }
+    std::size_t binOf(double v) const; // v > 0
+    double upperEdge(std::size_t bin) const;
+    // v >= 0 and finite (callers count non-finite values apart).
+    void add(double v, const std::string& caseName = {});
+    void merge(const Hist& other); // same binning; `other` comes after this in case order
+    double mean() const { return count ? sum / double(count) : 0; }
+    // The upper edge of the bin where the cumulative count (zeros first) reaches ceil(count * num /
+    // den); 0 when that rank falls among the zeros, and 0 for an empty histogram.
+    double percentile(std::uint64_t num, std::uint64_t den) const;
+    Json toJson() const;
+};
+
+struct IterHist
+{
+    std::uint64_t count = 0;
+    int max = 0;
+    double sum = 0;
+    std::vector<std::uint64_t> counts; // counts[i]: cases with i iterations
+    void add(int iterations);
+    void merge(const IterHist& other);
+    Json toJson() const;
+};
+
+inline constexpr int kStopReasons = 5; // gjk::StopReason values
+
+// One family x one variant.
+struct Stats
+{
+    std::uint64_t cases = 0;
+    std::uint64_t failures = 0;
+    std::uint64_t falseOverlap = 0, falseSeparation = 0, undecidable = 0;
+    std::uint64_t nonfinite = 0, outOfRange = 0, iterationLimit = 0;
+    std::uint64_t beyondBound = 0;   // judged cases with |error| > bound
+    std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
+    std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
+    // Certified variants: intervals given, intervals holding the truth, queries left uncertified.
+    bool hasInterval = false;
+    std::uint64_t certified = 0, contains = 0, uncertified = 0;
+    Hist widthUlps{-20, 40}; // (upper - lower) / ulp(d_exact), d_exact > 0
+    Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
+    Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
+    bool hasInputRounding = false;
+    IterHist iterations;
+    std::array<std::uint64_t, kStopReasons> stops{};
+
+    // Timing (not merged: measured once per family and variant).
+    double nsPerQuery = -1, nsMin = -1, nsMax = -1, ratioToBaseline = -1;
+    int timingPasses = 0;
+
+    void merge(const Stats& other);
+    Json toJson() const;
+};
+
+} // namespace gjkval

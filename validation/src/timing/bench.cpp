@@ -1,0 +1,151 @@
+#include "timing/bench.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <limits>
+
+namespace gjkval
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b)
+{
+    return std::chrono::duration<double>(b - a).count();
+}
+
+std::string g(const Json& v, const char* spec)
+{
+    return v.is_number() ? fmt::format(fmt::runtime(spec), v.get<double>()) : std::string("-");
+}
+} // namespace
+
+BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& inputs)
+{
+    const auto tStart = Clock::now();
+    std::vector<PreparedCase> prepared;
+    std::size_t total = 0, rejected = 0;
+    Json inputsJson = Json::array();
+    Json rejectedJson = Json::array();
+    for (const auto& f : inputs)
+    {
+        inputsJson.push_back(f.input);
+        for (std::size_t i = 0; i < f.cases.size(); ++i)
+        {
+            ++total;
+            if (!f.rejected[i].empty())
+            {
+                ++rejected;
+                rejectedJson.push_back(
+                    {{"name", f.labels[i]}, {"family", f.name}, {"reason", f.rejected[i]}});
+                continue;
+            }
+            prepared.push_back(prepare(f.cases[i]));
+        }
+    }
+    const auto tPrepared = Clock::now();
+
+    TimingConfig tc;
+    tc.minPasses = tc.maxPasses = std::max(1, config.passes);
+    tc.budgetSeconds = std::numeric_limits<double>::infinity();
+    tc.minPassSeconds = config.minPassSeconds;
+    tc.warm = config.warm;
+
+    std::vector<TimingResult> results;
+    std::vector<std::size_t> skipped, notApplicable;
+    for (const VariantInfo* v : config.variants)
+    {
+        std::vector<const PreparedCase*> cases;
+        std::size_t sk = 0, na = 0;
+        for (const auto& p : prepared)
+        {
+            if (const char* why = skipReason(*v, p, p.floatOk))
+            {
+                ++sk;
+                na += why == kSkipNotConvexOrder ? 1 : 0;
+                continue;
+            }
+            cases.push_back(&p);
+        }
+        results.push_back(timeQueries(cases, *v, tc));
+        skipped.push_back(sk);
+        notApplicable.push_back(na);
+    }
+    const auto tTimed = Clock::now();
+
+    const TimingResult* base = nullptr;
+    for (std::size_t k = 0; k < config.variants.size(); ++k)
+        if (config.variants[k]->name == "double" && results[k].nsPerQuery > 0)
+            base = &results[k];
+
+    Json vars = Json::object();
+    for (std::size_t k = 0; k < config.variants.size(); ++k)
+    {
+        const VariantInfo& v = *config.variants[k];
+        const TimingResult& t = results[k];
+        auto ns = [](double x) { return x > 0 ? Json(x) : Json(nullptr); };
+        Json j;
+        j["type"] = scalarName(v.scalar);
+        j["warm"] = t.warm;
+        j["options"] = optionsJson(v.options);
+        j["cases"] = t.cases;
+        j["skipped"] = skipped[k];
+        j["not_applicable"] = notApplicable[k];
+        j["ns_per_query"] = ns(t.nsPerQuery);
+        j["ns_min"] = ns(t.nsMin);
+        j["ns_max"] = ns(t.nsMax);
+        j["passes"] = t.passes;
+        j["reps_per_pass"] = t.repsPerPass;
+        j["ratio_to_double"] =
+            base && t.nsPerQuery > 0 ? Json(t.nsPerQuery / base->nsPerQuery) : Json(nullptr);
+        vars[v.name] = std::move(j);
+    }
+
+    BenchResult out;
+    out.exitCode = rejected > 0 ? kExitInput : kExitPass;
+    Json context = contextJson(isoDateUtc(), gitRevision(), config.command, config.seed, 1,
+                               std::move(inputsJson), total, rejected);
+    context["timing"] = {
+        {"passes", tc.maxPasses},
+        {"min_pass_s", tc.minPassSeconds},
+        {"warm", config.warm},
+        {"note", "single thread; per variant the cases are copied into one contiguous array and "
+                 "each pass loops over all of them (repeated to last at least min_pass_s); "
+                 "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
+                 "Warm: each query starts from the SimplexCache of a previous query of the same "
+                 "case, prepared before timing."}};
+    context["elapsed_s"] = {{"prepare", seconds(tStart, tPrepared)},
+                            {"timing", seconds(tPrepared, tTimed)},
+                            {"total", seconds(tStart, Clock::now())}};
+    Json& j = out.json;
+    j["schema"] = "gjk-bench/1";
+    j["context"] = std::move(context);
+    j["baseline_variant"] = base ? Json("double") : Json(nullptr);
+    j["variants"] = std::move(vars);
+    j["rejected"] = std::move(rejectedJson);
+    j["exit_code"] = out.exitCode;
+    return out;
+}
+
+std::string benchTable(const Json& b)
+{
+    const Json& c = b["context"];
+    std::string s = fmt::format(
+        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries\n",
+        c["cases_total"].get<std::uint64_t>(), c["cases_rejected"].get<std::uint64_t>(),
+        c["timing"]["passes"].get<int>(), c["timing"]["min_pass_s"].get<double>(),
+        c["timing"]["warm"].get<bool>() ? "warm-started" : "cold (warm for *-warm variants)");
+    s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}\n", "variant", "type",
+                     "start", "cases", "skipped", "ns/query", "min", "max", "x double");
+    for (const auto& [name, v] : b["variants"].items())
+        s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}\n", name,
+                         v["type"].get<std::string>(), v["warm"].get<bool>() ? "warm" : "cold",
+                         v["cases"].get<std::uint64_t>(), v["skipped"].get<std::uint64_t>(),
+                         g(v["ns_per_query"], "{:.1f}"), g(v["ns_min"], "{:.1f}"),
+                         g(v["ns_max"], "{:.1f}"), g(v["ratio_to_double"], "{:.2f}"));
+    s += fmt::format("total {:.1f} s\n", c["elapsed_s"]["total"].get<double>());
+    return s;
+}
+
+} // namespace gjkval

@@ -1,0 +1,37 @@
+// Timing of GJK queries, shared by `run` (ns_per_query per family and variant) and `bench`:
+// single-threaded, the cases copied into one contiguous array, repeated timed passes, the median.
+#pragma once
+
+#include "evaluate/evaluate.hpp"
+#include "evaluate/variants.hpp"
+
+#include <vector>
+
+namespace gjkval
+{
+
+struct TimingConfig
+{
+    int minPasses = 5, maxPasses = 15;
+    double budgetSeconds = 0.5;    // no new pass after this, once minPasses are done
+    double minPassSeconds = 0.002; // each pass repeats the loop over the cases to last this long
+    bool warm = false;             // time warm-started queries (also when the variant is warm)
+};
+
+struct TimingResult
+{
+    double nsPerQuery = -1; // median pass, per query
+    double nsMin = -1, nsMax = -1;
+    int passes = 0;
+    int repsPerPass = 0; // loops over the cases in one pass
+    std::size_t cases = 0;
+    bool warm = false; // warm-started queries were timed
+};
+
+// Times the variant's query over `cases` (none skipped for it: see skipReason()). Cold queries
+// (fresh SimplexCache), or warm ones when v.warm or cfg.warm: the caches are prepared by a cold
+// query of each case before timing, and each timed query starts from a copy of its case's cache.
+TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                         const TimingConfig& cfg);
+
+} // namespace gjkval
