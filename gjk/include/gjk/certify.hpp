@@ -28,6 +28,8 @@
 #include <cassert>
 #define GJK_CERTIFY_ASSERT(c) assert(c)
 
+#include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
+
 namespace gjk::certify
 {
 
@@ -139,3 +141,5 @@ template <class T> double supportUpper(const Transform<T>& xf, const Vec2<T>* pt
 }
 
 } // namespace gjk::certify
+
+#include "gjk/detail/fp_end.hpp"

@@ -48,6 +48,8 @@
 #define GJK_INLINE inline
 #endif
 
+#include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
+
 namespace gjk
 {
 
@@ -1282,3 +1284,5 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, const Options& options
 }
 
 } // namespace gjk
+
+#include "gjk/detail/fp_end.hpp"

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
+
 namespace gjk
 {
 
@@ -138,3 +140,5 @@ template <class T> constexpr Transform<T> invMulTransforms(const Transform<T>& a
 }
 
 } // namespace gjk
+
+#include "gjk/detail/fp_end.hpp"

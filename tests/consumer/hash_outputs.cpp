@@ -1,0 +1,181 @@
+// A consumer of gjk/distance.hpp built with the user's flags, not the project's: it hashes every
+// output bit of 40,000 queries so that builds with different compilers and flags can be compared
+// (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_matrix.sh).
+//
+// Only the library's own arithmetic may differ between builds. Every input is made from integers
+// by at most one floating-point operation (an int converted exactly, or one division of two exact
+// ints, correctly rounded by IEEE 754 whatever the flags), and the random numbers come from
+// std::mt19937_64's raw output (the engine is specified bit for bit; the distributions are not).
+// Divisions give full-length mantissas: with small integer coordinates most products would be
+// exact and a fused multiply-add could not change them.
+//
+// Per scalar type: 20,000 queries on random 3-8 point shapes (any order, interior points), half of
+// them with Options::certify; variants of the search direction and the stopping rule; radii on a
+// third; each pair queried cold and then warm from the cold query's cache after B moved. Hashed:
+// distance, witness points, normal, iterations, simplex count, stop reason, range flags, the cache,
+// the certified flag and interval. Output: one line per scalar type and field group, then "all".
+// Exit 1 if a certified interval is inverted or misses the double distance by more than the
+// double bound's wide slack (a broken build, not a difference of bits).
+#include "gjk/distance.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace
+{
+
+struct Hash // FNV-1a, 64 bits
+{
+    std::uint64_t h = 0xcbf29ce484222325ull;
+    template <class V> void add(const V& v)
+    {
+        unsigned char bytes[sizeof(V)];
+        std::memcpy(bytes, &v, sizeof(V));
+        for (unsigned char b : bytes)
+            h = (h ^ b) * 0x100000001b3ull;
+    }
+};
+
+struct Hashes
+{
+    Hash distance, witness, normal, steps, cache, interval, all;
+};
+
+template <class T> struct Shape
+{
+    std::vector<gjk::Vec2<T>> points;
+    T radius = 0;
+};
+
+struct Source
+{
+    std::mt19937_64 rng;
+    explicit Source(std::uint64_t seed) : rng(seed) {}
+    // Uniform in [lo, hi] from the raw 64-bit output (the modulo bias does not matter here).
+    long long between(long long lo, long long hi) { return lo + (long long)(rng() % std::uint64_t(hi - lo + 1)); }
+    // One correctly rounded division of two exact integers.
+    template <class T> T ratio(long long num, long long den) { return T(num) / T(den); }
+    // (Function arguments are evaluated in an unspecified order, GCC's differs from Clang's: each
+    // draw is its own statement.)
+    template <class T> T coordinate(int range)
+    {
+        const long long num = between(-range * 97, range * 97);
+        const long long den = between(7, 97);
+        return ratio<T>(num, den);
+    }
+};
+
+template <class T> Shape<T> randomShape(Source& src)
+{
+    Shape<T> s;
+    const int n = int(src.between(3, 8));
+    for (int i = 0; i < n; ++i)
+        s.points.push_back({src.coordinate<T>(4), src.coordinate<T>(4)});
+    if (src.between(0, 2) == 0)
+        s.radius = src.ratio<T>(src.between(0, 64), 128);
+    return s;
+}
+
+// A rotation (c, s) = (m^2 - n^2, 2mn) / (m^2 + n^2) from Euclid's formula: integer arithmetic,
+// then one division each. A unit rotation to within rounding (both of isUnitRotation's branches
+// occur), any quadrant.
+template <class T> gjk::Transform<T> randomTransform(Source& src, int range)
+{
+    const long long m = src.between(1, 40), n = src.between(0, 40);
+    long long a = m * m - n * n, b = 2 * m * n;
+    const long long r = m * m + n * n;
+    if (src.between(0, 1))
+        a = -a;
+    if (src.between(0, 1))
+        b = -b;
+    gjk::Transform<T> xf;
+    xf.q = {src.ratio<T>(a, r), src.ratio<T>(b, r)};
+    xf.p = {src.coordinate<T>(range), src.coordinate<T>(range)};
+    return xf;
+}
+
+template <class T> void hashOutput(Hashes& h, const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& c)
+{
+    h.distance.add(o.distance);
+    h.witness.add(o.pointA.x), h.witness.add(o.pointA.y), h.witness.add(o.pointB.x), h.witness.add(o.pointB.y);
+    h.normal.add(o.normal.x), h.normal.add(o.normal.y);
+    h.steps.add(o.iterations), h.steps.add(o.simplexCount), h.steps.add(std::uint8_t(o.stop));
+    h.steps.add(o.outOfRange), h.steps.add(o.rescaled);
+    h.cache.add(c.count), h.cache.add(c.edgeBase), h.cache.add(c.searchA), h.cache.add(c.searchB);
+    for (int i = 0; i < 3; ++i)
+        h.cache.add(c.indexA[i]), h.cache.add(c.indexB[i]);
+    h.interval.add(o.certified), h.interval.add(o.lower), h.interval.add(o.upper);
+    // "all" in a fixed field order, independent of the groups above.
+    for (const Hash* g : {&h.distance, &h.witness, &h.normal, &h.steps, &h.cache, &h.interval})
+        h.all.add(g->h);
+}
+
+struct Counts
+{
+    int queries = 0, certified = 0, apart = 0, broken = 0;
+};
+
+template <class T> void run(const char* name, std::uint64_t seed, int pairs)
+{
+    Source src(seed);
+    Hashes h;
+    Counts n;
+    for (int i = 0; i < pairs; ++i)
+    {
+        const Shape<T> a = randomShape<T>(src), b = randomShape<T>(src);
+        gjk::DistanceInput<T> in{{a.points.data(), int(a.points.size()), a.radius},
+                                 {b.points.data(), int(b.points.size()), b.radius},
+                                 randomTransform<T>(src, 2),
+                                 randomTransform<T>(src, 12)};
+        gjk::Options o;
+        o.certify = (i & 1) != 0;
+        o.stopping = (i >> 1) % 3 == 2 ? gjk::StoppingRule::DualityGap : gjk::StoppingRule::RepeatedSupport;
+        o.direction = (i >> 1) % 4 == 3 ? gjk::SearchDirection::ClosestPoint : gjk::SearchDirection::EdgePerpendicular;
+        gjk::SimplexCache cache;
+        for (int pass = 0; pass < 2; ++pass) // cold, then warm after B moved
+        {
+            if (pass == 1) // one addition of two exact values: the same rounding in every build
+                in.transformB.p = {in.transformB.p.x + src.ratio<T>(src.between(-64, 64), 1024),
+                                   in.transformB.p.y + src.ratio<T>(src.between(-64, 64), 1024)};
+            const gjk::DistanceOutput<T> out = gjk::distance(in, cache, o);
+            hashOutput(h, out, cache);
+            ++n.queries;
+            n.apart += out.distance > T(0);
+            if (out.certified)
+            {
+                ++n.certified;
+                // Sanity, not bits: the interval is ordered and the computed distance is near it.
+                const double d = double(out.distance), slack = 1e-3 * (1 + d);
+                if (!(out.lower <= out.upper) || d < out.lower - slack || d > out.upper + slack)
+                    ++n.broken;
+            }
+        }
+    }
+    const std::pair<const char*, const Hash*> groups[] = {{"distance", &h.distance}, {"witness", &h.witness},
+                                                          {"normal", &h.normal},     {"steps", &h.steps},
+                                                          {"cache", &h.cache},       {"interval", &h.interval},
+                                                          {"all", &h.all}};
+    for (const auto& [group, hash] : groups)
+        std::printf("%s %-8s %016llx\n", name, group, (unsigned long long)hash->h);
+    std::printf("%s queries %d certified %d apart %d\n", name, n.queries, n.certified, n.apart);
+    if (n.broken)
+    {
+        std::printf("%s BROKEN: %d certified intervals inverted or far from the distance\n", name, n.broken);
+        std::fflush(stdout);
+        std::exit(1);
+    }
+}
+
+} // namespace
+
+int main()
+{
+    // 10,000 pairs per type, each queried cold and warm: 20,000 queries per type, 40,000 in all.
+    run<float>("float ", 20260601, 10000);
+    run<double>("double", 20260602, 10000);
+    return 0;
+}
