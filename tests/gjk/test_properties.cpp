@@ -141,14 +141,15 @@ TEMPLATE_TEST_CASE("cache: the binary search's start is validated at every bound
                    "[gjk][cache][properties]", float, double)
 {
     using T = TestType;
-    // A regular-ish 20-gon (more than 16 points: SupportStrategy::BinarySearch gallops from
-    // SimplexCache::searchA), radius 1 around (4, 0), against the origin. Its poison is the origin
-    // (a read one or two past either end puts w = 0 into the simplex). A start outside [0, 20)
-    // must fall back to indexA[0].
+    // A regular 20-gon (more than 16 points: SupportStrategy::BinarySearch gallops from
+    // SimplexCache::searchA), radius 1 around (4, 0), against the origin, its vertex 0 at (3, 0):
+    // the closest one, so the warm start's first search direction (-1, 0) has its maximum at the
+    // vertex a start of 20 wraps to. Its poison is the origin (a read one to three past either end
+    // puts w = 0 into the simplex). A start outside [0, 20) must fall back to indexA[0].
     std::vector<Vec2<T>> ring;
     for (int i = 0; i < 20; ++i)
     {
-        const double t = 2 * 3.14159265358979323846 * i / 20;
+        const double t = 3.14159265358979323846 * (1 + i / 10.0);
         ring.push_back({T(4 + std::cos(t)), T(std::sin(t))});
     }
     Guarded<T> A({}, {0, 0});
@@ -162,8 +163,10 @@ TEMPLATE_TEST_CASE("cache: the binary search's start is validated at every bound
     o.support = SupportStrategy::BinarySearch;
     SimplexCache coldCache;
     const auto cold = distance(in, coldCache, o);
-    // The closest vertex is (4 + cos(pi), sin(pi)) = index 10, about 3 from the origin.
+    // The closest vertex is index 0, (4 + cos(pi), sin(pi)) = (3, 1.2e-16), about 3 away.
     REQUIRE(cold.distance > T(2.9));
+    REQUIRE(coldCache.count == 1);
+    REQUIRE(coldCache.indexA[0] == 0);
     for (int start : {-3, -2, 20, 21, 22})
     {
         for (int which = 0; which < 2; ++which)
