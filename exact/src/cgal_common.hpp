@@ -5,6 +5,8 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include <algorithm>
+#include <cstddef>
 #include <type_traits>
 #include <vector>
 
@@ -48,6 +50,18 @@ mpq_class toMpq(const NT& v) {
 
 inline QPoint toQ(const P2& p) { return {toMpq(p.x()), toMpq(p.y())}; }
 
+// Rotates a counterclockwise vertex list so that it starts at its largest vertex in (x, y) order:
+// the first vertex of Z, where locate()'s fan starts (docs/exact.md, "Witnesses").
+template <class T, class Point>
+void startAtLargestXY(std::vector<T>& v, Point&& point) {
+    if (v.empty()) return;
+    const K::Less_xy_2 less;
+    std::size_t best = 0;
+    for (std::size_t k = 1; k < v.size(); ++k)
+        if (less(point(v[best]), point(v[k]))) best = k;
+    std::rotate(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(best), v.end());
+}
+
 // locate() predicates on a vector of Z vertices, evaluated by the kernel's filtered predicates.
 struct KernelPredicates {
     const std::vector<P2>& z;
@@ -64,7 +78,7 @@ struct KernelPredicates {
 };
 
 // Locates the closest feature of Z and constructs the exact result; provenance(k, a, b) gives the
-// A and B points whose difference is Z vertex k.
+// A and B points whose difference a - b is Z vertex k.
 template <class Provenance>
 ExactResult solve(const std::vector<P2>& z, Provenance&& provenance) {
     KernelPredicates pr{z};
@@ -77,7 +91,7 @@ ExactResult solve(const std::vector<P2>& z, Provenance&& provenance) {
         provenance(ids[t], a, b);
         as[t] = toQ(a);
         bs[t] = toQ(b);
-        zs[t] = {bs[t].x - as[t].x, bs[t].y - as[t].y};
+        zs[t] = {as[t].x - bs[t].x, as[t].y - bs[t].y};
     }
     return construct(f, zs, as, bs);
 }

@@ -1,5 +1,5 @@
-// Route HullOfDifferences: every difference b_j - a_i of the transformed points, CGAL::convex_hull_2
-// of those n*m points gives Z = hull(B) - hull(A) directly; then the shared closest-feature step.
+// Route HullOfDifferences: every difference a_i - b_j of the transformed points, CGAL::convex_hull_2
+// of those n*m points gives Z = hull(A) - hull(B) directly; then the shared closest-feature step.
 // O(nm log nm): the reference construction, slow for large inputs.
 #include "cgal_common.hpp"
 
@@ -18,7 +18,7 @@ ExactResult hullOfDifferences(const Shape& sa, const Shape& sb) {
     std::vector<P2> diff;
     diff.reserve(n * m);
     for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < m; ++j) diff.push_back(b[j] - (a[i] - CGAL::ORIGIN));
+        for (std::size_t j = 0; j < m; ++j) diff.push_back(a[i] - (b[j] - CGAL::ORIGIN));
     // Hull over indices (index = i*m + j keeps the provenance of every hull vertex).
     std::vector<std::size_t> idx(diff.size());
     std::iota(idx.begin(), idx.end(), std::size_t(0));
@@ -26,6 +26,7 @@ ExactResult hullOfDifferences(const Shape& sa, const Shape& sb) {
     std::vector<std::size_t> hull;
     CGAL::convex_hull_2(idx.begin(), idx.end(), std::back_inserter(hull),
                         Traits(CGAL::make_property_map(diff)));
+    startAtLargestXY(hull, [&](std::size_t k) -> const P2& { return diff[k]; });
     std::vector<P2> z;
     z.reserve(hull.size());
     for (std::size_t k : hull) z.push_back(diff[k]);

@@ -1,5 +1,5 @@
 // Route MinkowskiSum2: CGAL::convex_hull_2 of each transformed point set, then
-// CGAL::minkowski_sum_2(hull(B), hull(-A)) (reduced convolution on Polygon_2), then the shared
+// Z = CGAL::minkowski_sum_2(hull(A), hull(-B)) (reduced convolution on Polygon_2), then the shared
 // closest-feature step. minkowski_sum_2 needs simple polygons, so when either hull is a point or a
 // segment, Z is the convex hull of the (at most 2n or 2m) pairwise vertex differences instead.
 //
@@ -67,10 +67,10 @@ ExactResult minkowskiSum2(const Shape& sa, const Shape& sb) {
 
     std::vector<P2> z;
     if (ha.size() >= 3 && hb.size() >= 3) {
-        CGAL::Polygon_2<K> pb, pna;
-        for (std::size_t i : hb) pb.push_back(bs[i]);
-        for (std::size_t i : ha) pna.push_back(P2(-as[i].x(), -as[i].y()));  // point reflection keeps ccw order
-        const CGAL::Polygon_with_holes_2<K> sum = CGAL::minkowski_sum_2(pb, pna);
+        CGAL::Polygon_2<K> pa, pnb;
+        for (std::size_t i : ha) pa.push_back(as[i]);
+        for (std::size_t j : hb) pnb.push_back(P2(-bs[j].x(), -bs[j].y()));  // point reflection keeps ccw order
+        const CGAL::Polygon_with_holes_2<K> sum = CGAL::minkowski_sum_2(pa, pnb);
         const CGAL::Polygon_2<K>& outer = sum.outer_boundary();
         std::vector<P2> raw(outer.vertices_begin(), outer.vertices_end());
         // The convolution may leave vertices in the middle of an edge: keep the corners only, so
@@ -80,24 +80,25 @@ ExactResult minkowskiSum2(const Shape& sa, const Shape& sb) {
             if (!CGAL::collinear(raw[(t + k - 1) % k], raw[t], raw[(t + 1) % k])) z.push_back(raw[t]);
     } else {
         std::vector<P2> diff;
-        for (std::size_t j : hb)
-            for (std::size_t i : ha) diff.push_back(bs[j] - (as[i] - CGAL::ORIGIN));
+        for (std::size_t i : ha)
+            for (std::size_t j : hb) diff.push_back(as[i] - (bs[j] - CGAL::ORIGIN));
         CGAL::convex_hull_2(diff.begin(), diff.end(), std::back_inserter(z), K());
     }
+    startAtLargestXY(z, [](const P2& p) -> const P2& { return p; });
 
-    // Provenance of a Z vertex v: the hull vertex p of A for which v + p is a hull vertex of B.
-    std::vector<std::size_t> sortedB = hb;
+    // Provenance of a Z vertex v: the hull vertex q of B for which v + q is a hull vertex of A.
+    std::vector<std::size_t> sortedA = ha;
     const K::Less_xy_2 less;
-    std::sort(sortedB.begin(), sortedB.end(), [&](std::size_t i, std::size_t j) { return less(bs[i], bs[j]); });
+    std::sort(sortedA.begin(), sortedA.end(), [&](std::size_t i, std::size_t j) { return less(as[i], as[j]); });
     return solve(z, [&](int k, P2& pa, P2& pb) {
         const P2& v = z[k];
-        for (std::size_t i : ha) {
-            const P2 cand = as[i] + (v - CGAL::ORIGIN);
-            auto it = std::lower_bound(sortedB.begin(), sortedB.end(), cand,
-                                       [&](std::size_t j, const P2& c) { return less(bs[j], c); });
-            if (it != sortedB.end() && bs[*it] == cand) {
-                pa = a[i];  // unscaled
-                pb = b[*it];
+        for (std::size_t j : hb) {
+            const P2 cand = bs[j] + (v - CGAL::ORIGIN);
+            auto it = std::lower_bound(sortedA.begin(), sortedA.end(), cand,
+                                       [&](std::size_t i, const P2& c) { return less(as[i], c); });
+            if (it != sortedA.end() && as[*it] == cand) {
+                pa = a[*it];  // unscaled
+                pb = b[j];
                 return;
             }
         }

@@ -32,8 +32,8 @@ ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, cons
         r.wb = {bs[0].x + t * (bs[1].x - bs[0].x), bs[0].y + t * (bs[1].y - bs[0].y)};
         return r;
     }
-    // Triangle: O = sum l_t zs[t] with barycentric l_t, so sum l_t as[t] = sum l_t bs[t] is a
-    // common point of both hulls.
+    // Triangle: O = sum l_t zs[t] = sum l_t (as[t] - bs[t]) with barycentric l_t, so
+    // sum l_t as[t] = sum l_t bs[t] is a common point of both hulls.
     const mpq_class l0 = zs[1].x * zs[2].y - zs[1].y * zs[2].x;
     const mpq_class l1 = zs[2].x * zs[0].y - zs[2].y * zs[0].x;
     const mpq_class l2 = zs[0].x * zs[1].y - zs[0].y * zs[1].x;

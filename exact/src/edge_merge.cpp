@@ -1,5 +1,5 @@
 // Route EdgeMerge: hulls of A and B (Andrew's monotone chain), the linear-time Minkowski difference
-// hull(B) - hull(A) by merging the two hulls' edge sequences by angle, then the predicate-located
+// Z = hull(A) - hull(B) by merging the two hulls' edge sequences by angle, then the predicate-located
 // closest feature and one exact construction.
 //
 // Arithmetic: every input double is m * 2^e, so a transformed coordinate c*x - s*y + px is a dyadic
@@ -248,8 +248,8 @@ struct Side {
     }
 };
 
-// Half-plane class of a nonzero vector for angle ordering in [0, 2*pi): 0 for angles in [0, pi).
-int half(int sy, int sx) { return (sy > 0 || (sy == 0 && sx > 0)) ? 0 : 1; }
+// Half-plane class of a nonzero vector for angle ordering in [pi, 3*pi): 0 for angles in [pi, 2*pi).
+int half(int sy, int sx) { return (sy < 0 || (sy == 0 && sx < 0)) ? 0 : 1; }
 
 class Solver {
 public:
@@ -269,7 +269,7 @@ public:
         return build(f);
     }
 
-    // ---- locate() interface: Z vertex k is B point zb[k] minus A point za[k].
+    // ---- locate() interface: Z vertex k is A point za[k] minus B point zb[k].
     int orientO(int i, int j) {
         const int s = sign(zx[i] * zy[j] - zy[i] * zx[j]);
         if (s != kUnsure) return s;
@@ -305,22 +305,22 @@ private:
             zhave.assign(za.size(), 0);
         }
         if (!zhave[k]) {
-            zex[k] = sub(B.exact(zb[k]), A.exact(za[k]));
+            zex[k] = sub(A.exact(za[k]), B.exact(zb[k]));
             zhave[k] = 1;
         }
         return zex[k];
     }
 
-    // Compares the directions of edge vectors u = B[j2] - B[j1] and w = A[i1] - A[i2] (an edge of -A)
-    // by angle in [0, 2*pi): -1 if u comes first, 1 if w does, 0 if they point the same way.
-    int cmpAngle(int j1, int j2, int i1, int i2) {
-        const I ux = B.x[j2] - B.x[j1], uy = B.y[j2] - B.y[j1];
-        const I wx = A.x[i1] - A.x[i2], wy = A.y[i1] - A.y[i2];
+    // Compares the directions of edge vectors u = A[i2] - A[i1] and w = B[j1] - B[j2] (an edge of -B)
+    // by angle in [pi, 3*pi): -1 if u comes first, 1 if w does, 0 if they point the same way.
+    int cmpAngle(int i1, int i2, int j1, int j2) {
+        const I ux = A.x[i2] - A.x[i1], uy = A.y[i2] - A.y[i1];
+        const I wx = B.x[j1] - B.x[j2], wy = B.y[j1] - B.y[j2];
         int sux = sign(ux), suy = sign(uy), swx = sign(wx), swy = sign(wy);
         int sc = sign(ux * wy - uy * wx);
         if (sux == kUnsure || suy == kUnsure || swx == kUnsure || swy == kUnsure || sc == kUnsure) {
-            const E2 u = sub(B.exact(j2), B.exact(j1));
-            const E2 w = sub(A.exact(i1), A.exact(i2));
+            const E2 u = sub(A.exact(i2), A.exact(i1));
+            const E2 w = sub(B.exact(j1), B.exact(j2));
             sux = sgn(u.x);
             suy = sgn(u.y);
             swx = sgn(w.x);
@@ -332,11 +332,12 @@ private:
         return -sc;  // cross(u, w) > 0: u has the smaller angle
     }
 
-    // Minkowski difference hull(B) + hull(-A): both edge sequences start at their lowest (then
-    // leftmost) vertex, so edge angles increase through [0, 2*pi) in each; merge them.
+    // Minkowski difference Z = hull(A) + hull(-B): both edge sequences start at their highest (then
+    // rightmost) vertex, so edge angles increase through [pi, 3*pi) in each; merge them. Z's first
+    // vertex is its highest-rightmost one, where locate()'s fan starts (docs/exact.md, "Witnesses").
     void merge() {
         const int na = static_cast<int>(ha.size()), nb = static_cast<int>(hb.size());
-        // Lowest-leftmost vertex of -A is the highest-rightmost vertex of A.
+        // Highest-rightmost vertex of -B is the lowest-leftmost vertex of B.
         int sa = 0, sb = 0;
         for (int t = 1; t < na; ++t)
             if (A.cmpYX(ha[t], ha[sa]) > 0) sa = t;
@@ -356,17 +357,17 @@ private:
             } else if (j == eb) {
                 ++i;
             } else {
-                const int c = cmpAngle(bv(j), bv(j + 1), av(i), av(i + 1));
-                if (c <= 0) ++j;
-                if (c >= 0) ++i;
+                const int c = cmpAngle(av(i), av(i + 1), bv(j), bv(j + 1));
+                if (c <= 0) ++i;
+                if (c >= 0) ++j;
             }
         } while (i < ea || j < eb);
         const std::size_t k = za.size();
         zx.resize(k);
         zy.resize(k);
         for (std::size_t t = 0; t < k; ++t) {
-            zx[t] = B.x[zb[t]] - A.x[za[t]];
-            zy[t] = B.y[zb[t]] - A.y[za[t]];
+            zx[t] = A.x[za[t]] - B.x[zb[t]];
+            zy[t] = A.y[za[t]] - B.y[zb[t]];
         }
     }
 
@@ -403,7 +404,7 @@ private:
             return r;
         }
         // Triangle (overlap): barycentric coordinates of O in (V0, V1, V2), with equal weights on
-        // the A and B points: sum l_t (b_t - a_t) = O, so sum l_t a_t = sum l_t b_t is in both hulls.
+        // the A and B points: sum l_t (a_t - b_t) = O, so sum l_t a_t = sum l_t b_t is in both hulls.
         const E2 &V0 = z(f.i), &V1 = z(f.j), &V2 = z(f.l);
         const long e = std::min({V0.e, V1.e, V2.e});
         E2 v[3];

@@ -232,14 +232,15 @@ Result finish(const ExactResult& e, double rA, double rB, bool exactWitnesses) {
         const mpq_class* rootp = sqrtIsRational(e.squared, root) ? &root : nullptr;
         SqrtEnclosure sq(e.squared);
         roundDistanceImpl(e.squared, rA, rB, rootp, &sq, r.distance, r.lower, r.upper);
-        // A's point moves forward by rA along z/|z| (z = wb - wa), B's backward by rB.
+        // z = wa - wb points from B's point to A's: A's point moves by rA along -z/|z| (toward B),
+        // B's by rB along z/|z| (toward A).
         if (rootp) {  // exact rational path: needs reduced fractions
             const QPoint wa = canonical(e.wa), wb = canonical(e.wb), z = canonical(e.z);
-            r.witnessA = {roundShifted(wa.x, rA, z.x, rootp, sq), roundShifted(wa.y, rA, z.y, rootp, sq)};
-            r.witnessB = {roundShifted(wb.x, -rB, z.x, rootp, sq), roundShifted(wb.y, -rB, z.y, rootp, sq)};
+            r.witnessA = {roundShifted(wa.x, -rA, z.x, rootp, sq), roundShifted(wa.y, -rA, z.y, rootp, sq)};
+            r.witnessB = {roundShifted(wb.x, rB, z.x, rootp, sq), roundShifted(wb.y, rB, z.y, rootp, sq)};
         } else {
-            r.witnessA = {roundShifted(e.wa.x, rA, e.z.x, rootp, sq), roundShifted(e.wa.y, rA, e.z.y, rootp, sq)};
-            r.witnessB = {roundShifted(e.wb.x, -rB, e.z.x, rootp, sq), roundShifted(e.wb.y, -rB, e.z.y, rootp, sq)};
+            r.witnessA = {roundShifted(e.wa.x, -rA, e.z.x, rootp, sq), roundShifted(e.wa.y, -rA, e.z.y, rootp, sq)};
+            r.witnessB = {roundShifted(e.wb.x, rB, e.z.x, rootp, sq), roundShifted(e.wb.y, rB, e.z.y, rootp, sq)};
         }
     }
     if (exactWitnesses) {

@@ -18,7 +18,7 @@ struct QPoint {
 struct ExactResult {
     bool overlap = false;
     mpq_class squared;  // canonical
-    QPoint z;           // closest point of Z = hull(B) - hull(A) to the origin (zero when overlapping); z = wb - wa
+    QPoint z;           // closest point of Z = hull(A) - hull(B) to the origin (zero when overlapping); z = wa - wb
     QPoint wa, wb;      // closest points of hull(A) and hull(B) (a common point when overlapping)
     // z, wa and wb may be unreduced fractions (denominator > 0, not in lowest terms): only finish()
     // reads them, and it reduces them before any use that needs canonical rationals.
@@ -131,7 +131,7 @@ Feature locate(int k, Pr& pr) {
 
 // Builds the exact result from a located feature, given for each of the feature's vertices (in the
 // order i, j, l; 1, 2 or 3 of them as the kind needs) the exact Z vertex zs[], and the hull points
-// as[] of A and bs[] of B with zs[t] = bs[t] - as[t]. Plain rationals: used by the CGAL routes.
+// as[] of A and bs[] of B with zs[t] = as[t] - bs[t]. Plain rationals: used by the CGAL routes.
 ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, const QPoint* bs);
 
 }  // namespace exact::detail

@@ -25,8 +25,9 @@ struct Shape {
                                 // (c, s need NOT satisfy c^2 + s^2 = 1 exactly)
 };
 
-// Three independent constructions of the Minkowski difference hull(B) - hull(A); all give the same
-// exact results (the tests check this with == on exact rationals). Default is the fastest.
+// Three independent constructions of the Minkowski difference Z = hull(A) - hull(B) (the library's
+// Z = A - B); all give the same exact results (the tests check this with == on exact rationals).
+// Default is the fastest.
 enum class Route { HullOfDifferences, MinkowskiSum2, EdgeMerge, Default = EdgeMerge };
 
 // "hull-of-differences", "minkowski-sum-2", "edge-merge".
@@ -43,7 +44,7 @@ struct ExactPoint {
 };
 
 struct Result {
-    bool overlap = false;                // exact: origin inside or on boundary of hull(B) - hull(A) (before radii)
+    bool overlap = false;                // exact: origin inside or on boundary of hull(A) - hull(B) (before radii)
     std::string squaredNum, squaredDen;  // exact squared distance between the hulls (before radii), lowest terms, den > 0
     double squared = 0;                  // that rational rounded to nearest double (may be +inf above DBL_MAX)
     double distance = 0;                 // correctly rounded (to nearest) max(0, sqrt(squared) - rA - rB)
