@@ -453,3 +453,22 @@ TEST_CASE("certify: containment needs certified orientation signs, not rounded o
     CHECK(out2.certified);
     CHECK(out2.upper == 0);
 }
+
+// --- Support points ------------------------------------------------------------------------------
+
+TEMPLATE_TEST_CASE("support: ties keep the lowest index", "[gjk][support][properties]", float, double)
+{
+    using T = TestType;
+    // distance.hpp, findSupport: a repeated support point is recognised by its index, so among tied
+    // vertices the scan must return the same one every time, the lowest index. The unit square
+    // (0,0) (1,0) (1,1) (0,1) and a point twice: along +x vertices 1 and 2 tie (value 1), along +y
+    // vertices 2 and 3, along (1, 1) only vertex 2, along -x vertices 0 and 3, along -y 0 and 1.
+    const Vec2<T> square[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1, 1}};
+    const Polygon<T> p{square, 5, T(0)};
+    CHECK(findSupport(p, Vec2<T>{1, 0}) == 1);
+    CHECK(findSupport(p, Vec2<T>{0, 1}) == 2);
+    CHECK(findSupport(p, Vec2<T>{1, 1}) == 2); // not the repeated point 4
+    CHECK(findSupport(p, Vec2<T>{-1, 0}) == 0);
+    CHECK(findSupport(p, Vec2<T>{0, -1}) == 0);
+    CHECK(findSupport(p, Vec2<T>{-1, 1}) == 3);
+}
