@@ -40,8 +40,7 @@
 #endif
 
 // The small steps of one GJK iteration (the Minkowski support, the search direction) are forced
-// inline: GCC 12 kept them as calls (a 64-byte SimplexVertex returned through memory), and
-// inlining them measured 7-11 % faster cold and 5-13 % faster warm (docs/speed.md, stop 9).
+// inline. Why: docs/speed.md, "Forced inlining".
 #if defined(__GNUC__)
 #define GJK_INLINE [[gnu::always_inline]] inline
 #else
@@ -165,7 +164,7 @@ template <class T> struct Simplex
 // output cache back in for the next query between the same shapes.
 // A final edge is stored in canonical order, the origin on the left of Z's edge from slot 0 to
 // slot 1: a warm start's first search direction then always takes the same side of its sign test,
-// which the branch predictor learns (warm queries 2-5 % faster, docs/speed.md). `edgeBase` is the
+// which the branch predictor learns (why: docs/speed.md, "Canonical cache order"). `edgeBase` is the
 // slot the distance was measured from (the query's own first vertex), so that a repeated query
 // returns the very same bits as the cold one.
 struct SimplexCache
@@ -343,7 +342,7 @@ template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
 // rounding, unless a value over- or underflows), and every rounding of the query with it: the
 // answer of the scaled problem times 2^-k is the answer the query would give if the exponent range
 // were unbounded. A query whose support points leave Tolerances<T>'s safe range is run once more,
-// scaled so that its extent is about 1 (issue 12: two separated shapes at a scale of 1e-300 were
+// scaled so that its extent is about 1 (without it, two separated shapes at a scale of 1e-300 were
 // answered 0).
 
 // v * 2^k; `inexact` is set when that loses bits (overflow or gradual underflow).
@@ -494,9 +493,9 @@ GJK_INLINE SimplexVertex<T> findMinkowskiSupport(Shape& A, Shape& B, Vec2<T> d)
 // So an edge shorter than minEdgeComponent (2^-484 in double, 2^-51 in float, at or just above
 // Tolerances<T>::minCoordinate) in both components is multiplied by the power of two that brings
 // it to size ~1, exactly, and nothing else changes in exact arithmetic. Unscaled, such an edge
-// lost the query (issue 22's reproducers, validation/cases/tiny-edges.json): its squared length
-// went subnormal (a 3.5e-162 edge in double, 5.9e-23 in float: a distance 10 % off, the issue
-// reported), or below 1/max, where the weights' reciprocal 1/(u + v) overflowed (inf weights, NaN
+// lost the query (reproducers found by an adversarial search, validation/cases/tiny-edges.json): its
+// squared length went subnormal (a 3.5e-162 edge in double, 5.9e-23 in float: a distance 10 % off),
+// or below 1/max, where the weights' reciprocal 1/(u + v) overflowed (inf weights, NaN
 // witness points, flagged outOfRange with no answer). Scaled, u + v = |e|^2 ~ 1 and the products
 // with in-range points stay normal.
 template <class T> [[gnu::noinline]] Vec2<T> scaleUpEdge(Vec2<T> e)
@@ -654,7 +653,7 @@ template <class T> void solve3(Simplex<T>& s)
     // Rounding made the nine signs inconsistent (a nearly degenerate triangle): no region matched.
     // Keep the closest of the three edges, each solved as in section 1. Never divides by the area.
     // The first edge is kept unless a later one is strictly closer: when every squared distance
-    // overflows (inf or NaN compare false), edge w1w2 is kept, never an unset simplex (issue 12:
+    // overflows (inf or NaN compare false), edge w1w2 is kept, never an unset simplex (once,
     // coordinates near 1e265 left the simplex empty and its weights uninitialised).
     Simplex<T> best;
     T bestDist2 = T(0);
@@ -831,7 +830,7 @@ void certifyDistance(const DistanceInput<T>& in, const Simplex<T>& s, bool useRa
     // Certified only when both ends are numbers and the upper end is finite: an overflow anywhere
     // above (world coordinates beyond the double range, inf - inf = NaN) must never pass for a
     // bound. std::max(0, NaN) is 0, which once turned an overflowed upper end into a certified
-    // [0, 0] (issue 12, defect 2: points near 1.5e308 rotated by 45 degrees). Comparisons with NaN
+    // [0, 0] (points near 1.5e308 rotated by 45 degrees). Comparisons with NaN
     // are false, so each test below fails closed.
     if (lower >= 0 && upper <= std::numeric_limits<double>::max() && lower <= std::max(upper, 0.0))
     {
@@ -940,8 +939,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
 
     // Start from the cache (warm) or, cold, from "an arbitrary initial simplex": the support point
     // of Z in the direction from A's origin to B's, whose closest points usually face each other
-    // (this saved a third of the iterations on the `random` family: 2.75 -> 1.88 on average,
-    // docs/speed.md), or vertex 0 of each shape when the origins coincide. Stale indices (shapes
+    // (why: docs/speed.md, "Cold start between the shapes"), or vertex 0 of each shape when the
+    // origins coincide. Stale indices (shapes
     // changed) fall back to a cold start.
     Simplex<T> simplex;
     bool cacheValid = cache.count >= 1 && cache.count <= 3;
@@ -987,8 +986,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     {
         // Remember the simplex vertices to detect a repeated support point (case 1).
         // Index pairs packed in one integer each; unused slots hold a pair no vertex can have.
-        // Three fixed comparisons instead of a loop over 1 to 3 vertices: its exit branch was
-        // mispredicted on most iterations (docs/speed.md).
+        // Three fixed comparisons instead of a loop over 1 to 3 vertices. Why: docs/speed.md,
+        // "Repeated-support check".
         for (int i = 0; i < 3; ++i)
             saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
         savedCount = simplex.count;
@@ -1041,7 +1040,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
             out.stop = StopReason::RepeatedSupport;
             // Usually the repeated point is a vertex of the final simplex (of at most two
             // vertices here). When rounding made the last solve cull it (a nearly degenerate
-            // triangle, issue 12 defect 7), the cache keeps the simplex before that solve.
+            // triangle, found by the fuzzer), the cache keeps the simplex before that solve.
             culledRepeat = key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
                            (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
             break;
@@ -1109,7 +1108,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
 
     // Back to world coordinates: the points through the frame's transform, the normal through its
     // rotation. A's frame of a rotation qA that is not a unit vector in T (a float engine's seen in
-    // double, issue 13) measures lengths in units of |qA|: the distance is multiplied by |qA|, the
+    // double) measures lengths in units of |qA|: the distance is multiplied by |qA|, the
     // normal (which rotate() lengthened by |qA|) divided by it. Skipped for a unit rotation
     // (isUnitRotation, the same test as invMulTransforms'), as for every world-frame query
     // (world.q is the identity). docs/error-bound.md, term 5.
@@ -1223,9 +1222,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
 
     // Out of range: the retry, at the very end, warm-started from the cache this pass just wrote
     // (any valid indices are a legitimate start; the answer depends on the input and the incoming
-    // cache only). One exit: an early return of the retry's output, or a copy of the incoming
-    // cache for it, each cost the common query 8-15 % more instructions (callgrind,
-    // docs/speed.md).
+    // cache only). One exit, no copy of the incoming cache. Why: docs/speed.md, "One exit for the
+    // rescaled retry".
     // Every support point exactly 0 is not a range failure by itself (two shapes that overlap
     // exactly), but it is also what shapes of subnormal size give once their transformed points
     // underflow (float inputs near 1e-45: exact distance 1.4e-45, answered 0; found by

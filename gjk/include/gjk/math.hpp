@@ -48,13 +48,14 @@ template <class T> struct Tolerances
     // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below
     // R = sqrt(min_normal / u) the products R^2 fall under min_normal/u and lose relative accuracy
     // to gradual underflow (float: 4.4e-16, double: 1.5e-146). A query whose support points leave
-    // [minCoordinate, maxCoordinate] is flagged DistanceOutput::outOfRange (issue: float overflow).
+    // [minCoordinate, maxCoordinate] runs again rescaled, and is flagged DistanceOutput::outOfRange
+    // only when that cannot help (distance.hpp, "Rescaling").
     static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
     static inline const T minCoordinate =
         std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
     // A rotation whose computed squared size c^2 + s^2 is within this of 1 is used as a unit one:
     // A's frame inverts it by transposing it and skips the division by |qA|^2 and the final
-    // multiplication by |qA| (issue 13). The computed size carries 2u, so the true |qA|^2 is then
+    // multiplication by |qA| (docs/gjk.md, "Transforms"). The computed size carries 2u, so the true |qA|^2 is then
     // within 4u of 1, and the transpose within 4u of the inverse: docs/error-bound.md, term 1
     // (6u instead of the division's 5u). Why not exactly 1: a double (cos t, sin t) pair has
     // c^2 + s^2 != 1 in 22 % of random angles, and a test against exactly 1 made the branch
@@ -78,7 +79,7 @@ template <class T> constexpr bool isUnitRotation(T n2)
 // apply the very same map to judge the result. (c, s) need not be a unit vector: any finite
 // (c, s) != (0, 0) is the map Q = [c -s; s c] = |q| R, a rotation R times the size
 // |q| = sqrt(c^2 + s^2). A float engine's (cos, sin) pair is a unit vector only to float rounding
-// (|c^2 + s^2 - 1| up to ~1e-7 seen in double, issue 13), and the query computes the distance for
+// (|c^2 + s^2 - 1| up to ~1e-7 seen in double), and the query computes the distance for
 // the map as given (docs/gjk.md, "Transforms").
 template <class T> struct Rot
 {
