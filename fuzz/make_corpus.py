@@ -4,9 +4,10 @@
     python3 fuzz/make_corpus.py            (from the repository root; rewrites fuzz/corpus/)
 
 fuzz/corpus/fuzz_case_file/: the case files under validation/cases/ and tests/validation/data/,
-the reproducers of issue 12 (defects 2, 3, 6 and 7) and hand-made bad files.
-fuzz/corpus/fuzz_distance/: every case of validation/cases/, issue 12's defects 2 and 7 and
-shapes near 1e265 (defect 1), encoded in fuzz_distance's byte layout (fuzz_distance.cpp,
+the reproducers of the hardening against hostile inputs (among them an overflowed certified
+interval and warm and cold answers that differed, below) and hand-made bad files.
+fuzz/corpus/fuzz_distance/: every case of validation/cases/, those two reproducers and
+shapes near 1e265 (they once left the simplex uninitialised), encoded in fuzz_distance's byte layout (fuzz_distance.cpp,
 `decode`) for a few option sets. Inputs the fuzzer found (reproducers of fixed bugs) are added by hand as
 fuzz/corpus/<target>/finding-*: this script leaves files of that name alone.
 """
@@ -17,11 +18,11 @@ import struct
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORPUS = os.path.join(ROOT, "fuzz", "corpus")
 
-# Issue 12, defect 2: the certified interval on overflow (unit rotations, coordinates 1.5e308).
+# The certified interval on overflow (unit rotations, coordinates 1.5e308).
 DEFECT2 = ('{"format":"gjk-cases/1","cases":[{"name":"r1","a":{"points":[[1.5e308,-1.4e308]],'
            '"radius":1,"transform":{"q":[0.7071067811865476,0.7071067811865476]}},"b":{"points":'
            '[[1.5e308,-1.5e308]],"transform":{"q":[0.7071067811865476,0.7071067811865476]}}}]}')
-# Issue 12, defect 7: warm and cold answers differ (a vertex at 3.6e18).
+# Warm and cold answers differed (a vertex at 3.6e18).
 DEFECT7 = ('{"format":"gjk-cases/1","cases":[{"name":"s6","a":{"points":[[0.0099668502807617188,'
            '-0.7109375]],"transform":{"p":[-4.7393143177032471e-05,-1.862645149230957e-07],"q":'
            '[0.54540534970280896,0.83817241932406528]}},"b":{"points":[[-0.7109375,'

@@ -1,4 +1,4 @@
-// Google Benchmark programs for the GJK query (issue "Speed"). Cases are generated here with the
+// Google Benchmark programs for the GJK query (docs/speed.md). Cases are generated here with the
 // same distribution as the runner's `random` family (3 to 8 vertices on circles of radius 0.5 to
 // 2, positions in [-4, 4]^2, random rotations), from a fixed seed, so runs are comparable.
 //   build/release/gjk/gjk_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -108,7 +108,7 @@ template <class T> void BM_Random(benchmark::State& state)
     setNsPerQuery(state, in.size());
 }
 
-// The cold query on a float engine's rotations (issue 13): against BM_Random, the cost of the
+// The cold query on a float engine's rotations (transforms as given, docs/gjk.md): against BM_Random, the cost of the
 // non-unit path (docs/speed.md, "Transforms as given").
 template <class T> void BM_RandomFloatRotations(benchmark::State& state)
 {

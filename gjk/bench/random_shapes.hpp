@@ -1,4 +1,4 @@
-// The issue "Speed"'s `random` distribution, shared by gjk_bench and the GJK tests: 3 to 8 points
+// The speed targets' `random` distribution, shared by gjk_bench and the GJK tests: 3 to 8 points
 // on a circle of radius 0.5 to 2 (sorted by angle, so in convex order), placed in [-4, 4]^2 with a
 // random rotation. Generated in double; `converted` rounds a shape to float or double.
 #pragma once

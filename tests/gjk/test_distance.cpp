@@ -2,7 +2,7 @@
 // numerical issues the talk lists, witness points, radii, transforms, warm start, and the
 // symmetries every distance must have. Expected values are derived by hand beside each case.
 #include "gjk/distance.hpp"
-#include "random_shapes.hpp" // gjk/bench: the issue "Speed"'s random distribution
+#include "random_shapes.hpp" // gjk/bench: the speed targets' random distribution
 
 #include <catch2/catch.hpp>
 
@@ -560,7 +560,7 @@ TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit ve
     // q = (2, 0) covers [-2, 2]^2, under q = (0, 2) too (a quarter turn), under (0.5, 0)
     // [-0.5, 0.5]^2; B, a point at (5, 0.25) with radius 0.5, is then at distance 5 - h - 0.5
     // (h = 2 or 0.5), pointA = (h, 0.25), normal (1, 0). Every number is exact, so both frames
-    // must give these bits (before issue 13, A's frame inverted qA by transposing it: B landed at
+    // must give these bits (before transforms were taken as given, A's frame inverted qA by transposing it: B landed at
     // x = 10 in A's frame for q = (2, 0), and the query answered 8.5).
     Scene<T> s;
     s.a = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
@@ -603,7 +603,7 @@ TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit siz
     using T = TestType;
     // qA = (1 + 2^-20, 0): |qA| is not 1 in float or double. The square [-1, 1]^2 then has the
     // world half-width 1 + 2^-20 exactly, and the point (4, 0) is at distance 3 - 2^-20, exact in
-    // both types (by hand). Transposing qA instead of inverting it (before issue 13) put B at
+    // both types (by hand). Transposing qA instead of inverting it (as up to d8e13d7) put B at
     // 4 (1 + 2^-20)^2 in A's frame: an error of 4.77e-6 in both types (measured). The bound
     // of docs/error-bound.md for this case is u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d) with
     // A ~ 1.41, B = 0, D = 4, B~ ~ 4, W ~ 5.4, d ~ 3: about 100 u.
@@ -676,7 +676,7 @@ TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the col
                    "[gjk][cache]", float, double)
 {
     using T = TestType;
-    // The issue "Speed"'s `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a
+    // The speed targets' `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a
     // final edge in canonical order, the origin on the left of w1 -> w2 in Z = A - B, and
     // SimplexCache::edgeBase lets the warm query measure the distance from the cold query's vertex
     // (distance.hpp). The order is checked in world coordinates in long double, independently of
@@ -732,7 +732,7 @@ TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the col
 TEST_CASE("warm start: a repeat after a culled support point gives the cold answer, bit for bit",
           "[gjk][cache]")
 {
-    // Regression (issue 12, defect 7, found by the fuzzer): B has a vertex at 3.6e18, so the
+    // Regression (found by the fuzzer): B has a vertex at 3.6e18, so the
     // triangle of the last iteration is nearly degenerate and rounding makes solve3 cull the vertex
     // that the next support search finds again: the cold query stops (repeated support) on an edge
     // that does not contain it and answers 0 for an exact distance of 0.6013 (the error bound
@@ -772,7 +772,7 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
     // pairs (gjk/bench/random_shapes.hpp) under all 32 combinations of direction, stopping rule,
     // frame, support strategy and certification; every third pair has a vertex of A pushed out by
     // up to 2^59 and every fifth a vertex of B at 3.6e15, which make long edges far from the
-    // origin. Before issue 12 this failed 14,544 of 640,000 float and 976 double queries (20,000
+    // origin. Before the hardening against hostile inputs this failed 14,544 of 640,000 float and 976 double queries (20,000
     // pairs): the edge's sign test from its far end is a cancellation, and a warm start from the
     // reversed edge took the other side; and an origin exactly on the edge's line made both orders
     // search opposite ways.
@@ -816,7 +816,7 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
 TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]", float, double)
 {
     using T = TestType;
-    // Regression (fuzzer, issue 12): an axis-aligned final edge has a zero normal component whose
+    // Regression (found by the fuzzer): an axis-aligned final edge has a zero normal component whose
     // sign came from the order of the edge's vertices (x - x is +0, -(x - x) is -0), and a warm
     // start from the canonical (reversed) cache gave the other sign. A segment of A on an axis
     // against a point of B across it, in the four axis directions; by hand the normal is +-(1, 0)
@@ -984,7 +984,7 @@ TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][cert
 
 TEST_CASE("certified interval: an overflow is never certified", "[gjk][certify][range]")
 {
-    // Regression (issue 12, defect 2). Points near 1.5e308 rotated by 45 degrees: the world
+    // Regression (an overflow that passed for a certified interval). Points near 1.5e308 rotated by 45 degrees: the world
     // coordinates overflow (c*x - s*y > max double), inf - inf = NaN, and std::max(0, NaN) == 0
     // made the interval a certified [0, 0] for an exact distance near 1e307: in local coordinates
     // A - B = (0, dy), dy = -1.4e308 - -1.5e308 as doubles (exact, by Sterbenz's lemma), of length
@@ -1060,10 +1060,10 @@ TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-f
                    float, double)
 {
     using T = TestType;
-    // Issue 22's reproducers (validation/cases/tiny-edges.json), in T. Each has a vertical edge of
+    // The tiny-edge reproducers (validation/cases/tiny-edges.json, from an adversarial search), in T. Each has a vertical edge of
     // A, x = xe, whose y range contains the point B = (x0, y0): the distance is xe - x0 by hand, a
     // subtraction that is exact in T (Sterbenz, or x0 = 0). The edge's squared length is
-    // subnormal, or below 1/max. At c925c49 (before issue 22's fix) the inf-weights cases came out
+    // subnormal, or below 1/max. At c925c49 (before tiny edges were scaled up) the inf-weights cases came out
     // flagged outOfRange with NaN witness points (the weights' reciprocal overflowed, and the
     // rescaled retry could not help: the problem's extent is already ~1), and the subnormal-edge
     // cases were answered only by the rescaled retry.
@@ -1274,7 +1274,7 @@ TEMPLATE_TEST_CASE("range: overflowing support scans are caught even when the si
     Scene<T> s;
     s.a = {{0, 0}, {-side, 0}, {-side, -side}, {0, -side}};
     s.b = {{gap, 0}, {gap + side, 0}, {gap + side, -side}, {gap, -side}};
-    // Since issue 12 the query is rescaled (by 2^-(e + 9) or so) and answered exactly: the gap.
+    // Since the rescaled retry the query is rescaled (by 2^-(e + 9) or so) and answered exactly: the gap.
     const auto out = query(s);
     CHECK(out.rescaled);
     CHECK_FALSE(out.outOfRange);

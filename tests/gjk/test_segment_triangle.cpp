@@ -197,7 +197,7 @@ TEMPLATE_TEST_CASE("solve3: overflowing barycentric coordinates still leave an e
                    "[solve3][range]", float, double)
 {
     using T = TestType;
-    // Regression (issue 12, defect 1). Triangles found by a random search over coordinates of
+    // Regression (hostile-input hardening: uninitialised weights). Triangles found by a random search over coordinates of
     // 1e150..1e300 (double) and 1e17..1e38 (float), where every segment and triangle coordinate
     // overflows to inf or NaN: no region test passes, and in the fallback every edge's squared
     // distance is inf or NaN, so "dot(c, c) < bestDist2" never held and the simplex was left with
