@@ -14,15 +14,24 @@
 // third; each pair queried cold and then warm from the cold query's cache after B moved. Hashed:
 // distance, witness points, normal, iterations, simplex count, stop reason, range flags, the cache,
 // the certified flag and interval. Output: one line per scalar type and field group, then "all".
-// Exit 1 if a certified interval is inverted or misses the double distance by more than the
-// double bound's wide slack (a broken build, not a difference of bits).
+//
+// Besides the bits, every build checks what must hold whatever its bits (exit 1 otherwise): with
+// the certified interval [lower, upper] as the truth (it contains the exact distance d*), each
+// certified query of the reference variant (edge-perpendicular direction) has
+// max(d - lower, upper - d) >= |d - d*| within the a-priori bound of docs/error-bound.md. With
+// `--dump FILE` the certified intervals are written out (raw doubles, query order); with
+// `--against FILE` (another build's dump) each interval must intersect that build's: both contain
+// d*. This is how a build whose bits are not promised (Clang -ffp-contract=fast) is still tested.
 #include "gjk/distance.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <random>
+#include <string_view>
 #include <vector>
 
 namespace
@@ -56,7 +65,10 @@ struct Source
     std::mt19937_64 rng;
     explicit Source(std::uint64_t seed) : rng(seed) {}
     // Uniform in [lo, hi] from the raw 64-bit output (the modulo bias does not matter here).
-    long long between(long long lo, long long hi) { return lo + (long long)(rng() % std::uint64_t(hi - lo + 1)); }
+    long long between(long long lo, long long hi)
+    {
+        return lo + (long long)(rng() % std::uint64_t(hi - lo + 1));
+    }
     // One correctly rounded division of two exact integers.
     template <class T> T ratio(long long num, long long den) { return T(num) / T(den); }
     // (Function arguments are evaluated in an unspecified order, GCC's differs from Clang's: each
@@ -98,10 +110,12 @@ template <class T> gjk::Transform<T> randomTransform(Source& src, int range)
     return xf;
 }
 
-template <class T> void hashOutput(Hashes& h, const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& c)
+template <class T>
+void hashOutput(Hashes& h, const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& c)
 {
     h.distance.add(o.distance);
-    h.witness.add(o.pointA.x), h.witness.add(o.pointA.y), h.witness.add(o.pointB.x), h.witness.add(o.pointB.y);
+    h.witness.add(o.pointA.x), h.witness.add(o.pointA.y), h.witness.add(o.pointB.x),
+        h.witness.add(o.pointB.y);
     h.normal.add(o.normal.x), h.normal.add(o.normal.y);
     h.steps.add(o.iterations), h.steps.add(o.simplexCount), h.steps.add(std::uint8_t(o.stop));
     h.steps.add(o.outOfRange), h.steps.add(o.rescaled);
@@ -116,8 +130,54 @@ template <class T> void hashOutput(Hashes& h, const gjk::DistanceOutput<T>& o, c
 
 struct Counts
 {
-    int queries = 0, certified = 0, apart = 0, broken = 0;
+    int queries = 0, certified = 0, apart = 0, broken = 0, bounded = 0, beyondBound = 0,
+        disjoint = 0;
+    double worstRatio = 0; // largest max(d - lower, upper - d) / bound
 };
+
+std::FILE* dumpFile = nullptr;    // --dump
+std::FILE* againstFile = nullptr; // --against
+
+// The a-priori bound of docs/error-bound.md (validation/src/evaluate/bounds.cpp, errorBound) for
+// the reference variant, its metrics in world lengths evaluated in double (their own rounding,
+// ~1e-16 relative, is far below the bound's first-order slack):
+//   u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)) [+ 16 u W with DualityGap]
+template <class T>
+double errorBound(const gjk::DistanceInput<T>& in, const gjk::Options& o, double d)
+{
+    auto world = [](const gjk::Transform<T>& xf, gjk::Vec2<T> v)
+    {
+        const double c = xf.q.c, s = xf.q.s;
+        return std::pair{c * double(v.x) - s * double(v.y) + double(xf.p.x),
+                         s * double(v.x) + c * double(v.y) + double(xf.p.y)};
+    };
+    const double sizeA = std::hypot(double(in.transformA.q.c), double(in.transformA.q.s));
+    const double sizeB = std::hypot(double(in.transformB.q.c), double(in.transformB.q.s));
+    const double pAx = in.transformA.p.x, pAy = in.transformA.p.y;
+    double A = 0, B = 0, Bm = 0, W = 0;
+    for (int i = 0; i < in.proxyA.count; ++i)
+        A = std::max(
+            A, sizeA * std::hypot(double(in.proxyA.points[i].x), double(in.proxyA.points[i].y)));
+    for (int j = 0; j < in.proxyB.count; ++j)
+    {
+        B = std::max(
+            B, sizeB * std::hypot(double(in.proxyB.points[j].x), double(in.proxyB.points[j].y)));
+        const auto [bx, by] = world(in.transformB, in.proxyB.points[j]);
+        Bm = std::max(Bm, std::hypot(bx - pAx, by - pAy));
+        for (int i = 0; i < in.proxyA.count; ++i)
+        {
+            const auto [ax, ay] = world(in.transformA, in.proxyA.points[i]);
+            W = std::max(W, std::hypot(ax - bx, ay - by));
+        }
+    }
+    const double D = std::hypot(double(in.transformB.p.x) - pAx, double(in.transformB.p.y) - pAy);
+    const double u = double(std::numeric_limits<T>::epsilon()) / 2;
+    double terms = 4 * A + 43 * B + 10.2 * D + 1.5 * Bm + 5 * W + 6.5 * d;
+    if (o.stopping == gjk::StoppingRule::DualityGap)
+        terms += 16 * W;
+    return u * (terms + 3.5 * (double(in.proxyA.radius) + double(in.proxyB.radius))) +
+           double(std::numeric_limits<T>::denorm_min());
+}
 
 template <class T> void run(const char* name, std::uint64_t seed, int pairs)
 {
@@ -133,8 +193,10 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
                                  randomTransform<T>(src, 12)};
         gjk::Options o;
         o.certify = (i & 1) != 0;
-        o.stopping = (i >> 1) % 3 == 2 ? gjk::StoppingRule::DualityGap : gjk::StoppingRule::RepeatedSupport;
-        o.direction = (i >> 1) % 4 == 3 ? gjk::SearchDirection::ClosestPoint : gjk::SearchDirection::EdgePerpendicular;
+        o.stopping =
+            (i >> 1) % 3 == 2 ? gjk::StoppingRule::DualityGap : gjk::StoppingRule::RepeatedSupport;
+        o.direction = (i >> 1) % 4 == 3 ? gjk::SearchDirection::ClosestPoint
+                                        : gjk::SearchDirection::EdgePerpendicular;
         gjk::SimplexCache cache;
         for (int pass = 0; pass < 2; ++pass) // cold, then warm after B moved
         {
@@ -145,26 +207,53 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
             hashOutput(h, out, cache);
             ++n.queries;
             n.apart += out.distance > T(0);
+            if (o.certify)
+            {
+                const double interval[2] = {out.lower, out.upper};
+                if (dumpFile)
+                    std::fwrite(interval, sizeof interval, 1, dumpFile);
+                double other[2];
+                if (againstFile && std::fread(other, sizeof other, 1, againstFile) == 1 &&
+                    !(std::max(interval[0], other[0]) <= std::min(interval[1], other[1])))
+                    ++n.disjoint;
+            }
             if (out.certified)
             {
                 ++n.certified;
-                // Sanity, not bits: the interval is ordered and the computed distance is near it.
-                const double d = double(out.distance), slack = 1e-3 * (1 + d);
-                if (!(out.lower <= out.upper) || d < out.lower - slack || d > out.upper + slack)
+                const double d = double(out.distance);
+                if (!(out.lower <= out.upper))
                     ++n.broken;
+                if (o.direction == gjk::SearchDirection::EdgePerpendicular && !out.outOfRange &&
+                    out.stop != gjk::StopReason::IterationLimit)
+                {
+                    const double error = std::max(d - out.lower, out.upper - d); // >= |d - d*|
+                    const double ratio = error / errorBound(in, o, out.upper);
+                    ++n.bounded;
+                    n.worstRatio = std::max(n.worstRatio, ratio);
+                    n.beyondBound += !(ratio <= 1);
+                }
             }
         }
     }
-    const std::pair<const char*, const Hash*> groups[] = {{"distance", &h.distance}, {"witness", &h.witness},
-                                                          {"normal", &h.normal},     {"steps", &h.steps},
-                                                          {"cache", &h.cache},       {"interval", &h.interval},
+    const std::pair<const char*, const Hash*> groups[] = {{"distance", &h.distance},
+                                                          {"witness", &h.witness},
+                                                          {"normal", &h.normal},
+                                                          {"steps", &h.steps},
+                                                          {"cache", &h.cache},
+                                                          {"interval", &h.interval},
                                                           {"all", &h.all}};
     for (const auto& [group, hash] : groups)
         std::printf("%s %-8s %016llx\n", name, group, (unsigned long long)hash->h);
     std::printf("%s queries %d certified %d apart %d\n", name, n.queries, n.certified, n.apart);
-    if (n.broken)
+    // The worst ratio goes to stderr: it is a measurement, and its bits may differ between builds.
+    std::fprintf(stderr, "%s bound checked on %d queries, worst error / bound %.3g\n", name,
+                 n.bounded, n.worstRatio);
+    if (n.broken || n.beyondBound || n.disjoint)
     {
-        std::printf("%s BROKEN: %d certified intervals inverted or far from the distance\n", name, n.broken);
+        std::printf(
+            "%s BROKEN: %d inverted certified intervals, %d errors beyond the bound, %d intervals "
+            "disjoint from the other build's\n",
+            name, n.broken, n.beyondBound, n.disjoint);
         std::fflush(stdout);
         std::exit(1);
     }
@@ -172,10 +261,23 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
+    for (int i = 1; i + 1 < argc; i += 2)
+    {
+        const std::string_view arg = argv[i];
+        std::FILE*& f = arg == "--dump" ? dumpFile : againstFile;
+        if ((arg != "--dump" && arg != "--against") ||
+            !(f = std::fopen(argv[i + 1], arg == "--dump" ? "wb" : "rb")))
+        {
+            std::fprintf(stderr, "usage: hash_outputs [--dump FILE] [--against FILE]\n");
+            return 2;
+        }
+    }
     // 10,000 pairs per type, each queried cold and warm: 20,000 queries per type, 40,000 in all.
     run<float>("float ", 20260601, 10000);
     run<double>("double", 20260602, 10000);
+    if (dumpFile)
+        std::fclose(dumpFile);
     return 0;
 }
