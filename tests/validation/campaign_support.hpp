@@ -3,6 +3,7 @@
 
 #include "campaign/campaign.hpp"
 #include "inputs/families.hpp"
+#include "statistics/makeup.hpp"
 #include "evaluate/variants.hpp"
 
 #include <exact/exact.hpp>

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 using namespace gjkval;
 
@@ -28,9 +29,32 @@ CampaignConfig smallConfig(int threads)
     return c;
 }
 
-Campaign run(const CampaignConfig& c)
+// A campaign in process, with the lines it streams to cases.jsonl.
+struct Run : Campaign
 {
-    return runCampaign(c, loadInputs(c));
+    std::vector<std::string> perCaseLines;
+};
+
+Run run(const CampaignConfig& c)
+{
+    std::ostringstream lines;
+    Run r{runCampaign(c, campaignInputs(c), c.perCase ? &lines : nullptr), {}};
+    std::istringstream in(lines.str());
+    for (std::string l; std::getline(in, l);)
+        r.perCaseLines.push_back(l);
+    return r;
+}
+
+// The report directory as `run` writes it, cases.jsonl included.
+std::string write(const Run& r, const std::string& dir)
+{
+    StagedDir out(reportDirPath(dir));
+    std::string lines;
+    for (const auto& l : r.perCaseLines)
+        lines += l + "\n";
+    if (!r.perCaseLines.empty())
+        out.write("cases.jsonl", lines);
+    return writeCampaign(r, out);
 }
 
 std::string tmpDir(const std::string& name)
@@ -43,7 +67,7 @@ std::string tmpDir(const std::string& name)
 
 TEST_CASE("a small campaign passes and its report follows the schema", "[campaign]")
 {
-    const Campaign camp = run(smallConfig(2));
+    const Run camp = run(smallConfig(2));
     const Json& r = camp.report;
     CHECK(camp.exitCode == kExitPass);
     CHECK(r["schema"] == "gjk-report/1");
@@ -104,7 +128,7 @@ TEST_CASE("a small campaign passes and its report follows the schema", "[campaig
 
     // Written files.
     const std::string dir = tmpDir("small");
-    const std::string page = writeCampaign(camp, dir);
+    const std::string page = write(camp, dir);
     CHECK(std::filesystem::path(page).is_absolute());
     for (const char* f : {"report.json", "report.md", "worst-cases.json", "cases.jsonl"})
         CHECK(std::filesystem::exists(std::filesystem::path(dir) / f));
@@ -119,13 +143,44 @@ TEST_CASE("a small campaign passes and its report follows the schema", "[campaig
 
 TEST_CASE("the report does not depend on the number of threads", "[campaign]")
 {
-    const Campaign one = run(smallConfig(1));
-    const Campaign two = run(smallConfig(2));
-    const Campaign three = run(smallConfig(3));
+    const Run one = run(smallConfig(1));
+    const Run two = run(smallConfig(2));
+    const Run three = run(smallConfig(3));
     CHECK(stripVolatile(one.report) == stripVolatile(two.report));
     CHECK(stripVolatile(one.report) == stripVolatile(three.report));
     CHECK(one.perCaseLines == two.perCaseLines);
     CHECK(caseFileText({}, one.worstCases) == caseFileText({}, two.worstCases));
+}
+
+TEST_CASE("the report does not depend on the chunk size nor the thread count", "[campaign]")
+{
+    // Chunks of 1 case, of a prime number that cuts every family mid-way, of more than a family,
+    // with 1 to 3 threads; with a case file holding rejected cases, and 2 worst cases per family so
+    // that ties across chunk boundaries matter.
+    auto config = [](std::size_t chunk, int threads)
+    {
+        CampaignConfig c = smallConfig(threads);
+        c.families = {"random:150", "hard/touching-edge", "hard/points:40"};
+        c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
+        c.timing = false;
+        c.worstPerFamily = 2;
+        c.chunkCases = chunk;
+        return c;
+    };
+    const Run reference = run(config(kDefaultChunkCases, 2));
+    REQUIRE(reference.report["context"]["cases_rejected"] == 7);
+    for (const auto& [chunk, threads] :
+         std::vector<std::pair<std::size_t, int>>{{1, 1}, {7, 2}, {7, 3}, {64, 1}, {1000, 3}})
+    {
+        INFO("chunk " << chunk << ", threads " << threads);
+        const Run r = run(config(chunk, threads));
+        CHECK(stripVolatile(r.report) == stripVolatile(reference.report));
+        CHECK(r.perCaseLines == reference.perCaseLines);
+        CHECK(caseFileText({}, r.worstCases) == caseFileText({}, reference.worstCases));
+        // The comments after the first (which gives the date) name each worst case's variant.
+        CHECK(std::vector(r.worstComments.begin() + 1, r.worstComments.end()) ==
+              std::vector(reference.worstComments.begin() + 1, reference.worstComments.end()));
+    }
 }
 
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")
@@ -133,7 +188,7 @@ TEST_CASE("rejected cases are reported and the other cases still run", "[campaig
     CampaignConfig c = smallConfig(2);
     c.families = {};
     c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
-    const Campaign camp = run(c);
+    const Run camp = run(c);
     CHECK(camp.exitCode == kExitInput);
     const Json& r = camp.report;
     CHECK(r["passed"] == false);
@@ -163,7 +218,7 @@ TEST_CASE("failures beyond the bound give exit code 1", "[campaign]")
     c.families = {};
     c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/regressions.json"};
     c.variants = {findVariant("double"), &judgedClosestPoint};
-    const Campaign camp = run(c);
+    const Run camp = run(c);
     CHECK(camp.exitCode == kExitFail);
     CHECK(camp.report["passed"] == false);
     CHECK(camp.report["families"][0]["pass"] == false);
@@ -180,7 +235,7 @@ TEST_CASE("comparison variants' failures are counted and shown, not judged", "[c
     c.families = {};
     c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/regressions.json"};
     c.variants = parseVariants("double,double-closest-point");
-    const Campaign camp = run(c);
+    const Run camp = run(c);
     CHECK(camp.exitCode == kExitPass);
     const Json& r = camp.report;
     CHECK(r["passed"] == true);
@@ -202,7 +257,7 @@ TEST_CASE("the talk's cases: float with the closest-point direction fails, the r
     c.families = {};
     c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/talk.json"};
     c.variants = parseVariants("double,float,float-closest-point");
-    const Campaign camp = run(c);
+    const Run camp = run(c);
     const Json& s = camp.report["families"][0]["variants"];
     CHECK(s["double"]["failures"] == 0);
     CHECK(s["float"]["failures"] == 0);

@@ -204,7 +204,7 @@ TEST_CASE("engine families: make-up checks hold on a few hundred cases, and fail
 TEST_CASE("engine families: the judged variants pass on engine data", "[engine][campaign]")
 {
     const CampaignConfig c = untimedConfig({"engine:300"});
-    const Campaign camp = runCampaign(c, loadInputs(c));
+    const Campaign camp = runCampaign(c, campaignInputs(c));
     REQUIRE(camp.report["families"].size() == 6);
     for (const Json& fam : camp.report["families"])
     {

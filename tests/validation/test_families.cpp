@@ -394,7 +394,7 @@ TEST_CASE("range and scale: out-of-range inputs are rescaled and judged within t
           "[families][stability]")
 {
     const CampaignConfig config = untimedConfig({"hard/range", "hard/extreme-scale"});
-    const Campaign camp = runCampaign(config, loadInputs(config));
+    const Campaign camp = runCampaign(config, campaignInputs(config));
     // Float variants see coordinates 1e19..1e30 and 1e-20..1e-30 (hard/range) and 1e-300..1e300
     // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before issue 12 they
     // were flagged outOfRange and not judged (hard/range: >= 40 per float variant); since then the

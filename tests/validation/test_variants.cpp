@@ -142,7 +142,7 @@ TEST_CASE("a reduced campaign over every variant: judged variants pass, comparis
     c.minPasses = c.maxPasses = 1;
     c.timingBudgetSeconds = 0;
     c.command = "test";
-    const Campaign camp = runCampaign(c, loadInputs(c));
+    const Campaign camp = runCampaign(c, campaignInputs(c));
     const Json& r = camp.report;
     CHECK(camp.exitCode == kExitPass);
     CHECK(r["passed"] == true);

@@ -4,15 +4,17 @@
 #include "common/output.hpp"
 #include "common/parallel.hpp"
 #include "report/report.hpp"
+#include "statistics/makeup.hpp"
+#include "statistics/worst.hpp"
 #include "timing/timing.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
@@ -37,7 +39,7 @@ namespace
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-double seconds(Clock::time_point a, Clock::time_point b)
+double elapsed(Clock::time_point a, Clock::time_point b)
 {
     return std::chrono::duration<double>(b - a).count();
 }
@@ -86,78 +88,6 @@ std::string hostName()
     if (gethostname(buf, sizeof buf - 1) != 0)
         return "unknown";
     return buf;
-}
-
-void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, const VariantInfo& vi,
-                const CaseOutcome& o)
-{
-    if (v.skipped)
-    {
-        ++s.skipped;
-        s.notApplicable += v.notApplicable ? 1 : 0;
-        return;
-    }
-    ++s.cases;
-    s.failures += v.failed ? 1 : 0;
-    s.outOfRange += v.outOfRange ? 1 : 0;
-    s.nonfinite += v.nonfinite ? 1 : 0;
-    s.iterationLimit += v.iterationLimit ? 1 : 0;
-    if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
-    {
-        s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
-        s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
-        s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
-        s.beyondBound += v.beyondBound ? 1 : 0;
-        if (!v.nonfinite)
-        {
-            s.abs.add(v.abs, name);
-            s.rel.add(v.rel, name); // NaN (not applicable) is ignored by add()
-            s.ulps.add(v.ulps, name);
-            s.normalized.add(v.normalized, name);
-            s.boundRatio.add(v.boundRatio, name);
-            s.witness.add(v.witness, name);
-            s.witnessGap.add(v.witnessGap, name);
-        }
-    }
-    if (vi.scalar == Scalar::Float)
-    {
-        s.hasInputRounding = true;
-        s.inputRounding.add(o.inputRounding, name);
-    }
-    if (vi.options.certify)
-    {
-        s.hasInterval = true;
-        if (v.certified)
-        {
-            ++s.certified;
-            s.contains += v.intervalContains ? 1 : 0;
-            if (v.truth > 0)
-                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name);
-        }
-        else
-            ++s.uncertified;
-    }
-    s.iterations.add(v.iterations);
-    ++s.stops[std::size_t(v.stop)];
-}
-
-Json makeupJson(const std::vector<MakeupResult>& m)
-{
-    Json a = Json::array();
-    for (const auto& r : m)
-    {
-        Json j;
-        j["check"] = r.check;
-        j["value"] = num(r.value);
-        j["min"] = num(r.min);
-        j["max"] = num(r.max);
-        j["ok"] = r.ok;
-        if (r.skipped)
-            j["skipped"] =
-                fmt::format("fewer than {} cases: reported, not judged", kMinCasesForStatistics);
-        a.push_back(std::move(j));
-    }
-    return a;
 }
 
 } // namespace
@@ -213,303 +143,335 @@ std::vector<std::string> defaultCaseFiles()
     return files;
 }
 
-std::vector<FamilyData> loadInputs(const CampaignConfig& config)
+std::vector<CampaignInput> campaignInputs(const CampaignConfig& config)
 {
-    std::vector<FamilyData> out;
-    std::set<std::string> names;
-    for (const auto& spec : config.families)
-    {
-        for (auto& g : generateFamilies(spec, config.seed))
-        {
-            if (!names.insert(g.name).second)
-                throw InputError(fmt::format("family '{}' is given twice", g.name));
-            FamilyData f;
-            f.name = g.name;
-            f.reason = g.reason;
-            f.source = "generated";
-            f.seed = g.seed;
-            f.input = {{"family", g.name}, {"count", g.cases.size()}, {"seed", config.seed}};
-            f.labels.reserve(g.cases.size());
-            for (const auto& c : g.cases)
-                f.labels.push_back(c.name);
-            f.rejected.assign(g.cases.size(), {});
-            f.cases = std::move(g.cases);
-            f.makeup = std::move(g.makeup);
-            out.push_back(std::move(f));
-        }
-    }
-    for (const auto& path : config.caseFiles)
-    {
-        CaseFile file = readCaseFile(path);
-        FamilyData f;
-        const std::string base = fs::path(path).filename().string();
-        f.name = "file:" + base;
-        if (!names.insert(f.name).second)
-        {
-            f.name = "file:" + path;
-            if (!names.insert(f.name).second)
-                throw InputError(fmt::format("case file '{}' is given twice", path));
-        }
-        f.source = "file";
-        f.reason =
-            file.comments.empty() ? std::string("cases from ") + path : file.comments.front();
-        f.input = {{"file", path}, {"count", file.entries.size()}};
-        for (auto& e : file.entries)
-        {
-            f.cases.push_back(std::move(e.c));
-            f.labels.push_back(e.label);
-            f.rejected.push_back(e.rejected);
-        }
-        out.push_back(std::move(f));
-    }
-    return out;
+    return campaignInputs(config.families, config.caseFiles, config.seed);
 }
 
-Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> families)
+std::vector<FamilyData> loadInputs(const CampaignConfig& config)
 {
-    const auto tStart = Clock::now();
-    const int threads = resolveThreads(config.threads);
-    EvalContext ctx;
-    ctx.variants = config.variants;
-    ctx.exactOptions.route = config.route;
+    return collectInputs(config.families, config.caseFiles, config.seed);
+}
 
-    // Flat work list in campaign order.
-    struct Item
+namespace
+{
+// --- The pipeline's state ---------------------------------------------------------------------
+
+// Seconds spent in each phase (the report's context.elapsed_s; volatile).
+struct PhaseSeconds
+{
+    double inputs = 0, exact = 0, gjk = 0, witness = 0, timing = 0;
+};
+
+// The valid cases of a family kept for the timed passes (the first kTimingSampleCases), and which
+// variants run on each.
+struct TimingSample
+{
+    std::vector<PreparedCase> cases;
+    std::vector<std::vector<bool>> runs; // runs[i][k]: variant k runs on case i
+};
+
+// Everything a campaign keeps of one input once its cases have streamed by.
+struct FamilyResult
+{
+    const CampaignInput* input;
+    std::vector<Stats> stats; // per variant
+    MakeupFold makeup;
+    WorstKeeper worst;
+    TimingSample timing;
+    std::size_t cases = 0, rejected = 0;
+};
+
+struct CampaignState
+{
+    std::vector<FamilyResult> families;
+    Json rejected = Json::array(); // the first kMaxRejectedListed
+    PhaseSeconds seconds;
+};
+
+// --- Truth, variants, witnesses: one chunk on the campaign's threads ---------------------------
+
+struct EvaluatedChunk
+{
+    std::vector<CaseOutcome> outcomes;
+    std::vector<PreparedCase> prepared;
+};
+
+EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int threads,
+                             Progress& progress, PhaseSeconds& seconds)
+{
+    EvaluatedChunk e;
+    e.outcomes.resize(chunk.size());
+    e.prepared.resize(chunk.size());
+    for (std::size_t i = 0; i < chunk.size(); ++i)
+        e.outcomes[i].rejected = chunk.rejected[i];
+    Progress none(false, "", 0);
+    auto t0 = Clock::now();
+    parallelFor(chunk.size(), threads, none,
+                [&](std::size_t i)
+                {
+                    if (e.outcomes[i].rejected.empty())
+                        computeTruth(chunk.cases[i], ctx, e.outcomes[i]);
+                });
+    auto t1 = Clock::now();
+    parallelFor(chunk.size(), threads, progress,
+                [&](std::size_t i)
+                {
+                    CaseOutcome& o = e.outcomes[i];
+                    if (!o.rejected.empty())
+                    {
+                        o.variants.assign(ctx.variants.size(), {});
+                        return;
+                    }
+                    e.prepared[i] = prepare(chunk.cases[i]);
+                    runVariants(chunk.cases[i], e.prepared[i], ctx, o);
+                });
+    auto t2 = Clock::now();
+    parallelFor(chunk.size(), threads, none,
+                [&](std::size_t i) { checkWitnesses(chunk.cases[i], ctx, e.outcomes[i]); });
+    auto t3 = Clock::now();
+    seconds.exact += elapsed(t0, t1);
+    seconds.gjk += elapsed(t1, t2);
+    seconds.witness += elapsed(t2, t3);
+    return e;
+}
+
+// --- Statistics, make-up, worst cases, per-case lines: folded in case order --------------------
+
+void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, const VariantInfo& vi,
+                const CaseOutcome& o)
+{
+    if (v.skipped)
     {
-        std::size_t f, i;
-    };
-    std::vector<Item> items;
-    std::vector<std::vector<CaseOutcome>> outcomes(families.size());
-    std::vector<std::vector<PreparedCase>> prepared(families.size());
-    for (std::size_t f = 0; f < families.size(); ++f)
+        ++s.skipped;
+        s.notApplicable += v.notApplicable ? 1 : 0;
+        return;
+    }
+    ++s.cases;
+    s.failures += v.failed ? 1 : 0;
+    s.outOfRange += v.outOfRange ? 1 : 0;
+    s.nonfinite += v.nonfinite ? 1 : 0;
+    s.iterationLimit += v.iterationLimit ? 1 : 0;
+    if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
     {
-        outcomes[f].resize(families[f].cases.size());
-        prepared[f].resize(families[f].cases.size());
-        for (std::size_t i = 0; i < families[f].cases.size(); ++i)
+        s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
+        s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
+        s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
+        s.beyondBound += v.beyondBound ? 1 : 0;
+        if (!v.nonfinite)
         {
-            items.push_back({f, i});
-            if (!families[f].rejected[i].empty())
-                outcomes[f][i].rejected = families[f].rejected[i];
+            s.abs.add(v.abs, name);
+            s.rel.add(v.rel, name); // NaN (not applicable) is ignored by add()
+            s.ulps.add(v.ulps, name);
+            s.normalized.add(v.normalized, name);
+            s.boundRatio.add(v.boundRatio, name);
+            s.witness.add(v.witness, name);
+            s.witnessGap.add(v.witnessGap, name);
         }
     }
-    const auto tGenerated = Clock::now();
+    if (vi.scalar == Scalar::Float)
+    {
+        s.hasInputRounding = true;
+        s.inputRounding.add(o.inputRounding, name);
+    }
+    if (vi.options.certify)
+    {
+        s.hasInterval = true;
+        if (v.certified)
+        {
+            ++s.certified;
+            s.contains += v.intervalContains ? 1 : 0;
+            if (v.truth > 0)
+                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name);
+        }
+        else
+            ++s.uncertified;
+    }
+    s.iterations.add(v.iterations);
+    ++s.stops[std::size_t(v.stop)];
+}
 
-    // Phase 1: exact truths. Phase 2: GJK. Phase 3: witness points (exact).
-    {
-        Progress p(config.progress, "exact", items.size());
-        parallelFor(items.size(), threads, p,
-                    [&](std::size_t k)
-                    {
-                        const Item it = items[k];
-                        CaseOutcome& o = outcomes[it.f][it.i];
-                        if (o.rejected.empty())
-                            computeTruth(families[it.f].cases[it.i], ctx, o);
-                    });
-    }
-    const auto tExact = Clock::now();
-    {
-        Progress p(config.progress, "gjk", items.size());
-        parallelFor(items.size(), threads, p,
-                    [&](std::size_t k)
-                    {
-                        const Item it = items[k];
-                        const Case& c = families[it.f].cases[it.i];
-                        CaseOutcome& o = outcomes[it.f][it.i];
-                        if (!o.rejected.empty())
-                        {
-                            o.variants.assign(ctx.variants.size(), {});
-                            return;
-                        }
-                        prepared[it.f][it.i] = prepare(c);
-                        runVariants(c, prepared[it.f][it.i], ctx, o);
-                    });
-    }
-    const auto tGjk = Clock::now();
-    {
-        Progress p(config.progress, "witness", items.size());
-        parallelFor(items.size(), threads, p,
-                    [&](std::size_t k)
-                    {
-                        const Item it = items[k];
-                        checkWitnesses(families[it.f].cases[it.i], ctx, outcomes[it.f][it.i]);
-                    });
-    }
-    const auto tWitness = Clock::now();
-
-    // Statistics, in case order (single thread: identical whatever the thread count).
+void foldChunk(FamilyResult& r, const CaseChunk& chunk, EvaluatedChunk& e,
+               const CampaignConfig& config, const EvalContext& ctx, Json& rejected,
+               std::ostream* perCase)
+{
     const std::size_t nv = ctx.variants.size();
-    std::vector<std::vector<Stats>> stats(families.size(), std::vector<Stats>(nv));
-    std::vector<std::vector<MakeupResult>> makeups(families.size());
-    Json rejectedJson = Json::array();
-    std::size_t totalCases = 0, totalRejected = 0;
-    bool anyFailure = false;
-    for (std::size_t f = 0; f < families.size(); ++f)
+    for (std::size_t i = 0; i < chunk.size(); ++i)
     {
-        const FamilyData& fam = families[f];
-        std::vector<const Case*> valid;
-        std::vector<const exact::Result*> truths;
-        for (std::size_t i = 0; i < fam.cases.size(); ++i)
+        const Case& c = chunk.cases[i];
+        const CaseOutcome& o = e.outcomes[i];
+        ++r.cases;
+        if (perCase)
+            *perCase << perCaseJson(c, r.input->name, ctx, o).dump() << '\n';
+        if (!o.rejected.empty())
         {
-            ++totalCases;
-            const CaseOutcome& o = outcomes[f][i];
-            if (!o.rejected.empty())
-            {
-                ++totalRejected;
-                rejectedJson.push_back(
-                    {{"name", fam.labels[i]}, {"family", fam.name}, {"reason", o.rejected}});
-                continue;
-            }
-            valid.push_back(&fam.cases[i]);
-            truths.push_back(&o.exact);
-            for (std::size_t k = 0; k < nv; ++k)
-                accumulate(stats[f][k], o.variants[k], fam.cases[i].name, *ctx.variants[k], o);
+            ++r.rejected;
+            if (rejected.size() < kMaxRejectedListed)
+                rejected.push_back(
+                    {{"name", chunk.labels[i]}, {"family", r.input->name}, {"reason", o.rejected}});
+            continue;
         }
-        makeups[f] = evaluateMakeup(fam.makeup, valid, truths);
-    }
-
-    // Timing: single-threaded, apart from everything else.
-    if (config.timing)
-    {
-        TimingConfig tc;
-        tc.minPasses = config.minPasses;
-        tc.maxPasses = config.maxPasses;
-        tc.budgetSeconds = config.timingBudgetSeconds;
-        Progress p(config.progress, "timing", families.size() * nv);
-        for (std::size_t f = 0; f < families.size(); ++f)
+        for (std::size_t k = 0; k < nv; ++k)
+            accumulate(r.stats[k], o.variants[k], c.name, *ctx.variants[k], o);
+        r.makeup.add(c, o.exact);
+        r.worst.offer(chunk.first + i, c, o);
+        if (config.timing && r.timing.cases.size() < kTimingSampleCases)
         {
+            std::vector<bool> runs(nv);
             for (std::size_t k = 0; k < nv; ++k)
-            {
-                std::vector<const PreparedCase*> cases;
-                for (std::size_t i = 0; i < families[f].cases.size(); ++i)
-                {
-                    const CaseOutcome& o = outcomes[f][i];
-                    if (o.rejected.empty() && !o.variants[k].skipped)
-                        cases.push_back(&prepared[f][i]);
-                }
-                const TimingResult t = timeQueries(cases, *ctx.variants[k], tc);
-                Stats& s = stats[f][k];
-                s.nsPerQuery = t.nsPerQuery;
-                s.nsMin = t.nsMin;
-                s.nsMax = t.nsMax;
-                s.timingPasses = t.passes;
-                p.add(1);
-            }
+                runs[k] = !o.variants[k].skipped;
+            r.timing.cases.push_back(std::move(e.prepared[i]));
+            r.timing.runs.push_back(std::move(runs));
         }
     }
-    const auto tTiming = Clock::now();
+}
 
-    // Baseline for ratios: "double" when selected, else the first variant.
-    std::size_t baseline = 0;
-    for (std::size_t k = 0; k < nv; ++k)
-        if (ctx.variants[k]->name == "double")
-            baseline = k;
-    for (auto& fs : stats)
-        for (auto& s : fs)
-            if (s.nsPerQuery > 0 && fs[baseline].nsPerQuery > 0)
-                s.ratioToBaseline = s.nsPerQuery / fs[baseline].nsPerQuery;
+// One input, streamed: its cases are generated or read chunk by chunk, evaluated, and folded.
+FamilyResult runInput(const CampaignInput& input, const CampaignConfig& config,
+                      const EvalContext& ctx, int threads, Progress& progress, CampaignState& state,
+                      std::ostream* perCase)
+{
+    FamilyResult r{&input,
+                   std::vector<Stats>(ctx.variants.size()),
+                   MakeupFold(input.makeup),
+                   WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))),
+                   {}};
+    auto t = Clock::now();
+    input.stream(std::max<std::size_t>(1, config.chunkCases),
+                 [&](CaseChunk& chunk)
+                 {
+                     state.seconds.inputs += elapsed(t, Clock::now());
+                     EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, state.seconds);
+                     foldChunk(r, chunk, e, config, ctx, state.rejected, perCase);
+                     t = Clock::now();
+                 });
+    state.seconds.inputs += elapsed(t, Clock::now());
+    if (perCase && !*perCase)
+        throw OutputError("cases.jsonl: write failed: " + std::string(std::strerror(errno)));
+    return r;
+}
 
-    // Worst cases of each family.
-    Campaign camp;
-    Json worst = Json::array();
-    std::set<std::string> worstNames;
-    const std::string date = isoDateUtc();
-    const std::string revision = gitRevision();
-    camp.worstComments.push_back(
-        fmt::format("Worst cases of `{}` ({}), git {}, seed {}: per family the {} "
-                    "cases with the largest normalised error over the variants.",
-                    config.command, date, revision, config.seed, config.worstPerFamily));
-    for (std::size_t f = 0; f < families.size(); ++f)
-    {
-        const FamilyData& fam = families[f];
-        std::vector<std::size_t> order;
-        for (std::size_t i = 0; i < fam.cases.size(); ++i)
-            if (outcomes[f][i].rejected.empty())
-                order.push_back(i);
-        std::stable_sort(order.begin(), order.end(),
-                         [&](std::size_t x, std::size_t y)
-                         { return outcomes[f][x].worstKey() > outcomes[f][y].worstKey(); });
-        if (order.size() > std::size_t(std::max(0, config.worstPerFamily)))
-            order.resize(std::size_t(std::max(0, config.worstPerFamily)));
-        for (std::size_t r = 0; r < order.size(); ++r)
-        {
-            const std::size_t i = order[r];
-            const CaseOutcome& o = outcomes[f][i];
-            Case c = fam.cases[i];
-            std::string name = c.name;
-            for (int k = 2; !worstNames.insert(name).second; ++k)
-                name = fmt::format("{}#{}", c.name, k);
-            c.name = name;
-            // Which variant is worst, for the comment.
-            std::size_t wk = 0;
-            double wv = -1;
-            for (std::size_t k = 0; k < nv; ++k)
-            {
-                const auto& v = o.variants[k];
-                const double key =
-                    v.skipped || (v.outOfRange && !v.failed)
-                        ? -1
-                        : ((v.nonfinite || v.iterationLimit) ? INFINITY : v.normalized);
-                if (key > wv)
-                {
-                    wv = key;
-                    wk = k;
-                }
-            }
-            camp.worstComments.push_back(
-                fmt::format("{}: family {}, normalised error {:.3g} ({}), exact distance {:.17g}",
-                            c.name, fam.name, wv, ctx.variants[wk]->name, o.exact.distance));
-            camp.worstCases.push_back(std::move(c));
-            if (r == 0)
-                worst.push_back(caseDetail(fam.cases[i], fam.name, ctx, o, "normalized"));
-        }
-    }
+// --- Timing: single-threaded, apart from everything else ---------------------------------------
 
-    // Per-case lines.
-    if (config.perCase)
-        for (std::size_t f = 0; f < families.size(); ++f)
-            for (std::size_t i = 0; i < families[f].cases.size(); ++i)
-                camp.perCaseLines.push_back(
-                    perCaseJson(families[f].cases[i], families[f].name, ctx, outcomes[f][i])
-                        .dump());
-
-    // Families.
-    Json famJson = Json::array();
-    for (std::size_t f = 0; f < families.size(); ++f)
-    {
-        const FamilyData& fam = families[f];
-        Json j;
-        j["name"] = fam.name;
-        j["source"] = fam.source;
-        j["reason"] = fam.reason;
-        if (fam.source == "generated")
-            j["seed"] = fam.seed;
-        std::size_t rej = 0;
-        for (const auto& o : outcomes[f])
-            rej += o.rejected.empty() ? 0 : 1;
-        j["cases"] = fam.cases.size();
-        j["rejected"] = rej;
-        j["makeup"] = makeupJson(makeups[f]);
-        bool makeupOk = true;
-        for (const auto& m : makeups[f])
-            makeupOk = makeupOk && m.ok;
-        bool variantsOk = true;
-        Json vs = Json::object();
+void timeVariants(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx)
+{
+    TimingConfig tc;
+    tc.minPasses = config.minPasses;
+    tc.maxPasses = config.maxPasses;
+    tc.budgetSeconds = config.timingBudgetSeconds;
+    const std::size_t nv = ctx.variants.size();
+    Progress p(config.progress, "timing", state.families.size() * nv);
+    for (auto& f : state.families)
         for (std::size_t k = 0; k < nv; ++k)
         {
-            vs[ctx.variants[k]->name] = stats[f][k].toJson();
-            // Comparison variants (not judged) are reported, never failed.
-            if (ctx.variants[k]->judged)
-                variantsOk = variantsOk && stats[f][k].failures == 0;
+            std::vector<const PreparedCase*> cases;
+            for (std::size_t i = 0; i < f.timing.cases.size(); ++i)
+                if (f.timing.runs[i][k])
+                    cases.push_back(&f.timing.cases[i]);
+            const TimingResult t = timeQueries(cases, *ctx.variants[k], tc);
+            Stats& s = f.stats[k];
+            s.nsPerQuery = t.nsPerQuery;
+            s.nsMin = t.nsMin;
+            s.nsMax = t.nsMax;
+            s.timingPasses = t.passes;
+            p.add(1);
         }
-        j["makeup_ok"] = makeupOk;
-        j["pass"] = makeupOk && variantsOk;
-        anyFailure = anyFailure || !makeupOk || !variantsOk;
-        j["variants"] = std::move(vs);
-        famJson.push_back(std::move(j));
-    }
+    for (auto& f : state.families) // the samples are no longer needed
+        f.timing = {};
+}
 
-    // Variants.
-    Json varJson = Json::array();
+// Index of the variant timing ratios are given against: kBaselineVariant when selected, else the
+// first.
+std::size_t baselineIndex(const EvalContext& ctx)
+{
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+        if (ctx.variants[k]->name == kBaselineVariant)
+            return k;
+    return 0;
+}
+
+void setTimingRatios(CampaignState& state, std::size_t baseline)
+{
+    for (auto& f : state.families)
+        for (auto& s : f.stats)
+            if (s.nsPerQuery > 0 && f.stats[baseline].nsPerQuery > 0)
+                s.ratioToBaseline = s.nsPerQuery / f.stats[baseline].nsPerQuery;
+}
+
+// --- Judgement ---------------------------------------------------------------------------------
+
+// A family passes when its make-up checks hold and no judged variant failed a case; comparison
+// variants are reported, never failed.
+struct Verdict
+{
+    bool makeupOk = true, variantsOk = true;
+    bool pass() const { return makeupOk && variantsOk; }
+};
+
+Verdict judgeFamily(const std::vector<MakeupResult>& makeup, const std::vector<Stats>& stats,
+                    const EvalContext& ctx)
+{
+    Verdict v;
+    for (const auto& m : makeup)
+        v.makeupOk = v.makeupOk && m.ok;
+    for (std::size_t k = 0; k < stats.size(); ++k)
+        if (ctx.variants[k]->judged)
+            v.variantsOk = v.variantsOk && stats[k].failures == 0;
+    return v;
+}
+
+// Any failing family fails the campaign (1); else any rejected case makes it an input error (2).
+int campaignExitCode(bool anyFamilyFailed, std::size_t rejected)
+{
+    return anyFamilyFailed ? kExitFail : (rejected > 0 ? kExitInput : kExitPass);
+}
+
+// --- The report --------------------------------------------------------------------------------
+
+Json makeupJson(const std::vector<MakeupResult>& m)
+{
+    Json a = Json::array();
+    for (const auto& r : m)
+    {
+        Json j;
+        j["check"] = r.check;
+        j["value"] = num(r.value);
+        j["min"] = num(r.min);
+        j["max"] = num(r.max);
+        j["ok"] = r.ok;
+        if (r.skipped)
+            j["skipped"] =
+                fmt::format("fewer than {} cases: reported, not judged", kMinCasesForStatistics);
+        a.push_back(std::move(j));
+    }
+    return a;
+}
+
+Json familyJson(const FamilyResult& f, const std::vector<MakeupResult>& makeup,
+                const Verdict& verdict, const EvalContext& ctx)
+{
+    const CampaignInput& in = *f.input;
+    Json j;
+    j["name"] = in.name;
+    j["source"] = in.source;
+    j["reason"] = in.reason;
+    if (in.source == "generated")
+        j["seed"] = in.seed;
+    j["cases"] = f.cases;
+    j["rejected"] = f.rejected;
+    j["makeup"] = makeupJson(makeup);
+    j["makeup_ok"] = verdict.makeupOk;
+    j["pass"] = verdict.pass();
+    Json vs = Json::object();
+    for (std::size_t k = 0; k < f.stats.size(); ++k)
+        vs[ctx.variants[k]->name] = f.stats[k].toJson();
+    j["variants"] = std::move(vs);
+    return j;
+}
+
+Json variantsJson(const EvalContext& ctx)
+{
+    Json out = Json::array();
     for (auto* v : ctx.variants)
     {
         Json j;
@@ -520,54 +482,133 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> famil
         j["warm"] = v->warm;
         j["options"] = optionsJson(v->options);
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
-        varJson.push_back(std::move(j));
+        out.push_back(std::move(j));
     }
+    return out;
+}
 
-    camp.exitCode = anyFailure ? kExitFail : (totalRejected > 0 ? kExitInput : kExitPass);
+// worst-cases.json (every family's kept cases, names made unique) and the report's "worst" (each
+// family's worst case in detail).
+Json worstCases(const CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
+                const std::string& date, const std::string& revision, Campaign& camp)
+{
+    Json detail = Json::array();
+    std::set<std::string> names;
+    camp.worstComments.push_back(
+        fmt::format("Worst cases of `{}` ({}), git {}, seed {}: per family the {} "
+                    "cases with the largest normalised error over the variants.",
+                    config.command, date, revision, config.seed, config.worstPerFamily));
+    for (const auto& f : state.families)
+        for (const auto& w : f.worst.cases())
+        {
+            Case c = w.c;
+            for (int k = 2; !names.insert(c.name).second; ++k)
+                c.name = fmt::format("{}#{}", w.c.name, k);
+            const std::size_t wk = w.outcome.worstVariant();
+            camp.worstComments.push_back(
+                fmt::format("{}: family {}, normalised error {:.3g} ({}), exact distance {:.17g}",
+                            c.name, f.input->name, worstKey(w.outcome.variants[wk]),
+                            ctx.variants[wk]->name, w.outcome.exact.distance));
+            if (&w == &f.worst.cases().front())
+                detail.push_back(caseDetail(w.c, f.input->name, ctx, w.outcome, "normalized"));
+            camp.worstCases.push_back(std::move(c));
+        }
+    return detail;
+}
 
-    const auto tEnd = Clock::now();
+Json contextOf(const CampaignState& state, const CampaignConfig& config, int threads,
+               const std::string& date, const std::string& revision, double totalSeconds)
+{
     Json inputs = Json::array();
-    std::set<std::string> seenInputs;
-    for (const auto& fam : families)
-        inputs.push_back(fam.input);
-    const double tExactS = seconds(tGenerated, tExact), tGjkS = seconds(tExact, tGjk),
-                 tWitnessS = seconds(tGjk, tWitness);
-    std::size_t validCases = totalCases - totalRejected;
+    std::size_t cases = 0, rejected = 0;
     double queries = 0, queryNs = 0;
-    for (std::size_t f = 0; f < families.size(); ++f)
-        for (std::size_t k = 0; k < nv; ++k)
-            if (stats[f][k].nsPerQuery > 0)
+    for (const auto& f : state.families)
+    {
+        inputs.push_back(f.input->input);
+        cases += f.cases;
+        rejected += f.rejected;
+        for (const auto& s : f.stats)
+            if (s.nsPerQuery > 0)
             {
-                queries += double(stats[f][k].cases);
-                queryNs += stats[f][k].nsPerQuery * double(stats[f][k].cases);
+                queries += double(s.cases);
+                queryNs += s.nsPerQuery * double(s.cases);
             }
-
+    }
+    const PhaseSeconds& t = state.seconds;
+    const double valid = double(cases - rejected);
+    const auto perSecond = [&](double s) { return s > 0 ? valid / s : 0.0; };
     Json context = contextJson(date, revision, config.command, config.seed, threads,
-                               std::move(inputs), totalCases, totalRejected);
+                               std::move(inputs), cases, rejected);
     context["exact_route"] = exact::routeName(config.route);
-    context["elapsed_s"] = {{"generate", seconds(tStart, tGenerated)},
-                            {"exact", tExactS},
-                            {"gjk", tGjkS},
-                            {"witness", tWitnessS},
-                            {"timing", seconds(tWitness, tTiming)},
-                            {"total", seconds(tStart, tEnd)}};
+    context["elapsed_s"] = {{"generate", t.inputs}, {"exact", t.exact},   {"gjk", t.gjk},
+                            {"witness", t.witness}, {"timing", t.timing}, {"total", totalSeconds}};
     context["throughput"] = {
-        {"exact_cases_per_s", tExactS > 0 ? double(validCases) / tExactS : 0.0},
-        {"gjk_cases_per_s", tGjkS > 0 ? double(validCases) / tGjkS : 0.0},
-        {"witness_cases_per_s", tWitnessS > 0 ? double(validCases) / tWitnessS : 0.0},
+        {"exact_cases_per_s", perSecond(t.exact)},
+        {"gjk_cases_per_s", perSecond(t.gjk)},
+        {"witness_cases_per_s", perSecond(t.witness)},
         {"gjk_ns_per_query_mean", queries > 0 ? Json(queryNs / queries) : Json(nullptr)},
         {"note",
          "exact: truths (double input, plus float-rounded input when a float variant runs); "
          "gjk: every variant's query and its error metrics; witness: exact point-to-shape "
-         "checks; all on `threads` threads. ns per query: single-threaded timed passes."}};
+         "checks; all on `threads` threads. generate: making or reading the cases. ns per query: "
+         "single-threaded timed passes over each family's first cases."}};
+    return context;
+}
+} // namespace
 
+Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                     std::ostream* perCase)
+{
+    const auto tStart = Clock::now();
+    const int threads = resolveThreads(config.threads);
+    EvalContext ctx;
+    ctx.variants = config.variants;
+    ctx.exactOptions.route = config.route;
+
+    // Inputs -> truth -> variants -> statistics, input by input, chunk by chunk.
+    CampaignState state;
+    std::size_t total = 0;
+    for (const auto& in : inputs)
+        total += in.count;
+    {
+        Progress progress(config.progress, "cases", total);
+        for (const auto& in : inputs)
+            state.families.push_back(runInput(in, config, ctx, threads, progress, state, perCase));
+    }
+
+    // Timing.
+    const auto tTiming = Clock::now();
+    if (config.timing)
+        timeVariants(state, config, ctx);
+    state.seconds.timing = elapsed(tTiming, Clock::now());
+    const std::size_t baseline = baselineIndex(ctx);
+    setTimingRatios(state, baseline);
+
+    // Judgement and the report.
+    Campaign camp;
+    Json families = Json::array();
+    bool anyFailed = false;
+    std::size_t rejected = 0;
+    for (const auto& f : state.families)
+    {
+        const std::vector<MakeupResult> makeup = f.makeup.results();
+        const Verdict verdict = judgeFamily(makeup, f.stats, ctx);
+        anyFailed = anyFailed || !verdict.pass();
+        rejected += f.rejected;
+        families.push_back(familyJson(f, makeup, verdict, ctx));
+    }
+    camp.exitCode = campaignExitCode(anyFailed, rejected);
+
+    const std::string date = isoDateUtc(), revision = gitRevision();
+    Json worst = worstCases(state, config, ctx, date, revision, camp);
     Json report;
     report["schema"] = "gjk-report/1";
-    report["context"] = std::move(context);
-    report["variants"] = std::move(varJson);
+    report["context"] =
+        contextOf(state, config, threads, date, revision, elapsed(tStart, Clock::now()));
+    report["variants"] = variantsJson(ctx);
     report["baseline_variant"] = ctx.variants[baseline]->name;
-    report["families"] = std::move(famJson);
-    report["rejected"] = std::move(rejectedJson);
+    report["families"] = std::move(families);
+    report["rejected"] = std::move(state.rejected);
     report["worst_cases_file"] = "worst-cases.json";
     report["worst"] = std::move(worst);
     report["exit_code"] = camp.exitCode;
@@ -593,7 +634,8 @@ void checkReportDir(const std::string& outDir)
     if (fs::exists(st))
     {
         if (!fs::is_directory(st))
-            throw InputError(fmt::format("--out {}: exists and is not a directory", excerpt(outDir)));
+            throw InputError(
+                fmt::format("--out {}: exists and is not a directory", excerpt(outDir)));
         // The whole directory is replaced: refuse one that holds anything else than a report.
         for (const auto& e : fs::directory_iterator(dir, ec))
         {
@@ -606,8 +648,8 @@ void checkReportDir(const std::string& outDir)
                     excerpt(outDir), excerpt(name)));
         }
         if (ec)
-            throw InputError(
-                fmt::format("--out {}: cannot read the directory: {}", excerpt(outDir), ec.message()));
+            throw InputError(fmt::format("--out {}: cannot read the directory: {}", excerpt(outDir),
+                                         ec.message()));
     }
     // The parent must exist or be creatable, and be writable: the report is staged beside DIR.
     fs::path parent = dir.parent_path();
@@ -621,20 +663,11 @@ void checkReportDir(const std::string& outDir)
                                      excerpt(parent.string()), std::strerror(errno)));
 }
 
-std::string writeCampaign(const Campaign& camp, const std::string& outDir)
+std::string writeCampaign(const Campaign& camp, StagedDir& out)
 {
-    // Staged beside DIR and swapped in: DIR holds this run or the previous one, never a mix.
-    StagedDir out(reportDirPath(outDir));
     out.write("report.json", camp.report.dump(1) + "\n"); // first: the rest is rendered from it
     out.write("report.md", renderMarkdown(camp.report));
     out.write("worst-cases.json", caseFileText(camp.worstComments, camp.worstCases));
-    if (!camp.perCaseLines.empty())
-    {
-        std::string s;
-        for (const auto& l : camp.perCaseLines)
-            s += l + "\n";
-        out.write("cases.jsonl", s);
-    }
 #if defined(GJK2D_HAVE_HTML)
     out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump())));
     const std::string page = "index.html";

@@ -2,18 +2,29 @@
 // timings -> report.json (docs/report-schema.md), from which everything else is rendered.
 #pragma once
 
+#include "common/output.hpp"
 #include "inputs/cases.hpp"
+#include "inputs/sources.hpp"
 #include "evaluate/evaluate.hpp"
 #include "inputs/families.hpp"
 #include "statistics/stats.hpp"
 #include "evaluate/variants.hpp"
 
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <vector>
 
 namespace gjkval
 {
+
+// Cases evaluated together: a chunk's cases, outcomes and prepared inputs are all a campaign holds
+// per case. Any size gives the same report (tests/validation/test_campaign.cpp).
+inline constexpr std::size_t kDefaultChunkCases = 4096;
+// ns per query is timed on at most this many valid cases per family: the first ones.
+inline constexpr std::size_t kTimingSampleCases = 50000;
+// report.json lists at most this many rejected cases (cases_rejected counts them all).
+inline constexpr std::size_t kMaxRejectedListed = 1000;
 
 struct CampaignConfig
 {
@@ -29,6 +40,7 @@ struct CampaignConfig
     double timingBudgetSeconds = 0.5; // per family and variant, once minPasses are done
     int worstPerFamily = 3;
     bool perCase = false;
+    std::size_t chunkCases = kDefaultChunkCases;
     std::string command; // for the report's context
 };
 
@@ -47,20 +59,9 @@ Json contextJson(const std::string& date, const std::string& revision, const std
 std::vector<std::string> defaultFamilies();
 std::vector<std::string> defaultCaseFiles(); // every *.json in <source>/validation/cases, sorted
 
-struct FamilyData
-{
-    std::string name; // "random", "hard/sliver", "file:talk.json"
-    std::string reason;
-    std::string source; // "generated" or "file"
-    Json input;         // its entry in context.inputs
-    std::vector<Case> cases;
-    std::vector<std::string> labels;   // how a rejected entry is named ("file.json#3 (case 'x')")
-    std::vector<std::string> rejected; // per case: reason from reading the file, or empty
-    std::vector<MakeupSpec> makeup;
-    std::uint64_t seed = 0;
-};
-
-// Generates the families and reads the files. Throws InputError (exit code 2).
+// The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
+std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);
+// ... held whole, for bench and search.
 std::vector<FamilyData> loadInputs(const CampaignConfig& config);
 
 struct Campaign
@@ -68,21 +69,26 @@ struct Campaign
     Json report;                  // report.json
     std::vector<Case> worstCases; // worst-cases.json
     std::vector<std::string> worstComments;
-    std::vector<std::string> perCaseLines; // cases.jsonl (when config.perCase)
     int exitCode = kExitPass;
 };
 
-Campaign runCampaign(const CampaignConfig& config, std::vector<FamilyData> families);
+// The campaign, one input after the other, chunk by chunk: truth, variants, witnesses (on the
+// threads), then statistics, make-up, worst cases and per-case lines folded in case order; then
+// timing, judgement and the report. perCase, when given, receives cases.jsonl's lines in case
+// order as they are made.
+Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                     std::ostream* perCase = nullptr);
 
 // Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
 // directory, holds files that are not a report's, parent not creatable or not writable).
 void checkReportDir(const std::string& outDir);
 
-// Writes report.json, report.md, worst-cases.json, cases.jsonl (if any) and index.html (when the
-// HTML renderer is built in) into a directory beside outDir, then swaps it in: outDir holds this
-// run or the previous one, never a mix. Throws OutputError (exit code 5) when a write fails.
-// Returns the absolute path of the page to open (index.html, or report.md without the renderer).
-std::string writeCampaign(const Campaign& campaign, const std::string& outDir);
+// Writes report.json, report.md, worst-cases.json and index.html (when the HTML renderer is built
+// in) into `out`, staged beside the report directory (cases.jsonl is streamed there during the
+// run), then swaps it in: the directory holds this run or the previous one, never a mix. Throws
+// OutputError (exit code 5) when a write fails. Returns the absolute path of the page to open
+// (index.html, or report.md without the renderer).
+std::string writeCampaign(const Campaign& campaign, StagedDir& out);
 
 // The report without what legitimately changes between runs of the same campaign (timings,
 // date, host, thread count): what "identical whatever the number of threads" compares.

@@ -242,6 +242,8 @@ class StagedDir
     }
 
     const std::filesystem::path& dir() const { return dir_; }
+    // Where a file of the staged directory is written when it is streamed rather than given whole.
+    std::filesystem::path staged(const std::string& name) const { return staging_ / name; }
 
     void write(const std::string& name, const std::string& text)
     {

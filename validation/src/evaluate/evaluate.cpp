@@ -205,21 +205,29 @@ double ulpOf(Scalar s, double x)
     return std::ldexp(1.0, std::max(e, scalarMinExponent(s)) - scalarDigits(s));
 }
 
+double worstKey(const VariantOutcome& v)
+{
+    if (v.skipped || (v.outOfRange && !v.failed)) // not run, or not judged
+        return -1;
+    return (v.nonfinite || v.iterationLimit || (v.certified && !v.intervalContains)) ? kInf
+                                                                                     : v.normalized;
+}
+
 double CaseOutcome::worstKey() const
 {
     double k = -1;
     for (const auto& v : variants)
-    {
-        if (v.skipped)
-            continue;
-        if (v.outOfRange && !v.failed)
-            continue; // not judged
-        const double key = (v.nonfinite || v.iterationLimit || (v.certified && !v.intervalContains))
-                               ? kInf
-                               : v.normalized;
-        k = std::max(k, key);
-    }
+        k = std::max(k, gjkval::worstKey(v));
     return k;
+}
+
+std::size_t CaseOutcome::worstVariant() const
+{
+    std::size_t worst = 0;
+    for (std::size_t k = 1; k < variants.size(); ++k)
+        if (gjkval::worstKey(variants[k]) > gjkval::worstKey(variants[worst]))
+            worst = k;
+    return worst;
 }
 
 bool EvalContext::needFloatTruth() const

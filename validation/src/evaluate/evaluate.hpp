@@ -139,10 +139,16 @@ struct CaseOutcome
     double inputRounding = 0; // |exactFloat.distance - exact.distance|
     std::vector<VariantOutcome> variants;
 
-    // The key the worst cases are ranked by: max over variants of the normalised error, +inf for
-    // non-finite results and iteration limits.
+    // The key the worst cases are ranked by: the largest worstKey() of its variants.
     double worstKey() const;
+    // The variant of that key (the first of equals).
+    std::size_t worstVariant() const;
 };
+
+// How bad one variant's result is, for ranking the worst cases: -1 when it is not judged (not run,
+// or flagged out of range by GJK without failing), +inf for a non-finite result, an iteration limit
+// or a certified interval that misses the truth, else the normalised error.
+double worstKey(const VariantOutcome& v);
 
 struct EvalContext
 {

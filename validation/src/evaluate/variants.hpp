@@ -42,6 +42,8 @@ struct VariantInfo
 const std::vector<VariantInfo>& variantTable();
 // The default of `run --variants`.
 inline constexpr const char* kDefaultVariants = "all";
+// The variant speed ratios are given against (report.json baseline_variant; bench).
+inline constexpr const char* kBaselineVariant = "double";
 // "all", or names separated by commas. Throws InputError naming the unknown one.
 std::vector<const VariantInfo*> parseVariants(const std::string& list);
 const VariantInfo* findVariant(const std::string& name);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <limits>
 #include <set>
@@ -173,7 +174,14 @@ const char* fileTypeName(fs::file_type t)
 // The whole file, at most kMaxCaseFileBytes: a regular file is refused by its size before it is
 // read, a pipe once it has delivered more (an endless stream costs the cap, not all memory).
 // Devices (/dev/zero), directories and sockets are refused by their type.
-std::string readFile(const std::string& path)
+InputError tooLarge(const std::string& path)
+{
+    return InputError(fmt::format("{}: larger than {} bytes, the limit for a case file",
+                                  shownPath(path), kMaxCaseFileBytes));
+}
+
+// The type of a case file about to be read: a regular file (within kMaxCaseFileBytes) or a pipe.
+fs::file_type openedType(const std::string& path)
 {
     const std::string shown = shownPath(path);
     std::error_code ec;
@@ -183,17 +191,23 @@ std::string readFile(const std::string& path)
     if (st.type() != fs::file_type::regular && st.type() != fs::file_type::fifo)
         throw InputError(fmt::format("{}: is {}, expected a case file (a regular file or a pipe)",
                                      shown, fileTypeName(st.type())));
-    const auto tooLarge = [&]
-    {
-        return InputError(fmt::format("{}: larger than {} bytes, the limit for a case file", shown,
-                                      kMaxCaseFileBytes));
-    };
-    std::string text;
     if (st.type() == fs::file_type::regular)
     {
         const auto size = fs::file_size(path, ec);
         if (!ec && size > kMaxCaseFileBytes)
-            throw tooLarge();
+            throw tooLarge(path);
+    }
+    return st.type();
+}
+
+std::string readFile(const std::string& path)
+{
+    const std::string shown = shownPath(path);
+    std::error_code ec;
+    std::string text;
+    if (openedType(path) == fs::file_type::regular)
+    {
+        const auto size = fs::file_size(path, ec);
         if (!ec)
             text.reserve(size);
     }
@@ -206,7 +220,7 @@ std::string readFile(const std::string& path)
         in.read(buffer.data(), std::streamsize(buffer.size()));
         const auto got = std::size_t(in.gcount());
         if (text.size() + got > kMaxCaseFileBytes)
-            throw tooLarge();
+            throw tooLarge(path);
         text.append(buffer.data(), got);
     }
     if (in.bad())
@@ -299,45 +313,98 @@ CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std:
     return e;
 }
 
-// A const char* that records how far nlohmann's lexer has read: its SAX callbacks get no
-// position, and the reader's own errors (depth, duplicate key, number) name line and column.
+// Where nlohmann's lexer is in the input: its SAX callbacks get no position, and the reader's own
+// errors (depth, duplicate key, number) name line and column. The input is read once, as a
+// stream: only the current and the previous line's starts, the last character, and where the
+// last string opened are kept (every position a message names lies within them: a number or a key
+// never spans lines).
+struct ReadPosition
+{
+    std::size_t offset = 0;        // characters read
+    std::size_t line = 1;          // of the next character
+    std::size_t lineStart = 0;     // offset of the current line's first character
+    std::size_t prevLineStart = 0; // ... and of the previous line's
+    char last = 0;                 // the last character read
+    bool inString = false, escaped = false;
+    std::size_t stringStart = 0; // offset of the opening quote of the last string
+    std::size_t lastMinus = std::size_t(-1); // offset of the last '-' outside strings
+
+    void advance(char c)
+    {
+        if (inString)
+        {
+            if (escaped)
+                escaped = false;
+            else if (c == '\\')
+                escaped = true;
+            else if (c == '"')
+                inString = false;
+        }
+        else if (c == '"')
+            inString = true, stringStart = offset;
+        else if (c == '-')
+            lastMinus = offset;
+        last = c;
+        ++offset;
+        if (c == '\n')
+        {
+            ++line;
+            prevLineStart = lineStart;
+            lineStart = offset;
+        }
+    }
+
+    // Line and column (both from 1, columns in bytes) of a recent offset.
+    std::pair<std::size_t, std::size_t> lineColumn(std::size_t at) const
+    {
+        if (at >= lineStart)
+            return {line, at - lineStart + 1};
+        if (at >= prevLineStart && line > 1)
+            return {line - 1, at - prevLineStart + 1};
+        return {line, 1}; // not reached: messages name recent positions
+    }
+};
+
+// An input iterator over a stream buffer that records the position of what it has read.
 struct TrackedIterator
 {
     using iterator_category = std::input_iterator_tag;
     using value_type = char;
     using difference_type = std::ptrdiff_t;
     using pointer = const char*;
-    using reference = const char&;
+    using reference = char;
 
-    const char* p = nullptr;
-    const char** read = nullptr; // one past the last character read
+    std::streambuf* in = nullptr; // nullptr: the end
+    ReadPosition* pos = nullptr;
 
-    reference operator*() const { return *p; }
+    bool atEnd() const
+    {
+        return in == nullptr || in->sgetc() == std::char_traits<char>::eof();
+    }
+    reference operator*() const { return std::char_traits<char>::to_char_type(in->sgetc()); }
     TrackedIterator& operator++()
     {
-        *read = ++p;
+        pos->advance(std::char_traits<char>::to_char_type(in->sbumpc()));
         return *this;
     }
-    TrackedIterator operator++(int)
-    {
-        TrackedIterator t = *this;
-        ++*this;
-        return t;
-    }
-    bool operator==(const TrackedIterator& o) const { return p == o.p; }
+    bool operator==(const TrackedIterator& o) const { return atEnd() == o.atEnd(); }
 };
 
-// The reader: an nlohmann SAX handler (issue 12, defect 3). nlohmann's own parser is iterative, so
-// depth cannot crash it; this handler refuses what it must not pass on (nesting deeper than
-// kMaxJsonDepth, a duplicate key, a number literal that overflows or silently becomes 0), keeps
-// only what a case file uses (format, comments, cases; unknown top-level fields are checked and
-// dropped) and converts "cases" one entry at a time, so that memory follows the cases read, not
-// the JSON tree. Positions come from TrackedIterator.
+// A stream buffer over text in memory (parseCaseFile, pipes), without a copy.
+struct MemoryBuffer : std::streambuf
+{
+    explicit MemoryBuffer(const std::string& text)
+    {
+        char* p = const_cast<char*>(text.data()); // read only: setg needs char*
+        setg(p, p, p + text.size());
+    }
+};
+
 class CaseFileHandler
 {
   public:
-    CaseFileHandler(const std::string& text, const std::string& sourceName)
-        : text_(text), shown_(shownPath(sourceName)), read_(text.data())
+    CaseFileHandler(const std::string& sourceName, const std::function<void(CaseEntry&&)>& consume)
+        : shown_(shownPath(sourceName)), consume_(consume)
     {
         base_ = sourceName;
         if (const auto slash = base_.find_last_of('/'); slash != std::string::npos)
@@ -345,9 +412,10 @@ class CaseFileHandler
         base_ = excerpt(base_);
     }
 
-    CaseFile parse()
+    // Reads the whole input; returns the file's comments and number of entries.
+    CaseFileSummary parse(std::streambuf& in)
     {
-        TrackedIterator first{text_.data(), &read_}, last{text_.data() + text_.size(), &read_};
+        TrackedIterator first{&in, &pos_}, last{nullptr, &pos_};
         if (!RJson::sax_parse(first, last, this))
             throw InputError(error_.empty() ? shown_ + ": invalid JSON" : error_);
         return finish();
@@ -359,7 +427,7 @@ class CaseFileHandler
     bool number_integer(std::int64_t v)
     {
         // "-0" is read as the integer 0: keep its sign, as the writer's -0.0 does.
-        if (v == 0 && literalStart(1) > 0 && text_[literalStart(1) - 1] == '-')
+        if (v == 0 && literalStart(1) > 0 && pos_.lastMinus == literalStart(1) - 1)
             return scalar(-0.0);
         return scalar(v);
     }
@@ -433,7 +501,7 @@ class CaseFileHandler
         std::size_t count = 0;
     };
 
-    std::size_t offset() const { return std::size_t(read_ - text_.data()); }
+    std::size_t offset() const { return pos_.offset; }
 
     // Byte offset where the literal of `length` bytes just read starts. The lexer reads one
     // character past a number unless the text ends; a number literal ends with a digit and is
@@ -441,33 +509,18 @@ class CaseFileHandler
     std::size_t literalStart(std::size_t length) const
     {
         std::size_t end = offset();
-        if (end > 0 && !std::isdigit(static_cast<unsigned char>(text_[end - 1])))
+        if (end > 0 && !std::isdigit(static_cast<unsigned char>(pos_.last)))
             --end;
         return end - std::min(end, length);
     }
 
     // Byte offset of the opening quote of the key just read (the lexer stopped at its closing
-    // quote): the first quote back that is not escaped.
-    std::size_t keyStart() const
-    {
-        std::size_t i = offset() == 0 ? 0 : offset() - 1;
-        while (i > 0)
-        {
-            --i;
-            if (text_[i] != '"')
-                continue;
-            std::size_t backslashes = 0;
-            while (backslashes < i && text_[i - 1 - backslashes] == '\\')
-                ++backslashes;
-            if (backslashes % 2 == 0)
-                return i;
-        }
-        return 0;
-    }
+    // quote).
+    std::size_t keyStart() const { return pos_.stringStart; }
 
     bool fail(std::size_t at, const std::string& message)
     {
-        const auto [line, column] = lineColumn(text_, at);
+        const auto [line, column] = pos_.lineColumn(at);
         error_ = fmt::format("{}:{}:{}: {}", shown_, line, column, message);
         return false;
     }
@@ -584,12 +637,13 @@ class CaseFileHandler
     {
         if (frames_.size() == 2 && frames_[1].role == Role::Cases)
         {
-            entries_.push_back(readCase(case_, entries_.size(), caseTruncated_, base_, names_));
+            consume_(readCase(case_, entries_, caseTruncated_, base_, names_));
+            ++entries_;
             case_ = RJson();
         }
     }
 
-    CaseFile finish()
+    CaseFileSummary finish()
     {
         if (!top_.is_object())
             throw InputError(
@@ -607,7 +661,8 @@ class CaseFileHandler
                                          excerpt(format.get_ref<const std::string&>())));
         if (!top_.contains("cases") || !top_["cases"].is_array())
             throw InputError(fmt::format("{}: \"cases\" is missing or not an array", shown_));
-        CaseFile file;
+        CaseFileSummary file;
+        file.entries = entries_;
         if (top_.contains("comments"))
         {
             const RJson& cm = top_["comments"];
@@ -622,36 +677,58 @@ class CaseFileHandler
                 file.comments.push_back(s.get<std::string>());
             }
         }
-        file.entries = std::move(entries_);
         return file;
     }
 
-    const std::string& text_;
     std::string shown_; // the file as messages name it
     std::string base_;  // its last component as labels name it
-    const char* read_;  // TrackedIterator's record
+    const std::function<void(CaseEntry&&)>& consume_;
+    ReadPosition pos_; // TrackedIterator's record
     std::string error_;
     std::vector<Frame> frames_;
     RJson top_;
     RJson case_;
     std::size_t caseValues_ = 0;
     bool caseTruncated_ = false;
-    std::vector<CaseEntry> entries_;
+    std::size_t entries_ = 0;
     std::set<std::string> names_;
 };
+
+CaseFile collect(std::streambuf& in, const std::string& sourceName)
+{
+    CaseFile file;
+    file.path = sourceName;
+    const std::function<void(CaseEntry&&)> keep = [&](CaseEntry&& e)
+    { file.entries.push_back(std::move(e)); };
+    file.comments = CaseFileHandler(sourceName, keep).parse(in).comments;
+    return file;
+}
 } // namespace
 
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName)
 {
-    CaseFileHandler handler(text, sourceName);
-    CaseFile file = handler.parse();
-    file.path = sourceName;
-    return file;
+    MemoryBuffer in(text);
+    return collect(in, sourceName);
 }
 
 CaseFile readCaseFile(const std::string& path)
 {
     return parseCaseFile(readFile(path), path);
+}
+
+CaseFileSummary streamCaseFile(const std::string& path,
+                               const std::function<void(CaseEntry&&)>& consume)
+{
+    if (openedType(path) == fs::file_type::fifo) // read once, whole: at most kMaxCaseFileBytes
+    {
+        const std::string text = readFile(path);
+        MemoryBuffer in(text);
+        return CaseFileHandler(path, consume).parse(in);
+    }
+    std::filebuf in;
+    if (in.open(path, std::ios::in | std::ios::binary) == nullptr)
+        throw InputError(fmt::format("{}: cannot open the file", shownPath(path)));
+    return CaseFileHandler(path, consume).parse(in);
 }
 
 Json shapeToJson(const ShapeIn& s)

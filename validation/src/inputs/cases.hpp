@@ -6,6 +6,7 @@
 #include <exact/exact.hpp>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,19 @@ inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of o
 // labels are quoted through excerpt().
 CaseFile readCaseFile(const std::string& path);
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName);
+
+// The same reader as a stream: each entry goes to `consume` in file order as soon as it is read,
+// and only the current case's JSON and the names seen (duplicates are rejected) are kept, so that
+// memory does not grow with the file. A regular file is read from disk as it is parsed; a pipe is
+// read whole first (within kMaxCaseFileBytes). Throws InputError as readCaseFile, possibly after
+// some entries were consumed (a file that is not JSON at its end).
+struct CaseFileSummary
+{
+    std::vector<std::string> comments;
+    std::size_t entries = 0;
+};
+CaseFileSummary streamCaseFile(const std::string& path,
+                               const std::function<void(CaseEntry&&)>& consume);
 
 // Writes a gjk-cases/1 file: one case per line, numbers in shortest round-trip form.
 std::string caseFileText(const std::vector<std::string>& comments, const std::vector<Case>& cases);

@@ -14,6 +14,7 @@
 #include <iterator>
 #include <limits>
 #include <numbers>
+#include <memory>
 #include <set>
 
 namespace gjkval
@@ -131,15 +132,6 @@ void placeAtGap(const ShapeIn& a, ShapeIn& b, double gap, Rng& r)
 }
 
 // Largest distance between two of the (hull) points; 0 for a single point.
-double hullDiameter(const std::vector<P2>& h)
-{
-    double d = 0;
-    for (std::size_t i = 0; i < h.size(); ++i)
-        for (std::size_t j = i + 1; j < h.size(); ++j)
-            d = std::max(d, std::hypot(h[j][0] - h[i][0], h[j][1] - h[i][1]));
-    return d;
-}
-
 void scaleShape(ShapeIn& s, double k)
 {
     for (auto& p : s.points)
@@ -1497,24 +1489,31 @@ std::string caseName(const std::string& family, int i, const std::string& tag)
     return family + "/" + std::to_string(i) + (tag.empty() ? "" : "-" + tag);
 }
 
-GeneratedFamily generate(const std::string& name, const std::string& reason, int count,
-                         std::uint64_t seed, const Gen& gen, std::vector<MakeupSpec> makeup)
+// Case i of a family: its own Rng stream from the family seed and i, so that any range of cases
+// can be made alone (the campaign streams them in chunks) and comes out the same.
+FamilyPlan plan(const std::string& name, const std::string& reason, int count, std::uint64_t seed,
+                const Gen& gen, std::vector<MakeupSpec> makeup)
 {
-    GeneratedFamily f;
+    FamilyPlan f;
     f.name = name;
     f.reason = reason;
     f.seed = familySeed(seed, name);
+    f.count = std::size_t(count);
     f.makeup = std::move(makeup);
-    f.cases.resize(std::size_t(count));
-    for (int i = 0; i < count; ++i)
+    f.cases = [name, gen, familySeed = f.seed](std::size_t begin, std::size_t end)
     {
-        Rng r(mix64(f.seed + std::uint64_t(i)));
-        r.family = f.seed;
-        std::string tag;
-        Case& c = f.cases[std::size_t(i)];
-        gen(r, i, c, tag);
-        c.name = caseName(name, i, tag);
-    }
+        std::vector<Case> cases(end - begin);
+        for (std::size_t i = begin; i < end; ++i)
+        {
+            Rng r(mix64(familySeed + std::uint64_t(i)));
+            r.family = familySeed;
+            std::string tag;
+            Case& c = cases[i - begin];
+            gen(r, int(i), c, tag);
+            c.name = caseName(name, int(i), tag);
+        }
+        return cases;
+    };
     return f;
 }
 
@@ -1531,20 +1530,25 @@ struct EngineEntry
 // The engine families' cases come from one simulation each, not one Rng stream per case: the
 // family seed builds the scene and seeds the sampling of `count` queries from the run
 // (engine.hpp), so a smaller count is not a prefix of a larger one.
-GeneratedFamily generateEngine(const EngineEntry& e, int count, std::uint64_t seed)
+// The simulation runs here, whole: an engine family's cases are held in memory (2000 by default).
+FamilyPlan planEngine(const EngineEntry& e, int count, std::uint64_t seed)
 {
-    GeneratedFamily f;
+    FamilyPlan f;
     f.name = "engine/" + e.info.name;
     f.reason = e.info.reason;
     f.seed = familySeed(seed, f.name);
     f.makeup = e.makeup;
     auto queries = engineQueries(e.scene, e.kind, f.seed, count);
-    f.cases.reserve(queries.size());
+    auto cases = std::make_shared<std::vector<Case>>();
+    cases->reserve(queries.size());
     for (std::size_t i = 0; i < queries.size(); ++i)
     {
-        f.cases.push_back(std::move(queries[i].c));
-        f.cases.back().name = caseName(f.name, int(i), queries[i].tag);
+        cases->push_back(std::move(queries[i].c));
+        cases->back().name = caseName(f.name, int(i), queries[i].tag);
     }
+    f.count = cases->size();
+    f.cases = [cases](std::size_t begin, std::size_t end)
+    { return std::vector<Case>(cases->begin() + std::ptrdiff_t(begin), cases->begin() + std::ptrdiff_t(end)); };
     return f;
 }
 
@@ -1729,16 +1733,16 @@ std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySp
     return out;
 }
 
-std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed)
+std::vector<FamilyPlan> planFamilies(const std::string& spec, std::uint64_t seed)
 {
     const FamilySpec parsed = parseFamilySpec(spec);
     const std::string& name = parsed.name;
     const int count = parsed.count;
-    std::vector<GeneratedFamily> out;
+    std::vector<FamilyPlan> out;
     if (name == "random")
     {
-        out.push_back(generate("random", kRandomReason, count < 0 ? kDefaultRandomCount : count,
-                               seed, genRandom, randomMakeup()));
+        out.push_back(plan("random", kRandomReason, count < 0 ? kDefaultRandomCount : count, seed,
+                           genRandom, randomMakeup()));
         return out;
     }
     const bool all = name == "hard";
@@ -1746,172 +1750,22 @@ std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint
     {
         const std::string full = "hard/" + e.info.name;
         if (all || name == full)
-            out.push_back(generate(full, e.info.reason, count < 0 ? e.info.count : count, seed,
-                                   e.gen, e.makeup));
+            out.push_back(plan(full, e.info.reason, count < 0 ? e.info.count : count, seed, e.gen,
+                               e.makeup));
     }
     for (const auto& e : engineTable())
         if (name == "engine" || name == "engine/" + e.info.name)
-            out.push_back(generateEngine(e, count < 0 ? e.info.count : count, seed));
+            out.push_back(planEngine(e, count < 0 ? e.info.count : count, seed));
     if (out.empty()) // parseFamilySpec accepted the name: a broken invariant, not bad input
-        throw std::logic_error("generateFamilies: the family '" + name + "' generated nothing");
+        throw std::logic_error("planFamilies: the family '" + name + "' generated nothing");
     return out;
 }
 
-std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
-                                         const std::vector<const Case*>& cases,
-                                         const std::vector<const exact::Result*>& truths)
+std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed)
 {
-    std::vector<MakeupResult> out;
-    const double n = double(cases.size());
-    for (const auto& s : specs)
-    {
-        double v = 0;
-        switch (s.metric)
-        {
-        case M::OverlapFraction:
-        case M::SeparatedFraction:
-        {
-            double k = 0;
-            for (auto* t : truths)
-                k += exactIsZero(*t) ? 1 : 0;
-            v = n > 0 ? k / n : 0;
-            if (s.metric == M::SeparatedFraction)
-                v = n > 0 ? 1 - v : 0;
-            break;
-        }
-        case M::NearTouchingFraction:
-        {
-            double k = 0;
-            for (auto* t : truths)
-                k += (!exactIsZero(*t) && t->distance <= 1e-2) ? 1 : 0;
-            v = n > 0 ? k / n : 0;
-            break;
-        }
-        case M::MinPositiveDistance:
-            v = kInf;
-            for (auto* t : truths)
-                if (!exactIsZero(*t))
-                    v = std::min(v, t->distance);
-            break;
-        case M::MaxDistance:
-            for (auto* t : truths)
-                v = std::max(v, t->distance);
-            break;
-        case M::MaxCoordinate:
-            for (auto* c : cases)
-                v = std::max(v, maxAbsWorldCoordinate(*c));
-            break;
-        case M::MinVertices:
-            v = kInf;
-            for (auto* c : cases)
-                v = std::min({v, double(c->a.points.size()), double(c->b.points.size())});
-            break;
-        case M::MinHullVertices:
-            v = kInf;
-            for (auto* c : cases)
-                v = std::min({v, double(convexHull(c->a.points).size()),
-                              double(convexHull(c->b.points).size())});
-            break;
-        case M::MaxVertices:
-            for (auto* c : cases)
-                v = std::max({v, double(c->a.points.size()), double(c->b.points.size())});
-            break;
-        case M::MaxAspect:
-            for (auto* c : cases)
-                for (const ShapeIn* sh : {&c->a, &c->b})
-                    if (const double a = aspectRatio(*sh); std::isfinite(a))
-                        v = std::max(v, a);
-            break;
-        case M::RadiusFraction:
-        {
-            double k = 0;
-            for (auto* c : cases)
-                k += (c->a.radius > 0 || c->b.radius > 0) ? 1 : 0;
-            v = n > 0 ? k / n : 0;
-            break;
-        }
-        case M::MinScale:
-            v = kInf;
-            for (auto* c : cases)
-                v = std::min(v, maxAbsWorldCoordinate(*c));
-            break;
-        case M::MinEdgeRatio:
-            v = kInf;
-            for (auto* c : cases)
-                for (const ShapeIn* sh : {&c->a, &c->b})
-                {
-                    const auto h = convexHull(sh->points);
-                    if (h.size() < 3)
-                        continue;
-                    double shortest = kInf;
-                    for (std::size_t i = 0; i < h.size(); ++i)
-                        shortest =
-                            std::min(shortest, std::hypot(h[(i + 1) % h.size()][0] - h[i][0],
-                                                          h[(i + 1) % h.size()][1] - h[i][1]));
-                    v = std::min(v, shortest / hullDiameter(h));
-                }
-            break;
-        case M::MinSizeRatio:
-        case M::MaxSizeRatio:
-            v = s.metric == M::MinSizeRatio ? kInf : 0;
-            for (auto* c : cases)
-            {
-                const double da = hullDiameter(convexHull(c->a.points));
-                const double db = hullDiameter(convexHull(c->b.points));
-                const double ratio =
-                    std::min(da, db) > 0 ? std::max(da, db) / std::min(da, db) : kInf;
-                v = s.metric == M::MinSizeRatio ? std::min(v, ratio) : std::max(v, ratio);
-            }
-            break;
-        case M::OutsideFloatRangeFraction:
-        {
-            double k = 0;
-            for (auto* c : cases)
-            {
-                const double m = maxAbsWorldCoordinate(*c);
-                k += (m >= double(gjk::Tolerances<float>::minCoordinate) &&
-                      m <= double(gjk::Tolerances<float>::maxCoordinate))
-                         ? 0
-                         : 1;
-            }
-            v = n > 0 ? k / n : 0;
-            break;
-        }
-        case M::DistinctDistances:
-        {
-            std::set<double> ds;
-            for (auto* t : truths)
-                ds.insert(t->distance);
-            v = double(ds.size());
-            break;
-        }
-        case M::SharedOriginFraction:
-        {
-            double k = 0;
-            for (auto* c : cases)
-                k += (c->a.px == c->b.px && c->a.py == c->b.py) ? 1 : 0;
-            v = n > 0 ? k / n : 0;
-            break;
-        }
-        case M::MaxPolygonRadius:
-            for (auto* c : cases)
-                for (const ShapeIn* sh : {&c->a, &c->b})
-                    if (sh->points.size() >= 3)
-                        v = std::max(v, sh->radius);
-            break;
-        case M::NonUnitRotationFraction:
-        {
-            double k = 0;
-            for (auto* c : cases)
-                k += (c->a.c * c->a.c + c->a.s * c->a.s != 1 || c->b.c * c->b.c + c->b.s * c->b.s != 1) ? 1 : 0;
-            v = n > 0 ? k / n : 0;
-            break;
-        }
-        }
-        const bool skipped = s.statistical && cases.size() < kMinCasesForStatistics;
-        const bool inRange = v >= s.min && v <= s.max;
-        out.push_back({s.check, v, s.min, s.max, skipped || inRange, skipped});
-    }
+    std::vector<GeneratedFamily> out;
+    for (auto& p : planFamilies(spec, seed))
+        out.push_back({p.name, p.reason, p.seed, p.cases(0, p.count), std::move(p.makeup)});
     return out;
 }
 

@@ -9,6 +9,7 @@
 #include <exact/exact.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -71,6 +72,18 @@ struct GeneratedFamily
     std::vector<MakeupSpec> makeup;
 };
 
+// A family before its cases are made: what the report says of it, and its cases on demand, any
+// range [begin, end) of 0..count, each case the same whatever the range (the campaign streams them
+// in chunks).
+struct FamilyPlan
+{
+    std::string name, reason;
+    std::uint64_t seed = 0;
+    std::size_t count = 0;
+    std::vector<MakeupSpec> makeup;
+    std::function<std::vector<Case>(std::size_t begin, std::size_t end)> cases;
+};
+
 struct HardSubFamilyInfo
 {
     std::string name; // without "hard/"
@@ -101,12 +114,12 @@ FamilySpec parseFamilySpec(const std::string& spec);
 // The families a spec stands for and their case counts, without generating them.
 std::vector<std::pair<std::string, std::size_t>> familyCaseCounts(const FamilySpec& spec);
 
-// Generates the families of a spec (parseFamilySpec). Throws InputError.
+// The families of a spec (parseFamilySpec), to generate chunk by chunk. Throws InputError.
+std::vector<FamilyPlan> planFamilies(const std::string& spec, std::uint64_t seed);
+// ... and generated whole.
 std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint64_t seed);
 
-std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
-                                         const std::vector<const Case*>& cases,
-                                         const std::vector<const exact::Result*>& truths);
+// The checks are evaluated by statistics/makeup.hpp.
 
 // Exact distance is 0: the (rounded) shapes touch or overlap.
 inline bool exactIsZero(const exact::Result& r)

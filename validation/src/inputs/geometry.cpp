@@ -267,4 +267,13 @@ double aspectRatio(const ShapeIn& s)
     return width > 0 ? diameter / width : std::numeric_limits<double>::infinity();
 }
 
+double hullDiameter(const std::vector<P2>& h)
+{
+    double d = 0;
+    for (std::size_t i = 0; i < h.size(); ++i)
+        for (std::size_t j = i + 1; j < h.size(); ++j)
+            d = std::max(d, std::hypot(h[j][0] - h[i][0], h[j][1] - h[i][1]));
+    return d;
+}
+
 } // namespace gjkval

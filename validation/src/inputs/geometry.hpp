@@ -44,5 +44,7 @@ double maxAbsTranslation(const Case& c);
 // Diameter / minimum width of the hull of the local points (inf for segments and points);
 // computed for at most 64 hull vertices, else 0.
 double aspectRatio(const ShapeIn& s);
+// Largest distance between two points of h.
+double hullDiameter(const std::vector<P2>& h);
 
 } // namespace gjkval

@@ -76,7 +76,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
 
     const TimingResult* base = nullptr;
     for (std::size_t k = 0; k < config.variants.size(); ++k)
-        if (config.variants[k]->name == "double" && results[k].nsPerQuery > 0)
+        if (config.variants[k]->name == kBaselineVariant && results[k].nsPerQuery > 0)
             base = &results[k];
 
     Json vars = Json::object();
@@ -121,7 +121,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     Json& j = out.json;
     j["schema"] = "gjk-bench/1";
     j["context"] = std::move(context);
-    j["baseline_variant"] = base ? Json("double") : Json(nullptr);
+    j["baseline_variant"] = base ? Json(kBaselineVariant) : Json(nullptr);
     j["variants"] = std::move(vars);
     j["rejected"] = std::move(rejectedJson);
     j["exit_code"] = out.exitCode;

@@ -1,0 +1,93 @@
+// gjk-validate bench: the variants timed on given cases (no exact side).
+#include "timing/bench.hpp"
+#include "campaign/campaign.hpp"
+#include "commands/command_line.hpp"
+#include "common/output.hpp"
+#include "evaluate/variants.hpp"
+#include "report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+#if defined(GJK2D_HAVE_HTML)
+#include "gjk_html/html.hpp"
+#endif
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+struct Options
+{
+    BenchConfig bcfg;
+    std::vector<std::string> benchFamilies, benchFiles;
+    std::string benchVariants = "all", benchJson, benchSeed = "1";
+};
+
+int benchCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
+                 [[maybe_unused]] CLI::App& sub)
+{
+    o.bcfg.seed = parseSeed(o.benchSeed);
+    o.bcfg.variants = parseVariants(o.benchVariants);
+    o.bcfg.command = line.text();
+    if (o.benchFamilies.empty() && o.benchFiles.empty())
+        throw InputError("bench: which cases? give --cases FILE and/or --family F");
+    checkRange("--passes", o.bcfg.passes, 1, kMaxPasses);
+    checkFamilies(o.benchFamilies, false);
+    checkCaseFiles(o.benchFiles);
+    if (!o.benchJson.empty() || sub.count("--json") > 0)
+        checkOutputFile("--json", o.benchJson);
+    testFault();
+    CampaignConfig in;
+    in.families = o.bcfg.families = o.benchFamilies;
+    in.caseFiles = o.bcfg.caseFiles = o.benchFiles;
+    in.seed = o.bcfg.seed;
+    const BenchResult res = runBench(o.bcfg, loadInputs(in));
+    std::fputs(benchTable(res.json).c_str(), stdout);
+    for (const auto& r : res.json["rejected"])
+        std::fprintf(stderr, "gjk-validate: rejected %s: %s\n",
+                     r["name"].get<std::string>().c_str(), r["reason"].get<std::string>().c_str());
+    if (!o.benchJson.empty())
+    {
+        writeFileAtomic(o.benchJson, res.json.dump(1) + "\n");
+        std::printf("json: %s\n", o.benchJson.c_str());
+    }
+    flushStdout();
+    return res.exitCode;
+}
+} // namespace
+
+Subcommand addBench(CLI::App& app, const CommandLine& line)
+{
+    auto o = std::make_shared<Options>();
+    auto* bench = app.add_subcommand(
+        "bench", "Time GJK variants on your cases (no exact side): per variant, repeated "
+                 "single-threaded passes over all cases; prints the median ns per query, its "
+                 "spread (fastest, slowest pass) and the ratio to `double`.");
+    bench->footer(exitCodesHelp());
+    bench->add_option("--cases", o->benchFiles, "a gjk-cases/1 file; repeatable")
+        ->allow_extra_args(false);
+    bench->add_option("--family", o->benchFamilies, "case family as for run; repeatable")
+        ->allow_extra_args(false);
+    bench->add_option("--seed", o->benchSeed, "campaign seed for --family, 0..2^64-1")
+        ->capture_default_str();
+    bench
+        ->add_option("--variants", o->benchVariants,
+                     "comma-separated variant names, or all (see `list`)")
+        ->capture_default_str();
+    bench->add_flag("--warm", o->bcfg.warm,
+                    "time warm-started queries: each starts from the SimplexCache of a previous "
+                    "query of the same case");
+    bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
+        ->capture_default_str();
+    bench->add_option("--json", o->benchJson, "write the timings as JSON to this file");
+    return {bench, [o, line, bench] { return benchCommand(*o, line, *bench); }};
+}
+
+} // namespace gjkval

@@ -1,0 +1,78 @@
+// What every subcommand of gjk-validate shares: the checks of its arguments (each failing with an
+// InputError, exit code 2, before any work starts) and the registration of a subcommand.
+#pragma once
+
+#include "common/common.hpp"
+
+#include <exact/exact.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+// Ranges of the numeric options (docs/validation.md).
+inline constexpr int kMaxThreads = 256;
+inline constexpr int kMaxPasses = 1000;
+inline constexpr int kMaxWorst = 1000;
+inline constexpr std::size_t kMaxCommentArgBytes = 1000;
+inline constexpr int kMaxSearchPopulation = 1000;
+inline constexpr std::uint64_t kMaxSearchEvaluations = 1000000000,
+                               kDefaultSearchEvaluations = 10000;
+inline constexpr std::size_t kMaxChunkCases = 1000000;
+
+// Memory a command needs per case it holds, measured as peak RSS growth over 5000 .. 40000
+// `random` cases (GCC 12 release build, every variant): generate 1.4 KB, bench 1.5 KB (rounded
+// up). `run` streams its cases and holds only the engine families whole. A `hard/many-vertices`
+// case (up to 2 x 4096 points, their exact hulls and float copies) is counted as 1 MB. A guard
+// against commands that cannot fit, not a prediction: a command is refused when its estimate
+// exceeds the machine's physical memory.
+inline constexpr double kHeldBytesPerCase = 5e3, kLargeCaseBytes = 1e6;
+
+// The program's command line, as the report's context quotes it.
+struct CommandLine
+{
+    int argc;
+    char** argv;
+    std::string text() const; // "gjk-validate run --family random:100"
+};
+
+// A subcommand: its options registered on the app, and what it does once they are parsed.
+struct Subcommand
+{
+    CLI::App* app;
+    std::function<int()> run;
+};
+Subcommand addRun(CLI::App& app, const CommandLine& line);
+Subcommand addGenerate(CLI::App& app, const CommandLine& line);
+Subcommand addExplain(CLI::App& app, const CommandLine& line);
+Subcommand addBench(CLI::App& app, const CommandLine& line);
+Subcommand addSearch(CLI::App& app, const CommandLine& line);
+Subcommand addList(CLI::App& app, const CommandLine& line);
+
+// Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
+// which hold only UTF-8.
+void checkArgsUtf8(int argc, char** argv);
+// A seed: decimal digits only, 0 .. 2^64 - 1 ("-1" used to become 2^64 - 1 silently).
+std::uint64_t parseSeed(const std::string& text);
+exact::Route parseRouteOrThrow(const std::string& name);
+void checkRange(const char* option, int value, int lo, int hi);
+void checkComments(const std::vector<std::string>& comments);
+// Case files: each readable, none given twice (also not under two paths).
+void checkCaseFiles(const std::vector<std::string>& files);
+// Parses every family spec (InputError on a bad one) and refuses a command whose estimated memory
+// exceeds the machine's physical memory. streamed: the command holds only the engine families'
+// cases (run); else every case (generate, bench, search, explain).
+void checkFamilies(const std::vector<std::string>& specs, bool streamed);
+// Test-only: GJK2D_VALIDATE_TEST_FAULT=logic_error|bad_alloc|unknown makes the program throw that
+// once its arguments are checked, so that tests reach the top-level handlers (exit codes 4, 5).
+void testFault();
+// The last check of a command: what it printed reached standard output.
+void flushStdout();
+
+} // namespace gjkval

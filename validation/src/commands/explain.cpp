@@ -1,0 +1,141 @@
+// gjk-validate explain: one case in detail (inputs, each variant's result and trace, the exact
+// result, the errors), as text, CaseDetail JSON or the iteration viewer page.
+#include "commands/command_line.hpp"
+#include "common/output.hpp"
+#include "evaluate/evaluate.hpp"
+#include "evaluate/variants.hpp"
+#include "inputs/cases.hpp"
+#include "inputs/families.hpp"
+#include "report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <unistd.h>
+
+#if defined(GJK2D_HAVE_HTML)
+#include "gjk_html/html.hpp"
+#endif
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+struct Options
+{
+    std::vector<std::string> exPositional;
+    std::string exName, exFamily, exJson, exHtml, exVariants = "all", exRoute = "default",
+                                                  exSeed = "1";
+};
+
+int explainCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
+                   [[maybe_unused]] CLI::App& sub)
+{
+    // `explain FILE NAME`, `explain FILE --name NAME`, `explain --family F NAME`,
+    // `explain --family F --name NAME`: anything more is refused.
+    std::string exFile;
+    const std::size_t wanted = (o.exFamily.empty() ? 1 : 0) + (o.exName.empty() ? 1 : 0);
+    if (o.exPositional.size() > wanted)
+        throw InputError(fmt::format("explain: unexpected argument '{}' (give FILE NAME, or "
+                                     "--family F NAME)",
+                                     excerpt(o.exPositional[wanted])));
+    std::size_t next = 0;
+    if (o.exFamily.empty() && next < o.exPositional.size())
+        exFile = o.exPositional[next++];
+    if (o.exName.empty() && next < o.exPositional.size())
+        o.exName = o.exPositional[next++];
+    if (o.exFamily.empty() && exFile.empty())
+        throw InputError("explain: give a case FILE or --family");
+    if (o.exName.empty())
+        throw InputError("explain: which case? give its name (explain FILE NAME)");
+    const std::uint64_t seedValue = parseSeed(o.exSeed);
+    EvalContext ctx;
+    ctx.variants = parseVariants(o.exVariants);
+    ctx.exactOptions.route = parseRouteOrThrow(o.exRoute);
+    if (!o.exFamily.empty())
+        checkFamilies({o.exFamily}, false);
+    else
+        checkCaseFiles({exFile});
+    if (sub.count("--json") > 0)
+        checkOutputFile("--json", o.exJson);
+    if (sub.count("--html") > 0)
+    {
+#if !defined(GJK2D_HAVE_HTML)
+        throw InputError("--html: this build has no HTML renderer (validation/html/)");
+#endif
+        checkOutputFile("--html", o.exHtml);
+    }
+    testFault();
+    Case found;
+    std::string family;
+    bool ok = false;
+    std::string rejected;
+    if (!o.exFamily.empty())
+    {
+        for (auto& f : generateFamilies(o.exFamily, seedValue))
+            for (auto& c : f.cases)
+                if (!ok && c.name == o.exName)
+                {
+                    found = c;
+                    family = f.name;
+                    ok = true;
+                }
+    }
+    else
+    {
+        CaseFile file = readCaseFile(exFile);
+        family = "file:" + fs::path(exFile).filename().string();
+        for (auto& e : file.entries)
+            if (!ok && e.c.name == o.exName)
+            {
+                found = e.c;
+                rejected = e.rejected;
+                ok = true;
+            }
+    }
+    if (!ok)
+        throw InputError(fmt::format("explain: no case named '{}'", excerpt(o.exName)));
+    if (!rejected.empty())
+        throw InputError(
+            fmt::format("explain: case '{}' is rejected: {}", excerpt(o.exName), rejected));
+    CaseOutcome outcome = evaluateCase(found, ctx);
+    const Json detail = caseDetail(found, family, ctx, outcome, "explain");
+    std::fputs(explainText(detail).c_str(), stdout);
+    if (!o.exJson.empty())
+        writeFileAtomic(o.exJson, detail.dump(1) + "\n");
+#if defined(GJK2D_HAVE_HTML)
+    if (!o.exHtml.empty())
+        writeFileAtomic(o.exHtml, gjk_html::renderCase(nlohmann::json::parse(detail.dump())));
+#endif
+    flushStdout();
+    return outcome.rejected.empty() ? kExitPass : kExitInput;
+}
+} // namespace
+
+Subcommand addExplain(CLI::App& app, const CommandLine& line)
+{
+    auto o = std::make_shared<Options>();
+    auto* ex = app.add_subcommand(
+        "explain", "Explain one case: inputs, each variant's result and iteration trace, "
+                   "the exact result, the errors. Cases come from FILE, or from --family.");
+    ex->footer(exitCodesHelp());
+    ex->add_option("args", o->exPositional,
+                   "FILE NAME (the gjk-cases/1 file and the case's name), or NAME alone with "
+                   "--family; NAME may be given as --name instead");
+    ex->add_option("--name,-n", o->exName, "the case's name");
+    ex->add_option("--family", o->exFamily,
+                   "take the case from this generated family instead of a file");
+    ex->add_option("--seed", o->exSeed, "seed for --family, 0..2^64-1")->capture_default_str();
+    ex->add_option("--variants", o->exVariants, "variants to run")->capture_default_str();
+    ex->add_option("--exact-route", o->exRoute, "exact construction")->capture_default_str();
+    ex->add_option("--json", o->exJson,
+                   "write the CaseDetail JSON (docs/report-schema.md) to this file");
+    ex->add_option("--html", o->exHtml, "write the iteration viewer page to this file");
+    return {ex, [o, line, ex] { return explainCommand(*o, line, *ex); }};
+}
+
+} // namespace gjkval

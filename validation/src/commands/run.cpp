@@ -1,0 +1,140 @@
+// gjk-validate run: a campaign, from the command line to the report directory.
+#include "campaign/campaign.hpp"
+#include "commands/command_line.hpp"
+#include "common/output.hpp"
+#include "evaluate/variants.hpp"
+#include "report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <unistd.h>
+
+namespace gjkval
+{
+namespace
+{
+struct RunOptions
+{
+    CampaignConfig config;
+    std::vector<std::string> families, files;
+    std::string variants = kDefaultVariants, outDir = "reports/latest/", route = "default",
+                seed = "1";
+    std::size_t chunkCases = kDefaultChunkCases;
+    bool noProgress = false, noTiming = false;
+};
+
+// Every argument is checked here, before any work starts (InputError: exit code 2).
+CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
+{
+    CampaignConfig cfg = o.config;
+    cfg.seed = parseSeed(o.seed);
+    cfg.variants = parseVariants(o.variants);
+    cfg.route = parseRouteOrThrow(o.route);
+    checkRange("--threads", cfg.threads, 0, kMaxThreads);
+    checkRange("--passes", cfg.maxPasses, 1, kMaxPasses);
+    checkRange("--worst", cfg.worstPerFamily, 0, kMaxWorst);
+    if (o.chunkCases < 1 || o.chunkCases > kMaxChunkCases)
+        throw InputError(fmt::format("--chunk {}: expected 1..{}", o.chunkCases, kMaxChunkCases));
+    cfg.chunkCases = o.chunkCases;
+    cfg.timing = !o.noTiming;
+    cfg.minPasses = std::min(cfg.minPasses, cfg.maxPasses);
+    cfg.progress = !o.noProgress && isatty(STDERR_FILENO);
+    cfg.command = line.text();
+    cfg.families = o.families;
+    cfg.caseFiles = o.files;
+    if (cfg.families.empty() && cfg.caseFiles.empty())
+    {
+        cfg.families = defaultFamilies();
+        cfg.caseFiles = defaultCaseFiles();
+    }
+    checkFamilies(cfg.families, true);
+    checkCaseFiles(cfg.caseFiles);
+    checkReportDir(o.outDir);
+    return cfg;
+}
+
+int runCommand(RunOptions& o, const CommandLine& line)
+{
+    const CampaignConfig cfg = checkedConfig(o, line);
+    testFault();
+    std::vector<CampaignInput> inputs = campaignInputs(cfg);
+    // Staged beside DIR and swapped in at the end: DIR holds this run or the previous one.
+    StagedDir out(reportDirPath(o.outDir));
+    std::ofstream perCase;
+    if (cfg.perCase)
+    {
+        perCase.open(out.staged("cases.jsonl"), std::ios::binary);
+        if (!perCase)
+            throw OutputError(fmt::format("{}/cases.jsonl: cannot create the file: {}",
+                                          excerpt(out.dir().string()), std::strerror(errno)));
+    }
+    const Campaign camp = runCampaign(cfg, std::move(inputs), cfg.perCase ? &perCase : nullptr);
+    if (cfg.perCase)
+    {
+        perCase.close();
+        if (!perCase)
+            throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
+                                          excerpt(out.dir().string()), std::strerror(errno)));
+    }
+    const std::string page = writeCampaign(camp, out);
+    std::fputs(terminalSummary(camp.report).c_str(), stdout);
+    std::printf("report: %s\n", page.c_str());
+    flushStdout();
+    return camp.exitCode;
+}
+} // namespace
+
+Subcommand addRun(CLI::App& app, const CommandLine& line)
+{
+    auto o = std::make_shared<RunOptions>();
+    CampaignConfig& cfg = o->config;
+    auto* run = app.add_subcommand(
+        "run", "Run a campaign and write DIR/report.json, report.md, worst-cases.json "
+               "(and cases.jsonl, index.html). Without --family and --cases: the "
+               "default campaign, --family random:200000 --family hard --family engine plus every "
+               "validation/cases/*.json.");
+    run->footer(exitCodesHelp());
+    run->add_option("--family", o->families,
+                    "case family with optional count: random[:N] (default N 200000), hard[:N] (all "
+                    "sub-families, N each, default their built-in counts), hard/<sub>[:N], "
+                    "engine[:N] (all engine families, N each, default 2000), "
+                    "engine/<scene>-<kind>[:N]; N in 1..1e8 (engine families are held in memory: "
+                    "within it); repeatable (see `list`)")
+        ->allow_extra_args(false);
+    run->add_option("--cases", o->files, "a gjk-cases/1 file; repeatable")->allow_extra_args(false);
+    run->add_option("--seed", o->seed, "campaign seed, 0..2^64-1 (each family derives its own)")
+        ->capture_default_str();
+    run->add_option("--variants", o->variants, "comma-separated variant names, or all (see `list`)")
+        ->capture_default_str();
+    run->add_option("--threads", cfg.threads, "worker threads, 0..256 (0: all cores)")
+        ->capture_default_str();
+    run->add_option("--out", o->outDir,
+                    "output directory, replaced as a whole (it may hold only a previous report)")
+        ->capture_default_str();
+    run->add_flag("--per-case", cfg.perCase,
+                  "also write DIR/cases.jsonl, one JSON object per case");
+    run->add_option("--worst", cfg.worstPerFamily,
+                    "worst cases kept per family in worst-cases.json, 0..1000")
+        ->capture_default_str();
+    run->add_option("--exact-route", o->route,
+                    "exact construction: edge-merge, hull-of-differences, minkowski-sum-2")
+        ->capture_default_str();
+    run->add_option("--passes", cfg.maxPasses,
+                    "maximum timed passes per family and variant, 1..1000 (at least 5 are run "
+                    "unless fewer are asked)")
+        ->capture_default_str();
+    run->add_option("--chunk", o->chunkCases,
+                    "cases evaluated together, 1..1e6: memory follows it, the report does not")
+        ->capture_default_str();
+    run->add_flag("--no-timing", o->noTiming, "skip the timed passes (ns_per_query is null)");
+    run->add_flag("--no-progress", o->noProgress,
+                  "no progress bar (it is shown only when stderr is a terminal)");
+    return {run, [o, line] { return runCommand(*o, line); }};
+}
+
+} // namespace gjkval

@@ -1,0 +1,154 @@
+#include "inputs/sources.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <memory>
+#include <set>
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+CampaignInput familyInput(FamilyPlan plan, std::uint64_t campaignSeed)
+{
+    CampaignInput in;
+    in.name = plan.name;
+    in.reason = plan.reason;
+    in.source = "generated";
+    in.seed = plan.seed;
+    in.count = plan.count;
+    in.input = {{"family", plan.name}, {"count", plan.count}, {"seed", campaignSeed}};
+    in.makeup = std::move(plan.makeup);
+    in.stream = [plan = std::move(plan)](std::size_t chunkCases,
+                                         const std::function<void(CaseChunk&)>& consume)
+    {
+        for (std::size_t first = 0; first < plan.count; first += chunkCases)
+        {
+            CaseChunk chunk;
+            chunk.first = first;
+            chunk.cases = plan.cases(first, std::min(plan.count, first + chunkCases));
+            for (const auto& c : chunk.cases)
+                chunk.labels.push_back(c.name);
+            chunk.rejected.assign(chunk.cases.size(), {});
+            consume(chunk);
+        }
+    };
+    return in;
+}
+
+// Entries of a case file in chunks: `read` passes every entry, in order, to its argument.
+void chunked(const std::function<void(const std::function<void(CaseEntry&&)>&)>& read,
+             std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume)
+{
+    CaseChunk chunk;
+    std::size_t next = 0;
+    read(
+        [&](CaseEntry&& e)
+        {
+            if (chunk.cases.empty())
+                chunk.first = next;
+            ++next;
+            chunk.cases.push_back(std::move(e.c));
+            chunk.labels.push_back(std::move(e.label));
+            chunk.rejected.push_back(std::move(e.rejected));
+            if (chunk.size() == chunkCases)
+            {
+                consume(chunk);
+                chunk = CaseChunk();
+            }
+        });
+    if (chunk.size() > 0)
+        consume(chunk);
+}
+
+CampaignInput fileInput(const std::string& path, std::string name)
+{
+    CampaignInput in;
+    in.name = std::move(name);
+    in.source = "file";
+    // Read once up front: a file that is not a case file is refused before any work.
+    std::shared_ptr<CaseFile> whole; // a pipe cannot be read twice: it is kept
+    CaseFileSummary summary;
+    std::error_code ec;
+    if (fs::status(path, ec).type() == fs::file_type::fifo)
+    {
+        whole = std::make_shared<CaseFile>(readCaseFile(path));
+        summary.comments = whole->comments;
+        summary.entries = whole->entries.size();
+    }
+    else
+        summary = streamCaseFile(path, [](CaseEntry&&) {});
+    in.reason = summary.comments.empty() ? "cases from " + path : summary.comments.front();
+    in.count = summary.entries;
+    in.input = {{"file", path}, {"count", summary.entries}};
+    in.stream =
+        [path, whole](std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume)
+    {
+        chunked(
+            [&](const std::function<void(CaseEntry &&)>& each)
+            {
+                if (whole)
+                    for (auto e : whole->entries)
+                        each(std::move(e));
+                else
+                    streamCaseFile(path, each);
+            },
+            chunkCases, consume);
+    };
+    return in;
+}
+} // namespace
+
+std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& familySpecs,
+                                          const std::vector<std::string>& caseFiles,
+                                          std::uint64_t seed)
+{
+    std::vector<CampaignInput> out;
+    std::set<std::string> names;
+    for (const auto& spec : familySpecs)
+        for (auto& plan : planFamilies(spec, seed))
+        {
+            if (!names.insert(plan.name).second)
+                throw InputError(fmt::format("family '{}' is given twice", plan.name));
+            out.push_back(familyInput(std::move(plan), seed));
+        }
+    for (const auto& path : caseFiles)
+    {
+        std::string name = "file:" + fs::path(path).filename().string();
+        if (!names.insert(name).second)
+        {
+            name = "file:" + path;
+            if (!names.insert(name).second)
+                throw InputError(fmt::format("case file '{}' is given twice", path));
+        }
+        out.push_back(fileInput(path, std::move(name)));
+    }
+    return out;
+}
+
+std::vector<FamilyData> collectInputs(const std::vector<std::string>& familySpecs,
+                                      const std::vector<std::string>& caseFiles, std::uint64_t seed)
+{
+    std::vector<FamilyData> out;
+    for (auto& in : campaignInputs(familySpecs, caseFiles, seed))
+    {
+        FamilyData f{in.name, in.reason, in.source, in.input, {}, {}, {}, in.makeup, in.seed};
+        in.stream(std::max<std::size_t>(1, in.count),
+                  [&](CaseChunk& chunk)
+                  {
+                      for (std::size_t i = 0; i < chunk.size(); ++i)
+                      {
+                          f.cases.push_back(std::move(chunk.cases[i]));
+                          f.labels.push_back(std::move(chunk.labels[i]));
+                          f.rejected.push_back(std::move(chunk.rejected[i]));
+                      }
+                  });
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+} // namespace gjkval

@@ -1,0 +1,233 @@
+#include "statistics/makeup.hpp"
+
+#include "inputs/geometry.hpp"
+
+#include "gjk/math.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gjkval
+{
+namespace
+{
+using M = MakeupMetric;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNone = std::numeric_limits<double>::quiet_NaN(); // the case adds nothing
+
+enum class Fold
+{
+    Fraction, // the count of cases whose value is 1, over the cases
+    Min,
+    Max,
+    Distinct,
+};
+
+Fold foldOf(M m)
+{
+    switch (m)
+    {
+    case M::OverlapFraction:
+    case M::SeparatedFraction:
+    case M::NearTouchingFraction:
+    case M::RadiusFraction:
+    case M::OutsideFloatRangeFraction:
+    case M::SharedOriginFraction:
+    case M::NonUnitRotationFraction:
+        return Fold::Fraction;
+    case M::MinPositiveDistance:
+    case M::MinVertices:
+    case M::MinHullVertices:
+    case M::MinScale:
+    case M::MinEdgeRatio:
+    case M::MinSizeRatio:
+        return Fold::Min;
+    case M::MaxDistance:
+    case M::MaxCoordinate:
+    case M::MaxVertices:
+    case M::MaxAspect:
+    case M::MaxSizeRatio:
+    case M::MaxPolygonRadius:
+        return Fold::Max;
+    case M::DistinctDistances:
+        return Fold::Distinct;
+    }
+    throw std::logic_error("makeup: a metric without a fold");
+}
+
+// The value a fold starts from: an empty family reports it.
+double initial(Fold f)
+{
+    return f == Fold::Min ? kInf : 0;
+}
+
+double sizeRatio(const Case& c)
+{
+    const double da = hullDiameter(convexHull(c.a.points));
+    const double db = hullDiameter(convexHull(c.b.points));
+    return std::min(da, db) > 0 ? std::max(da, db) / std::min(da, db) : kInf;
+}
+
+bool nonUnit(const ShapeIn& s)
+{
+    return s.c * s.c + s.s * s.s != 1;
+}
+
+// One case's value for a metric: 0 or 1 for a fraction (SeparatedFraction counts the overlaps and
+// is 1 - their fraction, as the check was first written), its value for a minimum or maximum,
+// kNone when the case has none (no finite aspect, no hull of 3 vertices, touching).
+double caseValue(M m, const Case& c, const exact::Result& t)
+{
+    const ShapeIn* shapes[] = {&c.a, &c.b};
+    switch (m)
+    {
+    case M::OverlapFraction:
+    case M::SeparatedFraction:
+        return exactIsZero(t) ? 1 : 0;
+    case M::NearTouchingFraction:
+        return (!exactIsZero(t) && t.distance <= 1e-2) ? 1 : 0;
+    case M::MinPositiveDistance:
+        return exactIsZero(t) ? kNone : t.distance;
+    case M::MaxDistance:
+        return t.distance;
+    case M::MaxCoordinate:
+    case M::MinScale:
+        return maxAbsWorldCoordinate(c);
+    case M::MinVertices:
+        return double(std::min(c.a.points.size(), c.b.points.size()));
+    case M::MaxVertices:
+        return double(std::max(c.a.points.size(), c.b.points.size()));
+    case M::MinHullVertices:
+        return double(std::min(convexHull(c.a.points).size(), convexHull(c.b.points).size()));
+    case M::MaxAspect:
+    {
+        double v = kNone;
+        for (const ShapeIn* sh : shapes)
+            if (const double a = aspectRatio(*sh); std::isfinite(a))
+                v = std::isnan(v) ? a : std::max(v, a);
+        return v;
+    }
+    case M::RadiusFraction:
+        return (c.a.radius > 0 || c.b.radius > 0) ? 1 : 0;
+    case M::MinEdgeRatio:
+    {
+        double v = kNone;
+        for (const ShapeIn* sh : shapes)
+        {
+            const auto h = convexHull(sh->points);
+            if (h.size() < 3)
+                continue;
+            double shortest = kInf;
+            for (std::size_t i = 0; i < h.size(); ++i)
+                shortest = std::min(shortest, std::hypot(h[(i + 1) % h.size()][0] - h[i][0],
+                                                         h[(i + 1) % h.size()][1] - h[i][1]));
+            const double ratio = shortest / hullDiameter(h);
+            v = std::isnan(v) ? ratio : std::min(v, ratio);
+        }
+        return v;
+    }
+    case M::MinSizeRatio:
+    case M::MaxSizeRatio:
+        return sizeRatio(c);
+    case M::OutsideFloatRangeFraction:
+    {
+        const double x = maxAbsWorldCoordinate(c);
+        return (x >= double(gjk::Tolerances<float>::minCoordinate) &&
+                x <= double(gjk::Tolerances<float>::maxCoordinate))
+                   ? 0
+                   : 1;
+    }
+    case M::DistinctDistances:
+        return t.distance;
+    case M::SharedOriginFraction:
+        return (c.a.px == c.b.px && c.a.py == c.b.py) ? 1 : 0;
+    case M::MaxPolygonRadius:
+    {
+        double v = 0;
+        for (const ShapeIn* sh : shapes)
+            if (sh->points.size() >= 3)
+                v = std::max(v, sh->radius);
+        return v;
+    }
+    case M::NonUnitRotationFraction:
+        return (nonUnit(c.a) || nonUnit(c.b)) ? 1 : 0;
+    }
+    throw std::logic_error("makeup: a metric without a value");
+}
+} // namespace
+
+MakeupFold::MakeupFold(std::vector<MakeupSpec> specs)
+{
+    for (auto& s : specs)
+    {
+        const double v = initial(foldOf(s.metric));
+        checks_.push_back({std::move(s), v, {}});
+    }
+}
+
+void MakeupFold::add(const Case& c, const exact::Result& truth)
+{
+    ++cases_;
+    for (auto& k : checks_)
+    {
+        const double v = caseValue(k.spec.metric, c, truth);
+        if (std::isnan(v))
+            continue;
+        switch (foldOf(k.spec.metric))
+        {
+        case Fold::Fraction:
+            k.value += v;
+            break;
+        case Fold::Min:
+            k.value = std::min(k.value, v);
+            break;
+        case Fold::Max:
+            k.value = std::max(k.value, v);
+            break;
+        case Fold::Distinct:
+            if (k.values.size() < kMaxDistinctCounted)
+                k.values.insert(v);
+            break;
+        }
+    }
+}
+
+std::vector<MakeupResult> MakeupFold::results() const
+{
+    std::vector<MakeupResult> out;
+    const double n = double(cases_);
+    for (const auto& k : checks_)
+    {
+        double v = k.value;
+        switch (foldOf(k.spec.metric))
+        {
+        case Fold::Fraction:
+            v = n > 0 ? v / n : 0;
+            if (k.spec.metric == M::SeparatedFraction)
+                v = n > 0 ? 1 - v : 0;
+            break;
+        case Fold::Distinct:
+            v = double(k.values.size());
+            break;
+        default:
+            break;
+        }
+        const bool skipped = k.spec.statistical && cases_ < kMinCasesForStatistics;
+        const bool inRange = v >= k.spec.min && v <= k.spec.max;
+        out.push_back({k.spec.check, v, k.spec.min, k.spec.max, skipped || inRange, skipped});
+    }
+    return out;
+}
+
+std::vector<MakeupResult> evaluateMakeup(const std::vector<MakeupSpec>& specs,
+                                         const std::vector<const Case*>& cases,
+                                         const std::vector<const exact::Result*>& truths)
+{
+    MakeupFold fold(specs);
+    for (std::size_t i = 0; i < cases.size(); ++i)
+        fold.add(*cases[i], *truths[i]);
+    return fold.results();
+}
+
+} // namespace gjkval
