@@ -19,6 +19,7 @@ tree's uncommitted changes and untracked files over.
   scripts/mutate.py --fast     fast stage only
   scripts/mutate.py --only ID  one mutant (repeatable)
   scripts/mutate.py --list     the mutants
+  scripts/mutate.py --check    check the list against HEAD (every file found, every text once), no build
 """
 import argparse
 import json
@@ -83,19 +84,33 @@ def load(path):
     return mutants
 
 
-def locate(m, root):
-    """The mutant's file in the worktree (the first candidate that exists) and its text."""
+def locate(m, root=None, repo=None):
+    """The mutant's file (the first candidate that exists) and its text: in the worktree root, or
+    at the HEAD of repo (--check)."""
     for rel in m["file"]:
-        path = os.path.join(root, rel)
-        if os.path.isfile(path):
+        if root is not None:
+            path = os.path.join(root, rel)
+            if not os.path.isfile(path):
+                continue
             with open(path) as f:
                 text = f.read()
-            n = text.count(m["find"])
-            if n != 1:
-                raise SystemExit(f"mutant {m['id']}: the text to replace occurs {n} times in {rel} "
-                                 f"(must be exactly once): update scripts/mutants.json")
-            return rel, text
-    raise SystemExit(f"mutant {m['id']}: file {' or '.join(m['file'])} not found: update scripts/mutants.json")
+        else:
+            p = subprocess.run(["git", "show", f"HEAD:{rel}"], cwd=repo, stdout=subprocess.PIPE,
+                               stderr=subprocess.DEVNULL, text=True)
+            if p.returncode != 0:
+                continue
+            text = p.stdout
+        n = text.count(m["find"])
+        if n != 1:
+            stale(f"mutant {m['id']}: the text to replace occurs {n} times in {rel} (must be exactly once)")
+        return rel, text
+    stale(f"mutant {m['id']}: file {' or '.join(m['file'])} not found")
+
+
+def stale(msg):
+    """A stale list: exit code 2 (sys.exit with a message would give 1)."""
+    print(f"{msg}: update scripts/mutants.json", file=sys.stderr, flush=True)
+    raise SystemExit(2)
 
 
 class Worktree:
@@ -179,6 +194,8 @@ def main():
     ap.add_argument("--full-all", action="store_true", help="run the full stage on every mutant")
     ap.add_argument("--only", action="append", default=[], metavar="ID", help="only this mutant (repeatable)")
     ap.add_argument("--list", action="store_true", help="list the mutants and exit")
+    ap.add_argument("--check", action="store_true",
+                    help="check the list against HEAD (file found, text exactly once) and exit; no build")
     ap.add_argument("--mutants", default=MUTANTS, help="the mutant list (default scripts/mutants.json)")
     ap.add_argument("--workdir", help="where to create the worktree (default: a new directory in /tmp)")
     ap.add_argument("--keep", action="store_true", help="keep the worktree and its builds")
@@ -204,6 +221,11 @@ def main():
 
     repo = subprocess.run(["git", "rev-parse", "--show-toplevel"], cwd=HERE, stdout=subprocess.PIPE, text=True,
                           check=True).stdout.strip()
+    if args.check:  # a stale entry exits 2 with its message (locate)
+        for m in mutants:
+            locate(m, repo=repo)
+        log(f"{len(mutants)} mutants: every file found at HEAD, every text occurs exactly once")
+        return 0
     base = args.workdir or tempfile.mkdtemp(prefix="gjk2d-mutate-")
     wtpath = os.path.join(base, "tree")  # only this is removed at the end (and base if we made it)
     if os.path.exists(wtpath):

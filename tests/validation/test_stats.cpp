@@ -127,3 +127,81 @@ TEST_CASE("zero failures give the 3/N upper bound on the failure rate", "[stats]
     CHECK(s.toJson()["failure_rate_upper95"] == Approx(1.5e-4));
     CHECK(s.toJson()["pass"] == true);
 }
+
+TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
+{
+    // Every counter of the two shards a different value, so a counter added into another field
+    // (or dropped) shows: the merged value is the sum of that field alone.
+    auto counters = [](Stats& s) -> std::vector<std::uint64_t*>
+    {
+        return {&s.cases,        &s.failures,   &s.falseOverlap, &s.falseSeparation,
+                &s.undecidable,  &s.nonfinite,  &s.outOfRange,   &s.iterationLimit,
+                &s.beyondBound,  &s.skipped,    &s.notApplicable, &s.certified,
+                &s.contains,     &s.uncertified};
+    };
+    Stats a, b;
+    const auto ca = counters(a), cb = counters(b);
+    for (std::size_t i = 0; i < ca.size(); ++i)
+    {
+        *ca[i] = 1 + i;         // 1, 2, 3, ...
+        *cb[i] = 100 * (1 + i); // 100, 200, 300, ...
+    }
+    for (std::size_t i = 0; i < a.stops.size(); ++i)
+    {
+        a.stops[i] = 1000 + i;
+        b.stops[i] = 2000 * (1 + i);
+    }
+    a.merge(b);
+    for (std::size_t i = 0; i < ca.size(); ++i)
+    {
+        INFO("counter " << i);
+        CHECK(*ca[i] == 101 * (1 + i));
+    }
+    for (std::size_t i = 0; i < a.stops.size(); ++i)
+        CHECK(a.stops[i] == 1000 + i + 2000 * (1 + i));
+    const Json j = a.toJson();
+    CHECK(j["false_overlap"] == 303);
+    CHECK(j["false_separation"] == 404);
+    CHECK(j["undecidable"] == 505);
+}
+
+TEST_CASE("merging histograms: zeros add, the maximum stays, ties keep the first shard's case",
+          "[stats][merge]")
+{
+    Hist first(-40, 40, 10), second(-40, 40, 10);
+    first.add(0.0, "f0");
+    first.add(3.0, "f-max");
+    first.add(0.0, "f1");
+    second.add(0.0, "s0");
+    second.add(3.0, "s-max"); // ties with the first shard's maximum: the first shard's case stays
+    second.add(1.0, "s1");
+    first.merge(second);
+    CHECK(first.count == 6);
+    CHECK(first.zeros == 3);
+    CHECK(first.max == 3.0);
+    CHECK(first.maxCase == "f-max");
+    CHECK(first.sum == 7.0);
+
+    // A larger maximum in the second shard wins.
+    Hist low(-40, 40, 10), high(-40, 40, 10);
+    low.add(2.0, "low");
+    high.add(5.0, "high");
+    low.merge(high);
+    CHECK(low.max == 5.0);
+    CHECK(low.maxCase == "high");
+
+    // Iteration counts: the larger maximum stays whichever shard holds it.
+    IterHist big, small;
+    big.add(9);
+    big.add(2);
+    small.add(3);
+    IterHist bigFirst = big;
+    bigFirst.merge(small);
+    CHECK(bigFirst.max == 9);
+    CHECK(bigFirst.count == 3);
+    CHECK(bigFirst.counts.size() == 10);
+    IterHist smallFirst = small;
+    smallFirst.merge(big);
+    CHECK(smallFirst.max == 9);
+    CHECK(smallFirst.toJson() == bigFirst.toJson());
+}

@@ -1,0 +1,225 @@
+// The runner's judgement of one answer, with expected values worked out by hand: the error bound
+// term by term (docs/error-bound.md), beyond-bound at exactly the bound, the misclassifications
+// (false overlap, false separation, undecidable), the certified interval against the truth's
+// enclosure, and an iteration limit. Where an exact truth cannot produce the situation (an error of
+// exactly the bound, an exact value just above a certified upper end) the test puts its own truth
+// behind EvalContext::truth: the judgement is a function of the answer and the truth, whatever
+// computed the truth. These pin the runner mutants of scripts/mutants.json (docs/testing.md).
+#include "evaluate/bounds.hpp"
+#include "evaluate/evaluate.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace gjkval;
+
+namespace
+{
+const double kDenormMin = std::numeric_limits<double>::denorm_min(); // 2^-1074
+
+// The truth every evaluateCase of a test returns (set before the call).
+exact::Result gTruth;
+exact::Result fixedTruth(const exact::Shape&, const exact::Shape&, const exact::Options&)
+{
+    return gTruth;
+}
+
+exact::Result truthOf(double lower, double upper, bool overlap = false)
+{
+    exact::Result r;
+    r.overlap = overlap;
+    r.distance = lower;
+    r.lower = lower;
+    r.upper = upper;
+    return r;
+}
+
+Case points(double bx, double by)
+{
+    Case c;
+    c.name = "points";
+    c.a.points = {{0, 0}};
+    c.b.points = {{bx, by}};
+    return c;
+}
+
+VariantOutcome judge(const Case& c, const VariantInfo* v, bool fixed)
+{
+    EvalContext ctx;
+    ctx.variants = {v};
+    if (fixed)
+        ctx.truth = &fixedTruth;
+    const CaseOutcome o = evaluateCase(c, ctx);
+    REQUIRE(o.rejected.empty());
+    REQUIRE(o.variants.size() == 1);
+    return o.variants[0];
+}
+} // namespace
+
+TEST_CASE("the error bound, term by term, as docs/error-bound.md writes it", "[judgement][bound]")
+{
+    // u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)) + sub_T, plus 16 u W for
+    // duality-gap stopping. One metric at 1, the others 0: the bound is coefficient * u (u a power
+    // of two, so coefficient * u is exact; the subnormal is far below its last bit and rounds away).
+    struct Term
+    {
+        const char* name;
+        double CaseMetrics::*metric;
+        double coefficient;
+        double dualityGapExtra; // what DualityGap stopping adds for this metric
+    };
+    const Term terms[] = {{"A", &CaseMetrics::maxA, 4, 0},
+                          {"B", &CaseMetrics::maxB, 43, 0},
+                          {"D", &CaseMetrics::translation, 10.2, 0},
+                          {"B~", &CaseMetrics::maxBMapped, 1.5, 0},
+                          {"W", &CaseMetrics::maxW, 5, 16},
+                          {"d", &CaseMetrics::exactDistance, 6.5, 0},
+                          {"rA", &CaseMetrics::radiusA, 3.5, 0},
+                          {"rB", &CaseMetrics::radiusB, 3.5, 0}};
+    for (const char* name : {"double", "float", "double-duality-gap"})
+    {
+        const VariantInfo& v = *findVariant(name);
+        const double u = v.scalar == Scalar::Float ? 0x1p-24 : 0x1p-53;
+        for (const Term& t : terms)
+        {
+            INFO(name << ": term " << t.name);
+            CaseMetrics m;
+            m.unitRoundoff = u;
+            m.*t.metric = 1;
+            const double extra = v.options.stopping == gjk::StoppingRule::DualityGap ? t.dualityGapExtra : 0;
+            CHECK(errorBound(v, m) == (t.coefficient + extra) * u);
+        }
+        // Every metric 0: only the type's smallest subnormal, the answer's own resolution.
+        CaseMetrics zero;
+        zero.unitRoundoff = u;
+        CHECK(errorBound(v, zero) == (v.scalar == Scalar::Float ? 0x1p-149 : 0x1p-1074));
+    }
+    // All together, distinct values (A 1, B 2, D 0, B~ 1, W 2, d 0, rA 2, rB 4):
+    // 4 + 86 + 1.5 + 10 + 3.5 * 6 = 122.5; duality gap + 16 * 2 = 154.5.
+    CaseMetrics m;
+    m.unitRoundoff = 0x1p-53;
+    m.maxA = 1;
+    m.maxB = 2;
+    m.maxBMapped = 1;
+    m.maxW = 2;
+    m.radiusA = 2;
+    m.radiusB = 4;
+    CHECK(errorBound(*findVariant("double"), m) == 122.5 * 0x1p-53);
+    CHECK(errorBound(*findVariant("double-duality-gap"), m) == 154.5 * 0x1p-53);
+}
+
+TEST_CASE("an error of exactly the bound is within it: undecidable, not a failure",
+          "[judgement][classification]")
+{
+    // Two coincident points: GJK answers 0 and every metric of the bound is 0, so the bound is the
+    // smallest subnormal alone (u * 6.5 d underflows to 0 for d = 2^-1074). A truth of 2^-1074
+    // makes the error exactly the bound: within it ("<=", docs/error-bound.md), so the false overlap
+    // is undecidable, not a failure. One subnormal more and it is a failed false overlap.
+    const VariantInfo* dbl = findVariant("double");
+    const Case c = points(0, 0);
+
+    gTruth = truthOf(kDenormMin, kDenormMin);
+    const VariantOutcome at = judge(c, dbl, true);
+    REQUIRE(at.distance == 0);
+    CHECK(at.bound == kDenormMin);
+    CHECK(at.abs == kDenormMin);
+    CHECK_FALSE(at.beyondBound);
+    CHECK(at.mis == Misclass::Undecidable);
+    CHECK_FALSE(at.failed);
+
+    gTruth = truthOf(2 * kDenormMin, 2 * kDenormMin);
+    const VariantOutcome beyond = judge(c, dbl, true);
+    CHECK(beyond.bound == kDenormMin);
+    CHECK(beyond.abs == 2 * kDenormMin);
+    CHECK(beyond.beyondBound);
+    CHECK(beyond.mis == Misclass::FalseOverlap);
+    CHECK(beyond.failed);
+}
+
+TEST_CASE("false separation needs a positive answer; a zero answer on a zero truth is right",
+          "[judgement][classification]")
+{
+    const VariantInfo* dbl = findVariant("double");
+    // Overlapping squares, the real exact truth: distance 0, GJK 0: no misclassification at all.
+    Case overlap;
+    overlap.name = "overlap";
+    overlap.a.points = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    overlap.b.points = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    const VariantOutcome ok = judge(overlap, dbl, false);
+    REQUIRE(ok.truth == 0);
+    REQUIRE(ok.distance == 0);
+    CHECK(ok.mis == Misclass::None);
+    CHECK_FALSE(ok.beyondBound);
+    CHECK_FALSE(ok.failed);
+
+    // Points 1 apart against a truth of "overlap": GJK's 1 is a false separation, far beyond the
+    // bound (a few u): it fails.
+    gTruth = truthOf(0, 0, true);
+    const VariantOutcome sep = judge(points(1, 0), dbl, true);
+    REQUIRE(sep.distance == 1);
+    CHECK(sep.abs == 1);
+    CHECK(sep.beyondBound);
+    CHECK(sep.mis == Misclass::FalseSeparation);
+    CHECK(sep.failed);
+}
+
+TEST_CASE("a certified interval must contain the truth's whole enclosure", "[judgement][interval]")
+{
+    // Points (0, 0) and (3, 4): distance 5. The certified interval [lower, upper] holds the exact
+    // truth [5, 5]. An exact value strictly between upper and the next double (the enclosure
+    // [upper, next(upper)]) is outside it, although the enclosure's lower end is inside: the
+    // interval misses the truth, and a certified interval that misses always fails.
+    const VariantInfo* cert = findVariant("double-certified");
+    const Case c = points(3, 4);
+    const VariantOutcome real = judge(c, cert, false);
+    REQUIRE(real.certified);
+    REQUIRE(real.truth == 5);
+    CHECK(real.intervalContains);
+    CHECK_FALSE(real.failed);
+    REQUIRE(real.lower <= 5);
+    REQUIRE(5 <= real.upper);
+
+    const double above = std::nextafter(real.upper, INFINITY);
+    gTruth = truthOf(real.upper, above);
+    const VariantOutcome justAbove = judge(c, cert, true);
+    REQUIRE(justAbove.certified);
+    REQUIRE(justAbove.upper == real.upper);
+    CHECK_FALSE(justAbove.beyondBound); // the distance is fine, the certificate is not
+    CHECK_FALSE(justAbove.intervalContains);
+    CHECK(justAbove.failed);
+
+    const double below = std::nextafter(real.lower, -INFINITY);
+    gTruth = truthOf(below, real.lower);
+    const VariantOutcome justBelow = judge(c, cert, true);
+    CHECK_FALSE(justBelow.intervalContains);
+    CHECK(justBelow.failed);
+}
+
+TEST_CASE("reaching the iteration limit fails, even with the right distance", "[judgement][limit]")
+{
+    // A square [-1, 1]^2 against the point (0, 5): the first support pair gives a top corner, the
+    // second the other top corner, and that edge already holds the answer 4. With one iteration
+    // allowed GJK stops there on the limit (docs/validation.md: an iteration limit is a failure).
+    static const VariantInfo limited{"double-one-iteration", Scalar::Double,
+                                     gjk::Options{.maxIterations = 1}, "test", true};
+    Case c;
+    c.name = "square-point";
+    c.a.points = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    c.b.points = {{0, 0}};
+    c.b.py = 5;
+    const VariantOutcome free = judge(c, findVariant("double"), false);
+    REQUIRE(free.stop != gjk::StopReason::IterationLimit);
+    CHECK(free.distance == 4);
+    CHECK_FALSE(free.failed);
+
+    const VariantOutcome v = judge(c, &limited, false);
+    REQUIRE(v.stop == gjk::StopReason::IterationLimit);
+    CHECK(v.distance == 4);
+    CHECK(v.abs == 0);
+    CHECK_FALSE(v.beyondBound);
+    CHECK(v.iterationLimit);
+    CHECK(v.failed);
+    CHECK(worstKey(v) == INFINITY);
+}
