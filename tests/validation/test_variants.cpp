@@ -56,8 +56,8 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
         INFO(v.name);
         seen.insert(v.name);
         CHECK(v.judged == (judged.count(v.name) == 1));
-        CHECK(v.warm == (v.name.find("-warm") != std::string::npos));
-        CHECK(v.everyStart == (v.name.find("-every-start") != std::string::npos));
+        CHECK((v.start == Start::Warm) == (v.name.find("-warm") != std::string::npos));
+        CHECK((v.start == Start::EveryStart) == (v.name.find("-every-start") != std::string::npos));
         CHECK(needsConvexOrder(v) == (v.name.find("binary-support") != std::string::npos));
     }
     for (const auto& n : judged)
@@ -244,7 +244,7 @@ TEST_CASE("every-start variants judge the worst answer over many starts", "[vari
     const PreparedCase p = prepare(c);
     const VariantInfo* v = findVariant("double-every-start");
     REQUIRE(v != nullptr);
-    REQUIRE(v->everyStart);
+    REQUIRE(v->start == Start::EveryStart);
     const auto worst = worstStart<double>(p, *v, 1.0);
     CHECK(worst.distance == 1.0);
     const auto far = worstStart<double>(p, *v, 100.0);

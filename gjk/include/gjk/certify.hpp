@@ -94,12 +94,6 @@ template <class T> BoundedVec toWorld(const Transform<T>& xf, Vec2<T> v)
             (mulExact(s, x) + mulExact(c, y)) + exactly(double(xf.p.y))};
 }
 
-struct Interval
-{
-    double lower = 0;
-    double upper = std::numeric_limits<double>::infinity();
-};
-
 // Upper bound on |p| for a point p known to lie in the box (p.x +- e, p.y +- e), divided by a
 // positive weight sum w (also bounded).
 inline double upperNorm(const BoundedVec& p, Bounded w)

@@ -73,6 +73,16 @@ enum class SearchDirection : std::uint8_t
     ClosestPoint,
 };
 
+constexpr const char* searchDirectionName(SearchDirection d)
+{
+    switch (d)
+    {
+    case SearchDirection::EdgePerpendicular: return "edge-perpendicular";
+    case SearchDirection::ClosestPoint: return "closest-point";
+    }
+    return "?";
+}
+
 enum class StoppingRule : std::uint8_t
 {
     // Talk, "Termination conditions", case 1: stop when the support point is already a vertex of
@@ -84,11 +94,31 @@ enum class StoppingRule : std::uint8_t
     DualityGap,
 };
 
+constexpr const char* stoppingRuleName(StoppingRule r)
+{
+    switch (r)
+    {
+    case StoppingRule::RepeatedSupport: return "repeated-support";
+    case StoppingRule::DualityGap: return "duality-gap";
+    }
+    return "?";
+}
+
 enum class Frame : std::uint8_t
 {
     LocalA, // compute in A's local frame (see the conventions above)
     World,  // transform both shapes to world coordinates first (loses small gaps far from 0)
 };
+
+constexpr const char* frameName(Frame f)
+{
+    switch (f)
+    {
+    case Frame::LocalA: return "local-a";
+    case Frame::World: return "world";
+    }
+    return "?";
+}
 
 enum class SupportStrategy : std::uint8_t
 {
@@ -98,6 +128,16 @@ enum class SupportStrategy : std::uint8_t
                   // Gallops from the previous support point, so converging queries cost less.
                   // Shapes of at most 16 points still use the linear scan (it is faster there).
 };
+
+constexpr const char* supportStrategyName(SupportStrategy s)
+{
+    switch (s)
+    {
+    case SupportStrategy::Linear: return "linear";
+    case SupportStrategy::BinarySearch: return "binary-search";
+    }
+    return "?";
+}
 
 struct Options
 {
@@ -129,7 +169,7 @@ enum class StopReason : std::uint8_t
     IterationLimit,  // Options::maxIterations reached: the answer is the best simplex so far
 };
 
-inline const char* stopReasonName(StopReason r)
+constexpr const char* stopReasonName(StopReason r)
 {
     switch (r)
     {
@@ -141,6 +181,12 @@ inline const char* stopReasonName(StopReason r)
     }
     return "?";
 }
+
+// How many StopReason values there are (IterationLimit is the last: checked below).
+inline constexpr std::size_t stopReasonCount = std::size_t(StopReason::IterationLimit) + 1;
+static_assert(stopReasonName(StopReason(stopReasonCount - 1))[0] != '?' &&
+                  stopReasonName(StopReason(stopReasonCount))[0] == '?',
+              "stopReasonCount: a StopReason was added after IterationLimit");
 
 // --- Simplex -------------------------------------------------------------------------------------
 

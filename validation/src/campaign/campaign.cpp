@@ -479,7 +479,7 @@ Json variantsJson(const EvalContext& ctx)
         j["type"] = scalarName(v->scalar);
         j["description"] = v->description;
         j["judged"] = v->judged;
-        j["warm"] = v->warm;
+        j["warm"] = v->start == Start::Warm;
         j["options"] = optionsJson(v->options);
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         out.push_back(std::move(j));

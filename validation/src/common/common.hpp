@@ -157,21 +157,4 @@ inline std::string excerpt(std::string_view s, std::size_t maxBytes = 60)
     return out;
 }
 
-// SplitMix64: the families' deterministic generator (same seed, same cases, on any machine).
-inline std::uint64_t mix64(std::uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-inline std::uint64_t hashString(const std::string& s)
-{
-    std::uint64_t h = 0xcbf29ce484222325ULL; // FNV-1a
-    for (unsigned char c : s)
-        h = (h ^ c) * 0x100000001b3ULL;
-    return h;
-}
-
 } // namespace gjkval

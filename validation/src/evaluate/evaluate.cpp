@@ -287,7 +287,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             continue;
         }
         const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
-        if (vi.everyStart)
+        if (vi.start == Start::EveryStart)
         {
             if (isFloat)
                 fillOutput(worstStart<float>(p, vi, truth.distance), v);

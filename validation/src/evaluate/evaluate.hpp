@@ -50,7 +50,7 @@ inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
 
 // The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
-// cache), or for warm variants (VariantInfo::warm) a cold query whose cache starts the one
+// cache), or for warm variants (Start::Warm) a cold query whose cache starts the one
 // returned (and traced).
 template <class T>
 gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
@@ -58,12 +58,12 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
 {
     gjk::SimplexCache cache;
     const gjk::DistanceInput<T> in = p.input<T>();
-    if (v.warm)
+    if (v.start == Start::Warm)
         gjk::distance(in, cache, v.options);
     return gjk::distance(in, cache, v.options, trace);
 }
 
-// VariantInfo::everyStart: the query from every start the variant tries, the answer farthest
+// Start::EveryStart: the query from every start the variant tries, the answer farthest
 // from `truth` (a non-finite answer is the farthest) returned.
 template <class T>
 gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, double truth)

@@ -7,7 +7,6 @@
 namespace gjkval
 {
 
-// clang-format off
 const std::vector<VariantInfo>& variantTable()
 {
     using gjk::Options;
@@ -16,26 +15,54 @@ const std::vector<VariantInfo>& variantTable()
     using F = gjk::Frame;
     using P = gjk::SupportStrategy;
     static const std::vector<VariantInfo> table = {
-        // name, type, options, description, judged (false: comparison variant), warm, every start
-        {"double",                Scalar::Double, gjk::referenceOptions,                 "reference options (talk's edge-perpendicular direction, repeated-support stop, A's local frame)", true},
-        {"float",                 Scalar::Float,  gjk::referenceOptions,                 "reference options in single precision", true},
-        {"double-closest-point",  Scalar::Double, Options{.direction = D::ClosestPoint}, "naive search direction d = -P (talk: inaccurate on long edges)", false},
-        {"double-world-frame",    Scalar::Double, Options{.frame = F::World},            "compute in world coordinates (loses small gaps far from the origin)", false},
-        {"double-duality-gap",    Scalar::Double, Options{.stopping = S::DualityGap},    "also stop on the duality gap", false},
-        {"float-closest-point",   Scalar::Float,  Options{.direction = D::ClosestPoint}, "naive search direction in single precision", false},
-        {"float-world-frame",     Scalar::Float,  Options{.frame = F::World},            "world-frame computation in single precision", false},
-        {"double-certified",      Scalar::Double, Options{.certify = true},              "reference options plus a certified interval [lower, upper]", true},
-        {"float-certified",       Scalar::Float,  Options{.certify = true},              "certified interval in single precision", true},
-        {"double-binary-support", Scalar::Double, Options{.support = P::BinarySearch},   "reference options with the O(log n) binary-search support (shapes in convex order only)", true},
-        {"float-binary-support",  Scalar::Float,  Options{.support = P::BinarySearch},   "binary-search support in single precision (shapes in convex order only)", true},
-        {"double-warm",           Scalar::Double, gjk::referenceOptions,                 "reference options, warm-started: the query repeated with the cache of the first", true, true},
-        {"float-warm",            Scalar::Float,  gjk::referenceOptions,                 "warm-started reference options in single precision", true, true},
-        {"double-every-start",    Scalar::Double, gjk::referenceOptions,                 "reference options started from every initial vertex pair and several multi-vertex caches; the worst answer is judged", true, false, true},
-        {"float-every-start",     Scalar::Float,  gjk::referenceOptions,                 "every start in single precision", true, false, true},
+        {.name = "double", .scalar = Scalar::Double, .options = gjk::referenceOptions,
+         .description = "reference options (talk's edge-perpendicular direction, repeated-support stop, A's local frame)",
+         .judged = true, .start = Start::Cold},
+        {.name = "float", .scalar = Scalar::Float, .options = gjk::referenceOptions,
+         .description = "reference options in single precision",
+         .judged = true, .start = Start::Cold},
+        {.name = "double-closest-point", .scalar = Scalar::Double, .options = Options{.direction = D::ClosestPoint},
+         .description = "naive search direction d = -P (talk: inaccurate on long edges)",
+         .judged = false, .start = Start::Cold},
+        {.name = "double-world-frame", .scalar = Scalar::Double, .options = Options{.frame = F::World},
+         .description = "compute in world coordinates (loses small gaps far from the origin)",
+         .judged = false, .start = Start::Cold},
+        {.name = "double-duality-gap", .scalar = Scalar::Double, .options = Options{.stopping = S::DualityGap},
+         .description = "also stop on the duality gap",
+         .judged = false, .start = Start::Cold},
+        {.name = "float-closest-point", .scalar = Scalar::Float, .options = Options{.direction = D::ClosestPoint},
+         .description = "naive search direction in single precision",
+         .judged = false, .start = Start::Cold},
+        {.name = "float-world-frame", .scalar = Scalar::Float, .options = Options{.frame = F::World},
+         .description = "world-frame computation in single precision",
+         .judged = false, .start = Start::Cold},
+        {.name = "double-certified", .scalar = Scalar::Double, .options = Options{.certify = true},
+         .description = "reference options plus a certified interval [lower, upper]",
+         .judged = true, .start = Start::Cold},
+        {.name = "float-certified", .scalar = Scalar::Float, .options = Options{.certify = true},
+         .description = "certified interval in single precision",
+         .judged = true, .start = Start::Cold},
+        {.name = "double-binary-support", .scalar = Scalar::Double, .options = Options{.support = P::BinarySearch},
+         .description = "reference options with the O(log n) binary-search support (shapes in convex order only)",
+         .judged = true, .start = Start::Cold},
+        {.name = "float-binary-support", .scalar = Scalar::Float, .options = Options{.support = P::BinarySearch},
+         .description = "binary-search support in single precision (shapes in convex order only)",
+         .judged = true, .start = Start::Cold},
+        {.name = "double-warm", .scalar = Scalar::Double, .options = gjk::referenceOptions,
+         .description = "reference options, warm-started: the query repeated with the cache of the first",
+         .judged = true, .start = Start::Warm},
+        {.name = "float-warm", .scalar = Scalar::Float, .options = gjk::referenceOptions,
+         .description = "warm-started reference options in single precision",
+         .judged = true, .start = Start::Warm},
+        {.name = "double-every-start", .scalar = Scalar::Double, .options = gjk::referenceOptions,
+         .description = "reference options started from every initial vertex pair and several multi-vertex caches; the worst answer is judged",
+         .judged = true, .start = Start::EveryStart},
+        {.name = "float-every-start", .scalar = Scalar::Float, .options = gjk::referenceOptions,
+         .description = "every start in single precision",
+         .judged = true, .start = Start::EveryStart},
     };
     return table;
 }
-// clang-format on
 
 const VariantInfo* findVariant(const std::string& name)
 {
@@ -115,61 +142,13 @@ int scalarMinExponent(Scalar s)
                               : std::numeric_limits<double>::min_exponent;
 }
 
-const char* directionName(gjk::SearchDirection d)
-{
-    switch (d)
-    {
-    case gjk::SearchDirection::EdgePerpendicular:
-        return "edge-perpendicular";
-    case gjk::SearchDirection::ClosestPoint:
-        return "closest-point";
-    }
-    return "?";
-}
-
-const char* stoppingName(gjk::StoppingRule r)
-{
-    switch (r)
-    {
-    case gjk::StoppingRule::RepeatedSupport:
-        return "repeated-support";
-    case gjk::StoppingRule::DualityGap:
-        return "duality-gap";
-    }
-    return "?";
-}
-
-const char* frameName(gjk::Frame f)
-{
-    switch (f)
-    {
-    case gjk::Frame::LocalA:
-        return "local-a";
-    case gjk::Frame::World:
-        return "world";
-    }
-    return "?";
-}
-
-const char* supportName(gjk::SupportStrategy s)
-{
-    switch (s)
-    {
-    case gjk::SupportStrategy::Linear:
-        return "linear";
-    case gjk::SupportStrategy::BinarySearch:
-        return "binary-search";
-    }
-    return "?";
-}
-
 Json optionsJson(const gjk::Options& o)
 {
     Json j;
-    j["direction"] = directionName(o.direction);
-    j["stopping"] = stoppingName(o.stopping);
-    j["frame"] = frameName(o.frame);
-    j["support"] = supportName(o.support);
+    j["direction"] = gjk::searchDirectionName(o.direction);
+    j["stopping"] = gjk::stoppingRuleName(o.stopping);
+    j["frame"] = gjk::frameName(o.frame);
+    j["support"] = gjk::supportStrategyName(o.support);
     j["certified"] = o.certify;
     j["max_iterations"] = o.maxIterations;
     j["use_radii"] = o.useRadii;

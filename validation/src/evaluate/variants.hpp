@@ -18,6 +18,20 @@ enum class Scalar
     Double
 };
 
+// How a variant's query starts.
+enum class Start
+{
+    Cold, // a fresh SimplexCache
+    // The query is run twice, the second time with the SimplexCache the first one returned; the
+    // second is judged and timed (the timing prepares the caches beforehand).
+    Warm,
+    // The accuracy run repeats the query from many caches (every initial vertex pair, strided to
+    // at most 12 x 12, and a few two- and three-vertex caches) and keeps the answer farthest from
+    // the truth: a start-dependent failure cannot hide behind the one cold start. Timed like a
+    // cold query.
+    EveryStart,
+};
+
 struct VariantInfo
 {
     std::string name; // stable: used on the command line and in every report
@@ -29,14 +43,7 @@ struct VariantInfo
     // (judged = false) are the alternatives the talk discusses: their failures are counted and
     // shown per family, never judged.
     bool judged = true;
-    // Warm start: the query is run twice, the second time with the SimplexCache the first one
-    // returned; the second is judged and timed (the timing prepares the caches beforehand).
-    bool warm = false;
-    // Every start: the accuracy run repeats the query from many caches (every initial vertex pair,
-    // strided to at most 12 x 12, and a few two- and three-vertex caches) and keeps the answer
-    // farthest from the truth: a start-dependent failure cannot hide behind the one cold start.
-    // Timed like a cold query.
-    bool everyStart = false;
+    Start start = Start::Cold;
 };
 
 const std::vector<VariantInfo>& variantTable();
@@ -64,9 +71,5 @@ int scalarMinExponent(Scalar s);
 
 // {"direction": ..., "stopping": ..., "frame": ..., "support": ..., "certified": ...}
 Json optionsJson(const gjk::Options& o);
-const char* directionName(gjk::SearchDirection d);
-const char* stoppingName(gjk::StoppingRule r);
-const char* frameName(gjk::Frame f);
-const char* supportName(gjk::SupportStrategy s);
 
 } // namespace gjkval

@@ -112,7 +112,6 @@ void placeAtGap(const ShapeIn& a, ShapeIn& b, double gap, Rng& r)
         n = {std::cos(t), std::sin(t)};
         p = h[0];
     }
-    std::size_t k = 0;
     double best = kInf;
     P2 rk{};
     for (const auto& q : b.points)
@@ -124,7 +123,6 @@ void placeAtGap(const ShapeIn& a, ShapeIn& b, double gap, Rng& r)
             best = d;
             rk = rq;
         }
-        ++k;
     }
     const double off = gap + a.radius + b.radius;
     b.px = p[0] + off * n[0] - rk[0];

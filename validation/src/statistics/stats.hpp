@@ -4,6 +4,8 @@
 
 #include "common/common.hpp"
 
+#include "gjk/distance.hpp"
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -53,7 +55,7 @@ struct IterHist
     Json toJson() const;
 };
 
-inline constexpr int kStopReasons = 5; // gjk::StopReason values
+inline constexpr int kStopReasons = int(gjk::stopReasonCount);
 
 // One family x one variant.
 struct Stats

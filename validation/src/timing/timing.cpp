@@ -111,7 +111,7 @@ TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Opt
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg)
 {
-    const bool warm = v.warm || cfg.warm;
+    const bool warm = v.start == Start::Warm || cfg.warm;
     return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm)
                                      : timeT<double>(cases, v.options, cfg, warm);
 }

@@ -29,7 +29,7 @@ struct TimingResult
 };
 
 // Times the variant's query over `cases` (none skipped for it: see skipReason()). Cold queries
-// (fresh SimplexCache), or warm ones when v.warm or cfg.warm: the caches are prepared by a cold
+// (fresh SimplexCache), or warm ones when v.start is Start::Warm or cfg.warm: the caches are prepared by a cold
 // query of each case before timing, and each timed query starts from a copy of its case's cache.
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg);
