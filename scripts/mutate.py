@@ -20,6 +20,7 @@ tree's uncommitted changes and untracked files over.
   scripts/mutate.py --only ID  one mutant (repeatable)
   scripts/mutate.py --list     the mutants
   scripts/mutate.py --check    check the list against HEAD (every file found, every text once), no build
+  scripts/mutate.py --rev REV  the tree of another commit (for example the score before new tests)
 """
 import argparse
 import json
@@ -73,20 +74,20 @@ def load(path):
     for m in mutants:
         for key in ("id", "area", "file", "find", "replace"):
             if key not in m:
-                sys.exit(f"{path}: mutant {m.get('id', '?')}: missing '{key}'")
+                die(f"{path}: mutant {m.get('id', '?')}: missing '{key}'")
         if m["id"] in seen:
-            sys.exit(f"{path}: duplicate mutant id {m['id']}")
+            die(f"{path}: duplicate mutant id {m['id']}")
         if m["area"] not in FAST:
-            sys.exit(f"{path}: mutant {m['id']}: unknown area {m['area']}")
+            die(f"{path}: mutant {m['id']}: unknown area {m['area']}")
         if isinstance(m["file"], str):
             m["file"] = [m["file"]]
         seen.add(m["id"])
     return mutants
 
 
-def locate(m, root=None, repo=None):
+def locate(m, root=None, repo=None, rev="HEAD"):
     """The mutant's file (the first candidate that exists) and its text: in the worktree root, or
-    at the HEAD of repo (--check)."""
+    at commit rev of repo (--check)."""
     for rel in m["file"]:
         if root is not None:
             path = os.path.join(root, rel)
@@ -95,7 +96,7 @@ def locate(m, root=None, repo=None):
             with open(path) as f:
                 text = f.read()
         else:
-            p = subprocess.run(["git", "show", f"HEAD:{rel}"], cwd=repo, stdout=subprocess.PIPE,
+            p = subprocess.run(["git", "show", f"{rev}:{rel}"], cwd=repo, stdout=subprocess.PIPE,
                                stderr=subprocess.DEVNULL, text=True)
             if p.returncode != 0:
                 continue
@@ -108,8 +109,13 @@ def locate(m, root=None, repo=None):
 
 
 def stale(msg):
-    """A stale list: exit code 2 (sys.exit with a message would give 1)."""
-    print(f"{msg}: update scripts/mutants.json", file=sys.stderr, flush=True)
+    die(f"{msg}: update scripts/mutants.json")
+
+
+def die(msg):
+    """A bad list, a bad command line or a failing baseline: exit code 2 (sys.exit with a message
+    would give 1, the code of a surviving mutant)."""
+    print(msg, file=sys.stderr, flush=True)
     raise SystemExit(2)
 
 
@@ -127,7 +133,7 @@ class Worktree:
         st, _, tail = run(["cmake", "-S", self.path, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release"] + BUILD_DIRS[name],
                           self.path)
         if st != "ok":
-            sys.exit(f"configure of build/{name} failed:\n{tail}")
+            die(f"configure of build/{name} failed:\n{tail}")
         self.configured.add(name)
 
     def build(self, name, targets, timeout):
@@ -167,7 +173,7 @@ class Worktree:
         log(f"baseline: {key} (building and running the unmutated tree)")
         st, t, tail = self.full(timeout) if stage == "full" else self.fast(area, timeout)
         if st != "survived":
-            sys.exit(f"baseline {key} does not pass ({st}); fix the tree first:\n{tail}")
+            die(f"baseline {key} does not pass ({st}); fix the tree first:\n{tail}")
         log(f"baseline {key}: passes ({t:.0f} s)")
         self.baseline[key] = t
 
@@ -195,22 +201,26 @@ def main():
     ap.add_argument("--only", action="append", default=[], metavar="ID", help="only this mutant (repeatable)")
     ap.add_argument("--list", action="store_true", help="list the mutants and exit")
     ap.add_argument("--check", action="store_true",
-                    help="check the list against HEAD (file found, text exactly once) and exit; no build")
+                    help="check the list against --rev (file found, text exactly once) and exit; no build")
     ap.add_argument("--mutants", default=MUTANTS, help="the mutant list (default scripts/mutants.json)")
     ap.add_argument("--workdir", help="where to create the worktree (default: a new directory in /tmp)")
     ap.add_argument("--keep", action="store_true", help="keep the worktree and its builds")
+    ap.add_argument("--rev", default="HEAD",
+                    help="the commit whose tree is mutated (default HEAD); the list is always this one")
     ap.add_argument("--uncommitted", action="store_true",
                     help="carry the working tree's uncommitted changes and untracked files over")
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     ap.add_argument("--timeout-fast", type=int, default=600, help="seconds per build or test run (fast)")
     ap.add_argument("--timeout-full", type=int, default=3600, help="seconds per build or test run (full)")
     args = ap.parse_args()
+    if args.uncommitted and args.rev != "HEAD":
+        die("--uncommitted carries changes against HEAD: not with --rev")
 
     mutants = load(args.mutants)
     if args.only:
         unknown = set(args.only) - {m["id"] for m in mutants}
         if unknown:
-            sys.exit(f"unknown mutant id(s): {', '.join(sorted(unknown))}")
+            die(f"unknown mutant id(s): {', '.join(sorted(unknown))}")
         mutants = [m for m in mutants if m["id"] in args.only]
     if args.list:
         for m in mutants:
@@ -223,14 +233,14 @@ def main():
                           check=True).stdout.strip()
     if args.check:  # a stale entry exits 2 with its message (locate)
         for m in mutants:
-            locate(m, repo=repo)
-        log(f"{len(mutants)} mutants: every file found at HEAD, every text occurs exactly once")
+            locate(m, repo=repo, rev=args.rev)
+        log(f"{len(mutants)} mutants: every file found at {args.rev}, every text occurs exactly once")
         return 0
     base = args.workdir or tempfile.mkdtemp(prefix="gjk2d-mutate-")
     wtpath = os.path.join(base, "tree")  # only this is removed at the end (and base if we made it)
     if os.path.exists(wtpath):
-        sys.exit(f"{wtpath} exists: pass another --workdir")
-    subprocess.run(["git", "worktree", "add", "--detach", wtpath, "HEAD"], cwd=repo, check=True,
+        die(f"{wtpath} exists: pass another --workdir")
+    subprocess.run(["git", "worktree", "add", "--detach", wtpath, args.rev], cwd=repo, check=True,
                    stdout=subprocess.DEVNULL)
     t_start = time.time()
     try:
@@ -251,7 +261,7 @@ def main():
 
         wt = Worktree(repo, wtpath, args.jobs)
         results = {m["id"]: {"fast": None, "full": None, "seconds": 0.0} for m in mutants}
-        log(f"worktree {wtpath} (HEAD{' + uncommitted changes' if args.uncommitted else ''}); "
+        log(f"worktree {wtpath} ({args.rev}{' + uncommitted changes' if args.uncommitted else ''}); "
             f"{len(mutants)} mutants")
 
         for m in mutants:
