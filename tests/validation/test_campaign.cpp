@@ -353,7 +353,7 @@ TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
 TEST_CASE("a broken invariant of the truth fails the run; only invalid input rejects a case",
           "[campaign][errors]")
 {
-    // Regression (issue 12, defect 8): computeTruth caught every std::exception of the exact side
+    // Regression (hostile-input hardening: a broken invariant of the truth rejected cases): computeTruth caught every std::exception of the exact side
     // as a rejected case (exit 2, "bad input"), and swallowed any exception of the float-input
     // truth, skipping the float variants without a word. A validation tool that reports a bug in
     // its truth as bad input cannot be trusted: only std::invalid_argument is a rejection.

@@ -189,7 +189,7 @@ TEST_CASE("any finite rotation (c, s) other than (0, 0) is a transform", "[cases
 {
     // A float engine's (cos, sin) (here of 0.3 rad, rounded to float: |c^2 + s^2 - 1| = 4.8e-8
     // in double), a scaled rotation (3, 4) of size 5, and tiny and huge ones: all valid input
-    // (issue 13), kept exactly as written.
+    //, kept exactly as written.
     const CaseFile f = parseCaseFile(R"({"format": "gjk-cases/1", "cases": [
         {"name": "float", "a": {"points": [[0, 0]], "transform": {"q": [0.95533651113510132, 0.29552021622657776]}}, "b": {"points": [[2, 2]]}},
         {"name": "scaled", "a": {"points": [[0, 0]], "transform": {"q": [3, 4]}}, "b": {"points": [[2, 2]]}},
@@ -264,7 +264,7 @@ TEST_CASE("float rounding survives the optimiser: a point's x and y together", "
     CHECK(r.points[0][0] != 0.1);
 }
 
-// ---- Hostile files (issue 12, defect 3 and the reader's part of 4 and 6) ----
+// ---- Hostile files (the reader's part of the hostile-input hardening) ----
 
 namespace
 {
@@ -319,7 +319,7 @@ TEST_CASE("excerpt: a short, printable, valid UTF-8 quote of any string", "[case
 
 TEST_CASE("deep JSON is refused with line and column, never dumped", "[cases][hostile]")
 {
-    // Regression (issue 12, defect 3): a "format" nested 100,000 deep crashed run and explain
+    // Regression (hostile-input hardening): a "format" nested 100,000 deep crashed run and explain
     // (SIGSEGV) in the recursive dump of the error message. The reader refuses depth 65 while
     // parsing; a case file needs 6 levels. The column is that of the 65th opening bracket.
     const std::string deep = R"({"format": )" + std::string(100'000, '[') +
@@ -339,7 +339,7 @@ TEST_CASE("deep JSON is refused with line and column, never dumped", "[cases][ho
 
 TEST_CASE("a long value is quoted as a short excerpt", "[cases][hostile]")
 {
-    // Regression (issue 12, defect 3): a 200 MB "format" string was echoed whole to stderr.
+    // Regression (hostile-input hardening): a 200 MB "format" string was echoed whole to stderr.
     const std::string m =
         messageOf(R"({"format": ")" + std::string(1'000'000, 'x') + R"(", "cases": []})", "f.json");
     CHECK(m == "f.json: not a gjk-cases/1 file: format is \"" + std::string(60, 'x') +
@@ -359,7 +359,7 @@ TEST_CASE("a long value is quoted as a short excerpt", "[cases][hostile]")
 
 TEST_CASE("duplicate keys are refused, naming the key and where it is", "[cases][hostile]")
 {
-    // Regression (issue 12, defect 6): duplicate keys silently took the last value.
+    // Regression (hostile-input hardening): duplicate keys silently took the last value.
     const std::string text = "{\"format\": \"gjk-cases/1\", \"cases\": [\n" +
                              std::string(R"({"name": "d", "a": {"points": [[0, 0]]},)") +
                              R"( "a": {"points": [[5, 5]]}, "b": {"points": [[1, 1]]}}]})";
@@ -376,7 +376,7 @@ TEST_CASE("duplicate keys are refused, naming the key and where it is", "[cases]
 
 TEST_CASE("a number that overflows or silently becomes 0 is refused", "[cases][hostile]")
 {
-    // Regression (issue 12, defect 6): 1e-999 silently became 0.
+    // Regression (hostile-input hardening): 1e-999 silently became 0.
     CHECK(messageOf(caseFile(oneCase("u", "[0, 1e-999]")), "u.json") ==
           "u.json:1:72: number 1e-999 is not 0 but rounds to 0 in a double");
     CHECK_THAT(messageOf(caseFile(oneCase("u", "[-2e-324, 0]")), "u.json"),
@@ -405,7 +405,7 @@ TEST_CASE("a number that overflows or silently becomes 0 is refused", "[cases][h
 
 TEST_CASE("names must be short, printable UTF-8; labels are excerpts", "[cases][hostile]")
 {
-    // Regression (issue 12, defect 4): a name or path with bytes that are not UTF-8 went into
+    // Regression (hostile-input hardening): a name or path with bytes that are not UTF-8 went into
     // labels and report.json, where nlohmann's dump threw type_error (abort). A JSON string is
     // valid UTF-8 (nlohmann's parser checks it); a control character or a long name is a
     // per-case rejection; the path is excerpted into the label.
@@ -455,7 +455,7 @@ TEST_CASE("comments and shapes have documented limits", "[cases][hostile]")
 TEST_CASE("what is read is bounded: devices, directories, large files, endless pipes",
           "[cases][files]")
 {
-    // Regression (issue 12, defect 4): `--cases /dev/zero` read until bad_alloc.
+    // Regression (hostile-input hardening): `--cases /dev/zero` read until bad_alloc.
     auto readMessage = [](const std::string& path)
     {
         try
@@ -519,4 +519,45 @@ TEST_CASE("an endless pipe is cut at the size limit", "[cases][files][pipe]")
     std::signal(SIGPIPE, previous);
     std::filesystem::remove(fifo);
     CHECK(message == fifo + ": larger than 268435456 bytes, the limit for a case file");
+}
+
+TEST_CASE("the streaming reader reads from disk what the whole-file reader reads", "[cases][files]")
+{
+    // streamCaseFile (what run uses, one case at a time from disk) and parseCaseFile (the file in
+    // memory) share the handler but not the input: same entries, comments and errors.
+    const std::string data = VALIDATION_TEST_DATA;
+    for (const std::string path :
+         {data + "/bad-cases.json", std::string(GJK2D_SOURCE_DIR) + "/validation/cases/talk.json",
+          std::string(GJK2D_SOURCE_DIR) + "/validation/cases/transforms.json"})
+    {
+        INFO(path);
+        const CaseFile whole = readCaseFile(path);
+        std::vector<CaseEntry> streamed;
+        const CaseFileSummary summary =
+            streamCaseFile(path, [&](CaseEntry&& e) { streamed.push_back(std::move(e)); });
+        CHECK(summary.comments == whole.comments);
+        REQUIRE(summary.entries == whole.entries.size());
+        REQUIRE(streamed.size() == whole.entries.size());
+        for (std::size_t i = 0; i < streamed.size(); ++i)
+        {
+            CHECK(streamed[i].label == whole.entries[i].label);
+            CHECK(streamed[i].rejected == whole.entries[i].rejected);
+            CHECK(caseFileText({}, {streamed[i].c}) == caseFileText({}, {whole.entries[i].c}));
+        }
+    }
+    // An error on the third line of a file on disk: the same line, column and message.
+    const std::filesystem::path dir = std::string(VALIDATION_TEST_TMP) + "/case-files";
+    std::filesystem::create_directories(dir);
+    const std::string bad = (dir / "bad-at-3.json").string();
+    std::ofstream(bad) << "{\"format\": \"gjk-cases/1\",\n \"cases\": [\n  {\"name\": \"x\", \"a\": }\n ]}\n";
+    std::string streamedMessage;
+    try
+    {
+        streamCaseFile(bad, [](CaseEntry&&) {});
+    }
+    catch (const InputError& e)
+    {
+        streamedMessage = e.what();
+    }
+    CHECK(streamedMessage.rfind(bad + ":3:22: invalid JSON", 0) == 0);
 }

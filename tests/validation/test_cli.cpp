@@ -1,4 +1,4 @@
-// The gjk-validate program on hostile command lines and failing writes (issue 12, defects 4-6):
+// The gjk-validate program on hostile command lines and failing writes (the hostile-input hardening):
 // what CMake's expect_exit.cmake cannot express (raw non-UTF-8 bytes, a file size limit, file
 // contents before and after). Each test runs the program in a child process.
 #include "common/common.hpp"

@@ -120,7 +120,7 @@ TEST_CASE("a make-up check fails on cases that do not have that make-up", "[fami
 {
     // The random family's checks on 120 identical (overlapping) pairs: the overlapping fraction is
     // 1, outside [0.2, 0.8], and there is no near-touching case.
-    GeneratedFamily f = generateFamilies("random:1", 1)[0]; // random:0 is a usage error (issue 12)
+    GeneratedFamily f = generateFamilies("random:1", 1)[0]; // random:0 is a usage error
     f.cases.clear();
     const auto nested = generateFamilies("hard/identical-nested", 1)[0].cases;
     for (int i = 0; i < 120; ++i)
@@ -396,7 +396,7 @@ TEST_CASE("range and scale: out-of-range inputs are rescaled and judged within t
     const CampaignConfig config = untimedConfig({"hard/range", "hard/extreme-scale"});
     const Campaign camp = runCampaign(config, campaignInputs(config));
     // Float variants see coordinates 1e19..1e30 and 1e-20..1e-30 (hard/range) and 1e-300..1e300
-    // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before issue 12 they
+    // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before the rescaled retry they
     // were flagged outOfRange and not judged (hard/range: >= 40 per float variant); since then the
     // query rescales itself by a power of two, and none may stay flagged or fail.
     REQUIRE(camp.report["families"].size() == 2);

@@ -1,4 +1,4 @@
-// `gjk-validate search`: an adversarial search for the worst error / bound ratio (issue 22).
+// `gjk-validate search`: an adversarial search for the worst error / bound ratio (tiny simplex edges).
 // Starts from families and case files (loadInputs), mutates the best cases it has seen (a vertex
 // or a shape moved by ulps or by 2^-k, a scale, a tiny rotation, the gap shifted toward 0, a
 // vertex duplicated, collapsed or added near an edge, A and B swapped, everything rounded to

@@ -124,7 +124,7 @@ inline bool isValidUtf8(std::string_view s)
 // How a message quotes a user-provided string: at most about maxBytes bytes of it, valid UTF-8
 // and printable whatever the input. Control characters (C0, DEL, C1) and bytes that are not valid
 // UTF-8 become \xHH, a backslash becomes \\; when cut, "... (N bytes)" follows with the total
-// length. Never quote a user's string or JSON value any other way (issue 12: a 200 MB value was
+// length. Never quote a user's string or JSON value any other way (hostile-input hardening: a 200 MB value was
 // echoed whole, a deep one crashed the dump).
 inline std::string excerpt(std::string_view s, std::size_t maxBytes = 60)
 {

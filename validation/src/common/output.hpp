@@ -1,4 +1,4 @@
-// Outputs that appear whole or not at all (STYLE.md, "The runner"; issue 12, defect 5).
+// Outputs that appear whole or not at all (STYLE.md, "The runner"; hostile-input hardening: a failed write left a mix of two reports).
 //   a file      is written to a temporary file beside it, flushed and fsync'ed, then renamed over
 //               it (writeFileAtomic);
 //   a directory is written into a temporary directory beside it, then swapped in with

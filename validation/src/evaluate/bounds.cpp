@@ -8,7 +8,7 @@ namespace gjkval
 // The a-priori bound derived in docs/error-bound.md, to first order in u:
 //   |d_gjk - d| <= u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)) + sub_T
 // in A's local frame (the reference variant), every metric in world lengths (geometry.hpp), for
-// any finite rotations (c, s) != (0, 0) (issue 13). Term by term (see the doc):
+// any finite rotations (c, s) != (0, 0). Term by term (see the doc):
 //   15 B + 10.2 D + 1.5 B~ + 1.5 W  mapping B into A's frame, w = a - b~      (vertex error)
 //   4 A + 28 B                      choosing the support points (rounded dots, rotated direction)
 //   3.5 W + 3 d                     the distance formula |cross(w1, e12)| / |e12|

@@ -238,7 +238,7 @@ bool EvalContext::needFloatTruth() const
     return false;
 }
 
-// Two kinds of failure, never mixed (issue 12, defect 8). The exact side throws
+// Two kinds of failure, never mixed (hostile-input hardening: a broken invariant of the truth rejected cases). The exact side throws
 // std::invalid_argument for an input it cannot take (no points, a non-finite number, a negative
 // radius): that case is rejected, as bad input. Anything else it throws (std::logic_error: a
 // broken invariant of the truth, CGAL's own failed assertions) is a bug of ours and propagates,
@@ -444,33 +444,72 @@ CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx)
     return o;
 }
 
-Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
-                const CaseOutcome& o, const std::string& worstBy)
+namespace
+{
+// The exact result as the case JSON gives it (CaseDetail and cases.jsonl alike).
+Json exactDetail(const exact::Result& r)
+{
+    Json e = exactJson(r);
+    e["witnessA"] = pt(r.witnessA.x, r.witnessA.y);
+    e["witnessB"] = pt(r.witnessB.x, r.witnessB.y);
+    e["lower"] = num(r.lower);
+    e["upper"] = num(r.upper);
+    return e;
+}
+
+// One variant's result on a case, as the case JSON gives it (CaseDetail adds the trace).
+Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
+{
+    Json vj;
+    vj["type"] = scalarName(vi.scalar);
+    if (v.skipped)
+    {
+        vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
+        return vj;
+    }
+    vj["distance"] = num(v.distance);
+    vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
+    vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
+    vj["normal"] = pt(v.normal[0], v.normal[1]);
+    vj["iterations"] = v.iterations;
+    vj["stop"] = gjk::stopReasonName(v.stop);
+    vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
+    vj["R"] = num(v.R);
+    vj["bound"] = num(v.bound);
+    vj["errors"] = {{"abs", num(v.abs)},
+                    {"rel", optNum(v.rel)},
+                    {"ulps", optNum(v.ulps)},
+                    {"normalized", num(v.normalized)},
+                    {"bound_ratio", num(v.boundRatio)},
+                    {"witness", optNum(v.witness)},
+                    {"witness_gap", num(v.witnessGap)}};
+    const char* mis = misclassName(v.mis);
+    vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
+    vj["out_of_range"] = v.outOfRange;
+    if (vi.options.certify)
+    {
+        vj["certified"] = v.certified;
+        vj["lower"] = num(v.lower);
+        vj["upper"] = num(v.upper);
+        vj["interval_contains"] = v.intervalContains;
+    }
+    vj["failed"] = v.failed;
+    return vj;
+}
+
+// What CaseDetail and a cases.jsonl line share: name, family, and either the reason the case
+// was rejected or the exact results and each variant's result.
+Json caseJson(const Case& c, const std::string& family, const EvalContext& ctx,
+              const CaseOutcome& o)
 {
     Json j;
     j["name"] = c.name;
     j["family"] = family;
-    j["worst_by"] = worstBy;
-    j["a"] = shapeDetail(c.a);
-    j["b"] = shapeDetail(c.b);
-    Json mk = Json::array();
-    for (const auto& p : minkowskiDifference(worldPoints(c.a), worldPoints(c.b)))
-        mk.push_back(pt(p[0], p[1]));
-    j["minkowski"] = std::move(mk);
     if (!o.rejected.empty())
     {
         j["rejected"] = o.rejected;
         return j;
     }
-    auto exactDetail = [](const exact::Result& r)
-    {
-        Json e = exactJson(r);
-        e["witnessA"] = pt(r.witnessA.x, r.witnessA.y);
-        e["witnessB"] = pt(r.witnessB.x, r.witnessB.y);
-        e["lower"] = num(r.lower);
-        e["upper"] = num(r.upper);
-        return e;
-    };
     j["exact"] = exactDetail(o.exact);
     if (o.hasFloatTruth)
     {
@@ -479,115 +518,49 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
     }
     Json vs = Json::object();
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+        vs[ctx.variants[k]->name] = variantResultJson(*ctx.variants[k], o.variants[k]);
+    j["variants"] = std::move(vs);
+    return j;
+}
+} // namespace
+
+Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
+                const CaseOutcome& o, const std::string& worstBy)
+{
+    Json j = caseJson(c, family, ctx, o);
+    j["worst_by"] = worstBy;
+    j["a"] = shapeDetail(c.a);
+    j["b"] = shapeDetail(c.b);
+    Json mk = Json::array();
+    for (const auto& p : minkowskiDifference(worldPoints(c.a), worldPoints(c.b)))
+        mk.push_back(pt(p[0], p[1]));
+    j["minkowski"] = std::move(mk);
+    if (!o.rejected.empty())
+        return j;
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];
-        const VariantOutcome& v = o.variants[k];
-        Json vj;
-        vj["type"] = scalarName(vi.scalar);
-        if (v.skipped)
-        {
-            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
-            vs[vi.name] = std::move(vj);
+        if (o.variants[k].skipped)
             continue;
-        }
-        Json trace;
+        Json& vj = j["variants"][vi.name];
         if (vi.scalar == Scalar::Float)
         {
             gjk::DistanceOutput<float> out;
-            trace = tracedRun<float>(c, vi, out);
+            vj["trace"] = tracedRun<float>(c, vi, out);
         }
         else
         {
             gjk::DistanceOutput<double> out;
-            trace = tracedRun<double>(c, vi, out);
+            vj["trace"] = tracedRun<double>(c, vi, out);
         }
-        vj["distance"] = num(v.distance);
-        vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
-        vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
-        vj["normal"] = pt(v.normal[0], v.normal[1]);
-        vj["iterations"] = v.iterations;
-        vj["stop"] = gjk::stopReasonName(v.stop);
-        vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
-        vj["R"] = num(v.R);
-        vj["bound"] = num(v.bound);
-        vj["errors"] = {{"abs", num(v.abs)},
-                        {"rel", optNum(v.rel)},
-                        {"ulps", optNum(v.ulps)},
-                        {"normalized", num(v.normalized)},
-                        {"bound_ratio", num(v.boundRatio)},
-                        {"witness", optNum(v.witness)},
-                        {"witness_gap", num(v.witnessGap)}};
-        const char* mis = misclassName(v.mis);
-        vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
-        vj["out_of_range"] = v.outOfRange;
-        if (vi.options.certify)
-        {
-            vj["certified"] = v.certified;
-            vj["lower"] = num(v.lower);
-            vj["upper"] = num(v.upper);
-            vj["interval_contains"] = v.intervalContains;
-        }
-        vj["failed"] = v.failed;
-        vj["trace"] = std::move(trace);
-        vs[vi.name] = std::move(vj);
     }
-    j["variants"] = std::move(vs);
     return j;
 }
 
 Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
                  const CaseOutcome& o)
 {
-    Json j;
-    j["name"] = c.name;
-    j["family"] = family;
-    if (!o.rejected.empty())
-    {
-        j["rejected"] = o.rejected;
-        return j;
-    }
-    j["exact"] = exactJson(o.exact);
-    if (o.hasFloatTruth)
-        j["exact_float_input"] = exactJson(o.exactFloat);
-    Json vs = Json::object();
-    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
-    {
-        const VariantOutcome& v = o.variants[k];
-        Json vj;
-        if (v.skipped)
-        {
-            vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
-            vs[ctx.variants[k]->name] = std::move(vj);
-            continue;
-        }
-        vj["distance"] = num(v.distance);
-        vj["iterations"] = v.iterations;
-        vj["stop"] = gjk::stopReasonName(v.stop);
-        vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
-        vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
-        vj["abs"] = num(v.abs);
-        vj["rel"] = optNum(v.rel);
-        vj["ulps"] = optNum(v.ulps);
-        vj["normalized"] = num(v.normalized);
-        vj["bound"] = num(v.bound);
-        vj["bound_ratio"] = num(v.boundRatio);
-        vj["witness"] = optNum(v.witness);
-        vj["witness_gap"] = num(v.witnessGap);
-        const char* mis = misclassName(v.mis);
-        vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
-        vj["out_of_range"] = v.outOfRange;
-        if (ctx.variants[k]->options.certify)
-        {
-            vj["certified"] = v.certified;
-            vj["lower"] = num(v.lower);
-            vj["upper"] = num(v.upper);
-            vj["interval_contains"] = v.intervalContains;
-        }
-        vj["failed"] = v.failed;
-        vs[ctx.variants[k]->name] = std::move(vj);
-    }
-    j["variants"] = std::move(vs);
-    return j;
+    return caseJson(c, family, ctx, o);
 }
 
 std::string explainText(const Json& d)

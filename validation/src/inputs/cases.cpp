@@ -139,7 +139,7 @@ ShapeIn readShape(const RJson& c, const char* key)
             s.s = q[1];
             // Any finite (c, s) other than (0, 0) is a transform (x' = c x - s y + p scales by
             // sqrt(c^2 + s^2)): GJK and the exact side both apply it as given. A float engine's
-            // (cos, sin) is a unit vector only to float rounding (issue 13). (0, 0) maps the whole
+            // (cos, sin) is a unit vector only to float rounding. (0, 0) maps the whole
             // shape to one point: not a transform.
             if (s.c == 0 && s.s == 0)
                 fieldError(fmt::format("{}.transform.q is (0, 0): not a rotation", k));

@@ -1160,7 +1160,7 @@ void genColdStartSweep(Rng& r, int i, Case& c, std::string& tag)
 
 // Scales 1e-300 .. 1e300 in steps of 10x: a random pair (gap, penetration, deep overlap, random
 // placement) scaled as a whole. Outside Tolerances<T>'s safe range the query reruns rescaled by a
-// power of two (issue 12, "any finite input gets an answer"): every case here must be answered
+// power of two ("any finite input gets an answer"): every case here must be answered
 // within its bound, none flagged outOfRange. Float variants see the cases that fit in float.
 void genExtremeScale(Rng& r, int i, Case& c, std::string& tag)
 {
@@ -1414,7 +1414,7 @@ const std::vector<HardEntry>& hardTable()
           "A random pair (at a gap, penetrating, deeply overlapping, placed at random) scaled by "
           "1e-300, 1e-290, ... 1e300: outside the type's safe range the query must rescale itself "
           "by a power of two (exact) and answer within its bound, never flag a finite input whose "
-          "extent fits in the exponent range (issue 12: two separated shapes at 1e-300 were "
+          "extent fits in the exponent range (hostile-input hardening: two separated shapes at 1e-300 were "
           "answered 0 and flagged)."},
          genExtremeScale,
          {{"max |coordinate|", M::MaxCoordinate, 1e299, kInf},
@@ -1427,7 +1427,7 @@ const std::vector<HardEntry>& hardTable()
           "starting (vertex 0 of each, same translation) at a vertex pair 0.4 times the type's "
           "maxCoordinate apart: the support points stay in range while dot(d, point) with the "
           "shapes' own points overflows. GJK must not return inf, NaN or a silently wrong "
-          "distance: since issue 12 it reruns such queries rescaled by a power of two and they are "
+          "distance: since the hostile-input hardening it reruns such queries rescaled by a power of two and they are "
           "judged within their bound (outOfRange only for inputs that cannot be rescaled)."},
          genRange,
          {{"max |coordinate|", M::MaxCoordinate, 1e160, kInf},
@@ -1447,7 +1447,7 @@ const std::vector<HardEntry>& hardTable()
           {"max vertices", M::MaxVertices, 8, 8},
           {"min vertices", M::MinVertices, 3, 3}}},
         {{"float-rotation", 256,
-          "A float engine's poses (issue 13): rotations (float(cos t), float(sin t)) that are unit "
+          "A float engine's poses: rotations (float(cos t), float(sin t)) that are unit "
           "vectors only to float rounding, for angles sweeping the circle, every number a float, "
           "shapes in a 100 m world near contact. Inverting such a rotation by transposing it "
           "costs ~1e-7 relative in double: the double variants must still meet their bound."},

@@ -1,4 +1,4 @@
-// HTML rendering of validation results (issue 5). Both functions return a complete, self-contained
+// HTML rendering of validation results. Both functions return a complete, self-contained
 // HTML page: no network access, no external script, style sheet or font; opening the file is
 // enough. The page's HTML, CSS and JavaScript live in validation/html/assets/ and are embedded at
 // build time; the C++ side only inlines the JSON data, and the page's JavaScript draws everything
