@@ -265,16 +265,120 @@ void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     }
 }
 
+namespace
+{
+// A case's frame scales per (frame, float-rounded input), computed when first needed.
+class CaseScales
+{
+  public:
+    explicit CaseScales(const Case& c) : c_(c) {}
+    const FrameScales& get(bool world, bool isFloat)
+    {
+        const int f = world ? 1 : 0, t = isFloat ? 1 : 0;
+        if (!have_[f][t])
+        {
+            if (isFloat && !haveFloatShapes_)
+            {
+                fa_ = roundedToFloat(c_.a);
+                fb_ = roundedToFloat(c_.b);
+                haveFloatShapes_ = true;
+            }
+            scales_[f][t] = frameScales(isFloat ? fa_ : c_.a, isFloat ? fb_ : c_.b, world);
+            have_[f][t] = true;
+        }
+        return scales_[f][t];
+    }
+
+  private:
+    const Case& c_;
+    FrameScales scales_[2][2];
+    bool have_[2][2] = {{false, false}, {false, false}};
+    ShapeIn fa_, fb_;
+    bool haveFloatShapes_ = false;
+};
+
+// The bound a variant's answer is judged against: the reference variant's (A's local frame
+// scales `sc`), what the library promises for this input, so that a variant that computes
+// differently (world frame) fails where it breaks that promise.
+double boundOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, double exactDistance)
+{
+    const bool isFloat = vi.scalar == Scalar::Float;
+    CaseMetrics m;
+    m.R = sc.R;
+    m.unitRoundoff = unitRoundoff(vi.scalar);
+    m.radiusA = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
+    m.radiusB = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
+    m.countA = int(c.a.points.size());
+    m.countB = int(c.b.points.size());
+    m.exactDistance = exactDistance;
+    m.maxA = sc.A;
+    m.maxB = sc.B;
+    m.maxBMapped = sc.Bmapped;
+    m.translation = sc.D;
+    m.maxW = sc.W;
+    return errorBound(vi, m);
+}
+
+// The judgement of one variant's answer v (v.R and v.bound set) against the exact `truth`: its
+// errors, its misclassification, whether its certified interval holds the truth, and whether it
+// failed (docs/validation.md, "Failures").
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
+{
+    const double u = unitRoundoff(scalar);
+    const bool truthZero = exactIsZero(truth);
+    v.truth = truth.distance;
+    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
+                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
+                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
+                  !std::isfinite(v.normal[1]);
+    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
+    const double td = truth.distance;
+    if (v.nonfinite)
+    {
+        v.abs = v.normalized = v.boundRatio = kInf;
+        v.rel = td > 0 ? kInf : kNaN;
+        v.ulps = td > 0 ? kInf : kNaN;
+        v.witnessGap = kInf;
+        v.beyondBound = true;
+    }
+    else
+    {
+        v.abs = std::abs(v.distance - td);
+        v.rel = td > 0 ? v.abs / td : kNaN;
+        v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
+        v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
+        v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
+        v.witnessGap = std::abs(
+            std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+        v.beyondBound = !(v.abs <= v.bound);
+        if (!v.outOfRange)
+        {
+            if (truthZero && v.distance > 0)
+                v.mis = Misclass::FalseSeparation;
+            else if (!truthZero && v.distance == 0)
+                v.mis = Misclass::FalseOverlap;
+            if (v.mis != Misclass::None && !v.beyondBound)
+                v.mis = Misclass::Undecidable;
+        }
+    }
+    // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
+    // value strictly between): the double interval [lower, upper] contains it iff it contains
+    // that enclosure.
+    v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
+    v.witness = kNaN;
+    // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
+    // certified interval that misses the truth always fails.
+    v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
+               (v.certified && !v.intervalContains);
+}
+} // namespace
+
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
 {
     out.variants.assign(ctx.variants.size(), {});
     if (!out.rejected.empty())
         return;
-    // Scales per (frame, float-rounded input), computed when first needed.
-    FrameScales scales[2][2];
-    bool have[2][2] = {{false, false}, {false, false}};
-    ShapeIn fa, fb;
-    bool haveFloatShapes = false;
+    CaseScales scales(c);
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];
@@ -298,87 +402,10 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             fillOutput(query<float>(p, vi), v);
         else
             fillOutput(query<double>(p, vi), v);
-
-        const bool truthZero = exactIsZero(truth);
-        v.truth = truth.distance;
-
-        // The normalised error uses the scale of the variant's own compute frame; the bound is the
-        // reference variant's (A's local frame): what the library promises for this input, so a
-        // variant that computes differently (world frame) fails where it breaks that promise.
-        const int fi = vi.options.frame == gjk::Frame::World ? 1 : 0, ti = isFloat ? 1 : 0;
-        for (int f : {0, fi})
-            if (!have[f][ti])
-            {
-                if (isFloat && !haveFloatShapes)
-                {
-                    fa = roundedToFloat(c.a);
-                    fb = roundedToFloat(c.b);
-                    haveFloatShapes = true;
-                }
-                scales[f][ti] = frameScales(isFloat ? fa : c.a, isFloat ? fb : c.b, f == 1);
-                have[f][ti] = true;
-            }
-        v.R = scales[fi][ti].R;
-        const FrameScales& sc = scales[0][ti];
-        const double u = unitRoundoff(vi.scalar);
-        CaseMetrics m;
-        m.R = sc.R;
-        m.unitRoundoff = u;
-        m.radiusA = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
-        m.radiusB = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
-        m.countA = int(c.a.points.size());
-        m.countB = int(c.b.points.size());
-        m.exactDistance = truth.distance;
-        m.maxA = sc.A;
-        m.maxB = sc.B;
-        m.maxBMapped = sc.Bmapped;
-        m.translation = sc.D;
-        m.maxW = sc.W;
-        v.bound = errorBound(vi, m);
-
-        v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
-                      !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
-                      !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
-                      !std::isfinite(v.normal[1]);
-        v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-        const double td = truth.distance;
-        if (v.nonfinite)
-        {
-            v.abs = v.normalized = v.boundRatio = kInf;
-            v.rel = td > 0 ? kInf : kNaN;
-            v.ulps = td > 0 ? kInf : kNaN;
-            v.witnessGap = kInf;
-            v.beyondBound = true;
-        }
-        else
-        {
-            v.abs = std::abs(v.distance - td);
-            v.rel = td > 0 ? v.abs / td : kNaN;
-            v.ulps = td > 0 ? v.abs / ulpOf(vi.scalar, td) : kNaN;
-            v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
-            v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-            v.witnessGap = std::abs(
-                std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
-            v.beyondBound = !(v.abs <= v.bound);
-            if (!v.outOfRange)
-            {
-                if (truthZero && v.distance > 0)
-                    v.mis = Misclass::FalseSeparation;
-                else if (!truthZero && v.distance == 0)
-                    v.mis = Misclass::FalseOverlap;
-                if (v.mis != Misclass::None && !v.beyondBound)
-                    v.mis = Misclass::Undecidable;
-            }
-        }
-        // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
-        // value strictly between): the double interval [lower, upper] contains it iff it contains
-        // that enclosure.
-        v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
-        v.witness = kNaN;
-        // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
-        // certified interval that misses the truth always fails.
-        v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
-                   (v.certified && !v.intervalContains);
+        // The normalised error uses the scale of the variant's own compute frame.
+        v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
+        v.bound = boundOf(vi, c, scales.get(false, isFloat), truth.distance);
+        judge(v, truth, vi.scalar);
     }
 }
 
