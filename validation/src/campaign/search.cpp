@@ -514,97 +514,116 @@ class Search
     }
 
     // The objective of an evaluated case and every count, in evaluation order.
+    // What one evaluated case showed, over its variants.
+    struct CaseTally
+    {
+        bool counted = true, skipped = false, outOfRange = false, failed = false;
+        bool nonfinite = false, limit = false, mis = false, interval = false, beyond = false;
+    };
+
     void merge(Candidate& cand)
     {
         SearchCase& sc = cand.sc;
         const CaseOutcome& o = cand.o;
         sc.ratios.assign(nv_, kNaN);
+        sc.score = kNaN; // no objective unless keepIfScored finds one
         sc.distance = o.exact.distance;
         sc.witnessA = {o.exact.witnessA.x, o.exact.witnessA.y};
         sc.witnessB = {o.exact.witnessB.x, o.exact.witnessB.y};
-        bool counted = true, skipped = false, outOfRange = false, failed = false;
-        bool nonfinite = false, limit = false, mis = false, interval = false, beyond = false;
+        CaseTally t;
         for (std::size_t k = 0; k < nv_; ++k)
+            tallyVariant(k, o.variants[k], sc, t);
+        res_.skipped += t.skipped ? 1 : 0;
+        res_.outOfRange += t.outOfRange ? 1 : 0;
+        if (t.failed)
+            recordFailure(sc, t);
+        keepIfScored(sc, t);
+    }
+
+    // One variant's answer: a failure is counted; a judged, finite ratio above the floor is
+    // recorded (and announced when it is the best so far).
+    void tallyVariant(std::size_t k, const VariantOutcome& v, SearchCase& sc, CaseTally& t)
+    {
+        if (v.skipped)
         {
-            const VariantOutcome& v = o.variants[k];
-            if (v.skipped)
-            {
-                skipped = true;
-                continue;
-            }
-            if (v.failed)
-            {
-                failed = true;
-                ++res_.variantFailures[k];
-                nonfinite |= v.nonfinite;
-                limit |= v.iterationLimit;
-                mis |= v.mis == Misclass::FalseOverlap || v.mis == Misclass::FalseSeparation;
-                interval |= v.certified && !v.intervalContains;
-                beyond |= v.beyondBound && !v.nonfinite;
-                if (sc.failure.empty())
-                    sc.failure = fmt::format("{}: {}", ctx_.variants[k]->name, failureKind(v));
-            }
-            if (v.outOfRange)
-            {
-                outOfRange = true;
-                continue;
-            }
-            // Non-finite answers and iteration limits are failures, never ratios.
-            if (v.nonfinite || v.iterationLimit || !std::isfinite(v.boundRatio))
-            {
-                counted = false;
-                continue;
-            }
-            // A bound within 1024 subnormals of its floor (bounds.cpp: + T's smallest subnormal)
-            // measures the answer's resolution, not the derived bound: such a case is judged (a
-            // failure above counts) but is no ratio to climb; otherwise the search settles on one
-            // rounding of a subnormal distance, ratio 1 (a 300 s run did, in both types).
-            if (v.bound < 1024 * smallestSubnormal(ctx_.variants[k]->scalar))
-            {
-                counted = false;
-                continue;
-            }
-            sc.ratios[k] = v.boundRatio;
-            if (!v.failed && !(v.boundRatio <= res_.bestPassing[k]))
-                res_.bestPassing[k] = v.boundRatio;
-            if (!(v.boundRatio <= res_.best[k])) // NaN (no best yet) too
-            {
-                res_.best[k] = v.boundRatio;
-                res_.bestCase[k] = sc.c.name;
-                if (reportImprovements_ && cfg_.progress)
-                    std::fprintf(stderr,
-                                 "search: %llu evaluations, %.1f s: %s best ratio %s (%s, from "
-                                 "%s, %d mutations)\n",
-                                 (unsigned long long)res_.evaluations, secondsSince(t0_),
-                                 ctx_.variants[k]->name.c_str(), ratioText(v.boundRatio).c_str(),
-                                 sc.c.name.c_str(), sc.origin.c_str(), sc.mutations);
-            }
+            t.skipped = true;
+            return;
         }
-        res_.skipped += skipped ? 1 : 0;
-        res_.outOfRange += outOfRange ? 1 : 0;
-        if (failed)
+        if (v.failed)
         {
-            SearchFailures& f = res_.failures;
-            ++f.cases;
-            f.nonfinite += nonfinite;
-            f.iterationLimit += limit;
-            f.misclassified += mis;
-            f.interval += interval;
-            f.beyondBound += beyond;
-            if (cfg_.progress && f.cases <= 10)
-                std::fprintf(stderr, "search: FAILURE %s (%s)\n", sc.c.name.c_str(),
-                             sc.failure.c_str());
+            t.failed = true;
+            ++res_.variantFailures[k];
+            t.nonfinite |= v.nonfinite;
+            t.limit |= v.iterationLimit;
+            t.mis |= v.mis == Misclass::FalseOverlap || v.mis == Misclass::FalseSeparation;
+            t.interval |= v.certified && !v.intervalContains;
+            t.beyond |= v.beyondBound && !v.nonfinite;
+            if (sc.failure.empty())
+                sc.failure = fmt::format("{}: {}", ctx_.variants[k]->name, failureKind(v));
         }
-        // The objective: only a case every variant ran on, judged, finite and passing, has one.
-        // A failing case is recorded (counted, kept in `failing`) but never joins the population:
-        // the search goes on climbing toward the bound instead of settling on one failure.
+        if (v.outOfRange)
+        {
+            t.outOfRange = true;
+            return;
+        }
+        // Non-finite answers and iteration limits are failures, never ratios.
+        if (v.nonfinite || v.iterationLimit || !std::isfinite(v.boundRatio))
+        {
+            t.counted = false;
+            return;
+        }
+        // A bound within 1024 subnormals of its floor (bounds.cpp: + T's smallest subnormal)
+        // measures the answer's resolution, not the derived bound: such a case is judged (a
+        // failure above counts) but is no ratio to climb; otherwise the search settles on one
+        // rounding of a subnormal distance, ratio 1 (a 300 s run did, in both types).
+        if (v.bound < 1024 * smallestSubnormal(ctx_.variants[k]->scalar))
+        {
+            t.counted = false;
+            return;
+        }
+        sc.ratios[k] = v.boundRatio;
+        if (!v.failed && !(v.boundRatio <= res_.bestPassing[k]))
+            res_.bestPassing[k] = v.boundRatio;
+        if (!(v.boundRatio <= res_.best[k])) // NaN (no best yet) too
+        {
+            res_.best[k] = v.boundRatio;
+            res_.bestCase[k] = sc.c.name;
+            if (reportImprovements_ && cfg_.progress)
+                std::fprintf(stderr,
+                             "search: %llu evaluations, %.1f s: %s best ratio %s (%s, from "
+                             "%s, %d mutations)\n",
+                             (unsigned long long)res_.evaluations, secondsSince(t0_),
+                             ctx_.variants[k]->name.c_str(), ratioText(v.boundRatio).c_str(),
+                             sc.c.name.c_str(), sc.origin.c_str(), sc.mutations);
+        }
+    }
+
+    void recordFailure(const SearchCase& sc, const CaseTally& t)
+    {
+        SearchFailures& f = res_.failures;
+        ++f.cases;
+        f.nonfinite += t.nonfinite;
+        f.iterationLimit += t.limit;
+        f.misclassified += t.mis;
+        f.interval += t.interval;
+        f.beyondBound += t.beyond;
+        if (cfg_.progress && f.cases <= 10)
+            std::fprintf(stderr, "search: FAILURE %s (%s)\n", sc.c.name.c_str(),
+                         sc.failure.c_str());
+        if (res_.failing.size() < kMaxFailingKept)
+            res_.failing.push_back(sc);
+    }
+
+    // The objective: only a case every variant ran on, judged, finite and passing, has one. A
+    // failing case is recorded (counted, kept in `failing`) but never joins the population: the
+    // search goes on climbing toward the bound instead of settling on one failure.
+    void keepIfScored(SearchCase& sc, const CaseTally& t)
+    {
         sc.score = kNaN;
-        if (counted && !skipped && !outOfRange && !failed)
+        if (t.counted && !t.skipped && !t.outOfRange && !t.failed)
             for (std::size_t k = 0; k < nv_; ++k)
                 if (!(sc.ratios[k] <= sc.score))
                     sc.score = sc.ratios[k], sc.bestVariant = k;
-        if (failed && res_.failing.size() < kMaxFailingKept)
-            res_.failing.push_back(sc);
         if (std::isnan(sc.score))
             return;
         const std::uint64_t h = caseHash(sc.c);
