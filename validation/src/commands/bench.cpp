@@ -44,20 +44,15 @@ int benchCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine
     if (!o.benchJson.empty() || sub.count("--json") > 0)
         checkOutputFile("--json", o.benchJson);
     testFault();
-    CampaignConfig in;
-    in.families = o.bcfg.families = o.benchFamilies;
-    in.caseFiles = o.bcfg.caseFiles = o.benchFiles;
-    in.seed = o.bcfg.seed;
-    const BenchResult res = runBench(o.bcfg, loadInputs(in));
+    o.bcfg.families = o.benchFamilies;
+    o.bcfg.caseFiles = o.benchFiles;
+    const BenchResult res =
+        runBench(o.bcfg, collectInputs(o.benchFamilies, o.benchFiles, o.bcfg.seed));
     std::fputs(benchTable(res.json).c_str(), stdout);
     for (const auto& r : res.json["rejected"])
         std::fprintf(stderr, "gjk-validate: rejected %s: %s\n",
                      r["name"].get<std::string>().c_str(), r["reason"].get<std::string>().c_str());
-    if (!o.benchJson.empty())
-    {
-        writeFileAtomic(o.benchJson, res.json.dump(1) + "\n");
-        std::printf("json: %s\n", o.benchJson.c_str());
-    }
+    writeOutput("json", o.benchJson, [&] { return res.json.dump(1) + "\n"; });
     flushStdout();
     return res.exitCode;
 }

@@ -147,6 +147,15 @@ void testFault()
         throw 42;
 }
 
+void writeOutput(const char* label, const std::string& path,
+                 const std::function<std::string()>& text)
+{
+    if (path.empty())
+        return;
+    writeFileAtomic(path, text());
+    std::printf("%s: %s\n", label, path.c_str());
+}
+
 void flushStdout()
 {
     if (std::fflush(stdout) != 0 || std::ferror(stdout))

@@ -72,6 +72,10 @@ void checkFamilies(const std::vector<std::string>& specs, bool streamed);
 // Test-only: GJK2D_VALIDATE_TEST_FAULT=logic_error|bad_alloc|unknown makes the program throw that
 // once its arguments are checked, so that tests reach the top-level handlers (exit codes 4, 5).
 void testFault();
+// When path is not empty: writes text() there whole (or leaves the file as it was) and prints
+// "label: path".
+void writeOutput(const char* label, const std::string& path,
+                 const std::function<std::string()>& text);
 // The last check of a command: what it printed reached standard output.
 void flushStdout();
 

@@ -63,22 +63,13 @@ int searchCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLin
     if (sub.count("--json") > 0)
         checkOutputFile("--json", o.searchJson);
     testFault();
-    CampaignConfig in;
-    in.families = o.scfg.families = o.searchFamilies;
-    in.caseFiles = o.scfg.caseFiles = o.searchFiles;
-    in.seed = o.scfg.seed;
-    const SearchResult res = runSearch(o.scfg, loadInputs(in));
+    o.scfg.families = o.searchFamilies;
+    o.scfg.caseFiles = o.searchFiles;
+    const SearchResult res =
+        runSearch(o.scfg, collectInputs(o.searchFamilies, o.searchFiles, o.scfg.seed));
     std::fputs(searchSummary(o.scfg, res).c_str(), stdout);
-    if (!o.searchOut.empty())
-    {
-        writeFileAtomic(o.searchOut, searchCaseFileText(o.scfg, res));
-        std::printf("cases: %s\n", o.searchOut.c_str());
-    }
-    if (!o.searchJson.empty())
-    {
-        writeFileAtomic(o.searchJson, res.json.dump(1) + "\n");
-        std::printf("json: %s\n", o.searchJson.c_str());
-    }
+    writeOutput("cases", o.searchOut, [&] { return searchCaseFileText(o.scfg, res); });
+    writeOutput("json", o.searchJson, [&] { return res.json.dump(1) + "\n"; });
     flushStdout();
     return res.exitCode;
 }
