@@ -11,21 +11,16 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <map>
-#include <mutex>
+#include <ostream>
 #include <set>
-#include <thread>
 #include <unistd.h>
 
 #if defined(GJK2D_HAVE_HTML)
