@@ -1,5 +1,5 @@
-// `gjk-validate search`: an adversarial search for the worst error / bound ratio (tiny simplex edges).
-// Starts from families and case files (loadInputs), mutates the best cases it has seen (a vertex
+// `gjk-validate search`: an adversarial search for the worst error / bound ratio.
+// Starts from families and case files (collectInputs), mutates the best cases it has seen (a vertex
 // or a shape moved by ulps or by 2^-k, a scale, a tiny rotation, the gap shifted toward 0, a
 // vertex duplicated, collapsed or added near an edge, A and B swapped, everything rounded to
 // float) and keeps the K best by the objective: the largest bound_ratio over the chosen variants,
