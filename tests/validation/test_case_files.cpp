@@ -526,7 +526,7 @@ TEST_CASE("the streaming reader reads from disk what the whole-file reader reads
     // streamCaseFile (what run uses, one case at a time from disk) and parseCaseFile (the file in
     // memory) share the handler but not the input: same entries, comments and errors.
     const std::string data = VALIDATION_TEST_DATA;
-    for (const std::string path :
+    for (const std::string& path :
          {data + "/bad-cases.json", std::string(GJK2D_SOURCE_DIR) + "/validation/cases/talk.json",
           std::string(GJK2D_SOURCE_DIR) + "/validation/cases/transforms.json"})
     {

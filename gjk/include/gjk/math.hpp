@@ -116,14 +116,6 @@ template <class T> constexpr Vec2<T> transformPoint(const Transform<T>& xf, Vec2
 {
     return {(xf.q.c * v.x - xf.q.s * v.y) + xf.p.x, (xf.q.s * v.x + xf.q.c * v.y) + xf.p.y};
 }
-// The inverse, Q^-1 (v - p) = Q^T (v - p) / |q|^2 (the division only when q is not a unit rotation
-// to Tolerances<T>::unitRotation).
-template <class T> constexpr Vec2<T> invTransformPoint(const Transform<T>& xf, Vec2<T> v)
-{
-    const Vec2<T> r = invRotate(xf.q, v - xf.p);
-    const T n = squaredSize(xf.q);
-    return isUnitRotation(n) ? r : Vec2<T>{r.x / n, r.y / n};
-}
 // inverse(a) * b: maps B's local coordinates into A's local frame. The translation is
 // invRotate(qA, pB - pA): the common offset of two shapes far from the origin cancels in the
 // subtraction (exactly, by Sterbenz's lemma, when pB and pA are within a factor two) before any

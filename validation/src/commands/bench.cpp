@@ -6,23 +6,13 @@
 #include "evaluate/variants.hpp"
 #include "report/report.hpp"
 
-#include <fmt/format.h>
-
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <unistd.h>
-
-#if defined(GJK2D_HAVE_HTML)
-#include "gjk_html/html.hpp"
-#endif
 
 namespace gjkval
 {
 namespace
 {
-namespace fs = std::filesystem;
-
 struct Options
 {
     BenchConfig bcfg;
@@ -30,8 +20,7 @@ struct Options
     std::string benchVariants = "all", benchJson, benchSeed = "1";
 };
 
-int benchCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
-                 [[maybe_unused]] CLI::App& sub)
+int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.bcfg.seed = parseSeed(o.benchSeed);
     o.bcfg.variants = parseVariants(o.benchVariants);

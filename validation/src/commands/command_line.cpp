@@ -93,14 +93,14 @@ void checkCaseFiles(const std::vector<std::string>& files)
             throw InputError("--cases: the file name is empty");
         std::ifstream in(files[i], std::ios::binary);
         if (!in)
-            throw InputError(fmt::format("{}: cannot open the file: {}", excerpt(files[i]),
+            throw InputError(fmt::format("{}: cannot open the file: {}", shownPath(files[i]),
                                          std::strerror(errno)));
         for (std::size_t j = 0; j < i; ++j)
         {
             std::error_code ec;
             if (fs::equivalent(files[i], files[j], ec))
                 throw InputError(fmt::format("--cases: '{}' and '{}' are the same file",
-                                             excerpt(files[j]), excerpt(files[i])));
+                                             shownPath(files[j]), shownPath(files[i])));
         }
     }
 }

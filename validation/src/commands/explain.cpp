@@ -32,8 +32,7 @@ struct Options
                                                   exSeed = "1";
 };
 
-int explainCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
-                   [[maybe_unused]] CLI::App& sub)
+int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
 {
     // `explain FILE NAME`, `explain FILE --name NAME`, `explain --family F NAME`,
     // `explain --family F --name NAME`: anything more is refused.

@@ -9,20 +9,12 @@
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
-#include <unistd.h>
-
-#if defined(GJK2D_HAVE_HTML)
-#include "gjk_html/html.hpp"
-#endif
 
 namespace gjkval
 {
 namespace
 {
-namespace fs = std::filesystem;
-
 struct Options
 {
     std::vector<std::string> genFamilies, genComments;
@@ -30,8 +22,7 @@ struct Options
     std::string genOut;
 };
 
-int generateCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
-                    [[maybe_unused]] CLI::App& sub)
+int generateCommand(Options& o, const CommandLine& line, CLI::App&)
 {
     const std::uint64_t genSeedValue = parseSeed(o.genSeed);
     checkComments(o.genComments);

@@ -1,33 +1,15 @@
 // gjk-validate list: the families and the variants.
 #include "commands/command_line.hpp"
-#include "common/output.hpp"
 #include "evaluate/variants.hpp"
 #include "inputs/families.hpp"
-#include "report/report.hpp"
-
-#include <fmt/format.h>
 
 #include <cstdio>
-#include <filesystem>
-#include <memory>
-#include <unistd.h>
-
-#if defined(GJK2D_HAVE_HTML)
-#include "gjk_html/html.hpp"
-#endif
 
 namespace gjkval
 {
 namespace
 {
-namespace fs = std::filesystem;
-
-struct Options
-{
-};
-
-int listCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
-                [[maybe_unused]] CLI::App& sub)
+int listCommand()
 {
     std::printf("families:\n  random  (default count %d)\n", kDefaultRandomCount);
     for (const auto& h : hardSubFamilies())
@@ -45,12 +27,11 @@ int listCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine&
 }
 } // namespace
 
-Subcommand addList(CLI::App& app, const CommandLine& line)
+Subcommand addList(CLI::App& app, const CommandLine&)
 {
-    auto o = std::make_shared<Options>();
     auto* list =
         app.add_subcommand("list", "List the families (with their reasons) and the variants.");
-    return {list, [o, line, list] { return listCommand(*o, line, *list); }};
+    return {list, [] { return listCommand(); }};
 }
 
 } // namespace gjkval

@@ -9,20 +9,13 @@
 #include <fmt/format.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <unistd.h>
-
-#if defined(GJK2D_HAVE_HTML)
-#include "gjk_html/html.hpp"
-#endif
 
 namespace gjkval
 {
 namespace
 {
-namespace fs = std::filesystem;
-
 struct Options
 {
     SearchConfig scfg;
@@ -33,8 +26,7 @@ struct Options
     bool searchVerbose = false, searchNoProgress = false;
 };
 
-int searchCommand([[maybe_unused]] Options& o, [[maybe_unused]] const CommandLine& line,
-                  [[maybe_unused]] CLI::App& sub)
+int searchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.scfg.seed = parseSeed(o.searchSeed);
     o.scfg.variants = parseVariants(o.searchVariants);

@@ -157,4 +157,11 @@ inline std::string excerpt(std::string_view s, std::size_t maxBytes = 60)
     return out;
 }
 
+// How a message names a file: the path, sanitised, cut after 200 bytes (a path is quoted longer
+// than other user strings: a message must tell two long paths apart).
+inline std::string shownPath(std::string_view path)
+{
+    return excerpt(path, 200);
+}
+
 } // namespace gjkval

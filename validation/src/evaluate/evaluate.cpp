@@ -16,7 +16,6 @@ namespace
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-
 template <class T> std::array<double, 2> d2(gjk::Vec2<T> v)
 {
     return {double(v.x), double(v.y)};
@@ -238,11 +237,12 @@ bool EvalContext::needFloatTruth() const
     return false;
 }
 
-// Two kinds of failure, never mixed (hostile-input hardening: a broken invariant of the truth rejected cases). The exact side throws
-// std::invalid_argument for an input it cannot take (no points, a non-finite number, a negative
-// radius): that case is rejected, as bad input. Anything else it throws (std::logic_error: a
-// broken invariant of the truth, CGAL's own failed assertions) is a bug of ours and propagates,
-// failing the whole run loudly (gjk-validate: internal error, exit code 4), never a "rejected" case.
+// Two kinds of failure, never mixed (hostile-input hardening: a broken invariant of the truth
+// rejected cases). The exact side throws std::invalid_argument for an input it cannot take (no
+// points, a non-finite number, a negative radius): that case is rejected, as bad input. Anything
+// else it throws (std::logic_error: a broken invariant of the truth, CGAL's own failed assertions)
+// is a bug of ours and propagates, failing the whole run loudly (gjk-validate: internal error, exit
+// code 4), never a "rejected" case.
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     try
@@ -255,8 +255,9 @@ void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         return;
     }
     // The float variants' truth: the same case with every number rounded to float. Cases whose
-    // numbers do not fit in float skip the float variants, with their reason (kSkipNotRepresentable);
-    // once they fit, the exact side has no reason to refuse them, so nothing is caught here.
+    // numbers do not fit in float skip the float variants, with their reason
+    // (kSkipNotRepresentable); once they fit, the exact side has no reason to refuse them, so
+    // nothing is caught here.
     if (ctx.needFloatTruth() && representableInFloat(c))
     {
         out.exactFloat = ctx.truth(toExact(c.a, true), toExact(c.b, true), ctx.exactOptions);
@@ -348,8 +349,8 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
         v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
         v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
         v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-        v.witnessGap = std::abs(
-            std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+        v.witnessGap =
+            std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
         v.beyondBound = !(v.abs <= v.bound);
         if (!v.outOfRange)
         {
@@ -524,10 +525,12 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     return vj;
 }
 
-// What CaseDetail and a cases.jsonl line share: name, family, and either the reason the case
-// was rejected or the exact results and each variant's result.
-Json caseJson(const Case& c, const std::string& family, const EvalContext& ctx,
-              const CaseOutcome& o)
+} // namespace
+
+// A cases.jsonl line, and what a CaseDetail starts from: name, family, and either the reason the
+// case was rejected or the exact results and each variant's result.
+Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
+                 const CaseOutcome& o)
 {
     Json j;
     j["name"] = c.name;
@@ -549,12 +552,11 @@ Json caseJson(const Case& c, const std::string& family, const EvalContext& ctx,
     j["variants"] = std::move(vs);
     return j;
 }
-} // namespace
 
 Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
                 const CaseOutcome& o, const std::string& worstBy)
 {
-    Json j = caseJson(c, family, ctx, o);
+    Json j = perCaseJson(c, family, ctx, o);
     j["worst_by"] = worstBy;
     j["a"] = shapeDetail(c.a);
     j["b"] = shapeDetail(c.b);
@@ -582,12 +584,6 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
         }
     }
     return j;
-}
-
-Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
-                 const CaseOutcome& o)
-{
-    return caseJson(c, family, ctx, o);
 }
 
 std::string explainText(const Json& d)

@@ -148,11 +148,6 @@ ShapeIn readShape(const RJson& c, const char* key)
     return s;
 }
 
-// How a message names a file: the path, sanitised, cut after 200 bytes.
-std::string shownPath(const std::string& path)
-{
-    return excerpt(path, 200);
-}
 
 const char* fileTypeName(fs::file_type t)
 {

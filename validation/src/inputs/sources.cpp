@@ -64,7 +64,8 @@ void chunked(const std::function<void(const std::function<void(CaseEntry&&)>&)>&
         consume(chunk);
 }
 
-CampaignInput fileInput(const std::string& path, std::string name)
+// hold: the caller keeps every case anyway (collectInputs), so the file is read once, whole.
+CampaignInput fileInput(const std::string& path, std::string name, bool hold)
 {
     CampaignInput in;
     in.name = std::move(name);
@@ -73,7 +74,7 @@ CampaignInput fileInput(const std::string& path, std::string name)
     std::shared_ptr<CaseFile> whole; // a pipe cannot be read twice: it is kept
     CaseFileSummary summary;
     std::error_code ec;
-    if (fs::status(path, ec).type() == fs::file_type::fifo)
+    if (hold || fs::status(path, ec).type() == fs::file_type::fifo)
     {
         whole = std::make_shared<CaseFile>(readCaseFile(path));
         summary.comments = whole->comments;
@@ -100,11 +101,10 @@ CampaignInput fileInput(const std::string& path, std::string name)
     };
     return in;
 }
-} // namespace
 
-std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& familySpecs,
-                                          const std::vector<std::string>& caseFiles,
-                                          std::uint64_t seed)
+std::vector<CampaignInput> inputsOf(const std::vector<std::string>& familySpecs,
+                                    const std::vector<std::string>& caseFiles, std::uint64_t seed,
+                                    bool holdFiles)
 {
     std::vector<CampaignInput> out;
     std::set<std::string> names;
@@ -124,16 +124,24 @@ std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& family
             if (!names.insert(name).second)
                 throw InputError(fmt::format("case file '{}' is given twice", path));
         }
-        out.push_back(fileInput(path, std::move(name)));
+        out.push_back(fileInput(path, std::move(name), holdFiles));
     }
     return out;
+}
+} // namespace
+
+std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& familySpecs,
+                                          const std::vector<std::string>& caseFiles,
+                                          std::uint64_t seed)
+{
+    return inputsOf(familySpecs, caseFiles, seed, false);
 }
 
 std::vector<FamilyData> collectInputs(const std::vector<std::string>& familySpecs,
                                       const std::vector<std::string>& caseFiles, std::uint64_t seed)
 {
     std::vector<FamilyData> out;
-    for (auto& in : campaignInputs(familySpecs, caseFiles, seed))
+    for (auto& in : inputsOf(familySpecs, caseFiles, seed, true))
     {
         FamilyData f{in.name, in.reason, in.source, in.input, {}, {}, {}, in.makeup, in.seed};
         in.stream(std::max<std::size_t>(1, in.count),

@@ -47,7 +47,8 @@ std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& family
                                           const std::vector<std::string>& caseFiles,
                                           std::uint64_t seed);
 
-// An input held whole, for the commands that need every case at once (bench, search).
+// An input held whole, for the commands that need every case at once (bench, search); a case
+// file is read once.
 struct FamilyData
 {
     std::string name, reason, source;
