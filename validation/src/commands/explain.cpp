@@ -10,9 +10,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 #if defined(GJK2D_HAVE_HTML)
@@ -23,6 +26,18 @@ namespace gjkval
 {
 namespace
 {
+// "3 case(s): 'a', 'b', 'c'": at most kNamesListed names, then "and N more".
+std::string someNames(const std::vector<std::string>& names)
+{
+    constexpr std::size_t kNamesListed = 8;
+    std::string s = fmt::format("{} case(s)", names.size());
+    for (std::size_t i = 0; i < std::min(names.size(), kNamesListed); ++i)
+        s += fmt::format("{}'{}'", i == 0 ? ": " : ", ", excerpt(names[i]));
+    if (names.size() > kNamesListed)
+        s += fmt::format(" and {} more", names.size() - kNamesListed);
+    return s;
+}
+
 namespace fs = std::filesystem;
 
 struct Options
@@ -73,31 +88,42 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
     std::string family;
     bool ok = false;
     std::string rejected;
+    std::vector<std::string> names; // every name looked at, for the error when none matches
     if (!o.exFamily.empty())
     {
         for (auto& f : generateFamilies(o.exFamily, seedValue))
             for (auto& c : f.cases)
+            {
+                names.push_back(c.name);
                 if (!ok && c.name == o.exName)
                 {
                     found = c;
                     family = f.name;
                     ok = true;
                 }
+            }
     }
     else
     {
         CaseFile file = readCaseFile(exFile);
         family = "file:" + fs::path(exFile).filename().string();
         for (auto& e : file.entries)
+        {
+            names.push_back(e.c.name);
             if (!ok && e.c.name == o.exName)
             {
                 found = e.c;
                 rejected = e.rejected;
                 ok = true;
             }
+        }
     }
     if (!ok)
-        throw InputError(fmt::format("explain: no case named '{}'", excerpt(o.exName)));
+        throw InputError(fmt::format("explain: no case named '{}' in {}; it has {}",
+                                     excerpt(o.exName),
+                                     o.exFamily.empty() ? shownPath(exFile)
+                                                        : "--family " + o.exFamily,
+                                     someNames(names)));
     if (!rejected.empty())
         throw InputError(
             fmt::format("explain: case '{}' is rejected: {}", excerpt(o.exName), rejected));

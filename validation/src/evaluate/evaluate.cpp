@@ -642,6 +642,12 @@ std::string explainText(const Json& d)
             fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
             fmtNum(e["witness_gap"]),
             v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
+        if (v.contains("certified") && !v["certified"].get<bool>())
+            s += "     certified interval: none (the query did not certify this case)\n";
+        else if (v.contains("certified"))
+            s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
+                             fmtFull(v["lower"]), fmtFull(v["upper"]),
+                             v["interval_contains"].get<bool>() ? "yes" : "NO");
         int k = 0;
         for (const auto& step : v["trace"])
         {
