@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # One build of the flag matrix (docs/gjk.md, "Compiler flags"): compiles the consumer program
 # (tests/consumer/hash_outputs.cpp) and the GJK core tests (tests/gjk/test_distance.cpp,
-# test_segment_triangle.cpp) with a user's compiler and flags -- invoked directly, so none of the
-# project's own options (-ffp-contract=off) apply -- runs both, and compares the consumer's hashes
-# with the reference build's.
+# test_segment_triangle.cpp, test_properties.cpp) with a user's compiler and flags -- invoked
+# directly, so none of the project's own options (-ffp-contract=off) apply -- runs both, and
+# compares the consumer's hashes with the reference build's.
 #
 #   flag_build.sh SOURCE_DIR WORK_DIR NAME COMPILER [FLAGS...]
 #
@@ -81,7 +81,8 @@ grep ' all ' "$out/hashes"
 if [[ ${GJK_CONSUMER_ONLY:-0} != 1 && $name != unguaranteed-* ]]; then
     build test_distance.o "$src/tests/gjk/test_distance.cpp"
     build test_segment_triangle.o "$src/tests/gjk/test_segment_triangle.cpp"
-    "$cxx" "${flags[@]}" "$out/test_distance.o" "$out/test_segment_triangle.o" \
+    build test_properties.o "$src/tests/gjk/test_properties.cpp"
+    "$cxx" "${flags[@]}" "$out/test_distance.o" "$out/test_segment_triangle.o" "$out/test_properties.o" \
         "${CATCH2_MAIN:-/usr/lib/libCatch2WithMain.a}" -o "$out/gjk_tests" || { echo "FAIL $name: linking gjk_tests"; exit 1; }
     # The XML report names each test case with its overall result (Catch2 v2).
     "$out/gjk_tests" -r xml -o "$out/gjk_tests.xml" >/dev/null 2>&1

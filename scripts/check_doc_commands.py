@@ -1,0 +1,254 @@
+#!/usr/bin/env python3
+"""Every command in README.md and docs/*.md runs as written, in document order.
+
+What counts as a command:
+  - every line of a ```sh block (a trailing backslash joins the next line; `# ...` comments are
+    dropped; a comment `# exits N` states the expected exit code, 0 otherwise);
+  - every `$ ` line of a ```console block (the lines after it are its output, not checked);
+  - every inline `code` span that starts with `gjk-validate <subcommand>` followed by options.
+A command with a placeholder (<...>, [...], A|B, or a name such as FILE, CASE or N) is a
+synopsis: its options must exist in that subcommand's --help, nothing is run. A command that a doc
+repeats runs once.
+
+Where commands run:
+  - In one scratch directory that links every top-level entry of the repository, with
+    `build/release` linked to the build under test and that build's validation/ on PATH (so both
+    `build/release/validation/gjk-validate` and `gjk-validate` work, and count as one command);
+    the files a command writes (hard.json, reports/latest/, ...) stay there, so later commands can
+    read them. Docs run in the order README.md, then docs/ by name.
+  - `scripts/*.sh` and `cmake --preset`/`--build --preset` change to the repository root
+    themselves; they run there, against the build under test (only when it is build/release).
+
+Some commands are not run as written; RULES below lists each with its reason:
+  - "ci": CI itself runs it (the README's test command, scripts/fuzz.sh, the flag matrix);
+  - "shrink": a long run (minutes to hours) runs with a smaller budget; the rest of the command
+    is as written, so every option and path is still checked;
+  - "long": not run (a campaign of its own, e.g. the full mutation run); its options are checked.
+--full runs the "shrink" commands as written (hours), for a person on a quiet machine.
+
+Also checked: every relative link of the docs names a file or folder that exists, and the release
+preset's displayName states the optimisation flag the build really uses.
+
+Exit codes: 0 every command ran with its expected exit code, 1 some did not, 2 bad usage.
+"""
+import argparse
+import os
+import pathlib
+import re
+import shlex
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+DOCS = [ROOT / "README.md"] + sorted((ROOT / "docs").glob("*.md"))
+
+# (pattern on the command, disposition, replacement or None, reason). First match wins.
+RULES = [
+    (r"^scripts/test\.sh\b", "ci", None, "the README's test command: .ci/run runs it"),
+    (r"^ctest --preset", "ci", None, "scripts/test.sh runs it"),
+    (r"(^|\s)scripts/fuzz\.sh\b", "ci", None, "scripts/test.sh runs `scripts/fuzz.sh 30`"),
+    (r"^cmake -S \. -B build/h20|^ctest --test-dir build/h20|^tests/consumer/flag_table\.sh",
+     "ci", None, "the flag matrix: the release build's `ctest -L flags` runs it"),
+    (r"^scripts/bench\.sh\b", "long", None,
+     "builds and runs every benchmark (minutes); speed.md's next commands run its parts"),
+    (r"^scripts/mutate\.py( --fast)?\s*$|^scripts/mutate\.py --(rev|only)\b", "long", None,
+     "the mutation run builds and tests every mutant (tens of minutes)"),
+    (r"--seconds \d+", "shrink", ("--seconds \\d+", "--seconds 2"), "search runs 600 s"),
+    (r"random:\d{6,}", "shrink", (r"random:\d{6,}", "random:3000"), "1e5 to 1e7 cases"),
+    (r"--benchmark_min_time=[0-9.]+", "shrink",
+     (r"--benchmark_min_time=[0-9.]+", "--benchmark_min_time=0.001"),
+     "each Google Benchmark program runs for minutes"),
+]
+
+SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list"]
+# A placeholder: <...>, [...], A|B, or one of the upper-case names the docs use for one.
+PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
+                         r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")
+COMMAND_WORD = re.compile(r"^(gjk-validate|build/|scripts/|cmake|ctest|python3)\b")
+LINK = re.compile(r"\]\(([^)#\s]+)(#[^)]*)?\)")
+
+
+def fenced_commands(path):
+    """[(line, command, expected exit)] of the sh and console blocks of one doc."""
+    out = []
+    lang, pending, start = None, "", 0
+    for no, line in enumerate(path.read_text().splitlines(), 1):
+        fence = re.match(r"^```(\w*)", line)
+        if fence:
+            lang = None if lang is not None else fence.group(1)
+            continue
+        if lang == "console":
+            if line.startswith("$ "):
+                out.append((no, line[2:].strip(), 0))
+            continue
+        if lang != "sh":
+            continue
+        if not pending:
+            start = no
+        pending += line.rstrip()
+        if pending.endswith("\\"):
+            pending = pending[:-1] + " "
+            continue
+        text, pending = pending, ""
+        expect = re.search(r"#\s*exits (\d+)", text)
+        command = re.sub(r"(^|\s)#.*$", "", text).strip()
+        if command:
+            out.append((start, re.sub(r"\s+", " ", command), int(expect.group(1)) if expect else 0))
+    return out
+
+
+def inline_commands(path):
+    """[(line, span, 0)] of the inline `gjk-validate SUB ...` spans that have options."""
+    out, fenced = [], False
+    for no, line in enumerate(path.read_text().splitlines(), 1):
+        if line.startswith("```"):
+            fenced = not fenced
+            continue
+        if fenced:
+            continue
+        for span in re.findall(r"`([^`]+)`", line):
+            words = span.split()
+            if len(words) > 2 and words[0] == "gjk-validate" and words[1] in SUBCOMMANDS:
+                out.append((no, span, 0))
+    return out
+
+
+def disposition(command, full):
+    for pattern, kind, replacement, reason in RULES:
+        if re.search(pattern, command):
+            if kind == "shrink":
+                if full:
+                    return "run", command, reason
+                return "shrink", re.sub(replacement[0], replacement[1], command), reason
+            return kind, command, reason
+    return "run", command, ""
+
+
+def help_options(exe, cache={}):
+    """subcommand -> the set of its long and short options, from `gjk-validate SUB --help`."""
+    if not cache:
+        for sub in SUBCOMMANDS:
+            text = subprocess.run([exe, sub, "--help"], capture_output=True, text=True).stdout
+            cache[sub] = set(re.findall(r"(?<![\w-])(--?[A-Za-z][\w-]*)", text))
+    return cache
+
+
+def unknown_options(command, exe):
+    """The options of a `gjk-validate SUB ...` command that SUB's --help does not list."""
+    words = re.sub(r"^build/release/validation/", "", command).split()
+    if len(words) < 2 or words[0] != "gjk-validate" or words[1] not in SUBCOMMANDS:
+        return []
+    known = help_options(exe)[words[1]]
+    options = [w.split("=")[0] for w in words[2:] if re.match(r"^--?[A-Za-z]", w)]
+    return [o for o in options if o not in known and o not in ("--help", "-h")]
+
+
+def scratch_dir(build):
+    d = pathlib.Path(tempfile.mkdtemp(prefix="gjk2d-doc-commands-"))
+    for entry in ROOT.iterdir():
+        if entry.name not in ("build", "reports", ".git"):
+            (d / entry.name).symlink_to(entry)
+    (d / "build").mkdir()
+    (d / "build" / "release").symlink_to(build)
+    return d
+
+
+def runs_in_root(command):
+    return re.match(r"^(scripts/\w+\.sh|cmake (--preset|--build --preset))", command) is not None
+
+
+def check_links(errors):
+    """Relative links name files that exist; no command hides in an indented code block."""
+    for path in DOCS:
+        fenced = False
+        for no, line in enumerate(path.read_text().splitlines(), 1):
+            fenced = fenced != line.startswith("```")
+            if not fenced and line.startswith("    ") and COMMAND_WORD.match(line.strip()):
+                errors.append(f"{path.relative_to(ROOT)}:{no}: a command in an indented block: "
+                              "put it in a ```sh block, where it is run")
+            for target, _ in LINK.findall(line):
+                if re.match(r"^[a-z]+:", target):
+                    continue
+                if not (path.parent / target).exists():
+                    errors.append(f"{path.relative_to(ROOT)}:{no}: link to '{target}', which is not "
+                                  "in the repository")
+
+
+def check_presets(build, errors):
+    """The release preset's displayName names the -O level that CMAKE_CXX_FLAGS_RELEASE has."""
+    import json
+    presets = json.loads((ROOT / "CMakePresets.json").read_text())["configurePresets"]
+    release = next(p for p in presets if p["name"] == "release")
+    cache = (build / "CMakeCache.txt").read_text()
+    flags = re.search(r"^CMAKE_CXX_FLAGS_RELEASE:STRING=(.*)$", cache, re.M).group(1)
+    said = re.findall(r"-O\d", release["displayName"])
+    real = re.findall(r"-O\d", flags)
+    if said != real[-1:]:
+        errors.append(f"CMakePresets.json: release displayName says {said}, the build uses "
+                      f"{real[-1:]} ({flags})")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", required=True, help="the build under test (build/release)")
+    ap.add_argument("--list", action="store_true", help="list the commands and what is done")
+    ap.add_argument("--full", action="store_true", help="run the shrunk commands as written")
+    ap.add_argument("--only", action="append", default=[], help="only this doc (repeatable)")
+    args = ap.parse_args()
+    build = pathlib.Path(args.build).resolve()
+    exe = build / "validation" / "gjk-validate"
+    if not exe.exists():
+        print(f"check_doc_commands: no {exe}: build gjk-validate first", file=sys.stderr)
+        return 2
+    in_release = build == (ROOT / "build" / "release").resolve()
+    env = dict(os.environ, PATH=f"{build / 'validation'}:{os.environ['PATH']}")
+    errors, counts = [], {"run": 0, "shrink": 0, "ci": 0, "long": 0, "synopsis": 0, "repeat": 0}
+    check_links(errors)
+    check_presets(build, errors)
+    work, done = None, set()
+    for path in DOCS:
+        rel = str(path.relative_to(ROOT))
+        if args.only and rel not in args.only:
+            continue
+        for no, command, expect in sorted(fenced_commands(path) + inline_commands(path)):
+            kind, shown, reason = disposition(command, args.full)
+            if kind == "run" and PLACEHOLDER.search(command):
+                kind, reason = "synopsis", "has a placeholder: options checked"
+            if runs_in_root(command) and not in_release and kind in ("run", "shrink"):
+                kind, reason = "ci", "changes to the repository root: checked in build/release only"
+            key = re.sub(r"^build/release/validation/gjk-validate ", "gjk-validate ", shown)
+            if kind in ("run", "shrink") and key in done:
+                kind, reason = "repeat", "ran above"
+            counts[kind] += 1
+            for o in unknown_options(command, exe):
+                errors.append(f"{rel}:{no}: {command}: {o} is not an option of that subcommand")
+            if args.list or kind not in ("run", "shrink"):
+                print(f"{rel}:{no}: {kind}{' (' + reason + ')' if reason else ''}: {shown}")
+            if args.list or kind not in ("run", "shrink"):
+                continue
+            done.add(key)
+            if work is None:
+                work = scratch_dir(build)
+            cwd = ROOT if runs_in_root(command) else work
+            t0 = time.monotonic()
+            r = subprocess.run(["bash", "-c", shown], cwd=cwd, env=env, capture_output=True,
+                               text=True)
+            took = time.monotonic() - t0
+            status = "ok" if r.returncode == expect else "FAILED"
+            print(f"{rel}:{no}: {status} in {took:.1f} s (exit {r.returncode}): {shown}", flush=True)
+            if r.returncode != expect:
+                tail = "\n".join((r.stdout + r.stderr).strip().splitlines()[-8:])
+                errors.append(f"{rel}:{no}: `{shown}` exited {r.returncode}, expected {expect}:\n"
+                              f"{tail}")
+    print("commands: {run} run as written, {shrink} shrunk, {ci} run by CI elsewhere, {long} not "
+          "run (long), {synopsis} synopses option-checked, {repeat} repeats".format(**counts))
+    if errors:
+        print("\n".join(errors), file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
