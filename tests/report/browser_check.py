@@ -9,8 +9,13 @@ Drives Chromium over the DevTools protocol on --remote-debugging-pipe (Python st
   3. independently of the page: every uncaught exception, console.error/assert, error log entry and
      any network request other than file:/data:/about: fails the test; the number of scatter points
      must equal the count computed here from report.json; "next" must change the drawn iteration;
-  4. takes screenshots (test artefacts) of the page and of the first viewer;
-  5. does the same for the single-case viewer page (gjk_html::renderCase) of the report's first worst
+  4. checks the first screen: at 1400 x 900 the verdict, the counts, the heat map and the speed plot
+     lie within the first 1,200 px of the page; at 1280 px wide, with every folded block open, no
+     table is cut off and the page does not scroll sideways;
+  5. checks the variants' colours: one per variant, the same on the report page, the case page and
+     the explain page, and no two variants of the report (nearly) alike;
+  6. takes screenshots (test artefacts): the first screen, the whole page, the first viewer;
+  7. does the same for the single-case viewer page (gjk_html::renderCase) of the report's first worst
      case, as `gjk-validate explain --html` writes it.
 
 usage: browser_check.py --chromium PATH --render report_render --report REPORT.json --out DIR
@@ -256,20 +261,77 @@ def num(v):
     return math.nan
 
 
+def _eligible(st):
+    """A family x variant the speed plot can draw: a positive, finite ns_per_query and a normalised error."""
+    if not isinstance(st, dict):
+        return False
+    ns = num(st.get('ns_per_query'))
+    h = (st.get('errors') or {}).get('normalized') if isinstance(st.get('errors'), dict) else None
+    return math.isfinite(ns) and ns > 0 and isinstance(h, dict) and (math.isfinite(num(h.get('p99'))) or math.isfinite(num(h.get('max'))))
+
+
 def expected_scatter_points(report):
-    """One point per family x variant with a positive, finite ns_per_query and a normalised error."""
-    n = 0
+    """The speed plot starts on `random` (else the family with most cases that has points): one point
+    per variant of that family with a timing and a normalised error. Returns (family, points)."""
     fams = report.get('families') if isinstance(report, dict) else None
-    for f in fams if isinstance(fams, list) else []:
-        vs = f.get('variants') if isinstance(f, dict) else None
-        for st in (vs.values() if isinstance(vs, dict) else []):
-            if not isinstance(st, dict):
-                continue
-            ns = num(st.get('ns_per_query'))
-            h = (st.get('errors') or {}).get('normalized') if isinstance(st.get('errors'), dict) else None
-            if math.isfinite(ns) and ns > 0 and isinstance(h, dict) and (math.isfinite(num(h.get('p99'))) or math.isfinite(num(h.get('max')))):
-                n += 1
-    return n
+    fams = [f for f in (fams if isinstance(fams, list) else []) if isinstance(f, dict)]
+    def points(f):
+        vs = f.get('variants')
+        return sum(1 for st in (vs.values() if isinstance(vs, dict) else []) if _eligible(st))
+    with_points = [f for f in fams if points(f) > 0]
+    if not with_points:
+        return None, 0
+    start = next((f for f in with_points if str(f.get('name')) == 'random'), None)
+    if start is None:
+        start = sorted(with_points, key=lambda f: -num(f.get('cases')) if math.isfinite(num(f.get('cases'))) else 0)[0]
+    return str(start.get('name')), points(start)
+
+
+# Where the first screen's parts are (page coordinates, CSS px), at the current viewport.
+FIRST_SCREEN_PROBE = """(function() {
+  var out = {};
+  [['verdict', '#verdict'], ['counts', '#counts'], ['heat map', '#heatmap'], ['speed plot', '#scatter']].forEach(function (x) {
+    var e = document.querySelector(x[1]);
+    if (!e) { out[x[0]] = null; return; }
+    var r = e.getBoundingClientRect();
+    out[x[0]] = {top: Math.round(r.top + scrollY), bottom: Math.round(r.bottom + scrollY), left: Math.round(r.left), right: Math.round(r.right)};
+  });
+  return out;
+})()"""
+
+# Tables wider than their place, with every folded block opened: none may be cut off.
+OVERFLOW_PROBE = """(function() {
+  document.querySelectorAll('details').forEach(function (d) { d.open = true; });
+  var width = document.documentElement.clientWidth, bad = [];
+  document.querySelectorAll('table').forEach(function (t, i) {
+    var r = t.getBoundingClientRect(), box = t.parentElement.getBoundingClientRect();
+    if (r.width === 0) return;
+    if (r.right > width + 0.5 || r.right > box.right + 0.5 || t.parentElement.scrollWidth > t.parentElement.clientWidth + 1)
+      bad.push((t.className || 'table') + ' #' + i + ' right ' + Math.round(r.right) + ' in ' + Math.round(box.right) + ' (page ' + width + ')');
+  });
+  var page = document.documentElement.scrollWidth;
+  document.querySelectorAll('details').forEach(function (d) { d.open = false; });
+  return {page: page, width: width, bad: bad};
+})()"""
+
+# Each variant's colour as drawn: the colour dots (tables, legends) and the heat map's column heads.
+COLOR_PROBE = """(function() {
+  var seen = {}, clash = [];
+  function add(name, color) {
+    if (!name || !color) return;
+    if (name in seen && seen[name] !== color) clash.push(name + ': ' + seen[name] + ' and ' + color);
+    seen[name] = color;
+  }
+  document.querySelectorAll('.dot[data-variant]').forEach(function (e) { add(e.getAttribute('data-variant'), getComputedStyle(e).backgroundColor); });
+  document.querySelectorAll('circle[data-variant]').forEach(function (e) { add(e.getAttribute('data-variant'), getComputedStyle(e).fill); });
+  return {colors: seen, clash: clash};
+})()"""
+
+
+def rgb(text):
+    """'rgb(31, 95, 168)' -> (31, 95, 168)."""
+    inner = text[text.index('(') + 1:text.index(')')]
+    return tuple(int(float(x)) for x in inner.split(',')[:3])
 
 
 STEP_PROBE = """(function() {
@@ -293,7 +355,7 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
     fails = []
     label = label or kind
     url = Path(html).resolve().as_uri()
-    page = Page(browser)
+    page = Page(browser, 1400, 900)  # the first screen of a laptop
     # 1. The page's self-test.
     page.load(url + '#selftest')
     page.wait_for("document.getElementById('selftest') && document.getElementById('selftest').getAttribute('data-done') === '1'")
@@ -314,10 +376,32 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
     page.wait_for("document.querySelector('#app') && document.querySelector('#app').children.length > 0")
     if kind == 'report':
         drawn = page.eval("document.querySelectorAll('#scatter .pt').length")
-        want = expected_scatter_points(report)
-        log(f'report: scatter points drawn {drawn}, expected from report.json {want}')
+        family, want = expected_scatter_points(report)
+        log(f'report: speed plot on {family!r}: points drawn {drawn}, expected from report.json {want}')
         if drawn != want:
-            fails.append(f'report: the scatter plot has {drawn} points, report.json has {want} family x variant pairs to plot')
+            fails.append(f'report: the speed plot has {drawn} points, report.json has {want} variants to plot in family {family!r}')
+        if family is not None and page.eval("document.querySelector('select.speed-family').value") != family:
+            fails.append(f'report: the speed plot does not start on family {family!r}')
+        # The first screen answers the questions: verdict, heat map and speed plot within the first
+        # 1,200 px at 1400 x 900.
+        pos = page.eval(FIRST_SCREEN_PROBE)
+        log('report: first screen at 1400 x 900 (page px):', json.dumps(pos))
+        (Path(out_dir) / f'{label}-first-screen.json').write_text(json.dumps(pos, indent=1))
+        for part in ('verdict', 'counts', 'heat map') + (('speed plot',) if want else ()):
+            p = pos.get(part)
+            if not p:
+                fails.append(f'report: no {part} on the page')
+            elif p['top'] < 0 or p['bottom'] > 1200:
+                fails.append(f'report: the {part} is not within the first 1,200 px: {p}')
+        # No table is cut off at 1280 px.
+        page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1280, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
+        time.sleep(0.2)
+        over = page.eval(OVERFLOW_PROBE)
+        log('report: at 1280 px: page width', over['page'], 'tables cut off:', len(over['bad']))
+        if over['page'] > over['width'] or over['bad']:
+            fails.append(f'report: at 1280 px the page scrolls sideways or a table is cut off: {over}')
+        page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1400, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
+        time.sleep(0.2)
         fams = [str(f.get('name')) for f in report.get('families', []) if isinstance(f, dict)] if isinstance(report, dict) else []
         cards = page.eval("Array.prototype.map.call(document.querySelectorAll('.family h3'), function (e) { return e.textContent; })") or []
         for f in fams:
@@ -325,9 +409,14 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
                 fails.append(f'report: family {f!r} has no section on the page')
         if page.eval("document.querySelectorAll('.error-box').length"):
             fails.append('report: the page shows an error box: ' + str(page.eval("document.querySelector('.error-box').textContent")))
+    colors = page.eval(COLOR_PROBE)
+    for c in colors['clash']:
+        fails.append(f'{label}: a variant drawn in two colours: {c}')
     if screenshot:
-        page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1400, 'height': 2400, 'deviceScaleFactor': 1, 'mobile': False})
+        # The first screen, as a reader opens the page (1400 x 900), and the whole page.
+        page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1400, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
         time.sleep(0.2)
+        page.eval('window.scrollTo(0, 0)')
         page.screenshot(screenshot)
         full = Path(screenshot).with_name(Path(screenshot).stem + '-full.png')
         page.screenshot(full, full=True)
@@ -346,6 +435,32 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
             if clip:
                 page.screenshot(viewer_screenshot, clip=clip)
     fails += [f'{label}: {p}' for p in page.problems()]
+    return fails, colors['colors']
+
+
+def check_colors(report, page_colors):
+    """One colour per variant: the same on every page, and distinct variants distinct colours."""
+    fails = []
+    merged = {}
+    for label, colors in page_colors.items():
+        for name, c in colors.items():
+            merged.setdefault(name, {})[label] = c
+    for name, by_page in merged.items():
+        if len(set(by_page.values())) > 1:
+            fails.append(f'variant {name!r} has different colours on different pages: {by_page}')
+    names = [str(v.get('name')) for v in (report.get('variants') or []) if isinstance(v, dict)] if isinstance(report, dict) else []
+    report_colors = page_colors.get('report', {})
+    missing = [n for n in names if n not in report_colors]
+    if missing:
+        fails.append(f'report: no colour dot for the variants {missing}')
+    drawn = {n: rgb(report_colors[n]) for n in names if n in report_colors}
+    for i, a in enumerate(sorted(drawn)):
+        for b in sorted(drawn)[i + 1:]:
+            d = math.dist(drawn[a], drawn[b])
+            if d < 40:
+                fails.append(f'variants {a!r} and {b!r} have (nearly) the same colour: {drawn[a]} and {drawn[b]}')
+    log(f'colours: {len(drawn)} variants, {len(set(drawn.values()))} distinct colours on the report page;',
+        'pages compared:', ', '.join(sorted(page_colors)))
     return fails
 
 
@@ -439,6 +554,7 @@ def main(argv):
             fails.append(f'explain --html: {e}')
 
     browser = Chromium(chromium, str(out))
+    page_colors = {}
     try:
         for label, kind, path, shot in pages:
             vshot = None
@@ -446,11 +562,14 @@ def main(argv):
                 vshot = str(Path(shot).with_name(Path(shot).stem + '-viewer.png'))
             try:
                 if kind == 'case':
-                    fails += check_page(browser, path, out, kind, report=report, viewer_screenshot=shot, label=label)
+                    f, page_colors[label] = check_page(browser, path, out, kind, report=report, viewer_screenshot=shot, label=label)
                 else:
-                    fails += check_page(browser, path, out, kind, report=report, screenshot=shot, viewer_screenshot=vshot, label=label)
+                    f, page_colors[label] = check_page(browser, path, out, kind, report=report, screenshot=shot, viewer_screenshot=vshot, label=label)
+                fails += f
             except Exception as e:  # a timeout or a crash is a failure, with the browser's log
                 fails.append(f'{label}: {type(e).__name__}: {e}')
+        if 'report' in page_colors:
+            fails += check_colors(report, page_colors)
     finally:
         browser.close()
     log(f'done in {time.monotonic() - t0:.1f} s')

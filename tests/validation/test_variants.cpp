@@ -4,6 +4,10 @@
 #include "campaign/campaign.hpp"
 #include "inputs/geometry.hpp"
 
+#ifdef GJK2D_HAVE_HTML
+#include <gjk_html/html.hpp>
+#endif
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -250,3 +254,19 @@ TEST_CASE("every-start variants judge the worst answer over many starts", "[vari
     const auto far = worstStart<double>(p, *v, 100.0);
     CHECK(far.distance == 1.0); // every start gives 1: the farthest from 100 is still 1
 }
+
+#ifdef GJK2D_HAVE_HTML
+TEST_CASE("every variant of the table has its own colour on the report page", "[variants][html]")
+{
+    // The page (validation/html/assets/report.js) gives each built-in variant a fixed colour, the
+    // same on index.html and on explain --html pages; a variant added to the table without one
+    // would get a hashed colour that may clash with another's. The browser test checks the
+    // colours are distinct and equal across pages.
+    const std::string page = gjk_html::renderCase(Json::object());
+    for (const auto& v : variantTable())
+    {
+        INFO(v.name);
+        CHECK(page.find("'" + v.name + "': '#") != std::string::npos);
+    }
+}
+#endif

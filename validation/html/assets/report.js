@@ -130,9 +130,42 @@
 
   // --- Colours ------------------------------------------------------------------------------------
 
-  // Variants in plots: distinct, medium saturation (readable as lines and markers).
-  var VARIANT_COLORS = ['#4e86c6', '#e0785f', '#5aa86b', '#a26dc2', '#d8a02c', '#3fa7a3', '#cf5f98', '#7f7f7f',
-    '#1f3f7a', '#9c3d1f', '#2f6b3a', '#b7b33a', '#5a3b8a', '#e3a6c4'];
+  // One colour per variant, the same on every page (index.html and every `explain --html` page), so
+  // it never depends on which variants a page lists or in which order. The runner's built-in
+  // variants (validation/src/evaluate/variants.cpp) come in hue pairs: the double variant dark, its
+  // float twin light. tests/report/browser_check.py checks that the campaign's variants get distinct
+  // colours and that a variant has the same colour on the report page and on an explain page.
+  var BUILTIN_VARIANT_COLORS = {
+    'double': '#1f5fa8', 'float': '#64a6e8',
+    'double-closest-point': '#c2570c', 'float-closest-point': '#f7a35c',
+    'double-world-frame': '#2e7d32', 'float-world-frame': '#85c988',
+    'double-duality-gap': '#6d4c41',
+    'double-certified': '#5e35b1', 'float-certified': '#b39ddb',
+    'double-binary-support': '#00838f', 'float-binary-support': '#5fd0dc',
+    'double-warm': '#ad1457', 'float-warm': '#f48fb1',
+    'double-every-start': '#7a7a12', 'float-every-start': '#cfd250'
+  };
+  // Any other variant (an external implementation, a future one): a colour none of the built-ins
+  // uses, picked by a hash of its name (FNV-1a), so it too is the same on every page.
+  var EXTRA_VARIANT_COLORS = ['#283593', '#546e7a', '#a1887f', '#f2b600', '#212121', '#8e24aa', '#9e9d24', '#4e342e'];
+
+  function nameHash(s) {
+    var x = 0x811c9dc5;
+    for (var i = 0; i < s.length; ++i) { x ^= s.charCodeAt(i); x = Math.imul(x, 0x01000193) >>> 0; }
+    return x >>> 0;
+  }
+
+  function variantColor(name) {
+    name = String(name);
+    if (Object.prototype.hasOwnProperty.call(BUILTIN_VARIANT_COLORS, name)) return BUILTIN_VARIANT_COLORS[name];
+    return EXTRA_VARIANT_COLORS[nameHash(name) % EXTRA_VARIANT_COLORS.length];
+  }
+
+  // A variant's colour dot; data-variant lets the tests compare colours across pages.
+  function variantDot(name) {
+    return h('span', {class: 'dot', 'data-variant': String(name), style: 'background:' + variantColor(name)});
+  }
+
   // The talk's pastels, for geometry.
   var GEO = {
     aFill: '#b9d7f0', aStroke: '#5b8fc7',
@@ -143,14 +176,6 @@
     exact: '#333333', origin: '#222222'
   };
   var STOP_COLORS = ['#a8d5e2', '#f9d8a7', '#c5e3bf', '#e6c3e0', '#f4b6b6', '#d5d0f0', '#f3e6a0', '#cfd8dc'];
-
-  var variantColorMap = {};
-  function variantColor(name) {
-    if (!(name in variantColorMap)) {
-      variantColorMap[name] = VARIANT_COLORS[Object.keys(variantColorMap).length % VARIANT_COLORS.length];
-    }
-    return variantColorMap[name];
-  }
 
   // --- Scales and axes ----------------------------------------------------------------------------
 
@@ -249,6 +274,7 @@
     if (shape === 'circle') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 5, fill: color, stroke: '#333', 'stroke-width': 0.7}));
     else if (shape === 'triangle') sw.appendChild(sv('path', {d: 'M9 1.5 L15 12 L3 12 Z', fill: 'white', stroke: color === 'none' ? '#333' : color, 'stroke-width': 1.6}));
     else if (shape === 'ring') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 4.5, fill: 'white', stroke: color, 'stroke-width': 2.5}));
+    else if (shape === 'ring-red') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 5, fill: color, stroke: '#c0392b', 'stroke-width': 2.5}));
     else if (shape === 'cross') sw.appendChild(sv('path', {d: 'M4 2L14 12M4 12L14 2', stroke: color, 'stroke-width': 2.2}));
     else if (shape === 'diamond') sw.appendChild(sv('path', {d: 'M9 0.5L15.5 7L9 13.5L2.5 7Z', fill: color, stroke: '#6b5200', 'stroke-width': 1}));
     else if (shape === 'line') sw.appendChild(sv('line', {x1: 1, x2: 17, y1: 7, y2: 7, stroke: color, 'stroke-width': 2}));
@@ -284,6 +310,11 @@
 
   function misclassified(st) {
     return ['false_overlap', 'false_separation', 'undecidable'].reduce(function (s, k) { return s + (isNum(st[k]) ? num(st[k]) : 0); }, 0);
+  }
+
+  // Wrong answers about overlap (undecidable is not one: no answer at that precision can be wrong).
+  function wrongClass(st) {
+    return ['false_overlap', 'false_separation'].reduce(function (s, k) { return s + (isNum(st[k]) ? num(st[k]) : 0); }, 0);
   }
 
   // The rule for one scatter point (a family x variant pair): a positive time and a normalised error.
@@ -347,22 +378,54 @@
     return h('span', {class: 'badge unknown'}, '—');
   }
 
+  // Totals over the whole report: judged and comparison failures, misclassifications, undecidable.
+  function totals(report) {
+    var t = {judgedFailures: 0, comparisonFailures: 0, misclassified: 0, undecidable: 0, makeupFailed: 0, failingPairs: 0};
+    families(report).forEach(function (f) {
+      if (Array.isArray(f.makeup)) f.makeup.forEach(function (m) { if (m && m.ok === false) ++t.makeupFailed; });
+      var fv = familyVariants(f);
+      Object.keys(fv).forEach(function (n) {
+        var st = fv[n] || {}, fails = isNum(st.failures) ? num(st.failures) : 0;
+        if (isJudged(n)) t.judgedFailures += fails; else t.comparisonFailures += fails;
+        if (fails > 0 && isJudged(n)) ++t.failingPairs;
+        t.misclassified += wrongClass(st);
+        t.undecidable += isNum(st.undecidable) ? num(st.undecidable) : 0;
+      });
+    });
+    return t;
+  }
+
+  function plural(n, one, many) { return fmtInt(n) + ' ' + (num(n) === 1 ? one : (many || one + 's')); }
+
+  // The page head answers "did anything fail?": the verdict and one line of counts.
   function renderHeader(report) {
     var ctx = report.context || {};
-    var nFam = families(report).length, nVar = variantNames(report).length;
+    var names = variantNames(report);
+    var nFam = families(report).length, nJudged = names.filter(isJudged).length;
+    var t = totals(report);
+    var rejected = has(ctx.cases_rejected) ? num(ctx.cases_rejected) : (Array.isArray(report.rejected) ? report.rejected.length : 0);
+    var counts = h('div', {class: 'counts', id: 'counts'},
+      h('span', {}, h('b', {}, fmtInt(ctx.cases_total)), ' cases'),
+      h('span', {}, h('b', {}, String(nFam)), nFam === 1 ? ' family' : ' families'),
+      h('span', {}, h('b', {}, String(names.length)), names.length === 1 ? ' variant' : ' variants',
+        names.length !== nJudged ? ' (' + nJudged + ' judged, ' + (names.length - nJudged) + ' comparison)' : ''),
+      h('span', {class: t.judgedFailures > 0 ? 'bad' : ''}, h('b', {}, fmtInt(t.judgedFailures)), t.judgedFailures === 1 ? ' failure' : ' failures',
+        t.comparisonFailures > 0 ? h('span', {class: 'muted'}, ' (+ ' + fmtInt(t.comparisonFailures) + ' in comparison variants, not judged)') : null),
+      t.makeupFailed ? h('span', {class: 'bad'}, h('b', {}, String(t.makeupFailed)), ' make-up checks failed') : null,
+      h('span', {class: rejected > 0 ? 'bad' : ''}, h('a', {href: '#rejected'}, h('b', {}, fmtInt(rejected)), ' rejected')));
     return h('header', {class: 'page-head'},
       h('div', {class: 'title-row'},
-        h('div', {},
+        h('div', {class: 'verdict', id: 'verdict'}, verdictBadge(report.passed)),
+        h('div', {class: 'head-text'},
           h('h1', {}, 'GJK 2D validation report'),
+          counts,
           h('div', {class: 'subtitle'},
             [has(ctx.date) ? String(ctx.date) : null, has(ctx.git_revision) ? 'rev ' + ctx.git_revision : null,
-             fmtInt(ctx.cases_total) + ' cases', nFam + (nFam === 1 ? ' family' : ' families'),
-             nVar + (nVar === 1 ? ' variant' : ' variants')].filter(Boolean).join('  ·  '))),
-        verdictBadge(report.passed)),
+             has(ctx.host) ? String(ctx.host) : null, has(report.exit_code) ? 'exit code ' + report.exit_code : null].filter(Boolean).join('  ·  ')))),
       h('nav', {class: 'toc'},
-        h('a', {href: '#context'}, 'Context'), h('a', {href: '#summary'}, 'Summary'),
-        h('a', {href: '#speed'}, 'Speed vs error'), h('a', {href: '#worst'}, 'Worst cases'),
-        h('a', {href: '#families'}, 'Families'), h('a', {href: '#rejected'}, 'Rejected inputs')));
+        h('a', {href: '#overview'}, 'Overview'), h('a', {href: '#families'}, 'Families'),
+        h('a', {href: '#context'}, 'Context'), h('a', {href: '#worst'}, 'Worst cases'),
+        h('a', {href: '#rejected'}, 'Rejected inputs')));
   }
 
   function renderContext(report) {
@@ -433,7 +496,7 @@
             ? [formula && formula !== commonFormula ? formula : null, has(v.bound.unit_roundoff) ? 'u = ' + fmt(v.bound.unit_roundoff) : null].filter(Boolean).join(', ')
             : '—';
           return h('tr', {},
-            h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(String(v.name))}), String(v.name),
+            h('td', {class: 'nowrap'}, variantDot(String(v.name)), String(v.name),
               report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null, comparisonTag(String(v.name)),
               v.warm === true ? h('span', {class: 'tag'}, 'warm start') : null),
             h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, opts), h('td', {class: 'small'}, bound));
@@ -444,197 +507,436 @@
     return sec;
   }
 
-  function renderSummary(report) {
-    var sec = section('summary', 'Summary',
-      'One row per family and variant. Errors are |d_gjk − d_exact|: absolute (world units), in ulps of the exact distance, and normalised by u·R (u: the type\'s unit roundoff, R: the largest coordinate of A − B in the compute frame). p99 is read from the histogram bins (upper bin edge). Misclassified: false overlap, false separation, or undecidable (the exact distance is within the error bound of 0, so no answer at this precision can be wrong: not a failure). Failures: cases outside the bound, misclassified beyond it, non-finite or at the iteration limit.');
+  // Judged variants first (they decide the verdict), then comparison variants; each group in the
+  // report's order.
+  function orderedVariants(report) {
     var names = variantNames(report);
-    var fams = families(report);
-    if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no families.')); return sec; }
-    var hasBound = fams.some(function (f) { return Object.keys(familyVariants(f)).some(function (v) { return hist(familyVariants(f)[v], 'bound_ratio'); }); });
-    var head1 = h('tr', {},
-      h('th', {rowspan: 2}, 'Family'), h('th', {rowspan: 2}, 'Variant'), h('th', {rowspan: 2, class: 'num'}, 'Cases'),
-      h('th', {rowspan: 2, class: 'num', title: 'false overlap + false separation + undecidable'}, 'Mis\u00adclass.'), h('th', {rowspan: 2, class: 'num'}, 'Failures'),
-      h('th', {colspan: 2, class: 'grp'}, 'Absolute error'), h('th', {colspan: 2, class: 'grp'}, 'Error [ulps]'),
-      h('th', {colspan: 2, class: 'grp'}, 'Error / (u·R)'),
-      hasBound ? h('th', {class: 'grp'}, 'Error / bound') : null,
-      h('th', {colspan: 2, class: 'grp'}, 'Iterations'),
-      h('th', {rowspan: 2, class: 'num', title: 'mean time per query; below it, the ratio to the baseline variant'}, 'ns / query'),
-      h('th', {rowspan: 2}, 'Result'));
-    var head2 = h('tr', {}, ['max', 'p99', 'max', 'p99', 'max', 'p99'].concat(hasBound ? ['max'] : [], ['mean', 'max']).map(function (t) { return h('th', {class: 'num sub'}, t); }));
-    var body = h('tbody', {});
-    fams.forEach(function (f) {
-      var fv = familyVariants(f);
-      var present = names.filter(function (n) { return n in fv; });
-      var missing = names.filter(function (n) { return !(n in fv); });
-      present.forEach(function (vn, i) {
-        var st = fv[vn] || {};
-        var tr = h('tr', {class: (i === 0 ? 'family-first' : '') + (isJudged(vn) || i === 0 ? '' : ' comparison-row')});
-        // No rowspan: rows of comparison variants can be hidden, which a rowspan would misalign.
-        tr.appendChild(i === 0 ? h('td', {class: 'family-cell'}, h('a', {href: '#family-' + slug(f.name)}, String(f.name)),
-          has(f.cases) ? h('div', {class: 'small muted'}, fmtInt(f.cases) + ' cases') : null) : h('td', {class: 'family-cell'}));
-        var mis = misclassified(st);
-        function detail(keys) {
-          return keys.filter(function (k) { return num(st[k]) > 0; }).map(function (k) { return fmtInt(st[k]) + ' ' + k.replace(/_/g, ' '); });
-        }
-        var misDetail = detail(['false_overlap', 'false_separation', 'undecidable']);
-        var failDetail = detail(['nonfinite', 'out_of_range', 'iteration_limit']);
-        var rate = has(st.failure_rate_upper95) && isNum(st.failure_rate_upper95) ? 'failure rate < ' + fmt(st.failure_rate_upper95) + ' (upper 95 % bound)' : null;
-        var ha = hist(st, 'abs'), hu = hist(st, 'ulps'), hn = hist(st, 'normalized'), hb = hist(st, 'bound_ratio');
-        var it = st.iterations || {};
-        var ns = has(st.ns_per_query) ? fmt(st.ns_per_query) : '—';
-        var spread = Array.isArray(st.ns_spread) ? 'spread ' + fmt(st.ns_spread[0]) + ' – ' + fmt(st.ns_spread[1]) + ' ns' : null;
-        append(tr, [
-          h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(vn)}), vn, comparisonTag(vn)),
-          h('td', {class: 'num'}, fmtInt(st.cases)),
-          // Undecidable (within the error bound of the truth) is not a failure: red only for the rest.
-          h('td', {class: 'num' + (mis - (isNum(st.undecidable) ? num(st.undecidable) : 0) > 0 ? ' bad' : '')}, fmtInt(mis),
-            misDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
-          h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: rate},
-            fmtInt(st.failures), failDetail.map(function (t) { return h('div', {class: 'small'}, t); })),
-          h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
-          h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
-          h('td', {class: 'num'}, fmt(hn && hn.max)), h('td', {class: 'num'}, fmt(hn && hn.p99)),
-          hasBound ? h('td', {class: 'num' + (hb && num(hb.max) > 1 ? ' bad' : '')}, fmt(hb && hb.max)) : null,
-          h('td', {class: 'num'}, fmt(it.mean)), h('td', {class: 'num'}, fmtInt(it.max)),
-          h('td', {class: 'num', title: spread}, ns, has(st.ratio_to_baseline) && vn !== report.baseline_variant ? h('div', {class: 'small muted'}, fmt(st.ratio_to_baseline) + '× baseline') : null),
-          h('td', {}, passBadge(st.pass, vn))]);
-        body.appendChild(tr);
-      });
-      if (missing.length) {
-        var tr = h('tr', {class: 'missing-row' + (present.length ? '' : ' family-first')});
-        tr.appendChild(h('td', {class: 'family-cell'}, present.length ? null : String(f.name)));
-        tr.appendChild(h('td', {colspan: 16, class: 'muted small'}, 'not run in this family: ' + missing.join(', ')));
-        body.appendChild(tr);
-      }
-    });
-    // Comparison variants (reported, not judged) are folded away by default: with every variant
-    // the table has a row per family and variant, too long to read at once.
-    var anyComparison = names.some(function (n) { return !isJudged(n); });
-    var wrap = h('div', {class: 'table-wrap hide-comparison'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
-    if (anyComparison) {
-      var box = h('input', {type: 'checkbox', id: 'show-comparison'});
-      box.addEventListener('change', function () { wrap.classList.toggle('hide-comparison', !box.checked); });
-      sec.appendChild(h('p', {class: 'small'}, h('label', {}, box, ' show the comparison variants (' +
-        names.filter(function (n) { return !isJudged(n); }).join(', ') + ') in this table; the plots below always show them')));
-    }
-    sec.appendChild(wrap);
-    return sec;
+    return names.filter(isJudged).concat(names.filter(function (n) { return !isJudged(n); }));
   }
 
   function slug(s) { return String(s).toLowerCase().replace(/[^a-z0-9]+/g, '-').replace(/^-|-$/g, ''); }
 
-  // --- Speed against error --------------------------------------------------------------------------
+  // Opens a family's detail and scrolls to it (heat map cells, family names, #family-... links).
+  function openFamily(name, variant) {
+    var d = document.getElementById('family-' + slug(name));
+    if (!d) return;
+    d.open = true;
+    d.scrollIntoView({block: 'start'});
+    if (has(variant)) {
+      var rows = d.querySelectorAll('tr[data-variant]');
+      for (var i = 0; i < rows.length; ++i) {
+        if (rows[i].getAttribute('data-variant') !== String(variant)) continue;
+        var row = rows[i];
+        row.classList.add('flash');
+        setTimeout(function () { row.classList.remove('flash'); }, 2500);
+      }
+    }
+  }
 
-  function renderScatter(report) {
-    var sec = section('speed', 'Speed against error',
-      'Every family × variant is one point pair: time per query against the normalised error, filled circle at p99 and open triangle at the maximum, joined by a line. Lower-left is better. Hover a marker for its numbers.');
-    var items = [];
-    families(report).forEach(function (f) {
-      var fv = familyVariants(f);
-      Object.keys(fv).forEach(function (vn) {
-        var st = fv[vn];
-        if (!scatterEligible(st)) return;
-        var hn = hist(st, 'normalized');
-        items.push({family: String(f.name), variant: vn, ns: num(st.ns_per_query), p99: num(hn.p99), max: num(hn.max), st: st});
+  function openFromHash() {
+    var id = decodeURIComponent(location.hash.slice(1));
+    var el = id ? document.getElementById(id) : null;
+    if (el && el.tagName === 'DETAILS') { el.open = true; el.scrollIntoView({block: 'start'}); }
+  }
+
+  // --- Heat map: families x variants ---------------------------------------------------------------
+
+  // What a heat-map cell shows for one family x variant: the worst error relative to the error
+  // bound, or (a variant without a bound) the largest normalised error.
+  function cellValue(st) {
+    if (!st || typeof st !== 'object') return {kind: 'missing'};
+    if (isNum(st.cases) && isNum(st.skipped) && num(st.skipped) >= num(st.cases) && num(st.cases) > 0) return {kind: 'skipped'};
+    var hb = hist(st, 'bound_ratio');
+    if (hb && has(hb.max) && !isNaN(num(hb.max))) return {kind: 'bound', v: num(hb.max)};
+    var hn = hist(st, 'normalized');
+    if (hn && has(hn.max) && !isNaN(num(hn.max))) return {kind: 'norm', v: num(hn.max)};
+    return {kind: 'none'};
+  }
+
+  function mix(c0, c1, t) {
+    var a = parseInt(c0.slice(1), 16), b = parseInt(c1.slice(1), 16);
+    var r = [16, 8, 0].map(function (sh) { var x = (a >> sh) & 255, y = (b >> sh) & 255; return Math.round(x + (y - x) * t); });
+    return '#' + r.map(function (x) { return (x < 16 ? '0' : '') + x.toString(16); }).join('');
+  }
+
+  function ramp(stops, t) {
+    t = Math.max(0, Math.min(1, t));
+    var k = Math.min(stops.length - 2, Math.floor(t * (stops.length - 1)));
+    return mix(stops[k], stops[k + 1], t * (stops.length - 1) - k);
+  }
+
+  // Within the bound: pale (far below) to deep blue (at the bound), over 1e-4 .. 1. Beyond it: red.
+  var BOUND_RAMP = ['#ffffd9', '#c7e9b4', '#7fcdbb', '#41b6c4', '#1d91c0', '#225ea8', '#0c2c84'];
+  var BEYOND_RAMP = ['#f26b4f', '#c0392b', '#67000d'];
+  // Normalised error (variants without a bound): 0.1 .. 1e3 u·R, pale to deep purple.
+  var NORM_RAMP = ['#f6f3f9', '#d3cae6', '#9e8cc4', '#6a51a3', '#3f007d'];
+  var BOUND_DECADES = [-4, 0], BEYOND_DECADES = [0, 3], NORM_DECADES = [-1, 3];
+
+  function cellColor(c) {
+    if (c.kind === 'bound') {
+      if (!(c.v > 0)) return BOUND_RAMP[0];
+      if (!isFinite(c.v)) return BEYOND_RAMP[2];
+      var l = Math.log10(c.v);
+      if (c.v > 1) return ramp(BEYOND_RAMP, (l - BEYOND_DECADES[0]) / (BEYOND_DECADES[1] - BEYOND_DECADES[0]));
+      return ramp(BOUND_RAMP, (l - BOUND_DECADES[0]) / (BOUND_DECADES[1] - BOUND_DECADES[0]));
+    }
+    if (c.kind === 'norm') {
+      if (!(c.v > 0)) return NORM_RAMP[0];
+      if (!isFinite(c.v)) return NORM_RAMP[4];
+      return ramp(NORM_RAMP, (Math.log10(c.v) - NORM_DECADES[0]) / (NORM_DECADES[1] - NORM_DECADES[0]));
+    }
+    return '#ece9e3';
+  }
+
+  function darkColor(hex) {
+    var x = parseInt(hex.slice(1), 16);
+    return 0.299 * ((x >> 16) & 255) + 0.587 * ((x >> 8) & 255) + 0.114 * (x & 255) < 140;
+  }
+
+  // The width of a label in the page's font (a canvas measures it; an estimate without one).
+  var measureCtx = null;
+  function textWidth(s, px) {
+    if (measureCtx === null) {
+      var c = document.createElement('canvas');
+      measureCtx = c.getContext ? c.getContext('2d') || false : false;
+    }
+    if (!measureCtx) return String(s).length * px * 0.58;
+    measureCtx.font = px + 'px ' + getComputedStyle(document.body).fontFamily;
+    return measureCtx.measureText(String(s)).width;
+  }
+
+  function renderHeatmap(report) {
+    var fams = families(report), names = orderedVariants(report);
+    var wrap = h('figure', {class: 'overview-part heatmap-part'});
+    wrap.appendChild(h('figcaption', {class: 'part-title'}, 'Where is each variant weakest? ',
+      h('span', {class: 'muted small'}, 'worst error / bound per family; click a cell for the family\'s detail')));
+    if (!fams.length || !names.length) { wrap.appendChild(h('p', {class: 'note'}, 'No families or variants: nothing to map.')); return wrap; }
+    var nJudged = names.filter(isJudged).length, gap = nJudged && nJudged < names.length ? 8 : 0;
+    var cw = 24, ch = 16, labelW = 12 + Math.max.apply(null, fams.map(function (f) { return textWidth(f.name, 12); }).concat([60]));
+    var headH = 14 + Math.max.apply(null, names.map(function (n) { return textWidth(n, 11.5); })) * Math.sin(Math.PI / 3);
+    var x0 = labelW, y0 = headH, gridW = names.length * cw + gap, gridH = fams.length * ch;
+    // The rotated names lean right: room for the last ones beyond the grid.
+    var right = Math.max.apply(null, [12].concat(names.map(function (n, i) {
+      return i * cw + (i >= nJudged ? gap : 0) + cw / 2 + 4 + textWidth(n, 11.5) * Math.cos(Math.PI / 3) - gridW;
+    })));
+    var W = Math.ceil(x0 + gridW + right), H = Math.ceil(y0 + gridH + 30);
+    var svg = sv('svg', {id: 'heatmap', class: 'plot heatmap', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H, role: 'img',
+      'aria-label': 'families by variants, coloured by the worst error relative to the bound'});
+    function colX(i) { return x0 + i * cw + (i >= nJudged ? gap : 0); }
+    // Column heads: variant names, rotated, in the variant's colour dot.
+    names.forEach(function (n, i) {
+      var cx = colX(i) + cw / 2;
+      svg.appendChild(sv('g', {class: 'hm-head'},
+        sv('circle', {cx: cx, cy: y0 - 6, r: 4, fill: variantColor(n), stroke: 'rgba(0,0,0,.35)', 'stroke-width': 0.7, 'data-variant': n}),
+        sv('text', {x: cx + 2, y: y0 - 13, class: 'hm-col' + (isJudged(n) ? '' : ' comparison'), transform: 'rotate(-60 ' + (cx + 2) + ' ' + (y0 - 13) + ')'}, n)));
+    });
+    // Rows: one per family.
+    fams.forEach(function (f, r) {
+      var y = y0 + r * ch, fv = familyVariants(f);
+      var label = sv('text', {x: x0 - 8, y: y + ch / 2 + 4, class: 'hm-row' + (f.pass === false ? ' bad' : ''), 'text-anchor': 'end'}, String(f.name));
+      label.addEventListener('click', function () { openFamily(f.name); });
+      svg.appendChild(label);
+      names.forEach(function (n, i) {
+        var st = fv[n], c = cellValue(st), x = colX(i), fill = cellColor(c);
+        var fails = st && isNum(st.failures) ? num(st.failures) : 0, wrong = st ? wrongClass(st) : 0;
+        var und = st && isNum(st.undecidable) ? num(st.undecidable) : 0;
+        var tip = f.name + ' / ' + n + (isJudged(n) ? '' : ' (comparison, not judged)') + '\n' +
+          (c.kind === 'bound' ? 'worst error / bound ' + fmt(c.v) : c.kind === 'norm' ? 'largest error ' + fmt(c.v) + ' u·R (no bound)' :
+           c.kind === 'skipped' ? 'every case skipped' : c.kind === 'missing' ? 'not run in this family' : 'no error recorded') +
+          (st ? '\n' + plural(st.cases, 'case') + ', ' + plural(fails, 'failure') + ', ' + fmtInt(wrong) + ' misclassified' +
+            (und ? ', ' + fmtInt(und) + ' undecidable' : '') : '') + '\nclick: the family\'s detail';
+        var cell = sv('g', {class: 'hm-cell', 'data-family': String(f.name), 'data-variant': n, 'data-kind': c.kind,
+          'data-fail': fails > 0 ? '1' : null, 'data-wrong': wrong > 0 ? '1' : null}, svgTitle(tip));
+        cell.appendChild(sv('rect', {x: x + 0.5, y: y + 0.5, width: cw - 1, height: ch - 1, rx: 2, fill: fill,
+          stroke: fails > 0 && isJudged(n) ? '#c0392b' : 'none', 'stroke-width': fails > 0 && isJudged(n) ? 2 : 0}));
+        if (c.kind === 'missing' || c.kind === 'skipped' || c.kind === 'none') {
+          cell.appendChild(sv('text', {x: x + cw / 2, y: y + ch / 2 + 4, class: 'hm-glyph muted-glyph', 'text-anchor': 'middle'}, '–'));
+        }
+        if (fails > 0) {
+          cell.appendChild(sv('path', {d: 'M' + (x + 7) + ' ' + (y + 4.5) + 'l' + (cw - 14) + ' ' + (ch - 9) + 'm0 ' + (-(ch - 9)) + 'l' + (-(cw - 14)) + ' ' + (ch - 9),
+            stroke: darkColor(fill) ? '#ffffff' : '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}));
+        }
+        if (wrong > 0) cell.appendChild(sv('path', {d: 'M' + (x + cw - 8.5) + ' ' + (y + 1) + 'h7.5v7.5Z', fill: '#111'}));
+        cell.addEventListener('click', function () { openFamily(f.name, n); });
+        svg.appendChild(cell);
       });
     });
-    var W = 1120, H = 480, box = {x0: 84, y0: 20, x1: W - 200, y1: H - 70};
-    var svg = sv('svg', {id: 'scatter', class: 'plot', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H, role: 'img', 'aria-label': 'time per query against normalised error'});
-    if (!items.length) {
-      sec.appendChild(h('p', {class: 'note'}, 'No family × variant has both a timing and a normalised error: nothing to plot.'));
-      svg.setAttribute('data-points', '0');
-      return sec;
+    // Under the grid: which columns are judged and which are comparison variants.
+    function bracket(i0, i1, text) {
+      if (i1 < i0) return;
+      var a = colX(i0) + 1, b = colX(i1) + cw - 1, y = y0 + gridH + 6;
+      svg.appendChild(sv('path', {d: 'M' + a + ' ' + y + 'v4H' + b + 'v-4', fill: 'none', stroke: '#a39b8e'}));
+      svg.appendChild(sv('text', {x: (a + b) / 2, y: y + 17, class: 'legend-text small', 'text-anchor': 'middle'}, text));
     }
-    var xsVals = items.map(function (it) { return it.ns; });
-    var ysVals = [];
-    items.forEach(function (it) { [it.p99, it.max].forEach(function (v) { if (isFinite(v) && v > 0) ysVals.push(v); }); });
-    var xd = logDomain(Math.min.apply(null, xsVals), Math.max.apply(null, xsVals), 0.08);
+    if (gap) { bracket(0, nJudged - 1, 'judged'); bracket(nJudged, names.length - 1, 'comparison, not judged'); }
+    wrap.appendChild(h('div', {class: 'plot-wrap'}, svg));
+    wrap.appendChild(heatLegend(fams, names));
+    return wrap;
+  }
+
+  // Colour bars of the heat map's scales (the normalised one only when some cell uses it).
+  function heatLegend(fams, names) {
+    var kinds = {};
+    fams.forEach(function (f) { var fv = familyVariants(f); names.forEach(function (n) { kinds[cellValue(fv[n]).kind] = true; }); });
+    function bar(stops, decades, label, extra) {
+      var W = 150, x0 = 14, svg = sv('svg', {width: x0 + W + (extra ? 66 : 16), height: 30, class: 'legend-swatch'});
+      var n = 24;
+      for (var i = 0; i < n; ++i) svg.appendChild(sv('rect', {x: x0 + i * W / n, y: 2, width: W / n + 0.5, height: 10, fill: ramp(stops, (i + 0.5) / n)}));
+      if (extra) svg.appendChild(sv('rect', {x: x0 + W + 6, y: 2, width: 40, height: 10, fill: ramp(BEYOND_RAMP, 0.4)}));
+      for (var d = decades[0]; d <= decades[1]; ++d) {
+        var x = x0 + (d - decades[0]) / (decades[1] - decades[0]) * W;
+        svg.appendChild(sv('text', {x: x, y: 25, class: 'tick', 'text-anchor': 'middle', 'font-size': 10}, d === 0 ? '1' : '1e' + d));
+      }
+      if (extra) svg.appendChild(sv('text', {x: x0 + W + 26, y: 25, class: 'tick', 'text-anchor': 'middle', 'font-size': 10}, '> 1'));
+      return h('span', {class: 'legend-item'}, label, svg);
+    }
+    var glyph = function (d, fill, stroke) {
+      var s = sv('svg', {width: 22, height: 16, class: 'legend-swatch'}, sv('rect', {x: 1, y: 1, width: 20, height: 14, rx: 2, fill: fill || '#7fcdbb', stroke: stroke || 'none', 'stroke-width': 2}));
+      if (d) s.appendChild(sv('path', d));
+      return s;
+    };
+    return h('div', {class: 'legend heat-legend'},
+      kinds.bound ? bar(BOUND_RAMP, BOUND_DECADES, 'error / bound', true) : null,
+      kinds.norm ? bar(NORM_RAMP, NORM_DECADES, 'error / (u·R), no bound', false) : null,
+      h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures (red frame: judged)'),
+      h('span', {class: 'legend-item'}, glyph({d: 'M13.5 1h7.5v7.5Z', fill: '#111'}), 'false overlap or separation'),
+      h('span', {class: 'legend-item'}, glyph(null, '#ece9e3'), 'not run / skipped'));
+  }
+
+  // --- Speed against error --------------------------------------------------------------------------
+
+  var ALL_FAMILIES = '*';
+
+  // The plot's items: one per variant, on one family or (ALL_FAMILIES) as a range over every family.
+  function speedItems(report, family) {
+    var names = orderedVariants(report), fams = families(report), items = [];
+    names.forEach(function (n) {
+      var rows = [];
+      fams.forEach(function (f) {
+        if (family !== ALL_FAMILIES && String(f.name) !== family) return;
+        var st = familyVariants(f)[n];
+        if (!scatterEligible(st)) return;
+        var hn = hist(st, 'normalized');
+        rows.push({family: String(f.name), ns: num(st.ns_per_query), p99: num(hn.p99), max: num(hn.max), st: st});
+      });
+      if (!rows.length) return;
+      if (family !== ALL_FAMILIES) { rows[0].variant = n; items.push(rows[0]); return; }
+      var med = function (xs) { xs = xs.filter(isFinite).sort(function (a, b) { return a - b; }); return xs.length ? xs[(xs.length - 1) >> 1] : NaN; };
+      var worst = rows.reduce(function (w, r) { return !w || (isFinite(r.max) && !(r.max <= w.max)) ? r : w; }, null);
+      var nss = rows.map(function (r) { return r.ns; });
+      items.push({variant: n, family: rows.length + ' families', ns: med(nss), nsLo: Math.min.apply(null, nss), nsHi: Math.max.apply(null, nss),
+        p99: med(rows.map(function (r) { return r.p99; })), max: worst.max, worstFamily: worst.family,
+        fails: rows.filter(function (r) { return r.st.pass === false; }).length, st: {pass: rows.every(function (r) { return r.st.pass !== false; })}});
+    });
+    return items;
+  }
+
+  // The family the plot starts on: `random` when it has points, else the family with most cases.
+  function defaultSpeedFamily(report) {
+    var fams = families(report).filter(function (f) { return speedItems(report, String(f.name)).length > 0; });
+    if (!fams.length) return null;
+    var r = fams.filter(function (f) { return String(f.name) === 'random'; })[0];
+    if (r) return 'random';
+    return String(fams.slice().sort(function (a, b) { return (num(b.cases) || 0) - (num(a.cases) || 0); })[0].name);
+  }
+
+  function renderSpeed(report) {
+    var wrap = h('figure', {class: 'overview-part speed-part', id: 'speed'});
+    var fams = families(report).map(function (f) { return String(f.name); })
+      .filter(function (n) { return speedItems(report, n).length > 0; });
+    var holder = h('div', {class: 'plot-wrap'});
+    var first = defaultSpeedFamily(report);
+    var select = h('select', {class: 'speed-family', 'aria-label': 'family', onchange: function (e) { draw(e.target.value); }},
+      h('option', {value: ALL_FAMILIES}, 'all families: median and range per variant'),
+      fams.map(function (n) { return h('option', {value: n, selected: n === first}, n); }));
+    wrap.appendChild(h('figcaption', {class: 'part-title'}, 'What does accuracy cost in time? ', fams.length ? select : null));
+    wrap.appendChild(holder);
+    function draw(family) {
+      holder.textContent = '';
+      holder.appendChild(guarded('speed plot', function () { return speedPlot(report, family); }));
+      holder.setAttribute('data-family', family);
+    }
+    if (first === null) {
+      holder.appendChild(sv('svg', {id: 'scatter', class: 'plot', width: 10, height: 10, 'data-points': '0'}));
+      holder.appendChild(h('p', {class: 'note'}, 'No family × variant has both a timing and a normalised error: nothing to plot' +
+        (has(report.context && report.context.elapsed_s) && !(num(report.context.elapsed_s.timing) > 0) ? ' (the run was not timed).' : '.')));
+    } else draw(first);
+    wrap.appendChild(speedLegend(report));
+    return wrap;
+  }
+
+  function markerPath(x, y, r, judged) {
+    // Judged variants: circles; comparison variants: diamonds.
+    if (judged) return sv('circle', {cx: x, cy: y, r: r});
+    return sv('path', {d: 'M' + x + ' ' + (y - r * 1.25) + 'l' + r * 1.25 + ' ' + r * 1.25 + 'l' + (-r * 1.25) + ' ' + r * 1.25 + 'l' + (-r * 1.25) + ' ' + (-r * 1.25) + 'Z'});
+  }
+
+  function speedLegend(report) {
+    var names = orderedVariants(report);
+    function item(n) {
+      var s = sv('svg', {width: 16, height: 14, class: 'legend-swatch'});
+      var m = markerPath(8, 7, 5, isJudged(n));
+      setAttrs(m, {fill: variantColor(n), stroke: '#333', 'stroke-width': 0.8});
+      s.appendChild(m);
+      return h('span', {class: 'legend-item', 'data-variant': n}, s, n);
+    }
+    var judged = names.filter(isJudged), comp = names.filter(function (n) { return !isJudged(n); });
+    return h('div', {class: 'speed-legend'},
+      judged.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'judged'), judged.map(item)) : null,
+      comp.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'comparison'), comp.map(item)) : null,
+      h('div', {class: 'legend small'}, legendItem('#bbb', 'p99 error', 'circle'), legendItem('none', 'max error', 'triangle'),
+        legendItem('#bbb', 'fails (red ring)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
+  }
+
+  function speedPlot(report, family) {
+    var items = speedItems(report, family), all = family === ALL_FAMILIES;
+    var W = 600, H = 430, box = {x0: 74, y0: 12, x1: W - 14, y1: H - 52};
+    var svg = sv('svg', {id: 'scatter', class: 'plot', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H, role: 'img',
+      'aria-label': 'time per query against normalised error', 'data-points': String(items.length), 'data-family': family});
+    if (!items.length) {
+      svg.appendChild(sv('text', {x: W / 2, y: H / 2, class: 'note-text', 'text-anchor': 'middle'}, 'nothing to plot for this family'));
+      return svg;
+    }
+    var xsVals = [], ysVals = [];
+    items.forEach(function (it) {
+      xsVals.push(it.ns);
+      if (all) xsVals.push(it.nsLo, it.nsHi);
+      [it.p99, it.max].forEach(function (v) { if (isFinite(v) && v > 0) ysVals.push(v); });
+    });
+    var xd = logDomain(Math.min.apply(null, xsVals), Math.max.apply(null, xsVals), 0.06);
     var yd = ysVals.length ? logDomain(Math.min.apply(null, ysVals), Math.max.apply(null, ysVals), 0.3) : [0.1, 10];
     var zeroBand = items.some(function (it) { return !(it.p99 > 0) || !(it.max > 0); });
     var plotBox = {x0: box.x0, y0: box.y0, x1: box.x1, y1: zeroBand ? box.y1 - 26 : box.y1};
-    // The zero band goes under the plot, before the axes, so their labels stay on top.
     if (zeroBand) {
       svg.appendChild(sv('rect', {x: plotBox.x0, y: plotBox.y1 + 2, width: plotBox.x1 - plotBox.x0, height: 22, class: 'zero-band'}));
       svg.appendChild(sv('text', {x: plotBox.x0 - 6, y: plotBox.y1 + 17, class: 'tick', 'text-anchor': 'end'}, '0'));
     }
-    var xs = logScale(xd[0], xd[1], plotBox.x0 + 10, plotBox.x1 - 10);
-    var ys = logScale(yd[0], yd[1], plotBox.y1 - 6, plotBox.y0 + 6);
+    var xs = logScale(xd[0], xd[1], plotBox.x0 + 14, plotBox.x1 - 14);
+    var ys = logScale(yd[0], yd[1], plotBox.y1 - 8, plotBox.y0 + 8);
     var g = sv('g', {});
     svg.appendChild(g);
     drawAxes(g, plotBox, xs, ys, logTicks(xd[0], xd[1]), logTicks(yd[0], yd[1]),
-      'time per query  [ns, log scale]', 'normalised error  [u·R, log scale]', {xLabelY1: box.y1});
+      'time per query  [ns, log scale]' + (all ? ': median over families, bar: range' : ''),
+      'normalised error  [u·R, log]', {xLabelY1: box.y1});
     function yOf(v) { return v > 0 && isFinite(v) ? ys(v) : plotBox.y1 + 13; }
-    var showLabels = items.length <= 60;
-    var labels = sv('g', {class: 'pt-labels'});
-    // Family labels beside the markers, at the first of a few spots that overlaps no label or marker.
-    var taken = [];
+    var taken = [], labels = sv('g', {class: 'pt-labels'});
     items.forEach(function (it) {
       var x = xs(it.ns);
       [it.p99, it.max].forEach(function (v) { if (isFinite(v)) { var y = yOf(v); taken.push({x0: x - 8, x1: x + 8, y0: y - 8, y1: y + 8}); } });
     });
-    function overlaps(b) {
-      return taken.some(function (t) { return b.x0 < t.x1 && b.x1 > t.x0 && b.y0 < t.y1 && b.y1 > t.y0; });
+    function free(b) {
+      return b.x0 >= plotBox.x0 && b.x1 <= plotBox.x1 && b.y0 >= plotBox.y0 && b.y1 <= plotBox.y1 &&
+        !taken.some(function (t) { return b.x0 < t.x1 && b.x1 > t.x0 && b.y0 < t.y1 && b.y1 > t.y0; });
     }
-    function placeLabel(textS, x, yp, ym) {
-      var w = 5.9 * textS.length + 2, hgt = 13;
-      var ys2 = [ym, yp].filter(function (y) { return y !== null; });
-      var spots = [];
-      ys2.forEach(function (y) {
-        spots.push([x + 10, y - 4], [x + 10, y + 14], [x - 10 - w, y - 4], [x - 10 - w, y + 14], [x + 10, y - 16], [x - w / 2, y - 14], [x - w / 2, y + 24]);
-      });
-      var best = null;
+    // A variant label at the first free spot beside its p99 marker; none when every spot is taken
+    // (the legend and the marker's hover text name it then).
+    function placeLabel(name, x, y) {
+      var w = textWidth(name, 11) + 2, hgt = 12;
+      var spots = [[x + 10, y + 4], [x - 10 - w, y + 4], [x + 9, y - 8], [x - 9 - w, y - 8], [x + 9, y + 16], [x - 9 - w, y + 16], [x - w / 2, y - 12], [x - w / 2, y + 22]];
       for (var i = 0; i < spots.length; ++i) {
         var b = {x0: spots[i][0], x1: spots[i][0] + w, y0: spots[i][1] - hgt + 2, y1: spots[i][1] + 2};
-        if (b.x0 >= plotBox.x0 && b.x1 <= plotBox.x1 && b.y0 >= plotBox.y0 && b.y1 <= plotBox.y1 + (zeroBand ? 24 : 0) && !overlaps(b)) { best = spots[i]; break; }
+        if (!free(b)) continue;
+        taken.push(b);
+        labels.appendChild(sv('text', {x: spots[i][0], y: spots[i][1], class: 'pt-label', fill: '#3d3932'}, name));
+        return;
       }
-      // In a crowd, a label that fits nowhere is left out (the marker's hover title still names it).
-      if (!best) { if (items.length > 12) return; best = spots[0]; }
-      taken.push({x0: best[0], x1: best[0] + w, y0: best[1] - hgt + 2, y1: best[1] + 2});
-      var left = best[0] + w <= x - 8;
-      labels.appendChild(sv('text', {x: left ? best[0] + w : best[0], y: best[1], class: 'pt-label', 'text-anchor': left ? 'end' : 'start'}, textS));
     }
     var pointsG = sv('g', {});
-    items.forEach(function (it) {
-      var c = variantColor(it.variant), x = xs(it.ns);
-      var tip = it.family + ' / ' + it.variant + '\n' + fmt(it.ns) + ' ns per query\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
-        (it.st.pass === false ? (isJudged(it.variant) ? '\nFAIL (' : '\nfails, not judged (') + fmtInt(it.st.failures) + ' failures)' : '');
-      var pg = sv('g', {class: 'pt', 'data-family': it.family, 'data-variant': it.variant}, svgTitle(tip));
+    // Comparison variants under the judged ones.
+    items.slice().reverse().forEach(function (it) {
+      var c = variantColor(it.variant), x = xs(it.ns), judged = isJudged(it.variant), failing = it.st.pass === false;
+      var tip = (all ? 'all families' : it.family) + ' / ' + it.variant + (judged ? '' : ' (comparison, not judged)') + '\n' +
+        (all ? fmt(it.ns) + ' ns per query (median over ' + it.family + '; ' + fmt(it.nsLo) + ' – ' + fmt(it.nsHi) + ')\nnormalised error: median p99 ' + fmt(it.p99) + ', worst max ' + fmt(it.max) + ' (' + it.worstFamily + ')' +
+          (it.fails ? '\nfails in ' + plural(it.fails, 'family', 'families') : '')
+        : fmt(it.ns) + ' ns per query' + (has(it.st.ratio_to_baseline) ? ' (' + fmt(it.st.ratio_to_baseline) + '× baseline)' : '') +
+          '\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
+          (failing ? (judged ? '\nFAIL (' : '\nfails, not judged (') + plural(it.st.failures, 'failure') + ')' : ''));
+      var pg = sv('g', {class: 'pt' + (judged ? ' judged' : ' comparison'), 'data-variant': it.variant, 'data-family': all ? ALL_FAMILIES : it.family}, svgTitle(tip));
       var yp = isFinite(it.p99) ? yOf(it.p99) : null, ym = isFinite(it.max) ? yOf(it.max) : null;
-      if (yp !== null && ym !== null) pg.appendChild(sv('line', {x1: x, x2: x, y1: yp, y2: ym, stroke: c, 'stroke-width': 1.5, opacity: 0.6}));
-      if (yp !== null) pg.appendChild(sv('circle', {cx: x, cy: yp, r: 6, fill: c, stroke: it.st.pass === false ? '#c0392b' : '#333', 'stroke-width': it.st.pass === false ? 2.5 : 0.8, class: 'mk-p99'}));
-      if (ym !== null) pg.appendChild(sv('path', {d: 'M' + x + ' ' + (ym - 7) + ' l6.5 11 l-13 0 Z', fill: 'white', stroke: c, 'stroke-width': 2, class: 'mk-max'}));
+      if (all) pg.appendChild(sv('line', {x1: xs(it.nsLo), x2: xs(it.nsHi), y1: yp === null ? ym : yp, y2: yp === null ? ym : yp, stroke: c, 'stroke-width': 2.5, opacity: 0.55}));
+      if (yp !== null && ym !== null) pg.appendChild(sv('line', {x1: x, x2: x, y1: yp, y2: ym, stroke: c, 'stroke-width': 1.5, opacity: 0.7}));
+      if (ym !== null) pg.appendChild(sv('path', {d: 'M' + x + ' ' + (ym - 6) + ' l5.5 9.5 l-11 0 Z', fill: 'white', stroke: c, 'stroke-width': 2, class: 'mk-max'}));
+      if (yp !== null) {
+        var m = markerPath(x, yp, judged ? 6 : 5.5, judged);
+        setAttrs(m, {fill: c, stroke: failing ? '#c0392b' : '#333', 'stroke-width': failing ? 2.5 : 0.8, class: 'mk-p99'});
+        pg.appendChild(m);
+      }
       pointsG.appendChild(pg);
-      if (showLabels) placeLabel(it.family, x, yp, ym);
     });
     g.appendChild(pointsG);
+    items.forEach(function (it) { if (isFinite(it.p99)) placeLabel(it.variant, xs(it.ns), yOf(it.p99)); });
     g.appendChild(labels);
-    // Legend, right of the plot.
-    var lx = box.x1 + 20, ly = box.y0 + 10;
-    var lg = sv('g', {class: 'legend'});
-    lg.appendChild(sv('text', {x: lx, y: ly, class: 'legend-title'}, 'Variant'));
-    var vnames = [];
-    items.forEach(function (it) { if (vnames.indexOf(it.variant) < 0) vnames.push(it.variant); });
-    vnames.forEach(function (vn, i) {
-      var y = ly + 20 + i * 20;
-      lg.appendChild(sv('circle', {cx: lx + 7, cy: y - 4, r: 6, fill: variantColor(vn), stroke: '#333', 'stroke-width': 0.8}));
-      lg.appendChild(sv('text', {x: lx + 20, y: y, class: 'legend-text'}, vn));
-    });
-    var ly2 = ly + 20 + vnames.length * 20 + 14;
-    lg.appendChild(sv('text', {x: lx, y: ly2, class: 'legend-title'}, 'Marker'));
-    lg.appendChild(sv('circle', {cx: lx + 7, cy: ly2 + 16, r: 6, fill: '#bbb', stroke: '#333', 'stroke-width': 0.8}));
-    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 20, class: 'legend-text'}, 'p99 error'));
-    lg.appendChild(sv('path', {d: 'M' + (lx + 7) + ' ' + (ly2 + 29) + ' l6.5 11 l-13 0 Z', fill: 'white', stroke: '#555', 'stroke-width': 2}));
-    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 40, class: 'legend-text'}, 'max error'));
-    lg.appendChild(sv('circle', {cx: lx + 7, cy: ly2 + 56, r: 6, fill: '#bbb', stroke: '#c0392b', 'stroke-width': 2.5}));
-    lg.appendChild(sv('text', {x: lx + 20, y: ly2 + 60, class: 'legend-text'}, 'fails its bound'));
-    if (zeroBand) lg.appendChild(sv('text', {x: lx, y: ly2 + 84, class: 'legend-text small'}, 'bottom band: error 0'));
-    svg.appendChild(lg);
-    svg.setAttribute('data-points', String(items.length));
-    var toggle = showLabels ? h('label', {class: 'inline-check'}, h('input', {type: 'checkbox', checked: true, onchange: function (e) {
-      labels.style.display = e.target.checked ? '' : 'none';
-    }}), ' family labels') : null;
-    append(sec, [h('div', {class: 'plot-wrap'}, svg), toggle]);
+    return svg;
+  }
+
+  function renderOverview(report) {
+    var sec = section('overview', 'Overview');
+    append(sec, [h('div', {class: 'overview-grid'},
+      guarded('heat map', function () { return renderHeatmap(report); }),
+      guarded('speed against error', function () { return renderSpeed(report); }))]);
     return sec;
+  }
+
+  // --- Families: the detail, one folded block each ----------------------------------------------------
+
+  // One row per variant of the family, judged first; the table fits the page width (no family column,
+  // breakdowns in the cell's hover text).
+  function familyTable(f, report) {
+    var names = orderedVariants(report), fv = familyVariants(f);
+    var hasBound = names.some(function (n) { return hist(fv[n], 'bound_ratio'); });
+    var head1 = h('tr', {},
+      h('th', {rowspan: 2}, 'Variant'), h('th', {rowspan: 2, class: 'num'}, 'Cases'),
+      h('th', {rowspan: 2, class: 'num', title: 'false overlap + false separation + undecidable'}, 'Mis\u00adclass.'),
+      h('th', {rowspan: 2, class: 'num'}, 'Fail\u00adures'),
+      h('th', {colspan: 2, class: 'grp'}, 'Absolute error'), h('th', {colspan: 2, class: 'grp'}, 'Error [ulps]'),
+      h('th', {colspan: 2, class: 'grp'}, 'Error / (u·R)'),
+      hasBound ? h('th', {class: 'grp'}, 'Error / bound') : null,
+      h('th', {colspan: 2, class: 'grp'}, 'Iterations'),
+      h('th', {rowspan: 2, class: 'num', title: 'median time per query; below it, the ratio to the baseline variant'}, 'ns / query'),
+      h('th', {rowspan: 2}, 'Result'));
+    var head2 = h('tr', {}, ['max', 'p99', 'max', 'p99', 'max', 'p99'].concat(hasBound ? ['max'] : [], ['mean', 'max']).map(function (t) { return h('th', {class: 'num sub'}, t); }));
+    var ncol = hasBound ? 15 : 14;
+    var body = h('tbody', {});
+    var present = names.filter(function (n) { return n in fv; }), missing = names.filter(function (n) { return !(n in fv); });
+    var startedComparison = false;
+    present.forEach(function (vn) {
+      var st = fv[vn] || {};
+      if (!isJudged(vn) && !startedComparison) {
+        startedComparison = true;
+        body.appendChild(h('tr', {class: 'group-row'}, h('td', {colspan: ncol}, 'Comparison variants: reported, not judged')));
+      }
+      function detail(keys) {
+        return keys.filter(function (k) { return num(st[k]) > 0; }).map(function (k) { return fmtInt(st[k]) + ' ' + k.replace(/_/g, ' '); });
+      }
+      var mis = misclassified(st);
+      var misDetail = detail(['false_overlap', 'false_separation', 'undecidable']);
+      var failDetail = detail(['nonfinite', 'out_of_range', 'iteration_limit']);
+      var rate = has(st.failure_rate_upper95) && isNum(st.failure_rate_upper95) ? 'failure rate < ' + fmt(st.failure_rate_upper95) + ' (upper 95 % bound)' : null;
+      var ha = hist(st, 'abs'), hu = hist(st, 'ulps'), hn = hist(st, 'normalized'), hb = hist(st, 'bound_ratio');
+      var it = st.iterations || {};
+      var spread = Array.isArray(st.ns_spread) ? 'spread ' + fmt(st.ns_spread[0]) + ' – ' + fmt(st.ns_spread[1]) + ' ns' : null;
+      var skipped = num(st.skipped) > 0 ? fmtInt(st.skipped) + ' skipped' + (num(st.not_applicable) > 0 ? ' (' + fmtInt(st.not_applicable) + ' not applicable)' : '') : null;
+      body.appendChild(h('tr', {'data-variant': vn, class: isJudged(vn) ? 'judged-row' : 'comparison-row'},
+        h('td', {class: 'variant-cell'}, variantDot(vn), vn),
+        h('td', {class: 'num', title: skipped}, fmtInt(st.cases), skipped ? h('div', {class: 'small muted'}, fmtInt(st.skipped) + ' skipped') : null),
+        // Undecidable (within the error bound of the truth) is not a failure: red only for the rest.
+        h('td', {class: 'num' + (wrongClass(st) > 0 ? ' bad' : ''), title: misDetail.join(', ') || null}, fmtInt(mis),
+          wrongClass(st) > 0 || num(st.undecidable) > 0 ? h('div', {class: 'small'}, misDetail.join(', ')) : null),
+        h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: [rate].concat(failDetail).filter(Boolean).join(', ') || null},
+          fmtInt(st.failures), failDetail.length ? h('div', {class: 'small'}, failDetail.join(', ')) : null),
+        h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
+        h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
+        h('td', {class: 'num'}, fmt(hn && hn.max)), h('td', {class: 'num'}, fmt(hn && hn.p99)),
+        hasBound ? h('td', {class: 'num' + (hb && num(hb.max) > 1 ? ' bad' : '')}, fmt(hb && hb.max)) : null,
+        h('td', {class: 'num'}, fmt(it.mean)), h('td', {class: 'num'}, fmtInt(it.max)),
+        h('td', {class: 'num', title: spread}, has(st.ns_per_query) ? fmt(st.ns_per_query) : '—',
+          has(st.ratio_to_baseline) && vn !== report.baseline_variant ? h('div', {class: 'small muted'}, fmt(st.ratio_to_baseline) + '×') : null),
+        h('td', {}, passBadge(st.pass, vn))));
+    });
+    if (missing.length) {
+      body.appendChild(h('tr', {class: 'missing-row'}, h('td', {colspan: ncol, class: 'muted small'}, 'not run in this family: ' + missing.join(', '))));
+    }
+    return h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
   }
 
   // --- Families: histograms -------------------------------------------------------------------------
@@ -773,7 +1075,7 @@
         bar.appendChild(h('span', {class: 'stop-seg', style: 'width:' + (100 * frac) + '%;background:' + STOP_COLORS[i % STOP_COLORS.length],
           title: n + ': ' + k + ' ' + fmtInt(c) + ' (' + pct(frac) + ')'}, frac > 0.12 ? pct(frac) : ''));
       });
-      wrap.appendChild(h('div', {class: 'stop-row'}, h('span', {class: 'stop-name'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n), bar));
+      wrap.appendChild(h('div', {class: 'stop-row'}, h('span', {class: 'stop-name'}, variantDot(n), n), bar));
     });
     wrap.appendChild(h('div', {class: 'legend'}, reasons.map(function (k, i) { return legendItem(STOP_COLORS[i % STOP_COLORS.length], k); })));
     return wrap;
@@ -781,22 +1083,41 @@
 
   function renderFamilies(report) {
     var sec = section('families', 'Families',
-      'Error histograms use the report\'s log10 bins (exact zeros in the grey band on the left); dashed lines mark p99, triangles the maximum. Choose the error measure above each histogram.');
-    var names = variantNames(report);
+      'One folded block per family: click a family (or a heat-map cell) to open it. Inside: the make-up checks, a row per variant (judged variants first; errors are |d_gjk − d_exact|, absolute, in ulps of the exact distance and normalised by u·R, u the type\'s unit roundoff and R the largest coordinate of A − B in the compute frame; p99 is read from the histogram bins, upper edge; misclassified: false overlap, false separation or undecidable, the last not a failure), the error histogram (choose the measure; exact zeros in the grey band on the left, dashed lines at p99, triangles at the maximum), iterations and stop reasons.');
     var fams = families(report);
-    if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'No families.')); return sec; }
+    if (!fams.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no families.')); return sec; }
+    var blocks = [];
+    function openAll(open) { blocks.forEach(function (d) { d.open = open; }); }
+    sec.appendChild(h('p', {class: 'small family-tools'},
+      h('button', {type: 'button', class: 'open-all', onclick: function () { openAll(true); }}, 'open all'), ' ',
+      h('button', {type: 'button', class: 'close-all', onclick: function () { openAll(false); }}, 'close all')));
     fams.forEach(function (f) {
-      sec.appendChild(guarded('family ' + f.name, function () { return renderFamily(f, names); }));
+      var block = guarded('family ' + f.name, function () { return renderFamily(f, report); });
+      if (block.tagName === 'DETAILS') blocks.push(block);
+      sec.appendChild(block);
     });
     return sec;
   }
 
-  function renderFamily(f, names) {
+  function renderFamily(f, report) {
+    var names = orderedVariants(report);
     var fv = familyVariants(f);
     var present = names.filter(function (n) { return n in fv; });
-    var card = h('div', {class: 'family', id: 'family-' + slug(f.name)});
-    card.appendChild(h('h3', {}, String(f.name), h('span', {class: 'muted small'}, '  ' + fmtInt(f.cases) + ' cases'),
-      present.map(function (n) { return h('span', {class: 'fam-variant'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n, ' ', passBadge(fv[n] && fv[n].pass, n)); })));
+    var judgedFails = 0, compFails = 0, wrong = 0;
+    present.forEach(function (n) {
+      var x = isNum(fv[n] && fv[n].failures) ? num(fv[n].failures) : 0;
+      if (isJudged(n)) judgedFails += x; else compFails += x;
+      wrong += wrongClass(fv[n] || {});
+    });
+    var makeupBad = Array.isArray(f.makeup) && f.makeup.some(function (m) { return m && m.ok === false; });
+    var card = h('details', {class: 'family', id: 'family-' + slug(f.name), 'data-family': String(f.name)});
+    card.appendChild(h('summary', {}, h('h3', {}, String(f.name),
+      h('span', {class: 'muted small'}, fmtInt(f.cases) + ' cases'),
+      passBadge(f.pass),
+      judgedFails ? h('span', {class: 'bad small'}, plural(judgedFails, 'failure')) : null,
+      compFails ? h('span', {class: 'small muted'}, plural(compFails, 'failure') + ' in comparison variants') : null,
+      wrong ? h('span', {class: 'small muted'}, fmtInt(wrong) + ' misclassified') : null,
+      makeupBad ? h('span', {class: 'bad small'}, 'make-up check failed') : null)));
     if (Array.isArray(f.makeup) && f.makeup.length) {
       card.appendChild(h('div', {class: 'makeup'}, h('span', {class: 'muted small'}, 'Makeup: '), f.makeup.map(function (m) {
         m = m || {};
@@ -804,6 +1125,7 @@
           (has(m.min) || has(m.max) ? ' (in [' + fmt(m.min) + ', ' + fmt(m.max) + '])' : ''));
       })));
     }
+    card.appendChild(familyTable(f, report));
     var metrics = METRICS.filter(function (m) { return present.some(function (n) { return hist(fv[n], m.key); }); });
     var histHolder = h('div', {class: 'hist-holder'});
     var current = metrics.length ? metrics[0] : METRICS[0];
@@ -819,8 +1141,13 @@
       h('div', {class: 'plot-box'}, h('div', {class: 'plot-title'}, 'Error distribution ', metrics.length ? select : null), histHolder, legend),
       h('div', {class: 'plot-box'}, h('div', {class: 'plot-title'}, 'Iterations'), iterationHistogram(f, present),
         h('div', {class: 'plot-title'}, 'Stop reasons'), stopReasons(f, present))));
+    var worst = Array.isArray(report.worst) ? report.worst.filter(function (w) { return w && String(w.family) === String(f.name); })[0] : null;
+    if (worst) card.appendChild(h('p', {class: 'small'}, 'The family\'s worst case, ', h('code', {}, String(worst.name)), ', is drawn under ',
+      h('a', {href: '#' + viewerAnchor(worst)}, 'Worst cases'), '.'));
     return card;
   }
+
+  function viewerAnchor(w) { return 'worst-' + slug(w.name || ''); }
 
   function renderWorst(report) {
     var sec = section('worst', 'Worst cases',
@@ -828,7 +1155,7 @@
     var worst = Array.isArray(report.worst) ? report.worst.filter(function (w) { return w && typeof w === 'object'; }) : [];
     if (!worst.length) { sec.appendChild(h('p', {class: 'note'}, 'This report has no worst cases.')); return sec; }
     worst.forEach(function (w, i) {
-      sec.appendChild(guarded('worst case ' + (w.name || i), function () { return new Viewer(w, report).root; }));
+      sec.appendChild(h('div', {id: viewerAnchor(w)}, guarded('worst case ' + (w.name || i), function () { return new Viewer(w, report).root; })));
     });
     return sec;
   }
@@ -1499,7 +1826,7 @@
             h('td', {class: 'small muted'}, ex.overlap === true ? 'overlap' : ex.overlap === false ? 'separated' : '')),
           names.map(function (n) {
             var r = vmap[n] || {}, e = r.errors || {};
-            return h('tr', {}, h('td', {class: 'nowrap'}, h('span', {class: 'dot', style: 'background:' + variantColor(n)}), n),
+            return h('tr', {}, h('td', {class: 'nowrap'}, variantDot(n), n),
               h('td', {class: 'num mono'}, fmtFull(r.distance)), h('td', {class: 'num'}, fmt(e.abs)), h('td', {class: 'num'}, fmt(e.ulps)),
               h('td', {class: 'num'}, fmt(e.normalized)), hasBound ? h('td', {class: 'num' + (num(e.bound_ratio) > 1 ? ' bad' : '')}, fmt(e.bound_ratio)) : null,
               h('td', {class: 'num'}, fmtInt(r.iterations)), h('td', {class: 'small'}, has(r.stop) ? String(r.stop) : '—'),
@@ -1534,7 +1861,6 @@
 
   function renderReportPage(app, report) {
     if (!report || typeof report !== 'object') throw new Error('the report data is not a JSON object');
-    variantNames(report).forEach(variantColor);
     readJudged(report);
     document.title = 'GJK report — ' + (report.passed === true ? 'PASS' : report.passed === false ? 'FAIL' : 'no verdict') +
       (report.context && report.context.date ? ' — ' + report.context.date : '');
@@ -1544,16 +1870,19 @@
     }
     var main = h('main', {});
     app.appendChild(main);
-    [['context', renderContext], ['summary', renderSummary], ['speed against error', renderScatter], ['worst cases', renderWorst],
-     ['families', renderFamilies], ['rejected', renderRejected]].forEach(function (x) {
+    // The first screen answers: did anything fail (header), where is each variant weakest (heat map),
+    // what does its accuracy cost in time (speed plot). The detail follows, folded.
+    [['overview', renderOverview], ['families', renderFamilies], ['context', renderContext], ['worst cases', renderWorst],
+     ['rejected', renderRejected]].forEach(function (x) {
       main.appendChild(guarded(x[0], function () { return x[1](report); }));
     });
+    window.addEventListener('hashchange', openFromHash);
+    if (location.hash.indexOf('#family-') === 0) openFromHash();
     app.appendChild(h('footer', {}, 'Rendered by gjk2d_html from report.json (schema ' + (has(report.schema) ? report.schema : 'unknown') + '). Self-contained: no network, no external files.'));
   }
 
   function renderCasePage(app, detail) {
     if (!detail || typeof detail !== 'object') throw new Error('the case data is not a JSON object');
-    Object.keys(detail.variants || {}).forEach(variantColor);
     document.title = 'GJK case — ' + (has(detail.name) ? detail.name : 'unnamed');
     app.appendChild(h('header', {class: 'page-head'}, h('div', {class: 'title-row'}, h('div', {},
       h('h1', {}, 'GJK iteration viewer'),
@@ -1573,12 +1902,35 @@
     function check(name, ok, detail) { v.checks[name] = {ok: !!ok, detail: detail}; }
     try {
       if (mode === 'report') {
-        var expected = 0;
-        families(data).forEach(function (f) { var fv = familyVariants(f); Object.keys(fv).forEach(function (n) { if (scatterEligible(fv[n])) ++expected; }); });
-        var got = document.querySelectorAll('#scatter .pt').length;
-        v.scatterPoints = got;
-        v.scatterExpected = expected;
-        check('scatter points', got === expected, got + ' drawn, ' + expected + ' expected');
+        // The speed plot: one point per variant with a timing and an error in the chosen family,
+        // on every family of the selector and on the all-families view; then back to the start.
+        var sel = document.querySelector('select.speed-family');
+        var start = sel ? sel.value : null;
+        v.scatterStart = start;
+        v.scatterPoints = document.querySelectorAll('#scatter .pt').length;
+        v.scatterExpected = start === null ? 0 : speedItems(data, start).length;
+        check('scatter points', v.scatterPoints === v.scatterExpected, v.scatterPoints + ' drawn, ' + v.scatterExpected + ' expected');
+        var bad = [];
+        if (sel) {
+          for (var si = 0; si < sel.options.length; ++si) {
+            sel.selectedIndex = si; sel.dispatchEvent(new Event('change'));
+            var want = speedItems(data, sel.value).length, got = document.querySelectorAll('#scatter .pt').length;
+            if (got !== want || want === 0) bad.push(sel.value + ': ' + got + ' drawn, ' + want + ' expected');
+          }
+          sel.value = start; sel.dispatchEvent(new Event('change'));
+        }
+        check('scatter points on every family', bad.length === 0, bad.join('; ') || (sel ? sel.options.length + ' views' : 'no selector'));
+        // The heat map: a cell per family x variant, and a click opens the family's detail.
+        var nVar = orderedVariants(data).length;
+        v.heatCells = document.querySelectorAll('#heatmap .hm-cell').length;
+        check('heat map cells', v.heatCells === families(data).length * nVar, v.heatCells + ' cells for ' + families(data).length + ' families x ' + nVar + ' variants');
+        var cell = document.querySelector('#heatmap .hm-cell');
+        if (cell) {
+          var fam = document.getElementById('family-' + slug(cell.getAttribute('data-family')));
+          cell.dispatchEvent(new MouseEvent('click', {bubbles: true}));
+          check('heat map click opens the family', fam && fam.open === true, fam ? 'open: ' + fam.open : 'no family block');
+          if (fam) fam.open = false;
+        }
         v.families = families(data).map(function (f) { return String(f.name); });
         v.familyCards = document.querySelectorAll('.family').length;
         check('family cards', v.familyCards === v.families.length, v.familyCards + ' cards');
