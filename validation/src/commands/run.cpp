@@ -25,7 +25,7 @@ struct RunOptions
     std::string variants = kDefaultVariants, outDir = "reports/latest/", route = "default",
                 seed = "1";
     std::size_t chunkCases = kDefaultChunkCases;
-    bool noProgress = false, noTiming = false;
+    bool noProgress = false, noTiming = false, verbose = false;
 };
 
 // Every argument is checked here, before any work starts (InputError: exit code 2).
@@ -82,6 +82,8 @@ int runCommand(RunOptions& o, const CommandLine& line)
                                           excerpt(out.dir().string()), std::strerror(errno)));
     }
     const std::string page = writeCampaign(camp, out);
+    if (o.verbose)
+        std::fputs(terminalTable(camp.report).c_str(), stdout);
     std::fputs(terminalSummary(camp.report).c_str(), stdout);
     std::printf("report: %s\n", page.c_str());
     flushStdout();
@@ -132,6 +134,9 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
                     "cases evaluated together, 1..1e6: memory follows it, the report does not")
         ->capture_default_str();
     run->add_flag("--no-timing", o->noTiming, "skip the timed passes (ns_per_query is null)");
+    run->add_flag("--verbose", o->verbose,
+                  "also print every family x variant to the terminal (the summary lists only "
+                  "those that failed or misclassified; report.md has the full table)");
     run->add_flag("--no-progress", o->noProgress,
                   "no progress bar (it is shown only when stderr is a terminal)");
     return {run, [o, line] { return runCommand(*o, line); }};

@@ -208,7 +208,7 @@ std::string renderMarkdown(const Json& r)
     return s;
 }
 
-std::string terminalSummary(const Json& r)
+std::string terminalTable(const Json& r)
 {
     std::string s;
     const auto judged = judgedMap(r);
@@ -244,13 +244,73 @@ std::string terminalSummary(const Json& r)
                                  "{})\n",
                                  "", oor, skipped, skipped - na, na);
         }
+    }
+    return s;
+}
+
+namespace
+{
+std::uint64_t count(const Json& st, const char* key)
+{
+    return st.contains(key) && st[key].is_number() ? st[key].get<std::uint64_t>() : 0;
+}
+
+// One line for a family x variant that failed or gave a wrong overlap answer: what and how much.
+std::string problemLine(const std::string& family, const std::string& name, const Json& st,
+                        bool judgedVariant)
+{
+    const std::uint64_t fails = count(st, "failures");
+    std::string what = fails == 0 ? "misclassified"
+                                   : (judgedVariant ? "FAIL" : "fails (not judged)");
+    std::string detail = fmt::format("{} failure(s)", fails);
+    for (const auto& [key, label] :
+         {std::pair{"false_overlap", "false overlap"}, std::pair{"false_separation", "false separation"},
+          std::pair{"nonfinite", "non-finite"}, std::pair{"iteration_limit", "iteration limit"}})
+        if (count(st, key) > 0)
+            detail += fmt::format(", {} {}", count(st, key), label);
+    const Json& e = st["errors"];
+    if (e.contains("bound_ratio"))
+        detail += ", max error/bound " + g(e["bound_ratio"]["max"]);
+    else
+        detail += ", max norm " + g(e["normalized"]["max"]);
+    std::string fam = family.size() > 28 ? family.substr(0, 25) + "..." : family;
+    return fmt::format("  {:<28} {:<21} {:<19} {}\n", fam, name, what, detail);
+}
+} // namespace
+
+std::string terminalSummary(const Json& r)
+{
+    std::string s;
+    const auto judged = judgedMap(r);
+    std::size_t pairs = 0, judgedCount = 0;
+    std::string problems;
+    for (const auto& f : r["families"])
+    {
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            ++pairs;
+            if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
+                count(st, "false_separation") > 0)
+                problems += problemLine(f["name"].get<std::string>(), name, st, isJudged(judged, name));
+        }
         for (const auto& m : f["makeup"])
             if (!m["ok"].get<bool>())
-                s += fmt::format("  make-up check failed: {} = {} not in [{}, {}]\n",
-                                 m["check"].get<std::string>(), g(m["value"]), g(m["min"]),
-                                 g(m["max"]));
+                problems += fmt::format("  {:<28} make-up check failed: {} = {} not in [{}, {}]\n",
+                                        f["name"].get<std::string>(), m["check"].get<std::string>(),
+                                        g(m["value"]), g(m["min"]), g(m["max"]));
     }
+    for (const auto& v : r["variants"])
+        judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
     const Json& c = r["context"];
+    s += fmt::format("{} cases ({} rejected), {} families, {} variants ({} judged, {} comparison)\n",
+                     u(c["cases_total"]), u(c["cases_rejected"]), r["families"].size(),
+                     r["variants"].size(), judgedCount, r["variants"].size() - judgedCount);
+    if (problems.empty())
+        s += "no family x variant failed or answered overlap wrongly\n";
+    else
+        s += fmt::format("failed or misclassified (false overlap or separation), family x variant "
+                         "({} pairs in all; --verbose or report.md for the full table):\n{}",
+                         pairs, problems);
     if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
         s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
                          u(c["cases_rejected"]));
@@ -273,6 +333,29 @@ std::string terminalSummary(const Json& r)
                      resultText(r), comparisonFailures(r, judged));
     return s;
 }
+
+namespace
+{
+// What made a run fail: the judged variants' failures (cases, summed over families and variants)
+// and the families whose make-up checks failed.
+std::string failureCauses(const Json& r)
+{
+    const auto judged = judgedMap(r);
+    std::uint64_t failures = 0, makeup = 0;
+    for (const auto& f : r["families"])
+    {
+        for (const auto& [name, st] : f["variants"].items())
+            if (isJudged(judged, name))
+                failures += st["failures"].get<std::uint64_t>();
+        makeup += f.contains("makeup_ok") && !f["makeup_ok"].get<bool>() ? 1 : 0;
+    }
+    std::string s = failures > 0 ? fmt::format("{} judged variant failure(s)", failures) : "";
+    if (makeup > 0)
+        s += fmt::format("{}make-up checks of {} family(ies) failed", s.empty() ? "" : "; ",
+                         makeup);
+    return s.empty() ? "no judged variant failure and no failed make-up check in the report" : s;
+}
+} // namespace
 
 std::string resultText(const Json& r)
 {

@@ -9,7 +9,11 @@ namespace gjkval
 {
 
 std::string renderMarkdown(const Json& report);
+// The run's summary for the terminal: totals, one line per family x variant that failed or answered
+// overlap wrongly (false overlap or separation), failed make-up checks, rejected cases, throughput
+// and the result. terminalTable: every family x variant (gjk-validate run --verbose).
 std::string terminalSummary(const Json& report);
+std::string terminalTable(const Json& report);
 
 // The result in words, from report.json's exit_code: "PASS (exit code 0)", "FAIL (exit code 1,
 // from the judged variants)", "INPUT ERROR (exit code 2): 3 case(s) rejected, none judged".
