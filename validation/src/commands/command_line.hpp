@@ -54,6 +54,7 @@ Subcommand addExplain(CLI::App& app, const CommandLine& line);
 Subcommand addBench(CLI::App& app, const CommandLine& line);
 Subcommand addSearch(CLI::App& app, const CommandLine& line);
 Subcommand addList(CLI::App& app, const CommandLine& line);
+Subcommand addCompare(CLI::App& app, const CommandLine& line);
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.

@@ -5,6 +5,7 @@
 //   bench     time the variants on given cases (no exact side)
 //   search    mutate cases toward the worst error / bound ratio (adversarial search)
 //   list      the families and variants
+//   compare   two reports: the statistics that got worse or better, exit 1 on a regression
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "report/report.hpp"
@@ -31,9 +32,9 @@ int dispatch(int argc, char** argv)
     app.require_subcommand(1);
     app.footer(exitCodesHelp());
     app.set_help_all_flag("--help-all", "help for every subcommand");
-    const Subcommand subcommands[] = {addRun(app, line),     addGenerate(app, line),
-                                      addExplain(app, line), addBench(app, line),
-                                      addSearch(app, line),  addList(app, line)};
+    const Subcommand subcommands[] = {
+        addRun(app, line),    addGenerate(app, line), addExplain(app, line), addBench(app, line),
+        addSearch(app, line), addList(app, line),     addCompare(app, line)};
     try
     {
         app.parse(argc, argv);

@@ -40,13 +40,16 @@ struct ExitCodeInfo
 
 inline constexpr ExitCodeInfo kExitCodeTable[] = {
     {kExitPass, "pass: every case is within its judged variant's error bound and every family "
-                "make-up check holds (run); success (other commands). Comparison variants' "
+                "make-up check holds (run); no statistic regressed beyond its tolerance (compare); "
+                "success (other commands). Comparison variants' "
                 "failures are reported, never judged."},
     {kExitFail, "some case failed for a judged variant (error beyond the bound, misclassification "
                 "beyond it, non-finite output, iteration limit, a certified interval missing the "
-                "truth), or a family make-up check failed."},
+                "truth), or a family make-up check failed; compare: a statistic of NEW got "
+                "worse than OLD's beyond its tolerance."},
     {kExitInput, "usage or input error: a bad option or argument, an unreadable or invalid case "
-                 "file, an unknown case name, an output path that cannot be used, a run too large "
+                 "file, an unknown case name, an output path that cannot be used, a report compare "
+                 "cannot read or two reports of different inputs, a run too large "
                  "for this machine's memory (all detected before any work starts); also rejected "
                  "cases (the report is still written, the other cases still run)."},
     {kExitSetup, "used only by scripts/setup.sh: missing Debian packages and not root."},

@@ -1,0 +1,775 @@
+// gjk-validate compare: the comparison of two reports (compare.hpp states the tolerance rule).
+#include "report/compare.hpp"
+
+#include "inputs/cases.hpp" // lineColumn
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+constexpr const char* kSchema = "gjk-report/1";
+constexpr int kMaxReportDepth = 64; // report.json nests about 8 deep; a deeper file is not one
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The Stats counts that regress on any increase (docs/report-schema.md, Stats), in its order.
+constexpr const char* kCounts[] = {"failures",        "false_overlap", "false_separation",
+                                   "undecidable",     "nonfinite",     "out_of_range",
+                                   "iteration_limit", "beyond_bound",  "skipped"};
+
+std::string typeName(const Json& j)
+{
+    return j.type_name();
+}
+
+// The report's shape as far as compare reads it; InputError naming `label` otherwise.
+void checkShape(const Json& r, const std::string& label)
+{
+    if (!r.is_object())
+        throw InputError(
+            fmt::format("{}: the JSON is {}, expected a gjk-report/1 object", label, typeName(r)));
+    if (!r.contains("schema"))
+        throw InputError(fmt::format("{}: not a {} report (no \"schema\")", label, kSchema));
+    if (!r["schema"].is_string() || r["schema"].get_ref<const std::string&>() != kSchema)
+        throw InputError(fmt::format("{}: not a {} report (schema {})", label, kSchema,
+                                     excerpt(r["schema"].dump())));
+    for (const char* key : {"families", "variants"})
+        if (!r.contains(key) || !r[key].is_array())
+            throw InputError(fmt::format("{}: \"{}\" is {}, expected an array", label, key,
+                                         r.contains(key) ? typeName(r[key]) : "missing"));
+    std::size_t i = 0;
+    for (const auto& f : r["families"])
+    {
+        if (!f.is_object() || !f.contains("name") || !f["name"].is_string() ||
+            !f.contains("variants") || !f["variants"].is_object())
+            throw InputError(fmt::format("{}: families[{}] is not a family (an object with a "
+                                         "string \"name\" and an object \"variants\")",
+                                         label, i));
+        ++i;
+    }
+    i = 0;
+    for (const auto& v : r["variants"])
+    {
+        if (!v.is_object() || !v.contains("name") || !v["name"].is_string())
+            throw InputError(fmt::format("{}: variants[{}] is not a variant (an object with a "
+                                         "string \"name\")",
+                                         label, i));
+        ++i;
+    }
+}
+
+// One report, and how its messages name it.
+struct Side
+{
+    const Json& report;
+    const std::string& label;
+};
+
+// parent[key] as a number: NaN when absent or null; a number, "inf"/"-inf"/"nan" (how the report
+// writes non-finite values), or true/false as 1/0. Another type: InputError naming the field.
+double number(const Json* parent, const std::string& key, const Side& side,
+              const std::string& where)
+{
+    if (parent == nullptr)
+        return kNaN;
+    const auto it = parent->find(key);
+    if (it == parent->end() || it->is_null())
+        return kNaN;
+    if (it->is_number())
+        return it->get<double>();
+    if (it->is_boolean())
+        return it->get<bool>() ? 1 : 0;
+    if (it->is_string())
+    {
+        const auto& s = it->get_ref<const std::string&>();
+        if (s == "inf")
+            return std::numeric_limits<double>::infinity();
+        if (s == "-inf")
+            return -std::numeric_limits<double>::infinity();
+        if (s == "nan")
+            return kNaN;
+    }
+    throw InputError(fmt::format("{}: {}.{} is {}, expected a number", side.label, where,
+                                 excerpt(key), typeName(*it)));
+}
+
+// parent[key] when it is an object; nullptr when absent or null; InputError for another type.
+const Json* object(const Json* parent, const std::string& key, const Side& side,
+                   const std::string& where)
+{
+    if (parent == nullptr)
+        return nullptr;
+    const auto it = parent->find(key);
+    if (it == parent->end() || it->is_null())
+        return nullptr;
+    if (!it->is_object())
+        throw InputError(fmt::format("{}: {}.{} is {}, expected an object", side.label, where,
+                                     excerpt(key), typeName(*it)));
+    return &*it;
+}
+
+// The index of each family (by name) of a report.
+std::map<std::string, const Json*> familiesByName(const Json& r)
+{
+    std::map<std::string, const Json*> m;
+    for (const auto& f : r["families"])
+        m.emplace(f["name"].get<std::string>(), &f);
+    return m;
+}
+
+// How a family was made: its case count, seed and source. Two families of the same name compare
+// only when these are equal ("" when they are).
+std::string inputDifference(const Json& a, const Json& b)
+{
+    std::string d;
+    for (const char* key : {"cases", "seed", "source"})
+    {
+        const Json none;
+        const Json& x = a.contains(key) ? a[key] : none;
+        const Json& y = b.contains(key) ? b[key] : none;
+        if (x != y)
+            d += fmt::format("{}{} {} in OLD, {} in NEW", d.empty() ? "" : ", ", key,
+                             excerpt(x.dump()), excerpt(y.dump()));
+    }
+    return d;
+}
+
+// Adds rows, judging each by the tolerance rule.
+class Rows
+{
+  public:
+    Rows(const CompareOptions& o, std::vector<CompareRow>& rows) : o_(o), rows_(rows) {}
+
+    void add(CompareRow r, double floor = 0)
+    {
+        const double a = r.oldValue, b = r.newValue;
+        if (std::isnan(a) || std::isnan(b))
+        {
+            if (!(std::isnan(a) && std::isnan(b)))
+            {
+                r.change = Change::NotCompared;
+                r.note = std::isnan(a) ? "absent or null in OLD" : "absent or null in NEW";
+            }
+            rows_.push_back(std::move(r));
+            return;
+        }
+        const bool worse = r.higherIsBetter ? b < a : b > a;
+        const bool better = r.higherIsBetter ? b > a : b < a;
+        switch (r.rule)
+        {
+        case CompareRule::Count:
+        case CompareRule::Presence:
+            r.limit = a;
+            r.change = worse ? Change::Regressed : better ? Change::Better : Change::Same;
+            break;
+        case CompareRule::Exact:
+        case CompareRule::Percentile:
+        {
+            const double tol = r.rule == CompareRule::Exact ? o_.relTol : o_.percentileTol;
+            r.limit = a * (1 + tol) + floor;
+            r.change = b > r.limit ? Change::Regressed
+                       : worse     ? Change::Worse
+                       : better    ? Change::Better
+                                   : Change::Same;
+            break;
+        }
+        case CompareRule::Timing:
+        {
+            r.limit = a * o_.timingTol;
+            const double ratio = b / a;
+            r.note = fmt::format("NEW/OLD {:.3f}", ratio);
+            r.change = ratio > o_.timingTol       ? Change::Regressed
+                       : ratio < 1 / o_.timingTol ? Change::Better
+                                                  : Change::Same;
+            break;
+        }
+        }
+        rows_.push_back(std::move(r));
+    }
+
+  private:
+    const CompareOptions& o_;
+    std::vector<CompareRow>& rows_;
+};
+
+// Every statistic of one family x variant (docs/report-schema.md, Stats).
+void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
+                  const CompareOptions& o, const Side& os, const Side& ns, Rows& rows)
+{
+    const std::string where =
+        fmt::format("families['{}'].variants['{}']", excerpt(base.family), excerpt(base.variant));
+    auto row = [&](const std::string& statistic, CompareRule rule, double a, double b,
+                   double floor = 0, bool higherIsBetter = false)
+    {
+        CompareRow r = base;
+        r.statistic = statistic;
+        r.rule = rule;
+        r.oldValue = a;
+        r.newValue = b;
+        r.higherIsBetter = higherIsBetter;
+        rows.add(std::move(r), floor);
+    };
+    for (const char* key : kCounts)
+        if (oldStats.contains(key) || newStats.contains(key))
+            row(key, CompareRule::Count, number(&oldStats, key, os, where),
+                number(&newStats, key, ns, where));
+    // errors: every histogram either report has, OLD's order first.
+    const Json* oe = object(&oldStats, "errors", os, where);
+    const Json* ne = object(&newStats, "errors", ns, where);
+    std::vector<std::string> metrics;
+    for (const Json* e : {oe, ne})
+        if (e != nullptr)
+            for (const auto& [metric, _] : e->items())
+                if (std::find(metrics.begin(), metrics.end(), metric) == metrics.end())
+                    metrics.push_back(metric);
+    for (const auto& metric : metrics)
+    {
+        const std::string at = where + ".errors";
+        const Json* oh = object(oe, metric, os, at);
+        const Json* nh = object(ne, metric, ns, at);
+        // The smallest value the bins resolve: values below 10^log10_min share the first bin.
+        double lo = number(oh, "log10_min", os, at + "." + metric);
+        if (std::isnan(lo))
+            lo = number(nh, "log10_min", ns, at + "." + metric);
+        const double floor = std::isnan(lo) ? 0 : std::pow(10.0, lo);
+        for (const char* s : {"max", "p99", "p999", "mean"})
+        {
+            const bool percentile = s[0] == 'p';
+            row(fmt::format("errors.{}.{}", metric, s),
+                percentile ? CompareRule::Percentile : CompareRule::Exact,
+                number(oh, s, os, at + "." + metric), number(nh, s, ns, at + "." + metric), floor);
+        }
+    }
+    const Json* oi = object(&oldStats, "iterations", os, where);
+    const Json* ni = object(&newStats, "iterations", ns, where);
+    if (oi != nullptr || ni != nullptr)
+    {
+        row("iterations.max", CompareRule::Count, number(oi, "max", os, where + ".iterations"),
+            number(ni, "max", ns, where + ".iterations"));
+        row("iterations.mean", CompareRule::Exact, number(oi, "mean", os, where + ".iterations"),
+            number(ni, "mean", ns, where + ".iterations"));
+    }
+    const Json* ov = object(&oldStats, "interval", os, where);
+    const Json* nv = object(&newStats, "interval", ns, where);
+    if (ov != nullptr || nv != nullptr)
+    {
+        const std::string at = where + ".interval";
+        row("interval.contains", CompareRule::Count, number(ov, "contains", os, at),
+            number(nv, "contains", ns, at), 0, true);
+        for (const char* key : {"misses", "uncertified"})
+            row(fmt::format("interval.{}", key), CompareRule::Count, number(ov, key, os, at),
+                number(nv, key, ns, at));
+    }
+    if (o.timing)
+        row("ns_per_query", CompareRule::Timing, number(&oldStats, "ns_per_query", os, where),
+            number(&newStats, "ns_per_query", ns, where));
+}
+
+// A family's own rows: makeup_ok, pass, and each make-up check (by its name) that both have.
+void compareFamily(const Json& of, const Json& nf, const std::string& name, const Side& os,
+                   const Side& ns, Rows& rows)
+{
+    const std::string where = fmt::format("families['{}']", excerpt(name));
+    auto flag = [&](const std::string& statistic, double a, double b)
+    {
+        CompareRow r;
+        r.family = name;
+        r.statistic = statistic;
+        r.higherIsBetter = true;
+        r.oldValue = a;
+        r.newValue = b;
+        rows.add(std::move(r));
+    };
+    flag("makeup_ok", number(&of, "makeup_ok", os, where), number(&nf, "makeup_ok", ns, where));
+    flag("pass", number(&of, "pass", os, where), number(&nf, "pass", ns, where));
+    if (!of.contains("makeup") || !nf.contains("makeup") || !of["makeup"].is_array() ||
+        !nf["makeup"].is_array())
+        return;
+    for (const auto& oc : of["makeup"])
+        for (const auto& nc : nf["makeup"])
+            if (oc.is_object() && nc.is_object() && oc.contains("check") &&
+                oc["check"].is_string() && nc.contains("check") && oc["check"] == nc["check"])
+                flag("makeup: " + excerpt(oc["check"].get<std::string>(), 100),
+                     number(&oc, "ok", os, where + ".makeup"),
+                     number(&nc, "ok", ns, where + ".makeup"));
+}
+
+// Judged in either report (a variant judged in NEW only, or dropped from the judged ones by NEW,
+// still gates). A variant neither lists is taken as judged.
+bool judgedInEither(const std::string& variant, const Json& a, const Json& b)
+{
+    bool listed = false;
+    for (const Json* r : {&a, &b})
+        for (const auto& v : (*r)["variants"])
+            if (v["name"] == variant)
+            {
+                listed = true;
+                if (v.contains("judged") && v["judged"].is_boolean() && v["judged"].get<bool>())
+                    return true;
+            }
+    return !listed;
+}
+
+std::string formatValue(const CompareRow& r, double v)
+{
+    if (std::isnan(v))
+        return "n/a";
+    if (r.rule == CompareRule::Presence)
+        return v != 0 ? "present" : "absent";
+    if (r.higherIsBetter && r.rule == CompareRule::Count && r.statistic != "interval.contains")
+        return v != 0 ? "true" : "false";
+    if (r.rule == CompareRule::Count && std::isfinite(v))
+        return fmt::format("{:.0f}", v);
+    return fmt::format("{:.4g}", v);
+}
+
+std::string changeText(const CompareRow& r)
+{
+    switch (r.change)
+    {
+    case Change::Regressed:
+        return r.gates ? "REGRESSED" : "regressed (comparison variant, not gated)";
+    case Change::Worse:
+        return "worse, within tolerance";
+    case Change::OnlyOld:
+    case Change::OnlyNew:
+        return std::string(changeName(r.change)) + (r.gates ? " (FAILS: --strict)" : "");
+    case Change::NotCompared:
+        return "not compared: " + r.note;
+    default:
+        return changeName(r.change);
+    }
+}
+
+// Rows shown: not Same, failing ones first, then not-gated regressions, presence and
+// not-compared rows, worse within tolerance, better.
+std::vector<const CompareRow*> shownRows(const Comparison& c)
+{
+    auto rank = [](const CompareRow& r)
+    {
+        if (r.fails())
+            return 0;
+        switch (r.change)
+        {
+        case Change::Regressed:
+            return 1;
+        case Change::OnlyOld:
+        case Change::OnlyNew:
+        case Change::NotCompared:
+            return 2;
+        case Change::Worse:
+            return 3;
+        default:
+            return 4;
+        }
+    };
+    std::vector<const CompareRow*> v;
+    for (const auto& r : c.rows)
+        if (r.change != Change::Same)
+            v.push_back(&r);
+    std::stable_sort(v.begin(), v.end(),
+                     [&](const CompareRow* a, const CompareRow* b) { return rank(*a) < rank(*b); });
+    return v;
+}
+
+std::string limitText(const CompareRow& r)
+{
+    if ((r.change != Change::Worse && r.change != Change::Regressed) ||
+        r.rule == CompareRule::Presence)
+        return "";
+    if (r.rule == CompareRule::Timing)
+        return fmt::format("{:.4g} ({})", r.limit, r.note);
+    return formatValue(r, r.limit);
+}
+
+std::string summaryText(const Comparison& c)
+{
+    std::size_t notGated = 0;
+    for (const auto& r : c.rows)
+        notGated += r.change == Change::Regressed && !r.gates ? 1 : 0;
+    return fmt::format("{} statistic(s) compared: {} regression(s) that fail, {} beyond tolerance "
+                       "in comparison variants (not gated), {} worse within tolerance, {} better, "
+                       "{} the same",
+                       c.rows.size(), c.failing(), notGated, c.count(Change::Worse),
+                       c.count(Change::Better), c.count(Change::Same));
+}
+
+std::string resultLine(const Comparison& c)
+{
+    return c.exitCode == kExitPass ? "result: NO REGRESSION (exit code 0)"
+                                   : fmt::format("result: REGRESSION (exit code {}): {} "
+                                                 "statistic(s) beyond tolerance",
+                                                 c.exitCode, c.failing());
+}
+
+std::string optionsText(const CompareOptions& o)
+{
+    std::string s = fmt::format("tolerances: max and mean x(1 + {:g}), p99 and p999 x(1 + {:g}), "
+                                "counts none",
+                                o.relTol, o.percentileTol);
+    if (o.timing)
+        s += fmt::format(", ns_per_query x{:g}", o.timingTol);
+    s += o.allVariants ? "; every variant gates" : "; judged variants gate";
+    if (o.strict)
+        s += "; --strict";
+    if (o.allowDifferentInputs)
+        s += "; --allow-different-inputs";
+    return s;
+}
+} // namespace
+
+const char* changeName(Change c)
+{
+    switch (c)
+    {
+    case Change::Same:
+        return "same";
+    case Change::Better:
+        return "better";
+    case Change::Worse:
+        return "worse";
+    case Change::Regressed:
+        return "regressed";
+    case Change::OnlyOld:
+        return "only in OLD";
+    case Change::OnlyNew:
+        return "only in NEW";
+    case Change::NotCompared:
+        return "not compared";
+    }
+    return "?";
+}
+
+bool CompareRow::fails() const
+{
+    return gates &&
+           (change == Change::Regressed || change == Change::OnlyOld || change == Change::OnlyNew);
+}
+
+std::size_t Comparison::count(Change c) const
+{
+    return std::size_t(std::count_if(rows.begin(), rows.end(),
+                                     [&](const CompareRow& r) { return r.change == c; }));
+}
+
+std::size_t Comparison::failing() const
+{
+    return std::size_t(
+        std::count_if(rows.begin(), rows.end(), [](const CompareRow& r) { return r.fails(); }));
+}
+
+Json readReport(const std::string& path)
+{
+    fs::path p = path;
+    std::error_code ec;
+    if (fs::is_directory(p, ec))
+        p /= "report.json";
+    const std::string shown = shownPath(p.string());
+    const auto st = fs::status(p, ec);
+    if (!fs::exists(st))
+        throw InputError(fmt::format("compare: {}: no such file", shown));
+    if (!fs::is_regular_file(st))
+        throw InputError(fmt::format("compare: {}: not a regular file", shown));
+    std::ifstream in(p, std::ios::binary);
+    if (!in)
+        throw InputError(fmt::format("compare: {}: cannot open: {}", shown, std::strerror(errno)));
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad())
+        throw InputError(fmt::format("compare: {}: read failed", shown));
+    Json report;
+    try
+    {
+        report = Json::parse(text,
+                             [&](int depth, Json::parse_event_t, Json&)
+                             {
+                                 if (depth > kMaxReportDepth)
+                                     throw InputError(fmt::format(
+                                         "compare: {}: not a gjk-report/1 report (JSON nested "
+                                         "more than {} deep)",
+                                         shown, kMaxReportDepth));
+                                 return true;
+                             });
+    }
+    catch (const Json::parse_error& e)
+    {
+        // nlohmann: "[json.exception.parse_error.101] parse error at line 1, column 1: syntax
+        // error while parsing value - ...": keep what follows the position.
+        const std::string what = e.what();
+        const std::size_t column = what.find("column");
+        const std::size_t colon = column == std::string::npos ? column : what.find(": ", column);
+        const std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
+        const auto [line, col] = lineColumn(text, e.byte == 0 ? 0 : e.byte - 1);
+        throw InputError(
+            fmt::format("compare: {}:{}:{}: not JSON: {}", shown, line, col, excerpt(reason, 120)));
+    }
+    checkShape(report, "compare: " + shown);
+    return report;
+}
+
+Comparison compareReports(const Json& oldReport, const Json& newReport, const CompareOptions& o)
+{
+    checkShape(oldReport, o.oldName);
+    checkShape(newReport, o.newName);
+    const Side os{oldReport, o.oldName}, ns{newReport, o.newName};
+    Comparison c;
+    c.options = o;
+    Rows rows(o, c.rows);
+
+    // The inputs: the same families, each with the same cases, seed and source.
+    const auto oldFamilies = familiesByName(oldReport), newFamilies = familiesByName(newReport);
+    std::vector<std::string> differences;
+    for (const auto& f : oldReport["families"])
+    {
+        const std::string name = f["name"];
+        const auto it = newFamilies.find(name);
+        if (it == newFamilies.end())
+            differences.push_back(fmt::format("family '{}' is in OLD only", excerpt(name)));
+        else if (const std::string d = inputDifference(f, *it->second); !d.empty())
+            differences.push_back(fmt::format("family '{}': {}", excerpt(name), d));
+    }
+    for (const auto& f : newReport["families"])
+        if (!oldFamilies.count(f["name"].get<std::string>()))
+            differences.push_back(
+                fmt::format("family '{}' is in NEW only", excerpt(f["name"].get<std::string>())));
+    c.inputsDiffer = !differences.empty();
+    if (c.inputsDiffer && !o.allowDifferentInputs)
+        throw InputError(
+            fmt::format("compare: {} and {} ran different inputs: {}{} (give "
+                        "--allow-different-inputs to compare the families both ran "
+                        "alike)",
+                        o.oldName, o.newName, differences.front(),
+                        differences.size() > 1
+                            ? fmt::format(" and {} more difference(s)", differences.size() - 1)
+                            : ""));
+
+    // The variants each report ran (a variant in one only: one row, not one per family).
+    auto variantNames = [](const Json& r)
+    {
+        std::vector<std::string> v;
+        for (const auto& x : r["variants"])
+            v.push_back(x["name"]);
+        return v;
+    };
+    const auto oldVariants = variantNames(oldReport), newVariants = variantNames(newReport);
+    auto has = [](const std::vector<std::string>& v, const std::string& name)
+    { return std::find(v.begin(), v.end(), name) != v.end(); };
+    auto presence = [&](std::string family, std::string variant, std::string statistic, bool inOld,
+                        std::string note)
+    {
+        CompareRow r;
+        r.family = std::move(family);
+        r.variant = std::move(variant);
+        r.statistic = std::move(statistic);
+        r.rule = CompareRule::Presence;
+        r.oldValue = inOld ? 1 : 0;
+        r.newValue = inOld ? 0 : 1;
+        r.change = inOld ? Change::OnlyOld : Change::OnlyNew;
+        r.gates = o.strict;
+        r.note = std::move(note);
+        c.rows.push_back(std::move(r));
+    };
+    for (const auto& v : oldVariants)
+        if (!has(newVariants, v))
+            presence("", v, "variant", true, "the variant is in OLD only");
+    for (const auto& v : newVariants)
+        if (!has(oldVariants, v))
+            presence("", v, "variant", false, "the variant is in NEW only");
+
+    for (const auto& of : oldReport["families"])
+    {
+        const std::string name = of["name"];
+        const auto it = newFamilies.find(name);
+        if (it == newFamilies.end())
+        {
+            presence(name, "", "family", true, "the family is in OLD only");
+            continue;
+        }
+        const Json& nf = *it->second;
+        if (const std::string d = inputDifference(of, nf); !d.empty())
+        {
+            CompareRow r;
+            r.family = name;
+            r.statistic = "inputs";
+            r.change = Change::NotCompared;
+            r.oldValue = r.newValue = kNaN;
+            r.gates = false;
+            r.note = d;
+            c.rows.push_back(std::move(r));
+            continue;
+        }
+        compareFamily(of, nf, name, os, ns, rows);
+        for (const auto& [variant, oldStats] : of["variants"].items())
+        {
+            const Json* newStats =
+                nf["variants"].contains(variant) ? &nf["variants"][variant] : nullptr;
+            if (newStats == nullptr)
+            {
+                if (has(newVariants, variant))
+                    presence(name, variant, "variant", true, "absent from the family in NEW");
+                continue;
+            }
+            CompareRow base;
+            base.family = name;
+            base.variant = variant;
+            base.judged = judgedInEither(variant, oldReport, newReport);
+            base.gates = base.judged || o.allVariants;
+            const std::string where = fmt::format("families['{}'].variants", excerpt(name));
+            if (!oldStats.is_object())
+                throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.oldName,
+                                             where, excerpt(variant), typeName(oldStats)));
+            if (!newStats->is_object())
+                throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.newName,
+                                             where, excerpt(variant), typeName(*newStats)));
+            compareStats(oldStats, *newStats, base, o, os, ns, rows);
+        }
+        for (const auto& [variant, _] : nf["variants"].items())
+            if (!of["variants"].contains(variant) && has(oldVariants, variant))
+                presence(name, variant, "variant", false, "absent from the family in OLD");
+    }
+    for (const auto& nf : newReport["families"])
+        if (!oldFamilies.count(nf["name"].get<std::string>()))
+            presence(nf["name"], "", "family", false, "the family is in NEW only");
+
+    // The overall exit code: meaningful only when both ran the same inputs.
+    CompareRow exit;
+    exit.statistic = "exit_code";
+    exit.oldValue = number(&oldReport, "exit_code", os, "report");
+    exit.newValue = number(&newReport, "exit_code", ns, "report");
+    if (c.inputsDiffer)
+    {
+        exit.change = Change::NotCompared;
+        exit.gates = false;
+        exit.note = "the reports ran different inputs";
+        c.rows.push_back(std::move(exit));
+    }
+    else
+        rows.add(std::move(exit));
+
+    c.exitCode = c.failing() > 0 ? kExitFail : kExitPass;
+    return c;
+}
+
+std::string compareText(const Comparison& c)
+{
+    const auto shown = shownRows(c);
+    const std::string headers[] = {"family", "variant", "statistic", "OLD",
+                                   "NEW",    "limit",   "change"};
+    std::vector<std::array<std::string, 7>> table;
+    table.push_back(
+        {headers[0], headers[1], headers[2], headers[3], headers[4], headers[5], headers[6]});
+    for (const CompareRow* r : shown)
+        table.push_back({r->family.empty() ? "-" : excerpt(r->family),
+                         r->variant.empty() ? "-" : excerpt(r->variant) + (r->judged ? "" : " (c)"),
+                         r->statistic, formatValue(*r, r->oldValue), formatValue(*r, r->newValue),
+                         limitText(*r), changeText(*r)});
+    std::array<std::size_t, 7> width{};
+    for (const auto& row : table)
+        for (std::size_t i = 0; i < row.size(); ++i)
+            width[i] = std::max(width[i], row[i].size());
+    std::string s = fmt::format("compare: {}\n     vs: {}\n{}\n", c.options.oldName,
+                                c.options.newName, optionsText(c.options));
+    if (shown.empty())
+        s += "every statistic is the same\n";
+    else
+    {
+        for (const auto& row : table)
+        {
+            std::string line;
+            for (std::size_t i = 0; i < row.size(); ++i)
+                line += i + 1 < row.size() ? fmt::format("{:<{}}  ", row[i], width[i]) : row[i];
+            s += line + "\n";
+        }
+        if (std::any_of(shown.begin(), shown.end(), [](const CompareRow* r) { return !r->judged; }))
+            s += "(c): a comparison variant (reported; gates only with --all-variants)\n";
+    }
+    s += summaryText(c) + "\n" + resultLine(c) + "\n";
+    return s;
+}
+
+std::string compareMarkdown(const Comparison& c)
+{
+    auto cell = [](std::string v)
+    {
+        std::string out;
+        for (char ch : v)
+            out += ch == '|' ? std::string("\\|") : std::string(1, ch);
+        return out;
+    };
+    std::string s =
+        fmt::format("# gjk-validate compare\n\n- {}\n- {}\n- {}\n\n", cell(c.options.oldName),
+                    cell(c.options.newName), optionsText(c.options));
+    const auto shown = shownRows(c);
+    if (shown.empty())
+        s += "Every statistic is the same.\n\n";
+    else
+    {
+        s += "| family | variant | statistic | OLD | NEW | limit | change |\n"
+             "|---|---|---|---|---|---|---|\n";
+        for (const CompareRow* r : shown)
+            s += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", cell(excerpt(r->family)),
+                             cell(excerpt(r->variant) + (r->judged ? "" : " (comparison)")),
+                             cell(r->statistic), formatValue(*r, r->oldValue),
+                             formatValue(*r, r->newValue), cell(limitText(*r)),
+                             cell(changeText(*r)));
+        s += "\n";
+    }
+    s += summaryText(c) + ".\n\n**" + resultLine(c) + "**\n";
+    return s;
+}
+
+Json compareJson(const Comparison& c)
+{
+    const CompareOptions& o = c.options;
+    Json j;
+    j["schema"] = "gjk-compare/1";
+    j["old"] = o.oldName;
+    j["new"] = o.newName;
+    j["options"] = {{"rel_tol", o.relTol},
+                    {"percentile_tol", o.percentileTol},
+                    {"timing", o.timing},
+                    {"timing_tol", o.timingTol},
+                    {"all_variants", o.allVariants},
+                    {"strict", o.strict},
+                    {"allow_different_inputs", o.allowDifferentInputs}};
+    j["inputs_differ"] = c.inputsDiffer;
+    j["compared"] = c.rows.size();
+    j["same"] = c.count(Change::Same);
+    Json rows = Json::array();
+    for (const CompareRow* r : shownRows(c))
+    {
+        static constexpr const char* kRules[] = {"count", "exact", "percentile", "timing",
+                                                 "presence"};
+        rows.push_back({{"family", r->family},
+                        {"variant", r->variant},
+                        {"judged", r->judged},
+                        {"statistic", r->statistic},
+                        {"rule", kRules[int(r->rule)]},
+                        {"old", optNum(r->oldValue)},
+                        {"new", optNum(r->newValue)},
+                        {"limit", limitText(*r).empty() ? Json(nullptr) : num(r->limit)},
+                        {"change", changeName(r->change)},
+                        {"gates", r->gates},
+                        {"fails", r->fails()},
+                        {"note", r->note}});
+    }
+    j["rows"] = std::move(rows); // every row that is not "same", failing ones first
+    j["regressions"] = c.failing();
+    j["exit_code"] = c.exitCode;
+    return j;
+}
+
+} // namespace gjkval
