@@ -23,7 +23,7 @@ TEST_CASE("histogram counts, extrema, mean and bins", "[stats]")
     CHECK(h.zeros == 2);
     CHECK(h.max == 4.0);
     CHECK(h.maxCase == "four");
-    CHECK(h.sum == 5.5);
+    CHECK(h.sum() == 5.5);
     CHECK(h.mean() == 1.1);
     // 1.0: log10 = 0 -> bin (0 + 40) * 10 = 400; 4.0: log10 = 0.602 -> bin 406; 0.5: -0.301 -> 396.
     CHECK(h.binOf(1.0) == 400);
@@ -180,7 +180,7 @@ TEST_CASE("merging histograms: zeros add, the maximum stays, ties keep the first
     CHECK(first.zeros == 3);
     CHECK(first.max == 3.0);
     CHECK(first.maxCase == "f-max");
-    CHECK(first.sum == 7.0);
+    CHECK(first.sum() == 7.0);
 
     // A larger maximum in the second shard wins.
     Hist low(-40, 40, 10), high(-40, 40, 10);
@@ -204,4 +204,32 @@ TEST_CASE("merging histograms: zeros add, the maximum stays, ties keep the first
     smallFirst.merge(big);
     CHECK(smallFirst.max == 9);
     CHECK(smallFirst.toJson() == bigFirst.toJson());
+}
+
+TEST_CASE("statistics survive their state: what a shard or a checkpoint writes", "[stats]")
+{
+    Stats s;
+    s.cases = 3;
+    s.failures = 1;
+    s.falseOverlap = 1;
+    s.hasInterval = true;
+    s.certified = 2;
+    s.contains = 2;
+    s.abs.add(1e-17, "a", 0);
+    s.abs.add(3e-16, "b", 1);
+    s.abs.add(0.0, "c", 2);
+    s.rel.add(2e-16, "a", 0);
+    s.widthUlps.add(3.0, "b", 1);
+    s.iterations.add(2);
+    s.iterations.add(5);
+    s.stops[1] = 3;
+    const Json state = s.state();
+    const Stats back = Stats::fromState(Json::parse(state.dump())); // through text, as on disk
+    CHECK(back.state() == state);
+    CHECK(back.toJson() == s.toJson());
+    CHECK(back.abs.maxCase == "b");
+    CHECK(back.iterations.sum == 7);
+    Json broken = state;
+    broken["abs"]["counts"] = std::vector<std::uint64_t>{1, 2};
+    CHECK_THROWS(Stats::fromState(broken));
 }

@@ -233,8 +233,8 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
 
 // --- Statistics, make-up, worst cases, per-case lines: folded in case order --------------------
 
-void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, const VariantInfo& vi,
-                const CaseOutcome& o)
+void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index,
+                const VariantInfo& vi, const CaseOutcome& o)
 {
     if (v.skipped)
     {
@@ -255,19 +255,19 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, cons
         s.beyondBound += v.beyondBound ? 1 : 0;
         if (!v.nonfinite)
         {
-            s.abs.add(v.abs, name);
-            s.rel.add(v.rel, name); // NaN (not applicable) is ignored by add()
-            s.ulps.add(v.ulps, name);
-            s.normalized.add(v.normalized, name);
-            s.boundRatio.add(v.boundRatio, name);
-            s.witness.add(v.witness, name);
-            s.witnessGap.add(v.witnessGap, name);
+            s.abs.add(v.abs, name, index);
+            s.rel.add(v.rel, name, index); // NaN (not applicable) is ignored by add()
+            s.ulps.add(v.ulps, name, index);
+            s.normalized.add(v.normalized, name, index);
+            s.boundRatio.add(v.boundRatio, name, index);
+            s.witness.add(v.witness, name, index);
+            s.witnessGap.add(v.witnessGap, name, index);
         }
     }
     if (vi.scalar == Scalar::Float)
     {
         s.hasInputRounding = true;
-        s.inputRounding.add(o.inputRounding, name);
+        s.inputRounding.add(o.inputRounding, name, index);
     }
     if (vi.options.certify)
     {
@@ -277,7 +277,7 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, cons
             ++s.certified;
             s.contains += v.intervalContains ? 1 : 0;
             if (v.truth > 0)
-                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name);
+                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name, index);
         }
         else
             ++s.uncertified;
@@ -307,7 +307,7 @@ void foldChunk(FamilyResult& r, const CaseChunk& chunk, EvaluatedChunk& e,
             continue;
         }
         for (std::size_t k = 0; k < nv; ++k)
-            accumulate(r.stats[k], o.variants[k], c.name, *ctx.variants[k], o);
+            accumulate(r.stats[k], o.variants[k], c.name, chunk.first + i, *ctx.variants[k], o);
         r.makeup.add(c, o.exact);
         r.worst.offer(chunk.first + i, c, o);
         if (config.timing && r.timing.cases.size() < kTimingSampleCases)

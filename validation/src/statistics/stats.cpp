@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace gjkval
 {
@@ -21,16 +22,17 @@ double Hist::upperEdge(std::size_t bin) const
     return std::pow(10.0, log10Min + double(bin + 1) / binsPerDecade);
 }
 
-void Hist::add(double v, const std::string& caseName)
+void Hist::add(double v, const std::string& caseName, std::uint64_t index)
 {
     if (!(v >= 0) || !std::isfinite(v))
         return;
     ++count;
-    sum += v;
-    if (count == 1 || v > max) // ties keep the first case in case order
+    total.add(v);
+    if (count == 1 || v > max || (v == max && index < maxIndex)) // ties: the earlier case
     {
         max = v;
         maxCase = caseName;
+        maxIndex = index;
     }
     if (v == 0)
     {
@@ -51,14 +53,15 @@ void Hist::merge(const Hist& o)
         *this = o;
         return;
     }
-    if (o.max > max)
+    if (o.max > max || (o.max == max && o.maxIndex < maxIndex))
     {
         max = o.max;
         maxCase = o.maxCase;
+        maxIndex = o.maxIndex;
     }
     count += o.count;
     zeros += o.zeros;
-    sum += o.sum;
+    total.merge(o.total);
     if (!o.counts.empty())
     {
         if (counts.empty())
@@ -93,7 +96,7 @@ Json Hist::toJson() const
     j["zeros"] = zeros;
     j["max"] = num(max);
     j["mean"] = num(mean());
-    j["sum"] = num(sum);
+    j["sum"] = num(sum());
     j["p50"] = num(percentile(500, 1000));
     j["p99"] = num(percentile(990, 1000));
     j["p999"] = num(percentile(999, 1000));
@@ -108,10 +111,38 @@ Json Hist::toJson() const
     return j;
 }
 
+Json Hist::state() const
+{
+    return Json{{"range", {log10Min, log10Max, binsPerDecade}},
+                {"count", count},
+                {"zeros", zeros},
+                {"max", max},
+                {"max_case", maxCase},
+                {"max_index", maxIndex},
+                {"total", total.toJson()},
+                {"counts", counts}};
+}
+
+Hist Hist::fromState(const Json& j)
+{
+    const Json& r = j.at("range");
+    Hist h(r.at(0).get<int>(), r.at(1).get<int>(), r.at(2).get<int>());
+    h.count = j.at("count").get<std::uint64_t>();
+    h.zeros = j.at("zeros").get<std::uint64_t>();
+    h.max = j.at("max").get<double>();
+    h.maxCase = j.at("max_case").get<std::string>();
+    h.maxIndex = j.at("max_index").get<std::uint64_t>();
+    h.total = ExactSum::fromJson(j.at("total"));
+    h.counts = j.at("counts").get<std::vector<std::uint64_t>>();
+    if (!h.counts.empty() && h.counts.size() != h.binCount())
+        throw std::runtime_error("histogram state: counts do not match the binning");
+    return h;
+}
+
 void IterHist::add(int it)
 {
     ++count;
-    sum += it;
+    sum += std::uint64_t(it);
     max = std::max(max, it);
     if (counts.size() <= std::size_t(it))
         counts.resize(std::size_t(it) + 1, 0);
@@ -133,9 +164,24 @@ Json IterHist::toJson() const
 {
     Json j;
     j["max"] = max;
-    j["mean"] = count ? sum / double(count) : 0.0;
+    j["mean"] = count ? double(sum) / double(count) : 0.0;
     j["counts"] = counts;
     return j;
+}
+
+Json IterHist::state() const
+{
+    return Json{{"count", count}, {"max", max}, {"sum", sum}, {"counts", counts}};
+}
+
+IterHist IterHist::fromState(const Json& j)
+{
+    IterHist h;
+    h.count = j.at("count").get<std::uint64_t>();
+    h.max = j.at("max").get<int>();
+    h.sum = j.at("sum").get<std::uint64_t>();
+    h.counts = j.at("counts").get<std::vector<std::uint64_t>>();
+    return h;
 }
 
 void Stats::merge(const Stats& o)
@@ -168,6 +214,67 @@ void Stats::merge(const Stats& o)
     iterations.merge(o.iterations);
     for (int i = 0; i < kStopReasons; ++i)
         stops[std::size_t(i)] += o.stops[std::size_t(i)];
+}
+
+namespace
+{
+// Stats' merged members, by name, for state() and fromState(): one list for both directions.
+template <typename S, typename Count, typename Flag, typename H>
+void forEachMember(S& s, Count&& count, Flag&& flag, H&& hist)
+{
+    count("cases", s.cases);
+    count("failures", s.failures);
+    count("false_overlap", s.falseOverlap);
+    count("false_separation", s.falseSeparation);
+    count("undecidable", s.undecidable);
+    count("nonfinite", s.nonfinite);
+    count("out_of_range", s.outOfRange);
+    count("iteration_limit", s.iterationLimit);
+    count("beyond_bound", s.beyondBound);
+    count("skipped", s.skipped);
+    count("not_applicable", s.notApplicable);
+    count("certified", s.certified);
+    count("contains", s.contains);
+    count("uncertified", s.uncertified);
+    flag("has_interval", s.hasInterval);
+    flag("has_input_rounding", s.hasInputRounding);
+    hist("width_ulps", s.widthUlps);
+    hist("abs", s.abs);
+    hist("rel", s.rel);
+    hist("ulps", s.ulps);
+    hist("normalized", s.normalized);
+    hist("bound_ratio", s.boundRatio);
+    hist("witness", s.witness);
+    hist("witness_gap", s.witnessGap);
+    hist("input_rounding", s.inputRounding);
+}
+} // namespace
+
+Json Stats::state() const
+{
+    Json j;
+    forEachMember(
+        *this, [&](const char* k, const std::uint64_t& v) { j[k] = v; },
+        [&](const char* k, const bool& v) { j[k] = v; },
+        [&](const char* k, const Hist& h) { j[k] = h.state(); });
+    j["iterations"] = iterations.state();
+    j["stops"] = stops;
+    return j;
+}
+
+Stats Stats::fromState(const Json& j)
+{
+    Stats s;
+    forEachMember(
+        s, [&](const char* k, std::uint64_t& v) { v = j.at(k).get<std::uint64_t>(); },
+        [&](const char* k, bool& v) { v = j.at(k).get<bool>(); },
+        [&](const char* k, Hist& h) { h = Hist::fromState(j.at(k)); });
+    s.iterations = IterHist::fromState(j.at("iterations"));
+    const auto stops = j.at("stops").get<std::vector<std::uint64_t>>();
+    if (stops.size() != s.stops.size())
+        throw std::runtime_error("stats state: the number of stop reasons differs");
+    std::copy(stops.begin(), stops.end(), s.stops.begin());
+    return s;
 }
 
 Json Stats::toJson() const

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/common.hpp"
+#include "statistics/exact_sum.hpp"
 
 #include "gjk/distance.hpp"
 
@@ -22,8 +23,9 @@ struct Hist
     std::uint64_t count = 0; // values added (zeros included)
     std::uint64_t zeros = 0;
     double max = 0;
-    double sum = 0;
     std::string maxCase;
+    std::uint64_t maxIndex = 0; // maxCase's place in the family: ties go to the earlier case
+    ExactSum total;             // exact: the sum and mean do not depend on the order of merges
     std::vector<std::uint64_t> counts; // bins; sized on first use
 
     Hist() = default;
@@ -34,25 +36,32 @@ struct Hist
     std::size_t binCount() const { return std::size_t((log10Max - log10Min) * binsPerDecade); }
     std::size_t binOf(double v) const; // v > 0
     double upperEdge(std::size_t bin) const;
-    // v >= 0 and finite (callers count non-finite values apart).
-    void add(double v, const std::string& caseName = {});
-    void merge(const Hist& other); // same binning; `other` comes after this in case order
-    double mean() const { return count ? sum / double(count) : 0; }
+    // v >= 0 and finite (callers count non-finite values apart); `index` is the case's place in
+    // its family, which breaks ties of the maximum.
+    void add(double v, const std::string& caseName = {}, std::uint64_t index = 0);
+    void merge(const Hist& other); // same binning; any order gives the same result
+    double sum() const { return total.value(); }
+    double mean() const { return count ? sum() / double(count) : 0; }
     // The upper edge of the bin where the cumulative count (zeros first) reaches ceil(count * num /
     // den); 0 when that rank falls among the zeros, and 0 for an empty histogram.
     double percentile(std::uint64_t num, std::uint64_t den) const;
     Json toJson() const;
+    // Everything merge() needs, exactly (shards, checkpoints); fromState(state()) == *this.
+    Json state() const;
+    static Hist fromState(const Json& j);
 };
 
 struct IterHist
 {
     std::uint64_t count = 0;
     int max = 0;
-    double sum = 0;
+    std::uint64_t sum = 0;
     std::vector<std::uint64_t> counts; // counts[i]: cases with i iterations
     void add(int iterations);
     void merge(const IterHist& other);
     Json toJson() const;
+    Json state() const;
+    static IterHist fromState(const Json& j);
 };
 
 inline constexpr int kStopReasons = int(gjk::stopReasonCount);
@@ -83,6 +92,9 @@ struct Stats
 
     void merge(const Stats& other);
     Json toJson() const;
+    // The merged part (not the timing), exactly: what a shard or a checkpoint writes.
+    Json state() const;
+    static Stats fromState(const Json& j);
 };
 
 } // namespace gjkval
