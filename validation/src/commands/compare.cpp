@@ -76,18 +76,25 @@ Subcommand addCompare(CLI::App& app, const CommandLine&)
                    "better; exit 1 when one regressed beyond its tolerance (docs/validation.md, "
                    "'compare').");
     cmp->footer(exitCodesHelp());
-    cmp->add_option("OLD", o->oldPath, "the report before the change")->required();
-    cmp->add_option("NEW", o->newPath, "the report after the change")->required();
+    cmp->add_option("OLD", o->oldPath, "the report before the change")
+        ->required()
+        ->type_name("PATH");
+    cmp->add_option("NEW", o->newPath, "the report after the change")
+        ->required()
+        ->type_name("PATH");
     cmp->add_option("--rel-tol", o->relTol,
                     "errors' max and mean regress when NEW > OLD x (1 + this) + floor")
+        ->type_name("X")
         ->capture_default_str();
     cmp->add_option("--percentile-tol", o->percentileTol,
                     "errors' p99 and p999 regress when NEW > OLD x (1 + this) + floor (0.3: a "
                     "one-bin move passes, two bins fail)")
+        ->type_name("X")
         ->capture_default_str();
     cmp->add_flag("--timing", o->timing, "compare ns_per_query too (as NEW / OLD)");
     cmp->add_option("--timing-tol", o->timingTol,
                     "with --timing: ns_per_query regresses when NEW / OLD > this")
+        ->type_name("X")
         ->capture_default_str();
     cmp->add_flag("--all-variants", o->allVariants,
                   "comparison variants' regressions fail too (default: judged variants only)");
@@ -95,8 +102,9 @@ Subcommand addCompare(CLI::App& app, const CommandLine&)
                   "a family or variant present in one report only fails the comparison");
     cmp->add_flag("--allow-different-inputs", o->allowDifferentInputs,
                   "compare the families both reports ran alike instead of refusing (exit 2)");
-    cmp->add_option("--json", o->json, "also write the comparison as JSON (gjk-compare/1)");
-    cmp->add_option("--md", o->md, "also write the comparison as Markdown");
+    cmp->add_option("--json", o->json, "also write the comparison as JSON (gjk-compare/1)")
+        ->type_name("FILE");
+    cmp->add_option("--md", o->md, "also write the comparison as Markdown")->type_name("FILE");
     return {cmp, [o, cmp] { return compareCommand(*o, *cmp); }};
 }
 
