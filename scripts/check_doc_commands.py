@@ -13,9 +13,11 @@ repeats runs once.
 Where commands run:
   - In one scratch directory that links every top-level entry of the repository, with
     `build/release` linked to the build under test and that build's validation/ on PATH (so both
-    `build/release/validation/gjk-validate` and `gjk-validate` work, and count as one command);
-    the files a command writes (hard.json, reports/latest/, ...) stay there, so later commands can
-    read them. Docs run in the order README.md, then docs/ by name.
+    `build/release/validation/gjk-validate` and `gjk-validate` work, and count as one command;
+    so do `scripts/run.sh ARGS` and `gjk-validate run ARGS`, since the script sets up, builds and
+    then runs exactly that); the files a command writes (hard.json, ...) stay there, so later
+    commands can read them; reports/ is the repository's own, so reports/latest/ is the one that
+    `scripts/run.sh` wrote. Docs run in the order README.md, then docs/ by name.
   - `scripts/*.sh` and `cmake --preset`/`--build --preset` change to the repository root
     themselves; they run there, against the build under test (only when it is build/release).
 
@@ -57,7 +59,7 @@ RULES = [
      "the mutation run builds and tests every mutant (tens of minutes)"),
     (r"--seconds \d+", "shrink", ("--seconds \\d+", "--seconds 2"), "search runs 600 s"),
     (r"random:\d{6,}", "shrink", (r"random:\d{6,}", "random:3000"), "1e5 to 1e7 cases"),
-    (r"--benchmark_min_time=[0-9.]+", "shrink",
+    (r"--benchmark_min_time=(0\.\d*[1-9]\d*[0-9]|0\.[0-9][1-9]|0\.[1-9]|[1-9])", "shrink",
      (r"--benchmark_min_time=[0-9.]+", "--benchmark_min_time=0.001"),
      "each Google Benchmark program runs for minutes"),
 ]
@@ -67,6 +69,9 @@ SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list"]
 PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
                          r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")
 COMMAND_WORD = re.compile(r"^(gjk-validate|build/|scripts/|cmake|ctest|python3)\b")
+# A fence opens or closes a code block: three or more backticks, an info string without backticks
+# (CommonMark; "```` ```sh ```` block" is inline code, not a fence).
+FENCE = re.compile(r"^(```+)([^`]*)$")
 LINK = re.compile(r"\]\(([^)#\s]+)(#[^)]*)?\)")
 
 
@@ -75,9 +80,9 @@ def fenced_commands(path):
     out = []
     lang, pending, start = None, "", 0
     for no, line in enumerate(path.read_text().splitlines(), 1):
-        fence = re.match(r"^```(\w*)", line)
+        fence = FENCE.match(line)
         if fence:
-            lang = None if lang is not None else fence.group(1)
+            lang = None if lang is not None else fence.group(2).strip()
             continue
         if lang == "console":
             if line.startswith("$ "):
@@ -100,22 +105,40 @@ def fenced_commands(path):
 
 
 def inline_commands(path):
-    """[(line, span, 0)] of the inline `gjk-validate SUB ...` spans that have options."""
-    out, fenced = [], False
+    """[(line, span, 0)] of the inline `gjk-validate SUB ...` spans that have options (also
+    `build/release/validation/gjk-validate ...`); a span may wrap across the lines of a paragraph."""
+    out, fenced, para, start = [], False, [], 0
+
+    def flush():
+        for span in re.findall(r"`([^`]+)`", " ".join(para)):
+            words = re.sub(r"^build/release/validation/", "", span.strip()).split()
+            if len(words) > 2 and words[0] == "gjk-validate" and words[1] in SUBCOMMANDS:
+                out.append((start, re.sub(r"\s+", " ", span.strip()), 0))
+
     for no, line in enumerate(path.read_text().splitlines(), 1):
-        if line.startswith("```"):
-            fenced = not fenced
+        if FENCE.match(line):
+            flush()
+            para, fenced = [], not fenced
             continue
         if fenced:
             continue
-        for span in re.findall(r"`([^`]+)`", line):
-            words = span.split()
-            if len(words) > 2 and words[0] == "gjk-validate" and words[1] in SUBCOMMANDS:
-                out.append((no, span, 0))
+        if not line.strip():
+            flush()
+            para = []
+            continue
+        if not para:
+            start = no
+        para.append(line.strip())
+    flush()
     return out
 
 
 def disposition(command, full):
+    if PLACEHOLDER.search(re.sub(r"'[^']*'", "''", command)):  # quoted text is literal
+        for pattern, kind, _, reason in RULES:
+            if kind in ("ci", "long") and re.search(pattern, command):
+                return kind, command, reason
+        return "synopsis", command, "has a placeholder: options checked"
     for pattern, kind, replacement, reason in RULES:
         if re.search(pattern, command):
             if kind == "shrink":
@@ -147,8 +170,9 @@ def unknown_options(command, exe):
 
 def scratch_dir(build):
     d = pathlib.Path(tempfile.mkdtemp(prefix="gjk2d-doc-commands-"))
+    (ROOT / "reports").mkdir(exist_ok=True)  # shared: what scripts/run.sh writes is seen here
     for entry in ROOT.iterdir():
-        if entry.name not in ("build", "reports", ".git"):
+        if entry.name not in ("build", ".git"):
             (d / entry.name).symlink_to(entry)
     (d / "build").mkdir()
     (d / "build" / "release").symlink_to(build)
@@ -164,7 +188,7 @@ def check_links(errors):
     for path in DOCS:
         fenced = False
         for no, line in enumerate(path.read_text().splitlines(), 1):
-            fenced = fenced != line.startswith("```")
+            fenced = fenced != bool(FENCE.match(line))
             if not fenced and line.startswith("    ") and COMMAND_WORD.match(line.strip()):
                 errors.append(f"{path.relative_to(ROOT)}:{no}: a command in an indented block: "
                               "put it in a ```sh block, where it is run")
@@ -214,11 +238,10 @@ def main():
             continue
         for no, command, expect in sorted(fenced_commands(path) + inline_commands(path)):
             kind, shown, reason = disposition(command, args.full)
-            if kind == "run" and PLACEHOLDER.search(command):
-                kind, reason = "synopsis", "has a placeholder: options checked"
             if runs_in_root(command) and not in_release and kind in ("run", "shrink"):
                 kind, reason = "ci", "changes to the repository root: checked in build/release only"
-            key = re.sub(r"^build/release/validation/gjk-validate ", "gjk-validate ", shown)
+            key = re.sub(r"^build/release/validation/gjk-validate\b", "gjk-validate", shown)
+            key = re.sub(r"^scripts/run\.sh\b", "gjk-validate run", key)  # set-up, build, then this
             if kind in ("run", "shrink") and key in done:
                 kind, reason = "repeat", "ran above"
             counts[kind] += 1
