@@ -435,8 +435,9 @@ Json makeupJson(const std::vector<MakeupResult>& m)
         j["max"] = num(r.max);
         j["ok"] = r.ok;
         if (r.skipped)
-            j["skipped"] =
-                fmt::format("fewer than {} cases: reported, not judged", kMinCasesForStatistics);
+            j["skipped"] = r.note;
+        else if (!r.note.empty())
+            j["scaled"] = r.note; // min and max are the range judged at this count
         a.push_back(std::move(j));
     }
     return a;

@@ -1334,7 +1334,7 @@ const std::vector<HardEntry>& hardTable()
           "Single points: inside a polygon, exactly on a vertex or an edge, near an edge, point to "
           "point (identical, distinct, one ulp apart), near a segment: one-vertex simplices only."},
          genPoints,
-         {{"min vertices", M::MinVertices, 1, 1},
+         {{"min vertices", M::MinVertices, 1, 1, MakeupScope::EveryCase},
           {"overlapping fraction", M::OverlapFraction, 0.5, 0.5}}},
         {{"scale-sweep", 172,
           "The same four configurations (near-parallel edges at a gap of 1e-6, a vertex at 1e-10 "
@@ -1453,7 +1453,7 @@ const std::vector<HardEntry>& hardTable()
           "costs ~1e-7 relative in double: the double variants must still meet their bound."},
          genFloatRotation,
          {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.9, 1},
-          {"separated fraction", M::SeparatedFraction, 0.3, 0.8, true},
+          {"separated fraction", M::SeparatedFraction, 0.3, 0.8},
           {"max |coordinate|", M::MaxCoordinate, 30, 100}}},
     };
     return table;
@@ -1462,11 +1462,11 @@ const std::vector<HardEntry>& hardTable()
 std::vector<MakeupSpec> randomMakeup()
 {
     return {
-        {"overlapping fraction", M::OverlapFraction, 0.2, 0.8, true},
-        {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.05, 1, true},
-        {"min vertices", M::MinVertices, 3, 8},
-        {"max vertices", M::MaxVertices, 3, 8},
-        {"max |coordinate|", M::MaxCoordinate, 0, 16},
+        {"overlapping fraction", M::OverlapFraction, 0.2, 0.8},
+        {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.05, 1},
+        {"min vertices", M::MinVertices, 3, 8, MakeupScope::EveryCase},
+        {"max vertices", M::MaxVertices, 3, 8, MakeupScope::EveryCase},
+        {"max |coordinate|", M::MaxCoordinate, 0, 16, MakeupScope::EveryCase},
     };
 }
 
@@ -1487,26 +1487,62 @@ std::string caseName(const std::string& family, int i, const std::string& tag)
     return family + "/" + std::to_string(i) + (tag.empty() ? "" : "-" + tag);
 }
 
+// The positions of a sweep of `sweep` cases that a family of `count` < `sweep` cases takes:
+// floor(sweep frac(j phi)), j = 0, 1, ... (the golden-ratio sequence, skipping positions already
+// taken), in increasing order. Any count spreads over the whole sweep, and no regular period of a
+// generator's parameters (i mod 4, i / 8 mod 2, ...) aliases with it, as a stride would.
+std::vector<std::size_t> spreadPositions(std::size_t count, std::size_t sweep)
+{
+    const double phi = (std::sqrt(5.0) - 1) / 2;
+    std::vector<bool> taken(sweep, false);
+    std::vector<std::size_t> out;
+    for (std::uint64_t j = 0; out.size() < count; ++j)
+    {
+        const std::size_t i =
+            std::min(sweep - 1, std::size_t(double(sweep) * std::fmod(double(j) * phi, 1.0)));
+        if (!taken[i])
+        {
+            taken[i] = true;
+            out.push_back(i);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 // Case i of a family: its own Rng stream from the family seed and i, so that any range of cases
-// can be made alone (the campaign streams them in chunks) and comes out the same.
+// can be made alone (the campaign streams them in chunks) and comes out the same. A hard
+// sub-family (sweep > 0: its built-in count) of fewer cases than its sweep takes spread positions
+// of it, each the built-in case of that number (same stream, same name); of more cases, case i is
+// case i, sweep position i mod sweep. The make-up ranges hold at `measuredAt` cases
+// (statistics/makeup.hpp).
 FamilyPlan plan(const std::string& name, const std::string& reason, int count, std::uint64_t seed,
-                const Gen& gen, std::vector<MakeupSpec> makeup)
+                const Gen& gen, std::vector<MakeupSpec> makeup, std::size_t sweep,
+                std::size_t measuredAt)
 {
     FamilyPlan f;
     f.name = name;
     f.reason = reason;
     f.seed = familySeed(seed, name);
     f.count = std::size_t(count);
+    for (auto& m : makeup)
+    {
+        m.measuredAt = measuredAt;
+        m.sweep = sweep > 0;
+    }
     f.makeup = std::move(makeup);
-    f.cases = [name, gen, familySeed = f.seed](std::size_t begin, std::size_t end)
+    auto positions = std::make_shared<const std::vector<std::size_t>>(
+        sweep > f.count ? spreadPositions(f.count, sweep) : std::vector<std::size_t>());
+    f.cases = [name, gen, positions, familySeed = f.seed](std::size_t begin, std::size_t end)
     {
         std::vector<Case> cases(end - begin);
-        for (std::size_t i = begin; i < end; ++i)
+        for (std::size_t k = begin; k < end; ++k)
         {
+            const std::size_t i = positions->empty() ? k : (*positions)[k];
             Rng r(mix64(familySeed + std::uint64_t(i)));
             r.family = familySeed;
             std::string tag;
-            Case& c = cases[i - begin];
+            Case& c = cases[k - begin];
             gen(r, int(i), c, tag);
             c.name = caseName(name, int(i), tag);
         }
@@ -1536,6 +1572,8 @@ FamilyPlan planEngine(const EngineEntry& e, int count, std::uint64_t seed)
     f.reason = e.info.reason;
     f.seed = familySeed(seed, f.name);
     f.makeup = e.makeup;
+    for (auto& m : f.makeup)
+        m.measuredAt = kMinEngineCasesForMakeup; // independent draws, not a sweep
     auto queries = engineQueries(e.scene, e.kind, f.seed, count);
     auto cases = std::make_shared<std::vector<Case>>();
     cases->reserve(queries.size());
@@ -1571,13 +1609,13 @@ const std::vector<EngineEntry>& engineTable()
           "boxes, rotations that are unit vectors only to float rounding."},
          S::Pyramid,
          K::Proximity,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
           {"max polygon radius (b2_polygonRadius only)", M::MaxPolygonRadius, 0.99 * kSkin,
            1.01 * kSkin},
           {"min vertices (the ground edge)", M::MinVertices, 2, 2},
           {"max vertices", M::MaxVertices, 4, 4},
-          {"overlapping fraction", M::OverlapFraction, 0.4, 0.85, true},
+          {"overlapping fraction", M::OverlapFraction, 0.4, 0.85},
           {"max distance (fat AABBs)", M::MaxDistance, 0.05, 2}}},
         {{"pyramid-toi", kDefaultEngineCount,
           "The pyramid's continuous collision: the b2Distance calls b2TimeOfImpact makes for each "
@@ -1587,13 +1625,13 @@ const std::vector<EngineEntry>& engineTable()
           "edge here, as the talk predicts."},
          S::Pyramid,
          K::Toi,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
           {"min vertices (the ground edge)", M::MinVertices, 2, 2},
-          {"separated fraction", M::SeparatedFraction, 0.99, 1, true},
+          {"separated fraction", M::SeparatedFraction, 0.99, 1},
           {"min positive distance (TOI target 0.005 - 0.00125)", M::MinPositiveDistance, 0.003,
-           0.0063, true},
-          {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.03, 0.5, true}}},
+           0.0063},
+          {"near-touching fraction (0 < d <= 1e-2)", M::NearTouchingFraction, 0.03, 0.5}}},
         {{"container-proximity", kDefaultEngineCount,
           "A kinematic box container (inner half size 5 to 8) turning at 0.15 to 0.5 rad/s, filled "
           "with 3..8-gons, circles and rounded polygons (a b2PolygonShape whose m_radius, 0.05 to "
@@ -1601,12 +1639,12 @@ const std::vector<EngineEntry>& engineTable()
           "rounded shapes, the turning walls' fat AABBs (pairs up to several metres apart)."},
          S::Container,
          K::Proximity,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
           {"max polygon radius (rounded polygons)", M::MaxPolygonRadius, 0.05, 0.25},
           {"min vertices (circles)", M::MinVertices, 1, 1},
           {"max vertices", M::MaxVertices, 6, 8},
-          {"overlapping fraction", M::OverlapFraction, 0.15, 0.5, true},
+          {"overlapping fraction", M::OverlapFraction, 0.15, 0.5},
           {"max distance (fat AABBs of turning walls)", M::MaxDistance, 1, 20}}},
         {{"container-toi", kDefaultEngineCount,
           "The container's continuous collision: b2TimeOfImpact's own b2Distance calls "
@@ -1614,13 +1652,12 @@ const std::vector<EngineEntry>& engineTable()
           "circles become points, rounded polygons their cores."},
          S::Container,
          K::Toi,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
           {"min vertices (circle centres)", M::MinVertices, 1, 1},
           {"max vertices", M::MaxVertices, 6, 8},
-          {"separated fraction", M::SeparatedFraction, 0.99, 1, true},
-          {"min positive distance (near the TOI targets)", M::MinPositiveDistance, 0.001, 0.02,
-           true}}},
+          {"separated fraction", M::SeparatedFraction, 0.99, 1},
+          {"min positive distance (near the TOI targets)", M::MinPositiveDistance, 0.001, 0.02}}},
         {{"bullets-proximity", kDefaultEngineCount,
           "Bullets (SetBullet: circles, boxes, rounded boxes of 0.05 to 0.25) fired at 40 to 120 "
           "m/s every 15 to 40 steps into 2 to 4 stacks of 5 to 10 boxes on an 80 m edge: per "
@@ -1628,11 +1665,11 @@ const std::vector<EngineEntry>& engineTable()
           "stack."},
          S::Bullets,
          K::Proximity,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"rounded fraction (every proxy has a radius)", M::RadiusFraction, 1, 1},
           {"max polygon radius (rounded bullets)", M::MaxPolygonRadius, 0.02, 0.1},
           {"min vertices (circles)", M::MinVertices, 1, 1},
-          {"overlapping fraction", M::OverlapFraction, 0.1, 0.7, true},
+          {"overlapping fraction", M::OverlapFraction, 0.1, 0.7},
           {"max |coordinate| (bullets in flight)", M::MaxCoordinate, 30, 1e4}}},
         {{"bullets-toi", kDefaultEngineCount,
           "The bullets' continuous collision: b2TimeOfImpact's own b2Distance calls (interposed) "
@@ -1640,10 +1677,10 @@ const std::vector<EngineEntry>& engineTable()
           "radius."},
          S::Bullets,
          K::Toi,
-         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1, true},
+         {{"non-unit rotation fraction", M::NonUnitRotationFraction, 0.8, 1},
           {"no radius (useRadii = false)", M::RadiusFraction, 0, 0},
           {"min vertices (circle centres)", M::MinVertices, 1, 1},
-          {"separated fraction", M::SeparatedFraction, 0.98, 1, true},
+          {"separated fraction", M::SeparatedFraction, 0.98, 1},
           {"max |coordinate| (bullets in flight)", M::MaxCoordinate, 30, 1e4}}},
     };
     return table;
@@ -1740,7 +1777,7 @@ std::vector<FamilyPlan> planFamilies(const std::string& spec, std::uint64_t seed
     if (name == "random")
     {
         out.push_back(plan("random", kRandomReason, count < 0 ? kDefaultRandomCount : count, seed,
-                           genRandom, randomMakeup()));
+                           genRandom, randomMakeup(), 0, kMinCasesForStatistics));
         return out;
     }
     const bool all = name == "hard";
@@ -1749,7 +1786,7 @@ std::vector<FamilyPlan> planFamilies(const std::string& spec, std::uint64_t seed
         const std::string full = "hard/" + e.info.name;
         if (all || name == full)
             out.push_back(plan(full, e.info.reason, count < 0 ? e.info.count : count, seed, e.gen,
-                               e.makeup));
+                               e.makeup, std::size_t(e.info.count), std::size_t(e.info.count)));
     }
     for (const auto& e : engineTable())
         if (name == "engine" || name == "engine/" + e.info.name)

@@ -45,22 +45,39 @@ enum class MakeupMetric
     NonUnitRotationFraction,   // fraction of cases where a shape's c^2 + s^2 is not 1 in double
 };
 
+// How a check's range is judged at a count other than the one it was measured at (the rules are
+// in statistics/makeup.hpp). A fraction of exactly 0 or 1 is case by case whatever its scope.
+enum class MakeupScope
+{
+    Family,    // a fraction or an extreme of the family's cases as a whole
+    EveryCase, // each case alone lies in the range: judged as written at any count
+};
+
 struct MakeupSpec
 {
     std::string check;
     MakeupMetric metric;
     double min, max;
-    bool statistical = false; // skipped (reported, not judged) below kMinCasesForStatistics cases
+    MakeupScope scope = MakeupScope::Family;
+    // Set by planFamilies from the family, not written in the tables: the count the range was
+    // measured at (0: judged as written at any count), and whether the cases repeat a sweep of
+    // that many positions (hard sub-families) instead of being independent draws (random, engine).
+    std::size_t measuredAt = 0;
+    bool sweep = false;
 };
 
+// The count the random family's ranges hold from (statistics of independent draws).
 inline constexpr std::size_t kMinCasesForStatistics = 100;
+// ... and the engine families' (their ranges were measured at 300 and 2000 cases).
+inline constexpr std::size_t kMinEngineCasesForMakeup = 300;
 
 struct MakeupResult
 {
     std::string check;
-    double value, min, max;
+    double value, min, max; // min, max: the range judged at this count
     bool ok;
-    bool skipped;
+    bool skipped;     // reported, not judged
+    std::string note; // why skipped, or why the range is not the table's; empty: as written
 };
 
 struct GeneratedFamily

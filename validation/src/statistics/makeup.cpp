@@ -4,9 +4,12 @@
 
 #include "gjk/math.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace gjkval
 {
@@ -193,6 +196,58 @@ void MakeupFold::add(const Case& c, const exact::Result& truth)
     }
 }
 
+namespace
+{
+// The range a check is judged by at n cases, and why it differs from the table's (makeup.hpp).
+struct Judged
+{
+    double min, max;
+    bool skipped = false;
+    std::string note{};
+};
+
+Judged judgedRange(const MakeupSpec& s, std::uint64_t n)
+{
+    const Fold fold = foldOf(s.metric);
+    const std::uint64_t f = s.measuredAt;
+    const bool caseByCase =
+        s.scope == MakeupScope::EveryCase ||
+        (fold == Fold::Fraction && s.min == s.max && (s.min == 0 || s.min == 1));
+    if (caseByCase || f == 0 || n == f || (n > f && !s.sweep))
+        return {s.min, s.max};
+    if (n < f)
+    {
+        const std::string fewer = fmt::format("fewer than {} cases: ", f);
+        switch (fold)
+        {
+        case Fold::Fraction:
+            return {s.min, s.max, true, fewer + "reported, not judged"};
+        case Fold::Min: // an infinite bound leaves nothing to judge
+            return {s.min, kInf, s.min == -kInf,
+                    fewer + (s.min == -kInf ? "reported, not judged"
+                                            : "only the lower bound is judged")};
+        case Fold::Max:
+        case Fold::Distinct:
+            return {fold == Fold::Max ? -kInf : 1, s.max, s.max == kInf,
+                    fewer + (s.max == kInf ? "reported, not judged"
+                                           : "only the upper bound is judged")};
+        }
+    }
+    const std::uint64_t k = n / f, r = n % f;
+    const std::string sweeps = fmt::format("scaled to {} cases: {} sweep(s) of {}", n, k, f);
+    switch (fold)
+    {
+    case Fold::Fraction:
+        return {double(k * f) * s.min / double(n), (double(k * f) * s.max + double(r)) / double(n),
+                false, sweeps + fmt::format(" and {} more", r)};
+    case Fold::Distinct:
+        return {s.min, s.max * double(k + (r > 0 ? 1 : 0)), false, sweeps};
+    default:
+        return {s.min, s.max};
+    }
+}
+} // namespace
+
 std::vector<MakeupResult> MakeupFold::results() const
 {
     std::vector<MakeupResult> out;
@@ -213,9 +268,9 @@ std::vector<MakeupResult> MakeupFold::results() const
         default:
             break;
         }
-        const bool skipped = k.spec.statistical && cases_ < kMinCasesForStatistics;
-        const bool inRange = v >= k.spec.min && v <= k.spec.max;
-        out.push_back({k.spec.check, v, k.spec.min, k.spec.max, skipped || inRange, skipped});
+        const Judged j = judgedRange(k.spec, cases_);
+        const bool inRange = v >= j.min && v <= j.max;
+        out.push_back({k.spec.check, v, j.min, j.max, j.skipped || inRange, j.skipped, j.note});
     }
     return out;
 }

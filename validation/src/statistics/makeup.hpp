@@ -1,5 +1,20 @@
 // A family's make-up checks (families.hpp, MakeupSpec), folded case by case: the campaign streams
 // its cases, so each check keeps a count, a minimum or a maximum, never the cases.
+//
+// A check's range was measured at F = MakeupSpec::measuredAt cases (the built-in count of a hard
+// sub-family, kMinCasesForStatistics for random, kMinEngineCasesForMakeup for engine). At n cases:
+// - case by case (MakeupScope::EveryCase, or a fraction of exactly 0 or 1), F = 0, or n = F: the
+//   range as written.
+// - n < F: only the side every case obeys. A hard family's n cases are n of its F built-in ones
+//   (families.cpp, spreadPositions), an engine family's are drawn from the same run: a minimum
+//   keeps its lower bound, a maximum and a distinct count their upper bound; the other side (some
+//   case reaching the extreme) and fractions need all F cases, so a fraction is reported, not
+//   judged.
+// - n > F, a sweep (hard: case i is sweep position i mod F): floor(n/F) complete sweeps, each
+//   within the range, and r = n mod F further cases that may all count or none, so a fraction's
+//   range becomes [kF min / n, (kF max + r) / n] (k = floor(n/F)) and a distinct count's upper
+//   bound grows to max ceil(n/F); extremes as written.
+// - n > F, independent draws (random, engine): the range as written.
 #pragma once
 
 #include "inputs/families.hpp"
