@@ -374,7 +374,7 @@ std::string resultText(const Json& r)
                            "case(s) pass",
                            rejected, total - rejected);
     }
-    return fmt::format("FAIL (exit code {}, from the judged variants)", code);
+    return fmt::format("FAIL (exit code {}): {}", code, failureCauses(r));
 }
 
 namespace

@@ -15,8 +15,9 @@ std::string renderMarkdown(const Json& report);
 std::string terminalSummary(const Json& report);
 std::string terminalTable(const Json& report);
 
-// The result in words, from report.json's exit_code: "PASS (exit code 0)", "FAIL (exit code 1,
-// from the judged variants)", "INPUT ERROR (exit code 2): 3 case(s) rejected, none judged".
+// The result in words, from report.json's exit_code: "PASS (exit code 0)", "FAIL (exit code 1):
+// 3 judged variant failure(s); make-up checks of 2 family(ies) failed" (either or both causes),
+// "INPUT ERROR (exit code 2): 3 case(s) rejected, none judged".
 std::string resultText(const Json& report);
 
 // kExitCodeTable (common.hpp) rendered: the --help footer (plain text, lines of at most `width`
