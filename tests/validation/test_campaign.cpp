@@ -183,6 +183,68 @@ TEST_CASE("the report does not depend on the chunk size nor the thread count", "
     }
 }
 
+TEST_CASE("merging the shards of a campaign gives the one-process report", "[campaign][shard]")
+{
+    // Families cut mid-chunk, a case file with rejected cases, 2 worst cases per family (ties
+    // across shards matter), shards given in any order and through their JSON text, as on disk.
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:150", "hard/touching-edge", "hard/points:40"};
+    c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
+    c.timing = false;
+    c.worstPerFamily = 2;
+    c.perCase = false;
+    c.chunkCases = 7;
+    const Run whole = run(c);
+    REQUIRE(whole.report["context"]["cases_rejected"] == 7);
+    for (std::size_t n : {1u, 2u, 3u, 5u, 40u})
+    {
+        INFO(n << " shards");
+        std::vector<Json> shards;
+        std::vector<std::string> names;
+        for (std::size_t i = n; i-- > 0;) // the last shard first
+        {
+            shards.push_back(Json::parse(runShard(c, campaignInputs(c), Shard{i, n}).dump()));
+            names.push_back("shard " + std::to_string(i));
+        }
+        const Campaign merged = mergeShards(shards, names, c);
+        CHECK(stripVolatile(merged.report) == stripVolatile(whole.report));
+        CHECK(caseFileText({}, merged.worstCases) == caseFileText({}, whole.worstCases));
+        CHECK(merged.exitCode == whole.exitCode);
+    }
+}
+
+TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
+          "[campaign][shard]")
+{
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:30"};
+    c.timing = false;
+    c.perCase = false;
+    const Json s0 = runShard(c, campaignInputs(c), Shard{0, 2});
+    const Json s1 = runShard(c, campaignInputs(c), Shard{1, 2});
+    CampaignConfig other = c;
+    other.seed = 2;
+    const Json s1Seed2 = runShard(other, campaignInputs(other), Shard{1, 2});
+    auto refusal = [&](std::vector<Json> shards)
+    {
+        try
+        {
+            mergeShards(shards, {"a/shard.json", "b/shard.json"}, c);
+        }
+        catch (const InputError& e)
+        {
+            return std::string(e.what());
+        }
+        return std::string("merged");
+    };
+    CHECK(refusal({s0, s1}) == "merged");
+    CHECK(refusal({s0, s1Seed2}) ==
+          "b/shard.json: a shard of another campaign: its seed is 2, a/shard.json's is 1");
+    CHECK(refusal({s0}) == "merge: shard 1/2 is missing");
+    CHECK(refusal({s0, s0}) == "b/shard.json: shard 0/2 is given twice");
+    CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) == "b/shard.json: not a gjk-shard/1 file");
+}
+
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")
 {
     CampaignConfig c = smallConfig(2);

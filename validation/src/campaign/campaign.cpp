@@ -177,10 +177,18 @@ struct FamilyResult
     std::size_t cases = 0, rejected = 0;
 };
 
+// A rejected case, and where it stands in the campaign's case order (input, then case).
+struct RejectedCase
+{
+    std::size_t input = 0, index = 0;
+    Json entry; // report.json's {"name", "family", "reason"}
+};
+
 struct CampaignState
 {
+    std::vector<CampaignInput> inputs; // families[i].input points here
     std::vector<FamilyResult> families;
-    Json rejected = Json::array(); // the first kMaxRejectedListed
+    std::vector<RejectedCase> rejected; // the first kMaxRejectedListed in case order
     PhaseSeconds seconds;
 };
 
@@ -286,9 +294,9 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
     ++s.stops[std::size_t(v.stop)];
 }
 
-void foldChunk(FamilyResult& r, const CaseChunk& chunk, EvaluatedChunk& e,
-               const CampaignConfig& config, const EvalContext& ctx, Json& rejected,
-               std::ostream* perCase)
+void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, EvaluatedChunk& e,
+               const CampaignConfig& config, const EvalContext& ctx,
+               std::vector<RejectedCase>& rejected, std::ostream* perCase)
 {
     const std::size_t nv = ctx.variants.size();
     for (std::size_t i = 0; i < chunk.size(); ++i)
@@ -302,8 +310,10 @@ void foldChunk(FamilyResult& r, const CaseChunk& chunk, EvaluatedChunk& e,
         {
             ++r.rejected;
             if (rejected.size() < kMaxRejectedListed)
-                rejected.push_back(
-                    {{"name", chunk.labels[i]}, {"family", r.input->name}, {"reason", o.rejected}});
+                rejected.push_back({input, chunk.first + i,
+                                    {{"name", chunk.labels[i]},
+                                     {"family", r.input->name},
+                                     {"reason", o.rejected}}});
             continue;
         }
         for (std::size_t k = 0; k < nv; ++k)
@@ -321,10 +331,11 @@ void foldChunk(FamilyResult& r, const CaseChunk& chunk, EvaluatedChunk& e,
     }
 }
 
-// One input, streamed: its cases are generated or read chunk by chunk, evaluated, and folded.
-FamilyResult runInput(const CampaignInput& input, const CampaignConfig& config,
-                      const EvalContext& ctx, int threads, Progress& progress, CampaignState& state,
-                      std::ostream* perCase)
+// One input, streamed: its cases are generated or read chunk by chunk, and the shard's chunks
+// are evaluated and folded.
+FamilyResult runInput(std::size_t inputIndex, const CampaignInput& input,
+                      const CampaignConfig& config, Shard shard, const EvalContext& ctx,
+                      int threads, Progress& progress, CampaignState& state, std::ostream* perCase)
 {
     FamilyResult r{&input,
                    std::vector<Stats>(ctx.variants.size()),
@@ -332,12 +343,19 @@ FamilyResult runInput(const CampaignInput& input, const CampaignConfig& config,
                    WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))),
                    {}};
     auto t = Clock::now();
+    std::size_t chunkIndex = 0;
     input.stream(std::max<std::size_t>(1, config.chunkCases),
                  [&](CaseChunk& chunk)
                  {
                      state.seconds.inputs += elapsed(t, Clock::now());
-                     EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, state.seconds);
-                     foldChunk(r, chunk, e, config, ctx, state.rejected, perCase);
+                     if (shard.owns(inputIndex, chunkIndex++))
+                     {
+                         EvaluatedChunk e =
+                             evaluateChunk(chunk, ctx, threads, progress, state.seconds);
+                         foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected, perCase);
+                     }
+                     else
+                         progress.add(chunk.size());
                      t = Clock::now();
                  });
     state.seconds.inputs += elapsed(t, Clock::now());
@@ -552,35 +570,48 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
 }
 } // namespace
 
-Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
-                     std::ostream* perCase)
+namespace
 {
-    const auto tStart = Clock::now();
-    const int threads = resolveThreads(config.threads);
+// --- The campaign: fold (one process or one shard), then judge and report ----------------------
+
+EvalContext evalContext(const CampaignConfig& config)
+{
     EvalContext ctx;
     ctx.variants = config.variants;
     ctx.exactOptions.route = config.route;
+    return ctx;
+}
 
-    // Inputs -> truth -> variants -> statistics, input by input, chunk by chunk.
+// Inputs -> truth -> variants -> statistics, input by input, chunk by chunk (the shard's chunks
+// only); then the timed passes over the cases kept for them.
+CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                           Shard shard, const EvalContext& ctx, int threads, std::ostream* perCase)
+{
     CampaignState state;
+    state.inputs = std::move(inputs); // not resized below: families point into it
     std::size_t total = 0;
-    for (const auto& in : inputs)
+    for (const auto& in : state.inputs)
         total += in.count;
     {
         Progress progress(config.progress, "cases", total);
-        for (const auto& in : inputs)
-            state.families.push_back(runInput(in, config, ctx, threads, progress, state, perCase));
+        for (std::size_t i = 0; i < state.inputs.size(); ++i)
+            state.families.push_back(runInput(i, state.inputs[i], config, shard, ctx, threads,
+                                              progress, state, perCase));
     }
-
-    // Timing.
     const auto tTiming = Clock::now();
     if (config.timing)
         timeVariants(state, config, ctx);
     state.seconds.timing = elapsed(tTiming, Clock::now());
+    return state;
+}
+
+// Judgement and the report, from the folded (or merged) state.
+Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
+                        int threads, double seconds)
+{
     const std::size_t baseline = baselineIndex(ctx);
     setTimingRatios(state, baseline);
 
-    // Judgement and the report.
     Campaign camp;
     Json families = Json::array();
     bool anyFailed = false;
@@ -597,14 +628,16 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> in
 
     const std::string date = isoDateUtc(), revision = gitRevision();
     Json worst = worstCases(state, config, ctx, date, revision, camp);
+    Json rejectedList = Json::array();
+    for (const auto& r : state.rejected)
+        rejectedList.push_back(r.entry);
     Json report;
     report["schema"] = "gjk-report/1";
-    report["context"] =
-        contextOf(state, config, threads, date, revision, elapsed(tStart, Clock::now()));
+    report["context"] = contextOf(state, config, threads, date, revision, seconds);
     report["variants"] = variantsJson(ctx);
     report["baseline_variant"] = ctx.variants[baseline]->name;
     report["families"] = std::move(families);
-    report["rejected"] = std::move(state.rejected);
+    report["rejected"] = std::move(rejectedList);
     report["worst_cases_file"] = "worst-cases.json";
     report["worst"] = std::move(worst);
     report["exit_code"] = camp.exitCode;
@@ -613,11 +646,235 @@ Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> in
     return camp;
 }
 
+// --- A shard's state: what `run --shard` writes and `merge` reads ------------------------------
+
+// What makes two shards parts of one campaign: everything that changes a case, its evaluation
+// or the report, plus the code's revision.
+Json campaignIdentity(const CampaignConfig& config)
+{
+    Json variants = Json::array();
+    for (const auto* v : config.variants)
+        variants.push_back(v->name);
+    return Json{{"families", config.families},
+                {"case_files", config.caseFiles},
+                {"seed", config.seed},
+                {"variants", std::move(variants)},
+                {"exact_route", exact::routeName(config.route)},
+                {"worst_per_family", config.worstPerFamily},
+                {"timing", config.timing},
+                {"chunk_cases", config.chunkCases},
+                {"per_case", config.perCase},
+                {"git_revision", gitRevision()}};
+}
+
+Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard,
+                int threads)
+{
+    Json families = Json::array();
+    for (const auto& f : state.families)
+    {
+        Json stats = Json::array(), timing = Json::array();
+        for (const auto& s : f.stats)
+        {
+            stats.push_back(s.state());
+            timing.push_back({s.nsPerQuery, s.nsMin, s.nsMax, s.timingPasses});
+        }
+        std::vector<Case> worst;
+        Json worstAt = Json::array();
+        for (const auto& w : f.worst.cases())
+        {
+            worst.push_back(w.c);
+            worstAt.push_back(w.index);
+        }
+        families.push_back({{"name", f.input->name},
+                            {"cases", f.cases},
+                            {"rejected", f.rejected},
+                            {"stats", std::move(stats)},
+                            {"timing", std::move(timing)},
+                            {"makeup", f.makeup.state()},
+                            {"worst_index", std::move(worstAt)},
+                            {"worst", caseFileText({}, worst)}});
+    }
+    Json rejected = Json::array();
+    for (const auto& r : state.rejected)
+        rejected.push_back({{"input", r.input}, {"index", r.index}, {"entry", r.entry}});
+    const PhaseSeconds& t = state.seconds;
+    return Json{{"schema", kShardSchema},
+                {"campaign", campaignIdentity(config)},
+                {"shard", {{"index", shard.index}, {"count", shard.count}}},
+                {"command", config.command},
+                {"threads", threads},
+                {"elapsed_s",
+                 {t.inputs, t.exact, t.gjk, t.witness, t.timing}},
+                {"families", std::move(families)},
+                {"rejected", std::move(rejected)}};
+}
+
+// The shard states' campaign configuration (the command line of `merge` gives the rest).
+CampaignConfig configOf(const Json& identity, const CampaignConfig& base)
+{
+    CampaignConfig c = base;
+    c.families = identity.at("families").get<std::vector<std::string>>();
+    c.caseFiles = identity.at("case_files").get<std::vector<std::string>>();
+    c.seed = identity.at("seed").get<std::uint64_t>();
+    c.variants.clear();
+    for (const auto& n : identity.at("variants"))
+        c.variants.push_back(findVariant(n.get<std::string>()));
+    if (!exact::parseRoute(identity.at("exact_route").get<std::string>(), c.route))
+        throw InputError("merge: an unknown exact route");
+    c.worstPerFamily = identity.at("worst_per_family").get<int>();
+    c.timing = identity.at("timing").get<bool>();
+    c.chunkCases = identity.at("chunk_cases").get<std::size_t>();
+    c.perCase = identity.at("per_case").get<bool>();
+    return c;
+}
+
+// One shard's state folded into `state` (whose inputs are the campaign's): statistics, make-up,
+// the rejected cases, the worst cases (evaluated again here: the same code gives the same
+// outcome), and the timing of the inputs whose first chunk the shard held.
+void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalContext& ctx,
+                std::size_t worstPerFamily)
+{
+    const Json& families = j.at("families");
+    if (families.size() != state.families.size())
+        throw InputError("merge: the shards hold different inputs");
+    for (std::size_t i = 0; i < state.families.size(); ++i)
+    {
+        FamilyResult& f = state.families[i];
+        const Json& s = families[i];
+        if (s.at("name").get<std::string>() != f.input->name)
+            throw InputError(fmt::format("merge: input {} is '{}' in a shard, '{}' here", i,
+                                         excerpt(s.at("name").get<std::string>()),
+                                         excerpt(f.input->name)));
+        f.cases += s.at("cases").get<std::size_t>();
+        f.rejected += s.at("rejected").get<std::size_t>();
+        const Json& stats = s.at("stats");
+        if (stats.size() != f.stats.size())
+            throw InputError("merge: the shards ran different variants");
+        const bool timedFirstChunk = shard.owns(i, 0);
+        for (std::size_t k = 0; k < f.stats.size(); ++k)
+        {
+            f.stats[k].merge(Stats::fromState(stats[k]));
+            if (timedFirstChunk)
+            {
+                const Json& t = s.at("timing")[k];
+                f.stats[k].nsPerQuery = t[0].get<double>();
+                f.stats[k].nsMin = t[1].get<double>();
+                f.stats[k].nsMax = t[2].get<double>();
+                f.stats[k].timingPasses = t[3].get<int>();
+            }
+        }
+        f.makeup.merge(MakeupFold::fromState(f.input->makeup, s.at("makeup")));
+        const CaseFile worst = parseCaseFile(s.at("worst").get<std::string>(), "shard worst");
+        const Json& at = s.at("worst_index");
+        for (std::size_t w = 0; w < worst.entries.size() && w < worstPerFamily; ++w)
+        {
+            const Case& c = worst.entries[w].c;
+            f.worst.offer(at.at(w).get<std::size_t>(), c, evaluateCase(c, ctx));
+        }
+    }
+    for (const auto& r : j.at("rejected"))
+        state.rejected.push_back({r.at("input").get<std::size_t>(),
+                                  r.at("index").get<std::size_t>(), r.at("entry")});
+    const Json& e = j.at("elapsed_s");
+    state.seconds.inputs += e[0].get<double>();
+    state.seconds.exact += e[1].get<double>();
+    state.seconds.gjk += e[2].get<double>();
+    state.seconds.witness += e[3].get<double>();
+    state.seconds.timing += e[4].get<double>();
+}
+} // namespace
+
+Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                     std::ostream* perCase)
+{
+    const auto tStart = Clock::now();
+    const int threads = resolveThreads(config.threads);
+    const EvalContext ctx = evalContext(config);
+    CampaignState state = foldCampaign(config, std::move(inputs), Shard{}, ctx, threads, perCase);
+    return finishCampaign(state, config, ctx, threads, elapsed(tStart, Clock::now()));
+}
+
+Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,
+              std::ostream* perCase)
+{
+    const int threads = resolveThreads(config.threads);
+    const EvalContext ctx = evalContext(config);
+    const CampaignState state =
+        foldCampaign(config, std::move(inputs), shard, ctx, threads, perCase);
+    return shardState(state, config, shard, threads);
+}
+
+Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::string>& names,
+                     const CampaignConfig& base)
+{
+    const auto tStart = Clock::now();
+    if (shards.empty())
+        throw InputError("merge: no shard given");
+    // Every shard of one campaign, each once.
+    const auto identityOf = [&](std::size_t i) -> const Json&
+    {
+        const Json& j = shards[i];
+        if (!j.is_object() || j.value("schema", "") != kShardSchema)
+            throw InputError(fmt::format("{}: not a {} file", shownPath(names[i]), kShardSchema));
+        return j.at("campaign");
+    };
+    const Json& identity = identityOf(0);
+    const std::size_t count = shards[0].at("shard").at("count").get<std::size_t>();
+    std::vector<bool> seen(count, false);
+    for (std::size_t i = 0; i < shards.size(); ++i)
+    {
+        const Json& id = identityOf(i);
+        for (const auto& [key, value] : identity.items())
+            if (id.value(key, Json()) != value)
+                throw InputError(fmt::format(
+                    "{}: a shard of another campaign: its {} is {}, {}'s is {}",
+                    shownPath(names[i]), key, excerpt(id.value(key, Json()).dump()),
+                    shownPath(names[0]), excerpt(value.dump())));
+        const Json& sh = shards[i].at("shard");
+        const auto index = sh.at("index").get<std::size_t>();
+        if (sh.at("count").get<std::size_t>() != count || index >= count)
+            throw InputError(fmt::format("{}: shard {}/{} is not one of {} shards",
+                                         shownPath(names[i]), index,
+                                         sh.at("count").get<std::size_t>(), count));
+        if (seen[index])
+            throw InputError(
+                fmt::format("{}: shard {}/{} is given twice", shownPath(names[i]), index, count));
+        seen[index] = true;
+    }
+    for (std::size_t i = 0; i < count; ++i)
+        if (!seen[i])
+            throw InputError(fmt::format("merge: shard {}/{} is missing", i, count));
+
+    CampaignConfig config = configOf(identity, base);
+    const EvalContext ctx = evalContext(config);
+    CampaignState state;
+    state.inputs = campaignInputs(config);
+    for (const auto& in : state.inputs)
+        state.families.push_back({&in, std::vector<Stats>(ctx.variants.size()),
+                                  MakeupFold(in.makeup),
+                                  WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))),
+                                  {}});
+    for (std::size_t i = 0; i < shards.size(); ++i)
+        mergeShard(state, shards[i],
+                   Shard{shards[i].at("shard").at("index").get<std::size_t>(), count}, ctx,
+                   std::size_t(std::max(0, config.worstPerFamily)));
+    std::sort(state.rejected.begin(), state.rejected.end(),
+              [](const RejectedCase& a, const RejectedCase& b)
+              { return a.input != b.input ? a.input < b.input : a.index < b.index; });
+    if (state.rejected.size() > kMaxRejectedListed)
+        state.rejected.resize(kMaxRejectedListed);
+    int threads = 0;
+    for (const auto& j : shards)
+        threads += j.at("threads").get<int>();
+    return finishCampaign(state, config, ctx, threads, elapsed(tStart, Clock::now()));
+}
+
 namespace
 {
 // Every file a report directory holds; writeCampaign replaces the directory as a whole.
-const char* const kReportFiles[] = {"report.json", "report.md", "worst-cases.json", "cases.jsonl",
-                                    "index.html"};
+const char* const kReportFiles[] = {"report.json", "report.md",  "worst-cases.json",
+                                    "cases.jsonl", "index.html", "shard.json"};
 } // namespace
 
 void checkReportDir(const std::string& outDir)

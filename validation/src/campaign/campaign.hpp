@@ -79,6 +79,32 @@ struct Campaign
 Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
                      std::ostream* perCase = nullptr);
 
+// A part of a campaign that one process evaluates: chunk j of input f (its cases j*chunk ..)
+// belongs to shard (f + j) mod count. Round robin spreads the costly inputs over the shards, and
+// the shift by f gives each shard the first chunk of some inputs (whose cases it times).
+struct Shard
+{
+    std::size_t index = 0, count = 1;
+    bool owns(std::size_t input, std::size_t chunk) const
+    {
+        return (input + chunk) % count == index;
+    }
+};
+inline constexpr const char* kShardSchema = "gjk-shard/1";
+
+// One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,
+// docs/validation.md "Shards and merge"). Exact: histogram sums are exact, every tie is broken by
+// case order, so merging the shards gives the one-process report, timing fields aside.
+Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,
+              std::ostream* perCase = nullptr);
+
+// The campaign of every shard's state (`names` name them in errors): refuses (InputError) shards
+// of different campaigns (inputs, seed, variants, options, revision), a shard given twice or
+// missing. `base` gives what the shards do not fix (threads, progress, the command). The case
+// files are read again from their paths, for their names and make-up.
+Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::string>& names,
+                     const CampaignConfig& base);
+
 // Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
 // directory, holds files that are not a report's, parent not creatable or not writable).
 void checkReportDir(const std::string& outDir);

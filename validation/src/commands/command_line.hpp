@@ -25,6 +25,7 @@ inline constexpr int kMaxSearchPopulation = 1000;
 inline constexpr std::uint64_t kMaxSearchEvaluations = 1000000000,
                                kDefaultSearchEvaluations = 10000;
 inline constexpr std::size_t kMaxChunkCases = 1000000;
+inline constexpr std::size_t kMaxShards = 100000; // run --shard I/N
 
 // Memory a command needs per case it holds, measured as peak RSS growth over 5000 .. 40000
 // `random` cases (GCC 12 release build, every variant): generate 1.4 KB, bench 1.5 KB (rounded
@@ -55,6 +56,7 @@ Subcommand addBench(CLI::App& app, const CommandLine& line);
 Subcommand addSearch(CLI::App& app, const CommandLine& line);
 Subcommand addList(CLI::App& app, const CommandLine& line);
 Subcommand addCompare(CLI::App& app, const CommandLine& line);
+Subcommand addMerge(CLI::App& app, const CommandLine& line);
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.

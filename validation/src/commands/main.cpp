@@ -6,6 +6,7 @@
 //   search    mutate cases toward the worst error / bound ratio (adversarial search)
 //   list      the families and variants
 //   compare   two reports: the statistics that got worse or better, exit 1 on a regression
+//   merge     the shards of a campaign (run --shard I/N) into its report
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "report/report.hpp"
@@ -34,7 +35,8 @@ int dispatch(int argc, char** argv)
     app.set_help_all_flag("--help-all", "help for every subcommand");
     const Subcommand subcommands[] = {
         addRun(app, line),    addGenerate(app, line), addExplain(app, line), addBench(app, line),
-        addSearch(app, line), addList(app, line),     addCompare(app, line)};
+        addSearch(app, line), addList(app, line),     addCompare(app, line),
+        addMerge(app, line)};
     try
     {
         app.parse(argc, argv);

@@ -26,7 +26,20 @@ struct RunOptions
                 seed = "1";
     std::size_t chunkCases = kDefaultChunkCases;
     bool noProgress = false, noTiming = false, verbose = false;
+    std::string shard; // "I/N"
 };
+
+// "I/N", 0 <= I < N <= kMaxShards: InputError otherwise.
+Shard parseShard(const std::string& text)
+{
+    unsigned long long i = 0, n = 0;
+    char slash = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%llu%c%llu%c", &i, &slash, &n, &extra) != 3 || slash != '/' ||
+        n < 1 || n > kMaxShards || i >= n || text.find_first_of("+- ") != std::string::npos)
+        throw InputError(fmt::format("--shard {}: expected I/N with 0 <= I < N <= {}",
+                                     excerpt(text), kMaxShards));
+    return Shard{std::size_t(i), std::size_t(n)};
+}
 
 // Every argument is checked here, before any work starts (InputError: exit code 2).
 CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
@@ -58,10 +71,34 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     return cfg;
 }
 
+// `run --shard I/N`: the shard's state into DIR/shard.json; `merge` makes the report.
+int shardCommand(RunOptions& o, const CampaignConfig& cfg)
+{
+    const Shard shard = parseShard(o.shard);
+    if (cfg.perCase)
+        throw InputError("--per-case: not with --shard (merge writes no cases.jsonl)");
+    std::vector<CampaignInput> inputs = campaignInputs(cfg);
+    StagedDir out(reportDirPath(o.outDir));
+    const Json state = runShard(cfg, std::move(inputs), shard);
+    out.write("shard.json", state.dump() + "\n");
+    out.commit();
+    std::size_t cases = 0;
+    for (const auto& f : state.at("families"))
+        cases += f.at("cases").get<std::size_t>();
+    std::printf("shard %zu/%zu: %zu cases of %zu inputs; merge the shards with `gjk-validate "
+                "merge`\nshard: %s\n",
+                shard.index, shard.count, cases, state.at("families").size(),
+                (out.dir() / "shard.json").c_str());
+    flushStdout();
+    return kExitPass;
+}
+
 int runCommand(RunOptions& o, const CommandLine& line)
 {
     const CampaignConfig cfg = checkedConfig(o, line);
     testFault();
+    if (!o.shard.empty())
+        return shardCommand(o, cfg);
     std::vector<CampaignInput> inputs = campaignInputs(cfg);
     // Staged beside DIR and swapped in at the end: DIR holds this run or the previous one.
     StagedDir out(reportDirPath(o.outDir));
@@ -134,6 +171,10 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
                     "cases evaluated together, 1..1e6: memory follows it, the report does not")
         ->capture_default_str();
     run->add_flag("--no-timing", o->noTiming, "skip the timed passes (ns_per_query is null)");
+    run->add_option("--shard", o->shard,
+                    "I/N: evaluate only shard I of N (chunks round robin) and write DIR/shard.json; "
+                    "`gjk-validate merge` makes the report of all N")
+        ->type_name("I/N");
     run->add_flag("--verbose", o->verbose,
                   "also print every family x variant to the terminal (the summary lists only "
                   "those that failed or misclassified; report.md has the full table)");

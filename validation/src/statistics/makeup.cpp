@@ -196,6 +196,66 @@ void MakeupFold::add(const Case& c, const exact::Result& truth)
     }
 }
 
+void MakeupFold::merge(const MakeupFold& o)
+{
+    if (o.checks_.size() != checks_.size())
+        throw std::logic_error("MakeupFold::merge: folds of different checks");
+    cases_ += o.cases_;
+    for (std::size_t i = 0; i < checks_.size(); ++i)
+    {
+        Check& k = checks_[i];
+        const Check& b = o.checks_[i];
+        switch (foldOf(k.spec.metric))
+        {
+        case Fold::Fraction:
+            k.value += b.value; // whole counts below 2^53: exact
+            break;
+        case Fold::Min:
+            k.value = std::min(k.value, b.value);
+            break;
+        case Fold::Max:
+            k.value = std::max(k.value, b.value);
+            break;
+        case Fold::Distinct: // min(kMaxDistinctCounted, distinct values of both), as add() keeps
+            for (double v : b.values)
+                if (k.values.size() < kMaxDistinctCounted)
+                    k.values.insert(v);
+            break;
+        }
+    }
+}
+
+Json MakeupFold::state() const
+{
+    Json checks = Json::array();
+    for (const auto& k : checks_)
+        checks.push_back({{"check", k.spec.check},
+                          {"value", k.value},
+                          {"values", std::vector<double>(k.values.begin(), k.values.end())}});
+    return Json{{"cases", cases_}, {"checks", std::move(checks)}};
+}
+
+MakeupFold MakeupFold::fromState(std::vector<MakeupSpec> specs, const Json& j)
+{
+    MakeupFold f(std::move(specs));
+    const Json& checks = j.at("checks");
+    if (checks.size() != f.checks_.size())
+        throw std::runtime_error("make-up state: a different number of checks");
+    f.cases_ = j.at("cases").get<std::uint64_t>();
+    for (std::size_t i = 0; i < f.checks_.size(); ++i)
+    {
+        Check& k = f.checks_[i];
+        if (checks[i].at("check").get<std::string>() != k.spec.check)
+            throw std::runtime_error("make-up state: check '" + k.spec.check + "' is missing");
+        // A minimum may be +inf (no case yet): JSON has no infinity, and nlohmann writes null.
+        const Json& v = checks[i].at("value");
+        k.value = v.is_null() ? kInf : v.get<double>();
+        for (double x : checks[i].at("values").get<std::vector<double>>())
+            k.values.insert(x);
+    }
+    return f;
+}
+
 namespace
 {
 // The range a check is judged by at n cases, and why it differs from the table's (makeup.hpp).

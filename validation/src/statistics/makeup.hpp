@@ -36,9 +36,14 @@ class MakeupFold
 {
   public:
     explicit MakeupFold(std::vector<MakeupSpec> specs);
-    // A valid case and its exact truth, in case order.
+    // A valid case and its exact truth, in any order: counts, minima, maxima and sets commute.
     void add(const Case& c, const exact::Result& truth);
+    // Another fold of the same specs (a shard's): the fold of both sets of cases.
+    void merge(const MakeupFold& other);
     std::vector<MakeupResult> results() const;
+    // The running values, exactly (shards, checkpoints); the specs come from the input.
+    Json state() const;
+    static MakeupFold fromState(std::vector<MakeupSpec> specs, const Json& j);
 
   private:
     struct Check

@@ -1,0 +1,104 @@
+// gjk-validate merge: the shards of one campaign (`run --shard I/N`, each a shard.json) into the
+// campaign's report, the same as the one-process run's, timing fields aside.
+#include "campaign/campaign.hpp"
+#include "commands/command_line.hpp"
+#include "common/output.hpp"
+#include "inputs/cases.hpp"
+#include "report/report.hpp"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+
+struct Options
+{
+    std::vector<std::string> shards;
+    std::string outDir = "reports/latest/";
+    bool verbose = false;
+};
+
+// A shard directory (its shard.json) or the file itself, parsed; InputError naming the file.
+Json readShard(const std::string& path)
+{
+    fs::path p = path;
+    std::error_code ec;
+    if (fs::is_directory(p, ec))
+        p /= "shard.json";
+    const std::string shown = shownPath(p.string());
+    std::ifstream in(p, std::ios::binary);
+    if (!in)
+        throw InputError(fmt::format("merge: {}: cannot open: {}", shown, std::strerror(errno)));
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    try
+    {
+        return Json::parse(text);
+    }
+    catch (const Json::parse_error& e)
+    {
+        const auto [line, col] = lineColumn(text, e.byte == 0 ? 0 : e.byte - 1);
+        throw InputError(fmt::format("merge: {}:{}:{}: not JSON", shown, line, col));
+    }
+}
+
+int mergeCommand(const Options& o, const CommandLine& line)
+{
+    checkReportDir(o.outDir);
+    testFault();
+    std::vector<Json> shards;
+    for (const auto& s : o.shards)
+        shards.push_back(readShard(s));
+    CampaignConfig base;
+    base.command = line.text();
+    Campaign camp;
+    try
+    {
+        camp = mergeShards(shards, o.shards, base);
+    }
+    catch (const Json::exception& e) // a field missing or of the wrong type
+    {
+        throw InputError(fmt::format("merge: a shard file is not a {} state: {}", kShardSchema,
+                                     excerpt(e.what(), 120)));
+    }
+    StagedDir out(reportDirPath(o.outDir));
+    const std::string page = writeCampaign(camp, out);
+    if (o.verbose)
+        std::fputs(terminalTable(camp.report).c_str(), stdout);
+    std::fputs(terminalSummary(camp.report).c_str(), stdout);
+    std::printf("report: %s\n", page.c_str());
+    flushStdout();
+    return camp.exitCode;
+}
+} // namespace
+
+Subcommand addMerge(CLI::App& app, const CommandLine& line)
+{
+    auto o = std::make_shared<Options>();
+    auto* m = app.add_subcommand(
+        "merge", "Merge the shards of one campaign (each written by `run --shard I/N --out DIR`) "
+                 "into its report: the same report.json as the one-process run, timing aside.");
+    m->footer(exitCodesHelp());
+    m->add_option("shards", o->shards, "every shard's DIR (or DIR/shard.json), in any order")
+        ->required()
+        ->type_name("DIR");
+    m->add_option("--out", o->outDir,
+                  "output directory, replaced as a whole (it may hold only a previous report)")
+        ->capture_default_str();
+    m->add_flag("--verbose", o->verbose, "also print every family x variant to the terminal");
+    return {m, [o, line] { return mergeCommand(*o, line); }};
+}
+
+} // namespace gjkval
