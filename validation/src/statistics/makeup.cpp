@@ -282,15 +282,16 @@ Judged judgedRange(const MakeupSpec& s, std::uint64_t n)
         {
         case Fold::Fraction:
             return {s.min, s.max, true, fewer + "reported, not judged"};
-        case Fold::Min: // an infinite bound leaves nothing to judge
-            return {s.min, kInf, s.min == -kInf,
-                    fewer + (s.min == -kInf ? "reported, not judged"
-                                            : "only the lower bound is judged")};
+        case Fold::Min:
+            if (s.min == -kInf) // no bound left to judge: reported with the table's range
+                return {s.min, s.max, true, fewer + "reported, not judged"};
+            return {s.min, kInf, false, fewer + "only the lower bound is judged"};
         case Fold::Max:
         case Fold::Distinct:
-            return {fold == Fold::Max ? -kInf : 1, s.max, s.max == kInf,
-                    fewer + (s.max == kInf ? "reported, not judged"
-                                           : "only the upper bound is judged")};
+            if (s.max == kInf)
+                return {s.min, s.max, true, fewer + "reported, not judged"};
+            return {fold == Fold::Max ? -kInf : 1, s.max, false,
+                    fewer + "only the upper bound is judged"};
         }
     }
     const std::uint64_t k = n / f, r = n % f;

@@ -8,8 +8,8 @@
 // - n < F: only the side every case obeys. A hard family's n cases are n of its F built-in ones
 //   (families.cpp, spreadPositions), an engine family's are drawn from the same run: a minimum
 //   keeps its lower bound, a maximum and a distinct count their upper bound; the other side (some
-//   case reaching the extreme) and fractions need all F cases, so a fraction is reported, not
-//   judged.
+//   case reaching the extreme) and fractions need all F cases, so a fraction, or an extreme whose
+//   kept bound is infinite, is reported, not judged.
 // - n > F, a sweep (hard: case i is sweep position i mod F): floor(n/F) complete sweeps, each
 //   within the range, and r = n mod F further cases that may all count or none, so a fraction's
 //   range becomes [kF min / n, (kF max + r) / n] (k = floor(n/F)) and a distinct count's upper
