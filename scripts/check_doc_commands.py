@@ -64,7 +64,7 @@ RULES = [
      "each Google Benchmark program runs for minutes"),
 ]
 
-SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list"]
+SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare"]
 # A placeholder: <...>, [...], A|B, or one of the upper-case names the docs use for one.
 PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
                          r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")

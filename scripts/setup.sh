@@ -9,8 +9,10 @@ set -euo pipefail
 
 # catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 # libbox2d-dev (Box2D 2.4.1): the runner's engine families step Box2D worlds.
+# openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev)
+          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
+          openmpi-bin libopenmpi-dev)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3)
 fi

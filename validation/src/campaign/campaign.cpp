@@ -806,7 +806,7 @@ Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, S
 }
 
 Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::string>& names,
-                     const CampaignConfig& base)
+                     const CampaignConfig& base, double wallSeconds)
 {
     const auto tStart = Clock::now();
     if (shards.empty())
@@ -867,7 +867,8 @@ Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::str
     int threads = 0;
     for (const auto& j : shards)
         threads += j.at("threads").get<int>();
-    return finishCampaign(state, config, ctx, threads, elapsed(tStart, Clock::now()));
+    return finishCampaign(state, config, ctx, threads,
+                          wallSeconds >= 0 ? wallSeconds : elapsed(tStart, Clock::now()));
 }
 
 namespace

@@ -102,8 +102,10 @@ Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, S
 // of different campaigns (inputs, seed, variants, options, revision), a shard given twice or
 // missing. `base` gives what the shards do not fix (threads, progress, the command). The case
 // files are read again from their paths, for their names and make-up.
+// The report's elapsed_s.total is `wallSeconds` when given (mpirun: the whole run), else the
+// merge's own time; the phases are the shards' sums.
 Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::string>& names,
-                     const CampaignConfig& base);
+                     const CampaignConfig& base, double wallSeconds = -1);
 
 // Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
 // directory, holds files that are not a report's, parent not creatable or not writable).

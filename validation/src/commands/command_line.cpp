@@ -1,7 +1,9 @@
 #include "commands/command_line.hpp"
 
+#include "campaign/campaign.hpp"
 #include "common/output.hpp"
 #include "inputs/families.hpp"
+#include "report/report.hpp"
 
 #include <fmt/format.h>
 
@@ -161,4 +163,14 @@ void flushStdout()
     if (std::fflush(stdout) != 0 || std::ferror(stdout))
         throw OutputError(fmt::format("standard output: write failed: {}", std::strerror(errno)));
 }
+void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose)
+{
+    const std::string page = writeCampaign(camp, out);
+    if (verbose)
+        std::fputs(terminalTable(camp.report).c_str(), stdout);
+    std::fputs(terminalSummary(camp.report).c_str(), stdout);
+    std::printf("report: %s\n", page.c_str());
+    flushStdout();
+}
+
 } // namespace gjkval

@@ -58,6 +58,12 @@ Subcommand addList(CLI::App& app, const CommandLine& line);
 Subcommand addCompare(CLI::App& app, const CommandLine& line);
 Subcommand addMerge(CLI::App& app, const CommandLine& line);
 
+// run's and merge's last step: the report into `out` (committed), then the terminal summary
+// (with every family x variant when `verbose`) and the page's path.
+struct Campaign;
+class StagedDir;
+void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose);
+
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.
 void checkArgsUtf8(int argc, char** argv);

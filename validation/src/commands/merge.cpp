@@ -74,12 +74,7 @@ int mergeCommand(const Options& o, const CommandLine& line)
                                      excerpt(e.what(), 120)));
     }
     StagedDir out(reportDirPath(o.outDir));
-    const std::string page = writeCampaign(camp, out);
-    if (o.verbose)
-        std::fputs(terminalTable(camp.report).c_str(), stdout);
-    std::fputs(terminalSummary(camp.report).c_str(), stdout);
-    std::printf("report: %s\n", page.c_str());
-    flushStdout();
+    writeReportAndSummary(camp, out, o.verbose);
     return camp.exitCode;
 }
 } // namespace

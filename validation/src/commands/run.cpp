@@ -9,10 +9,17 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <fstream>
 #include <memory>
+#include <thread>
 #include <unistd.h>
+
+#if defined(GJK2D_HAVE_MPI)
+#include <mpi.h>
+#endif
 
 namespace gjkval
 {
@@ -93,10 +100,112 @@ int shardCommand(RunOptions& o, const CampaignConfig& cfg)
     return kExitPass;
 }
 
+// The number of processes a launcher started this one among (mpirun sets OMPI_COMM_WORLD_SIZE,
+// Slurm's and MPICH's PMI PMI_SIZE), and how many of them share this node; 1 without a launcher.
+std::size_t launcherSize(const char* variable)
+{
+    const char* v = std::getenv(variable);
+    const long n = v ? std::strtol(v, nullptr, 10) : 1;
+    return n > 1 ? std::size_t(n) : 1;
+}
+std::size_t worldSize()
+{
+    return std::max(launcherSize("OMPI_COMM_WORLD_SIZE"), launcherSize("PMI_SIZE"));
+}
+
+#if defined(GJK2D_HAVE_MPI)
+// Under mpirun: rank r of n runs shard r/n; rank 0 gathers the shard states, merges them and
+// writes the report (the one-process report, timing fields aside; each rank times the inputs
+// whose first chunk it holds, while the other ranks work). Every rank returns the campaign's
+// exit code.
+int mpiCommand(const RunOptions& o, CampaignConfig cfg)
+{
+    if (!o.shard.empty())
+        throw InputError("--shard: not under mpirun, where every rank is a shard");
+    if (cfg.perCase)
+        throw InputError("--per-case: not under mpirun (merge writes no cases.jsonl)");
+    MPI_Init(nullptr, nullptr);
+    const double start = MPI_Wtime();
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    if (cfg.threads == 0) // the node's cores shared among its ranks
+        cfg.threads = int(std::max<std::size_t>(
+            1, std::thread::hardware_concurrency() /
+                   std::max<std::size_t>(1, launcherSize("OMPI_COMM_WORLD_LOCAL_SIZE"))));
+    cfg.progress = cfg.progress && rank == 0;
+    const std::string state =
+        runShard(cfg, campaignInputs(cfg), Shard{std::size_t(rank), std::size_t(size)}).dump();
+
+    const int length = int(state.size());
+    std::vector<int> lengths(static_cast<std::size_t>(size)), offsets(lengths.size());
+    MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::string all;
+    if (rank == 0)
+    {
+        for (int r = 1; r < size; ++r)
+            offsets[std::size_t(r)] = offsets[std::size_t(r) - 1] + lengths[std::size_t(r) - 1];
+        all.resize(std::size_t(offsets.back() + lengths.back()));
+    }
+    MPI_Gatherv(state.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
+                MPI_CHAR, 0, MPI_COMM_WORLD);
+
+    int code = kExitPass;
+    std::exception_ptr error;
+    if (rank == 0)
+        try
+        {
+            std::vector<Json> shards;
+            std::vector<std::string> names;
+            for (int r = 0; r < size; ++r)
+            {
+                shards.push_back(Json::parse(all.substr(std::size_t(offsets[std::size_t(r)]),
+                                                        std::size_t(lengths[std::size_t(r)]))));
+                names.push_back(fmt::format("rank {}", r));
+            }
+            const Campaign camp = mergeShards(shards, names, cfg, MPI_Wtime() - start);
+            StagedDir out(reportDirPath(o.outDir));
+            writeReportAndSummary(camp, out, o.verbose);
+            code = camp.exitCode;
+        }
+        catch (const InputError&)
+        {
+            error = std::current_exception();
+            code = kExitInput;
+        }
+        catch (const OutputError&)
+        {
+            error = std::current_exception();
+            code = kExitResources;
+        }
+        catch (...)
+        {
+            error = std::current_exception();
+            code = kExitInternal;
+        }
+    MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    MPI_Finalize();
+    if (error)
+        std::rethrow_exception(error); // main() reports it, with the same exit code
+    return code;
+}
+#endif
+
 int runCommand(RunOptions& o, const CommandLine& line)
 {
     const CampaignConfig cfg = checkedConfig(o, line);
     testFault();
+    if (worldSize() > 1)
+    {
+#if defined(GJK2D_HAVE_MPI)
+        return mpiCommand(o, cfg);
+#else
+        throw InputError(fmt::format(
+            "started as one of {} processes (mpirun?), but this gjk-validate is built without "
+            "MPI (GJK2D_WITH_MPI, docs/validation.md): each would run the whole campaign",
+            worldSize()));
+#endif
+    }
     if (!o.shard.empty())
         return shardCommand(o, cfg);
     std::vector<CampaignInput> inputs = campaignInputs(cfg);
@@ -118,12 +227,7 @@ int runCommand(RunOptions& o, const CommandLine& line)
             throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
                                           excerpt(out.dir().string()), std::strerror(errno)));
     }
-    const std::string page = writeCampaign(camp, out);
-    if (o.verbose)
-        std::fputs(terminalTable(camp.report).c_str(), stdout);
-    std::fputs(terminalSummary(camp.report).c_str(), stdout);
-    std::printf("report: %s\n", page.c_str());
-    flushStdout();
+    writeReportAndSummary(camp, out, o.verbose);
     return camp.exitCode;
 }
 } // namespace
