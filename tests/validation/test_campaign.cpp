@@ -192,24 +192,35 @@ TEST_CASE("merging the shards of a campaign gives the one-process report", "[cam
     c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
     c.timing = false;
     c.worstPerFamily = 2;
-    c.perCase = false;
+    c.perCase = true;
     c.chunkCases = 7;
     const Run whole = run(c);
     REQUIRE(whole.report["context"]["cases_rejected"] == 7);
+    std::string wholeLines;
+    for (const auto& l : whole.perCaseLines)
+        wholeLines += l + "\n";
     for (std::size_t n : {1u, 2u, 3u, 5u, 40u})
     {
         INFO(n << " shards");
         std::vector<Json> shards;
         std::vector<std::string> names;
+        std::vector<std::stringstream> lines(n);
         for (std::size_t i = n; i-- > 0;) // the last shard first
         {
-            shards.push_back(Json::parse(runShard(c, campaignInputs(c), Shard{i, n}).dump()));
+            shards.push_back(
+                Json::parse(runShard(c, campaignInputs(c), Shard{i, n}, &lines[i]).dump()));
             names.push_back("shard " + std::to_string(i));
         }
         const Campaign merged = mergeShards(shards, names, c);
         CHECK(stripVolatile(merged.report) == stripVolatile(whole.report));
         CHECK(caseFileText({}, merged.worstCases) == caseFileText({}, whole.worstCases));
         CHECK(merged.exitCode == whole.exitCode);
+        std::vector<std::istream*> inOrder;
+        for (auto& l : lines)
+            inOrder.push_back(&l);
+        std::ostringstream joined;
+        joinPerCase(merged.report, c.chunkCases, inOrder, joined);
+        CHECK(joined.str() == wholeLines);
     }
 }
 

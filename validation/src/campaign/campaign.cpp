@@ -871,6 +871,35 @@ Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::str
                           wallSeconds >= 0 ? wallSeconds : elapsed(tStart, Clock::now()));
 }
 
+void joinPerCase(const Json& report, std::size_t chunkCases,
+                 const std::vector<std::istream*>& shardLines, std::ostream& out)
+{
+    const Shard rule{0, shardLines.size()};
+    std::string line;
+    const Json& families = report.at("families");
+    for (std::size_t f = 0; f < families.size(); ++f)
+    {
+        const auto cases = families[f].at("cases").get<std::size_t>();
+        for (std::size_t first = 0, j = 0; first < cases; first += chunkCases, ++j)
+        {
+            const std::size_t s = (f + j) % rule.count; // Shard::owns
+            for (std::size_t i = first; i < std::min(cases, first + chunkCases); ++i)
+            {
+                if (!std::getline(*shardLines[s], line))
+                    throw InputError(fmt::format("merge: shard {}'s cases.jsonl ends before "
+                                                 "case {} of {}",
+                                                 s, i, excerpt(families[f].at("name").dump())));
+                out << line << '\n';
+            }
+        }
+    }
+    for (std::size_t s = 0; s < shardLines.size(); ++s)
+        if (std::getline(*shardLines[s], line))
+            throw InputError(fmt::format("merge: shard {}'s cases.jsonl has more lines than its "
+                                         "cases",
+                                         s));
+}
+
 namespace
 {
 // Every file a report directory holds; writeCampaign replaces the directory as a whole.

@@ -107,6 +107,12 @@ Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, S
 Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::string>& names,
                      const CampaignConfig& base, double wallSeconds = -1);
 
+// cases.jsonl of a sharded campaign: `shardLines[s]` streams shard s's lines (its chunks, in
+// order); they are written to `out` in case order, following the chunk rule of Shard and the
+// inputs' case counts in `report`. InputError when a shard has too few or too many lines.
+void joinPerCase(const Json& report, std::size_t chunkCases,
+                 const std::vector<std::istream*>& shardLines, std::ostream& out);
+
 // Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
 // directory, holds files that are not a report's, parent not creatable or not writable).
 void checkReportDir(const std::string& outDir);

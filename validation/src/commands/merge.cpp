@@ -31,13 +31,20 @@ struct Options
     bool verbose = false;
 };
 
-// A shard directory (its shard.json) or the file itself, parsed; InputError naming the file.
-Json readShard(const std::string& path)
+// A shard directory's shard.json, or the file itself.
+fs::path shardPath(const std::string& path)
 {
     fs::path p = path;
     std::error_code ec;
     if (fs::is_directory(p, ec))
         p /= "shard.json";
+    return p;
+}
+
+// The shard's state, parsed; InputError naming the file.
+Json readShard(const std::string& path)
+{
+    const fs::path p = shardPath(path);
     const std::string shown = shownPath(p.string());
     std::ifstream in(p, std::ios::binary);
     if (!in)
@@ -74,6 +81,28 @@ int mergeCommand(const Options& o, const CommandLine& line)
                                      excerpt(e.what(), 120)));
     }
     StagedDir out(reportDirPath(o.outDir));
+    if (shards[0].at("campaign").at("per_case").get<bool>()) // every shard has cases.jsonl
+    {
+        std::vector<std::ifstream> files(shards.size());
+        std::vector<std::istream*> inOrder(shards.size());
+        for (std::size_t i = 0; i < shards.size(); ++i)
+        {
+            const fs::path p = shardPath(o.shards[i]).parent_path() / "cases.jsonl";
+            files[i].open(p, std::ios::binary);
+            if (!files[i])
+                throw InputError(fmt::format("merge: {}: cannot open: {}", shownPath(p.string()),
+                                             std::strerror(errno)));
+            inOrder[shards[i].at("shard").at("index").get<std::size_t>()] = &files[i];
+        }
+        std::ofstream joined(out.staged("cases.jsonl"), std::ios::binary);
+        joinPerCase(camp.report,
+                    shards[0].at("campaign").at("chunk_cases").get<std::size_t>(), inOrder,
+                    joined);
+        joined.close();
+        if (!joined)
+            throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
+                                          excerpt(out.dir().string()), std::strerror(errno)));
+    }
     writeReportAndSummary(camp, out, o.verbose);
     return camp.exitCode;
 }

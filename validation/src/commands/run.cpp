@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <thread>
@@ -25,6 +26,8 @@ namespace gjkval
 {
 namespace
 {
+namespace fs = std::filesystem;
+
 struct RunOptions
 {
     CampaignConfig config;
@@ -78,15 +81,35 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     return cfg;
 }
 
+// DIR/cases.jsonl, staged with the rest of the directory (OutputError when it cannot be written).
+std::ofstream openPerCase(StagedDir& out)
+{
+    std::ofstream f(out.staged("cases.jsonl"), std::ios::binary);
+    if (!f)
+        throw OutputError(fmt::format("{}/cases.jsonl: cannot create the file: {}",
+                                      excerpt(out.dir().string()), std::strerror(errno)));
+    return f;
+}
+void closePerCase(std::ofstream& f, StagedDir& out)
+{
+    f.close();
+    if (!f)
+        throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
+                                      excerpt(out.dir().string()), std::strerror(errno)));
+}
+
 // `run --shard I/N`: the shard's state into DIR/shard.json; `merge` makes the report.
 int shardCommand(RunOptions& o, const CampaignConfig& cfg)
 {
     const Shard shard = parseShard(o.shard);
-    if (cfg.perCase)
-        throw InputError("--per-case: not with --shard (merge writes no cases.jsonl)");
     std::vector<CampaignInput> inputs = campaignInputs(cfg);
     StagedDir out(reportDirPath(o.outDir));
-    const Json state = runShard(cfg, std::move(inputs), shard);
+    std::ofstream perCase; // the shard's chunks; merge joins the shards' files in case order
+    if (cfg.perCase)
+        perCase = openPerCase(out);
+    const Json state = runShard(cfg, std::move(inputs), shard, cfg.perCase ? &perCase : nullptr);
+    if (cfg.perCase)
+        closePerCase(perCase, out);
     out.write("shard.json", state.dump() + "\n");
     out.commit();
     std::size_t cases = 0;
@@ -122,8 +145,6 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
 {
     if (!o.shard.empty())
         throw InputError("--shard: not under mpirun, where every rank is a shard");
-    if (cfg.perCase)
-        throw InputError("--per-case: not under mpirun (merge writes no cases.jsonl)");
     MPI_Init(nullptr, nullptr);
     const double start = MPI_Wtime();
     int rank = 0, size = 1;
@@ -134,8 +155,29 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
             1, std::thread::hardware_concurrency() /
                    std::max<std::size_t>(1, launcherSize("OMPI_COMM_WORLD_LOCAL_SIZE"))));
     cfg.progress = cfg.progress && rank == 0;
-    const std::string state =
-        runShard(cfg, campaignInputs(cfg), Shard{std::size_t(rank), std::size_t(size)}).dump();
+    // --per-case: each rank writes its chunks' lines beside DIR (a file system every rank shares),
+    // rank 0 joins them into DIR/cases.jsonl in case order and removes them.
+    const auto rankLines = [&](int r)
+    { return fs::path(reportDirPath(o.outDir).string() + fmt::format(".rank-{}.cases.jsonl", r)); };
+    std::ofstream perCase;
+    if (cfg.perCase)
+    {
+        perCase.open(rankLines(rank), std::ios::binary);
+        if (!perCase)
+            throw OutputError(fmt::format("{}: cannot create the file: {}",
+                                          excerpt(rankLines(rank).string()), std::strerror(errno)));
+    }
+    const std::string state = runShard(cfg, campaignInputs(cfg),
+                                       Shard{std::size_t(rank), std::size_t(size)},
+                                       cfg.perCase ? &perCase : nullptr)
+                                  .dump();
+    if (cfg.perCase)
+    {
+        perCase.close();
+        if (!perCase)
+            throw OutputError(fmt::format("{}: write failed: {}",
+                                          excerpt(rankLines(rank).string()), std::strerror(errno)));
+    }
 
     const int length = int(state.size());
     std::vector<int> lengths(static_cast<std::size_t>(size)), offsets(lengths.size());
@@ -165,6 +207,25 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
             }
             const Campaign camp = mergeShards(shards, names, cfg, MPI_Wtime() - start);
             StagedDir out(reportDirPath(o.outDir));
+            if (cfg.perCase)
+            {
+                std::vector<std::ifstream> files(static_cast<std::size_t>(size));
+                std::vector<std::istream*> inOrder;
+                for (int r = 0; r < size; ++r)
+                {
+                    files[std::size_t(r)].open(rankLines(r), std::ios::binary);
+                    if (!files[std::size_t(r)])
+                        throw OutputError(fmt::format("{}: cannot open (is the directory on a "
+                                                      "file system every rank shares?)",
+                                                      excerpt(rankLines(r).string())));
+                    inOrder.push_back(&files[std::size_t(r)]);
+                }
+                std::ofstream joined = openPerCase(out);
+                joinPerCase(camp.report, cfg.chunkCases, inOrder, joined);
+                closePerCase(joined, out);
+                for (int r = 0; r < size; ++r)
+                    fs::remove(rankLines(r));
+            }
             writeReportAndSummary(camp, out, o.verbose);
             code = camp.exitCode;
         }
@@ -213,20 +274,10 @@ int runCommand(RunOptions& o, const CommandLine& line)
     StagedDir out(reportDirPath(o.outDir));
     std::ofstream perCase;
     if (cfg.perCase)
-    {
-        perCase.open(out.staged("cases.jsonl"), std::ios::binary);
-        if (!perCase)
-            throw OutputError(fmt::format("{}/cases.jsonl: cannot create the file: {}",
-                                          excerpt(out.dir().string()), std::strerror(errno)));
-    }
+        perCase = openPerCase(out);
     const Campaign camp = runCampaign(cfg, std::move(inputs), cfg.perCase ? &perCase : nullptr);
     if (cfg.perCase)
-    {
-        perCase.close();
-        if (!perCase)
-            throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
-                                          excerpt(out.dir().string()), std::strerror(errno)));
-    }
+        closePerCase(perCase, out);
     writeReportAndSummary(camp, out, o.verbose);
     return camp.exitCode;
 }
