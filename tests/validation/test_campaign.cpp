@@ -224,6 +224,41 @@ TEST_CASE("merging the shards of a campaign gives the one-process report", "[cam
     }
 }
 
+TEST_CASE("an interrupted run resumes from its checkpoint to the uninterrupted report",
+          "[campaign][checkpoint]")
+{
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:150", "hard/touching-edge", "hard/points:40"};
+    c.caseFiles = {std::string(VALIDATION_TEST_DATA) + "/bad-cases.json"};
+    c.timing = false;
+    c.perCase = false;
+    c.worstPerFamily = 2;
+    c.chunkCases = 9;
+    const Run whole = run(c);
+    c.checkpointDir = tmpDir("checkpoint");
+    c.checkpointSeconds = 0;
+    for (const char* stopAfter : {"1", "5", "19"}) // the first chunk, mid-family, the last input
+    {
+        INFO("stopped after " << stopAfter << " chunks");
+        ::setenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS", stopAfter, 1);
+        CHECK_THROWS_WITH(run(c), Catch::Contains("test: stopped after"));
+        ::unsetenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS");
+        CampaignConfig resumed = c;
+        resumed.resume = true;
+        const Run r = run(resumed);
+        CHECK(stripVolatile(r.report) == stripVolatile(whole.report));
+        CHECK(caseFileText({}, r.worstCases) == caseFileText({}, whole.worstCases));
+    }
+    // Another campaign's checkpoint is refused, naming what differs.
+    ::setenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS", "2", 1);
+    CHECK_THROWS(run(c));
+    ::unsetenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS");
+    CampaignConfig other = c;
+    other.resume = true;
+    other.seed = 9;
+    CHECK_THROWS_WITH(run(other), Catch::Contains("the checkpoint is of another campaign: its seed is 1"));
+}
+
 TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
           "[campaign][shard]")
 {

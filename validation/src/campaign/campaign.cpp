@@ -18,8 +18,12 @@
 #include <cstring>
 #include <ctime>
 #include <exception>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <ostream>
+#include <stdexcept>
 #include <set>
 #include <unistd.h>
 
@@ -333,35 +337,52 @@ void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, Evalu
 
 // One input, streamed: its cases are generated or read chunk by chunk, and the shard's chunks
 // are evaluated and folded.
-FamilyResult runInput(std::size_t inputIndex, const CampaignInput& input,
-                      const CampaignConfig& config, Shard shard, const EvalContext& ctx,
-                      int threads, Progress& progress, CampaignState& state, std::ostream* perCase)
+// Which chunks a fold evaluates (the shard's, from where a checkpoint left off), and what it does
+// after each (write a checkpoint).
+struct FoldPlan
 {
-    FamilyResult r{&input,
-                   std::vector<Stats>(ctx.variants.size()),
-                   MakeupFold(input.makeup),
-                   WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))),
-                   {}};
+    Shard shard;
+    ChunkPosition resumeAt;                               // chunks before it are folded already
+    std::function<void(ChunkPosition next)> afterChunk; // may be empty
+};
+
+FamilyResult emptyResult(const CampaignInput& input, const CampaignConfig& config,
+                         const EvalContext& ctx)
+{
+    return {&input, std::vector<Stats>(ctx.variants.size()), MakeupFold(input.makeup),
+            WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))), {}};
+}
+
+// One input (state.families[inputIndex]), streamed: its cases are generated or read chunk by
+// chunk, and the plan's chunks are evaluated and folded.
+void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPlan& plan,
+              const EvalContext& ctx, int threads, Progress& progress, CampaignState& state,
+              std::ostream* perCase)
+{
+    FamilyResult& r = state.families[inputIndex];
     auto t = Clock::now();
     std::size_t chunkIndex = 0;
-    input.stream(std::max<std::size_t>(1, config.chunkCases),
-                 [&](CaseChunk& chunk)
-                 {
-                     state.seconds.inputs += elapsed(t, Clock::now());
-                     if (shard.owns(inputIndex, chunkIndex++))
-                     {
-                         EvaluatedChunk e =
-                             evaluateChunk(chunk, ctx, threads, progress, state.seconds);
-                         foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected, perCase);
-                     }
-                     else
-                         progress.add(chunk.size());
-                     t = Clock::now();
-                 });
+    r.input->stream(std::max<std::size_t>(1, config.chunkCases),
+                    [&](CaseChunk& chunk)
+                    {
+                        state.seconds.inputs += elapsed(t, Clock::now());
+                        const ChunkPosition at{inputIndex, chunkIndex++};
+                        if (plan.shard.owns(at.input, at.chunk) && !(at < plan.resumeAt))
+                        {
+                            EvaluatedChunk e =
+                                evaluateChunk(chunk, ctx, threads, progress, state.seconds);
+                            foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected,
+                                      perCase);
+                            if (plan.afterChunk)
+                                plan.afterChunk({at.input, at.chunk + 1});
+                        }
+                        else
+                            progress.add(chunk.size());
+                        t = Clock::now();
+                    });
     state.seconds.inputs += elapsed(t, Clock::now());
     if (perCase && !*perCase)
         throw OutputError("cases.jsonl: write failed: " + std::string(std::strerror(errno)));
-    return r;
 }
 
 // --- Timing: single-threaded, apart from everything else ---------------------------------------
@@ -584,6 +605,77 @@ EvalContext evalContext(const CampaignConfig& config)
 
 // Inputs -> truth -> variants -> statistics, input by input, chunk by chunk (the shard's chunks
 // only); then the timed passes over the cases kept for them.
+Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard,
+                int threads);
+Json campaignIdentity(const CampaignConfig& config);
+void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalContext& ctx,
+                std::size_t worstPerFamily);
+
+// --- Checkpoints: the fold's state every checkpointSeconds, so that a run can resume ------------
+
+std::filesystem::path checkpointFile(const CampaignConfig& config)
+{
+    return std::filesystem::path(config.checkpointDir) / "checkpoint.json";
+}
+
+void writeCheckpoint(const CampaignState& state, const CampaignConfig& config, Shard shard,
+                     int threads, ChunkPosition next)
+{
+    std::error_code ec;
+    std::filesystem::create_directories(config.checkpointDir, ec);
+    const Json j{{"schema", kCheckpointSchema},
+                 {"next", {next.input, next.chunk}},
+                 {"state", shardState(state, config, shard, threads)}};
+    writeFileAtomic(checkpointFile(config).string(), j.dump() + "\n");
+}
+
+// The checkpoint's state merged into the empty `state`; returns where the fold goes on.
+// InputError when there is none, or it is another campaign's (another command line).
+ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Shard shard,
+                         const EvalContext& ctx)
+{
+    const std::string path = checkpointFile(config).string();
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(fmt::format("--resume: {}: no checkpoint to resume from",
+                                     shownPath(path)));
+    Json j;
+    try
+    {
+        j = Json::parse(in);
+    }
+    catch (const Json::exception&)
+    {
+        throw InputError(fmt::format("--resume: {}: not JSON", shownPath(path)));
+    }
+    if (!j.is_object() || j.value("schema", "") != kCheckpointSchema)
+        throw InputError(
+            fmt::format("--resume: {}: not a {} file", shownPath(path), kCheckpointSchema));
+    const Json identity = campaignIdentity(config);
+    const Json& saved = j.at("state").at("campaign");
+    for (const auto& [key, value] : identity.items())
+        if (saved.value(key, Json()) != value)
+            throw InputError(fmt::format(
+                "--resume: {}: the checkpoint is of another campaign: its {} is {}, this run's {}",
+                shownPath(path), key, excerpt(saved.value(key, Json()).dump()),
+                excerpt(value.dump())));
+    const Json& sh = j.at("state").at("shard");
+    if (sh.at("index").get<std::size_t>() != shard.index ||
+        sh.at("count").get<std::size_t>() != shard.count)
+        throw InputError(fmt::format("--resume: {}: the checkpoint is of another shard",
+                                     shownPath(path)));
+    mergeShard(state, j.at("state"), shard, ctx, std::size_t(std::max(0, config.worstPerFamily)));
+    return {j.at("next").at(0).get<std::size_t>(), j.at("next").at(1).get<std::size_t>()};
+}
+
+// The test hook of docs/validation.md, "Resume": GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=K stops a
+// checkpointed run after its K-th chunk, its checkpoint written, as an interruption would.
+std::size_t testStopAfterChunks()
+{
+    const char* v = std::getenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS");
+    return v ? std::size_t(std::strtoull(v, nullptr, 10)) : 0;
+}
+
 CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
                            Shard shard, const EvalContext& ctx, int threads, std::ostream* perCase)
 {
@@ -591,12 +683,36 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
     state.inputs = std::move(inputs); // not resized below: families point into it
     std::size_t total = 0;
     for (const auto& in : state.inputs)
+    {
         total += in.count;
+        state.families.push_back(emptyResult(in, config, ctx));
+    }
+    FoldPlan plan{shard, {}, {}};
+    if (config.resume)
+        plan.resumeAt = resumeFrom(state, config, shard, ctx);
+    if (!config.checkpointDir.empty())
+    {
+        auto last = Clock::now();
+        std::size_t folded = 0;
+        const std::size_t stopAfter = testStopAfterChunks();
+        plan.afterChunk = [&, last, folded, stopAfter](ChunkPosition next) mutable
+        {
+            ++folded;
+            const bool stop = stopAfter > 0 && folded >= stopAfter;
+            if (stop || elapsed(last, Clock::now()) >= config.checkpointSeconds)
+            {
+                writeCheckpoint(state, config, shard, threads, next);
+                last = Clock::now();
+            }
+            if (stop)
+                throw std::runtime_error(
+                    fmt::format("test: stopped after {} chunks (a checkpoint is written)", folded));
+        };
+    }
     {
         Progress progress(config.progress, "cases", total);
         for (std::size_t i = 0; i < state.inputs.size(); ++i)
-            state.families.push_back(runInput(i, state.inputs[i], config, shard, ctx, threads,
-                                              progress, state, perCase));
+            runInput(i, config, plan, ctx, threads, progress, state, perCase);
     }
     const auto tTiming = Clock::now();
     if (config.timing)
@@ -784,6 +900,14 @@ void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalCont
     state.seconds.timing += e[4].get<double>();
 }
 } // namespace
+
+void removeCheckpoint(const CampaignConfig& config)
+{
+    if (config.checkpointDir.empty())
+        return;
+    std::error_code ec;
+    std::filesystem::remove(checkpointFile(config), ec);
+}
 
 Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
                      std::ostream* perCase)

@@ -42,6 +42,11 @@ struct CampaignConfig
     bool perCase = false;
     std::size_t chunkCases = kDefaultChunkCases;
     std::string command; // for the report's context
+    // Checkpoints (docs/validation.md, "Resume"): the fold's state is written to
+    // checkpointDir/checkpoint.json at most every checkpointSeconds; `resume` starts from it.
+    std::string checkpointDir;
+    double checkpointSeconds = 60;
+    bool resume = false;
 };
 
 // `git rev-parse` of the source tree ("abc123 (dirty)"), "unknown" when git fails.
@@ -79,6 +84,9 @@ struct Campaign
 Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
                      std::ostream* perCase = nullptr);
 
+// Once the report (or shard.json) is written: the checkpoint is no longer needed.
+void removeCheckpoint(const CampaignConfig& config);
+
 // A part of a campaign that one process evaluates: chunk j of input f (its cases j*chunk ..)
 // belongs to shard (f + j) mod count. Round robin spreads the costly inputs over the shards, and
 // the shift by f gives each shard the first chunk of some inputs (whose cases it times).
@@ -91,6 +99,17 @@ struct Shard
     }
 };
 inline constexpr const char* kShardSchema = "gjk-shard/1";
+
+// A chunk's place in the campaign: chunk `chunk` of input `input`; ordered as the cases are.
+struct ChunkPosition
+{
+    std::size_t input = 0, chunk = 0;
+    bool operator<(const ChunkPosition& o) const
+    {
+        return input != o.input ? input < o.input : chunk < o.chunk;
+    }
+};
+inline constexpr const char* kCheckpointSchema = "gjk-checkpoint/1";
 
 // One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,
 // docs/validation.md "Shards and merge"). Exact: histogram sums are exact, every tie is broken by

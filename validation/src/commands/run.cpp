@@ -64,6 +64,12 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     if (o.chunkCases < 1 || o.chunkCases > kMaxChunkCases)
         throw InputError(fmt::format("--chunk {}: expected 1..{}", o.chunkCases, kMaxChunkCases));
     cfg.chunkCases = o.chunkCases;
+    if (cfg.resume && cfg.checkpointDir.empty())
+        throw InputError("--resume: needs --checkpoint DIR (where the checkpoint is)");
+    if (!cfg.checkpointDir.empty() && cfg.perCase)
+        throw InputError("--per-case: not with --checkpoint (cases.jsonl is not resumable)");
+    if (!(cfg.checkpointSeconds >= 0))
+        throw InputError("--checkpoint-seconds: expected a number >= 0");
     cfg.timing = !o.noTiming;
     cfg.minPasses = std::min(cfg.minPasses, cfg.maxPasses);
     cfg.progress = !o.noProgress && isatty(STDERR_FILENO);
@@ -112,6 +118,7 @@ int shardCommand(RunOptions& o, const CampaignConfig& cfg)
         closePerCase(perCase, out);
     out.write("shard.json", state.dump() + "\n");
     out.commit();
+    removeCheckpoint(cfg);
     std::size_t cases = 0;
     for (const auto& f : state.at("families"))
         cases += f.at("cases").get<std::size_t>();
@@ -155,6 +162,8 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
             1, std::thread::hardware_concurrency() /
                    std::max<std::size_t>(1, launcherSize("OMPI_COMM_WORLD_LOCAL_SIZE"))));
     cfg.progress = cfg.progress && rank == 0;
+    if (!cfg.checkpointDir.empty()) // each rank its own
+        cfg.checkpointDir = (fs::path(cfg.checkpointDir) / fmt::format("rank-{}", rank)).string();
     // --per-case: each rank writes its chunks' lines beside DIR (a file system every rank shares),
     // rank 0 joins them into DIR/cases.jsonl in case order and removes them.
     const auto rankLines = [&](int r)
@@ -279,6 +288,7 @@ int runCommand(RunOptions& o, const CommandLine& line)
     if (cfg.perCase)
         closePerCase(perCase, out);
     writeReportAndSummary(camp, out, o.verbose);
+    removeCheckpoint(cfg);
     return camp.exitCode;
 }
 } // namespace
@@ -326,6 +336,16 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
                     "cases evaluated together, 1..1e6: memory follows it, the report does not")
         ->capture_default_str();
     run->add_flag("--no-timing", o->noTiming, "skip the timed passes (ns_per_query is null)");
+    run->add_option("--checkpoint", cfg.checkpointDir,
+                    "write the campaign's state to DIR/checkpoint.json as it goes (removed once "
+                    "the report is written)")
+        ->type_name("DIR");
+    run->add_option("--checkpoint-seconds", cfg.checkpointSeconds,
+                    "at most this often (0: after every chunk)")
+        ->capture_default_str();
+    run->add_flag("--resume", cfg.resume,
+                  "start from --checkpoint DIR's state (the same command line otherwise); the "
+                  "report is the uninterrupted run's, timing aside");
     run->add_option("--shard", o->shard,
                     "I/N: evaluate only shard I of N (chunks round robin) and write DIR/shard.json; "
                     "`gjk-validate merge` makes the report of all N")
