@@ -3,6 +3,7 @@
 // contents before and after). Each test runs the program in a child process.
 #include "common/common.hpp"
 #include "report/report.hpp"
+#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -23,58 +24,24 @@ namespace fs = std::filesystem;
 
 namespace
 {
-struct Run
-{
-    int code = -1; // exit code; 128 + signal number when killed
-    std::string err;
-};
+using Run = CliRun;
 
-// Runs gjk-validate with args; fileSizeLimit > 0 sets RLIMIT_FSIZE (bytes) in the child.
+// Runs gjk-validate with args; fileSizeLimit > 0 sets RLIMIT_FSIZE (bytes) in the child, `fault`
+// the test fault hook (GJK2D_VALIDATE_TEST_FAULT).
 Run runCli(const std::vector<std::string>& args, rlim_t fileSizeLimit = 0,
            const char* fault = nullptr)
 {
-    // One file per test process: CTest runs the test cases in parallel.
-    const fs::path errFile =
-        fs::path(VALIDATION_TEST_TMP) / ("cli-stderr-" + std::to_string(::getpid()) + ".txt");
-    fs::create_directories(errFile.parent_path());
-    const pid_t pid = ::fork();
-    if (pid == 0)
-    {
-        const int err = ::open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        const int null = ::open("/dev/null", O_WRONLY);
-        ::dup2(err, 2);
-        ::dup2(null, 1);
-        if (fileSizeLimit > 0)
-        {
-            const rlimit lim{fileSizeLimit, fileSizeLimit};
-            ::setrlimit(RLIMIT_FSIZE, &lim);
-        }
-        if (fault != nullptr)
-            ::setenv("GJK2D_VALIDATE_TEST_FAULT", fault, 1);
-        std::vector<char*> argv{const_cast<char*>(GJK_VALIDATE_EXE)};
-        for (const auto& a : args)
-            argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        ::execv(GJK_VALIDATE_EXE, argv.data());
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    Run r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::ifstream in(errFile, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    r.err = ss.str();
-    return r;
-}
-
-std::string slurp(const fs::path& p)
-{
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    return runGjkValidate(args,
+                          [&]
+                          {
+                              if (fileSizeLimit > 0)
+                              {
+                                  const rlimit lim{fileSizeLimit, fileSizeLimit};
+                                  ::setrlimit(RLIMIT_FSIZE, &lim);
+                              }
+                              if (fault != nullptr)
+                                  ::setenv("GJK2D_VALIDATE_TEST_FAULT", fault, 1);
+                          });
 }
 
 // Every file of a directory with its contents.

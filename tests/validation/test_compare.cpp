@@ -5,6 +5,7 @@
 // --no-timing` (about a second in release).
 #include "common/common.hpp"
 #include "report/compare.hpp"
+#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -24,19 +25,7 @@ namespace fs = std::filesystem;
 
 namespace
 {
-struct Run
-{
-    int code = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p)
-{
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using Run = CliRun;
 
 // This test process's scratch directory (CTest runs test cases in parallel processes).
 fs::path scratch()
@@ -46,26 +35,9 @@ fs::path scratch()
     return d;
 }
 
-// Runs gjk-validate with args, capturing stdout and stderr.
 Run runCli(const std::vector<std::string>& args)
 {
-    const fs::path out = scratch() / "stdout.txt", err = scratch() / "stderr.txt";
-    const pid_t pid = ::fork();
-    if (pid == 0)
-    {
-        ::dup2(::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 1);
-        ::dup2(::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644), 2);
-        std::vector<char*> argv{const_cast<char*>(GJK_VALIDATE_EXE)};
-        for (const auto& a : args)
-            argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        ::execv(GJK_VALIDATE_EXE, argv.data());
-        ::_exit(127);
-    }
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(out),
-            slurp(err)};
+    return runGjkValidate(args);
 }
 
 // The real report's directory, made once per process.
