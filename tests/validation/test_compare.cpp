@@ -368,15 +368,18 @@ TEST_CASE("compare: the program's exit codes and outputs", "[compare][cli]")
     Json& abs = stats(worse, "random", "double")["errors"]["abs"];
     abs["max"] = abs["max"].get<double>() * 2;
     const std::string bad = writeReport(worse, "worse.json").string();
-    const fs::path md = scratch() / "compare.md", json = scratch() / "compare.json";
+    const fs::path md = scratch() / "compare.md", json = scratch() / "compare.json",
+                   html = scratch() / "compare.html";
     fs::remove(md);
+    fs::remove(html);
     fs::remove(json);
 
     const Run same = runCli({"compare", old, old});
     CHECK(same.code == kExitPass);
     CHECK(contains(same.out, "every statistic is the same"));
 
-    const Run r = runCli({"compare", old, bad, "--md", md.string(), "--json", json.string()});
+    const Run r = runCli({"compare", old, bad, "--md", md.string(), "--json", json.string(),
+                          "--html", html.string()});
     INFO("stdout: " << r.out << "\nstderr: " << r.err);
     CHECK(r.code == kExitFail);
     CHECK(contains(r.out, "random"));
@@ -384,6 +387,9 @@ TEST_CASE("compare: the program's exit codes and outputs", "[compare][cli]")
     CHECK(contains(r.out, "REGRESSED"));
     CHECK(contains(r.out, "result: REGRESSION (exit code 1)"));
     CHECK(contains(slurp(md), "| random | double | errors.abs.max |"));
+    CHECK(contains(slurp(html), "<tr class=\"regressed\"><td>random</td><td>double</td>"
+                                "<td>errors.abs.max</td>"));
+    CHECK(contains(slurp(html), "REGRESSION (exit code 1)"));
     const Json j = Json::parse(slurp(json));
     CHECK(j["schema"] == "gjk-compare/1");
     CHECK(j["exit_code"] == 1);

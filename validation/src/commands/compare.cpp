@@ -19,7 +19,7 @@ namespace
 {
 struct Options
 {
-    std::string oldPath, newPath, json, md;
+    std::string oldPath, newPath, json, md, html;
     std::string relTol, percentileTol, timingTol;
     bool timing = false, allVariants = false, strict = false, allowDifferentInputs = false;
 };
@@ -49,6 +49,8 @@ int compareCommand(const Options& o, CLI::App& sub)
         checkOutputFile("--json", o.json);
     if (sub.count("--md") > 0)
         checkOutputFile("--md", o.md);
+    if (sub.count("--html") > 0)
+        checkOutputFile("--html", o.html);
     testFault();
     const Json oldReport = readReport(o.oldPath);
     const Json newReport = readReport(o.newPath);
@@ -58,6 +60,7 @@ int compareCommand(const Options& o, CLI::App& sub)
     std::fputs(compareText(result).c_str(), stdout);
     writeOutput("json", o.json, [&] { return compareJson(result).dump(1) + "\n"; });
     writeOutput("markdown", o.md, [&] { return compareMarkdown(result); });
+    writeOutput("html", o.html, [&] { return compareHtml(result); });
     flushStdout();
     return result.exitCode;
 }
@@ -105,6 +108,8 @@ Subcommand addCompare(CLI::App& app, const CommandLine&)
     cmp->add_option("--json", o->json, "also write the comparison as JSON (gjk-compare/1)")
         ->type_name("FILE");
     cmp->add_option("--md", o->md, "also write the comparison as Markdown")->type_name("FILE");
+    cmp->add_option("--html", o->html, "also write the comparison as an HTML page")
+        ->type_name("FILE");
     return {cmp, [o, cmp] { return compareCommand(*o, *cmp); }};
 }
 

@@ -731,6 +731,65 @@ std::string compareMarkdown(const Comparison& c)
     return s;
 }
 
+std::string compareHtml(const Comparison& c)
+{
+    auto esc = [](const std::string& v)
+    {
+        std::string out;
+        for (char ch : v)
+            switch (ch)
+            {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '&': out += "&amp;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += ch;
+            }
+        return out;
+    };
+    auto rowClass = [](const CompareRow& r)
+    {
+        switch (r.change)
+        {
+        case Change::Regressed: return r.fails() ? "regressed" : "worse";
+        case Change::Worse: return "worse";
+        case Change::Better: return "better";
+        default: return "other";
+        }
+    };
+    const bool failed = c.exitCode != kExitPass;
+    std::string s = fmt::format(
+        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>gjk-validate "
+        "compare</title>\n<style>body{{font:14px system-ui,sans-serif;margin:2em;color:#222}}"
+        "table{{border-collapse:collapse}}td,th{{padding:3px 8px;border-bottom:1px solid #ddd;"
+        "text-align:left}}td.n{{text-align:right;font-variant-numeric:tabular-nums}}"
+        "tr.regressed{{background:#f8d7da}}tr.worse{{background:#fff3cd}}"
+        "tr.better{{background:#d4edda}}.result{{font-size:1.3em;font-weight:bold;color:{}}}"
+        "</style></head><body>\n<h1>gjk-validate compare</h1>\n<p class=\"result\">{}</p>\n"
+        "<ul><li>{}</li><li>{}</li><li>{}</li></ul>\n<p>{}.</p>\n",
+        failed ? "#a00" : "#070", esc(resultLine(c)), esc(c.options.oldName),
+        esc(c.options.newName), esc(optionsText(c.options)), esc(summaryText(c)));
+    const auto shown = shownRows(c);
+    if (shown.empty())
+        s += "<p>Every statistic is the same.</p>\n";
+    else
+    {
+        s += "<table><tr><th>family</th><th>variant</th><th>statistic</th><th>OLD</th>"
+             "<th>NEW</th><th>limit</th><th>change</th></tr>\n";
+        for (const CompareRow* r : shown)
+            s += fmt::format("<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">"
+                             "{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>"
+                             "</tr>\n",
+                             rowClass(*r), esc(excerpt(r->family)),
+                             esc(excerpt(r->variant) + (r->judged ? "" : " (comparison)")),
+                             esc(r->statistic), esc(formatValue(*r, r->oldValue)),
+                             esc(formatValue(*r, r->newValue)), esc(limitText(*r)),
+                             esc(changeText(*r)));
+        s += "</table>\n";
+    }
+    return s + "</body></html>\n";
+}
+
 Json compareJson(const Comparison& c)
 {
     const CompareOptions& o = c.options;

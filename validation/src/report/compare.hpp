@@ -96,6 +96,9 @@ Comparison compareReports(const Json& oldReport, const Json& newReport,
 // line), the same as Markdown, and JSON (schema gjk-compare/1, every row).
 std::string compareText(const Comparison& c);
 std::string compareMarkdown(const Comparison& c);
+// The same as a self-contained HTML page (no script, no download): the table with regressed rows
+// in red and better ones in green, the result first.
+std::string compareHtml(const Comparison& c);
 Json compareJson(const Comparison& c);
 
 } // namespace gjkval
