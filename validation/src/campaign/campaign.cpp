@@ -714,6 +714,10 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
         for (std::size_t i = 0; i < state.inputs.size(); ++i)
             runInput(i, config, plan, ctx, threads, progress, state, perCase);
     }
+    // A shard times only the inputs whose first chunk it holds: the merge takes those.
+    for (std::size_t i = 0; i < state.families.size(); ++i)
+        if (!shard.owns(i, 0))
+            state.families[i].timing = {};
     const auto tTiming = Clock::now();
     if (config.timing)
         timeVariants(state, config, ctx);
