@@ -360,26 +360,36 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
               std::ostream* perCase)
 {
     FamilyResult& r = state.families[inputIndex];
+    const std::size_t chunkCases = std::max<std::size_t>(1, config.chunkCases);
+    const auto skip = [&](std::size_t chunk)
+    {
+        const ChunkPosition at{inputIndex, chunk};
+        return !plan.shard.owns(at.input, at.chunk) || at < plan.resumeAt;
+    };
     auto t = Clock::now();
-    std::size_t chunkIndex = 0;
-    r.input->stream(std::max<std::size_t>(1, config.chunkCases),
+    std::size_t seen = 0; // cases up to the end of the last chunk passed on (for the progress)
+    r.input->stream(chunkCases,
                     [&](CaseChunk& chunk)
                     {
                         state.seconds.inputs += elapsed(t, Clock::now());
-                        const ChunkPosition at{inputIndex, chunkIndex++};
-                        if (plan.shard.owns(at.input, at.chunk) && !(at < plan.resumeAt))
+                        const std::size_t j = chunk.first / chunkCases;
+                        progress.add(chunk.first - seen); // the chunks left out before it
+                        seen = chunk.first + chunk.size();
+                        if (skip(j)) // a case file passes every chunk
+                            progress.add(chunk.size());
+                        else
                         {
                             EvaluatedChunk e =
                                 evaluateChunk(chunk, ctx, threads, progress, state.seconds);
                             foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected,
                                       perCase);
                             if (plan.afterChunk)
-                                plan.afterChunk({at.input, at.chunk + 1});
+                                plan.afterChunk({inputIndex, j + 1});
                         }
-                        else
-                            progress.add(chunk.size());
                         t = Clock::now();
-                    });
+                    },
+                    skip);
+    progress.add(r.input->count - std::min(seen, r.input->count));
     state.seconds.inputs += elapsed(t, Clock::now());
     if (perCase && !*perCase)
         throw OutputError("cases.jsonl: write failed: " + std::string(std::strerror(errno)));

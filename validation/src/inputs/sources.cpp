@@ -23,10 +23,13 @@ CampaignInput familyInput(FamilyPlan plan, std::uint64_t campaignSeed)
     in.input = {{"family", plan.name}, {"count", plan.count}, {"seed", campaignSeed}};
     in.makeup = std::move(plan.makeup);
     in.stream = [plan = std::move(plan)](std::size_t chunkCases,
-                                         const std::function<void(CaseChunk&)>& consume)
+                                         const std::function<void(CaseChunk&)>& consume,
+                                         const CampaignInput::SkipChunk& skip)
     {
         for (std::size_t first = 0; first < plan.count; first += chunkCases)
         {
+            if (skip && skip(first / chunkCases))
+                continue; // each case is made from its index alone: nothing to keep in step
             CaseChunk chunk;
             chunk.first = first;
             chunk.cases = plan.cases(first, std::min(plan.count, first + chunkCases));
@@ -85,8 +88,9 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
     in.reason = summary.comments.empty() ? "cases from " + path : summary.comments.front();
     in.count = summary.entries;
     in.input = {{"file", path}, {"count", summary.entries}};
-    in.stream =
-        [path, whole](std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume)
+    in.stream = [path, whole](std::size_t chunkCases,
+                              const std::function<void(CaseChunk&)>& consume,
+                              const CampaignInput::SkipChunk&) // the entries are read in order
     {
         chunked(
             [&](const std::function<void(CaseEntry &&)>& each)
@@ -153,7 +157,8 @@ std::vector<FamilyData> collectInputs(const std::vector<std::string>& familySpec
                           f.labels.push_back(std::move(chunk.labels[i]));
                           f.rejected.push_back(std::move(chunk.rejected[i]));
                       }
-                  });
+                  },
+                  {});
         out.push_back(std::move(f));
     }
     return out;

@@ -35,8 +35,12 @@ struct CampaignInput
     std::uint64_t seed = 0;
     std::vector<MakeupSpec> makeup;
     std::size_t count = 0;
-    // Calls consume(chunk) for every chunk of at most chunkCases cases, in case order.
-    std::function<void(std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume)>
+    // Calls consume(chunk) for every chunk of at most chunkCases cases, in case order. Chunk j
+    // (cases j*chunkCases ..) may be left out, neither made nor passed on, when skip(j) is true
+    // (a shard's, a resumed run's): generated families do so, case files pass every chunk.
+    using SkipChunk = std::function<bool(std::size_t chunk)>;
+    std::function<void(std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume,
+                       const SkipChunk& skip)>
         stream;
 };
 
