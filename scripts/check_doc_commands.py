@@ -65,8 +65,8 @@ RULES = [
 ]
 
 SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare", "merge"]
-# A placeholder: <...>, [...], A|B, or one of the upper-case names the docs use for one.
-PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
+# A placeholder: <...>, [...], A|B, "...", or one of the upper-case names the docs use for one.
+PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\.\.\.|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
                          r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")
 COMMAND_WORD = re.compile(r"^(gjk-validate|build/|scripts/|cmake|ctest|python3)\b")
 # A fence opens or closes a code block: three or more backticks, an info string without backticks
@@ -134,7 +134,7 @@ def inline_commands(path):
 
 
 def disposition(command, full):
-    if PLACEHOLDER.search(re.sub(r"'[^']*'", "''", command)):  # quoted text is literal
+    if PLACEHOLDER.search(re.sub(r"'[^']*'|\"[^\"]*\"", "''", command)):  # quoted text is literal
         for pattern, kind, _, reason in RULES:
             if kind in ("ci", "long") and re.search(pattern, command):
                 return kind, command, reason

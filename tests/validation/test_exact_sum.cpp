@@ -119,7 +119,7 @@ TEST_CASE("histogram merge: the same statistics in any order, ties to the earlie
           "[stats][exact-sum]")
 {
     Hist a(-40, 40, 10), b(-40, 40, 10), whole(-40, 40, 10);
-    const double values[] = {0.1, 0.7, 3.0, 1e-17, 3.0, 0.2};
+    const double values[] = {0.1, 0.7, 3.0, 1e-17, 0.2, 3.0}; // 3.0 at cases 2 (a) and 5 (b)
     for (int i = 0; i < 6; ++i)
     {
         const std::string name = "c" + std::to_string(i);
@@ -132,7 +132,7 @@ TEST_CASE("histogram merge: the same statistics in any order, ties to the earlie
     for (const Hist* h : {&ab, &ba})
     {
         CHECK(h->toJson() == whole.toJson());
-        CHECK(h->maxCase == "c2"); // 3.0 at cases 2 and 4: the earlier one
+        CHECK(h->maxCase == "c2"); // the earlier of the two, whichever side merges into which
     }
     mpq_class exact = 0;
     for (double v : values)
