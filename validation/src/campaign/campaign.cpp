@@ -618,6 +618,7 @@ EvalContext evalContext(const CampaignConfig& config)
 Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard,
                 int threads);
 Json campaignIdentity(const CampaignConfig& config);
+std::string identityDifference(const Json& other, const Json& identity, const std::string& theirs);
 void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalContext& ctx,
                 std::size_t worstPerFamily);
 
@@ -645,30 +646,18 @@ ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Sha
                          const EvalContext& ctx)
 {
     const std::string path = checkpointFile(config).string();
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
+    if (!std::filesystem::exists(path))
         throw InputError(fmt::format("--resume: {}: no checkpoint to resume from",
                                      shownPath(path)));
-    Json j;
-    try
-    {
-        j = Json::parse(in);
-    }
-    catch (const Json::exception&)
-    {
-        throw InputError(fmt::format("--resume: {}: not JSON", shownPath(path)));
-    }
+    const Json j = readJsonFile(path, "--resume");
     if (!j.is_object() || j.value("schema", "") != kCheckpointSchema)
         throw InputError(
             fmt::format("--resume: {}: not a {} file", shownPath(path), kCheckpointSchema));
-    const Json identity = campaignIdentity(config);
-    const Json& saved = j.at("state").at("campaign");
-    for (const auto& [key, value] : identity.items())
-        if (saved.value(key, Json()) != value)
-            throw InputError(fmt::format(
-                "--resume: {}: the checkpoint is of another campaign: its {} is {}, this run's {}",
-                shownPath(path), key, excerpt(saved.value(key, Json()).dump()),
-                excerpt(value.dump())));
+    const std::string difference =
+        identityDifference(j.at("state").at("campaign"), campaignIdentity(config), "this run");
+    if (!difference.empty())
+        throw InputError(fmt::format("--resume: {}: the checkpoint is of another campaign: {}",
+                                     shownPath(path), difference));
     const Json& sh = j.at("state").at("shard");
     if (sh.at("index").get<std::size_t>() != shard.index ||
         sh.at("count").get<std::size_t>() != shard.count)
@@ -840,6 +829,18 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
                 {"rejected", std::move(rejected)}};
 }
 
+// The first field of `identity` (campaignIdentity) that `other` holds differently, as the message
+// "its KEY is OTHER, THEIRS's is VALUE"; empty when they are the same campaign.
+std::string identityDifference(const Json& other, const Json& identity, const std::string& theirs)
+{
+    for (const auto& [key, value] : identity.items())
+        if (other.value(key, Json()) != value)
+            return fmt::format("its {} is {}, {}'s is {}", key,
+                               excerpt(other.value(key, Json()).dump()), theirs,
+                               excerpt(value.dump()));
+    return {};
+}
+
 // The shard states' campaign configuration (the command line of `merge` gives the rest).
 CampaignConfig configOf(const Json& identity, const CampaignConfig& base)
 {
@@ -962,13 +963,11 @@ Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::str
     std::vector<bool> seen(count, false);
     for (std::size_t i = 0; i < shards.size(); ++i)
     {
-        const Json& id = identityOf(i);
-        for (const auto& [key, value] : identity.items())
-            if (id.value(key, Json()) != value)
-                throw InputError(fmt::format(
-                    "{}: a shard of another campaign: its {} is {}, {}'s is {}",
-                    shownPath(names[i]), key, excerpt(id.value(key, Json()).dump()),
-                    shownPath(names[0]), excerpt(value.dump())));
+        const std::string difference =
+            identityDifference(identityOf(i), identity, shownPath(names[0]));
+        if (!difference.empty())
+            throw InputError(fmt::format("{}: a shard of another campaign: {}",
+                                         shownPath(names[i]), difference));
         const Json& sh = shards[i].at("shard");
         const auto index = sh.at("index").get<std::size_t>();
         if (sh.at("count").get<std::size_t>() != count || index >= count)

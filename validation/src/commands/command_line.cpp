@@ -173,4 +173,26 @@ void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose)
     flushStdout();
 }
 
+void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
+                        const std::vector<std::string>& files, StagedDir& out,
+                        const std::string& hint)
+{
+    std::vector<std::ifstream> in(files.size());
+    std::vector<std::istream*> inOrder;
+    for (std::size_t s = 0; s < files.size(); ++s)
+    {
+        in[s].open(files[s], std::ios::binary);
+        if (!in[s])
+            throw InputError(fmt::format("{}: cannot open: {}{}", shownPath(files[s]),
+                                         std::strerror(errno), hint));
+        inOrder.push_back(&in[s]);
+    }
+    std::ofstream joined(out.staged("cases.jsonl"), std::ios::binary);
+    joinPerCase(camp.report, chunkCases, inOrder, joined);
+    joined.close();
+    if (!joined)
+        throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
+                                      excerpt(out.dir().string()), std::strerror(errno)));
+}
+
 } // namespace gjkval

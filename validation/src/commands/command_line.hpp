@@ -63,6 +63,11 @@ Subcommand addMerge(CLI::App& app, const CommandLine& line);
 struct Campaign;
 class StagedDir;
 void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose);
+// merge's and mpirun's DIR/cases.jsonl: the shards' files (files[s] is shard s's) joined in case
+// order (joinPerCase). InputError naming a file that cannot be opened, followed by `hint`.
+void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
+                        const std::vector<std::string>& files, StagedDir& out,
+                        const std::string& hint = {});
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.

@@ -41,33 +41,13 @@ fs::path shardPath(const std::string& path)
     return p;
 }
 
-// The shard's state, parsed; InputError naming the file.
-Json readShard(const std::string& path)
-{
-    const fs::path p = shardPath(path);
-    const std::string shown = shownPath(p.string());
-    std::ifstream in(p, std::ios::binary);
-    if (!in)
-        throw InputError(fmt::format("merge: {}: cannot open: {}", shown, std::strerror(errno)));
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    try
-    {
-        return Json::parse(text);
-    }
-    catch (const Json::parse_error& e)
-    {
-        const auto [line, col] = lineColumn(text, e.byte == 0 ? 0 : e.byte - 1);
-        throw InputError(fmt::format("merge: {}:{}:{}: not JSON", shown, line, col));
-    }
-}
-
 int mergeCommand(const Options& o, const CommandLine& line)
 {
     checkReportDir(o.outDir);
     testFault();
     std::vector<Json> shards;
     for (const auto& s : o.shards)
-        shards.push_back(readShard(s));
+        shards.push_back(readJsonFile(shardPath(s).string(), "merge"));
     CampaignConfig base;
     base.command = line.text();
     Campaign camp;
@@ -83,25 +63,12 @@ int mergeCommand(const Options& o, const CommandLine& line)
     StagedDir out(reportDirPath(o.outDir));
     if (shards[0].at("campaign").at("per_case").get<bool>()) // every shard has cases.jsonl
     {
-        std::vector<std::ifstream> files(shards.size());
-        std::vector<std::istream*> inOrder(shards.size());
+        std::vector<std::string> files(shards.size());
         for (std::size_t i = 0; i < shards.size(); ++i)
-        {
-            const fs::path p = shardPath(o.shards[i]).parent_path() / "cases.jsonl";
-            files[i].open(p, std::ios::binary);
-            if (!files[i])
-                throw InputError(fmt::format("merge: {}: cannot open: {}", shownPath(p.string()),
-                                             std::strerror(errno)));
-            inOrder[shards[i].at("shard").at("index").get<std::size_t>()] = &files[i];
-        }
-        std::ofstream joined(out.staged("cases.jsonl"), std::ios::binary);
-        joinPerCase(camp.report,
-                    shards[0].at("campaign").at("chunk_cases").get<std::size_t>(), inOrder,
-                    joined);
-        joined.close();
-        if (!joined)
-            throw OutputError(fmt::format("{}/cases.jsonl: write failed: {}",
-                                          excerpt(out.dir().string()), std::strerror(errno)));
+            files[shards[i].at("shard").at("index").get<std::size_t>()] =
+                (shardPath(o.shards[i]).parent_path() / "cases.jsonl").string();
+        writeJoinedPerCase(camp, shards[0].at("campaign").at("chunk_cases").get<std::size_t>(),
+                           files, out);
     }
     writeReportAndSummary(camp, out, o.verbose);
     return camp.exitCode;

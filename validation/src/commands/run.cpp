@@ -218,22 +218,13 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
             StagedDir out(reportDirPath(o.outDir));
             if (cfg.perCase)
             {
-                std::vector<std::ifstream> files(static_cast<std::size_t>(size));
-                std::vector<std::istream*> inOrder;
+                std::vector<std::string> files;
                 for (int r = 0; r < size; ++r)
-                {
-                    files[std::size_t(r)].open(rankLines(r), std::ios::binary);
-                    if (!files[std::size_t(r)])
-                        throw OutputError(fmt::format("{}: cannot open (is the directory on a "
-                                                      "file system every rank shares?)",
-                                                      excerpt(rankLines(r).string())));
-                    inOrder.push_back(&files[std::size_t(r)]);
-                }
-                std::ofstream joined = openPerCase(out);
-                joinPerCase(camp.report, cfg.chunkCases, inOrder, joined);
-                closePerCase(joined, out);
-                for (int r = 0; r < size; ++r)
-                    fs::remove(rankLines(r));
+                    files.push_back(rankLines(r).string());
+                writeJoinedPerCase(camp, cfg.chunkCases, files, out,
+                                   " (is the directory on a file system every rank shares?)");
+                for (const auto& f : files)
+                    fs::remove(f);
             }
             writeReportAndSummary(camp, out, o.verbose);
             code = camp.exitCode;

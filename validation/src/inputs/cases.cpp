@@ -4,7 +4,9 @@
 
 #include <bit>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -229,6 +231,24 @@ bool bitsEqual(double a, double b)
 }
 
 } // namespace
+
+Json readJsonFile(const std::string& path, const std::string& who)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw InputError(
+            fmt::format("{}: {}: cannot open: {}", who, shownPath(path), std::strerror(errno)));
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    try
+    {
+        return Json::parse(text);
+    }
+    catch (const Json::parse_error& e)
+    {
+        const auto [line, col] = lineColumn(text, e.byte == 0 ? 0 : e.byte - 1);
+        throw InputError(fmt::format("{}: {}:{}:{}: not JSON", who, shownPath(path), line, col));
+    }
+}
 
 std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset)
 {

@@ -90,6 +90,9 @@ Json shapeToJson(const ShapeIn& s);
 
 // Line and column (both from 1) of a byte offset in text.
 std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset);
+// A JSON file (a shard's state, a checkpoint), parsed; InputError "who: PATH: cannot open: ..." or
+// "who: PATH:LINE:COLUMN: not JSON".
+Json readJsonFile(const std::string& path, const std::string& who);
 
 // The exact side's view of a shape; roundToFloat rounds every input double to float first (the
 // input the float variants actually see).
