@@ -218,9 +218,15 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
                 [&](std::size_t i)
                 {
                     if (e.outcomes[i].rejected.empty())
+                    {
                         computeTruth(chunk.cases[i], ctx, e.outcomes[i]);
+                        if (e.outcomes[i].rejected.empty())
+                            e.prepared[i] = prepare(chunk.cases[i]);
+                    }
                 });
     auto t1 = Clock::now();
+    // Plugin variants, in child processes, between the parallel phases (no worker thread runs).
+    answerPluginVariants(chunk.cases.data(), e.prepared.data(), e.outcomes.data(), chunk.size(), ctx);
     parallelFor(chunk.size(), threads, progress,
                 [&](std::size_t i)
                 {
@@ -230,7 +236,6 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
                         o.variants.assign(ctx.variants.size(), {});
                         return;
                     }
-                    e.prepared[i] = prepare(chunk.cases[i]);
                     runVariants(chunk.cases[i], e.prepared[i], ctx, o);
                 });
     auto t2 = Clock::now();
@@ -248,6 +253,11 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
 void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index,
                 const VariantInfo& vi, const CaseOutcome& o)
 {
+    if (v.plugin == PluginStatus::Refused)
+    {
+        ++s.refused;
+        return;
+    }
     if (v.skipped)
     {
         ++s.skipped;
@@ -256,6 +266,13 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
     }
     ++s.cases;
     s.failures += v.failed ? 1 : 0;
+    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
+    {
+        s.pluginErrors += v.plugin == PluginStatus::Error ? 1 : 0;
+        s.crashed += v.plugin == PluginStatus::Crashed ? 1 : 0;
+        s.hung += v.plugin == PluginStatus::Hung ? 1 : 0;
+        return; // no answer to measure
+    }
     s.outOfRange += v.outOfRange ? 1 : 0;
     s.nonfinite += v.nonfinite ? 1 : 0;
     s.iterationLimit += v.iterationLimit ? 1 : 0;
@@ -294,6 +311,12 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
         else
             ++s.uncertified;
     }
+    if (vi.plugin)
+    {
+        if (v.iterations >= 0) // -1: the implementation does not count
+            s.iterations.add(v.iterations);
+        return; // no stop reason
+    }
     s.iterations.add(v.iterations);
     ++s.stops[std::size_t(v.stop)];
 }
@@ -328,7 +351,9 @@ void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, Evalu
         {
             std::vector<bool> runs(nv);
             for (std::size_t k = 0; k < nv; ++k)
-                runs[k] = !o.variants[k].skipped;
+                runs[k] = !o.variants[k].skipped &&
+                          (o.variants[k].plugin == PluginStatus::NotRun ||
+                           o.variants[k].plugin == PluginStatus::Ok); // a plugin's crash: untimed
             r.timing.cases.push_back(std::move(e.prepared[i]));
             r.timing.runs.push_back(std::move(runs));
         }
@@ -412,7 +437,10 @@ void timeVariants(CampaignState& state, const CampaignConfig& config, const Eval
             for (std::size_t i = 0; i < f.timing.cases.size(); ++i)
                 if (f.timing.runs[i][k])
                     cases.push_back(&f.timing.cases[i]);
-            const TimingResult t = timeQueries(cases, *ctx.variants[k], tc);
+            const VariantInfo& v = *ctx.variants[k];
+            const TimingResult t = v.plugin
+                                       ? timeContained(cases, v, tc, ctx.pluginTimeoutSeconds)
+                                       : timeQueries(cases, v, tc);
             Stats& s = f.stats[k];
             s.nsPerQuery = t.nsPerQuery;
             s.nsMin = t.nsMin;
@@ -526,6 +554,14 @@ Json variantsJson(const EvalContext& ctx)
         j["judged"] = v->judged;
         j["warm"] = v->start == Start::Warm;
         j["options"] = optionsJson(v->options);
+        if (v->plugin) // the options name the bound it is compared with; the answer is the plugin's
+        {
+            j["plugin"] = {{"path", v->plugin->path},
+                           {"accepts_radius", (v->plugin->impl.accepts & GJK2D_ACCEPTS_RADIUS) != 0},
+                           {"accepts_warm_start",
+                            (v->plugin->impl.accepts & GJK2D_ACCEPTS_WARM_START) != 0},
+                           {"max_vertices", v->plugin->impl.max_vertices}};
+        }
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         out.push_back(std::move(j));
     }
@@ -610,6 +646,7 @@ EvalContext evalContext(const CampaignConfig& config)
     EvalContext ctx;
     ctx.variants = config.variants;
     ctx.exactOptions.route = config.route;
+    ctx.pluginTimeoutSeconds = config.pluginTimeoutSeconds;
     return ctx;
 }
 
@@ -850,7 +887,19 @@ CampaignConfig configOf(const Json& identity, const CampaignConfig& base)
     c.seed = identity.at("seed").get<std::uint64_t>();
     c.variants.clear();
     for (const auto& n : identity.at("variants"))
-        c.variants.push_back(findVariant(n.get<std::string>()));
+    {
+        const std::string name = n.get<std::string>();
+        const VariantInfo* v = findVariant(name);
+        if (!v) // a shipped plugin's variant (run loads them by default): load them and look again
+            for (const auto& path : shippedPluginPaths())
+                loadPlugin(path);
+        v = findVariant(name);
+        if (!v)
+            throw InputError(fmt::format("merge: the shards ran variant '{}', which is neither "
+                                         "gjk2d's nor a shipped plugin's",
+                                         name));
+        c.variants.push_back(v);
+    }
     if (!exact::parseRoute(identity.at("exact_route").get<std::string>(), c.route))
         throw InputError("merge: an unknown exact route");
     c.worstPerFamily = identity.at("worst_per_family").get<int>();

@@ -47,6 +47,7 @@ struct CampaignConfig
     std::string checkpointDir;
     double checkpointSeconds = 60;
     bool resume = false;
+    double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
 
 // `git rev-parse` of the source tree ("abc123 (dirty)"), "unknown" when git fails.

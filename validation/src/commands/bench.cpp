@@ -18,12 +18,15 @@ struct Options
     BenchConfig bcfg;
     std::vector<std::string> benchFamilies, benchFiles;
     std::string benchVariants = "all", benchJson, benchSeed = "1";
+    PluginOptions plugins;
 };
 
 int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.bcfg.seed = parseSeed(o.benchSeed);
     o.bcfg.variants = parseVariants(o.benchVariants);
+    applyPluginOptions(o.plugins, false, o.bcfg.variants);
+    o.bcfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     o.bcfg.command = line.text();
     if (o.benchFamilies.empty() && o.benchFiles.empty())
         throw InputError("bench: which cases? give --cases FILE and/or --family F");
@@ -68,6 +71,7 @@ Subcommand addBench(CLI::App& app, const CommandLine& line)
     bench->add_flag("--warm", o->bcfg.warm,
                     "time warm-started queries: each starts from the SimplexCache of a previous "
                     "query of the same case");
+    addPluginOptions(*bench, o->plugins, false);
     bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
         ->capture_default_str();
     bench->add_option("--json", o->benchJson, "write the timings as JSON to this file");

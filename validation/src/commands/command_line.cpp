@@ -2,6 +2,7 @@
 
 #include "campaign/campaign.hpp"
 #include "common/output.hpp"
+#include "evaluate/plugins.hpp"
 #include "inputs/families.hpp"
 #include "report/report.hpp"
 
@@ -133,6 +134,45 @@ void checkFamilies(const std::vector<std::string>& specs, bool streamed)
             "--family {}: this command needs about {:.3g} GB of memory (about {:.2g} KB per case "
             "it holds), more than this machine's {:.3g} GB; give fewer cases",
             excerpt(biggest), need / 1e9, kHeldBytesPerCase / 1e3, have / 1e9));
+}
+
+static_assert(PluginOptions{}.timeoutSeconds == kDefaultPluginTimeoutSeconds);
+
+void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped)
+{
+    sub.add_option("--plugin", o.paths,
+                   "a shared library implementing gjk2d/plugin.h: each implementation it describes "
+                   "becomes a comparison variant (evaluated in a child process); repeatable")
+        ->allow_extra_args(false);
+    sub.add_option("--judge", o.judge,
+                   "judge this plugin implementation like gjk2d's judged variants: a case fails "
+                   "beyond the error bound of gjk2d's reference options in its scalar type; "
+                   "repeatable")
+        ->allow_extra_args(false);
+    sub.add_option("--plugin-timeout", o.timeoutSeconds,
+                   "seconds a plugin may take on one case before it counts as hung, 0.01..3600")
+        ->capture_default_str();
+    if (shipped)
+        sub.add_flag("--no-default-plugins", o.noDefault,
+                     "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run joins "
+                     "when --variants is left at its default");
+}
+
+void applyPluginOptions(const PluginOptions& o, bool loadShipped,
+                        std::vector<const VariantInfo*>& variants)
+{
+    if (!(o.timeoutSeconds >= 0.01 && o.timeoutSeconds <= 3600))
+        throw InputError("--plugin-timeout: expected seconds in 0.01..3600");
+    std::vector<std::string> paths;
+    if (loadShipped && !o.noDefault)
+        paths = shippedPluginPaths();
+    paths.insert(paths.end(), o.paths.begin(), o.paths.end());
+    for (const auto& path : paths)
+        for (const VariantInfo* v : loadPlugin(path))
+            if (std::find(variants.begin(), variants.end(), v) == variants.end())
+                variants.push_back(v);
+    for (const auto& name : o.judge)
+        judgePluginVariant(name);
 }
 
 void testFault()

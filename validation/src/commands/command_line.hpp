@@ -69,6 +69,22 @@ void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
                         const std::vector<std::string>& files, StagedDir& out,
                         const std::string& hint = {});
 
+struct VariantInfo;
+
+// --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, and for `run`
+// --no-default-plugins (docs/validate-your-gjk.md).
+struct PluginOptions
+{
+    std::vector<std::string> paths, judge;
+    double timeoutSeconds = 5; // kDefaultPluginTimeoutSeconds
+    bool noDefault = false;
+};
+void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped);
+// Loads the plugins (InputError, exit 2, naming the file), the shipped ones first when
+// `loadShipped`, appends their variants to `variants` (once each) and applies --judge.
+void applyPluginOptions(const PluginOptions& o, bool loadShipped,
+                        std::vector<const VariantInfo*>& variants);
+
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.
 void checkArgsUtf8(int argc, char** argv);

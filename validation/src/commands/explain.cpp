@@ -45,6 +45,7 @@ struct Options
     std::vector<std::string> exPositional;
     std::string exName, exFamily, exJson, exHtml, exVariants = "all", exRoute = "default",
                                                   exSeed = "1";
+    PluginOptions plugins;
 };
 
 int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
@@ -69,6 +70,8 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
     const std::uint64_t seedValue = parseSeed(o.exSeed);
     EvalContext ctx;
     ctx.variants = parseVariants(o.exVariants);
+    applyPluginOptions(o.plugins, false, ctx.variants);
+    ctx.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     ctx.exactOptions.route = parseRouteOrThrow(o.exRoute);
     if (!o.exFamily.empty())
         checkFamilies({o.exFamily}, false);
@@ -156,6 +159,7 @@ Subcommand addExplain(CLI::App& app, const CommandLine& line)
                    "take the case from this generated family instead of a file");
     ex->add_option("--seed", o->exSeed, "seed for --family, 0..2^64-1")->capture_default_str();
     ex->add_option("--variants", o->exVariants, "variants to run")->capture_default_str();
+    addPluginOptions(*ex, o->plugins, false);
     ex->add_option("--exact-route", o->exRoute, "exact construction")->capture_default_str();
     ex->add_option("--json", o->exJson,
                    "write the CaseDetail JSON (docs/report-schema.md) to this file");

@@ -37,6 +37,7 @@ struct RunOptions
     std::size_t chunkCases = kDefaultChunkCases;
     bool noProgress = false, noTiming = false, verbose = false;
     std::string shard; // "I/N"
+    PluginOptions plugins;
 };
 
 // "I/N", 0 <= I < N <= kMaxShards: InputError otherwise.
@@ -57,6 +58,9 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     CampaignConfig cfg = o.config;
     cfg.seed = parseSeed(o.seed);
     cfg.variants = parseVariants(o.variants);
+    // The shipped plugins (Box2D 2.4.1) join the default variant list, not an explicit one.
+    applyPluginOptions(o.plugins, o.variants == kDefaultVariants, cfg.variants);
+    cfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     cfg.route = parseRouteOrThrow(o.route);
     checkRange("--threads", cfg.threads, 0, kMaxThreads);
     checkRange("--passes", cfg.maxPasses, 1, kMaxPasses);
@@ -344,6 +348,7 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
     run->add_flag("--verbose", o->verbose,
                   "also print every family x variant to the terminal (the summary lists only "
                   "those that failed or misclassified; report.md has the full table)");
+    addPluginOptions(*run, o->plugins, true);
     run->add_flag("--no-progress", o->noProgress,
                   "no progress bar (it is shown only when stderr is a terminal)");
     return {run, [o, line] { return runCommand(*o, line); }};

@@ -208,6 +208,8 @@ double worstKey(const VariantOutcome& v)
 {
     if (v.skipped || (v.outOfRange && !v.failed)) // not run, or not judged
         return -1;
+    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
+        return kInf; // error, crash, hang
     return (v.nonfinite || v.iterationLimit || (v.certified && !v.intervalContains)) ? kInf
                                                                                      : v.normalized;
 }
@@ -227,6 +229,14 @@ std::size_t CaseOutcome::worstVariant() const
         if (gjkval::worstKey(variants[k]) > gjkval::worstKey(variants[worst]))
             worst = k;
     return worst;
+}
+
+bool EvalContext::hasPlugins() const
+{
+    for (auto* v : variants)
+        if (v->plugin)
+            return true;
+    return false;
 }
 
 bool EvalContext::needFloatTruth() const
@@ -392,7 +402,36 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             continue;
         }
         const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
-        if (vi.start == Start::EveryStart)
+        if (vi.plugin)
+        {
+            if (out.external.size() != ctx.variants.size() ||
+                out.external[k].status == PluginStatus::NotRun)
+                throw std::logic_error("runVariants: plugin variant '" + vi.name +
+                                       "' has no answer (answerPluginVariants not run)");
+            const ExternalAnswer& a = out.external[k];
+            v.plugin = a.status;
+            v.pluginDetail = a.detail;
+            if (a.status == PluginStatus::Refused)
+            {
+                v.skipped = true;
+                continue;
+            }
+            if (a.status != PluginStatus::Ok)
+            {
+                v.failed = true;
+                continue;
+            }
+            v.distance = a.distance;
+            v.pointA = a.pointA;
+            v.pointB = a.pointB;
+            // The implementation gives no normal: the unit vector from A's witness to B's.
+            const double dx = a.pointB[0] - a.pointA[0], dy = a.pointB[1] - a.pointA[1];
+            const double len = std::hypot(dx, dy);
+            v.normal = len > 0 ? std::array<double, 2>{dx / len, dy / len}
+                               : std::array<double, 2>{0, 0};
+            v.iterations = a.iterations;
+        }
+        else if (vi.start == Start::EveryStart)
         {
             if (isFloat)
                 fillOutput(worstStart<float>(p, vi, truth.distance), v);
@@ -422,7 +461,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     for (std::size_t k = 0; k < nv; ++k)
     {
         VariantOutcome& v = out.variants[k];
-        if (v.skipped || v.nonfinite)
+        if (v.skipped || v.nonfinite || (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
             continue;
         const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
         if (isFloat && !haveF)
@@ -463,11 +502,39 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     }
 }
 
+void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseOutcome* out,
+                          std::size_t n, const EvalContext& ctx)
+{
+    if (!ctx.hasPlugins())
+        return;
+    std::vector<PluginTask> tasks;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        CaseOutcome& o = out[i];
+        o.external.assign(ctx.variants.size(), {});
+        if (!o.rejected.empty())
+            continue;
+        for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+        {
+            const VariantInfo& vi = *ctx.variants[k];
+            if (!vi.plugin || skipReason(vi, prepared[i], o.hasFloatTruth))
+                continue; // runVariants skips it
+            if (refusedByDescription(vi, prepared[i]))
+                o.external[k].status = PluginStatus::Refused;
+            else
+                tasks.push_back({&vi, &prepared[i], &o.external[k], &cases[i].name});
+        }
+    }
+    answerContained(tasks, ctx.pluginTimeoutSeconds);
+}
+
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx)
 {
     CaseOutcome o;
     computeTruth(c, ctx, o);
-    runVariants(c, prepare(c), ctx, o);
+    const PreparedCase p = prepare(c);
+    answerPluginVariants(&c, &p, &o, 1, ctx);
+    runVariants(c, p, ctx, o);
     checkWitnesses(c, ctx, o);
     return o;
 }
@@ -492,7 +559,16 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     vj["type"] = scalarName(vi.scalar);
     if (v.skipped)
     {
-        vj["skipped"] = v.notApplicable ? kSkipNotConvexOrder : kSkipNotRepresentable;
+        vj["skipped"] = v.plugin == PluginStatus::Refused ? kSkipRefused
+                        : v.notApplicable                 ? kSkipNotConvexOrder
+                                                          : kSkipNotRepresentable;
+        return vj;
+    }
+    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
+    {
+        vj["plugin_status"] = pluginStatusName(v.plugin);
+        vj["plugin_detail"] = v.pluginDetail;
+        vj["failed"] = v.failed;
         return vj;
     }
     vj["distance"] = num(v.distance);
@@ -500,7 +576,7 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
     vj["normal"] = pt(v.normal[0], v.normal[1]);
     vj["iterations"] = v.iterations;
-    vj["stop"] = gjk::stopReasonName(v.stop);
+    vj["stop"] = vi.plugin ? "plugin" : gjk::stopReasonName(v.stop); // a plugin gives no reason
     vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
     vj["R"] = num(v.R);
     vj["bound"] = num(v.bound);
@@ -569,7 +645,7 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];
-        if (o.variants[k].skipped)
+        if (o.variants[k].skipped || vi.plugin) // a plugin gives no trace
             continue;
         Json& vj = j["variants"][vi.name];
         if (vi.scalar == Scalar::Float)
@@ -628,6 +704,13 @@ std::string explainText(const Json& d)
             s += fmt::format("  variant {}: skipped ({})\n", name, v["skipped"].get<std::string>());
             continue;
         }
+        if (v.contains("plugin_status"))
+        {
+            s += fmt::format("  variant {} ({}): {}: {}\n", name, v["type"].get<std::string>(),
+                             v["plugin_status"].get<std::string>(),
+                             v["plugin_detail"].get<std::string>());
+            continue;
+        }
         s += fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
                          v["type"].get<std::string>(), fmtFull(v["distance"]),
                          v["iterations"].get<int>(), v["stop"].get<std::string>(),
@@ -648,6 +731,11 @@ std::string explainText(const Json& d)
             s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
                              fmtFull(v["lower"]), fmtFull(v["upper"]),
                              v["interval_contains"].get<bool>() ? "yes" : "NO");
+        if (!v.contains("trace"))
+        {
+            s += "     (no trace: the implementation is a plugin's)\n";
+            continue;
+        }
         int k = 0;
         for (const auto& step : v["trace"])
         {

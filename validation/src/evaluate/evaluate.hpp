@@ -3,6 +3,7 @@
 #pragma once
 
 #include "evaluate/bounds.hpp"
+#include "evaluate/plugins.hpp"
 #include "inputs/cases.hpp"
 #include "evaluate/variants.hpp"
 
@@ -46,6 +47,7 @@ PreparedCase prepare(const Case& c);
 // float-rounded input is usable (finite, with an exact truth when one is needed).
 const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput);
 inline constexpr const char* kSkipNotRepresentable = "input not representable in float";
+inline constexpr const char* kSkipRefused = "refused by the implementation (plugin)";
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
 
@@ -128,6 +130,10 @@ struct VariantOutcome
     bool certified = false, intervalContains = false;
     double lower = 0, upper = 0;
     bool failed = false;
+    // Plugin variants: how the implementation answered (Ok, or Refused with skipped set, or
+    // Error / Crashed / Hung: failed, no errors measured) and how it died.
+    PluginStatus plugin = PluginStatus::NotRun;
+    std::string pluginDetail;
 };
 
 struct CaseOutcome
@@ -138,6 +144,8 @@ struct CaseOutcome
     exact::Result exactFloat; // exact truth of the float-rounded input
     double inputRounding = 0; // |exactFloat.distance - exact.distance|
     std::vector<VariantOutcome> variants;
+    // The plugin variants' answers (answerPluginVariants), by variant index; empty without them.
+    std::vector<ExternalAnswer> external;
 
     // The key the worst cases are ranked by: the largest worstKey() of its variants.
     double worstKey() const;
@@ -158,17 +166,23 @@ struct EvalContext
     // broken invariant of the truth fails the run instead of rejecting the case.
     exact::Result (*truth)(const exact::Shape&, const exact::Shape&, const exact::Options&) =
         &exact::distance;
+    double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call
     bool needFloatTruth() const;
+    bool hasPlugins() const;
 };
 
 // Phase 1: the exact truths. The truth's std::invalid_argument rejects the case (bad input);
 // any other exception (a broken invariant of ours) propagates and fails the run.
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// Phase 2a: the plugin variants' answers for n cases (truth computed, inputs prepared), in child
+// processes (answerContained): out[i].external. Not thread-safe: called between parallel phases.
+void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseOutcome* out,
+                          std::size_t n, const EvalContext& ctx);
 // Phase 2: GJK for every variant, errors, misclassification, failure.
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out);
 // Phase 3: exact distance of each witness point to its shape.
 void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
-// All three.
+// All of them.
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
 
 // Unit in the last place of the variant's type at x > 0.

@@ -1,5 +1,7 @@
 #include "evaluate/variants.hpp"
 
+#include "evaluate/plugins.hpp"
+
 #include <fmt/format.h>
 
 #include <limits>
@@ -69,7 +71,7 @@ const VariantInfo* findVariant(const std::string& name)
     for (const auto& v : variantTable())
         if (v.name == name)
             return &v;
-    return nullptr;
+    return findPluginVariant(name);
 }
 
 std::vector<const VariantInfo*> parseVariants(const std::string& list)

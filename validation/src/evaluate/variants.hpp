@@ -32,6 +32,8 @@ enum class Start
     EveryStart,
 };
 
+struct PluginImpl; // evaluate/plugins.hpp
+
 struct VariantInfo
 {
     std::string name; // stable: used on the command line and in every report
@@ -44,6 +46,9 @@ struct VariantInfo
     // shown per family, never judged.
     bool judged = true;
     Start start = Start::Cold;
+    // Set for a plugin's implementation (evaluate/plugins.hpp, `--plugin`): the answer comes from
+    // it, evaluated in a child process; `options` then only names the bound it is compared with.
+    const PluginImpl* plugin = nullptr;
 };
 
 const std::vector<VariantInfo>& variantTable();
@@ -51,7 +56,8 @@ const std::vector<VariantInfo>& variantTable();
 inline constexpr const char* kDefaultVariants = "all";
 // The variant speed ratios are given against (report.json baseline_variant; bench).
 inline constexpr const char* kBaselineVariant = "double";
-// "all", or names separated by commas. Throws InputError naming the unknown one.
+// "all", or names separated by commas. Throws InputError naming the unknown one. "all" is the
+// table; a loaded plugin's variants can be named (findVariant finds them too).
 std::vector<const VariantInfo*> parseVariants(const std::string& list);
 const VariantInfo* findVariant(const std::string& name);
 

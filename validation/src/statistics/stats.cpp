@@ -197,6 +197,10 @@ void Stats::merge(const Stats& o)
     beyondBound += o.beyondBound;
     skipped += o.skipped;
     notApplicable += o.notApplicable;
+    refused += o.refused;
+    pluginErrors += o.pluginErrors;
+    crashed += o.crashed;
+    hung += o.hung;
     hasInterval = hasInterval || o.hasInterval;
     certified += o.certified;
     contains += o.contains;
@@ -233,6 +237,10 @@ void forEachMember(S& s, Count&& count, Flag&& flag, H&& hist)
     count("beyond_bound", s.beyondBound);
     count("skipped", s.skipped);
     count("not_applicable", s.notApplicable);
+    count("refused", s.refused);
+    count("plugin_errors", s.pluginErrors);
+    count("crashed", s.crashed);
+    count("hung", s.hung);
     count("certified", s.certified);
     count("contains", s.contains);
     count("uncertified", s.uncertified);
@@ -292,6 +300,10 @@ Json Stats::toJson() const
     j["beyond_bound"] = beyondBound;
     j["skipped"] = skipped;
     j["not_applicable"] = notApplicable;
+    j["refused"] = refused;
+    j["plugin_errors"] = pluginErrors;
+    j["crashed"] = crashed;
+    j["hung"] = hung;
     j["failure_rate_upper95"] =
         (failures == 0 && cases > 0) ? Json(3.0 / double(cases)) : Json(nullptr);
     Json e;

@@ -76,6 +76,10 @@ struct Stats
     std::uint64_t beyondBound = 0;   // judged cases with |error| > bound
     std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
     std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
+    // Plugin variants (evaluate/plugins.hpp): cases the implementation refused (not run, not
+    // failed, apart from `skipped`), and cases it answered GJK2D_STATUS_ERROR, crashed or hung on
+    // (each counted in `cases` and `failures`, without errors measured).
+    std::uint64_t refused = 0, pluginErrors = 0, crashed = 0, hung = 0;
     // Certified variants: intervals given, intervals holding the truth, queries left uncertified.
     bool hasInterval = false;
     std::uint64_t certified = 0, contains = 0, uncertified = 0;

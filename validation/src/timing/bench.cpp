@@ -66,9 +66,16 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
                 na += why == kSkipNotConvexOrder ? 1 : 0;
                 continue;
             }
+            if (v->plugin && refusedByDescription(*v, p)) // counted as skipped, not applicable
+            {
+                ++sk;
+                ++na;
+                continue;
+            }
             cases.push_back(&p);
         }
-        results.push_back(timeQueries(cases, *v, tc));
+        results.push_back(v->plugin ? timeContained(cases, *v, tc, config.pluginTimeoutSeconds)
+                                    : timeQueries(cases, *v, tc));
         skipped.push_back(sk);
         notApplicable.push_back(na);
     }

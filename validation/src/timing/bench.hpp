@@ -22,6 +22,7 @@ struct BenchConfig
     int passes = 15;
     double minPassSeconds = 0.02;
     std::string command;
+    double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // bench --plugin-timeout
 };
 
 struct BenchResult

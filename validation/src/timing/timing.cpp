@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 
 namespace gjkval
 {
@@ -81,20 +82,35 @@ template <class T>
 TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
                    const TimingConfig& cfg, bool warm)
 {
-    TimingResult res;
-    res.cases = cases.size();
-    res.warm = warm;
     if (cases.empty())
+    {
+        TimingResult res;
+        res.warm = warm;
         return res;
+    }
     const TimingSet<T> set(cases, o, warm);
-    const double first = std::max(1.0, timePass<T>(set, o, 1)); // warm-up and calibration
+    TimingResult res = medianOfPasses(cases.size(), cfg,
+                                      [&](int reps) { return timePass<T>(set, o, reps); });
+    res.warm = warm;
+    return res;
+}
+} // namespace
+
+TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
+                            const std::function<double(int)>& pass)
+{
+    TimingResult res;
+    res.cases = cases;
+    if (cases == 0)
+        return res;
+    const double first = std::max(1.0, pass(1)); // warm-up and calibration
     const int reps = std::clamp(int(std::ceil(cfg.minPassSeconds * 1e9 / first)), 1, 100000);
     std::vector<double> perQuery;
     const auto start = Clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
     while (int(perQuery.size()) < cfg.maxPasses &&
            (int(perQuery.size()) < cfg.minPasses || elapsed() < cfg.budgetSeconds))
-        perQuery.push_back(timePass<T>(set, o, reps) / (double(reps) * double(cases.size())));
+        perQuery.push_back(pass(reps) / (double(reps) * double(cases)));
     std::sort(perQuery.begin(), perQuery.end());
     const std::size_t n = perQuery.size();
     if (n == 0)
@@ -106,7 +122,6 @@ TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Opt
     res.repsPerPass = reps;
     return res;
 }
-} // namespace
 
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg)

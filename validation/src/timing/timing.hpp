@@ -5,6 +5,7 @@
 #include "evaluate/evaluate.hpp"
 #include "evaluate/variants.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace gjkval
@@ -33,5 +34,12 @@ struct TimingResult
 // query of each case before timing, and each timed query starts from a copy of its case's cache.
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg);
+
+// The pass loop of timeQueries(), for any timed loop: pass(reps) runs `reps` loops over the
+// `cases` queries and returns the nanoseconds taken. One calibration pass sets reps so that a pass
+// lasts cfg.minPassSeconds; then minPasses..maxPasses passes (no new one after budgetSeconds);
+// the median, min and max per query. Plugin variants (evaluate/plugins.cpp) are timed by it too.
+TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
+                            const std::function<double(int)>& pass);
 
 } // namespace gjkval

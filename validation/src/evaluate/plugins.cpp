@@ -1,0 +1,535 @@
+#include "evaluate/plugins.hpp"
+
+#include "evaluate/evaluate.hpp"
+#include "timing/timing.hpp"
+
+#include <fmt/format.h>
+
+#include <dlfcn.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <deque>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+
+namespace gjkval
+{
+namespace
+{
+
+// The registry: loaded plugins' implementations and their variants, with stable addresses
+// (VariantInfo pointers go into every EvalContext).
+struct Registry
+{
+    std::deque<PluginImpl> impls;
+    std::deque<VariantInfo> variants;
+    std::vector<std::string> paths; // canonical paths loaded
+};
+Registry& registry()
+{
+    static Registry r;
+    return r;
+}
+
+bool validName(const char* s)
+{
+    const std::size_t n = std::strlen(s);
+    if (n == 0 || n > 64)
+        return false;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const char c = s[i];
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                        c == '.' || c == '_' || c == '+' || c == '-';
+        if (!ok)
+            return false;
+    }
+    return true;
+}
+
+// Why an implementation's description is unusable, or empty.
+std::string descriptionProblem(const gjk2d_implementation& im)
+{
+    if (im.name == nullptr)
+        return "name is NULL";
+    if (!validName(im.name))
+        return fmt::format("name '{}' is not 1 to 64 characters of [A-Za-z0-9._+-]", im.name);
+    if (im.scalar != GJK2D_SCALAR_FLOAT && im.scalar != GJK2D_SCALAR_DOUBLE)
+        return fmt::format("scalar {} is neither GJK2D_SCALAR_FLOAT (0) nor GJK2D_SCALAR_DOUBLE (1)",
+                           im.scalar);
+    if ((im.accepts & ~std::uint32_t(GJK2D_ACCEPTS_RADIUS | GJK2D_ACCEPTS_WARM_START)) != 0)
+        return fmt::format("accepts has unknown bits 0x{:x}", im.accepts);
+    if (im.max_vertices < 0)
+        return fmt::format("max_vertices {} is negative", im.max_vertices);
+    if (im.cache_bytes < 0 || im.cache_bytes > 4096)
+        return fmt::format("cache_bytes {} is outside 0..4096", im.cache_bytes);
+    if (im.scalar == GJK2D_SCALAR_FLOAT && (im.distance_f == nullptr || im.distance_d != nullptr))
+        return "a float implementation needs distance_f set and distance_d NULL";
+    if (im.scalar == GJK2D_SCALAR_DOUBLE && (im.distance_d == nullptr || im.distance_f != nullptr))
+        return "a double implementation needs distance_d set and distance_f NULL";
+    return {};
+}
+
+} // namespace
+
+std::vector<const VariantInfo*> loadPlugin(const std::string& path)
+{
+    Registry& reg = registry();
+    struct stat st{};
+    if (::stat(path.c_str(), &st) != 0)
+        throw InputError(fmt::format("plugin {}: {}", path, std::strerror(errno)));
+    if (!S_ISREG(st.st_mode))
+        throw InputError(fmt::format("plugin {}: not a regular file", path));
+    const std::string canonical = std::filesystem::canonical(path).string();
+    std::vector<const VariantInfo*> out;
+    for (std::size_t i = 0; i < reg.paths.size(); ++i)
+        if (reg.paths[i] == canonical)
+        {
+            for (std::size_t k = 0; k < reg.variants.size(); ++k)
+                if (std::filesystem::canonical(reg.impls[k].path).string() == canonical)
+                    out.push_back(&reg.variants[k]);
+            return out;
+        }
+    // A path without a slash would make dlopen search the library path, not this file.
+    const std::string openPath = path.find('/') == std::string::npos ? "./" + path : path;
+    void* handle = ::dlopen(openPath.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle == nullptr)
+    {
+        const char* e = ::dlerror();
+        throw InputError(fmt::format("plugin {}: cannot be loaded: {}", path, e ? e : "dlopen failed"));
+    }
+    // The handle stays open for the whole run: the description and the functions live in it.
+    auto describe =
+        reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(handle, GJK2D_PLUGIN_ENTRY_POINT));
+    if (describe == nullptr)
+        throw InputError(fmt::format("plugin {}: does not export the entry point {} (gjk2d/plugin.h)",
+                                     path, GJK2D_PLUGIN_ENTRY_POINT));
+    const gjk2d_plugin* d = describe();
+    if (d == nullptr)
+        throw InputError(fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_ENTRY_POINT));
+    if (d->abi_version != GJK2D_PLUGIN_ABI_VERSION)
+        throw InputError(fmt::format(
+            "plugin {}: plugin ABI version {}, this gjk-validate reads version {} (rebuild the "
+            "plugin against this SDK's gjk2d/plugin.h)",
+            path, d->abi_version, GJK2D_PLUGIN_ABI_VERSION));
+    if (d->count < 1 || d->count > 64 || d->implementations == nullptr)
+        throw InputError(fmt::format("plugin {}: bad description: count {} is outside 1..64 or "
+                                     "implementations is NULL",
+                                     path, d->count));
+    std::vector<std::string> names;
+    for (int i = 0; i < d->count; ++i)
+    {
+        const gjk2d_implementation& im = d->implementations[i];
+        const std::string problem = descriptionProblem(im);
+        if (!problem.empty())
+            throw InputError(
+                fmt::format("plugin {}: bad description of implementation {}: {}", path, i, problem));
+        const std::string name = im.name;
+        bool taken = findVariant(name) != nullptr;
+        for (const auto& n : names)
+            taken = taken || n == name;
+        if (taken)
+            throw InputError(fmt::format(
+                "plugin {}: bad description of implementation {}: the name '{}' is already taken "
+                "(a gjk2d variant or another implementation)",
+                path, i, name));
+        names.push_back(name);
+    }
+    reg.paths.push_back(canonical);
+    for (int i = 0; i < d->count; ++i)
+    {
+        const gjk2d_implementation& im = d->implementations[i];
+        reg.impls.push_back({path, im});
+        VariantInfo v;
+        v.name = im.name;
+        v.scalar = im.scalar == GJK2D_SCALAR_FLOAT ? Scalar::Float : Scalar::Double;
+        // The options whose error bound the implementation is compared with (and judged by, with
+        // --judge): gjk2d's reference options in the implementation's scalar type.
+        v.options = gjk::referenceOptions;
+        v.description = fmt::format("plugin {}{}{}", std::filesystem::path(path).filename().string(),
+                                    im.description ? ": " : "", im.description ? im.description : "");
+        v.judged = false;
+        v.start = Start::Cold;
+        v.plugin = &reg.impls.back();
+        reg.variants.push_back(std::move(v));
+        out.push_back(&reg.variants.back());
+    }
+    return out;
+}
+
+std::vector<const VariantInfo*> pluginVariants()
+{
+    std::vector<const VariantInfo*> out;
+    for (const auto& v : registry().variants)
+        out.push_back(&v);
+    return out;
+}
+
+const VariantInfo* findPluginVariant(const std::string& name)
+{
+    for (const auto& v : registry().variants)
+        if (v.name == name)
+            return &v;
+    return nullptr;
+}
+
+void judgePluginVariant(const std::string& name)
+{
+    for (auto& v : registry().variants)
+        if (v.name == name)
+        {
+            v.judged = true;
+            return;
+        }
+    std::string known;
+    for (const auto& v : registry().variants)
+        known += (known.empty() ? "" : ", ") + v.name;
+    throw InputError(fmt::format("--judge {}: no loaded plugin has an implementation of that name "
+                                 "(loaded: {})",
+                                 name, known.empty() ? "none" : known));
+}
+
+std::vector<std::string> shippedPluginPaths()
+{
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec)
+        return {};
+    const auto dir = exe.parent_path();
+    for (const auto& candidate : {dir / "plugins", dir / ".." / "lib" / "gjk2d" / "plugins"})
+    {
+        std::vector<std::string> found;
+        for (const char* name : kShippedPlugins)
+            if (std::filesystem::is_regular_file(candidate / name, ec))
+                found.push_back((candidate / name).lexically_normal().string());
+        if (!found.empty())
+            return found;
+    }
+    return {};
+}
+
+const char* pluginStatusName(PluginStatus s)
+{
+    switch (s)
+    {
+    case PluginStatus::NotRun:
+        return "not-run";
+    case PluginStatus::Ok:
+        return "ok";
+    case PluginStatus::Refused:
+        return "refused";
+    case PluginStatus::Error:
+        return "error";
+    case PluginStatus::Crashed:
+        return "crashed";
+    case PluginStatus::Hung:
+        return "hung";
+    }
+    return "?";
+}
+
+bool refusedByDescription(const VariantInfo& v, const PreparedCase& p)
+{
+    const gjk2d_implementation& im = v.plugin->impl;
+    const bool isFloat = v.scalar == Scalar::Float;
+    const double ra = isFloat ? double(p.raf) : p.rad, rb = isFloat ? double(p.rbf) : p.rbd;
+    if ((im.accepts & GJK2D_ACCEPTS_RADIUS) == 0 && (ra > 0 || rb > 0))
+        return true;
+    const std::size_t n = std::max(p.ad.size(), p.bd.size());
+    return im.max_vertices > 0 && n > std::size_t(im.max_vertices);
+}
+
+namespace
+{
+
+static_assert(sizeof(gjk::Vec2<float>) == 2 * sizeof(float) &&
+                  sizeof(gjk::Vec2<double>) == 2 * sizeof(double),
+              "the plugin ABI reads Vec2 arrays as x0, y0, x1, y1, ...");
+
+template <class T, class Shape>
+Shape shapeOf(const std::vector<gjk::Vec2<T>>& pts, T radius, const gjk::Transform<T>& xf)
+{
+    Shape s;
+    s.points = reinterpret_cast<const T*>(pts.data());
+    s.count = std::int32_t(pts.size());
+    s.radius = radius;
+    s.position[0] = xf.p.x;
+    s.position[1] = xf.p.y;
+    s.rotation[0] = xf.q.c;
+    s.rotation[1] = xf.q.s;
+    return s;
+}
+
+// What the child writes per task: fixed size, well under PIPE_BUF, so each write is atomic.
+struct AnswerRecord
+{
+    std::uint64_t task;
+    std::int32_t status;
+    std::int32_t iterations;
+    double distance;
+    double pointA[2], pointB[2];
+};
+
+// The call itself, as the child makes it. `cache`: cache_bytes zeroed bytes (a cold start).
+AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p, std::vector<unsigned char>& cache)
+{
+    const gjk2d_implementation& im = v.plugin->impl;
+    std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
+    void* c = im.cache_bytes > 0 ? cache.data() : nullptr;
+    AnswerRecord r{};
+    if (im.scalar == GJK2D_SCALAR_FLOAT)
+    {
+        const auto a = shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf);
+        const auto b = shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf);
+        gjk2d_result_f o{};
+        o.iterations = -1;
+        r.status = im.distance_f(&a, &b, c, &o);
+        r.distance = o.distance;
+        r.pointA[0] = o.point_a[0];
+        r.pointA[1] = o.point_a[1];
+        r.pointB[0] = o.point_b[0];
+        r.pointB[1] = o.point_b[1];
+        r.iterations = o.iterations;
+    }
+    else
+    {
+        const auto a = shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad);
+        const auto b = shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd);
+        gjk2d_result_d o{};
+        o.iterations = -1;
+        r.status = im.distance_d(&a, &b, c, &o);
+        r.distance = o.distance;
+        r.pointA[0] = o.point_a[0];
+        r.pointA[1] = o.point_a[1];
+        r.pointB[0] = o.point_b[0];
+        r.pointB[1] = o.point_b[1];
+        r.iterations = o.iterations;
+    }
+    return r;
+}
+
+bool writeAll(int fd, const void* data, std::size_t n)
+{
+    const char* p = static_cast<const char*>(data);
+    while (n > 0)
+    {
+        const ssize_t w = ::write(fd, p, n);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            return false;
+        p += w;
+        n -= std::size_t(w);
+    }
+    return true;
+}
+
+// A child process fed by fork: it sees the parent's memory (the cases) as it was, runs `work`
+// writing to the pipe, and leaves with _exit (no atexit handlers, no stdio flush of the parent's
+// buffers). The campaign forks between its parallel phases, when no worker thread runs.
+struct Child
+{
+    pid_t pid = -1;
+    int fd = -1; // read end
+
+    template <class Work> static Child start(Work&& work)
+    {
+        int fds[2];
+        if (::pipe(fds) != 0)
+            throw std::runtime_error(fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
+        const pid_t pid = ::fork();
+        if (pid < 0)
+            throw std::runtime_error(fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
+        if (pid == 0)
+        {
+            ::close(fds[0]);
+            ::signal(SIGPIPE, SIG_DFL);
+            work(fds[1]);
+            ::_exit(0);
+        }
+        ::close(fds[1]);
+        return {pid, fds[0]};
+    }
+
+    // How the child ended, after its pipe closed: "" for a clean exit 0.
+    std::string finish()
+    {
+        ::close(fd);
+        int status = 0;
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        {
+        }
+        if (WIFSIGNALED(status))
+            return fmt::format("signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)));
+        if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+            return fmt::format("exit code {}", WEXITSTATUS(status));
+        return {};
+    }
+
+    void kill()
+    {
+        ::kill(pid, SIGKILL);
+        finish();
+    }
+
+    // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1 timeout.
+    ssize_t read(void* buf, std::size_t n, double timeoutSeconds) const
+    {
+        pollfd pfd{fd, POLLIN, 0};
+        for (;;)
+        {
+            const int r = ::poll(&pfd, 1, int(timeoutSeconds * 1000));
+            if (r < 0 && errno == EINTR)
+                continue;
+            if (r == 0)
+                return -1;
+            const ssize_t got = ::read(fd, buf, n);
+            if (got < 0 && errno == EINTR)
+                continue;
+            return got < 0 ? 0 : got;
+        }
+    }
+};
+
+std::mutex g_messages; // crash and hang lines on stderr
+
+} // namespace
+
+void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds)
+{
+    std::size_t next = 0;
+    while (next < tasks.size())
+    {
+        const std::size_t from = next;
+        Child child = Child::start(
+            [&](int fd)
+            {
+                std::vector<unsigned char> cache(4096);
+                for (std::size_t t = from; t < tasks.size(); ++t)
+                {
+                    AnswerRecord r = callPlugin(*tasks[t].v, *tasks[t].p, cache);
+                    r.task = t;
+                    if (!writeAll(fd, &r, sizeof r))
+                        ::_exit(3);
+                }
+            });
+        AnswerRecord rec{};
+        std::size_t have = 0;
+        for (;;)
+        {
+            const ssize_t got =
+                child.read(reinterpret_cast<char*>(&rec) + have, sizeof rec - have, timeoutSeconds);
+            if (got > 0)
+            {
+                have += std::size_t(got);
+                if (have < sizeof rec)
+                    continue;
+                have = 0;
+                if (rec.task != next)
+                    throw std::logic_error(fmt::format(
+                        "plugin child answered task {} where {} was expected", rec.task, next));
+                ExternalAnswer& a = *tasks[next].out;
+                a.status = rec.status == GJK2D_STATUS_OK        ? PluginStatus::Ok
+                           : rec.status == GJK2D_STATUS_REFUSED ? PluginStatus::Refused
+                                                                : PluginStatus::Error;
+                if (a.status == PluginStatus::Error && rec.status != GJK2D_STATUS_ERROR)
+                    a.detail = fmt::format("status {} is not a gjk2d_status", rec.status);
+                a.distance = rec.distance;
+                a.pointA = {rec.pointA[0], rec.pointA[1]};
+                a.pointB = {rec.pointB[0], rec.pointB[1]};
+                a.iterations = rec.iterations;
+                ++next;
+                continue;
+            }
+            std::string how;
+            PluginStatus status = PluginStatus::Crashed;
+            if (got < 0)
+            {
+                child.kill();
+                status = PluginStatus::Hung;
+                how = fmt::format("no answer within {} s, killed", timeoutSeconds);
+            }
+            else
+                how = child.finish();
+            if (next < tasks.size())
+            {
+                const PluginTask& t = tasks[next];
+                t.out->status = status;
+                t.out->detail = how.empty() ? "the child exited before answering" : how;
+                {
+                    std::lock_guard lock(g_messages);
+                    std::fprintf(stderr, "gjk-validate: plugin variant '%s' (%s) %s on case '%s': %s; "
+                                 "the other cases go on\n",
+                                 t.v->name.c_str(), t.v->plugin->path.c_str(),
+                                 pluginStatusName(status), t.caseName ? t.caseName->c_str() : "?",
+                                 t.out->detail.c_str());
+                }
+                ++next;
+            }
+            break;
+        }
+    }
+}
+
+TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                           const TimingConfig& cfg, double timeoutSeconds)
+{
+    TimingResult res;
+    res.cases = cases.size();
+    if (cases.empty())
+        return res;
+    Child child = Child::start(
+        [&](int fd)
+        {
+            std::vector<unsigned char> cache(4096);
+            volatile double sink = 0;
+            const TimingResult t = medianOfPasses(
+                cases.size(), cfg,
+                [&](int reps)
+                {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    double acc = 0;
+                    for (int r = 0; r < reps; ++r)
+                        for (const PreparedCase* p : cases)
+                            acc += callPlugin(v, *p, cache).distance;
+                    const auto t1 = std::chrono::steady_clock::now();
+                    sink = sink + acc;
+                    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+                });
+            writeAll(fd, &t, sizeof t);
+        });
+    // The child times for at most the budget (plus one pass of each kind): the limit allows that
+    // and one hung call.
+    const double limit = cfg.budgetSeconds * 4 + timeoutSeconds + 30;
+    TimingResult got;
+    std::size_t have = 0;
+    while (have < sizeof got)
+    {
+        const ssize_t n = child.read(reinterpret_cast<char*>(&got) + have, sizeof got - have, limit);
+        if (n <= 0)
+        {
+            if (n < 0)
+                child.kill();
+            else
+                child.finish();
+            std::lock_guard lock(g_messages);
+            std::fprintf(stderr, "gjk-validate: plugin variant '%s' %s while timed; no ns/query\n",
+                         v.name.c_str(), n < 0 ? "hung" : "crashed");
+            return res;
+        }
+        have += std::size_t(n);
+    }
+    child.finish();
+    got.cases = cases.size();
+    return got;
+}
+
+} // namespace gjkval
