@@ -133,8 +133,10 @@ std::vector<std::string> defaultFamilies()
 std::vector<std::string> defaultCaseFiles()
 {
     std::vector<std::string> files;
-    const fs::path dir = fs::path(GJK2D_SOURCE_DIR) / "validation" / "cases";
+    fs::path dir = fs::path(GJK2D_SOURCE_DIR) / "validation" / "cases";
     std::error_code ec;
+    if (!fs::is_directory(dir, ec)) // an installed gjk-validate: <prefix>/share/gjk2d/cases
+        dir = fs::read_symlink("/proc/self/exe", ec).parent_path() / ".." / GJK2D_INSTALL_CASE_DIR;
     for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file() && e.path().extension() == ".json")
             files.push_back(e.path().string());

@@ -204,7 +204,7 @@ std::vector<std::string> shippedPluginPaths()
     if (ec)
         return {};
     const auto dir = exe.parent_path();
-    for (const auto& candidate : {dir / "plugins", dir / ".." / "lib" / "gjk2d" / "plugins"})
+    for (const auto& candidate : {dir / "plugins", dir / ".." / GJK2D_INSTALL_PLUGIN_DIR})
     {
         std::vector<std::string> found;
         for (const char* name : kShippedPlugins)

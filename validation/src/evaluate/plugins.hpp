@@ -39,7 +39,8 @@ const VariantInfo* findPluginVariant(const std::string& name); // null when none
 void judgePluginVariant(const std::string& name);
 
 // The shipped plugins gjk-validate loads by default (the Box2D 2.4.1 adapter): next to the
-// program (<dir>/plugins/, the build tree) or <dir>/../lib/gjk2d/plugins/ (an installed prefix).
+// program (<dir>/plugins/, the build tree) or <dir>/../<libdir>/gjk2d/plugins/ (an installed
+// prefix; libdir is GNUInstallDirs' CMAKE_INSTALL_LIBDIR, "lib" unless the prefix is /usr).
 // Empty when neither holds them.
 std::vector<std::string> shippedPluginPaths();
 inline constexpr const char* kShippedPlugins[] = {"gjk2d-box2d.so"};

@@ -63,6 +63,18 @@ std::string mdEscape(std::string s)
     }
     return o;
 }
+// A plugin variant's refusals and incidents, appended to the skipped column: " (3 refused, 1
+// crashed)"; empty for gjk2d's variants (older reports have no such keys).
+std::string pluginCounts(const Json& st)
+{
+    std::string out;
+    for (const char* key : {"refused", "crashed", "hung", "plugin_errors"})
+        if (st.contains(key) && st[key].get<std::uint64_t>() > 0)
+            out += fmt::format("{}{} {}", out.empty() ? "" : ", ", st[key].get<std::uint64_t>(),
+                               std::string(key) == "plugin_errors" ? "error status" : key);
+    return out.empty() ? out : " (" + out + ")";
+}
+
 } // namespace
 
 std::string renderMarkdown(const Json& r)
@@ -160,7 +172,9 @@ std::string renderMarkdown(const Json& r)
                     (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
                 u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
                 u(st["nonfinite"]), u(st["iteration_limit"]), u(st["out_of_range"]),
-                u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : ""), g(e["abs"]["max"]),
+                u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") +
+                    pluginCounts(st),
+                g(e["abs"]["max"]),
                 g(e["abs"]["p99"]), g(e["normalized"]["max"]), g(e["normalized"]["p99"]),
                 g(e["ulps"]["p99"]), g(e["witness"]["max"]), st["iterations"]["mean"].get<double>(),
                 st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
@@ -265,7 +279,9 @@ std::string problemLine(const std::string& family, const std::string& name, cons
     std::string detail = fmt::format("{} failure(s)", fails);
     for (const auto& [key, label] :
          {std::pair{"false_overlap", "false overlap"}, std::pair{"false_separation", "false separation"},
-          std::pair{"nonfinite", "non-finite"}, std::pair{"iteration_limit", "iteration limit"}})
+          std::pair{"nonfinite", "non-finite"}, std::pair{"iteration_limit", "iteration limit"},
+          std::pair{"crashed", "crashed"}, std::pair{"hung", "hung"},
+          std::pair{"plugin_errors", "error status"}, std::pair{"refused", "refused"}})
         if (count(st, key) > 0)
             detail += fmt::format(", {} {}", count(st, key), label);
     const Json& e = st["errors"];
