@@ -12,6 +12,10 @@
 # same rules (docs/validate-your-gjk.md, "Install").
 include(CMakePackageConfigHelpers)
 
+# `cpack` (and `make install`) install what is built, without building every target first: the
+# .deb test (tests/plugins) then costs the packaging alone. Build before installing.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
+
 set(GJK2D_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gjk2d)
 
 install(TARGETS gjk2d_gjk gjk2d_exact gjk2d_plugin EXPORT gjk2d-targets

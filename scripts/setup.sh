@@ -10,9 +10,11 @@ set -euo pipefail
 # catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 # libbox2d-dev (Box2D 2.4.1): the runner's engine families step Box2D worlds.
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
+# dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
+# install tests (docs/validate-your-gjk.md).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
-          openmpi-bin libopenmpi-dev)
+          openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3)
 fi

@@ -910,7 +910,7 @@
       }
       var mis = misclassified(st);
       var misDetail = detail(['false_overlap', 'false_separation', 'undecidable']);
-      var failDetail = detail(['nonfinite', 'out_of_range', 'iteration_limit']);
+      var failDetail = detail(['nonfinite', 'out_of_range', 'iteration_limit', 'crashed', 'hung', 'plugin_errors']);
       var rate = has(st.failure_rate_upper95) && isNum(st.failure_rate_upper95) ? 'failure rate < ' + fmt(st.failure_rate_upper95) + ' (upper 95 % bound)' : null;
       var ha = hist(st, 'abs'), hu = hist(st, 'ulps'), hn = hist(st, 'normalized'), hb = hist(st, 'bound_ratio');
       var it = st.iterations || {};
@@ -918,7 +918,8 @@
       var skipped = num(st.skipped) > 0 ? fmtInt(st.skipped) + ' skipped' + (num(st.not_applicable) > 0 ? ' (' + fmtInt(st.not_applicable) + ' not applicable)' : '') : null;
       body.appendChild(h('tr', {'data-variant': vn, class: isJudged(vn) ? 'judged-row' : 'comparison-row'},
         h('td', {class: 'variant-cell'}, variantDot(vn), vn),
-        h('td', {class: 'num', title: skipped}, fmtInt(st.cases), skipped ? h('div', {class: 'small muted'}, fmtInt(st.skipped) + ' skipped') : null),
+        h('td', {class: 'num', title: skipped}, fmtInt(st.cases), skipped ? h('div', {class: 'small muted'}, fmtInt(st.skipped) + ' skipped') : null,
+          num(st.refused) > 0 ? h('div', {class: 'small muted'}, fmtInt(st.refused) + ' refused') : null), // plugins
         // Undecidable (within the error bound of the truth) is not a failure: red only for the rest.
         h('td', {class: 'num' + (wrongClass(st) > 0 ? ' bad' : ''), title: misDetail.join(', ') || null}, fmtInt(mis),
           wrongClass(st) > 0 || num(st.undecidable) > 0 ? h('div', {class: 'small'}, misDetail.join(', ')) : null),

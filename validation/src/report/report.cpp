@@ -213,6 +213,11 @@ std::string renderMarkdown(const Json& r)
                 continue;
             }
             const Json& x = w["variants"][n];
+            if (x.contains("plugin_status")) // a plugin's error status, crash or hang
+            {
+                s += fmt::format(" **{}** |", x["plugin_status"].get<std::string>());
+                continue;
+            }
             s += fmt::format(" {}, {}{} |", g(x["errors"]["normalized"]),
                              x["stop"].get<std::string>(),
                              x["failed"].get<bool>() ? " **FAIL**" : "");

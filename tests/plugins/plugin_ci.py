@@ -1,0 +1,188 @@
+#!/usr/bin/env python3
+"""CI steps of the plugin interface and the SDK (tests/plugins/CMakeLists.txt).
+
+  plugin_ci.py sdk --build B --source S --work W
+      cmake --install B to W/prefix; copy examples/plugin to W (nothing else of the source tree) and
+      build it with find_package(gjk2d CONFIG), CMAKE_PREFIX_PATH=W/prefix only; run the installed
+      gjk-validate with it; check that report.json has its two variants (and the shipped Box2D
+      adapter's) in every family, with counts and ns/query; compile and link a consumer of
+      gjk2d::exact with `pkg-config --cflags --libs gjk2d`.
+  plugin_ci.py contained --exe E --plugin P --kind good-but-quirky|crash|hang --work W
+      a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
+      refusals, error statuses and crashes or hangs counted, every other result kept, each
+      crash or hang named with its case on stderr; then with --judge: exit 1.
+  plugin_ci.py deb --build B --work W
+      cpack -G DEB; dpkg-deb: package name, Depends, and the SDK's files in the package.
+Exit 0 when every check holds; else a message and exit 1.
+"""
+import argparse
+import glob
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("plugin_ci: FAIL: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(cmd, expect=0, **kw):
+    p = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    if expect is not None and p.returncode != expect:
+        fail("{} exited {} (expected {})\nstdout:\n{}\nstderr:\n{}".format(
+            " ".join(cmd), p.returncode, expect, p.stdout[-4000:], p.stderr[-4000:]))
+    return p
+
+
+def fresh(path):
+    shutil.rmtree(path, ignore_errors=True)
+    os.makedirs(path)
+
+
+def variant_stats(report, name):
+    """family -> the variant's stats, for every family."""
+    out = {}
+    for f in report["families"]:
+        if name not in f["variants"]:
+            fail("family {} has no variant {}".format(f["name"], name))
+        out[f["name"]] = f["variants"][name]
+    return out
+
+
+def sdk(a):
+    fresh(a.work)
+    prefix = os.path.join(a.work, "prefix")
+    run(["cmake", "--install", a.build, "--prefix", prefix])
+    src = os.path.join(a.work, "example-plugin")
+    shutil.copytree(os.path.join(a.source, "examples", "plugin"), src)
+    build = os.path.join(a.work, "example-build")
+    env = dict(os.environ)
+    env.pop("CMAKE_PREFIX_PATH", None)
+    run(["cmake", "-S", src, "-B", build, "-DCMAKE_PREFIX_PATH=" + prefix,
+         "-DCMAKE_BUILD_TYPE=Release"], env=env)
+    run(["cmake", "--build", build], env=env)
+    plugin = os.path.join(build, "example_gjk_plugin.so")
+    out = os.path.join(a.work, "report")
+    p = run([os.path.join(prefix, "bin", "gjk-validate"), "run", "--family", "random:300",
+             "--family", "hard/sliver:20", "--plugin", plugin, "--passes", "1", "--out", out,
+             "--no-progress"])
+    report = json.load(open(os.path.join(out, "report.json")))
+    names = [v["name"] for v in report["variants"]]
+    for name in ["example-gjk", "example-naive-f32", "box2d-2.4.1"]:
+        if name not in names:
+            fail("report.json variants {} lack {}".format(names, name))
+        v = [v for v in report["variants"] if v["name"] == name][0]
+        if v["judged"] or "plugin" not in v:
+            fail("{}: expected a comparison variant with a 'plugin' block: {}".format(name, v))
+        for fam, st in variant_stats(report, name).items():
+            if st["cases"] == 0 or not isinstance(st["ns_per_query"], (int, float)):
+                fail("{} in {}: no cases or no ns/query: {}".format(name, fam, st))
+    # example-gjk is gjk2d's reference double behind the ABI: the same answers as `double`.
+    for fam, st in variant_stats(report, "example-gjk").items():
+        ref = report["families"][[f["name"] for f in report["families"]].index(fam)]["variants"]["double"]
+        if st["errors"]["abs"]["max"] != ref["errors"]["abs"]["max"] or st["failures"] != ref["failures"]:
+            fail("example-gjk differs from double in {}".format(fam))
+    # pkg-config: a consumer of the exact side, compiled and linked from gjk2d.pc alone.
+    consumer = os.path.join(a.work, "consumer.cpp")
+    open(consumer, "w").write(
+        "#include <exact/exact.hpp>\n#include <gjk/distance.hpp>\n#include <gjk2d/plugin.h>\n"
+        "#include <cstdio>\nint main() {\n"
+        "  exact::Shape a{{{0, 0}, {1, 0}, {0, 1}}, 0}, b{{{3, 0}, {4, 0}, {3, 1}}, 0};\n"
+        "  std::printf(\"%.17g\\n\", exact::distance(a, b).distance);\n}\n")
+    env["PKG_CONFIG_PATH"] = os.path.join(prefix, "lib", "pkgconfig")
+    flags = run(["pkg-config", "--cflags", "--libs", "gjk2d"], env=env).stdout.split()
+    exe = os.path.join(a.work, "consumer")
+    run(["c++", "-std=c++20", consumer, "-o", exe] + flags)
+    got = run([exe]).stdout.strip()
+    if got != "2":
+        fail("the pkg-config consumer printed {}, expected 2 (the gap from x = 1 to x = 3)".format(got))
+    print("plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json, "
+          "pkg-config consumer linked".format(names[-3:]))
+
+
+def contained(a):
+    fresh(a.work)
+    name = "test-" + a.kind
+    out = os.path.join(a.work, "report")
+    cmd = [a.exe, "run", "--family", "random:80", "--variants", "double", "--no-default-plugins",
+           "--plugin", a.plugin, "--plugin-timeout", "0.3", "--passes", "1", "--out", out,
+           "--no-progress"]
+    p = run(cmd)
+    report = json.load(open(os.path.join(out, "report.json")))
+    st = variant_stats(report, name)["random"]
+    dbl = variant_stats(report, "double")["random"]
+    if dbl["cases"] != 80:
+        fail("double ran {} of 80 cases".format(dbl["cases"]))
+    if st["refused"] == 0 or st["plugin_errors"] == 0:
+        fail("expected refusals and error statuses: {}".format(st))
+    incident = {"crash": "crashed", "hang": "hung"}.get(a.kind)
+    if incident:
+        if st[incident] == 0:
+            fail("no case counted as {}: {}".format(incident, st))
+        lines = [l for l in p.stderr.splitlines() if "plugin variant '{}'".format(name) in l]
+        if len(lines) != st[incident] or not all(" on case 'random" in l for l in lines):
+            fail("expected {} stderr lines naming the case, got:\n{}".format(st[incident], p.stderr))
+        ok = st["cases"] - st[incident] - st["plugin_errors"]
+        if ok <= 0:
+            fail("no case answered after the {}: {}".format(incident, st))
+    if st["refused"] + st["cases"] != 80:
+        fail("refused + cases != 80: {}".format(st))
+    if st["failures"] != st["plugin_errors"] + st["crashed"] + st["hung"]:
+        fail("failures are not the error statuses, crashes and hangs: {}".format(st))
+    if report["exit_code"] != 0:
+        fail("a comparison plugin decided the exit code")
+    # Judged on request: the error statuses (and crashes, hangs) fail the campaign.
+    run(cmd + ["--judge", name, "--no-timing"], expect=1)
+    print("plugin_ci: {}: {} cases, {} refused, {} error statuses, {} crashed, {} hung; "
+          "double's 80 cases kept".format(a.kind, st["cases"], st["refused"], st["plugin_errors"],
+                                          st["crashed"], st["hung"]))
+
+
+def deb(a):
+    fresh(a.work)
+    run(["cpack", "-G", "DEB", "--config", os.path.join(a.build, "CPackConfig.cmake"), "-B", a.work],
+        cwd=a.build)
+    debs = glob.glob(os.path.join(a.work, "gjk2d_*.deb"))
+    if len(debs) != 1:
+        fail("expected one gjk2d_*.deb in {}: {}".format(a.work, os.listdir(a.work)))
+    fields = run(["dpkg-deb", "-f", debs[0], "Package", "Depends"]).stdout
+    if "Package: gjk2d" not in fields:
+        fail("package name: " + fields)
+    for dep in ["libbox2d2", "libgmp-dev", "libmpfr-dev", "libc6"]:
+        if dep not in fields:
+            fail("Depends lacks {}: {}".format(dep, fields))
+    files = run(["dpkg-deb", "-c", debs[0]]).stdout
+    for path in ["./usr/bin/gjk-validate", "./usr/include/gjk2d/plugin.h",
+                 "./usr/include/gjk/distance.hpp", "./usr/include/exact/exact.hpp",
+                 "./usr/lib/libgjk2d_exact.a", "./usr/lib/cmake/gjk2d/gjk2d-config.cmake",
+                 "./usr/lib/pkgconfig/gjk2d.pc", "./usr/lib/gjk2d/plugins/gjk2d-box2d.so",
+                 "./usr/share/gjk2d/cases/talk.json"]:
+        if path not in files:
+            fail("{} is not in the package:\n{}".format(path, files))
+    print("plugin_ci: deb: {}\n{}".format(os.path.basename(debs[0]), fields.strip()))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    sub = ap.add_subparsers(dest="step", required=True)
+    s = sub.add_parser("sdk")
+    s.add_argument("--build", required=True)
+    s.add_argument("--source", required=True)
+    s.add_argument("--work", required=True)
+    c = sub.add_parser("contained")
+    c.add_argument("--exe", required=True)
+    c.add_argument("--plugin", required=True)
+    c.add_argument("--kind", required=True, choices=["good-but-quirky", "crash", "hang"])
+    c.add_argument("--work", required=True)
+    d = sub.add_parser("deb")
+    d.add_argument("--build", required=True)
+    d.add_argument("--work", required=True)
+    a = ap.parse_args()
+    {"sdk": sdk, "contained": contained, "deb": deb}[a.step](a)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,82 @@
+// Plugins that misbehave on purpose, for the containment and bad-plugin tests
+// (tests/plugins/CMakeLists.txt). One source, one behaviour per compile definition:
+//   GOOD_BUT_QUIRKY  answers with gjk2d's reference options (double), but refuses cases where A
+//                    has a multiple of 3 points and answers GJK2D_STATUS_ERROR when A has 3k+1
+//                    points and B a multiple of 3
+//   CRASH            like the above, but raises SIGSEGV where (countA + countB) % 5 == 0
+//   HANG             like the above, but never returns where (countA + countB) % 5 == 0
+//   WRONG_ABI        describes itself with abi_version GJK2D_PLUGIN_ABI_VERSION + 1
+//   BAD_DESCRIPTION  an implementation with scalar 7
+//   NO_ENTRY         exports no gjk2d_plugin_describe
+#include <gjk2d/plugin.h>
+
+#include <gjk/distance.hpp>
+
+#include <csignal>
+#include <unistd.h>
+
+namespace
+{
+
+int32_t answer(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
+{
+#if defined(CRASH) || defined(HANG)
+    if ((a->count + b->count) % 5 == 0)
+    {
+#if defined(CRASH)
+        std::raise(SIGSEGV);
+#else
+        for (;;)
+            ::pause();
+#endif
+    }
+#endif
+    if (a->count % 3 == 0)
+        return GJK2D_STATUS_REFUSED;
+    if (a->count % 3 == 1 && b->count % 3 == 0)
+        return GJK2D_STATUS_ERROR;
+    auto poly = [](const gjk2d_shape_d& s)
+    { return gjk::Polygon<double>{reinterpret_cast<const gjk::Vec2<double>*>(s.points), s.count, s.radius}; };
+    auto xf = [](const gjk2d_shape_d& s)
+    {
+        return gjk::Transform<double>{{s.position[0], s.position[1]}, {s.rotation[0], s.rotation[1]}};
+    };
+    gjk::SimplexCache cache;
+    const auto o = gjk::distance(gjk::DistanceInput<double>{poly(*a), poly(*b), xf(*a), xf(*b)}, cache);
+    out->distance = o.distance;
+    out->point_a[0] = o.pointA.x;
+    out->point_a[1] = o.pointA.y;
+    out->point_b[0] = o.pointB.x;
+    out->point_b[1] = o.pointB.y;
+    out->iterations = o.iterations;
+    return GJK2D_STATUS_OK;
+}
+
+const gjk2d_implementation kImplementations[] = {
+    {TEST_PLUGIN_NAME, "a test plugin (tests/plugins)",
+#if defined(BAD_DESCRIPTION)
+     7,
+#else
+     GJK2D_SCALAR_DOUBLE,
+#endif
+     GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &answer},
+};
+
+const gjk2d_plugin kPlugin = {
+#if defined(WRONG_ABI)
+    GJK2D_PLUGIN_ABI_VERSION + 1,
+#else
+    GJK2D_PLUGIN_ABI_VERSION,
+#endif
+    1, kImplementations};
+
+} // namespace
+
+#if defined(NO_ENTRY)
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe_misspelt(void)
+#else
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
+#endif
+{
+    return &kPlugin;
+}
