@@ -121,6 +121,15 @@ std::string renderMarkdown(const Json& r)
     {
         const Json& o = v["options"];
         const std::string name = v["name"].get<std::string>();
+        if (v.contains("plugin")) // its own algorithm: only the bound it is compared with is ours
+        {
+            s += fmt::format("| {} | {} | {} | plugin `{}` | - | - | - | cold | {} |\n", name,
+                             isJudged(judged, name) ? "judged (--judge)" : "comparison",
+                             v["type"].get<std::string>(),
+                             mdEscape(v["plugin"]["path"].get<std::string>()),
+                             mdEscape(v["bound"]["formula"].get<std::string>()));
+            continue;
+        }
         s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", name,
                          isJudged(judged, name) ? "judged" : "comparison",
                          v["type"].get<std::string>(), g(o["direction"]), g(o["stopping"]),
