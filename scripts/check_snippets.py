@@ -48,7 +48,7 @@ def read_examples():
     """name -> (file, lines); exits 2 on a malformed example."""
     snippets = {}
     errors = []
-    for path in sorted(EXAMPLES.glob("*.cpp")):
+    for path in sorted(EXAMPLES.rglob("*.cpp")):  # also examples/plugin/
         rel = path.relative_to(ROOT)
         name, start, body = None, 0, []
         for no, line in enumerate(path.read_text().splitlines(), 1):

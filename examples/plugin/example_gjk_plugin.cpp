@@ -44,6 +44,7 @@ int32_t answer(const Shape* a, const Shape* b, Result* out, const gjk::Options& 
     return GJK2D_STATUS_OK;
 }
 
+// [snippet: plugin-functions]
 int32_t exampleGjk(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
 {
     return answer<double>(a, b, out, gjk::referenceOptions);
@@ -54,6 +55,9 @@ int32_t exampleNaive(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void*, gjk2
     return answer<float>(a, b, out, gjk::Options{.direction = gjk::SearchDirection::ClosestPoint});
 }
 
+// [end snippet]
+
+// [snippet: plugin-description]
 const gjk2d_implementation kImplementations[] = {
     // name, description, scalar, accepts, max_vertices (0: any), cache_bytes, distance_f, distance_d
     {"example-gjk", "gjk2d's reference options behind the plugin ABI", GJK2D_SCALAR_DOUBLE,
@@ -71,3 +75,4 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 {
     return &kPlugin;
 }
+// [end snippet]
