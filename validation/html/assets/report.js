@@ -1392,13 +1392,16 @@
         return (ia < 0 ? 1e9 : ia) - (ib < 0 ? 1e9 : ib);
       });
     }
-    // Start on the variant this case is worst for.
-    var by = detail.worst_by || 'normalized', best = null, bestErr = -Infinity;
+    // Start on the variant this case is worst for, among those with an iteration trace (a
+    // plugin's variant has none: docs/validate-your-gjk.md).
+    var by = detail.worst_by || 'normalized', best = null, bestErr = -Infinity, traced = null;
     this.variants.forEach(function (n) {
-      var e = vmap[n] && vmap[n].errors ? num(vmap[n].errors[by]) : NaN;
+      if (!vmap[n] || !Array.isArray(vmap[n].trace)) return;
+      traced = traced || n;
+      var e = vmap[n].errors ? num(vmap[n].errors[by]) : NaN;
       if (isFinite(e) && e > bestErr) { bestErr = e; best = n; }
     });
-    this.variant = best || this.variants[0] || null;
+    this.variant = best || traced || this.variants[0] || null;
     this.step = 0;
     this.zoom = false;
     this.build();

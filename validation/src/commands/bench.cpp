@@ -24,8 +24,7 @@ struct Options
 int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.bcfg.seed = parseSeed(o.benchSeed);
-    o.bcfg.variants = parseVariants(o.benchVariants);
-    applyPluginOptions(o.plugins, false, o.bcfg.variants);
+    o.bcfg.variants = selectVariants(o.benchVariants, o.plugins, false);
     o.bcfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     o.bcfg.command = line.text();
     if (o.benchFamilies.empty() && o.benchFiles.empty())

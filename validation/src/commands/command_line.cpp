@@ -152,27 +152,40 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped)
     sub.add_option("--plugin-timeout", o.timeoutSeconds,
                    "seconds a plugin may take on one case before it counts as hung, 0.01..3600")
         ->capture_default_str();
-    if (shipped)
-        sub.add_flag("--no-default-plugins", o.noDefault,
-                     "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run joins "
-                     "when --variants is left at its default");
+    sub.add_flag("--no-default-plugins", o.noDefault,
+                 shipped ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
+                           "joins when --variants is left at its default"
+                         : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
+                           "--variants can name");
 }
 
-void applyPluginOptions(const PluginOptions& o, bool loadShipped,
-                        std::vector<const VariantInfo*>& variants)
+std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
+                                               bool shippedByDefault)
 {
     if (!(o.timeoutSeconds >= 0.01 && o.timeoutSeconds <= 3600))
         throw InputError("--plugin-timeout: expected seconds in 0.01..3600");
-    std::vector<std::string> paths;
-    if (loadShipped && !o.noDefault)
-        paths = shippedPluginPaths();
-    paths.insert(paths.end(), o.paths.begin(), o.paths.end());
-    for (const auto& path : paths)
+    // Loaded first, so that --variants can name their implementations.
+    std::vector<const VariantInfo*> shipped, given;
+    if (!o.noDefault)
+        for (const auto& path : shippedPluginPaths())
+            for (const VariantInfo* v : loadPlugin(path))
+                shipped.push_back(v);
+    for (const auto& path : o.paths)
         for (const VariantInfo* v : loadPlugin(path))
+            given.push_back(v);
+    std::vector<const VariantInfo*> variants = parseVariants(list);
+    auto add = [&](const std::vector<const VariantInfo*>& vs)
+    {
+        for (const VariantInfo* v : vs)
             if (std::find(variants.begin(), variants.end(), v) == variants.end())
                 variants.push_back(v);
+    };
+    if (shippedByDefault && list == kDefaultVariants)
+        add(shipped);
+    add(given);
     for (const auto& name : o.judge)
         judgePluginVariant(name);
+    return variants;
 }
 
 void testFault()

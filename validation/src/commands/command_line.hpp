@@ -71,8 +71,8 @@ void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
 
 struct VariantInfo;
 
-// --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, and for `run`
-// --no-default-plugins (docs/validate-your-gjk.md).
+// --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, --no-default-plugins
+// (docs/validate-your-gjk.md). `shipped`: the command joins the shipped plugins by default (run).
 struct PluginOptions
 {
     std::vector<std::string> paths, judge;
@@ -80,10 +80,12 @@ struct PluginOptions
     bool noDefault = false;
 };
 void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped);
-// Loads the plugins (InputError, exit 2, naming the file), the shipped ones first when
-// `loadShipped`, appends their variants to `variants` (once each) and applies --judge.
-void applyPluginOptions(const PluginOptions& o, bool loadShipped,
-                        std::vector<const VariantInfo*>& variants);
+// --variants LIST with the plugins: loads the shipped plugins (unless --no-default-plugins) and
+// the --plugin ones (InputError, exit 2, naming the file), so that LIST can name their
+// implementations; then LIST's variants, the shipped plugins' when `shippedByDefault` and LIST is
+// the default, and every --plugin one; then --judge.
+std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
+                                               bool shippedByDefault);
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.

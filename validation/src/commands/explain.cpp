@@ -69,8 +69,7 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
         throw InputError("explain: which case? give its name (explain FILE NAME)");
     const std::uint64_t seedValue = parseSeed(o.exSeed);
     EvalContext ctx;
-    ctx.variants = parseVariants(o.exVariants);
-    applyPluginOptions(o.plugins, false, ctx.variants);
+    ctx.variants = selectVariants(o.exVariants, o.plugins, false);
     ctx.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     ctx.exactOptions.route = parseRouteOrThrow(o.exRoute);
     if (!o.exFamily.empty())

@@ -57,9 +57,8 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
 {
     CampaignConfig cfg = o.config;
     cfg.seed = parseSeed(o.seed);
-    cfg.variants = parseVariants(o.variants);
-    // The shipped plugins (Box2D 2.4.1) join the default variant list, not an explicit one.
-    applyPluginOptions(o.plugins, o.variants == kDefaultVariants, cfg.variants);
+    // The shipped plugins (Box2D 2.4.1) join the default variant list; an explicit one names them.
+    cfg.variants = selectVariants(o.variants, o.plugins, true);
     cfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     cfg.route = parseRouteOrThrow(o.route);
     checkRange("--threads", cfg.threads, 0, kMaxThreads);
