@@ -11,6 +11,9 @@
       a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
       refusals, error statuses and crashes or hangs counted, every other result kept, each
       crash or hang named with its case on stderr; then with --judge: exit 1.
+  plugin_ci.py box2d --exe E --work W
+      the shipped Box2D 2.4.1 adapter, named in --variants: cases of more than 256 points refused
+      (its cache's 8-bit indices), every random case answered, with iterations.
   plugin_ci.py deb --build B --work W
       cpack -G DEB; dpkg-deb: package name, Depends, and the SDK's files in the package.
 Exit 0 when every check holds; else a message and exit 1.
@@ -141,6 +144,25 @@ def contained(a):
                                           st["crashed"], st["hung"]))
 
 
+def box2d(a):
+    fresh(a.work)
+    out = os.path.join(a.work, "report")
+    run([a.exe, "run", "--family", "random:100", "--family", "hard/many-vertices:3", "--variants",
+         "float,box2d-2.4.1", "--no-timing", "--out", out, "--no-progress"])
+    report = json.load(open(os.path.join(out, "report.json")))
+    st = variant_stats(report, "box2d-2.4.1")
+    many = st["hard/many-vertices"]
+    if many["refused"] != 3 or many["cases"] != 0:
+        fail("hard/many-vertices (1000 to 4096 points): expected 3 refused: {}".format(many))
+    rnd = st["random"]
+    if rnd["cases"] != 100 or rnd["refused"] != 0 or rnd["iterations"]["max"] < 1:
+        fail("random: expected 100 answered cases with iteration counts: {}".format(rnd))
+    if rnd["nonfinite"] != 0:
+        fail("random: Box2D gave non-finite answers on ordinary shapes: {}".format(rnd))
+    print("plugin_ci: box2d: 3 many-vertex cases refused, 100 random cases answered "
+          "(max error/bound {})".format(rnd["errors"]["bound_ratio"]["max"]))
+
+
 def deb(a):
     fresh(a.work)
     run(["cpack", "-G", "DEB", "--config", os.path.join(a.build, "CPackConfig.cmake"), "-B", a.work],
@@ -177,11 +199,14 @@ def main():
     c.add_argument("--plugin", required=True)
     c.add_argument("--kind", required=True, choices=["good-but-quirky", "crash", "hang"])
     c.add_argument("--work", required=True)
+    b = sub.add_parser("box2d")
+    b.add_argument("--exe", required=True)
+    b.add_argument("--work", required=True)
     d = sub.add_parser("deb")
     d.add_argument("--build", required=True)
     d.add_argument("--work", required=True)
     a = ap.parse_args()
-    {"sdk": sdk, "contained": contained, "deb": deb}[a.step](a)
+    {"sdk": sdk, "contained": contained, "box2d": box2d, "deb": deb}[a.step](a)
 
 
 if __name__ == "__main__":
