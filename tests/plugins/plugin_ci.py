@@ -6,7 +6,7 @@
       build it with find_package(gjk2d CONFIG), CMAKE_PREFIX_PATH=W/prefix only; run the installed
       gjk-validate with it; check that report.json has its two variants (and the shipped Box2D
       adapter's) in every family, with counts and ns/query; compile and link a consumer of
-      gjk2d::exact with `pkg-config --cflags --libs gjk2d`.
+      gjk2d::exact with `pkg-config --cflags --libs gjk2d`, and with find_package.
   plugin_ci.py contained --exe E --plugin P --kind good-but-quirky|crash|hang --work W
       a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
       refusals, error statuses and crashes or hangs counted, every other result kept, each
@@ -102,8 +102,23 @@ def sdk(a):
     got = run([exe]).stdout.strip()
     if got != "2":
         fail("the pkg-config consumer printed {}, expected 2 (the gap from x = 1 to x = 3)".format(got))
+    # The same consumer through find_package: gjk2d::exact's link dependencies (GMP, MPFR) come
+    # with the exported target.
+    cm = os.path.join(a.work, "consumer-cmake")
+    os.makedirs(cm)
+    shutil.copy(consumer, cm)
+    open(os.path.join(cm, "CMakeLists.txt"), "w").write(
+        "cmake_minimum_required(VERSION 3.25)\nproject(consumer LANGUAGES CXX)\n"
+        "set(CMAKE_CXX_STANDARD 20)\nfind_package(gjk2d 0.1 CONFIG REQUIRED)\n"
+        "add_executable(consumer consumer.cpp)\n"
+        "target_link_libraries(consumer PRIVATE gjk2d::exact gjk2d::gjk gjk2d::plugin)\n")
+    run(["cmake", "-S", cm, "-B", os.path.join(cm, "build"), "-DCMAKE_PREFIX_PATH=" + prefix], env=env)
+    run(["cmake", "--build", os.path.join(cm, "build")], env=env)
+    got = run([os.path.join(cm, "build", "consumer")]).stdout.strip()
+    if got != "2":
+        fail("the find_package consumer printed {}, expected 2".format(got))
     print("plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json, "
-          "pkg-config consumer linked".format(names[-3:]))
+          "consumers of gjk2d::exact linked through pkg-config and find_package".format(names[-3:]))
 
 
 def contained(a):
