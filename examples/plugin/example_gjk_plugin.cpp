@@ -59,7 +59,8 @@ int32_t exampleNaive(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void*, gjk2
 
 // [snippet: plugin-description]
 const gjk2d_implementation kImplementations[] = {
-    // name, description, scalar, accepts, max_vertices (0: any), cache_bytes, distance_f, distance_d
+    // name, description, scalar, accepts, max_vertices (0: any), cache_bytes, distance_f,
+    // distance_d
     {"example-gjk", "gjk2d's reference options behind the plugin ABI", GJK2D_SCALAR_DOUBLE,
      GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &exampleGjk},
     {"example-naive-f32", "naive search direction d = -P in float", GJK2D_SCALAR_FLOAT,

@@ -36,13 +36,17 @@ int32_t answer(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_resu
     if (a->count % 3 == 1 && b->count % 3 == 0)
         return GJK2D_STATUS_ERROR;
     auto poly = [](const gjk2d_shape_d& s)
-    { return gjk::Polygon<double>{reinterpret_cast<const gjk::Vec2<double>*>(s.points), s.count, s.radius}; };
-    auto xf = [](const gjk2d_shape_d& s)
     {
-        return gjk::Transform<double>{{s.position[0], s.position[1]}, {s.rotation[0], s.rotation[1]}};
+        return gjk::Polygon<double>{reinterpret_cast<const gjk::Vec2<double>*>(s.points), s.count,
+                                    s.radius};
+    };
+    auto xf = [](const gjk2d_shape_d& s) {
+        return gjk::Transform<double>{{s.position[0], s.position[1]},
+                                      {s.rotation[0], s.rotation[1]}};
     };
     gjk::SimplexCache cache;
-    const auto o = gjk::distance(gjk::DistanceInput<double>{poly(*a), poly(*b), xf(*a), xf(*b)}, cache);
+    const auto o =
+        gjk::distance(gjk::DistanceInput<double>{poly(*a), poly(*b), xf(*a), xf(*b)}, cache);
     out->distance = o.distance;
     out->point_a[0] = o.pointA.x;
     out->point_a[1] = o.pointA.y;

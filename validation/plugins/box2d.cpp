@@ -33,8 +33,10 @@ B2DistanceFn libraryB2Distance()
     static const B2DistanceFn fn = []
     {
         void* lib = ::dlopen("libbox2d.so.2", RTLD_NOW | RTLD_NOLOAD);
-        void* sym = lib ? ::dlsym(lib, "_Z10b2DistanceP16b2DistanceOutputP14b2SimplexCachePK15b2DistanceInput")
-                        : nullptr;
+        void* sym =
+            lib ? ::dlsym(lib,
+                          "_Z10b2DistanceP16b2DistanceOutputP14b2SimplexCachePK15b2DistanceInput")
+                : nullptr;
         return sym ? reinterpret_cast<B2DistanceFn>(sym) : static_cast<B2DistanceFn>(&::b2Distance);
     }();
     return fn;
@@ -76,9 +78,9 @@ int32_t box2dDistance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cach
 }
 
 const gjk2d_implementation kImplementations[] = {
-    {"box2d-2.4.1", "Box2D 2.4.1 b2Distance (Debian libbox2d), cold start, useRadii", GJK2D_SCALAR_FLOAT,
-     GJK2D_ACCEPTS_RADIUS | GJK2D_ACCEPTS_WARM_START, 256, int32_t(sizeof(b2SimplexCache)),
-     &box2dDistance, nullptr},
+    {"box2d-2.4.1", "Box2D 2.4.1 b2Distance (Debian libbox2d), cold start, useRadii",
+     GJK2D_SCALAR_FLOAT, GJK2D_ACCEPTS_RADIUS | GJK2D_ACCEPTS_WARM_START, 256,
+     int32_t(sizeof(b2SimplexCache)), &box2dDistance, nullptr},
 };
 
 const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations};

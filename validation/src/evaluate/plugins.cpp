@@ -47,8 +47,8 @@ bool validName(const char* s)
     for (std::size_t i = 0; i < n; ++i)
     {
         const char c = s[i];
-        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                        c == '.' || c == '_' || c == '+' || c == '-';
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                        (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '+' || c == '-';
         if (!ok)
             return false;
     }
@@ -63,8 +63,8 @@ std::string descriptionProblem(const gjk2d_implementation& im)
     if (!validName(im.name))
         return fmt::format("name '{}' is not 1 to 64 characters of [A-Za-z0-9._+-]", im.name);
     if (im.scalar != GJK2D_SCALAR_FLOAT && im.scalar != GJK2D_SCALAR_DOUBLE)
-        return fmt::format("scalar {} is neither GJK2D_SCALAR_FLOAT (0) nor GJK2D_SCALAR_DOUBLE (1)",
-                           im.scalar);
+        return fmt::format(
+            "scalar {} is neither GJK2D_SCALAR_FLOAT (0) nor GJK2D_SCALAR_DOUBLE (1)", im.scalar);
     if ((im.accepts & ~std::uint32_t(GJK2D_ACCEPTS_RADIUS | GJK2D_ACCEPTS_WARM_START)) != 0)
         return fmt::format("accepts has unknown bits 0x{:x}", im.accepts);
     if (im.max_vertices < 0)
@@ -83,7 +83,9 @@ std::string descriptionProblem(const gjk2d_implementation& im)
 std::vector<const VariantInfo*> loadPlugin(const std::string& path)
 {
     Registry& reg = registry();
-    struct stat st{};
+    struct stat st
+    {
+    };
     if (::stat(path.c_str(), &st) != 0)
         throw InputError(fmt::format("plugin {}: {}", path, std::strerror(errno)));
     if (!S_ISREG(st.st_mode))
@@ -104,17 +106,20 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
     if (handle == nullptr)
     {
         const char* e = ::dlerror();
-        throw InputError(fmt::format("plugin {}: cannot be loaded: {}", path, e ? e : "dlopen failed"));
+        throw InputError(
+            fmt::format("plugin {}: cannot be loaded: {}", path, e ? e : "dlopen failed"));
     }
     // The handle stays open for the whole run: the description and the functions live in it.
     auto describe =
         reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(handle, GJK2D_PLUGIN_ENTRY_POINT));
     if (describe == nullptr)
-        throw InputError(fmt::format("plugin {}: does not export the entry point {} (gjk2d/plugin.h)",
-                                     path, GJK2D_PLUGIN_ENTRY_POINT));
+        throw InputError(
+            fmt::format("plugin {}: does not export the entry point {} (gjk2d/plugin.h)", path,
+                        GJK2D_PLUGIN_ENTRY_POINT));
     const gjk2d_plugin* d = describe();
     if (d == nullptr)
-        throw InputError(fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_ENTRY_POINT));
+        throw InputError(
+            fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_ENTRY_POINT));
     if (d->abi_version != GJK2D_PLUGIN_ABI_VERSION)
         throw InputError(fmt::format(
             "plugin {}: plugin ABI version {}, this gjk-validate reads version {} (rebuild the "
@@ -130,8 +135,8 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         const gjk2d_implementation& im = d->implementations[i];
         const std::string problem = descriptionProblem(im);
         if (!problem.empty())
-            throw InputError(
-                fmt::format("plugin {}: bad description of implementation {}: {}", path, i, problem));
+            throw InputError(fmt::format("plugin {}: bad description of implementation {}: {}",
+                                         path, i, problem));
         const std::string name = im.name;
         bool taken = findVariant(name) != nullptr;
         for (const auto& n : names)
@@ -154,8 +159,9 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         // The options whose error bound the implementation is compared with (and judged by, with
         // --judge): gjk2d's reference options in the implementation's scalar type.
         v.options = gjk::referenceOptions;
-        v.description = fmt::format("plugin {}{}{}", std::filesystem::path(path).filename().string(),
-                                    im.description ? ": " : "", im.description ? im.description : "");
+        v.description =
+            fmt::format("plugin {}{}{}", std::filesystem::path(path).filename().string(),
+                        im.description ? ": " : "", im.description ? im.description : "");
         v.judged = false;
         v.start = Start::Cold;
         v.plugin = &reg.impls.back();
@@ -279,7 +285,8 @@ struct AnswerRecord
 };
 
 // The call itself, as the child makes it. `cache`: cache_bytes zeroed bytes (a cold start).
-AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p, std::vector<unsigned char>& cache)
+AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
+                        std::vector<unsigned char>& cache)
 {
     const gjk2d_implementation& im = v.plugin->impl;
     std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
@@ -344,10 +351,12 @@ struct Child
     {
         int fds[2];
         if (::pipe(fds) != 0)
-            throw std::runtime_error(fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
+            throw std::runtime_error(
+                fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
         const pid_t pid = ::fork();
         if (pid < 0)
-            throw std::runtime_error(fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
+            throw std::runtime_error(
+                fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
         if (pid == 0)
         {
             ::close(fds[0]);
@@ -380,7 +389,8 @@ struct Child
         finish();
     }
 
-    // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1 timeout.
+    // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1
+    // timeout.
     ssize_t read(void* buf, std::size_t n, double timeoutSeconds) const
     {
         pollfd pfd{fd, POLLIN, 0};
@@ -466,7 +476,8 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
                 t.out->detail = how.empty() ? "the child exited before answering" : how;
                 {
                     std::lock_guard lock(g_messages);
-                    std::fprintf(stderr, "gjk-validate: plugin variant '%s' (%s) %s on case '%s': %s; "
+                    std::fprintf(stderr,
+                                 "gjk-validate: plugin variant '%s' (%s) %s on case '%s': %s; "
                                  "the other cases go on\n",
                                  t.v->name.c_str(), t.v->plugin->path.c_str(),
                                  pluginStatusName(status), t.caseName ? t.caseName->c_str() : "?",
@@ -491,19 +502,19 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
         {
             std::vector<unsigned char> cache(4096);
             volatile double sink = 0;
-            const TimingResult t = medianOfPasses(
-                cases.size(), cfg,
-                [&](int reps)
-                {
-                    const auto t0 = std::chrono::steady_clock::now();
-                    double acc = 0;
-                    for (int r = 0; r < reps; ++r)
-                        for (const PreparedCase* p : cases)
-                            acc += callPlugin(v, *p, cache).distance;
-                    const auto t1 = std::chrono::steady_clock::now();
-                    sink = sink + acc;
-                    return std::chrono::duration<double, std::nano>(t1 - t0).count();
-                });
+            const TimingResult t =
+                medianOfPasses(cases.size(), cfg,
+                               [&](int reps)
+                               {
+                                   const auto t0 = std::chrono::steady_clock::now();
+                                   double acc = 0;
+                                   for (int r = 0; r < reps; ++r)
+                                       for (const PreparedCase* p : cases)
+                                           acc += callPlugin(v, *p, cache).distance;
+                                   const auto t1 = std::chrono::steady_clock::now();
+                                   sink = sink + acc;
+                                   return std::chrono::duration<double, std::nano>(t1 - t0).count();
+                               });
             writeAll(fd, &t, sizeof t);
         });
     // The child times for at most the budget (plus one pass of each kind): the limit allows that
@@ -513,7 +524,8 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
     std::size_t have = 0;
     while (have < sizeof got)
     {
-        const ssize_t n = child.read(reinterpret_cast<char*>(&got) + have, sizeof got - have, limit);
+        const ssize_t n =
+            child.read(reinterpret_cast<char*>(&got) + have, sizeof got - have, limit);
         if (n <= 0)
         {
             if (n < 0)
