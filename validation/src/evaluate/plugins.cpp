@@ -360,7 +360,11 @@ struct Child
         if (pid == 0)
         {
             ::close(fds[0]);
-            ::signal(SIGPIPE, SIG_DFL);
+            // A plugin's crash ends the child at once, by its signal: the program's own handlers
+            // (a sanitizer's, which symbolizes a report first and would count as a hang) are
+            // not the plugin's.
+            for (const int sig : {SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+                ::signal(sig, SIG_DFL);
             work(fds[1]);
             ::_exit(0);
         }
