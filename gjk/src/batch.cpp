@@ -1,0 +1,386 @@
+// gjk::distanceBatch in SIMD lanes (gjk/batch.hpp): the run-time choice of instruction set, and
+// the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts it),
+// ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
+//
+// Why GCC vector extensions and `#pragma GCC target` rather than Highway (libhwy-dev): the lanes
+// need element-wise +, -, *, /, comparisons and selects only (no gather: a lane's points are
+// copied into a [point][lane] buffer when its query starts, and the support scan keeps the best
+// point beside its index). Vector extensions write them as the scalar code writes them
+// (`a.x * b.x + a.y * b.y`), so the lane code reads like distance.hpp line by line and does the
+// same IEEE operations by construction; one source compiled under three target pragmas gives the
+// SSE2, AVX2 and AVX-512 versions, each in its own namespace (no function compiled for AVX2 can be
+// picked by the linker for baseline code), and __builtin_cpu_supports chooses at run time. No new
+// dependency. Highway would give the same with more vocabulary (its own names for every operation,
+// HWY_EXPORT tables), and its MulAdd is one careless edit away from an FMA.
+#include "gjk/batch.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <type_traits>
+#include <vector>
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define GJK_BATCH_LANES 1
+
+// SSE2: x86-64's baseline, no target pragma needed.
+#include "gjk/detail/fp_begin.hpp"
+#define GJK_LANES_NAMESPACE gjk_lanes_sse2
+#include "batch_lanes.hpp"
+#undef GJK_LANES_NAMESPACE
+#include "gjk/detail/fp_end.hpp"
+
+#pragma GCC push_options
+#pragma GCC target("avx2")
+#include "gjk/detail/fp_begin.hpp"
+#define GJK_LANES_NAMESPACE gjk_lanes_avx2
+#include "batch_lanes.hpp"
+#undef GJK_LANES_NAMESPACE
+#include "gjk/detail/fp_end.hpp"
+#pragma GCC pop_options
+
+#pragma GCC push_options
+#pragma GCC target("avx512f")
+#include "gjk/detail/fp_begin.hpp"
+#define GJK_LANES_NAMESPACE gjk_lanes_avx512
+#include "batch_lanes.hpp"
+#undef GJK_LANES_NAMESPACE
+#include "gjk/detail/fp_end.hpp"
+#pragma GCC pop_options
+#else
+#define GJK_BATCH_LANES 0
+#endif
+
+#include "gjk/detail/fp_begin.hpp"
+
+namespace gjk
+{
+
+BatchIsa bestBatchIsa()
+{
+#if GJK_BATCH_LANES
+    static const BatchIsa best = []
+    {
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("avx512f"))
+            return BatchIsa::Avx512;
+        if (__builtin_cpu_supports("avx2"))
+            return BatchIsa::Avx2;
+        return BatchIsa::Sse2;
+    }();
+    return best;
+#else
+    return BatchIsa::Scalar;
+#endif
+}
+
+bool batchIsaSupported(BatchIsa isa)
+{
+    return isa == BatchIsa::Best || std::uint8_t(isa) <= std::uint8_t(bestBatchIsa());
+}
+
+namespace
+{
+
+// Shapes of more points than this run the scalar query (the lanes copy each shape's points into
+// their buffer when a query starts; a lane scans as many points as the largest shape among the
+// lanes, so one large shape would slow the others down).
+constexpr int kMaxLanePoints = 64;
+
+// Whether the lanes run this pair with these options (docs/gjk.md, "Batches in SIMD lanes"):
+// the default search direction and stopping rule, A's local frame, the linear scan (a binary
+// search on shapes of at most 16 points is the linear scan too). Inputs that break a contract
+// (asserted by distance()) run the scalar query, which asserts.
+template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& options)
+{
+    if (options.direction != SearchDirection::EdgePerpendicular || options.stopping != StoppingRule::RepeatedSupport ||
+        options.frame != Frame::LocalA)
+        return false;
+    const int nA = in.proxyA.count, nB = in.proxyB.count;
+    if (nA < 1 || nB < 1 || nA > kMaxLanePoints || nB > kMaxLanePoints)
+        return false;
+    if (options.support == SupportStrategy::BinarySearch && (nA > 16 || nB > 16))
+        return false;
+    return in.proxyA.radius >= T(0) && in.proxyB.radius >= T(0) &&
+           !(in.transformA.q.c == T(0) && in.transformA.q.s == T(0)) &&
+           !(in.transformB.q.c == T(0) && in.transformB.q.s == T(0));
+}
+
+constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
+
+template <class T, int W, class State> class LaneBatch
+{
+  public:
+    using Run = bool (*)(State&, T);
+
+    LaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
+              std::span<DistanceOutput<T>> outputs, const Options& options, Run run, BatchStats& stats)
+        : inputs_(inputs), caches_(caches), outputs_(outputs), options_(options), run_(run), stats_(stats)
+    {
+    }
+
+    void operator()()
+    {
+        int cap = 1;
+        for (std::size_t i = 0; i < inputs_.size(); ++i)
+        {
+            if (runsInLanes(inputs_[i], options_))
+            {
+                order_.push_back(i);
+                cap = std::max({cap, inputs_[i].proxyA.count, inputs_[i].proxyB.count});
+            }
+            else
+            {
+                outputs_[i] = distance(inputs_[i], caches_[i], options_);
+                ++stats_.scalarQueries;
+            }
+        }
+        if (order_.empty())
+            return;
+        s_ = std::make_unique<State>();
+        points_.assign(std::size_t(4) * std::size_t(cap) * W, T(0));
+        s_->ax = points_.data();
+        s_->ay = s_->ax + cap * W;
+        s_->bx = s_->ay + cap * W;
+        s_->by = s_->bx + cap * W;
+        s_->boundA = s_->boundB = 1;
+        for (int l = 0; l < W; ++l)
+            refill(l);
+        const T minEdge = minEdgeComponent<T>();
+        while (run_(*s_, minEdge))
+            for (int l = 0; l < W; ++l)
+                if (pair_[l] != kNone && s_->stop[l] != kRunning)
+                {
+                    finish(l);
+                    refill(l);
+                }
+        stats_.steps = s_->steps;
+        stats_.busyLaneSteps = s_->busyLaneSteps;
+        stats_.scannedPoints = s_->scannedPoints;
+        stats_.usefulPoints = s_->usefulPoints;
+    }
+
+  private:
+    static constexpr std::size_t kNone = std::size_t(-1);
+    static constexpr int kRunning = -1, kHandBack = -2;
+
+    // A lane's points: the shape's own, then its point 0 up to the scan bound. A larger shape
+    // raises the bound, and every other lane repeats its point 0 up to it.
+    void copyPoints(T* xs, T* ys, int& bound, int l, const Polygon<T>& poly)
+    {
+        const int n = poly.count;
+        if (n > bound)
+        {
+            for (int p = bound; p < n; ++p)
+                for (int o = 0; o < W; ++o)
+                {
+                    xs[p * W + o] = xs[o];
+                    ys[p * W + o] = ys[o];
+                }
+            bound = n;
+        }
+        for (int p = 0; p < n; ++p)
+        {
+            xs[p * W + l] = poly.points[p].x;
+            ys[p * W + l] = poly.points[p].y;
+        }
+        for (int p = n; p < bound; ++p)
+        {
+            xs[p * W + l] = poly.points[0].x;
+            ys[p * W + l] = poly.points[0].y;
+        }
+    }
+
+    // The next pair into lane l; a pair handed back at its start runs the scalar query at once.
+    void refill(int l)
+    {
+        for (;;)
+        {
+            start(l);
+            if (pair_[l] == kNone || s_->stop[l] == kRunning)
+                return;
+            finish(l);
+        }
+    }
+
+    // The next pair into lane l, started as distance() starts it (A's frame, startSimplex).
+    void start(int l)
+    {
+        State& s = *s_;
+        if (next_ == order_.size())
+        {
+            pair_[l] = kNone;
+            s.stop[l] = kIdle;
+            return;
+        }
+        const std::size_t i = order_[next_++];
+        pair_[l] = i;
+        const DistanceInput<T>& in = inputs_[i];
+        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
+        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
+        A.identity = true;
+        B.xf = invMulTransforms(in.transformA, in.transformB);
+        Simplex<T> simplex;
+        const int edgeBase = startSimplex<T>(caches_[i], A, B, simplex);
+        searchA_[l] = A.last;
+        searchB_[l] = B.last;
+        T maxAbs = T(0);
+        for (int k = 0; k < simplex.count; ++k)
+            maxAbs = std::max({maxAbs, std::abs(simplex.v[k].w.x), std::abs(simplex.v[k].w.y)});
+        for (int k = 0; k < 3; ++k)
+        {
+            const bool used = k < simplex.count;
+            s.wx[k][l] = used ? simplex.v[k].w.x : T(0);
+            s.wy[k][l] = used ? simplex.v[k].w.y : T(0);
+            s.a[k][l] = used ? simplex.v[k].a : T(0);
+            s.ia[k][l] = used ? simplex.v[k].indexA : 0;
+            s.ib[k][l] = used ? simplex.v[k].indexB : 0;
+            s.savedA[k][l] = s.savedB[k][l] = -1;
+        }
+        s.count[l] = simplex.count;
+        s.edgeBase[l] = edgeBase;
+        s.iteration[l] = 0;
+        s.maxIterations[l] =
+            options_.maxIterations > 0 ? options_.maxIterations : 32 + 2 * (in.proxyA.count + in.proxyB.count);
+        s.maxAbs[l] = maxAbs;
+        s.bpx[l] = B.xf.p.x;
+        s.bpy[l] = B.xf.p.y;
+        s.bqc[l] = B.xf.q.c;
+        s.bqs[l] = B.xf.q.s;
+        s.savedCount[l] = 0;
+        s.lastA[l] = s.lastB[l] = -1;
+        s.countA[l] = in.proxyA.count;
+        s.countB[l] = in.proxyB.count;
+        // The start's own scan overflowed: the scalar query carries that flag to its end.
+        s.stop[l] = A.overflow || B.overflow ? kHandBack : kRunning;
+        copyPoints(s.ax, s.ay, s.boundA, l, in.proxyA);
+        copyPoints(s.bx, s.by, s.boundB, l, in.proxyB);
+    }
+
+    // Lane l's query has stopped: its output and cache, as distance() ends it (finishQuery).
+    void finish(int l)
+    {
+        State& s = *s_;
+        const std::size_t i = pair_[l];
+        const DistanceInput<T>& in = inputs_[i];
+        if (s.stop[l] == kHandBack)
+        {
+            outputs_[i] = distance(in, caches_[i], options_);
+            ++stats_.handedBack;
+            return;
+        }
+        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
+        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
+        A.identity = true;
+        B.xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}};
+        QueryEnd<T> end;
+        end.simplex.count = int(s.count[l]);
+        for (int k = 0; k < end.simplex.count; ++k)
+        {
+            end.simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
+            end.simplex.v[k].a = s.a[k][l];
+        }
+        end.edgeBase = int(s.edgeBase[l]);
+        end.iteration = int(s.iteration[l]);
+        end.maxAbs = s.maxAbs[l];
+        end.savedCount = int(s.savedCount[l]);
+        for (int k = 0; k < 3; ++k)
+            end.saved[k] = s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
+        const StopReason stop = StopReason(s.stop[l]);
+        const std::int64_t key = packIndices(int(s.lastA[l]), int(s.lastB[l]));
+        const Simplex<T>& sx = end.simplex;
+        end.culledRepeat = stop == StopReason::RepeatedSupport &&
+                           key != packIndices(sx.v[0].indexA, sx.v[0].indexB) &&
+                           (sx.count == 1 || key != packIndices(sx.v[1].indexA, sx.v[1].indexB));
+        end.searchA = searchA_[l];
+        end.searchB = searchB_[l];
+        end.supportOutOfRange = false; // an overflowing scan hands the lane back
+        DistanceOutput<T> out;
+        out.stop = stop;
+        outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA, out, end);
+        ++stats_.laneQueries;
+    }
+
+    std::span<const DistanceInput<T>> inputs_;
+    std::span<SimplexCache> caches_;
+    std::span<DistanceOutput<T>> outputs_;
+    const Options& options_;
+    Run run_;
+    BatchStats& stats_;
+    std::vector<std::size_t> order_;
+    std::size_t next_ = 0;
+    std::unique_ptr<State> s_;
+    std::vector<T> points_;
+    std::size_t pair_[W];
+    int searchA_[W], searchB_[W];
+};
+
+template <class T, int W, class State>
+void runLaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
+                  std::span<DistanceOutput<T>> outputs, const Options& options, bool (*run)(State&, T),
+                  BatchStats& stats)
+{
+    stats.lanes = W;
+    LaneBatch<T, W, State>(inputs, caches, outputs, options, run, stats)();
+}
+
+template <class T>
+void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
+                       std::span<DistanceOutput<T>> outputs, const Options& options, BatchIsa isa,
+                       BatchStats* stats)
+{
+    GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
+    const BatchIsa best = bestBatchIsa();
+    if (isa == BatchIsa::Best || std::uint8_t(isa) > std::uint8_t(best))
+        isa = best;
+    BatchStats st;
+    st.isa = isa;
+    st.queries = inputs.size();
+    switch (isa)
+    {
+#if GJK_BATCH_LANES
+    case BatchIsa::Sse2:
+        runLaneBatch<T, 16 / sizeof(T)>(inputs, caches, outputs, options,
+                                        &gjk_lanes_sse2::runLanes<T, 16 / sizeof(T)>, st);
+        break;
+    case BatchIsa::Avx2:
+        runLaneBatch<T, 32 / sizeof(T)>(inputs, caches, outputs, options,
+                                        &gjk_lanes_avx2::runLanes<T, 32 / sizeof(T)>, st);
+        break;
+    case BatchIsa::Avx512:
+        runLaneBatch<T, 64 / sizeof(T)>(inputs, caches, outputs, options,
+                                        &gjk_lanes_avx512::runLanes<T, 64 / sizeof(T)>, st);
+        break;
+#endif
+    default:
+        st.isa = BatchIsa::Scalar;
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+            outputs[i] = distance(inputs[i], caches[i], options);
+        st.scalarQueries = inputs.size();
+        break;
+    }
+    if (stats)
+        *stats = st;
+}
+
+} // namespace
+
+void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
+                   std::span<DistanceOutput<double>> outputs, const Options& options, BatchIsa isa,
+                   BatchStats* stats)
+{
+    distanceBatchImpl<double>(inputs, caches, outputs, options, isa, stats);
+}
+
+void distanceBatch(std::span<const DistanceInput<float>> inputs, std::span<SimplexCache> caches,
+                   std::span<DistanceOutput<float>> outputs, const Options& options, BatchIsa isa,
+                   BatchStats* stats)
+{
+    distanceBatchImpl<float>(inputs, caches, outputs, options, isa, stats);
+}
+
+} // namespace gjk
+
+#include "gjk/detail/fp_end.hpp"
