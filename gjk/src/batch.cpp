@@ -24,6 +24,7 @@
 
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
 #define GJK_BATCH_LANES 1
+#include <immintrin.h> // square roots and movemasks (batch_lanes.hpp), used under the target pragmas
 
 // SSE2: x86-64's baseline, no target pragma needed.
 #include "gjk/detail/fp_begin.hpp"
@@ -113,7 +114,7 @@ constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
 template <class T, int W, class State> class LaneBatch
 {
   public:
-    using Run = bool (*)(State&, T);
+    using Run = bool (*)(State&, T, T, T);
 
     LaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
               std::span<DistanceOutput<T>> outputs, const Options& options, Run run, BatchStats& stats)
@@ -146,16 +147,18 @@ template <class T, int W, class State> class LaneBatch
         s_->bx = s_->ay + cap * W;
         s_->by = s_->bx + cap * W;
         s_->boundA = s_->boundB = 1;
+        s_->laneEnd = !options_.certify;
+        s_->useRadii = options_.useRadii;
         for (int l = 0; l < W; ++l)
-            refill(l);
+            start(l);
         const T minEdge = minEdgeComponent<T>();
-        while (run_(*s_, minEdge))
-            for (int l = 0; l < W; ++l)
-                if (pair_[l] != kNone && s_->stop[l] != kRunning)
-                {
-                    finish(l);
-                    refill(l);
-                }
+        while (run_(*s_, minEdge, Tolerances<T>::minCoordinate, Tolerances<T>::maxCoordinate))
+            for (unsigned bits = s_->stopped; bits != 0; bits &= bits - 1)
+            {
+                const int l = __builtin_ctz(bits);
+                finish(l);
+                start(l);
+            }
         stats_.steps = s_->steps;
         stats_.busyLaneSteps = s_->busyLaneSteps;
         stats_.scannedPoints = s_->scannedPoints;
@@ -193,18 +196,6 @@ template <class T, int W, class State> class LaneBatch
         }
     }
 
-    // The next pair into lane l; a pair handed back at its start runs the scalar query at once.
-    void refill(int l)
-    {
-        for (;;)
-        {
-            start(l);
-            if (pair_[l] == kNone || s_->stop[l] == kRunning)
-                return;
-            finish(l);
-        }
-    }
-
     // The next pair into lane l, started as distance() starts it (A's frame, startSimplex).
     void start(int l)
     {
@@ -222,8 +213,14 @@ template <class T, int W, class State> class LaneBatch
         TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
         A.identity = true;
         B.xf = invMulTransforms(in.transformA, in.transformB);
+        // Warm: the cache's simplex, made here (no search). Cold: a simplex of count 0, whose
+        // first step in the lanes is startSimplex's support point between the shapes.
         Simplex<T> simplex;
-        const int edgeBase = startSimplex<T>(caches_[i], A, B, simplex);
+        int edgeBase = 0;
+        if (cacheFits(caches_[i], in.proxyA.count, in.proxyB.count))
+            edgeBase = startSimplex<T>(caches_[i], A, B, simplex);
+        else
+            simplex.count = 0;
         searchA_[l] = A.last;
         searchB_[l] = B.last;
         T maxAbs = T(0);
@@ -231,12 +228,16 @@ template <class T, int W, class State> class LaneBatch
             maxAbs = std::max({maxAbs, std::abs(simplex.v[k].w.x), std::abs(simplex.v[k].w.y)});
         for (int k = 0; k < 3; ++k)
         {
-            const bool used = k < simplex.count;
-            s.wx[k][l] = used ? simplex.v[k].w.x : T(0);
-            s.wy[k][l] = used ? simplex.v[k].w.y : T(0);
-            s.a[k][l] = used ? simplex.v[k].a : T(0);
-            s.ia[k][l] = used ? simplex.v[k].indexA : 0;
-            s.ib[k][l] = used ? simplex.v[k].indexB : 0;
+            const SimplexVertex<T> v = k < simplex.count ? simplex.v[k] : SimplexVertex<T>{};
+            s.wAx[k][l] = v.wA.x;
+            s.wAy[k][l] = v.wA.y;
+            s.wBx[k][l] = v.wB.x;
+            s.wBy[k][l] = v.wB.y;
+            s.wx[k][l] = v.w.x;
+            s.wy[k][l] = v.w.y;
+            s.a[k][l] = v.a;
+            s.ia[k][l] = v.indexA;
+            s.ib[k][l] = v.indexB;
             s.savedA[k][l] = s.savedB[k][l] = -1;
         }
         s.count[l] = simplex.count;
@@ -249,12 +250,17 @@ template <class T, int W, class State> class LaneBatch
         s.bpy[l] = B.xf.p.y;
         s.bqc[l] = B.xf.q.c;
         s.bqs[l] = B.xf.q.s;
+        s.xpx[l] = in.transformA.p.x;
+        s.xpy[l] = in.transformA.p.y;
+        s.xqc[l] = in.transformA.q.c;
+        s.xqs[l] = in.transformA.q.s;
+        s.radiusA[l] = in.proxyA.radius;
+        s.radiusB[l] = in.proxyB.radius;
         s.savedCount[l] = 0;
         s.lastA[l] = s.lastB[l] = -1;
         s.countA[l] = in.proxyA.count;
         s.countB[l] = in.proxyB.count;
-        // The start's own scan overflowed: the scalar query carries that flag to its end.
-        s.stop[l] = A.overflow || B.overflow ? kHandBack : kRunning;
+        s.stop[l] = kRunning;
         copyPoints(s.ax, s.ay, s.boundA, l, in.proxyA);
         copyPoints(s.bx, s.by, s.boundB, l, in.proxyB);
     }
@@ -271,16 +277,51 @@ template <class T, int W, class State> class LaneBatch
             ++stats_.handedBack;
             return;
         }
-        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
-        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
-        A.identity = true;
-        B.xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}};
-        QueryEnd<T> end;
-        end.simplex.count = int(s.count[l]);
-        for (int k = 0; k < end.simplex.count; ++k)
+        ++stats_.laneQueries;
+        const StopReason stop = StopReason(s.stop[l]);
+        const int count = int(s.count[l]);
+        if (s.laneEnd && !s.scalarEnd[l])
         {
-            end.simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
-            end.simplex.v[k].a = s.a[k][l];
+            // The lanes made the end: copy it out, and the cache as finishQuery writes it.
+            DistanceOutput<T> out;
+            out.pointA = {s.outAx[l], s.outAy[l]};
+            out.pointB = {s.outBx[l], s.outBy[l]};
+            out.normal = {s.outNx[l], s.outNy[l]};
+            out.distance = s.outDistance[l];
+            out.iterations = int(s.iteration[l]);
+            out.simplexCount = count;
+            out.stop = stop;
+            outputs_[i] = out;
+            SimplexCache& cache = caches_[i];
+            cache.count = count;
+            for (int k = 0; k < count; ++k)
+            {
+                cache.indexA[k] = int(s.ia[k][l]);
+                cache.indexB[k] = int(s.ib[k][l]);
+            }
+            const bool flip = s.flipEdge[l] != 0;
+            cache.edgeBase = count == 2 ? int(s.edgeBase[l]) ^ int(flip) : 0;
+            if (flip)
+            {
+                std::swap(cache.indexA[0], cache.indexA[1]);
+                std::swap(cache.indexB[0], cache.indexB[1]);
+            }
+            cache.searchA = searchA_[l];
+            cache.searchB = searchB_[l];
+            return;
+        }
+        // finishQuery on the lane's simplex.
+        QueryEnd<T> end;
+        end.simplex.count = count;
+        for (int k = 0; k < count; ++k)
+        {
+            SimplexVertex<T>& v = end.simplex.v[k];
+            v.wA = {s.wAx[k][l], s.wAy[k][l]};
+            v.wB = {s.wBx[k][l], s.wBy[k][l]};
+            v.w = {s.wx[k][l], s.wy[k][l]};
+            v.a = s.a[k][l];
+            v.indexA = int(s.ia[k][l]);
+            v.indexB = int(s.ib[k][l]);
         }
         end.edgeBase = int(s.edgeBase[l]);
         end.iteration = int(s.iteration[l]);
@@ -288,7 +329,6 @@ template <class T, int W, class State> class LaneBatch
         end.savedCount = int(s.savedCount[l]);
         for (int k = 0; k < 3; ++k)
             end.saved[k] = s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
-        const StopReason stop = StopReason(s.stop[l]);
         const std::int64_t key = packIndices(int(s.lastA[l]), int(s.lastB[l]));
         const Simplex<T>& sx = end.simplex;
         end.culledRepeat = stop == StopReason::RepeatedSupport &&
@@ -300,7 +340,6 @@ template <class T, int W, class State> class LaneBatch
         DistanceOutput<T> out;
         out.stop = stop;
         outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA, out, end);
-        ++stats_.laneQueries;
     }
 
     std::span<const DistanceInput<T>> inputs_;
@@ -319,7 +358,7 @@ template <class T, int W, class State> class LaneBatch
 
 template <class T, int W, class State>
 void runLaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
-                  std::span<DistanceOutput<T>> outputs, const Options& options, bool (*run)(State&, T),
+                  std::span<DistanceOutput<T>> outputs, const Options& options, bool (*run)(State&, T, T, T),
                   BatchStats& stats)
 {
     stats.lanes = W;

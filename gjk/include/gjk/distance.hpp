@@ -940,6 +940,15 @@ template <class T>
 void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
+// Whether a cache's indices fit shapes of these sizes (a warm start), else a cold start.
+inline bool cacheFits(const SimplexCache& cache, int countA, int countB)
+{
+    bool fits = cache.count >= 1 && cache.count <= 3;
+    for (int i = 0; fits && i < cache.count; ++i)
+        fits = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 && cache.indexB[i] < countB;
+    return fits;
+}
+
 // The initial simplex, from the cache (warm) or cold; returns its edgeBase. Shared by the query
 // below and the SIMD batch (gjk/batch.hpp).
 template <class T, class Shape>
@@ -950,12 +959,8 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
     // (why: docs/speed.md, "Cold start between the shapes"), or vertex 0 of each shape when the
     // origins coincide. Stale indices (shapes
     // changed) fall back to a cold start.
-    bool cacheValid = cache.count >= 1 && cache.count <= 3;
-    for (int i = 0; cacheValid && i < cache.count; ++i)
-        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < A.poly.count &&
-                     cache.indexB[i] >= 0 && cache.indexB[i] < B.poly.count;
     int edgeBase = 0;
-    if (cacheValid)
+    if (cacheFits(cache, A.poly.count, B.poly.count))
     {
         edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
         A.last = cache.searchA >= 0 && cache.searchA < A.poly.count ? cache.searchA : cache.indexA[0];
