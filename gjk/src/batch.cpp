@@ -110,6 +110,7 @@ template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& o
 }
 
 constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
+constexpr bool kSortBySize = false;
 
 template <class T, int W, class State> class LaneBatch
 {
@@ -140,25 +141,32 @@ template <class T, int W, class State> class LaneBatch
         }
         if (order_.empty())
             return;
+        if (kSortBySize)
+            sortBySize(cap);
         s_ = std::make_unique<State>();
         points_.assign(std::size_t(4) * std::size_t(cap) * W, T(0));
         s_->ax = points_.data();
         s_->ay = s_->ax + cap * W;
         s_->bx = s_->ay + cap * W;
         s_->by = s_->bx + cap * W;
-        s_->boundA = s_->boundB = 1;
+        for (int l = 0; l < W; ++l)
+            paddedA_[l] = paddedB_[l] = cap; // zeros
         s_->laneEnd = !options_.certify;
         s_->useRadii = options_.useRadii;
         for (int l = 0; l < W; ++l)
             start(l);
+        setBounds();
         const T minEdge = minEdgeComponent<T>();
         while (run_(*s_, minEdge, Tolerances<T>::minCoordinate, Tolerances<T>::maxCoordinate))
+        {
             for (unsigned bits = s_->stopped; bits != 0; bits &= bits - 1)
             {
                 const int l = __builtin_ctz(bits);
                 finish(l);
                 start(l);
             }
+            setBounds();
+        }
         stats_.steps = s_->steps;
         stats_.busyLaneSteps = s_->busyLaneSteps;
         stats_.scannedPoints = s_->scannedPoints;
@@ -167,33 +175,60 @@ template <class T, int W, class State> class LaneBatch
 
   private:
     static constexpr std::size_t kNone = std::size_t(-1);
+
+    // The pairs in order of (countA, countB), a stable counting sort: lanes running at once then
+    // hold shapes of about one size, and the scans visit few padding points (docs/speed.md).
+    void sortBySize(int cap)
+    {
+        const int keys = (cap + 1) * (cap + 1);
+        std::vector<std::size_t> start(std::size_t(keys) + 1, 0);
+        auto key = [&](std::size_t i) { return inputs_[i].proxyA.count * (cap + 1) + inputs_[i].proxyB.count; };
+        for (std::size_t i : order_)
+            ++start[std::size_t(key(i)) + 1];
+        for (int k = 0; k < keys; ++k)
+            start[std::size_t(k) + 1] += start[std::size_t(k)];
+        std::vector<std::size_t> sorted(order_.size());
+        for (std::size_t i : order_)
+            sorted[start[std::size_t(key(i))]++] = i;
+        order_.swap(sorted);
+    }
     static constexpr int kRunning = -1, kHandBack = -2;
 
-    // A lane's points: the shape's own, then its point 0 up to the scan bound. A larger shape
-    // raises the bound, and every other lane repeats its point 0 up to it.
-    void copyPoints(T* xs, T* ys, int& bound, int l, const Polygon<T>& poly)
+    // A lane's points: the shape's own; padded (setBounds) with its point 0 up to the scan bound.
+    static void copyPoints(T* xs, T* ys, int l, const Polygon<T>& poly)
     {
-        const int n = poly.count;
-        if (n > bound)
-        {
-            for (int p = bound; p < n; ++p)
-                for (int o = 0; o < W; ++o)
-                {
-                    xs[p * W + o] = xs[o];
-                    ys[p * W + o] = ys[o];
-                }
-            bound = n;
-        }
-        for (int p = 0; p < n; ++p)
+        for (int p = 0; p < poly.count; ++p)
         {
             xs[p * W + l] = poly.points[p].x;
             ys[p * W + l] = poly.points[p].y;
         }
-        for (int p = n; p < bound; ++p)
-        {
-            xs[p * W + l] = poly.points[0].x;
-            ys[p * W + l] = poly.points[0].y;
-        }
+    }
+
+    // Each scan visits as many points as the largest shape among the lanes; a lane whose own
+    // points (and padding) end before that repeats its point 0 up to it. An idle lane's points
+    // are whatever its last pair left (finite: the scan's sum stays finite... or it is ignored).
+    static void pad(T* xs, T* ys, int* padded, int bound)
+    {
+        for (int l = 0; l < W; ++l)
+            for (; padded[l] < bound; ++padded[l])
+            {
+                xs[padded[l] * W + l] = xs[l];
+                ys[padded[l] * W + l] = ys[l];
+            }
+    }
+    void setBounds()
+    {
+        int boundA = 1, boundB = 1;
+        for (int l = 0; l < W; ++l)
+            if (pair_[l] != kNone)
+            {
+                boundA = std::max(boundA, int(s_->countA[l]));
+                boundB = std::max(boundB, int(s_->countB[l]));
+            }
+        pad(s_->ax, s_->ay, paddedA_, boundA);
+        pad(s_->bx, s_->by, paddedB_, boundB);
+        s_->boundA = boundA;
+        s_->boundB = boundB;
     }
 
     // The next pair into lane l, started as distance() starts it (A's frame, startSimplex).
@@ -226,19 +261,14 @@ template <class T, int W, class State> class LaneBatch
         T maxAbs = T(0);
         for (int k = 0; k < simplex.count; ++k)
             maxAbs = std::max({maxAbs, std::abs(simplex.v[k].w.x), std::abs(simplex.v[k].w.y)});
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < simplex.count; ++k) // a cold start (count 0) fills its slots itself
         {
-            const SimplexVertex<T> v = k < simplex.count ? simplex.v[k] : SimplexVertex<T>{};
-            s.wAx[k][l] = v.wA.x;
-            s.wAy[k][l] = v.wA.y;
-            s.wBx[k][l] = v.wB.x;
-            s.wBy[k][l] = v.wB.y;
+            const SimplexVertex<T>& v = simplex.v[k];
             s.wx[k][l] = v.w.x;
             s.wy[k][l] = v.w.y;
             s.a[k][l] = v.a;
             s.ia[k][l] = v.indexA;
             s.ib[k][l] = v.indexB;
-            s.savedA[k][l] = s.savedB[k][l] = -1;
         }
         s.count[l] = simplex.count;
         s.edgeBase[l] = edgeBase;
@@ -261,8 +291,10 @@ template <class T, int W, class State> class LaneBatch
         s.countA[l] = in.proxyA.count;
         s.countB[l] = in.proxyB.count;
         s.stop[l] = kRunning;
-        copyPoints(s.ax, s.ay, s.boundA, l, in.proxyA);
-        copyPoints(s.bx, s.by, s.boundB, l, in.proxyB);
+        copyPoints(s.ax, s.ay, l, in.proxyA);
+        copyPoints(s.bx, s.by, l, in.proxyB);
+        paddedA_[l] = in.proxyA.count;
+        paddedB_[l] = in.proxyB.count;
     }
 
     // Lane l's query has stopped: its output and cache, as distance() ends it (finishQuery).
@@ -313,15 +345,14 @@ template <class T, int W, class State> class LaneBatch
         // finishQuery on the lane's simplex.
         QueryEnd<T> end;
         end.simplex.count = count;
+        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
+        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
+        A.identity = true;
+        B.xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}};
         for (int k = 0; k < count; ++k)
         {
-            SimplexVertex<T>& v = end.simplex.v[k];
-            v.wA = {s.wAx[k][l], s.wAy[k][l]};
-            v.wB = {s.wBx[k][l], s.wBy[k][l]};
-            v.w = {s.wx[k][l], s.wy[k][l]};
-            v.a = s.a[k][l];
-            v.indexA = int(s.ia[k][l]);
-            v.indexB = int(s.ib[k][l]);
+            end.simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
+            end.simplex.v[k].a = s.a[k][l];
         }
         end.edgeBase = int(s.edgeBase[l]);
         end.iteration = int(s.iteration[l]);
@@ -354,6 +385,7 @@ template <class T, int W, class State> class LaneBatch
     std::vector<T> points_;
     std::size_t pair_[W];
     int searchA_[W], searchB_[W];
+    int paddedA_[W], paddedB_[W]; // points written in each lane's column of the buffers
 };
 
 template <class T, int W, class State>

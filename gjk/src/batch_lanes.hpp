@@ -99,6 +99,28 @@ template <class T, int W> struct Lanes
         else
             return (V)_mm_sqrt_ps((__m128)x);
     }
+    // base[index[l] * W + l] for each lane l: lane l's point index[l] in a [point][lane] buffer.
+    [[gnu::always_inline]] static V gather(const T* base, M index)
+    {
+        M offset = index * I(W);
+        for (int l = 0; l < W; ++l)
+            offset[l] += I(l);
+        if constexpr (sizeof(V) == 64 && sizeof(T) == 8)
+            return (V)_mm512_i64gather_pd((__m512i)offset, base, 8);
+        else if constexpr (sizeof(V) == 64)
+            return (V)_mm512_i32gather_ps((__m512i)offset, base, 4);
+        else if constexpr (sizeof(V) == 32 && sizeof(T) == 8)
+            return (V)_mm256_i64gather_pd(base, (__m256i)offset, 8);
+        else if constexpr (sizeof(V) == 32)
+            return (V)_mm256_i32gather_ps(base, (__m256i)offset, 4);
+        else
+        {
+            V r;
+            for (int l = 0; l < W; ++l)
+                r[l] = base[offset[l]];
+            return r;
+        }
+    }
     // One bit per lane (a mask's lanes are all ones or all zeros).
     [[gnu::always_inline]] static unsigned bits(M m)
     {
@@ -133,10 +155,8 @@ template <class T, int W> struct Lanes
 template <class T, int W> struct LaneState
 {
     using I = typename LaneInt<T>::type;
-    alignas(64) T wAx[3][W]; // simplex vertices: wA, wB, w = wA - wB (A's frame), weight, indices
-    alignas(64) T wAy[3][W];
-    alignas(64) T wBx[3][W];
-    alignas(64) T wBy[3][W];
+    // Simplex vertices: w = wA - wB (A's frame), weight, index pair. wA and wB are gathered from
+    // the lane's points by index at the end (gatherVertex), as makeVertex makes them.
     alignas(64) T wx[3][W];
     alignas(64) T wy[3][W];
     alignas(64) T a[3][W];
@@ -204,14 +224,10 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
     if (!L::any(running))
         return false;
 
-    V wAx[3], wAy[3], wBx[3], wBy[3], wx[3], wy[3], a[3];
+    V wx[3], wy[3], a[3];
     M ia[3], ib[3], savedA[3], savedB[3];
     for (int k = 0; k < 3; ++k)
     {
-        wAx[k] = L::load(s.wAx[k]);
-        wAy[k] = L::load(s.wAy[k]);
-        wBx[k] = L::load(s.wBx[k]);
-        wBy[k] = L::load(s.wBy[k]);
         wx[k] = L::load(s.wx[k]);
         wy[k] = L::load(s.wy[k]);
         a[k] = L::load(s.a[k]);
@@ -300,8 +316,8 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const M from2to0 = is3 & r3;
         const M from2to1 = is3 & (r13 | r23);
         const M solving = running & (is2 | is3);
-        for (auto* x : {wAx, wAy, wBx, wBy, wx, wy})
-            L::move(x, solving, from1to0, from2to0, from2to1);
+        L::move(wx, solving, from1to0, from2to0, from2to1);
+        L::move(wy, solving, from1to0, from2to0, from2to1);
         L::move(ia, solving, from1to0, from2to0, from2to1);
         L::move(ib, solving, from1to0, from2to0, from2to1);
         a[0] = sel(solving, sel(interior, u123 / sum, sel(edge, ae0, one)), a[0]);
@@ -400,10 +416,6 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         for (int k = 0; k < 3; ++k)
         {
             const M slot = grow & (count == splati(k));
-            wAx[k] = sel(slot, nwAx, wAx[k]);
-            wAy[k] = sel(slot, nwAy, wAy[k]);
-            wBx[k] = sel(slot, nwBx, wBx[k]);
-            wBy[k] = sel(slot, nwBy, wBy[k]);
             wx[k] = sel(slot, nwx, wx[k]);
             wy[k] = sel(slot, nwy, wy[k]);
             a[k] = sel(slot, one, a[k]);
@@ -425,7 +437,19 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
     {
         const M ended = stopped & (stop >= mzero);
         const M c1 = count == mone, c2 = count == splati(2);
-        // computeWitnessPoints.
+        // makeVertex's wA and wB of the simplex, from the lanes' points by index (a slot past the
+        // count reads point 0), then computeWitnessPoints.
+        V wAx[3], wAy[3], wBx[3], wBy[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            const M used = count > splati(k);
+            const M iA = seli(used, ia[k], mzero), iB = seli(used, ib[k], mzero);
+            wAx[k] = L::gather(s.ax, iA);
+            wAy[k] = L::gather(s.ay, iA);
+            const V px = L::gather(s.bx, iB), py = L::gather(s.by, iB);
+            wBx[k] = (bqc * px - bqs * py) + bpx;
+            wBy[k] = (bqs * px + bqc * py) + bpy;
+        }
         const V pA2x = a[0] * wAx[0] + a[1] * wAx[1], pA2y = a[0] * wAy[0] + a[1] * wAy[1];
         const V pB2x = a[0] * wBx[0] + a[1] * wBx[1], pB2y = a[0] * wBy[0] + a[1] * wBy[1];
         const V pA3x = pA2x + a[2] * wAx[2], pA3y = pA2y + a[2] * wAy[2];
@@ -509,10 +533,6 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
 
     for (int k = 0; k < 3; ++k)
     {
-        L::store(s.wAx[k], wAx[k]);
-        L::store(s.wAy[k], wAy[k]);
-        L::store(s.wBx[k], wBx[k]);
-        L::store(s.wBy[k], wBy[k]);
         L::store(s.wx[k], wx[k]);
         L::store(s.wy[k], wy[k]);
         L::store(s.a[k], a[k]);
