@@ -4,6 +4,7 @@
 
 #include "common/common.hpp"
 
+#include "gjk/batch.hpp"
 #include "gjk/distance.hpp"
 
 #include <string>
@@ -44,6 +45,10 @@ struct VariantInfo
     // shown per family, never judged.
     bool judged = true;
     Start start = Start::Cold;
+    // Run through gjk::distanceBatch (gjk/batch.hpp: SIMD lanes, the instruction set chosen at
+    // run time): the accuracy run on one-case batches, each checked to be bit for bit the scalar
+    // query (evaluate.cpp); the timing on batches of all the timed cases.
+    bool batch = false;
 };
 
 const std::vector<VariantInfo>& variantTable();

@@ -77,9 +77,32 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
+// A batch variant: each rep is one gjk::distanceBatch over all the cases (fresh caches, or copies
+// of the warm ones), as an engine's step or a campaign's chunk would call it.
+template <class T>
+double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps, std::vector<gjk::SimplexCache>& caches,
+                     std::vector<gjk::DistanceOutput<T>>& outputs)
+{
+    const auto t0 = Clock::now();
+    double acc = 0;
+    for (int r = 0; r < reps; ++r)
+    {
+        if (set.caches.empty())
+            std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
+        else
+            std::copy(set.caches.begin(), set.caches.end(), caches.begin());
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(set.inputs), caches, outputs, o);
+        for (const auto& out : outputs)
+            acc += double(out.distance);
+    }
+    const auto t1 = Clock::now();
+    g_timingSink = g_timingSink + acc;
+    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
 template <class T>
 TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
-                   const TimingConfig& cfg, bool warm)
+                   const TimingConfig& cfg, bool warm, bool batch)
 {
     TimingResult res;
     res.cases = cases.size();
@@ -87,14 +110,18 @@ TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Opt
     if (cases.empty())
         return res;
     const TimingSet<T> set(cases, o, warm);
-    const double first = std::max(1.0, timePass<T>(set, o, 1)); // warm-up and calibration
+    std::vector<gjk::SimplexCache> caches(batch ? set.inputs.size() : 0);
+    std::vector<gjk::DistanceOutput<T>> outputs(batch ? set.inputs.size() : 0);
+    auto pass = [&](int reps)
+    { return batch ? timePassBatch<T>(set, o, reps, caches, outputs) : timePass<T>(set, o, reps); };
+    const double first = std::max(1.0, pass(1)); // warm-up and calibration
     const int reps = std::clamp(int(std::ceil(cfg.minPassSeconds * 1e9 / first)), 1, 100000);
     std::vector<double> perQuery;
     const auto start = Clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
     while (int(perQuery.size()) < cfg.maxPasses &&
            (int(perQuery.size()) < cfg.minPasses || elapsed() < cfg.budgetSeconds))
-        perQuery.push_back(timePass<T>(set, o, reps) / (double(reps) * double(cases.size())));
+        perQuery.push_back(pass(reps) / (double(reps) * double(cases.size())));
     std::sort(perQuery.begin(), perQuery.end());
     const std::size_t n = perQuery.size();
     if (n == 0)
@@ -112,8 +139,8 @@ TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const Va
                          const TimingConfig& cfg)
 {
     const bool warm = v.start == Start::Warm || cfg.warm;
-    return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm)
-                                     : timeT<double>(cases, v.options, cfg, warm);
+    return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm, v.batch)
+                                     : timeT<double>(cases, v.options, cfg, warm, v.batch);
 }
 
 } // namespace gjkval
