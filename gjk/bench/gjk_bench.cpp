@@ -152,7 +152,9 @@ template <class T> void BM_RandomBatch(benchmark::State& state)
 // The batch in SIMD lanes (gjk/batch.hpp) over the same pairs, cold, on one instruction set
 // (0 scalar, 1 SSE2, 2 AVX2, 3 AVX-512; skipped when this CPU lacks it). Counters: lane
 // utilisation (busy lane-iterations / all) and scan utilisation (own points / scanned points).
-template <class T> void BM_RandomLanes(benchmark::State& state)
+// FloatRotations: a float engine's rotations in double (not unit ones: each lane's end then runs
+// the scalar finishQuery), against BM_RandomFloatRotations.
+template <class T, bool FloatRotations = false> void BM_RandomLanes(benchmark::State& state)
 {
     const auto isa = gjk::BatchIsa(state.range(0));
     if (!gjk::batchIsaSupported(isa))
@@ -160,7 +162,7 @@ template <class T> void BM_RandomLanes(benchmark::State& state)
         state.SkipWithError("instruction set not supported on this CPU");
         return;
     }
-    const auto& in = inputs<T>().inputs;
+    const auto& in = inputs<T, FloatRotations>().inputs;
     std::vector<gjk::SimplexCache> caches(in.size());
     std::vector<gjk::DistanceOutput<T>> out(in.size());
     gjk::BatchStats stats;
@@ -245,6 +247,7 @@ BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLanes, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLanes, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, double, true)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLanesWarm, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLanesWarm, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);

@@ -22,7 +22,7 @@
 //   points of a lane, below, could raise it where the scalar scan does not).
 // A lane whose end is not finishQuery's common path sets LaneState::scalarEnd, and the scalar side
 // runs finishQuery on the lane's simplex: a rescaled retry (out of range, or every support point
-// 0), a rotation of A that is not a unit one, a culled repeat (the cache keeps the simplex before
+// 0), a rotation of A whose squared size is out of range, a culled repeat (the cache keeps the simplex before
 // the last solve), the certified interval.
 
 namespace GJK_LANES_NAMESPACE
@@ -475,7 +475,7 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V n2y = sel(pos2, inv2 * sel(left, ex, -ex), zero);
         V dist = sel(c1, len1, sel(c2, dist2, zero));
         V nx = sel(c1, n1x, sel(c2, n2x, zero)), ny = sel(c1, n1y, sel(c2, n2y, zero));
-        // Back to world coordinates through A's transform (a unit rotation: else scalarEnd).
+        // Back to world coordinates through A's transform.
         const V xc = L::load(s.xqc), xs = L::load(s.xqs), xpx = L::load(s.xpx), xpy = L::load(s.xpy);
         const V frameSize2 = xc * xc + xs * xs;
         const M nonUnit = ~(L::absBits(frameSize2 - one) <= L::splat(gjk::Tolerances<T>::unitRotation));
@@ -484,6 +484,14 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V rnx = xc * nx - xs * ny, rny = xs * nx + xc * ny;
         nx = rnx;
         ny = rny;
+        // A rotation of A that is not a unit one measures lengths in units of |qA| (finishQuery):
+        // the distance times |qA|, the normal divided by it; |qA|^2 itself out of range: scalarEnd.
+        const V frameSize = L::sqrt(frameSize2);
+        dist = sel(nonUnit, dist * frameSize, dist);
+        nx = sel(nonUnit, nx / frameSize, nx);
+        ny = sel(nonUnit, ny / frameSize, ny);
+        const M frameOutOfRange = nonUnit & ~((frameSize2 >= L::splat(minCoordinate * minCoordinate)) &
+                                              (frameSize2 <= L::splat(maxCoordinate * maxCoordinate)));
         // The radii are world lengths.
         if (s.useRadii)
         {
@@ -519,7 +527,7 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const M culled = (stop == splati(int(gjk::StopReason::RepeatedSupport))) &
                          ((lastA != ia[0]) | (lastB != ib[0])) & (c1 | (lastA != ia[1]) | (lastB != ib[1]));
         const M scalarEnd =
-            ended & (~finite | ~inRange | (maxAbs == zero) | nonUnit | culled | tinyEnd);
+            ended & (~finite | ~inRange | (maxAbs == zero) | frameOutOfRange | culled | tinyEnd);
         L::store(s.outAx, worldAx);
         L::store(s.outAy, worldAy);
         L::store(s.outBx, worldBx);
