@@ -111,6 +111,14 @@ template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& o
 
 constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
 constexpr bool kSortBySize = false;
+// The lanes return to the scalar side (ends, refills) once this share of them has stopped: the
+// lanes then idle for a while (lane utilisation 0.75-0.83 instead of 0.9995), but the ends and
+// refills of several lanes share one return, and that was faster: 1 % (return when any lane
+// stops), 50 % and 75 % measured in docs/speed.md, "Batches in SIMD lanes".
+#ifndef GJK_BATCH_STOPPED_PERCENT
+#define GJK_BATCH_STOPPED_PERCENT 75
+#endif
+constexpr int kStoppedPercent = GJK_BATCH_STOPPED_PERCENT;
 
 template <class T, int W, class State> class LaneBatch
 {
@@ -152,6 +160,7 @@ template <class T, int W, class State> class LaneBatch
         for (int l = 0; l < W; ++l)
             paddedA_[l] = paddedB_[l] = cap; // zeros
         s_->laneEnd = !options_.certify;
+        s_->minStopped = std::max(1, W * kStoppedPercent / 100);
         s_->useRadii = options_.useRadii;
         for (int l = 0; l < W; ++l)
             start(l);

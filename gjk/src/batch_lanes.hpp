@@ -183,6 +183,7 @@ template <class T, int W> struct LaneState
     alignas(64) I flipEdge[W];  // the final edge goes into the cache reversed
     alignas(64) I scalarEnd[W]; // the scalar code runs finishQuery for this lane
     unsigned stopped = 0;       // lanes that stopped in the last runLanes (one bit each)
+    int minStopped = 1;         // runLanes returns once this many lanes have stopped
     // Points of each lane's shapes, [point][lane]; a lane's points past its own count repeat its
     // point 0, which can never win a support scan (ties keep the lowest index) but could make its
     // running sum overflow (then kHandBack).
@@ -245,8 +246,10 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
     const M countA = L::load(s.countA), countB = L::load(s.countB);
 
     M useful = mzero; // points of the lanes' own shapes scanned
+    // Lockstep until s.minStopped lanes have stopped (or none runs): stopped lanes wait, idle,
+    // for the others, and the end and the refills are made for all of them at once.
     M stopped = mzero;
-    while (!L::any(stopped))
+    while (__builtin_popcount(L::bits(stopped)) < s.minStopped && L::any(running))
     {
         ++s.steps;
         s.busyLaneSteps += unsigned(__builtin_popcount(L::bits(running)));
@@ -426,7 +429,7 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         edgeBase = seli(grow, mzero, edgeBase);
 
         stop = seli(handBack, splati(kHandBack), stop);
-        stopped = running & ~grow;
+        stopped |= running & ~grow;
         running &= grow;
     }
     s.stopped = L::bits(stopped);
