@@ -110,7 +110,11 @@ template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& o
 }
 
 constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
-constexpr bool kSortBySize = false;
+#ifndef GJK_BATCH_SORT
+#define GJK_BATCH_SORT 0
+#endif
+constexpr bool kSortBySize = GJK_BATCH_SORT;
+constexpr std::size_t kSortBlock = 1024;
 // The lanes return to the scalar side (ends, refills) once this share of them has stopped: the
 // lanes then idle for a while (lane utilisation 0.75-0.83 instead of 0.9995), but the ends and
 // refills of several lanes share one return, and that was faster: 1 % (return when any lane
@@ -184,24 +188,31 @@ template <class T, int W, class State> class LaneBatch
 
   private:
     static constexpr std::size_t kNone = std::size_t(-1);
+    static constexpr int kRunning = -1, kHandBack = -2;
 
-    // The pairs in order of (countA, countB), a stable counting sort: lanes running at once then
-    // hold shapes of about one size, and the scans visit few padding points (docs/speed.md).
+    // Within each block of kSortBlock pairs, the pairs in order of their larger shape (a stable
+    // counting sort): lanes running at once then hold shapes of about one size, and the scans
+    // visit fewer padding points, while the pairs' memory is still visited block by block.
+    // Measured and left off (GJK_BATCH_SORT 0): slower, docs/speed.md, "Batches in SIMD lanes".
     void sortBySize(int cap)
     {
-        const int keys = (cap + 1) * (cap + 1);
-        std::vector<std::size_t> start(std::size_t(keys) + 1, 0);
-        auto key = [&](std::size_t i) { return inputs_[i].proxyA.count * (cap + 1) + inputs_[i].proxyB.count; };
-        for (std::size_t i : order_)
-            ++start[std::size_t(key(i)) + 1];
-        for (int k = 0; k < keys; ++k)
-            start[std::size_t(k) + 1] += start[std::size_t(k)];
         std::vector<std::size_t> sorted(order_.size());
-        for (std::size_t i : order_)
-            sorted[start[std::size_t(key(i))]++] = i;
+        std::vector<std::size_t> start(std::size_t(cap) + 2);
+        auto key = [&](std::size_t i) { return std::size_t(std::max(inputs_[i].proxyA.count, inputs_[i].proxyB.count)); };
+        for (std::size_t b = 0; b < order_.size(); b += kSortBlock)
+        {
+            const std::size_t e = std::min(order_.size(), b + kSortBlock);
+            std::fill(start.begin(), start.end(), 0);
+            for (std::size_t j = b; j < e; ++j)
+                ++start[key(order_[j]) + 1];
+            start[0] = b;
+            for (std::size_t k = 0; k + 1 < start.size(); ++k)
+                start[k + 1] += start[k];
+            for (std::size_t j = b; j < e; ++j)
+                sorted[start[key(order_[j])]++] = order_[j];
+        }
         order_.swap(sorted);
     }
-    static constexpr int kRunning = -1, kHandBack = -2;
 
     // A lane's points: the shape's own; padded (setBounds) with its point 0 up to the scan bound.
     static void copyPoints(T* xs, T* ys, int l, const Polygon<T>& poly)
