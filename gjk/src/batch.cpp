@@ -364,15 +364,16 @@ template <class T, int W, class State> class LaneBatch
         }
         // finishQuery on the lane's simplex.
         QueryEnd<T> end;
-        end.simplex.count = count;
+        Simplex<T> simplex;
+        simplex.count = count;
         TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
         TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
         A.identity = true;
         B.xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}};
         for (int k = 0; k < count; ++k)
         {
-            end.simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
-            end.simplex.v[k].a = s.a[k][l];
+            simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
+            simplex.v[k].a = s.a[k][l];
         }
         end.edgeBase = int(s.edgeBase[l]);
         end.iteration = int(s.iteration[l]);
@@ -381,16 +382,14 @@ template <class T, int W, class State> class LaneBatch
         for (int k = 0; k < 3; ++k)
             end.saved[k] = s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
         const std::int64_t key = packIndices(int(s.lastA[l]), int(s.lastB[l]));
-        const Simplex<T>& sx = end.simplex;
+        const Simplex<T>& sx = simplex;
         end.culledRepeat = stop == StopReason::RepeatedSupport &&
                            key != packIndices(sx.v[0].indexA, sx.v[0].indexB) &&
                            (sx.count == 1 || key != packIndices(sx.v[1].indexA, sx.v[1].indexB));
         end.searchA = searchA_[l];
         end.searchB = searchB_[l];
         end.supportOutOfRange = false; // an overflowing scan hands the lane back
-        DistanceOutput<T> out;
-        out.stop = stop;
-        outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA, out, end);
+        outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA, stop, simplex, end);
     }
 
     std::span<const DistanceInput<T>> inputs_;

@@ -941,7 +941,7 @@ void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const 
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
 // Whether a cache's indices fit shapes of these sizes (a warm start), else a cold start.
-inline bool cacheFits(const SimplexCache& cache, int countA, int countB)
+GJK_INLINE bool cacheFits(const SimplexCache& cache, int countA, int countB)
 {
     bool fits = cache.count >= 1 && cache.count <= 3;
     for (int i = 0; fits && i < cache.count; ++i)
@@ -978,11 +978,12 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
     return edgeBase;
 }
 
-// The loop's final state, from which finishQuery makes the output and the cache. Shared by the
-// query below and the SIMD batch (gjk/batch.hpp), whose lanes run the loop and end here.
+// The loop's final state besides the simplex, from which finishQuery makes the output and the
+// cache. Shared by the query below and the SIMD batch (gjk/batch.hpp), whose lanes run the loop
+// and end here. (The simplex is passed by reference: copied into this struct, it cost the scalar
+// query 6-20 %, docs/speed.md, "Batches in SIMD lanes".)
 template <class T> struct QueryEnd
 {
-    Simplex<T> simplex;
     int edgeBase;
     int iteration;
     T maxAbs; // largest support-point coordinate magnitude (the range check)
@@ -995,15 +996,16 @@ template <class T> struct QueryEnd
 
 // The end of the query: witness points, distance and normal in world coordinates, radii,
 // certified interval, the cache, the range check and (out of range) the rescaled retry.
-// `out` arrives with its stop reason set.
+// `stop`: why the loop stopped.
 template <class T, bool Scaled>
 GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
-                                         Trace<T>* trace, int scale, const Transform<T>& world,
-                                         DistanceOutput<T> out, const QueryEnd<T>& end)
+                                         Trace<T>* trace, int scale, const Transform<T>& world, StopReason stop,
+                                         const Simplex<T>& simplex, const QueryEnd<T>& end)
 {
+    DistanceOutput<T> out;
+    out.stop = stop;
     const Polygon<T>& polyA = input.proxyA;
     const Polygon<T>& polyB = input.proxyB;
-    const Simplex<T>& simplex = end.simplex;
     const int edgeBase = end.edgeBase, iteration = end.iteration, savedCount = end.savedCount;
     const T maxAbs = end.maxAbs;
     const std::int64_t* saved = end.saved;
@@ -1328,8 +1330,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
     }
 
-    return finishQuery<T, Scaled>(input, cache, options, trace, scale, world, out,
-                                  {simplex, edgeBase, iteration, maxAbs, {saved[0], saved[1], saved[2]}, savedCount,
+    return finishQuery<T, Scaled>(input, cache, options, trace, scale, world, out.stop, simplex,
+                                  {edgeBase, iteration, maxAbs, {saved[0], saved[1], saved[2]}, savedCount,
                                    culledRepeat, searchA, searchB,
                                    A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact))});
 }
