@@ -2,6 +2,7 @@
 // same distribution as the runner's `random` family (3 to 8 vertices on circles of radius 0.5 to
 // 2, positions in [-4, 4]^2, random rotations), from a fixed seed, so runs are comparable.
 //   build/release/gjk/gjk_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+#include "gjk/batch.hpp"
 #include "gjk/distance.hpp"
 #include "random_shapes.hpp"
 
@@ -148,6 +149,58 @@ template <class T> void BM_RandomBatch(benchmark::State& state)
     setNsPerQuery(state, in.size());
 }
 
+// The batch in SIMD lanes (gjk/batch.hpp) over the same pairs, cold, on one instruction set
+// (0 scalar, 1 SSE2, 2 AVX2, 3 AVX-512; skipped when this CPU lacks it). Counters: lane
+// utilisation (busy lane-iterations / all) and scan utilisation (own points / scanned points).
+// FloatRotations: a float engine's rotations in double (not unit ones: each lane's end then runs
+// the scalar finishQuery), against BM_RandomFloatRotations.
+template <class T, bool FloatRotations = false> void BM_RandomLanes(benchmark::State& state)
+{
+    const auto isa = gjk::BatchIsa(state.range(0));
+    if (!gjk::batchIsaSupported(isa))
+    {
+        state.SkipWithError("instruction set not supported on this CPU");
+        return;
+    }
+    const auto& in = inputs<T, FloatRotations>().inputs;
+    std::vector<gjk::SimplexCache> caches(in.size());
+    std::vector<gjk::DistanceOutput<T>> out(in.size());
+    gjk::BatchStats stats;
+    for (auto _ : state)
+    {
+        std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out, gjk::referenceOptions, isa,
+                           &stats);
+        benchmark::DoNotOptimize(out.data());
+    }
+    setNsPerQuery(state, in.size());
+    state.counters["lane_use"] = stats.steps ? double(stats.busyLaneSteps) / double(stats.steps * stats.lanes) : 1.0;
+    state.counters["scan_use"] = stats.scannedPoints ? double(stats.usefulPoints) / double(stats.scannedPoints) : 1.0;
+    state.counters["handed_back"] = double(stats.handedBack);
+}
+
+// The same, warm: each pair with the cache of its previous query (a batch per step).
+template <class T> void BM_RandomLanesWarm(benchmark::State& state)
+{
+    const auto isa = gjk::BatchIsa(state.range(0));
+    if (!gjk::batchIsaSupported(isa))
+    {
+        state.SkipWithError("instruction set not supported on this CPU");
+        return;
+    }
+    const auto& in = inputs<T>().inputs;
+    std::vector<gjk::SimplexCache> caches(in.size());
+    std::vector<gjk::DistanceOutput<T>> out(in.size());
+    for (size_t i = 0; i < in.size(); ++i)
+        gjk::distance(in[i], caches[i]);
+    for (auto _ : state)
+    {
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out, gjk::referenceOptions, isa);
+        benchmark::DoNotOptimize(out.data());
+    }
+    setNsPerQuery(state, in.size());
+}
+
 // Warm-started repeated query: each pair queried with the cache of its previous query.
 template <class T> void BM_RandomWarm(benchmark::State& state)
 {
@@ -192,6 +245,11 @@ BENCHMARK_TEMPLATE(BM_RandomLearned, double)->Arg(500)->ArgName("pairs")->Unit(b
 BENCHMARK_TEMPLATE(BM_RandomLearned, float)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, float)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, double, true)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanesWarm, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanesWarm, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RegularPolygons, double)

@@ -73,8 +73,8 @@ TEST_CASE("a small campaign passes and its report follows the schema", "[campaig
     CHECK(r["schema"] == "gjk-report/1");
     CHECK(r["passed"] == true);
     for (const char* k :
-         {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
-          "threads", "inputs", "cases_total", "cases_rejected", "exact_route", "elapsed_s"})
+         {"date", "host", "compiler", "flags", "build_type", "batch_isa", "git_revision", "command",
+          "seed", "threads", "inputs", "cases_total", "cases_rejected", "exact_route", "elapsed_s"})
         CHECK(r["context"].contains(k));
     CHECK(r["context"]["cases_total"] == 200 + 16 + 32 + 40 + 16);
     CHECK(r["context"]["flags"].get<std::string>().find("-ffp-contract=off") != std::string::npos);

@@ -50,7 +50,9 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "double-warm",
                                           "float-warm",
                                           "double-every-start",
-                                          "float-every-start"};
+                                          "float-every-start",
+                                          "double-batch",
+                                          "float-batch"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};
@@ -63,6 +65,7 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
         CHECK((v.start == Start::Warm) == (v.name.find("-warm") != std::string::npos));
         CHECK((v.start == Start::EveryStart) == (v.name.find("-every-start") != std::string::npos));
         CHECK(needsConvexOrder(v) == (v.name.find("binary-support") != std::string::npos));
+        CHECK(v.batch == (v.name.find("-batch") != std::string::npos));
     }
     for (const auto& n : judged)
         CHECK(seen.count(n) == 1);

@@ -940,67 +940,31 @@ template <class T>
 void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
-// The query. `Scaled`: the rescaled retry (rescaling, above), a second instantiation kept out of
-// line (distanceRescaled), so that the common query carries no test for it.
-template <class T, bool Scaled>
-GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, SimplexCache& cache,
-                                          const Options& options, Trace<T>* trace, int scale)
+// Whether a cache's indices fit shapes of these sizes (a warm start), else a cold start.
+GJK_INLINE bool cacheFits(const SimplexCache& cache, int countA, int countB)
 {
-    const Polygon<T>& polyA = input.proxyA;
-    const Polygon<T>& polyB = input.proxyB;
-    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
-    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
-    // Any finite rotation (c, s) but (0, 0), which maps a shape to one point (docs/gjk.md).
-    GJK_ASSERT(!(input.transformA.q.c == T(0) && input.transformA.q.s == T(0)));
-    GJK_ASSERT(!(input.transformB.q.c == T(0) && input.transformB.q.s == T(0)));
+    bool fits = cache.count >= 1 && cache.count <= 3;
+    for (int i = 0; fits && i < cache.count; ++i)
+        fits = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 && cache.indexB[i] < countB;
+    return fits;
+}
 
-    // The compute frame: A's local frame (world = xfA * local) or the world itself.
-    Transform<T> world;
-    TransformedShape<T, Scaled> A{polyA, {}, false, false, 0, false};
-    TransformedShape<T, Scaled> B{polyB, {}, false, false, 0, false};
-    if constexpr (Scaled)
-        world = setUpScaledShapes(input, options, scale, A, B);
-    else if (options.frame == Frame::LocalA)
-    {
-        world = input.transformA;
-        A.identity = true;
-        B.xf = invMulTransforms(input.transformA, input.transformB);
-    }
-    else
-    {
-        A.xf = input.transformA;
-        B.xf = input.transformB;
-    }
-    if (options.support == SupportStrategy::BinarySearch)
-    {
-        A.binary = polyA.count > 16;
-        B.binary = polyB.count > 16;
-    }
-    if (trace)
-    {
-        trace->frame = world;
-        trace->scaleExponent = scale;
-        trace->steps.clear();
-    }
-
+// The initial simplex, from the cache (warm) or cold; returns its edgeBase. Shared by the query
+// below and the SIMD batch (gjk/batch.hpp).
+template <class T, class Shape>
+GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simplex<T>& simplex)
+{
     // Start from the cache (warm) or, cold, from "an arbitrary initial simplex": the support point
     // of Z in the direction from A's origin to B's, whose closest points usually face each other
     // (why: docs/speed.md, "Cold start between the shapes"), or vertex 0 of each shape when the
     // origins coincide. Stale indices (shapes
     // changed) fall back to a cold start.
-    Simplex<T> simplex;
-    bool cacheValid = cache.count >= 1 && cache.count <= 3;
-    for (int i = 0; cacheValid && i < cache.count; ++i)
-        cacheValid = cache.indexA[i] >= 0 && cache.indexA[i] < polyA.count &&
-                     cache.indexB[i] >= 0 && cache.indexB[i] < polyB.count;
-    // The slot of a final edge the distance and the edge's sign test are measured from: the
-    // query's own first vertex (SimplexCache::edgeBase), 0 once the simplex has changed.
     int edgeBase = 0;
-    if (cacheValid)
+    if (cacheFits(cache, A.poly.count, B.poly.count))
     {
         edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
-        A.last = cache.searchA >= 0 && cache.searchA < polyA.count ? cache.searchA : cache.indexA[0];
-        B.last = cache.searchB >= 0 && cache.searchB < polyB.count ? cache.searchB : cache.indexB[0];
+        A.last = cache.searchA >= 0 && cache.searchA < A.poly.count ? cache.searchA : cache.indexA[0];
+        B.last = cache.searchB >= 0 && cache.searchB < B.poly.count ? cache.searchB : cache.indexB[0];
         simplex.count = cache.count;
         for (int i = 0; i < cache.count; ++i)
             simplex.v[i] = makeVertex<T>(A, B, cache.indexA[i], cache.indexB[i]);
@@ -1011,102 +975,43 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         const Vec2<T> d0 = B.xf.p - A.xf.p;
         simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport<T>(A, B, d0) : makeVertex<T>(A, B, 0, 0);
     }
+    return edgeBase;
+}
 
-    const int maxIterations =
-        options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (polyA.count + polyB.count);
+// The loop's final state besides the simplex, from which finishQuery makes the output and the
+// cache. Shared by the query below and the SIMD batch (gjk/batch.hpp), whose lanes run the loop
+// and end here. (The simplex is passed by reference: copied into this struct, it cost the scalar
+// query 6-20 %, docs/speed.md, "Batches in SIMD lanes".)
+template <class T> struct QueryEnd
+{
+    int edgeBase;
+    int iteration;
+    T maxAbs; // largest support-point coordinate magnitude (the range check)
+    std::int64_t saved[3]; // the simplex before the last solve (index pairs), and its size
+    int savedCount;
+    bool culledRepeat; // the stopping support point was a vertex the last solve culled
+    int searchA, searchB; // where the last support searches started
+    bool supportOutOfRange; // a support scan overflowed, or (rescaled) a point lost bits
+};
 
+// The end of the query: witness points, distance and normal in world coordinates, radii,
+// certified interval, the cache, the range check and (out of range) the rescaled retry.
+// `stop`: why the loop stopped.
+template <class T, bool Scaled>
+GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
+                                         Trace<T>* trace, int scale, const Transform<T>& world, StopReason stop,
+                                         const Simplex<T>& simplex, const QueryEnd<T>& end)
+{
     DistanceOutput<T> out;
-    out.stop = StopReason::IterationLimit;
-    int iteration = 0;
-    // Largest coordinate magnitude of the support points seen, for the range check.
-    T maxAbs = T(0);
-    for (int i = 0; i < simplex.count; ++i)
-        maxAbs = std::max({maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
-    // The simplex before the last solve (index pairs), and whether the stopping support point was
-    // one of its vertices that the last solve culled (see the cache at the end).
-    std::int64_t saved[3] = {-1, -1, -1};
-    int savedCount = 0;
-    bool culledRepeat = false;
-    int searchA = A.last, searchB = B.last; // where the last support searches started
-    for (;;)
-    {
-        // Remember the simplex vertices to detect a repeated support point (case 1).
-        // Index pairs packed in one integer each; unused slots hold a pair no vertex can have.
-        // Three fixed comparisons instead of a loop over 1 to 3 vertices. Why: docs/speed.md,
-        // "Repeated-support check".
-        for (int i = 0; i < 3; ++i)
-            saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
-        savedCount = simplex.count;
-
-        // Compute the closest point P on the simplex and cull non-contributing vertices.
-        switch (simplex.count)
-        {
-        case 1: break;
-        case 2: solve2(simplex); break;
-        case 3: solve3(simplex); break;
-        }
-
-        if (simplex.count == 3) // case 2: containment, the origin is inside Z
-        {
-            out.stop = StopReason::Containment;
-            if (trace)
-                trace->steps.push_back({simplex, Vec2<T>{}, Vec2<T>{}, false, {}});
-            break;
-        }
-
-        const Vec2<T> d = searchDirection(simplex, options.direction, edgeBase);
-        if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
-        {
-            out.stop = StopReason::ZeroDirection;
-            if (trace)
-                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
-            break;
-        }
-        if (iteration == maxIterations)
-        {
-            out.stop = StopReason::IterationLimit;
-            if (trace)
-                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
-            break;
-        }
-
-        // New support point of Z in direction d.
-        searchA = A.last;
-        searchB = B.last;
-        const SimplexVertex<T> w = findMinkowskiSupport<T>(A, B, d);
-        ++iteration;
-        maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
-        if (trace)
-            trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
-
-        // Case 1: the support point is already in the simplex: no more progress possible.
-        const std::int64_t key = packIndices(w.indexA, w.indexB);
-        if ((key == saved[0]) | (key == saved[1]) | (key == saved[2]))
-        {
-            out.stop = StopReason::RepeatedSupport;
-            // Usually the repeated point is a vertex of the final simplex (of at most two
-            // vertices here). When rounding made the last solve cull it (a nearly degenerate
-            // triangle, found by the fuzzer), the cache keeps the simplex before that solve.
-            culledRepeat = key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
-                           (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
-            break;
-        }
-
-        if (options.stopping == StoppingRule::DualityGap)
-        {
-            const Vec2<T> v = closestPoint(simplex);
-            const T vv = dot(v, v);
-            if (vv - dot(v, w.w) <= Tolerances<T>::dualityGap * vv)
-            {
-                out.stop = StopReason::DualityGap;
-                break;
-            }
-        }
-
-        simplex.v[simplex.count] = w;
-        ++simplex.count;
-        edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
-    }
+    out.stop = stop;
+    const Polygon<T>& polyA = input.proxyA;
+    const Polygon<T>& polyB = input.proxyB;
+    const int edgeBase = end.edgeBase, iteration = end.iteration, savedCount = end.savedCount;
+    const T maxAbs = end.maxAbs;
+    const std::int64_t* saved = end.saved;
+    const bool culledRepeat = end.culledRepeat;
+    const int searchA = end.searchA, searchB = end.searchB;
+    (void)scale;
 
     // Output: closest points from the barycentric weights, in world coordinates.
     Vec2<T> pA, pB;
@@ -1255,7 +1160,7 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
                                  !(std::abs(out.normal.y) <= big);
     const bool rangeExceeded = !(maxAbs <= Tolerances<T>::maxCoordinate) || frameOutOfRange ||
                                (maxAbs > T(0) && maxAbs < Tolerances<T>::minCoordinate) ||
-                               A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact)) ||
+                               end.supportOutOfRange ||
                                answerNotFinite;
     if constexpr (Scaled)
     {
@@ -1278,6 +1183,157 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         if (rangeExceeded | (maxAbs == T(0))) [[unlikely]]
             distanceRescaled(input, cache, options, trace, out, !rangeExceeded);
     return out;
+}
+
+// The query. `Scaled`: the rescaled retry (rescaling, above), a second instantiation kept out of
+// line (distanceRescaled), so that the common query carries no test for it.
+template <class T, bool Scaled>
+GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, SimplexCache& cache,
+                                          const Options& options, Trace<T>* trace, int scale)
+{
+    const Polygon<T>& polyA = input.proxyA;
+    const Polygon<T>& polyB = input.proxyB;
+    GJK_ASSERT(polyA.count > 0 && polyB.count > 0);
+    GJK_ASSERT(polyA.radius >= T(0) && polyB.radius >= T(0));
+    // Any finite rotation (c, s) but (0, 0), which maps a shape to one point (docs/gjk.md).
+    GJK_ASSERT(!(input.transformA.q.c == T(0) && input.transformA.q.s == T(0)));
+    GJK_ASSERT(!(input.transformB.q.c == T(0) && input.transformB.q.s == T(0)));
+
+    // The compute frame: A's local frame (world = xfA * local) or the world itself.
+    Transform<T> world;
+    TransformedShape<T, Scaled> A{polyA, {}, false, false, 0, false};
+    TransformedShape<T, Scaled> B{polyB, {}, false, false, 0, false};
+    if constexpr (Scaled)
+        world = setUpScaledShapes(input, options, scale, A, B);
+    else if (options.frame == Frame::LocalA)
+    {
+        world = input.transformA;
+        A.identity = true;
+        B.xf = invMulTransforms(input.transformA, input.transformB);
+    }
+    else
+    {
+        A.xf = input.transformA;
+        B.xf = input.transformB;
+    }
+    if (options.support == SupportStrategy::BinarySearch)
+    {
+        A.binary = polyA.count > 16;
+        B.binary = polyB.count > 16;
+    }
+    if (trace)
+    {
+        trace->frame = world;
+        trace->scaleExponent = scale;
+        trace->steps.clear();
+    }
+
+    // Start from the cache (warm) or, cold, from the support point between the shapes (startSimplex).
+    Simplex<T> simplex;
+    // The slot of a final edge the distance and the edge's sign test are measured from: the
+    // query's own first vertex (SimplexCache::edgeBase), 0 once the simplex has changed.
+    int edgeBase = startSimplex<T>(cache, A, B, simplex);
+
+    const int maxIterations =
+        options.maxIterations > 0 ? options.maxIterations : 32 + 2 * (polyA.count + polyB.count);
+
+    DistanceOutput<T> out;
+    out.stop = StopReason::IterationLimit;
+    int iteration = 0;
+    // Largest coordinate magnitude of the support points seen, for the range check.
+    T maxAbs = T(0);
+    for (int i = 0; i < simplex.count; ++i)
+        maxAbs = std::max({maxAbs, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
+    // The simplex before the last solve (index pairs), and whether the stopping support point was
+    // one of its vertices that the last solve culled (see the cache at the end).
+    std::int64_t saved[3] = {-1, -1, -1};
+    int savedCount = 0;
+    bool culledRepeat = false;
+    int searchA = A.last, searchB = B.last; // where the last support searches started
+    for (;;)
+    {
+        // Remember the simplex vertices to detect a repeated support point (case 1).
+        // Index pairs packed in one integer each; unused slots hold a pair no vertex can have.
+        // Three fixed comparisons instead of a loop over 1 to 3 vertices. Why: docs/speed.md,
+        // "Repeated-support check".
+        for (int i = 0; i < 3; ++i)
+            saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
+        savedCount = simplex.count;
+
+        // Compute the closest point P on the simplex and cull non-contributing vertices.
+        switch (simplex.count)
+        {
+        case 1: break;
+        case 2: solve2(simplex); break;
+        case 3: solve3(simplex); break;
+        }
+
+        if (simplex.count == 3) // case 2: containment, the origin is inside Z
+        {
+            out.stop = StopReason::Containment;
+            if (trace)
+                trace->steps.push_back({simplex, Vec2<T>{}, Vec2<T>{}, false, {}});
+            break;
+        }
+
+        const Vec2<T> d = searchDirection(simplex, options.direction, edgeBase);
+        if (d.x == T(0) && d.y == T(0)) // case 3a: P = Q, vertex overlap (exact zero, no tolerance)
+        {
+            out.stop = StopReason::ZeroDirection;
+            if (trace)
+                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
+            break;
+        }
+        if (iteration == maxIterations)
+        {
+            out.stop = StopReason::IterationLimit;
+            if (trace)
+                trace->steps.push_back({simplex, closestPoint(simplex), d, false, {}});
+            break;
+        }
+
+        // New support point of Z in direction d.
+        searchA = A.last;
+        searchB = B.last;
+        const SimplexVertex<T> w = findMinkowskiSupport<T>(A, B, d);
+        ++iteration;
+        maxAbs = std::max({maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
+        if (trace)
+            trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
+
+        // Case 1: the support point is already in the simplex: no more progress possible.
+        const std::int64_t key = packIndices(w.indexA, w.indexB);
+        if ((key == saved[0]) | (key == saved[1]) | (key == saved[2]))
+        {
+            out.stop = StopReason::RepeatedSupport;
+            // Usually the repeated point is a vertex of the final simplex (of at most two
+            // vertices here). When rounding made the last solve cull it (a nearly degenerate
+            // triangle, found by the fuzzer), the cache keeps the simplex before that solve.
+            culledRepeat = key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
+                           (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
+            break;
+        }
+
+        if (options.stopping == StoppingRule::DualityGap)
+        {
+            const Vec2<T> v = closestPoint(simplex);
+            const T vv = dot(v, v);
+            if (vv - dot(v, w.w) <= Tolerances<T>::dualityGap * vv)
+            {
+                out.stop = StopReason::DualityGap;
+                break;
+            }
+        }
+
+        simplex.v[simplex.count] = w;
+        ++simplex.count;
+        edgeBase = 0; // a new simplex: measured from slot 0, as a cold query does
+    }
+
+    return finishQuery<T, Scaled>(input, cache, options, trace, scale, world, out.stop, simplex,
+                                  {edgeBase, iteration, maxAbs, {saved[0], saved[1], saved[2]}, savedCount,
+                                   culledRepeat, searchA, searchB,
+                                   A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact))});
 }
 
 // The rescaled retry, out of line: the common query never runs it.
@@ -1308,8 +1364,8 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
 // distance(inputs[i], caches[i], options). The spans must have equal sizes. Same results as the
-// single query, bit for bit (test "batch"); its speed against the single-query loop is measured
-// in gjk/bench (docs/speed.md).
+// single query, bit for bit (test "batch"). This header-only one is the single-query loop; the
+// overloads of gjk/batch.hpp (target gjk::batch) run the queries in SIMD lanes (docs/gjk.md).
 template <class T>
 void distanceBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
                    std::span<DistanceOutput<T>> outputs, const Options& options = referenceOptions)

@@ -110,6 +110,8 @@ Json contextJson(const std::string& date, const std::string& revision, const std
     context["compiler"] = GJK2D_BUILD_COMPILER;
     context["flags"] = GJK2D_BUILD_FLAGS;
     context["build_type"] = GJK2D_BUILD_TYPE;
+    // The instruction set the batch variants' lanes run (gjk/batch.hpp), chosen at run time.
+    context["batch_isa"] = gjk::batchIsaName(gjk::bestBatchIsa());
 #if defined(GJK2D_CHECKED)
     context["gjk_checked"] = true;
 #else
@@ -555,6 +557,7 @@ Json variantsJson(const EvalContext& ctx)
         j["description"] = v->description;
         j["judged"] = v->judged;
         j["warm"] = v->start == Start::Warm;
+        j["batch"] = v->batch;
         j["options"] = optionsJson(v->options);
         if (v->plugin) // the options name the bound it is compared with; the answer is the plugin's
         {

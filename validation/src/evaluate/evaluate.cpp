@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -382,6 +383,46 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
     v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
                (v.certified && !v.intervalContains);
 }
+
+template <class T> bool sameBits(T a, T b)
+{
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+// The variant's query; a batch variant's is checked against the scalar query, bit for bit in every
+// output field and the cache (gjk/batch.hpp's promise). A difference is a broken invariant of the
+// library (std::logic_error: exit code 4), never a failure of the case.
+template <class T>
+gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const VariantInfo& v)
+{
+    if (!v.batch)
+        return query<T>(p, v);
+    if (v.start != Start::Cold)
+        throw std::logic_error(fmt::format("variant {}: a batch variant must start cold", v.name));
+    const gjk::DistanceInput<T> in = p.input<T>();
+    gjk::SimplexCache batchCache, scalarCache;
+    gjk::DistanceOutput<T> out;
+    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1), std::span<gjk::SimplexCache>(&batchCache, 1),
+                       std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
+    const gjk::DistanceOutput<T> ref = gjk::distance(in, scalarCache, v.options);
+    bool same = sameBits(out.distance, ref.distance) && sameBits(out.pointA.x, ref.pointA.x) &&
+                sameBits(out.pointA.y, ref.pointA.y) && sameBits(out.pointB.x, ref.pointB.x) &&
+                sameBits(out.pointB.y, ref.pointB.y) && sameBits(out.normal.x, ref.normal.x) &&
+                sameBits(out.normal.y, ref.normal.y) && out.iterations == ref.iterations &&
+                out.simplexCount == ref.simplexCount && out.stop == ref.stop && out.outOfRange == ref.outOfRange &&
+                out.rescaled == ref.rescaled && out.certified == ref.certified && sameBits(out.lower, ref.lower) &&
+                sameBits(out.upper, ref.upper) && batchCache.count == scalarCache.count &&
+                batchCache.edgeBase == scalarCache.edgeBase && batchCache.searchA == scalarCache.searchA &&
+                batchCache.searchB == scalarCache.searchB;
+    for (int i = 0; i < 3; ++i)
+        same = same && batchCache.indexA[i] == scalarCache.indexA[i] && batchCache.indexB[i] == scalarCache.indexB[i];
+    if (!same)
+        throw std::logic_error(fmt::format("variant {}: case '{}': gjk::distanceBatch ({}) differs from gjk::distance "
+                                           "(distance {} vs {}, {} vs {} iterations): gjk/batch.hpp promises the same bits",
+                                           v.name, c.name, gjk::batchIsaName(gjk::bestBatchIsa()),
+                                           double(out.distance), double(ref.distance), out.iterations, ref.iterations));
+    return out;
+}
 } // namespace
 
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
@@ -439,9 +480,9 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
                 fillOutput(worstStart<double>(p, vi, truth.distance), v);
         }
         else if (isFloat)
-            fillOutput(query<float>(p, vi), v);
+            fillOutput(checkedQuery<float>(c, p, vi), v);
         else
-            fillOutput(query<double>(p, vi), v);
+            fillOutput(checkedQuery<double>(c, p, vi), v);
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         v.bound = boundOf(vi, c, scales.get(false, isFloat), truth.distance);

@@ -62,6 +62,13 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
     const gjk::DistanceInput<T> in = p.input<T>();
     if (v.start == Start::Warm)
         gjk::distance(in, cache, v.options);
+    if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
+    {
+        gjk::DistanceOutput<T> out;
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1), std::span<gjk::SimplexCache>(&cache, 1),
+                           std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
+        return out;
+    }
     return gjk::distance(in, cache, v.options, trace);
 }
 

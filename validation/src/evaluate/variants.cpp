@@ -62,6 +62,12 @@ const std::vector<VariantInfo>& variantTable()
         {.name = "float-every-start", .scalar = Scalar::Float, .options = gjk::referenceOptions,
          .description = "every start in single precision",
          .judged = true, .start = Start::EveryStart},
+        {.name = "double-batch", .scalar = Scalar::Double, .options = gjk::referenceOptions,
+         .description = "reference options through gjk::distanceBatch (SIMD lanes): bit for bit double",
+         .judged = true, .start = Start::Cold, .batch = true},
+        {.name = "float-batch", .scalar = Scalar::Float, .options = gjk::referenceOptions,
+         .description = "reference options through gjk::distanceBatch in single precision: bit for bit float",
+         .judged = true, .start = Start::Cold, .batch = true},
     };
     return table;
 }

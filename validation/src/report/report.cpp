@@ -88,8 +88,8 @@ std::string renderMarkdown(const Json& r)
                      resultText(r), comparisonFailures(r, judged));
     s += "| | |\n|---|---|\n";
     for (const char* k :
-         {"date", "host", "compiler", "flags", "build_type", "git_revision", "command", "seed",
-          "threads", "cases_total", "cases_rejected", "exact_route"})
+         {"date", "host", "compiler", "flags", "build_type", "batch_isa", "git_revision", "command",
+          "seed", "threads", "cases_total", "cases_rejected", "exact_route"})
         if (c.contains(k))
             s += fmt::format("| {} | `{}` |\n", k, mdEscape(g(c[k], "{}")));
     if (c.contains("elapsed_s"))

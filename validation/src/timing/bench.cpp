@@ -95,6 +95,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
         Json j;
         j["type"] = scalarName(v.scalar);
         j["warm"] = t.warm;
+        j["batch"] = v.batch;
         j["options"] = optionsJson(v.options);
         j["cases"] = t.cases;
         j["skipped"] = skipped[k];
@@ -121,7 +122,8 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
                  "each pass loops over all of them (repeated to last at least min_pass_s); "
                  "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
                  "Warm: each query starts from the SimplexCache of a previous query of the same "
-                 "case, prepared before timing."}};
+                 "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
+                 "on all its cases at once (context.batch_isa: the instruction set of its lanes)."}};
     context["elapsed_s"] = {{"prepare", seconds(tStart, tPrepared)},
                             {"timing", seconds(tPrepared, tTimed)},
                             {"total", seconds(tStart, Clock::now())}};
@@ -139,10 +141,12 @@ std::string benchTable(const Json& b)
 {
     const Json& c = b["context"];
     std::string s = fmt::format(
-        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries\n",
+        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries; *-batch variants: "
+        "gjk::distanceBatch on {}\n",
         c["cases_total"].get<std::uint64_t>(), c["cases_rejected"].get<std::uint64_t>(),
         c["timing"]["passes"].get<int>(), c["timing"]["min_pass_s"].get<double>(),
-        c["timing"]["warm"].get<bool>() ? "warm-started" : "cold (warm for *-warm variants)");
+        c["timing"]["warm"].get<bool>() ? "warm-started" : "cold (warm for *-warm variants)",
+        c.contains("batch_isa") ? c["batch_isa"].get<std::string>() : std::string("?"));
     s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}\n", "variant", "type",
                      "start", "cases", "skipped", "ns/query", "min", "max", "x double");
     for (const auto& [name, v] : b["variants"].items())

@@ -78,9 +78,32 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
+// A batch variant: each rep is one gjk::distanceBatch over all the cases (fresh caches, or copies
+// of the warm ones), as an engine's step or a campaign's chunk would call it.
+template <class T>
+double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps, std::vector<gjk::SimplexCache>& caches,
+                     std::vector<gjk::DistanceOutput<T>>& outputs)
+{
+    const auto t0 = Clock::now();
+    double acc = 0;
+    for (int r = 0; r < reps; ++r)
+    {
+        if (set.caches.empty())
+            std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
+        else
+            std::copy(set.caches.begin(), set.caches.end(), caches.begin());
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(set.inputs), caches, outputs, o);
+        for (const auto& out : outputs)
+            acc += double(out.distance);
+    }
+    const auto t1 = Clock::now();
+    g_timingSink = g_timingSink + acc;
+    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
 template <class T>
 TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
-                   const TimingConfig& cfg, bool warm)
+                   const TimingConfig& cfg, bool warm, bool batch)
 {
     if (cases.empty())
     {
@@ -89,8 +112,11 @@ TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Opt
         return res;
     }
     const TimingSet<T> set(cases, o, warm);
-    TimingResult res = medianOfPasses(cases.size(), cfg,
-                                      [&](int reps) { return timePass<T>(set, o, reps); });
+    std::vector<gjk::SimplexCache> caches(batch ? set.inputs.size() : 0);
+    std::vector<gjk::DistanceOutput<T>> outputs(batch ? set.inputs.size() : 0);
+    auto pass = [&](int reps)
+    { return batch ? timePassBatch<T>(set, o, reps, caches, outputs) : timePass<T>(set, o, reps); };
+    TimingResult res = medianOfPasses(cases.size(), cfg, pass);
     res.warm = warm;
     return res;
 }
@@ -127,8 +153,8 @@ TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const Va
                          const TimingConfig& cfg)
 {
     const bool warm = v.start == Start::Warm || cfg.warm;
-    return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm)
-                                     : timeT<double>(cases, v.options, cfg, warm);
+    return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm, v.batch)
+                                     : timeT<double>(cases, v.options, cfg, warm, v.batch);
 }
 
 } // namespace gjkval
