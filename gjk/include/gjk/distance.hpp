@@ -153,7 +153,11 @@ struct Options
     bool useRadii = true;
     // Also return a certified interval [lower, upper] that provably contains the exact distance
     // (gjk/certify.hpp). Costs one more scan of each shape.
-    bool certify = false;
+    bool certify = false;    // Return the correctly rounded distance of the exact problem (gjk/correct.hpp): the double
+    // nearest to it, 0 exactly when it is 0. DistanceOutput::path says how it was decided;
+    // CorrectPath::NeedsExact asks the caller for the exact completion
+    // (exact/include/exact/correct_fallback.hpp). double queries only.
+    bool correctlyRounded = false;
 };
 
 // The reference variant, with a stable name. The default Options{} is this variant.
@@ -178,6 +182,29 @@ constexpr const char* stopReasonName(StopReason r)
     case StopReason::ZeroDirection: return "zero-direction";
     case StopReason::DualityGap: return "duality-gap";
     case StopReason::IterationLimit: return "iteration-limit";
+    }
+    return "?";
+}
+
+// How Options::correctlyRounded decided the distance (gjk/correct.hpp).
+enum class CorrectPath : std::uint8_t
+{
+    Plain,        // the option is off: the plain answer
+    Double,       // containment certified in double with a running error bound
+    DoubleDouble, // the features' distance and its support bound in double-double
+    NeedsExact,   // not decided: the output holds the plain answer, the caller completes it
+    Exact,        // completed with exact arithmetic (set by the completion, outside gjk/)
+};
+
+constexpr const char* correctPathName(CorrectPath p)
+{
+    switch (p)
+    {
+    case CorrectPath::Plain: return "plain";
+    case CorrectPath::Double: return "double";
+    case CorrectPath::DoubleDouble: return "double-double";
+    case CorrectPath::NeedsExact: return "needs-exact";
+    case CorrectPath::Exact: return "exact";
     }
     return "?";
 }
@@ -262,6 +289,8 @@ template <class T> struct DistanceOutput
     bool certified = false;
     double lower = 0;
     double upper = std::numeric_limits<double>::infinity();
+    // Options::correctlyRounded: how the distance was decided.
+    CorrectPath path = CorrectPath::Plain;
 };
 
 // One GJK iteration as the talk's demo draws it: the simplex after culling, its closest point to
@@ -1300,10 +1329,17 @@ template <class T>
 }
 
 template <class T>
+void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
+                    DistanceOutput<T>& out); // gjk/correct.hpp
+
+template <class T>
 DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
                            const Options& options = referenceOptions, Trace<T>* trace = nullptr)
 {
-    return distanceImpl<T, false>(input, cache, options, trace, 0);
+    DistanceOutput<T> out = distanceImpl<T, false>(input, cache, options, trace, 0);
+    if (options.correctlyRounded) [[unlikely]]
+        correctlyRound(input, cache, options, out);
+    return out;
 }
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
@@ -1330,3 +1366,5 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, const Options& options
 } // namespace gjk
 
 #include "gjk/detail/fp_end.hpp"
+
+#include "gjk/correct.hpp" // Options::correctlyRounded

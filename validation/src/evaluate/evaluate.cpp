@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -33,6 +35,7 @@ template <class T> void fillOutput(const gjk::DistanceOutput<T>& o, VariantOutco
     v.certified = o.certified;
     v.lower = o.lower;
     v.upper = o.upper;
+    v.path = o.path;
 }
 
 Json exactJson(const exact::Result& r)
@@ -323,7 +326,7 @@ double boundOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, doub
 // The judgement of one variant's answer v (v.R and v.bound set) against the exact `truth`: its
 // errors, its misclassification, whether its certified interval holds the truth, and whether it
 // failed (docs/validation.md, "Failures").
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
 {
     const double u = unitRoundoff(scalar);
     const bool truthZero = exactIsZero(truth);
@@ -371,6 +374,13 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
     // certified interval that misses the truth always fails.
     v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
                (v.certified && !v.intervalContains);
+    // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
+    // case (out of range ones too: the exact completion answers them).
+    if (zeroTolerance)
+    {
+        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) != std::bit_cast<std::uint64_t>(truth.distance);
+        v.failed = v.failed || v.bitMismatch;
+    }
 }
 } // namespace
 
@@ -406,7 +416,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         v.bound = boundOf(vi, c, scales.get(false, isFloat), truth.distance);
-        judge(v, truth, vi.scalar);
+        judge(v, truth, vi.scalar, vi.options.correctlyRounded);
     }
 }
 

@@ -8,6 +8,7 @@
 
 #include "gjk/distance.hpp"
 
+#include <exact/correct_fallback.hpp>
 #include <exact/exact.hpp>
 
 #include <array>
@@ -60,7 +61,12 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
     const gjk::DistanceInput<T> in = p.input<T>();
     if (v.start == Start::Warm)
         gjk::distance(in, cache, v.options);
-    return gjk::distance(in, cache, v.options, trace);
+    gjk::DistanceOutput<T> out = gjk::distance(in, cache, v.options, trace);
+    // A correctly rounded variant: its undecided queries completed exactly, as a user would.
+    if constexpr (std::is_same_v<T, double>)
+        if (out.path == gjk::CorrectPath::NeedsExact)
+            exact::completeCorrectlyRounded(in, v.options, out);
+    return out;
 }
 
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
@@ -127,6 +133,10 @@ struct VariantOutcome
     // Certified variants (Options::certify): the interval and whether it holds the exact distance.
     bool certified = false, intervalContains = false;
     double lower = 0, upper = 0;
+    // Correctly rounded variants: how the distance was decided, and whether it differs from the
+    // exact side's in any bit (a failure: zero tolerance).
+    gjk::CorrectPath path = gjk::CorrectPath::Plain;
+    bool bitMismatch = false;
     bool failed = false;
 };
 

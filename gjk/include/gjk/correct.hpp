@@ -1,0 +1,526 @@
+// The correctly rounded distance (Options::correctlyRounded): the double nearest to the exact
+// distance of the problem as given, max(0, dist(hull(A'), hull(B')) - rA - rB) with
+// A' = {c x - s y + px, s x + c y + py} evaluated exactly (the exact side's semantics,
+// exact/include/exact/exact.hpp), and 0 exactly when that exact value is 0.
+//
+// A filtered design, as in exact geometric computation: the cheap stage decides when it can prove
+// its answer, and hands the rest on.
+//   1. The plain GJK query (any Options) names the final features: the index pairs of its simplex
+//      (SimplexCache).
+//   2. CorrectPath::Double: containment (a triangle simplex) whose three orientation signs are
+//      certified in double with a running error bound (gjk/certify.hpp): the exact distance is 0.
+//   3. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
+//      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
+//      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
+//      quantity carrying a rigorous bound on its distance to the exact value. That gives
+//        U = the distance from the origin to the feature (a point or a segment of Z = A' - B'),
+//            an upper bound of the exact hull distance d*;
+//        L = min over z in Z of n.z / |n| for the feature's direction n (the support-function,
+//            or duality, bound), a lower bound of d* for any n. Only the vertices whose double
+//            value along n lies within a certified error of the extreme one can attain the
+//            minimum; those few are evaluated in double-double.
+//      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
+//      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
+//      answer; if all are <= 0, the answer is 0.
+//   4. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
+//      rounding midpoint to within 2^-100 relative, features that are not the closest, magnitudes
+//      outside [2^-300, 2^300], a culled triangle). The output then holds the plain answer, and
+//      the caller completes it with exact arithmetic: exact/include/exact/correct_fallback.hpp
+//      (GMP, outside gjk/) does it in one call.
+//
+// Witness points and normal: those of the plain query (each within docs/error-bound.md's bound of
+// a pair of closest points), except that when the correctly rounded distance is 0 and the plain
+// one was not, both points are set to their midpoint and the normal to zero. A plain answer of 0
+// for shapes that are apart always goes to NeedsExact (whose completion returns the exact side's
+// closest points, correctly rounded).
+//
+// Only double queries are refined: a float query reports NeedsExact (the exact fallback of a float
+// query is not provided: the correctly rounded float is not the exact side's double).
+#pragma once
+
+#include "gjk/certify.hpp"
+#include "gjk/distance.hpp"
+#include "gjk/math.hpp"
+
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+#include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
+
+namespace gjk::correct
+{
+
+// --- Error-free transformations ----------------------------------------------------------------
+
+struct DD
+{
+    double hi = 0, lo = 0;
+};
+
+// a + b = s + e exactly (Knuth), for any finite a, b whose sum does not overflow.
+inline DD twoSum(double a, double b)
+{
+    const double s = a + b;
+    const double bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+}
+// The same when |a| >= |b| (or a == 0) (Dekker).
+inline DD fastTwoSum(double a, double b)
+{
+    const double s = a + b;
+    return {s, b - (s - a)};
+}
+// a * b = p + e exactly (Dekker, Veltkamp's split by 2^27 + 1), when |a|, |b| <= 2^996 and no
+// partial product underflows (guarded below: inputs within [2^-300, 2^300], an absolute term
+// covers the rest).
+inline DD twoProduct(double a, double b)
+{
+    constexpr double split = 134217729.0; // 2^27 + 1
+    const double p = a * b;
+    const double ca = split * a, ah = ca - (ca - a), al = a - ah;
+    const double cb = split * b, bh = cb - (cb - b), bl = b - bh;
+    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+}
+
+// --- Double-double values with a bound ---------------------------------------------------------
+//
+// An Approx is hi + lo (|lo| <= ulp(hi) / 2) with |exact - (hi + lo)| <= err, exact being the
+// quantity it stands for. Every operation below adds its own rounding, bounded by kRel times the
+// result. The double-double algorithms are those of Joldes, Muller and Popescu, "Tight and
+// rigorous error bounds for basic building blocks of double-word arithmetic" (ACM TOMS 2017):
+// addition (AccurateDWPlusDW) <= 3u^2, product (DWTimesDW without FMA) <= 7u^2, quotient
+// (DWDivDW2) <= 15u^2, and the square root (one Newton step from sqrt(hi), Dekker) <= 4u^2,
+// u = 2^-53. kRel = 2^-96 = 1024 u^2 covers each with a wide margin, and also the few roundings
+// of the bounds themselves (kSafe). Underflow: products of values below 2^-400 may lose up to a
+// few 2^-1074 each, covered by kTiny per operation; divisors and square roots are guarded away
+// from that range.
+inline constexpr double kRel = 0x1p-96;
+inline constexpr double kSafe = 1 + 0x1p-40;
+inline constexpr double kTiny = 0x1p-900;
+// The range where every operation's error-free pieces stay exact (no overflow of the split, no
+// underflow of a product's low part but for the kTiny term): inputs' magnitudes.
+inline constexpr double kMinInput = 0x1p-300, kMaxInput = 0x1p300;
+
+struct Approx
+{
+    double hi = 0, lo = 0, err = 0;
+};
+
+inline double mag(const Approx& a) { return std::abs(a.hi) * (1 + 0x1p-50); } // >= |hi + lo|
+
+// The evaluation context: `ok` turns false when a guard fails (the caller then needs exact).
+struct Context
+{
+    bool ok = true;
+    void require(bool c) { ok = ok && c; }
+};
+
+inline Approx exactly(double v) { return {v, 0, 0}; }
+inline Approx negate(const Approx& a) { return {-a.hi, -a.lo, a.err}; }
+inline Approx absolute(const Approx& a) { return a.hi < 0 ? negate(a) : a; }
+
+inline Approx add(const Approx& a, const Approx& b)
+{
+    DD s = twoSum(a.hi, b.hi);
+    const DD t = twoSum(a.lo, b.lo);
+    s = fastTwoSum(s.hi, s.lo + t.hi);
+    s = fastTwoSum(s.hi, s.lo + t.lo);
+    return {s.hi, s.lo, (a.err + b.err + kRel * std::abs(s.hi)) * kSafe};
+}
+inline Approx sub(const Approx& a, const Approx& b) { return add(a, negate(b)); }
+
+inline Approx mul(Context& cx, const Approx& a, const Approx& b)
+{
+    cx.require(std::abs(a.hi) <= 0x1p450 && std::abs(b.hi) <= 0x1p450); // product <= 2^900
+    const DD p = twoProduct(a.hi, b.hi);
+    const double t = a.hi * b.lo + a.lo * b.hi;
+    const DD r = fastTwoSum(p.hi, p.lo + t);
+    const double e = mag(a) * b.err + mag(b) * a.err + a.err * b.err + kRel * std::abs(r.hi) + kTiny;
+    return {r.hi, r.lo, e * kSafe};
+}
+
+inline Approx div(Context& cx, const Approx& a, const Approx& b)
+{
+    const double bLow = std::abs(b.hi) * (1 - 0x1p-50) - b.err * kSafe; // <= |exact b|
+    cx.require(std::abs(b.hi) >= 0x1p-400 && bLow > 0 && std::abs(a.hi) <= 0x1p900 &&
+               std::abs(b.hi) <= 0x1p450);
+    if (!cx.ok)
+        return {};
+    const double th = a.hi / b.hi;
+    const DD c = twoProduct(b.hi, th);
+    const DD t = fastTwoSum(c.hi, b.lo * th);
+    const DD r = fastTwoSum(t.hi, t.lo + c.lo);
+    const DD pi = twoSum(a.hi, -r.hi);
+    const double delta = pi.hi + ((pi.lo - r.lo) + a.lo);
+    const DD q = fastTwoSum(th, delta / b.hi);
+    // |a/b - av/bv| <= (|a - av| + |av/bv| |b - bv|) / |b|
+    const double e = (a.err + std::abs(q.hi) * (1 + 0x1p-50) * b.err) / bLow + kRel * std::abs(q.hi) +
+                     kTiny / bLow;
+    return {q.hi, q.lo, e * kSafe};
+}
+
+inline Approx squareRoot(Context& cx, const Approx& a)
+{
+    const double aLow = a.hi * (1 - 0x1p-50) - a.err * kSafe; // <= exact a
+    cx.require(a.hi >= 0x1p-800 && a.hi <= 0x1p900 && aLow > 0);
+    if (!cx.ok)
+        return {};
+    const double s = std::sqrt(a.hi);
+    const DD p = twoProduct(s, s);
+    const double r = ((a.hi - p.hi) - p.lo) + a.lo;
+    const DD q = fastTwoSum(s, r / (2 * s));
+    // |sqrt(a) - sqrt(av)| = |a - av| / (sqrt(a) + sqrt(av)) <= err / sqrt(aLow)
+    const double e = a.err / std::sqrt(aLow) + kRel * std::abs(q.hi) + kTiny;
+    return {q.hi, q.lo, e * kSafe};
+}
+
+// --- Exact sums --------------------------------------------------------------------------------
+
+// A short list of doubles whose exact sum is a wanted quantity (error-free pieces of products).
+struct Terms
+{
+    double t[20];
+    int n = 0;
+    void add(double x) { t[n++] = x; }
+    void addProduct(double a, double b)
+    {
+        const DD p = twoProduct(a, b);
+        t[n++] = p.hi;
+        t[n++] = p.lo;
+    }
+    // a * (x - y), the difference taken exactly first.
+    void addProductOfDifference(double a, double x, double y)
+    {
+        const DD d = twoSum(x, -y);
+        addProduct(a, d.hi);
+        addProduct(a, d.lo);
+    }
+};
+
+// The exact sum of the terms as an Approx. Ogita, Rump and Oishi's VecSum (a cascade of TwoSum,
+// error-free: the sum of the returned vector is the exact sum, its last element the
+// floating-point sum) makes the others small; the rest is summed in double, its error bounded by
+// the running bound n u sum|rest| (with room to spare: n 2^-52). A second pass is made when the
+// first leaves the rest larger than 2^-50 of the result (heavy cancellation: near touching, a
+// small gap far from the origin): each pass shrinks the rest by about u.
+inline Approx exactSum(Terms t)
+{
+    if (t.n == 0)
+        return {};
+    double restAbs = 0;
+    for (int pass = 0; pass < 3; ++pass)
+    {
+        for (int i = 1; i < t.n; ++i)
+        {
+            const DD s = twoSum(t.t[i - 1], t.t[i]);
+            t.t[i] = s.hi;
+            t.t[i - 1] = s.lo;
+        }
+        restAbs = 0;
+        for (int i = 0; i + 1 < t.n; ++i)
+            restAbs += std::abs(t.t[i]);
+        if (restAbs <= 0x1p-50 * std::abs(t.t[t.n - 1]))
+            break;
+    }
+    double rest = 0;
+    for (int i = 0; i + 1 < t.n; ++i)
+        rest += t.t[i];
+    const DD s = twoSum(t.t[t.n - 1], rest);
+    return {s.hi, s.lo, t.n * 0x1p-52 * restAbs * kSafe};
+}
+
+struct ApproxVec
+{
+    Approx x, y;
+};
+
+inline Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
+{
+    return add(mul(cx, a.x, b.x), mul(cx, a.y, b.y));
+}
+inline Approx cross(Context& cx, const ApproxVec& a, const ApproxVec& b)
+{
+    return sub(mul(cx, a.x, b.y), mul(cx, a.y, b.x));
+}
+
+// The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
+inline void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
+{
+    tx.addProduct(sign * xf.q.c, v.x);
+    tx.addProduct(-sign * xf.q.s, v.y);
+    tx.add(sign * xf.p.x);
+    ty.addProduct(sign * xf.q.s, v.x);
+    ty.addProduct(sign * xf.q.c, v.y);
+    ty.add(sign * xf.p.y);
+}
+
+// W = xfA * A[i] - xfB * B[j], a point of Z.
+inline ApproxVec minkowskiPoint(const DistanceInput<double>& in, int i, int j)
+{
+    Terms tx, ty;
+    addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
+    addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
+    return {exactSum(tx), exactSum(ty)};
+}
+
+// e = W(i2, j2) - W(i1, j1) from the local differences (the translations cancel exactly).
+inline ApproxVec minkowskiEdge(const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
+{
+    Terms tx, ty;
+    auto side = [&](const Transform<double>& xf, Vec2<double> p2, Vec2<double> p1, double sign)
+    {
+        tx.addProductOfDifference(sign * xf.q.c, p2.x, p1.x);
+        tx.addProductOfDifference(-sign * xf.q.s, p2.y, p1.y);
+        ty.addProductOfDifference(sign * xf.q.s, p2.x, p1.x);
+        ty.addProductOfDifference(sign * xf.q.c, p2.y, p1.y);
+    };
+    if (i1 != i2)
+        side(in.transformA, in.proxyA.points[i2], in.proxyA.points[i1], 1);
+    if (j1 != j2)
+        side(in.transformB, in.proxyB.points[j2], in.proxyB.points[j1], -1);
+    return {exactSum(tx), exactSum(ty)};
+}
+
+// Every input value is 0 or of magnitude within [kMinInput, kMaxInput].
+inline bool inRange(double v)
+{
+    const double a = std::abs(v);
+    return a == 0 || (a >= kMinInput && a <= kMaxInput);
+}
+inline bool inputInRange(const Polygon<double>& p, const Transform<double>& xf)
+{
+    bool ok = inRange(p.radius) && inRange(xf.p.x) && inRange(xf.p.y) && inRange(xf.q.c) && inRange(xf.q.s);
+    for (int i = 0; i < p.count; ++i)
+        ok = ok && inRange(p.points[i].x) && inRange(p.points[i].y);
+    return ok;
+}
+
+// The vertices of a shape that can attain min (sign = +1) or max (sign = -1) of n.(Q x) over its
+// points: those whose double value lies within twice a certified bound of the extreme one. The
+// bound covers the rounding of m = Q^T n (n = hi + lo, only hi used: |lo| <= u |hi|), and of the
+// dot products: |computed - exact| <= (3u + 2u (1 + 4u)) (|c| + |s|) max|n| max(|x| + |y|), taken
+// as 8u, plus an absolute 2^-1000 for underflow. Returns the count (at most kMaxCandidates; more
+// returns kMaxCandidates + 1).
+inline constexpr int kMaxCandidates = 4;
+inline int supportCandidates(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
+                             double sign, int* out)
+{
+    const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
+    const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
+    double best = std::numeric_limits<double>::infinity(), extent = 0;
+    for (int i = 0; i < p.count; ++i)
+    {
+        best = std::min(best, mx * p.points[i].x + my * p.points[i].y);
+        extent = std::max(extent, std::abs(p.points[i].x) + std::abs(p.points[i].y));
+    }
+    const double eps = 8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent + 0x1p-1000;
+    const double limit = best + 2 * eps * kSafe;
+    int count = 0;
+    for (int i = 0; i < p.count; ++i)
+        if (mx * p.points[i].x + my * p.points[i].y <= limit)
+        {
+            if (count == kMaxCandidates)
+                return kMaxCandidates + 1;
+            out[count++] = i;
+        }
+    return count;
+}
+
+// Certified containment in double (CorrectPath::Double): the origin strictly inside the triangle
+// of the three simplex points, every orientation sign certified by certify.hpp's running bound.
+inline bool containsOriginCertified(const DistanceInput<double>& in, const SimplexCache& cache)
+{
+    using namespace certify;
+    BoundedVec W[3];
+    for (int i = 0; i < 3; ++i)
+    {
+        const BoundedVec a = toWorld(in.transformA, in.proxyA.points[cache.indexA[i]]);
+        const BoundedVec b = toWorld(in.transformB, in.proxyB.points[cache.indexB[i]]);
+        W[i] = {a.x - b.x, a.y - b.y};
+    }
+    int positive = 0, negative = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        const BoundedVec &p = W[i], &q = W[(i + 1) % 3];
+        const Bounded c = p.x * q.y - p.y * q.x;
+        positive += lo(c) > 0;
+        negative += hi(c) < 0;
+    }
+    return positive == 3 || negative == 3;
+}
+
+// The decision: the exact x lies in [xl, xh] (each an Approx, with its bound). Returns the
+// correctly rounded max(0, x), or a negative value when the bounds cannot decide.
+inline double roundInterval(const Approx& xl, const Approx& xh)
+{
+    using certify::down;
+    using certify::up;
+    // All of [.., xh + err] <= 0: the answer is exactly 0.
+    if (xh.hi <= -up(xh.lo + xh.err))
+        return 0;
+    // Positive for sure: xl - err > 0.
+    if (!(xl.hi > up(xl.err - xl.lo)))
+        return -1;
+    const double m = xh.hi; // xh rounded to nearest (hi = fl(hi + lo))
+    if (!(m >= 0x1p-900 && m <= 0x1p900))
+        return -1;
+    const double gapAbove = std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
+    const double gapBelow = m - std::nextafter(m, 0.0);
+    // The upper end below the midpoint above m: xh.lo + err < gapAbove / 2.
+    if (!(up(xh.lo + xh.err) < 0.5 * gapAbove))
+        return -1;
+    // The lower end above the midpoint below m: (xl.hi - m) + xl.lo - err > -gapBelow / 2.
+    // xl.hi - m is exact when xl.hi is within a factor 2 of m (Sterbenz).
+    if (!(xl.hi >= 0.5 * m && xl.hi <= 2 * m))
+        return -1;
+    if (!(down(down((xl.hi - m) + xl.lo) - xl.err) > -0.5 * gapBelow))
+        return -1;
+    return m;
+}
+
+// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
+// cache the plain query returned: its index pairs are the final features.
+inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
+                   DistanceOutput<double>& out)
+{
+    out.path = CorrectPath::NeedsExact;
+    if (out.outOfRange || !inputInRange(in.proxyA, in.transformA) || !inputInRange(in.proxyB, in.transformB))
+        return;
+    const double rA = options.useRadii ? in.proxyA.radius : 0.0;
+    const double rB = options.useRadii ? in.proxyB.radius : 0.0;
+    const DD rs = twoSum(rA, rB);
+    const Approx r = {rs.hi, rs.lo, 0};
+
+    if (cache.count == 3)
+    {
+        if (out.stop != StopReason::Containment || !containsOriginCertified(in, cache))
+            return;
+        // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
+        out.path = CorrectPath::Double;
+        out.distance = 0;
+        return;
+    }
+
+    Context cx;
+    const int a1 = cache.indexA[0], b1 = cache.indexB[0];
+    const ApproxVec W1 = minkowskiPoint(in, a1, b1);
+    ApproxVec W2{}, n{};
+    Approx U, unum;
+    const bool isEdge = cache.count == 2;
+    if (!isEdge)
+    {
+        // Vertex feature: U = |W1|, n = W1.
+        n = W1;
+        U = squareRoot(cx, dot(cx, W1, W1));
+    }
+    else
+    {
+        // Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to
+        // the segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0.
+        const int a2 = cache.indexA[1], b2 = cache.indexB[1];
+        const ApproxVec e = minkowskiEdge(in, a1, b1, a2, b2);
+        W2 = minkowskiPoint(in, a2, b2);
+        const Approx u = dot(cx, W2, e), v = negate(dot(cx, W1, e));
+        if (!(u.hi - u.err * kSafe > std::abs(u.lo) && v.hi - v.err * kSafe > std::abs(v.lo)))
+            return;
+        unum = cross(cx, e, W1);
+        const Approx len = squareRoot(cx, dot(cx, e, e));
+        if (!cx.ok)
+            return;
+        U = div(cx, absolute(unum), len);
+        // n: the perpendicular of e towards Z (n.W1 > 0).
+        n = unum.hi > 0 ? ApproxVec{negate(e.y), e.x} : ApproxVec{e.y, negate(e.x)};
+    }
+    if (!cx.ok)
+        return;
+    const Approx xh = sub(U, r);
+    // Apart by less than the radii: 0 whatever the other bound.
+    if (xh.hi <= -certify::up(xh.lo + xh.err))
+    {
+        if (out.distance > 0)
+        {
+            const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
+            out.pointA = out.pointB = mid;
+            out.normal = {};
+        }
+        out.distance = 0;
+        out.path = CorrectPath::DoubleDouble;
+        return;
+    }
+    if (isEdge && !(std::abs(unum.hi) > unum.err * kSafe + std::abs(unum.lo)))
+        return; // the origin on (or too near) the edge's line: the side is not decided
+
+    // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
+    // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
+    const ApproxVec nv = {{n.x.hi, n.x.lo, 0}, {n.y.hi, n.y.lo, 0}};
+    int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
+    const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);
+    const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
+    if (ca > kMaxCandidates || cb > kMaxCandidates)
+        return;
+    Approx lowest;
+    bool first = true;
+    double lowestEnd = 0;
+    Approx values[kMaxCandidates * kMaxCandidates];
+    int count = 0;
+    for (int i = 0; i < ca; ++i)
+        for (int j = 0; j < cb; ++j)
+        {
+            const int ia = candA[i], jb = candB[j];
+            const ApproxVec W = (ia == a1 && jb == b1) ? W1
+                                : (isEdge && ia == cache.indexA[1] && jb == cache.indexB[1]) ? W2
+                                                                                              : minkowskiPoint(in, ia, jb);
+            const Approx value = dot(cx, nv, W);
+            values[count++] = value;
+            const double end = value.hi - (value.err - value.lo);
+            if (first || end < lowestEnd)
+            {
+                lowest = value;
+                lowestEnd = end;
+                first = false;
+            }
+        }
+    // The minimum lies within lowest's bound, widened to cover every other value's lower end.
+    for (int k = 0; k < count; ++k)
+    {
+        const Approx& v = values[k];
+        const double reach = ((lowest.hi - v.hi) + (lowest.lo - v.lo) + v.err) * kSafe + 0x1p-1000;
+        lowest.err = std::max(lowest.err, reach);
+    }
+    const Approx L = div(cx, lowest, squareRoot(cx, dot(cx, nv, nv)));
+    if (!cx.ok)
+        return;
+    const double answer = roundInterval(sub(L, r), xh);
+    if (!(answer >= 0))
+        return;
+    if (answer > 0 && !(out.distance > 0))
+        return; // a plain overlap answer: the exact completion gives the witness points
+    if (answer == 0 && out.distance > 0)
+    {
+        const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
+        out.pointA = out.pointB = mid;
+        out.normal = {};
+    }
+    out.distance = answer;
+    out.path = CorrectPath::DoubleDouble;
+}
+
+} // namespace gjk::correct
+
+namespace gjk
+{
+
+template <class T>
+void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
+                    DistanceOutput<T>& out)
+{
+    if constexpr (std::is_same_v<T, double>)
+        correct::refine(input, cache, options, out);
+    else
+        out.path = CorrectPath::NeedsExact;
+}
+
+} // namespace gjk
+
+#include "gjk/detail/fp_end.hpp"
