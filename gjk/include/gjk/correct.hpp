@@ -42,7 +42,9 @@
 #include "gjk/distance.hpp"
 #include "gjk/math.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <type_traits>
 
@@ -201,9 +203,11 @@ struct Terms
 // The exact sum of the terms as an Approx. Ogita, Rump and Oishi's VecSum (a cascade of TwoSum,
 // error-free: the sum of the returned vector is the exact sum, its last element the
 // floating-point sum) makes the others small; the rest is summed in double, its error bounded by
-// the running bound n u sum|rest| (with room to spare: n 2^-52). A second pass is made when the
-// first leaves the rest larger than 2^-50 of the result (heavy cancellation: near touching, a
-// small gap far from the origin): each pass shrinks the rest by about u.
+// the running bound n u sum|rest| (with room to spare: n 2^-52). One pass leaves a rest of about
+// u sum|terms|; another pass is made (up to three) while the rest is larger than 2^-40 of the
+// result (heavy cancellation: near touching, a small gap far from the origin), each shrinking it
+// by about u. A rest of 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp
+// (2^-53) the final rounding must resolve.
 inline Approx exactSum(Terms t)
 {
     if (t.n == 0)
@@ -220,7 +224,7 @@ inline Approx exactSum(Terms t)
         restAbs = 0;
         for (int i = 0; i + 1 < t.n; ++i)
             restAbs += std::abs(t.t[i]);
-        if (restAbs <= 0x1p-50 * std::abs(t.t[t.n - 1]))
+        if (restAbs <= 0x1p-40 * std::abs(t.t[t.n - 1]))
             break;
     }
     double rest = 0;
@@ -308,17 +312,24 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
 {
     const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
     const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
+    // The values are kept for the second loop when they fit in a small buffer.
+    constexpr int kBuffer = 64;
+    double values[kBuffer];
+    const bool buffered = p.count <= kBuffer;
     double best = std::numeric_limits<double>::infinity(), extent = 0;
     for (int i = 0; i < p.count; ++i)
     {
-        best = std::min(best, mx * p.points[i].x + my * p.points[i].y);
+        const double v = mx * p.points[i].x + my * p.points[i].y;
+        if (buffered)
+            values[i] = v;
+        best = std::min(best, v);
         extent = std::max(extent, std::abs(p.points[i].x) + std::abs(p.points[i].y));
     }
     const double eps = 8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent + 0x1p-1000;
     const double limit = best + 2 * eps * kSafe;
     int count = 0;
     for (int i = 0; i < p.count; ++i)
-        if (mx * p.points[i].x + my * p.points[i].y <= limit)
+        if ((buffered ? values[i] : mx * p.points[i].x + my * p.points[i].y) <= limit)
         {
             if (count == kMaxCandidates)
                 return kMaxCandidates + 1;
@@ -365,8 +376,10 @@ inline double roundInterval(const Approx& xl, const Approx& xh)
     const double m = xh.hi; // xh rounded to nearest (hi = fl(hi + lo))
     if (!(m >= 0x1p-900 && m <= 0x1p900))
         return -1;
-    const double gapAbove = std::nextafter(m, std::numeric_limits<double>::infinity()) - m;
-    const double gapBelow = m - std::nextafter(m, 0.0);
+    // The neighbours of m > 0 (normal, finite) by its bit pattern, without std::nextafter's call.
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
+    const double gapAbove = std::bit_cast<double>(bits + 1) - m;
+    const double gapBelow = m - std::bit_cast<double>(bits - 1);
     // The upper end below the midpoint above m: xh.lo + err < gapAbove / 2.
     if (!(up(xh.lo + xh.err) < 0.5 * gapAbove))
         return -1;
@@ -418,9 +431,13 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
     {
         // Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to
         // the segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0.
+        // e = W2 - W1; recomputed from the shapes' local differences (the translations cancel
+        // before any rounding) when that difference is not accurate to 2^-80 of e.
         const int a2 = cache.indexA[1], b2 = cache.indexB[1];
-        const ApproxVec e = minkowskiEdge(in, a1, b1, a2, b2);
         W2 = minkowskiPoint(in, a2, b2);
+        ApproxVec e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
+        if (!(std::max(e.x.err, e.y.err) <= 0x1p-80 * std::max(std::abs(e.x.hi), std::abs(e.y.hi))))
+            e = minkowskiEdge(in, a1, b1, a2, b2);
         const Approx u = dot(cx, W2, e), v = negate(dot(cx, W1, e));
         if (!(u.hi - u.err * kSafe > std::abs(u.lo) && v.hi - v.err * kSafe > std::abs(v.lo)))
             return;
