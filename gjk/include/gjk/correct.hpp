@@ -23,8 +23,8 @@
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
 //      answer; if all are <= 0, the answer is 0.
 //   4. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
-//      rounding midpoint to within 2^-100 relative, features that are not the closest, magnitudes
-//      outside [2^-300, 2^300], a culled triangle). The output then holds the plain answer, and
+//      rounding midpoint to within about 2^-90 relative, features that are not the closest, a
+//      product of the features' coordinates beyond [2^-960, 2^900], a culled triangle). The output then holds the plain answer, and
 //      the caller completes it with exact arithmetic: exact/include/exact/correct_fallback.hpp
 //      (GMP, outside gjk/) does it in one call.
 //
@@ -74,8 +74,7 @@ inline DD fastTwoSum(double a, double b)
     return {s, b - (s - a)};
 }
 // a * b = p + e exactly (Dekker, Veltkamp's split by 2^27 + 1), when |a|, |b| <= 2^996 and no
-// partial product underflows (guarded below: inputs within [2^-300, 2^300], an absolute term
-// covers the rest).
+// partial product underflows (guarded: Terms::addProduct).
 inline DD twoProduct(double a, double b)
 {
     constexpr double split = 134217729.0; // 2^27 + 1
@@ -100,9 +99,6 @@ inline DD twoProduct(double a, double b)
 inline constexpr double kRel = 0x1p-96;
 inline constexpr double kSafe = 1 + 0x1p-40;
 inline constexpr double kTiny = 0x1p-900;
-// The range where every operation's error-free pieces stay exact (no overflow of the split, no
-// underflow of a product's low part but for the kTiny term): inputs' magnitudes.
-inline constexpr double kMinInput = 0x1p-300, kMaxInput = 0x1p300;
 
 struct Approx
 {
@@ -180,14 +176,26 @@ inline Approx squareRoot(Context& cx, const Approx& a)
 // --- Exact sums --------------------------------------------------------------------------------
 
 // A short list of doubles whose exact sum is a wanted quantity (error-free pieces of products).
+// `ok`: every piece is exact and the sum cannot overflow (else the caller needs exact).
 struct Terms
 {
     double t[20];
     int n = 0;
-    void add(double x) { t[n++] = x; }
+    bool ok = true;
+    void add(double x)
+    {
+        ok = ok && std::abs(x) <= 0x1p900;
+        t[n++] = x;
+    }
+    // TwoProduct is exact when the factors cannot overflow the split and the exponents' sum is at
+    // least -961 (every partial product is then a multiple of 2^-1074, representable): a product
+    // of at least 2^-960 in magnitude, or a zero factor.
     void addProduct(double a, double b)
     {
         const DD p = twoProduct(a, b);
+        const double m = std::abs(p.hi);
+        ok = ok && ((a == 0) | (b == 0) |
+                    ((m >= 0x1p-960) & (m <= 0x1p900) & (std::abs(a) <= 0x1p900) & (std::abs(b) <= 0x1p900)));
         t[n++] = p.hi;
         t[n++] = p.lo;
     }
@@ -208,11 +216,12 @@ struct Terms
 // result (heavy cancellation: near touching, a small gap far from the origin), each shrinking it
 // by about u. A rest of 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp
 // (2^-53) the final rounding must resolve.
-inline Approx exactSum(Terms t)
+inline Approx exactSum(Context& cx, Terms t)
 {
+    cx.require(t.ok);
     if (t.n == 0)
         return {};
-    double restAbs = 0;
+    double rest = 0, restAbs = 0;
     for (int pass = 0; pass < 3; ++pass)
     {
         for (int i = 1; i < t.n; ++i)
@@ -221,15 +230,15 @@ inline Approx exactSum(Terms t)
             t.t[i] = s.hi;
             t.t[i - 1] = s.lo;
         }
-        restAbs = 0;
+        rest = restAbs = 0;
         for (int i = 0; i + 1 < t.n; ++i)
+        {
+            rest += t.t[i];
             restAbs += std::abs(t.t[i]);
+        }
         if (restAbs <= 0x1p-40 * std::abs(t.t[t.n - 1]))
             break;
     }
-    double rest = 0;
-    for (int i = 0; i + 1 < t.n; ++i)
-        rest += t.t[i];
     const DD s = twoSum(t.t[t.n - 1], rest);
     return {s.hi, s.lo, t.n * 0x1p-52 * restAbs * kSafe};
 }
@@ -260,16 +269,16 @@ inline void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec
 }
 
 // W = xfA * A[i] - xfB * B[j], a point of Z.
-inline ApproxVec minkowskiPoint(const DistanceInput<double>& in, int i, int j)
+inline ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i, int j)
 {
     Terms tx, ty;
     addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
     addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
-    return {exactSum(tx), exactSum(ty)};
+    return {exactSum(cx, tx), exactSum(cx, ty)};
 }
 
 // e = W(i2, j2) - W(i1, j1) from the local differences (the translations cancel exactly).
-inline ApproxVec minkowskiEdge(const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
+inline ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
 {
     Terms tx, ty;
     auto side = [&](const Transform<double>& xf, Vec2<double> p2, Vec2<double> p1, double sign)
@@ -283,21 +292,20 @@ inline ApproxVec minkowskiEdge(const DistanceInput<double>& in, int i1, int j1, 
         side(in.transformA, in.proxyA.points[i2], in.proxyA.points[i1], 1);
     if (j1 != j2)
         side(in.transformB, in.proxyB.points[j2], in.proxyB.points[j1], -1);
-    return {exactSum(tx), exactSum(ty)};
+    return {exactSum(cx, tx), exactSum(cx, ty)};
 }
 
-// Every input value is 0 or of magnitude within [kMinInput, kMaxInput].
-inline bool inRange(double v)
+// The sign of a.b, certified in double from the values' bounds (+1, -1, or 0: not decided).
+inline int signOfDot(const ApproxVec& a, const ApproxVec& b)
 {
-    const double a = std::abs(v);
-    return a == 0 || (a >= kMinInput && a <= kMaxInput);
-}
-inline bool inputInRange(const Polygon<double>& p, const Transform<double>& xf)
-{
-    bool ok = inRange(p.radius) && inRange(xf.p.x) && inRange(xf.p.y) && inRange(xf.q.c) && inRange(xf.q.s);
-    for (int i = 0; i < p.count; ++i)
-        ok = ok && inRange(p.points[i].x) && inRange(p.points[i].y);
-    return ok;
+    const double g = a.x.hi * b.x.hi + a.y.hi * b.y.hi;
+    auto term = [](const Approx& p, const Approx& q)
+    {
+        const double dp = std::abs(p.lo) + p.err, dq = std::abs(q.lo) + q.err;
+        return 3 * 0x1p-53 * std::abs(p.hi * q.hi) + dp * std::abs(q.hi) + dq * std::abs(p.hi) + dp * dq;
+    };
+    const double bound = (term(a.x, b.x) + term(a.y, b.y)) * kSafe + 0x1p-1000;
+    return g > bound ? 1 : (g < -bound ? -1 : 0);
 }
 
 // The vertices of a shape that can attain min (sign = +1) or max (sign = -1) of n.(Q x) over its
@@ -325,6 +333,8 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
         best = std::min(best, v);
         extent = std::max(extent, std::abs(p.points[i].x) + std::abs(p.points[i].y));
     }
+    if (!(std::abs(best) <= 0x1p900 && extent <= 0x1p900))
+        return kMaxCandidates + 1; // overflow: no certified candidates
     const double eps = 8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent + 0x1p-1000;
     const double limit = best + 2 * eps * kSafe;
     int count = 0;
@@ -398,10 +408,10 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
                    DistanceOutput<double>& out)
 {
     out.path = CorrectPath::NeedsExact;
-    if (out.outOfRange || !inputInRange(in.proxyA, in.transformA) || !inputInRange(in.proxyB, in.transformB))
-        return;
     const double rA = options.useRadii ? in.proxyA.radius : 0.0;
     const double rB = options.useRadii ? in.proxyB.radius : 0.0;
+    if (out.outOfRange || !(rA <= 0x1p900 && rB <= 0x1p900))
+        return;
     const DD rs = twoSum(rA, rB);
     const Approx r = {rs.hi, rs.lo, 0};
 
@@ -417,15 +427,20 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
 
     Context cx;
     const int a1 = cache.indexA[0], b1 = cache.indexB[0];
-    const ApproxVec W1 = minkowskiPoint(in, a1, b1);
+    const ApproxVec W1 = minkowskiPoint(cx, in, a1, b1);
     ApproxVec W2{}, n{};
-    Approx U, unum;
+    // |n_v| for the direction n_v = n's values (below), and U.
+    Approx normV, U, unum;
+    auto valuesOf = [](const ApproxVec& v) { return ApproxVec{{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; };
     const bool isEdge = cache.count == 2;
     if (!isEdge)
     {
-        // Vertex feature: U = |W1|, n = W1.
+        // Vertex feature: n = W1, U = |W1| = |n_v| within |W1 - n_v| <= W1.x.err + W1.y.err.
         n = W1;
-        U = squareRoot(cx, dot(cx, W1, W1));
+        if (!cx.ok)
+            return;
+        normV = squareRoot(cx, dot(cx, valuesOf(W1), valuesOf(W1)));
+        U = {normV.hi, normV.lo, (normV.err + W1.x.err + W1.y.err) * kSafe};
     }
     else
     {
@@ -434,18 +449,18 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
         // e = W2 - W1; recomputed from the shapes' local differences (the translations cancel
         // before any rounding) when that difference is not accurate to 2^-80 of e.
         const int a2 = cache.indexA[1], b2 = cache.indexB[1];
-        W2 = minkowskiPoint(in, a2, b2);
+        W2 = minkowskiPoint(cx, in, a2, b2);
         ApproxVec e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
         if (!(std::max(e.x.err, e.y.err) <= 0x1p-80 * std::max(std::abs(e.x.hi), std::abs(e.y.hi))))
-            e = minkowskiEdge(in, a1, b1, a2, b2);
-        const Approx u = dot(cx, W2, e), v = negate(dot(cx, W1, e));
-        if (!(u.hi - u.err * kSafe > std::abs(u.lo) && v.hi - v.err * kSafe > std::abs(v.lo)))
+            e = minkowskiEdge(cx, in, a1, b1, a2, b2);
+        if (!cx.ok || signOfDot(W2, e) != 1 || signOfDot(W1, e) != -1)
             return;
         unum = cross(cx, e, W1);
-        const Approx len = squareRoot(cx, dot(cx, e, e));
+        // |n_v| = |e_v| (a perpendicular), and |e| within e.x.err + e.y.err of it.
+        normV = squareRoot(cx, dot(cx, valuesOf(e), valuesOf(e)));
         if (!cx.ok)
             return;
-        U = div(cx, absolute(unum), len);
+        U = div(cx, absolute(unum), {normV.hi, normV.lo, (normV.err + e.x.err + e.y.err) * kSafe});
         // n: the perpendicular of e towards Z (n.W1 > 0).
         n = unum.hi > 0 ? ApproxVec{negate(e.y), e.x} : ApproxVec{e.y, negate(e.x)};
     }
@@ -470,7 +485,7 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
 
     // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
     // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
-    const ApproxVec nv = {{n.x.hi, n.x.lo, 0}, {n.y.hi, n.y.lo, 0}};
+    const ApproxVec nv = valuesOf(n);
     int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
     const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);
     const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
@@ -487,7 +502,7 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
             const int ia = candA[i], jb = candB[j];
             const ApproxVec W = (ia == a1 && jb == b1) ? W1
                                 : (isEdge && ia == cache.indexA[1] && jb == cache.indexB[1]) ? W2
-                                                                                              : minkowskiPoint(in, ia, jb);
+                                                                                              : minkowskiPoint(cx, in, ia, jb);
             const Approx value = dot(cx, nv, W);
             values[count++] = value;
             const double end = value.hi - (value.err - value.lo);
@@ -505,7 +520,7 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
         const double reach = ((lowest.hi - v.hi) + (lowest.lo - v.lo) + v.err) * kSafe + 0x1p-1000;
         lowest.err = std::max(lowest.err, reach);
     }
-    const Approx L = div(cx, lowest, squareRoot(cx, dot(cx, nv, nv)));
+    const Approx L = div(cx, lowest, normV);
     if (!cx.ok)
         return;
     const double answer = roundInterval(sub(L, r), xh);
