@@ -176,16 +176,18 @@ inline Approx squareRoot(Context& cx, const Approx& a)
 // --- Exact sums --------------------------------------------------------------------------------
 
 // A short list of doubles whose exact sum is a wanted quantity (error-free pieces of products).
-// `ok`: every piece is exact and the sum cannot overflow (else the caller needs exact).
+// The pieces are kept in two lists: `big` (products' leading parts, translations) and `small`
+// (products' trailing parts, each below u times its leading part). `ok`: every piece is exact and
+// the sum cannot overflow (else the caller needs exact).
 struct Terms
 {
-    double t[20];
-    int n = 0;
+    double big[10], small[10];
+    int nb = 0, ns = 0;
     bool ok = true;
     void add(double x)
     {
         ok = ok && std::abs(x) <= 0x1p900;
-        t[n++] = x;
+        big[nb++] = x;
     }
     // TwoProduct is exact when the factors cannot overflow the split and the exponents' sum is at
     // least -961 (every partial product is then a multiple of 2^-1074, representable): a product
@@ -196,8 +198,8 @@ struct Terms
         const double m = std::abs(p.hi);
         ok = ok && ((a == 0) | (b == 0) |
                     ((m >= 0x1p-960) & (m <= 0x1p900) & (std::abs(a) <= 0x1p900) & (std::abs(b) <= 0x1p900)));
-        t[n++] = p.hi;
-        t[n++] = p.lo;
+        big[nb++] = p.hi;
+        small[ns++] = p.lo;
     }
     // a * (x - y), the difference taken exactly first.
     void addProductOfDifference(double a, double x, double y)
@@ -210,37 +212,67 @@ struct Terms
 
 // The exact sum of the terms as an Approx. Ogita, Rump and Oishi's VecSum (a cascade of TwoSum,
 // error-free: the sum of the returned vector is the exact sum, its last element the
-// floating-point sum) makes the others small; the rest is summed in double, its error bounded by
-// the running bound n u sum|rest| (with room to spare: n 2^-52). One pass leaves a rest of about
-// u sum|terms|; another pass is made (up to three) while the rest is larger than 2^-40 of the
-// result (heavy cancellation: near touching, a small gap far from the origin), each shrinking it
-// by about u. A rest of 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp
-// (2^-53) the final rounding must resolve.
+// floating-point sum) runs over the big pieces; the rest (its errors and the small pieces) is
+// summed in double, its error bounded by the running bound n u sum|rest| (with room to spare:
+// n 2^-52, n the number of pieces). That leaves a rest of about u sum|terms|; while it is larger
+// than 2^-40 of the result (heavy cancellation: near touching, a small gap far from the origin),
+// VecSum passes over all the pieces follow (up to three), each shrinking it by about u. A rest of
+// 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp (2^-53) the final
+// rounding must resolve.
 inline Approx exactSum(Context& cx, Terms t)
 {
     cx.require(t.ok);
-    if (t.n == 0)
+    if (t.nb == 0)
         return {};
-    double rest = 0, restAbs = 0;
-    for (int pass = 0; pass < 3; ++pass)
+    for (int i = 1; i < t.nb; ++i)
     {
-        for (int i = 1; i < t.n; ++i)
-        {
-            const DD s = twoSum(t.t[i - 1], t.t[i]);
-            t.t[i] = s.hi;
-            t.t[i - 1] = s.lo;
-        }
-        rest = restAbs = 0;
-        for (int i = 0; i + 1 < t.n; ++i)
-        {
-            rest += t.t[i];
-            restAbs += std::abs(t.t[i]);
-        }
-        if (restAbs <= 0x1p-40 * std::abs(t.t[t.n - 1]))
-            break;
+        const DD s = twoSum(t.big[i - 1], t.big[i]);
+        t.big[i] = s.hi;
+        t.big[i - 1] = s.lo;
     }
-    const DD s = twoSum(t.t[t.n - 1], rest);
-    return {s.hi, s.lo, t.n * 0x1p-52 * restAbs * kSafe};
+    double sum = t.big[t.nb - 1];
+    double rest = 0, restAbs = 0;
+    for (int i = 0; i + 1 < t.nb; ++i)
+    {
+        rest += t.big[i];
+        restAbs += std::abs(t.big[i]);
+    }
+    for (int i = 0; i < t.ns; ++i)
+    {
+        rest += t.small[i];
+        restAbs += std::abs(t.small[i]);
+    }
+    const int n = t.nb + t.ns;
+    if (!(restAbs <= 0x1p-40 * std::abs(sum))) [[unlikely]]
+    {
+        // All pieces in one vector, the sum last.
+        double v[20];
+        int k = 0;
+        for (int i = 0; i < t.ns; ++i)
+            v[k++] = t.small[i];
+        for (int i = 0; i < t.nb; ++i)
+            v[k++] = t.big[i];
+        for (int pass = 0; pass < 3; ++pass)
+        {
+            for (int i = 1; i < n; ++i)
+            {
+                const DD s = twoSum(v[i - 1], v[i]);
+                v[i] = s.hi;
+                v[i - 1] = s.lo;
+            }
+            rest = restAbs = 0;
+            for (int i = 0; i + 1 < n; ++i)
+            {
+                rest += v[i];
+                restAbs += std::abs(v[i]);
+            }
+            if (restAbs <= 0x1p-40 * std::abs(v[n - 1]))
+                break;
+        }
+        sum = v[n - 1];
+    }
+    const DD s = twoSum(sum, rest);
+    return {s.hi, s.lo, n * 0x1p-52 * restAbs * kSafe};
 }
 
 struct ApproxVec
@@ -425,6 +457,22 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
         return;
     }
 
+    // The output of a decided answer (a negative one: not decided).
+    auto finish = [&out](double answer)
+    {
+        if (!(answer >= 0))
+            return;
+        if (answer > 0 && !(out.distance > 0))
+            return; // a plain overlap answer: the exact completion gives the witness points
+        if (answer == 0 && out.distance > 0)
+        {
+            const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
+            out.pointA = out.pointB = mid;
+            out.normal = {};
+        }
+        out.distance = answer;
+        out.path = CorrectPath::DoubleDouble;
+    };
     Context cx;
     const int a1 = cache.indexA[0], b1 = cache.indexB[0];
     const ApproxVec W1 = minkowskiPoint(cx, in, a1, b1);
@@ -491,10 +539,32 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
     const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
     if (ca > kMaxCandidates || cb > kMaxCandidates)
         return;
+    // The common case: the candidates are the features' own vertices, for the exact n too (the
+    // candidates' bound covers |n - n.hi| when n's own bound is below 2^-60 of it). Then the
+    // minimum of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1;
+    // for an edge of one shape against a vertex of the other, n is perpendicular to that edge, so
+    // both its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the
+    // origin lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed.
+    auto within = [](const int* c, int count, int i1, int i2)
+    {
+        for (int k = 0; k < count; ++k)
+            if (c[k] != i1 && c[k] != i2)
+                return false;
+        return true;
+    };
+    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
+    if (std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
+        within(candA, ca, a1, a2) && within(candB, cb, b1, b2) && (a1 == a2 || b1 == b2))
+    {
+        finish(roundInterval(xh, xh));
+        return;
+    }
     Approx lowest;
     bool first = true;
     double lowestEnd = 0;
-    Approx values[kMaxCandidates * kMaxCandidates];
+    // The values, as plain arrays (an array of Approx would be zeroed on every query).
+    double his[kMaxCandidates * kMaxCandidates], los[kMaxCandidates * kMaxCandidates],
+        errs[kMaxCandidates * kMaxCandidates];
     int count = 0;
     for (int i = 0; i < ca; ++i)
         for (int j = 0; j < cb; ++j)
@@ -504,7 +574,9 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
                                 : (isEdge && ia == cache.indexA[1] && jb == cache.indexB[1]) ? W2
                                                                                               : minkowskiPoint(cx, in, ia, jb);
             const Approx value = dot(cx, nv, W);
-            values[count++] = value;
+            his[count] = value.hi;
+            los[count] = value.lo;
+            errs[count++] = value.err;
             const double end = value.hi - (value.err - value.lo);
             if (first || end < lowestEnd)
             {
@@ -516,26 +588,13 @@ inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, c
     // The minimum lies within lowest's bound, widened to cover every other value's lower end.
     for (int k = 0; k < count; ++k)
     {
-        const Approx& v = values[k];
-        const double reach = ((lowest.hi - v.hi) + (lowest.lo - v.lo) + v.err) * kSafe + 0x1p-1000;
+        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + 0x1p-1000;
         lowest.err = std::max(lowest.err, reach);
     }
     const Approx L = div(cx, lowest, normV);
     if (!cx.ok)
         return;
-    const double answer = roundInterval(sub(L, r), xh);
-    if (!(answer >= 0))
-        return;
-    if (answer > 0 && !(out.distance > 0))
-        return; // a plain overlap answer: the exact completion gives the witness points
-    if (answer == 0 && out.distance > 0)
-    {
-        const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
-        out.pointA = out.pointB = mid;
-        out.normal = {};
-    }
-    out.distance = answer;
-    out.path = CorrectPath::DoubleDouble;
+    finish(roundInterval(sub(L, r), xh));
 }
 
 } // namespace gjk::correct
