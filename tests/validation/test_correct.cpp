@@ -7,6 +7,8 @@
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
 
+#include <exact/correct_fallback.hpp>
+
 #include <catch2/catch.hpp>
 
 #include <bit>

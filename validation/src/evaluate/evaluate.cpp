@@ -3,6 +3,8 @@
 #include "inputs/families.hpp"
 #include "inputs/geometry.hpp"
 
+#include <exact/correct_fallback.hpp>
+
 #include <fmt/format.h>
 
 #include <bit>
@@ -384,6 +386,12 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
 }
 } // namespace
 
+void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
+                     gjk::DistanceOutput<double>& out)
+{
+    exact::completeCorrectlyRounded(in, options, out);
+}
+
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
 {
     out.variants.assign(ctx.variants.size(), {});
@@ -524,6 +532,11 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     const char* mis = misclassName(v.mis);
     vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
     vj["out_of_range"] = v.outOfRange;
+    if (vi.options.correctlyRounded)
+    {
+        vj["path"] = gjk::correctPathName(v.path);
+        vj["bit_mismatch"] = v.bitMismatch;
+    }
     if (vi.options.certify)
     {
         vj["certified"] = v.certified;

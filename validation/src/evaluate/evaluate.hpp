@@ -8,7 +8,6 @@
 
 #include "gjk/distance.hpp"
 
-#include <exact/correct_fallback.hpp>
 #include <exact/exact.hpp>
 
 #include <array>
@@ -50,6 +49,11 @@ inline constexpr const char* kSkipNotRepresentable = "input not representable in
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
 
+// exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
+// every variant inlines query() below, and only correctly rounded variants ever call it.
+[[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
+                                       gjk::DistanceOutput<double>& out);
+
 // The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
 // cache), or for warm variants (Start::Warm) a cold query whose cache starts the one
 // returned (and traced).
@@ -64,8 +68,8 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
     gjk::DistanceOutput<T> out = gjk::distance(in, cache, v.options, trace);
     // A correctly rounded variant: its undecided queries completed exactly, as a user would.
     if constexpr (std::is_same_v<T, double>)
-        if (out.path == gjk::CorrectPath::NeedsExact)
-            exact::completeCorrectlyRounded(in, v.options, out);
+        if (out.path == gjk::CorrectPath::NeedsExact) [[unlikely]]
+            completeExactly(in, v.options, out);
     return out;
 }
 
