@@ -435,9 +435,8 @@ inline double roundInterval(const Approx& xl, const Approx& xh)
 }
 
 // The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
-// cache the plain query returned: its index pairs are the final features. Out of line: inlined
-// into gjk::distance, its stack frame slowed the default query (gjk-validate bench, random:20000,
-// `double`: 136 -> 164 ns per query).
+// cache the plain query returned: its index pairs are the final features. Out of line, so that
+// gjk::distance does not carry its code and stack frame into the default query.
 [[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
                    DistanceOutput<double>& out)
 {
