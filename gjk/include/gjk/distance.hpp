@@ -287,10 +287,11 @@ template <class T> struct DistanceOutput
     // Options::certify: the exact distance lies in [lower, upper] (double, rounded outwards).
     // certified is false when the bounds could not be computed (an overflow): [0, inf] then.
     bool certified = false;
+    // Options::correctlyRounded: how the distance was decided. Beside the flags, in their padding:
+    // the output keeps its size.
+    CorrectPath path = CorrectPath::Plain;
     double lower = 0;
     double upper = std::numeric_limits<double>::infinity();
-    // Options::correctlyRounded: how the distance was decided.
-    CorrectPath path = CorrectPath::Plain;
 };
 
 // One GJK iteration as the talk's demo draws it: the simplex after culling, its closest point to
@@ -1332,14 +1333,24 @@ template <class T>
 void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
                     DistanceOutput<T>& out); // gjk/correct.hpp
 
+// Options::correctlyRounded: the plain query, then its refinement. Out of line, so that the
+// default query stays as it was but for the one test of the option.
+template <class T>
+[[gnu::noinline]] DistanceOutput<T> distanceCorrectlyRounded(const DistanceInput<T>& input, SimplexCache& cache,
+                                                             const Options& options, Trace<T>* trace)
+{
+    DistanceOutput<T> out = distanceImpl<T, false>(input, cache, options, trace, 0);
+    correctlyRound(input, cache, options, out);
+    return out;
+}
+
 template <class T>
 DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
                            const Options& options = referenceOptions, Trace<T>* trace = nullptr)
 {
-    DistanceOutput<T> out = distanceImpl<T, false>(input, cache, options, trace, 0);
     if (options.correctlyRounded) [[unlikely]]
-        correctlyRound(input, cache, options, out);
-    return out;
+        return distanceCorrectlyRounded(input, cache, options, trace);
+    return distanceImpl<T, false>(input, cache, options, trace, 0);
 }
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
