@@ -50,7 +50,8 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "double-warm",
                                           "float-warm",
                                           "double-every-start",
-                                          "float-every-start"};
+                                          "float-every-start",
+                                          "double-correct"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};
