@@ -970,6 +970,10 @@ template <class T>
 void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
+template <class T>
+void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
+                    DistanceOutput<T>& out); // gjk/correct.hpp
+
 // The query. `Scaled`: the rescaled retry (rescaling, above), a second instantiation kept out of
 // line (distanceRescaled), so that the common query carries no test for it.
 template <class T, bool Scaled>
@@ -1305,8 +1309,13 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     // underflow (float inputs near 1e-45: exact distance 1.4e-45, answered 0; found by
     // `gjk-validate search`). distanceRescaled tells the two apart from the shapes' extent.
     if constexpr (!Scaled)
+    {
         if (rangeExceeded | (maxAbs == T(0))) [[unlikely]]
             distanceRescaled(input, cache, options, trace, out, !rangeExceeded);
+        // Options::correctlyRounded (gjk/correct.hpp): the refinement of the answer, out of line.
+        if (options.correctlyRounded) [[unlikely]]
+            correctlyRound(input, cache, options, out);
+    }
     return out;
 }
 
@@ -1330,26 +1339,9 @@ template <class T>
 }
 
 template <class T>
-void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
-                    DistanceOutput<T>& out); // gjk/correct.hpp
-
-// Options::correctlyRounded: the plain query, then its refinement. Out of line, so that the
-// default query stays as it was but for the one test of the option.
-template <class T>
-[[gnu::noinline]] DistanceOutput<T> distanceCorrectlyRounded(const DistanceInput<T>& input, SimplexCache& cache,
-                                                             const Options& options, Trace<T>* trace)
-{
-    DistanceOutput<T> out = distanceImpl<T, false>(input, cache, options, trace, 0);
-    correctlyRound(input, cache, options, out);
-    return out;
-}
-
-template <class T>
 DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
                            const Options& options = referenceOptions, Trace<T>* trace = nullptr)
 {
-    if (options.correctlyRounded) [[unlikely]]
-        return distanceCorrectlyRounded(input, cache, options, trace);
     return distanceImpl<T, false>(input, cache, options, trace, 0);
 }
 
