@@ -163,7 +163,7 @@ template <class T, int W, class State> class LaneBatch
         s_->by = s_->bx + cap * W;
         for (int l = 0; l < W; ++l)
             paddedA_[l] = paddedB_[l] = cap; // zeros
-        s_->laneEnd = !options_.certify;
+        s_->laneEnd = !options_.certify && !options_.correctlyRounded; // both end in finishQuery
         s_->minStopped = std::max(1, W * kStoppedPercent / 100);
         s_->useRadii = options_.useRadii;
         for (int l = 0; l < W; ++l)

@@ -52,7 +52,8 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "double-every-start",
                                           "float-every-start",
                                           "double-batch",
-                                          "float-batch"};
+                                          "float-batch",
+                                          "double-correct"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};

@@ -154,6 +154,11 @@ struct Options
     // Also return a certified interval [lower, upper] that provably contains the exact distance
     // (gjk/certify.hpp). Costs one more scan of each shape.
     bool certify = false;
+    // Return the correctly rounded distance of the exact problem (gjk/correct.hpp): the double
+    // nearest to it, 0 exactly when it is 0. DistanceOutput::path says how it was decided;
+    // CorrectPath::NeedsExact asks the caller for the exact completion
+    // (exact/include/exact/correct_fallback.hpp). double queries only.
+    bool correctlyRounded = false;
 };
 
 // The reference variant, with a stable name. The default Options{} is this variant.
@@ -178,6 +183,29 @@ constexpr const char* stopReasonName(StopReason r)
     case StopReason::ZeroDirection: return "zero-direction";
     case StopReason::DualityGap: return "duality-gap";
     case StopReason::IterationLimit: return "iteration-limit";
+    }
+    return "?";
+}
+
+// How Options::correctlyRounded decided the distance (gjk/correct.hpp).
+enum class CorrectPath : std::uint8_t
+{
+    Plain,        // the option is off: the plain answer
+    Double,       // containment certified in double with a running error bound
+    DoubleDouble, // the features' distance and its support bound in double-double
+    NeedsExact,   // not decided: the output holds the plain answer, the caller completes it
+    Exact,        // completed with exact arithmetic (set by the completion, outside gjk/)
+};
+
+constexpr const char* correctPathName(CorrectPath p)
+{
+    switch (p)
+    {
+    case CorrectPath::Plain: return "plain";
+    case CorrectPath::Double: return "double";
+    case CorrectPath::DoubleDouble: return "double-double";
+    case CorrectPath::NeedsExact: return "needs-exact";
+    case CorrectPath::Exact: return "exact";
     }
     return "?";
 }
@@ -260,6 +288,9 @@ template <class T> struct DistanceOutput
     // Options::certify: the exact distance lies in [lower, upper] (double, rounded outwards).
     // certified is false when the bounds could not be computed (an overflow): [0, inf] then.
     bool certified = false;
+    // Options::correctlyRounded: how the distance was decided. Beside the flags, in their padding:
+    // the output keeps its size.
+    CorrectPath path = CorrectPath::Plain;
     double lower = 0;
     double upper = std::numeric_limits<double>::infinity();
 };
@@ -940,6 +971,10 @@ template <class T>
 void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
+template <class T>
+void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
+                    DistanceOutput<T>& out); // gjk/correct.hpp
+
 // Whether a cache's indices fit shapes of these sizes (a warm start), else a cold start.
 GJK_INLINE bool cacheFits(const SimplexCache& cache, int countA, int countB)
 {
@@ -1180,8 +1215,13 @@ GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexC
     // underflow (float inputs near 1e-45: exact distance 1.4e-45, answered 0; found by
     // `gjk-validate search`). distanceRescaled tells the two apart from the shapes' extent.
     if constexpr (!Scaled)
+    {
         if (rangeExceeded | (maxAbs == T(0))) [[unlikely]]
             distanceRescaled(input, cache, options, trace, out, !rangeExceeded);
+        // Options::correctlyRounded (gjk/correct.hpp): the refinement of the answer, out of line.
+        if (options.correctlyRounded) [[unlikely]]
+            correctlyRound(input, cache, options, out);
+    }
     return out;
 }
 
@@ -1386,3 +1426,5 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, const Options& options
 } // namespace gjk
 
 #include "gjk/detail/fp_end.hpp"
+
+#include "gjk/correct.hpp" // Options::correctlyRounded

@@ -144,7 +144,8 @@
     'double-binary-support': '#00838f', 'float-binary-support': '#5fd0dc',
     'double-warm': '#ad1457', 'float-warm': '#f48fb1',
     'double-every-start': '#7a7a12', 'float-every-start': '#cfd250',
-    'double-batch': '#00695c', 'float-batch': '#80cbc4'
+    'double-batch': '#00695c', 'float-batch': '#80cbc4',
+    'double-correct': '#c62828'
   };
   // Any other variant (an external implementation, a future one): a colour none of the built-ins
   // uses, picked by a hash of its name (FNV-1a), so it too is the same on every page.

@@ -321,6 +321,14 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
             s.iterations.add(v.iterations);
         return; // no stop reason
     }
+    if (vi.options.correctlyRounded)
+    {
+        s.hasPaths = true;
+        s.pathDouble += v.path == gjk::CorrectPath::Double ? 1 : 0;
+        s.pathDoubleDouble += v.path == gjk::CorrectPath::DoubleDouble ? 1 : 0;
+        s.pathExact += v.path == gjk::CorrectPath::Exact ? 1 : 0;
+        s.bitMismatch += v.bitMismatch ? 1 : 0;
+    }
     s.iterations.add(v.iterations);
     ++s.stops[std::size_t(v.stop)];
 }

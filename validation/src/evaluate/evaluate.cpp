@@ -3,10 +3,14 @@
 #include "inputs/families.hpp"
 #include "inputs/geometry.hpp"
 
+#include <exact/correct_fallback.hpp>
+
 #include <fmt/format.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -34,6 +38,7 @@ template <class T> void fillOutput(const gjk::DistanceOutput<T>& o, VariantOutco
     v.certified = o.certified;
     v.lower = o.lower;
     v.upper = o.upper;
+    v.path = o.path;
 }
 
 Json exactJson(const exact::Result& r)
@@ -334,7 +339,7 @@ double boundOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, doub
 // The judgement of one variant's answer v (v.R and v.bound set) against the exact `truth`: its
 // errors, its misclassification, whether its certified interval holds the truth, and whether it
 // failed (docs/validation.md, "Failures").
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
 {
     const double u = unitRoundoff(scalar);
     const bool truthZero = exactIsZero(truth);
@@ -382,6 +387,13 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar)
     // certified interval that misses the truth always fails.
     v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
                (v.certified && !v.intervalContains);
+    // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
+    // case (out of range ones too: the exact completion answers them).
+    if (zeroTolerance)
+    {
+        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) != std::bit_cast<std::uint64_t>(truth.distance);
+        v.failed = v.failed || v.bitMismatch;
+    }
 }
 
 template <class T> bool sameBits(T a, T b)
@@ -424,6 +436,12 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
     return out;
 }
 } // namespace
+
+void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
+                     gjk::DistanceOutput<double>& out)
+{
+    exact::completeCorrectlyRounded(in, options, out);
+}
 
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
 {
@@ -486,7 +504,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         v.bound = boundOf(vi, c, scales.get(false, isFloat), truth.distance);
-        judge(v, truth, vi.scalar);
+        judge(v, truth, vi.scalar, vi.options.correctlyRounded);
     }
 }
 
@@ -631,6 +649,11 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     const char* mis = misclassName(v.mis);
     vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
     vj["out_of_range"] = v.outOfRange;
+    if (vi.options.correctlyRounded)
+    {
+        vj["path"] = gjk::correctPathName(v.path);
+        vj["bit_mismatch"] = v.bitMismatch;
+    }
     if (vi.options.certify)
     {
         vj["certified"] = v.certified;

@@ -51,6 +51,11 @@ inline constexpr const char* kSkipRefused = "refused by the implementation (plug
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
 
+// exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
+// every variant inlines query() below, and only correctly rounded variants ever call it.
+[[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
+                                       gjk::DistanceOutput<double>& out);
+
 // The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
 // cache), or for warm variants (Start::Warm) a cold query whose cache starts the one
 // returned (and traced).
@@ -62,14 +67,17 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
     const gjk::DistanceInput<T> in = p.input<T>();
     if (v.start == Start::Warm)
         gjk::distance(in, cache, v.options);
+    gjk::DistanceOutput<T> out;
     if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
-    {
-        gjk::DistanceOutput<T> out;
         gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1), std::span<gjk::SimplexCache>(&cache, 1),
                            std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
-        return out;
-    }
-    return gjk::distance(in, cache, v.options, trace);
+    else
+        out = gjk::distance(in, cache, v.options, trace);
+    // A correctly rounded variant: its undecided queries completed exactly, as a user would.
+    if constexpr (std::is_same_v<T, double>)
+        if (out.path == gjk::CorrectPath::NeedsExact) [[unlikely]]
+            completeExactly(in, v.options, out);
+    return out;
 }
 
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
@@ -136,6 +144,10 @@ struct VariantOutcome
     // Certified variants (Options::certify): the interval and whether it holds the exact distance.
     bool certified = false, intervalContains = false;
     double lower = 0, upper = 0;
+    // Correctly rounded variants: how the distance was decided, and whether it differs from the
+    // exact side's in any bit (a failure: zero tolerance).
+    gjk::CorrectPath path = gjk::CorrectPath::Plain;
+    bool bitMismatch = false;
     bool failed = false;
     // Plugin variants: how the implementation answered (Ok, or Refused with skipped set, or
     // Error / Crashed / Hung: failed, no errors measured) and how it died.

@@ -44,6 +44,9 @@ const std::vector<VariantInfo>& variantTable()
         {.name = "float-certified", .scalar = Scalar::Float, .options = Options{.certify = true},
          .description = "certified interval in single precision",
          .judged = true, .start = Start::Cold},
+        {.name = "double-correct", .scalar = Scalar::Double, .options = Options{.correctlyRounded = true},
+         .description = "correctly rounded distance (gjk/correct.hpp; undecided queries completed exactly): judged with zero tolerance",
+         .judged = true, .start = Start::Cold},
         {.name = "double-binary-support", .scalar = Scalar::Double, .options = Options{.support = P::BinarySearch},
          .description = "reference options with the O(log n) binary-search support (shapes in convex order only)",
          .judged = true, .start = Start::Cold},
@@ -160,6 +163,7 @@ Json optionsJson(const gjk::Options& o)
     j["certified"] = o.certify;
     j["max_iterations"] = o.maxIterations;
     j["use_radii"] = o.useRadii;
+    j["correctly_rounded"] = o.correctlyRounded;
     return j;
 }
 

@@ -189,6 +189,19 @@ std::string renderMarkdown(const Json& r)
                 st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
                 g(st["ratio_to_baseline"], "{:.2f}"));
         }
+        // Correctly rounded variants: the share of the queries each path decided.
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            if (!st.contains("correct"))
+                continue;
+            const Json& p = st["correct"]["paths"];
+            const double n = std::max(1.0, double(st["cases"].get<std::uint64_t>()));
+            auto share = [&](const char* k)
+            { return fmt::format("{} {} ({:.4g} %)", k, u(p[k]), 100.0 * double(p[k].get<std::uint64_t>()) / n); };
+            s += fmt::format("\n{}: paths {}, {}, {}; {} bit mismatches with the exact side.\n", name,
+                             share("double"), share("double-double"), share("exact"),
+                             u(st["correct"]["bit_mismatches"]));
+        }
     }
     if (!r["rejected"].empty())
     {

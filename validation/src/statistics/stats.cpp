@@ -205,6 +205,11 @@ void Stats::merge(const Stats& o)
     certified += o.certified;
     contains += o.contains;
     uncertified += o.uncertified;
+    hasPaths = hasPaths || o.hasPaths;
+    pathDouble += o.pathDouble;
+    pathDoubleDouble += o.pathDoubleDouble;
+    pathExact += o.pathExact;
+    bitMismatch += o.bitMismatch;
     widthUlps.merge(o.widthUlps);
     abs.merge(o.abs);
     rel.merge(o.rel);
@@ -267,6 +272,8 @@ Json Stats::state() const
         [&](const char* k, const Hist& h) { j[k] = h.state(); });
     j["iterations"] = iterations.state();
     j["stops"] = stops;
+    if (hasPaths) // written only by correctly rounded variants (older states have none)
+        j["correct_paths"] = {pathDouble, pathDoubleDouble, pathExact, bitMismatch};
     return j;
 }
 
@@ -282,6 +289,17 @@ Stats Stats::fromState(const Json& j)
     if (stops.size() != s.stops.size())
         throw std::runtime_error("stats state: the number of stop reasons differs");
     std::copy(stops.begin(), stops.end(), s.stops.begin());
+    if (j.contains("correct_paths"))
+    {
+        const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
+        if (p.size() != 4)
+            throw std::runtime_error("stats state: correct_paths needs 4 counts");
+        s.hasPaths = true;
+        s.pathDouble = p[0];
+        s.pathDoubleDouble = p[1];
+        s.pathExact = p[2];
+        s.bitMismatch = p[3];
+    }
     return s;
 }
 
@@ -324,6 +342,9 @@ Json Stats::toJson() const
                          {"misses", certified - contains},
                          {"uncertified", uncertified},
                          {"width_ulps", widthUlps.toJson()}};
+    if (hasPaths)
+        j["correct"] = {{"paths", {{"double", pathDouble}, {"double-double", pathDoubleDouble}, {"exact", pathExact}}},
+                        {"bit_mismatches", bitMismatch}};
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)
         st[gjk::stopReasonName(gjk::StopReason(i))] = stops[std::size_t(i)];

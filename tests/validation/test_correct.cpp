@@ -1,0 +1,154 @@
+// Options::correctlyRounded (gjk/include/gjk/correct.hpp) with its exact completion
+// (exact/include/exact/correct_fallback.hpp): the distance is the exact side's, bit for bit, on the
+// cases where plain double is furthest off (near touching, mixed and extreme scales, a vertex at
+// 3.6e18), and the header-only stages decide most of them without the exact fallback.
+#include "evaluate/evaluate.hpp"
+#include "evaluate/variants.hpp"
+#include "inputs/cases.hpp"
+#include "inputs/families.hpp"
+
+#include <exact/correct_fallback.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <bit>
+#include <cstdint>
+#include <map>
+
+using namespace gjkval;
+
+namespace
+{
+bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+gjk::DistanceInput<double> inputOf(const std::vector<gjk::Vec2<double>>& a, const std::vector<gjk::Vec2<double>>& b,
+                                   double ra = 0, double rb = 0)
+{
+    return {{a.data(), int(a.size()), ra}, {b.data(), int(b.size()), rb}, {}, {}};
+}
+
+constexpr gjk::Options kCorrect{.correctlyRounded = true};
+} // namespace
+
+TEST_CASE("correctly rounded: hand-derived distances", "[correct]")
+{
+    // Points (0, 0) and (3, 4): distance 5 exactly, decided in double-double.
+    std::vector<gjk::Vec2<double>> a = {{0, 0}}, b = {{3, 4}};
+    auto out = gjk::distance(inputOf(a, b), kCorrect);
+    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.distance == 5.0);
+    // (0, 0) and (1, 1): sqrt(2), whose correct rounding is IEEE sqrt's.
+    b = {{1, 1}};
+    out = gjk::distance(inputOf(a, b), kCorrect);
+    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.distance == std::sqrt(2.0));
+    // The origin to the segment (-1, 1) (1, 1): 1, through the edge feature.
+    b = {{-1, 1}, {1, 1}};
+    out = gjk::distance(inputOf(a, b), kCorrect);
+    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.distance == 1.0);
+    // Radii summing to more than the gap: 0 exactly, the witness points merged, the normal zero.
+    out = gjk::distance(inputOf(a, b, 0.75, 0.5), kCorrect);
+    CHECK(out.distance == 0.0);
+    CHECK(out.pointA == out.pointB);
+    CHECK(out.normal == gjk::Vec2<double>{});
+    // Exact touching (a shared point, no radii): the bounds cannot prove 0, the exact side must.
+    b = {{0, 0}, {1, 1}};
+    gjk::DistanceInput<double> touching = inputOf(a, b);
+    out = gjk::distance(touching, kCorrect);
+    CHECK(out.path == gjk::CorrectPath::NeedsExact);
+    exact::completeCorrectlyRounded(touching, kCorrect, out);
+    CHECK(out.path == gjk::CorrectPath::Exact);
+    CHECK(out.distance == 0.0);
+    // A triangle that strictly contains the origin: containment certified in double.
+    a = {{-1, -1}, {2, -1}, {-1, 2}};
+    b = {{0, 0}};
+    out = gjk::distance(inputOf(a, b), kCorrect);
+    CHECK(out.path == gjk::CorrectPath::Double);
+    CHECK(out.distance == 0.0);
+    // The option off: the plain path, untouched.
+    CHECK(gjk::distance(inputOf(a, b)).path == gjk::CorrectPath::Plain);
+}
+
+TEMPLATE_TEST_CASE("correctly rounded: a float query asks for the exact completion", "[correct]", float)
+{
+    using T = TestType;
+    const std::vector<gjk::Vec2<T>> a = {{0, 0}}, b = {{3, 4}};
+    const gjk::DistanceInput<T> in = {{a.data(), 1, T(0)}, {b.data(), 1, T(0)}, {}, {}};
+    const auto out = gjk::distance(in, kCorrect);
+    CHECK(out.path == gjk::CorrectPath::NeedsExact);
+    CHECK(out.distance == T(5)); // the plain answer stays in the output
+}
+
+TEST_CASE("correctly rounded: a vertex at 3.6e18, plain double answers 0 for 0.6013", "[correct]")
+{
+    // The fuzzer's case of tests/gjk/test_distance.cpp ("a repeat after a culled support point"):
+    // the plain query stops on a culled triangle and answers 0; the exact distance is 0.6013.
+    const std::vector<gjk::Vec2<double>> a = {{0.0099668502807617188, -0.7109375}};
+    const std::vector<gjk::Vec2<double>> b = {{-0.7109375, 6.7949295043945312e-06},
+                                              {-5.5511151231257827e-15, -3.5809246537129656e+18},
+                                              {0, -1.0103029524088925e-14},
+                                              {1.6200374375330284e-12, 1.4551471139157002e-11},
+                                              {1.9775847626135601e-16, -8.6736173798840355e-19}};
+    gjk::DistanceInput<double> in = inputOf(a, b);
+    in.transformA = {{-4.7393143177032471e-05, -1.862645149230957e-07}, {0.54540534970280896, 0.83817241932406528}};
+    REQUIRE(gjk::distance(in).distance == 0.0);
+    auto out = gjk::distance(in, kCorrect);
+    CHECK(out.path == gjk::CorrectPath::NeedsExact); // a plain 0 for shapes apart: never trusted
+    exact::completeCorrectlyRounded(in, kCorrect, out);
+    const exact::Result truth = exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
+                                                exact::shapeOf(in.proxyB, in.transformB, true));
+    CHECK(truth.distance > 0.6);
+    CHECK(sameBits(out.distance, truth.distance));
+}
+
+TEST_CASE("correctly rounded: bit for bit on the hard families where plain double is furthest off",
+          "[correct]")
+{
+    // Near touching (plain double off by up to 1e8-1e9 ulps of the distance), mixed and extreme
+    // scales, plus the other hard families that end at touching or at a tie of features.
+    const VariantInfo& correct = *findVariant("double-correct");
+    const VariantInfo& plain = *findVariant("double");
+    // target: plain double gets some of its cases wrong, and double-double decides some (on
+    // hard/touching-edge every case touches: only the exact completion can answer 0).
+    struct Family
+    {
+        const char* spec;
+        bool target;
+    };
+    for (const Family fam :
+         {Family{"hard/near-zero-separation", true}, {"hard/mixed-scale", true}, {"hard/extreme-scale", true},
+          {"hard/ulp-gap", false}, {"hard/touching-edge", false}, {"hard/near-tied-support", true},
+          {"hard/offset-sweep", true}, {"hard/range", false}, {"engine/pyramid-toi:300", false},
+          {"random:2000", true}})
+    {
+        const char* family = fam.spec;
+        int cases = 0, plainOff = 0, mismatches = 0;
+        std::map<gjk::CorrectPath, int> paths;
+        for (const auto& f : generateFamilies(family, 17))
+            for (const Case& c : f.cases)
+            {
+                const exact::Result truth = exact::distance(toExact(c.a), toExact(c.b));
+                const PreparedCase p = prepare(c);
+                const auto headerOnly = gjk::distance(p.input<double>(), kCorrect);
+                const auto out = query<double>(p, correct); // completed exactly when needed
+                ++cases;
+                ++paths[headerOnly.path];
+                plainOff += !sameBits(query<double>(p, plain).distance, truth.distance);
+                mismatches += !sameBits(out.distance, truth.distance);
+                // A decided answer is never completed again.
+                if (headerOnly.path != gjk::CorrectPath::NeedsExact)
+                    CHECK(sameBits(headerOnly.distance, out.distance));
+            }
+        INFO(family << ": " << cases << " cases, plain double off on " << plainOff << ", double-double decided "
+                    << paths[gjk::CorrectPath::DoubleDouble] << ", exact needed on "
+                    << paths[gjk::CorrectPath::NeedsExact]);
+        CHECK(cases > 0);
+        CHECK(mismatches == 0);
+        if (fam.target)
+        {
+            CHECK(plainOff > 0); // the family tests something plain double gets wrong
+            CHECK(paths[gjk::CorrectPath::DoubleDouble] > 0);
+        }
+    }
+}
