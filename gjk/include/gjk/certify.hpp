@@ -86,6 +86,22 @@ struct BoundedVec
     Bounded x, y;
 };
 
+// The origin strictly inside triangle W1 W2 W3: the three orientations cross(Wi, Wj) (i j cyclic)
+// nonzero and of one sign; certified when each bound excludes zero. Shared by the certified
+// interval (distance.hpp) and the correctly rounded query's containment (correct.hpp).
+inline bool originCertainlyInside(const BoundedVec (&W)[3])
+{
+    int positive = 0, negative = 0;
+    for (int i = 0; i < 3; ++i)
+    {
+        const BoundedVec &p = W[i], &q = W[(i + 1) % 3];
+        const Bounded c = p.x * q.y - p.y * q.x;
+        positive += lo(c) > 0;
+        negative += hi(c) < 0;
+    }
+    return positive == 3 || negative == 3;
+}
+
 // World coordinates of a local point under (c, s, p), as the exact side defines them.
 template <class T> BoundedVec toWorld(const Transform<T>& xf, Vec2<T> v)
 {

@@ -392,15 +392,7 @@ inline bool containsOriginCertified(const DistanceInput<double>& in, const Simpl
         const BoundedVec b = toWorld(in.transformB, in.proxyB.points[cache.indexB[i]]);
         W[i] = {a.x - b.x, a.y - b.y};
     }
-    int positive = 0, negative = 0;
-    for (int i = 0; i < 3; ++i)
-    {
-        const BoundedVec &p = W[i], &q = W[(i + 1) % 3];
-        const Bounded c = p.x * q.y - p.y * q.x;
-        positive += lo(c) > 0;
-        negative += hi(c) < 0;
-    }
-    return positive == 3 || negative == 3;
+    return originCertainlyInside(W);
 }
 
 // The decision: the exact x lies in [xl, xh] (each an Approx, with its bound). Returns the

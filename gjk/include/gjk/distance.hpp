@@ -851,22 +851,7 @@ void certifyDistance(const DistanceInput<T>& in, const Simplex<T>& s, bool useRa
         W[i] = {a.x - b.x, a.y - b.y};
     }
     double upperHull = std::numeric_limits<double>::infinity();
-    bool inside = false;
-    if (s.count == 3)
-    {
-        // The origin is strictly inside triangle W1 W2 W3 iff the three orientations
-        // cross(Wi, Wj) (i j cyclic) are nonzero and of one sign; certified when each bound
-        // excludes zero.
-        int positive = 0, negative = 0;
-        for (int i = 0; i < 3; ++i)
-        {
-            const BoundedVec &p = W[i], &q = W[(i + 1) % 3];
-            const Bounded c = p.x * q.y - p.y * q.x;
-            positive += lo(c) > 0;
-            negative += hi(c) < 0;
-        }
-        inside = positive == 3 || negative == 3;
-    }
+    const bool inside = s.count == 3 && originCertainlyInside(W);
     if (inside)
         upperHull = 0;
     else

@@ -284,6 +284,23 @@ struct AnswerRecord
     double pointA[2], pointB[2];
 };
 
+// One call in the implementation's scalar type T (its shape and result structs, its function).
+template <class T, class Shape, class Result, class Fn>
+AnswerRecord callIn(Fn fn, const Shape& a, const Shape& b, void* cache)
+{
+    Result o{};
+    o.iterations = -1;
+    AnswerRecord r{};
+    r.status = fn(&a, &b, cache, &o);
+    r.distance = o.distance;
+    r.pointA[0] = o.point_a[0];
+    r.pointA[1] = o.point_a[1];
+    r.pointB[0] = o.point_b[0];
+    r.pointB[1] = o.point_b[1];
+    r.iterations = o.iterations;
+    return r;
+}
+
 // The call itself, as the child makes it. `cache`: cache_bytes zeroed bytes (a cold start).
 AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
                         std::vector<unsigned char>& cache)
@@ -291,36 +308,13 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
     const gjk2d_implementation& im = v.plugin->impl;
     std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
     void* c = im.cache_bytes > 0 ? cache.data() : nullptr;
-    AnswerRecord r{};
     if (im.scalar == GJK2D_SCALAR_FLOAT)
-    {
-        const auto a = shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf);
-        const auto b = shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf);
-        gjk2d_result_f o{};
-        o.iterations = -1;
-        r.status = im.distance_f(&a, &b, c, &o);
-        r.distance = o.distance;
-        r.pointA[0] = o.point_a[0];
-        r.pointA[1] = o.point_a[1];
-        r.pointB[0] = o.point_b[0];
-        r.pointB[1] = o.point_b[1];
-        r.iterations = o.iterations;
-    }
-    else
-    {
-        const auto a = shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad);
-        const auto b = shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd);
-        gjk2d_result_d o{};
-        o.iterations = -1;
-        r.status = im.distance_d(&a, &b, c, &o);
-        r.distance = o.distance;
-        r.pointA[0] = o.point_a[0];
-        r.pointA[1] = o.point_a[1];
-        r.pointB[0] = o.point_b[0];
-        r.pointB[1] = o.point_b[1];
-        r.iterations = o.iterations;
-    }
-    return r;
+        return callIn<float, gjk2d_shape_f, gjk2d_result_f>(im.distance_f,
+                                                            shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf),
+                                                            shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf), c);
+    return callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d,
+                                                         shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
+                                                         shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
 }
 
 bool writeAll(int fd, const void* data, std::size_t n)
