@@ -152,3 +152,56 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
         }
     }
 }
+
+TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "[correct]")
+{
+    // minkowskiPointLanes (both coordinates of W at once) against the scalar Terms/exactSum: the
+    // two values lie within their bounds of each other. containsOriginFiltered (the semi-static
+    // containment filter) never claims what the running bound (containsOriginCertified) or the
+    // exact side denies.
+    int points = 0, lanesTaken = 0, filtered = 0, triangles = 0;
+    for (const char* family : {"random:500", "hard/mixed-scale", "hard/extreme-scale", "hard/near-zero-separation"})
+        for (const auto& f : generateFamilies(family, 5))
+            for (const Case& c : f.cases)
+            {
+                const PreparedCase p = prepare(c);
+                const gjk::DistanceInput<double> in = p.input<double>();
+                for (int i = 0; i < in.proxyA.count; ++i)
+                    for (int j = 0; j < in.proxyB.count; ++j)
+                    {
+                        gjk::correct::ApproxVec lanes;
+                        ++points;
+                        if (!gjk::correct::minkowskiPointLanes(in, i, j, lanes))
+                            continue;
+                        ++lanesTaken;
+                        gjk::correct::Terms tx, ty;
+                        gjk::correct::addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
+                        gjk::correct::addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
+                        gjk::correct::Context cx;
+                        const gjk::correct::Approx sx = gjk::correct::exactSum(cx, tx), sy = gjk::correct::exactSum(cx, ty);
+                        REQUIRE(cx.ok);
+                        for (const auto& [l, s] : {std::pair{lanes.x, sx}, std::pair{lanes.y, sy}})
+                        {
+                            INFO(c.name << " W(" << i << ", " << j << ") " << l.hi << " + " << l.lo << " against "
+                                        << s.hi << " + " << s.lo);
+                            CHECK(std::abs((l.hi - s.hi) + (l.lo - s.lo)) <= (l.err + s.err) * 2 + 0x1p-1000);
+                        }
+                    }
+                gjk::SimplexCache cache;
+                const auto plain = gjk::distance(in, cache);
+                if (cache.count != 3 || plain.stop != gjk::StopReason::Containment)
+                    continue;
+                ++triangles;
+                if (gjk::correct::containsOriginFiltered(in, cache))
+                {
+                    ++filtered;
+                    INFO(c.name);
+                    CHECK(gjk::correct::containsOriginCertified(in, cache));
+                    CHECK(exact::distance(toExact(c.a), toExact(c.b)).distance == 0.0);
+                }
+            }
+    INFO(points << " points, " << lanesTaken << " in lanes; " << triangles << " containment triangles, " << filtered
+                << " decided by the filter");
+    CHECK(lanesTaken > points / 2);
+    CHECK(filtered > triangles / 2);
+}

@@ -8,7 +8,9 @@
 //   1. The plain GJK query (any Options) names the final features: the index pairs of its simplex
 //      (SimplexCache).
 //   2. CorrectPath::Double: containment (a triangle simplex) whose three orientation signs are
-//      certified in double with a running error bound (gjk/certify.hpp): the exact distance is 0.
+//      certified in double: first by a semi-static filter (containsOriginFiltered: one bound per
+//      coordinate from the inputs' magnitudes), then, where that cannot decide, by the running
+//      error bound of gjk/certify.hpp. The exact distance is then 0.
 //   3. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
@@ -19,6 +21,9 @@
 //            or duality, bound), a lower bound of d* for any n. Only the vertices whose double
 //            value along n lies within a certified error of the extreme one can attain the
 //            minimum; those few are evaluated in double-double.
+//      In the common case L is not needed: when the features' own vertices attain both shapes'
+//      support along n (featuresAttainSupport, one pass over each shape), d* = U exactly.
+//      The points of Z are computed in two lanes (a point's x and y side by side, below).
 //      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
 //      answer; if all are <= 0, the answer is 0.
@@ -61,21 +66,21 @@ struct DD
 };
 
 // a + b = s + e exactly (Knuth), for any finite a, b whose sum does not overflow.
-inline DD twoSum(double a, double b)
+GJK_INLINE DD twoSum(double a, double b)
 {
     const double s = a + b;
     const double bb = s - a;
     return {s, (a - (s - bb)) + (b - bb)};
 }
 // The same when |a| >= |b| (or a == 0) (Dekker).
-inline DD fastTwoSum(double a, double b)
+GJK_INLINE DD fastTwoSum(double a, double b)
 {
     const double s = a + b;
     return {s, b - (s - a)};
 }
 // a * b = p + e exactly (Dekker, Veltkamp's split by 2^27 + 1), when |a|, |b| <= 2^996 and no
 // partial product underflows (guarded: Terms::addProduct).
-inline DD twoProduct(double a, double b)
+GJK_INLINE DD twoProduct(double a, double b)
 {
     constexpr double split = 134217729.0; // 2^27 + 1
     const double p = a * b;
@@ -105,7 +110,7 @@ struct Approx
     double hi = 0, lo = 0, err = 0;
 };
 
-inline double mag(const Approx& a) { return std::abs(a.hi) * (1 + 0x1p-50); } // >= |hi + lo|
+GJK_INLINE double mag(const Approx& a) { return std::abs(a.hi) * (1 + 0x1p-50); } // >= |hi + lo|
 
 // The evaluation context: `ok` turns false when a guard fails (the caller then needs exact).
 struct Context
@@ -114,11 +119,11 @@ struct Context
     void require(bool c) { ok = ok && c; }
 };
 
-inline Approx exactly(double v) { return {v, 0, 0}; }
-inline Approx negate(const Approx& a) { return {-a.hi, -a.lo, a.err}; }
-inline Approx absolute(const Approx& a) { return a.hi < 0 ? negate(a) : a; }
+GJK_INLINE Approx exactly(double v) { return {v, 0, 0}; }
+GJK_INLINE Approx negate(const Approx& a) { return {-a.hi, -a.lo, a.err}; }
+GJK_INLINE Approx absolute(const Approx& a) { return a.hi < 0 ? negate(a) : a; }
 
-inline Approx add(const Approx& a, const Approx& b)
+GJK_INLINE Approx add(const Approx& a, const Approx& b)
 {
     DD s = twoSum(a.hi, b.hi);
     const DD t = twoSum(a.lo, b.lo);
@@ -126,9 +131,9 @@ inline Approx add(const Approx& a, const Approx& b)
     s = fastTwoSum(s.hi, s.lo + t.lo);
     return {s.hi, s.lo, (a.err + b.err + kRel * std::abs(s.hi)) * kSafe};
 }
-inline Approx sub(const Approx& a, const Approx& b) { return add(a, negate(b)); }
+GJK_INLINE Approx sub(const Approx& a, const Approx& b) { return add(a, negate(b)); }
 
-inline Approx mul(Context& cx, const Approx& a, const Approx& b)
+GJK_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
 {
     cx.require(std::abs(a.hi) <= 0x1p450 && std::abs(b.hi) <= 0x1p450); // product <= 2^900
     const DD p = twoProduct(a.hi, b.hi);
@@ -138,7 +143,7 @@ inline Approx mul(Context& cx, const Approx& a, const Approx& b)
     return {r.hi, r.lo, e * kSafe};
 }
 
-inline Approx div(Context& cx, const Approx& a, const Approx& b)
+GJK_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
 {
     const double bLow = std::abs(b.hi) * (1 - 0x1p-50) - b.err * kSafe; // <= |exact b|
     cx.require(std::abs(b.hi) >= 0x1p-400 && bLow > 0 && std::abs(a.hi) <= 0x1p900 &&
@@ -158,7 +163,7 @@ inline Approx div(Context& cx, const Approx& a, const Approx& b)
     return {q.hi, q.lo, e * kSafe};
 }
 
-inline Approx squareRoot(Context& cx, const Approx& a)
+GJK_INLINE Approx squareRoot(Context& cx, const Approx& a)
 {
     const double aLow = a.hi * (1 - 0x1p-50) - a.err * kSafe; // <= exact a
     cx.require(a.hi >= 0x1p-800 && a.hi <= 0x1p900 && aLow > 0);
@@ -184,7 +189,7 @@ struct Terms
     double big[10], small[10];
     int nb = 0, ns = 0;
     bool ok = true;
-    void add(double x)
+    GJK_INLINE void add(double x)
     {
         ok = ok && std::abs(x) <= 0x1p900;
         big[nb++] = x;
@@ -192,7 +197,7 @@ struct Terms
     // TwoProduct is exact when the factors cannot overflow the split and the exponents' sum is at
     // least -961 (every partial product is then a multiple of 2^-1074, representable): a product
     // of at least 2^-960 in magnitude, or a zero factor.
-    void addProduct(double a, double b)
+    GJK_INLINE void addProduct(double a, double b)
     {
         const DD p = twoProduct(a, b);
         const double m = std::abs(p.hi);
@@ -202,7 +207,7 @@ struct Terms
         small[ns++] = p.lo;
     }
     // a * (x - y), the difference taken exactly first.
-    void addProductOfDifference(double a, double x, double y)
+    GJK_INLINE void addProductOfDifference(double a, double x, double y)
     {
         const DD d = twoSum(x, -y);
         addProduct(a, d.hi);
@@ -219,7 +224,7 @@ struct Terms
 // VecSum passes over all the pieces follow (up to three), each shrinking it by about u. A rest of
 // 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp (2^-53) the final
 // rounding must resolve.
-inline Approx exactSum(Context& cx, Terms t)
+GJK_INLINE Approx exactSum(Context& cx, Terms t)
 {
     cx.require(t.ok);
     if (t.nb == 0)
@@ -280,17 +285,9 @@ struct ApproxVec
     Approx x, y;
 };
 
-inline Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
-{
-    return add(mul(cx, a.x, b.x), mul(cx, a.y, b.y));
-}
-inline Approx cross(Context& cx, const ApproxVec& a, const ApproxVec& b)
-{
-    return sub(mul(cx, a.x, b.y), mul(cx, a.y, b.x));
-}
 
 // The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
-inline void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
+GJK_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
 {
     tx.addProduct(sign * xf.q.c, v.x);
     tx.addProduct(-sign * xf.q.s, v.y);
@@ -300,9 +297,145 @@ inline void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec
     ty.add(sign * xf.p.y);
 }
 
-// W = xfA * A[i] - xfB * B[j], a point of Z.
-inline ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i, int j)
+// --- Two lanes: a point's x and y --------------------------------------------------------------
+//
+// A world point's two coordinates take the same operations (c x - s y + px and s x + c y + py are
+// (c, s) x + (-s, c) y + (px, py)), so the hot stages below run them side by side: one SSE2
+// register with GCC's and Clang's vector extensions, a pair of doubles elsewhere. Each lane
+// rounds exactly as the scalar code would (IEEE operations lane by lane, no contraction: the
+// prologue above), so the derivations are the scalar ones.
+#if defined(__GNUC__)
+typedef double V2 __attribute__((vector_size(16)));
+typedef std::int64_t M2 __attribute__((vector_size(16))); // comparison masks: -1 (true) or 0
+GJK_INLINE V2 abs2(V2 v) { return V2(M2(v) & M2{INT64_MAX, INT64_MAX}); }
+GJK_INLINE bool all2(M2 m) { return (m[0] & m[1]) != 0; }
+#else
+struct M2
 {
+    bool v[2];
+    bool operator[](int i) const { return v[i]; }
+    M2 operator&(M2 o) const { return {{v[0] && o.v[0], v[1] && o.v[1]}}; }
+    M2 operator|(M2 o) const { return {{v[0] || o.v[0], v[1] || o.v[1]}}; }
+};
+struct V2
+{
+    double v[2];
+    double operator[](int i) const { return v[i]; }
+};
+inline V2 operator+(V2 a, V2 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}}; }
+inline V2 operator-(V2 a, V2 b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
+inline V2 operator*(V2 a, V2 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
+inline V2 operator*(double a, V2 b) { return {{a * b.v[0], a * b.v[1]}}; }
+inline M2 operator<=(V2 a, V2 b) { return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1]}}; }
+inline M2 operator>=(V2 a, V2 b) { return {{a.v[0] >= b.v[0], a.v[1] >= b.v[1]}}; }
+inline M2 operator<=(V2 a, double b) { return {{a.v[0] <= b, a.v[1] <= b}}; }
+inline M2 operator>=(V2 a, double b) { return {{a.v[0] >= b, a.v[1] >= b}}; }
+inline M2 operator==(V2 a, double b) { return {{a.v[0] == b, a.v[1] == b}}; }
+inline V2 abs2(V2 a) { return {{std::abs(a.v[0]), std::abs(a.v[1])}}; }
+inline bool all2(M2 m) { return m.v[0] && m.v[1]; }
+#endif
+GJK_INLINE V2 pair(double x, double y) { return V2{x, y}; }
+
+struct DD2
+{
+    V2 hi, lo;
+};
+GJK_INLINE DD2 twoSum(V2 a, V2 b) // twoSum above, lane by lane
+{
+    const V2 s = a + b;
+    const V2 bb = s - a;
+    return {s, (a - (s - bb)) + (b - bb)};
+}
+GJK_INLINE DD2 twoProduct(V2 a, V2 b) // twoProduct above, lane by lane
+{
+    const V2 split = pair(134217729.0, 134217729.0);
+    const V2 p = a * b;
+    const V2 ca = split * a, ah = ca - (ca - a), al = a - ah;
+    const V2 cb = split * b, bh = cb - (cb - b), bl = b - bh;
+    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
+}
+// Terms::addProduct's guard, lane by lane, with the factors' range tested at 2^450 (which also
+// keeps the product below 2^900): exact unless a factor is zero or |a b| >= 2^-960.
+GJK_INLINE M2 exactProduct(V2 a, V2 b, V2 p)
+{
+    const V2 aa = abs2(a), ab = abs2(b);
+    return ((aa <= 0x1p450) & (ab <= 0x1p450)) & ((abs2(p) >= 0x1p-960) | (aa == 0.0) | (ab == 0.0));
+}
+
+GJK_INLINE DD2 fastTwoSum(V2 a, V2 b) // fastTwoSum above, lane by lane
+{
+    const V2 s = a + b;
+    return {s, b - (s - a)};
+}
+// mul above, lane by lane: the products a0 b0 and a1 b1 at once.
+GJK_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0, const Approx& a1, const Approx& b1,
+                         Approx& r0, Approx& r1)
+{
+    const V2 ah = pair(a0.hi, a1.hi), al = pair(a0.lo, a1.lo), ae = pair(a0.err, a1.err);
+    const V2 bh = pair(b0.hi, b1.hi), bl = pair(b0.lo, b1.lo), be = pair(b0.err, b1.err);
+    cx.require(all2((abs2(ah) <= 0x1p450) & (abs2(bh) <= 0x1p450))); // products <= 2^900
+    const DD2 p = twoProduct(ah, bh);
+    const V2 t = ah * bl + al * bh;
+    const DD2 r = fastTwoSum(p.hi, p.lo + t);
+    const V2 magA = (1 + 0x1p-50) * abs2(ah), magB = (1 + 0x1p-50) * abs2(bh); // mag() above
+    const V2 e = kSafe * ((((magA * be + magB * ae) + ae * be) + kRel * abs2(r.hi)) + pair(kTiny, kTiny));
+    r0 = {r.hi[0], r.lo[0], e[0]};
+    r1 = {r.hi[1], r.lo[1], e[1]};
+}
+GJK_INLINE Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
+{
+    Approx p, q;
+    mulLanes(cx, a.x, b.x, a.y, b.y, p, q);
+    return add(p, q);
+}
+GJK_INLINE Approx cross(Context& cx, const ApproxVec& a, const ApproxVec& b)
+{
+    Approx p, q;
+    mulLanes(cx, a.x, b.y, a.y, b.x, p, q);
+    return sub(p, q);
+}
+
+// W = xfA * A[i] - xfB * B[j] from the same ten pieces as the scalar Terms (four exact products,
+// their trailing parts, two translations), both coordinates at once: one VecSum pass over the six
+// leading pieces, the rest (its five errors and the four trailing parts) summed in double. The
+// bound is exactSum's: n 2^-52 sum|rest| with n = 10 (recursive summation of nine values errs by
+// at most 8u sum|rest|, 2^-52 = 2u). False when a guard fails or the rest is not below 2^-40 of
+// the sum in both lanes (heavy cancellation): exactSum's further passes then decide.
+GJK_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int i, int j, ApproxVec& W)
+{
+    const Transform<double>&xa = in.transformA, &xb = in.transformB;
+    const Vec2<double> a = in.proxyA.points[i], b = in.proxyB.points[j];
+    const V2 f1 = pair(xa.q.c, xa.q.s), g1 = pair(a.x, a.x);
+    const V2 f2 = pair(-xa.q.s, xa.q.c), g2 = pair(a.y, a.y);
+    const V2 f3 = pair(-xb.q.c, -xb.q.s), g3 = pair(b.x, b.x);
+    const V2 f4 = pair(xb.q.s, -xb.q.c), g4 = pair(b.y, b.y);
+    const V2 tA = pair(xa.p.x, xa.p.y), tB = pair(-xb.p.x, -xb.p.y);
+    const DD2 p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3), p4 = twoProduct(f4, g4);
+    const M2 exact = exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) & exactProduct(f3, g3, p3.hi) &
+                     exactProduct(f4, g4, p4.hi) & (abs2(tA) <= 0x1p900) & (abs2(tB) <= 0x1p900);
+    const DD2 s1 = twoSum(p1.hi, p2.hi);
+    const DD2 s2 = twoSum(s1.hi, tA);
+    const DD2 s3 = twoSum(s2.hi, p3.hi);
+    const DD2 s4 = twoSum(s3.hi, p4.hi);
+    const DD2 s5 = twoSum(s4.hi, tB);
+    const V2 rest = (((s1.lo + s2.lo) + (s3.lo + s4.lo)) + (s5.lo + (p1.lo + p2.lo))) + (p3.lo + p4.lo);
+    const V2 restAbs = (((abs2(s1.lo) + abs2(s2.lo)) + (abs2(s3.lo) + abs2(s4.lo))) +
+                        (abs2(s5.lo) + (abs2(p1.lo) + abs2(p2.lo)))) +
+                       (abs2(p3.lo) + abs2(p4.lo));
+    if (!all2(exact & (restAbs <= 0x1p-40 * abs2(s5.hi))))
+        return false;
+    const DD2 r = twoSum(s5.hi, rest);
+    const V2 err = (10 * 0x1p-52 * kSafe) * restAbs;
+    W = {{r.hi[0], r.lo[0], err[0]}, {r.hi[1], r.lo[1], err[1]}};
+    return true;
+}
+
+// W = xfA * A[i] - xfB * B[j], a point of Z.
+GJK_INLINE ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i, int j)
+{
+    ApproxVec W;
+    if (minkowskiPointLanes(in, i, j, W)) [[likely]]
+        return W;
     Terms tx, ty;
     addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
     addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
@@ -310,7 +443,7 @@ inline ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, in
 }
 
 // e = W(i2, j2) - W(i1, j1) from the local differences (the translations cancel exactly).
-inline ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
+GJK_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
 {
     Terms tx, ty;
     auto side = [&](const Transform<double>& xf, Vec2<double> p2, Vec2<double> p1, double sign)
@@ -328,7 +461,7 @@ inline ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int
 }
 
 // The sign of a.b, certified in double from the values' bounds (+1, -1, or 0: not decided).
-inline int signOfDot(const ApproxVec& a, const ApproxVec& b)
+GJK_INLINE int signOfDot(const ApproxVec& a, const ApproxVec& b)
 {
     const double g = a.x.hi * b.x.hi + a.y.hi * b.y.hi;
     auto term = [](const Approx& p, const Approx& q)
@@ -343,41 +476,113 @@ inline int signOfDot(const ApproxVec& a, const ApproxVec& b)
 // The vertices of a shape that can attain min (sign = +1) or max (sign = -1) of n.(Q x) over its
 // points: those whose double value lies within twice a certified bound of the extreme one. The
 // bound covers the rounding of m = Q^T n (n = hi + lo, only hi used: |lo| <= u |hi|), and of the
-// dot products: |computed - exact| <= (3u + 2u (1 + 4u)) (|c| + |s|) max|n| max(|x| + |y|), taken
-// as 8u, plus an absolute 2^-1000 for underflow. Returns the count (at most kMaxCandidates; more
-// returns kMaxCandidates + 1).
+// dot products: |computed - exact| <= (3u + 2u (1 + 4u)) (|c| + |s|) max|n| (|x| + |y|), taken
+// as 8u with max|x| + max|y| (>= every |x| + |y|) for the last factor, plus an absolute 2^-1000
+// for underflow. Returns the count (at most kMaxCandidates; more returns kMaxCandidates + 1). The
+// common case does not come here (featuresAttainSupport, above).
 inline constexpr int kMaxCandidates = 4;
 inline int supportCandidates(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
                              double sign, int* out)
 {
     const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
     const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
-    // The values are kept for the second loop when they fit in a small buffer.
+    // The values are kept for the second pass when they fit in a small buffer. Both passes are
+    // free of data-dependent branches: the candidates are few and their positions random.
     constexpr int kBuffer = 64;
     double values[kBuffer];
     const bool buffered = p.count <= kBuffer;
-    double best = std::numeric_limits<double>::infinity(), extent = 0;
+    double best = std::numeric_limits<double>::infinity(), maxX = 0, maxY = 0;
     for (int i = 0; i < p.count; ++i)
     {
         const double v = mx * p.points[i].x + my * p.points[i].y;
         if (buffered)
             values[i] = v;
         best = std::min(best, v);
-        extent = std::max(extent, std::abs(p.points[i].x) + std::abs(p.points[i].y));
+        maxX = std::max(maxX, std::abs(p.points[i].x));
+        maxY = std::max(maxY, std::abs(p.points[i].y));
     }
+    const double extent = maxX + maxY; // >= max(|x| + |y|)
     if (!(std::abs(best) <= 0x1p900 && extent <= 0x1p900))
-        return kMaxCandidates + 1; // overflow: no certified candidates
+        return kMaxCandidates + 1; // overflow (or NaN): no certified candidates
     const double eps = 8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent + 0x1p-1000;
     const double limit = best + 2 * eps * kSafe;
     int count = 0;
     for (int i = 0; i < p.count; ++i)
-        if ((buffered ? values[i] : mx * p.points[i].x + my * p.points[i].y) <= limit)
-        {
-            if (count == kMaxCandidates)
-                return kMaxCandidates + 1;
-            out[count++] = i;
-        }
+    {
+        const double v = buffered ? values[i] : mx * p.points[i].x + my * p.points[i].y;
+        out[count] = i; // out has room for kMaxCandidates + 1
+        count += v <= limit;
+        if (count > kMaxCandidates) [[unlikely]]
+            return kMaxCandidates + 1;
+    }
     return count;
+}
+
+// The common case's test, in one pass with no buffer: every vertex of the shape but the features'
+// own (i1, i2) lies certainly above the features' lowest value of n.(Q x) (sign = +1; below the
+// highest with sign = -1). Vertex i's computed value errs by at most eps_i, supportCandidates's
+// bound taken at the vertex's own |x| + |y| instead of the shape's largest; so exact(i) >=
+// v_i - eps_i > v_f + eps_f >= exact(f) for a feature vertex f, and no other vertex can attain
+// the minimum: the same conclusion as supportCandidates's candidates all lying in {i1, i2}, for
+// the exact n too (eps covers |n - n.hi| when n's own bound is below 2^-60 of it).
+inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
+                                  double sign, int i1, int i2)
+{
+    const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
+    const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
+    const double k = 8 * 0x1p-53 * kSafe * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny));
+    auto value = [&](int i) { return mx * p.points[i].x + my * p.points[i].y; };
+    auto eps = [&](int i) { return k * (std::abs(p.points[i].x) + std::abs(p.points[i].y)) + 0x1p-1000; };
+    const double limit = std::min(value(i1) + eps(i1), value(i2) + eps(i2));
+    if (!(std::abs(limit) <= 0x1p900))
+        return false; // overflow (or NaN)
+    int above = 0;
+    for (int i = 0; i < p.count; ++i)
+        above += (value(i) - eps(i) > limit) | (i == i1) | (i == i2);
+    return above == p.count;
+}
+
+// Containment first through a semi-static filter, in two lanes. Each coordinate of
+// W = (c x - s y + p)_A - (c x - s y + p)_B passes through at most four roundings (a product, two
+// sums, the difference), so |W - W exact| <= gamma_4 m <= 5u m per lane, m = |c x| + |s y| + |p| of
+// A plus the same of B (computed: at most five roundings low, which 5u against gamma_4's 4.0001u
+// covers), plus 2^-1068 for four products that may underflow. An orientation
+// o = Wi.x Wj.y - Wi.y Wj.x then errs by at most
+//   ex_i |Wj.y| + ey_j |Wi.x| + ex_i ey_j + ey_i |Wj.x| + ex_j |Wi.y| + ey_i ex_j    (the inputs' error)
+//   + 2u (1 + u) (|Wi.x Wj.y| + |Wi.y Wj.x|)                                       (o's own roundings)
+// taken with the safety factor and 2^-1000 for underflow. True: the three signs agree for certain
+// (the origin is strictly inside); false: not decided here (containsOriginCertified's running
+// bound, tighter, then tries).
+GJK_INLINE bool containsOriginFiltered(const DistanceInput<double>& in, const SimplexCache& cache)
+{
+    const Transform<double>&xa = in.transformA, &xb = in.transformB;
+    const V2 ca = pair(xa.q.c, xa.q.s), sa = pair(-xa.q.s, xa.q.c), ta = pair(xa.p.x, xa.p.y);
+    const V2 cb = pair(xb.q.c, xb.q.s), sb = pair(-xb.q.s, xb.q.c), tb = pair(xb.p.x, xb.p.y);
+    V2 W[3], E[3];
+    for (int k = 0; k < 3; ++k)
+    {
+        const Vec2<double> a = in.proxyA.points[cache.indexA[k]], b = in.proxyB.points[cache.indexB[k]];
+        const V2 ax = pair(a.x, a.x), ay = pair(a.y, a.y), bx = pair(b.x, b.x), by = pair(b.y, b.y);
+        const V2 pa1 = ca * ax, pa2 = sa * ay, pb1 = cb * bx, pb2 = sb * by;
+        W[k] = ((pa1 + pa2) + ta) - ((pb1 + pb2) + tb);
+        const V2 m = ((abs2(pa1) + abs2(pa2)) + abs2(ta)) + ((abs2(pb1) + abs2(pb2)) + abs2(tb));
+        E[k] = (5 * 0x1p-53) * m + pair(0x1p-1068, 0x1p-1068);
+    }
+    int positive = 0, negative = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+        const int l = (k + 1) % 3;
+        const double p = W[k][0] * W[l][1], q = W[k][1] * W[l][0];
+        const double o = p - q;
+        const double bound = (E[k][0] * std::abs(W[l][1]) + E[l][1] * std::abs(W[k][0]) + E[k][0] * E[l][1] +
+                              E[k][1] * std::abs(W[l][0]) + E[l][0] * std::abs(W[k][1]) + E[k][1] * E[l][0] +
+                              2 * 0x1p-53 * (1 + 0x1p-53) * (std::abs(p) + std::abs(q))) *
+                                 kSafe +
+                             0x1p-1000;
+        positive += o > bound;
+        negative += o < -bound;
+    }
+    return positive == 3 || negative == 3;
 }
 
 // Certified containment in double (CorrectPath::Double): the origin strictly inside the triangle
@@ -397,7 +602,7 @@ inline bool containsOriginCertified(const DistanceInput<double>& in, const Simpl
 
 // The decision: the exact x lies in [xl, xh] (each an Approx, with its bound). Returns the
 // correctly rounded max(0, x), or a negative value when the bounds cannot decide.
-inline double roundInterval(const Approx& xl, const Approx& xh)
+GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
 {
     using certify::down;
     using certify::up;
@@ -442,7 +647,8 @@ inline double roundInterval(const Approx& xl, const Approx& xh)
 
     if (cache.count == 3)
     {
-        if (out.stop != StopReason::Containment || !containsOriginCertified(in, cache))
+        if (out.stop != StopReason::Containment ||
+            !(containsOriginFiltered(in, cache) || containsOriginCertified(in, cache)))
             return;
         // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
         out.path = CorrectPath::Double;
@@ -527,31 +733,26 @@ inline double roundInterval(const Approx& xl, const Approx& xh)
     // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
     // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
     const ApproxVec nv = valuesOf(n);
+    // The common case: the features' own vertices attain the support of each shape along n, for
+    // the exact n too (n's own bound below 2^-60 of it: featuresAttainSupport). Then the minimum
+    // of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
+    // edge of one shape against a vertex of the other, n is perpendicular to that edge, so both
+    // its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin
+    // lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed.
+    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
+    if (std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
+        (a1 == a2 || b1 == b2) && featuresAttainSupport(in.proxyA, in.transformA, nv, 1, a1, a2) &&
+        featuresAttainSupport(in.proxyB, in.transformB, nv, -1, b1, b2))
+    {
+        finish(roundInterval(xh, xh));
+        return;
+    }
+    // Otherwise L from the few vertices that can attain the support.
     int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
     const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);
     const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
     if (ca > kMaxCandidates || cb > kMaxCandidates)
         return;
-    // The common case: the candidates are the features' own vertices, for the exact n too (the
-    // candidates' bound covers |n - n.hi| when n's own bound is below 2^-60 of it). Then the
-    // minimum of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1;
-    // for an edge of one shape against a vertex of the other, n is perpendicular to that edge, so
-    // both its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the
-    // origin lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed.
-    auto within = [](const int* c, int count, int i1, int i2)
-    {
-        for (int k = 0; k < count; ++k)
-            if (c[k] != i1 && c[k] != i2)
-                return false;
-        return true;
-    };
-    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
-    if (std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
-        within(candA, ca, a1, a2) && within(candB, cb, b1, b2) && (a1 == a2 || b1 == b2))
-    {
-        finish(roundInterval(xh, xh));
-        return;
-    }
     Approx lowest;
     bool first = true;
     double lowestEnd = 0;

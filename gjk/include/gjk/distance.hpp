@@ -512,7 +512,7 @@ template <class T, bool Scaled = false> struct TransformedShape
     int scale = 0;
     bool inexact = false;
 
-    int support(Vec2<T> d)
+    GJK_INLINE int support(Vec2<T> d)
     {
         Vec2<T> local = identity ? d : invRotate(xf.q, d);
         if constexpr (Scaled)
