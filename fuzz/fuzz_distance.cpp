@@ -22,6 +22,7 @@
 //  - the warm/cold promise of docs/gjk.md ("Warm start"): warmRepeatsCold.
 #include "gjk/distance.hpp"
 
+#include <exact/correct_fallback.hpp> // exact::shapeOf
 #include <exact/exact.hpp>
 
 #include <algorithm>
@@ -266,27 +267,13 @@ bool warmRepeatsCold(const gjk::DistanceOutput<T>& cold, const gjk::DistanceOutp
 }
 
 template <class T>
-exact::Shape exactShape(const gjk::Polygon<T>& poly, const gjk::Transform<T>& xf, bool useRadii)
-{
-    exact::Shape s;
-    for (int i = 0; i < poly.count; ++i)
-        s.points.push_back({double(poly.points[i].x), double(poly.points[i].y)});
-    s.radius = useRadii ? double(poly.radius) : 0.0;
-    s.px = double(xf.p.x);
-    s.py = double(xf.p.y);
-    s.c = double(xf.q.c);
-    s.s = double(xf.q.s);
-    return s;
-}
-
-template <class T>
 void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const char* which)
 {
     const bool r = q.options.useRadii;
     auto truth = [&]
     {
-        return exact::distance(exactShape(q.input.proxyA, q.input.transformA, r),
-                               exactShape(q.input.proxyB, q.input.transformB, r));
+        return exact::distance(exact::shapeOf(q.input.proxyA, q.input.transformA, r),
+                               exact::shapeOf(q.input.proxyB, q.input.transformB, r));
     };
     if (!out.outOfRange && !(std::isfinite(out.distance) && out.distance >= T(0)))
         finding(out, which, "distance is negative or not finite and outOfRange is not set");

@@ -6,7 +6,7 @@ Usage: scripts/split_cases_by_path.py CASES.json CASES.jsonl [VARIANT]
 CASES.jsonl is the per-case output of `gjk-validate run --cases CASES.json --per-case` with the
 variant (default double-correct) among --variants. Writes, beside CASES.json, one file per path
 (gjk::CorrectPath, docs/gjk.md "Correctly rounded distance"): STEM-double.json,
-STEM-double-double.json, STEM-exact.json, each with the cases that took that path (a path no case
+STEM-extended.json, STEM-double-double.json, STEM-exact.json, each with the cases that took that path (a path no case
 took gets no file), so that `gjk-validate bench --cases` can time each path on its own.
 Exit codes: 0 written, 2 bad input (unreadable file, a case without the variant's path).
 """

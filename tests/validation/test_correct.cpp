@@ -28,24 +28,29 @@ gjk::DistanceInput<double> inputOf(const std::vector<gjk::Vec2<double>>& a, cons
 }
 
 constexpr gjk::Options kCorrect{.correctlyRounded = true};
+// The separated stage that decides first: 80-bit extended precision where long double is that
+// format, double-double elsewhere.
+constexpr gjk::CorrectPath kSeparated =
+    gjk::correct::kExtended ? gjk::CorrectPath::Extended : gjk::CorrectPath::DoubleDouble;
 } // namespace
 
 TEST_CASE("correctly rounded: hand-derived distances", "[correct]")
 {
-    // Points (0, 0) and (3, 4): distance 5 exactly, decided in double-double.
+    // Points (0, 0) and (3, 4): distance 5 exactly, decided in extended precision (double-double
+    // where long double is not the 80-bit format).
     std::vector<gjk::Vec2<double>> a = {{0, 0}}, b = {{3, 4}};
     auto out = gjk::distance(inputOf(a, b), kCorrect);
-    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.path == kSeparated);
     CHECK(out.distance == 5.0);
     // (0, 0) and (1, 1): sqrt(2), whose correct rounding is IEEE sqrt's.
     b = {{1, 1}};
     out = gjk::distance(inputOf(a, b), kCorrect);
-    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.path == kSeparated);
     CHECK(out.distance == std::sqrt(2.0));
     // The origin to the segment (-1, 1) (1, 1): 1, through the edge feature.
     b = {{-1, 1}, {1, 1}};
     out = gjk::distance(inputOf(a, b), kCorrect);
-    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.path == kSeparated);
     CHECK(out.distance == 1.0);
     // Radii summing to more than the gap: 0 exactly, the witness points merged, the normal zero.
     out = gjk::distance(inputOf(a, b, 0.75, 0.5), kCorrect);
@@ -109,13 +114,15 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
     // scales, plus the other hard families that end at touching or at a tie of features.
     const VariantInfo& correct = *findVariant("double-correct");
     const VariantInfo& plain = *findVariant("double");
-    // target: plain double gets some of its cases wrong, and double-double decides some (on
-    // hard/touching-edge every case touches: only the exact completion can answer 0).
+    // target: plain double gets some of its cases wrong, and the separated stage (kSeparated)
+    // decides some (on hard/touching-edge every case touches: only the exact completion can
+    // answer 0).
     struct Family
     {
         const char* spec;
         bool target;
     };
+    std::map<gjk::CorrectPath, int> total;
     for (const Family fam :
          {Family{"hard/near-zero-separation", true}, {"hard/mixed-scale", true}, {"hard/extreme-scale", true},
           {"hard/ulp-gap", false}, {"hard/touching-edge", false}, {"hard/near-tied-support", true},
@@ -140,7 +147,8 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
                 if (headerOnly.path != gjk::CorrectPath::NeedsExact)
                     CHECK(sameBits(headerOnly.distance, out.distance));
             }
-        INFO(family << ": " << cases << " cases, plain double off on " << plainOff << ", double-double decided "
+        INFO(family << ": " << cases << " cases, plain double off on " << plainOff << ", extended decided "
+                    << paths[gjk::CorrectPath::Extended] << ", double-double decided "
                     << paths[gjk::CorrectPath::DoubleDouble] << ", exact needed on "
                     << paths[gjk::CorrectPath::NeedsExact]);
         CHECK(cases > 0);
@@ -148,9 +156,16 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
         if (fam.target)
         {
             CHECK(plainOff > 0); // the family tests something plain double gets wrong
-            CHECK(paths[gjk::CorrectPath::DoubleDouble] > 0);
+            CHECK(paths[kSeparated] > 0);
         }
+        for (const auto& [path, n] : paths)
+            total[path] += n;
     }
+    // Double-double still decides what extended precision cannot (a distance within about 2^-60
+    // of a rounding midpoint).
+    INFO("extended " << total[gjk::CorrectPath::Extended] << ", double-double "
+                     << total[gjk::CorrectPath::DoubleDouble]);
+    CHECK(total[gjk::CorrectPath::DoubleDouble] > 0);
 }
 
 TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "[correct]")
@@ -205,3 +220,22 @@ TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "
     CHECK(lanesTaken > points / 2);
     CHECK(filtered > triangles / 2);
 }
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+TEST_CASE("correctly rounded: the extended stage steps aside under another x87 precision", "[correct]")
+{
+    // A program that sets the x87 precision control to 53 bits (fldcw) would make the extended
+    // stage's bound false: the stage checks the control word and leaves the query to
+    // double-double.
+    unsigned short saved;
+    __asm__ volatile("fnstcw %0" : "=m"(saved));
+    const unsigned short doublePrecision = (saved & ~0x0300) | 0x0200;
+    std::vector<gjk::Vec2<double>> a = {{0, 0}}, b = {{1, 1}};
+    __asm__ volatile("fldcw %0" : : "m"(doublePrecision));
+    const auto out = gjk::distance(inputOf(a, b), kCorrect);
+    __asm__ volatile("fldcw %0" : : "m"(saved));
+    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    CHECK(out.distance == std::sqrt(2.0));
+    CHECK(gjk::distance(inputOf(a, b), kCorrect).path == gjk::CorrectPath::Extended);
+}
+#endif

@@ -11,7 +11,12 @@
 //      certified in double: first by a semi-static filter (containsOriginFiltered: one bound per
 //      coordinate from the inputs' magnitudes), then, where that cannot decide, by the running
 //      error bound of gjk/certify.hpp. The exact distance is then 0.
-//   3. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
+//   3. CorrectPath::Extended: the features' points of Z recomputed from the original input in
+//      double-double (stage 4's first steps, below); then the square root, the quotient, the radii
+//      and the rounding decision in 80-bit extended precision (long double, where it is that
+//      format), with a static error bound: about 2^-61 of the distance. A distance within that of
+//      a rounding midpoint goes on to stage 4's double-double tail (0.3 % of `random`).
+//   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
 //      quantity carrying a rigorous bound on its distance to the exact value. That gives
@@ -27,7 +32,7 @@
 //      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
 //      answer; if all are <= 0, the answer is 0.
-//   4. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
+//   5. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
 //      rounding midpoint to within about 2^-90 relative, features that are not the closest, a
 //      product of the features' coordinates beyond [2^-960, 2^900], a culled triangle). The output then holds the plain answer, and
 //      the caller completes it with exact arithmetic: exact/include/exact/correct_fallback.hpp
@@ -631,6 +636,86 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
     return m;
 }
 
+// --- The extended-precision stage (CorrectPath::Extended) ---------------------------------------
+//
+// Where long double is the x87 80-bit format (a 64-bit significand: GCC and Clang on x86 Linux,
+// at the x87 unit's default precision control), the features' distance is first computed in it
+// with a static error bound. Unit roundoff u = 2^-64 per operation, and no operation can underflow
+// or overflow: products and sums of doubles stay far inside its exponent range (+-16382). Its
+// error, about 2^-60 of the distance, decides all but about 1 % of the separated queries that
+// double-double would (a result within that of a rounding midpoint goes on to double-double),
+// with a fraction of double-double's dependency chains. Elsewhere (long double is double with
+// MSVC, binary128 in software on AArch64) the stage is skipped.
+using Ext = long double;
+inline constexpr bool kExtended = std::numeric_limits<Ext>::digits == 64;
+inline constexpr Ext uExt = 0x1p-64L;
+inline constexpr Ext kSafeExt = 1 + 0x1p-20L; // covers the rounding of the bounds themselves
+
+// The x87 control word at its default for this stage: precision control 64 bits (bits 8-9 = 11)
+// and rounding to nearest (bits 10-11 = 00). A program may change it (fldcw); then the stage is
+// skipped and double-double decides. One fnstcw per query.
+GJK_INLINE bool extendedPrecisionOn()
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+    unsigned short cw;
+    __asm__ volatile("fnstcw %0" : "=m"(cw));
+    return (cw & 0x0F00) == 0x0300;
+#else
+    return kExtended;
+#endif
+}
+
+// The tail of the separated case in extended precision. In: v = e (edge) or W1 (vertex), each
+// coordinate a double-double value within its bound of the exact one; for an edge,
+// num = cross(e, W1) (double-double, its bound); r = rA + rB. The exact distance from the origin
+// to the feature is U* = |num| / |e| (edge) or |W1| (vertex). Out: X = U - r in extended
+// precision with eX >= |X* - X|; false when a relative bound exceeds 2^-10 (then the
+// double-double tail decides).
+//   v rounded to extended: each coordinate within E = err + u |v| of the exact one, so the exact
+//   length is |v| within Ex + Ey; s = sqrt(vx^2 + vy^2) rounded is |v| within 3.01u (gamma_2 of
+//   the sum of squares, halved by the square root, and the root's own rounding). So the exact
+//   length is s (1 + beta), |beta| <= rb = 4u + (Ex + Ey) / s.
+//   Edge: U = |C| / s rounded, C = num rounded, within ra = eC / |C|: U* / U lies within
+//   1 +- (ra + rb + 2u)(1 + 2^-8) for ra, rb <= 2^-10 (1 / (1 - x) <= 1 + x (1 + 2x)). Vertex:
+//   U = s, within rb. X = U - r rounds twice (r = rA + rB, then the difference).
+GJK_INLINE bool distanceExtended(const ApproxVec& v, const Approx* num, double rA, double rB, Ext& X, Ext& eX)
+{
+    const Ext vx = Ext(v.x.hi) + v.x.lo, vy = Ext(v.y.hi) + v.y.lo;
+    const Ext Ex = v.x.err + uExt * std::abs(vx), Ey = v.y.err + uExt * std::abs(vy);
+    const Ext s = std::sqrt(vx * vx + vy * vy);
+    const Ext rb = (4 * uExt + (Ex + Ey) / s) * kSafeExt;
+    Ext U = s, rel = rb;
+    if (num)
+    {
+        const Ext C = std::abs(Ext(num->hi) + num->lo);
+        const Ext ra = (num->err + uExt * C) * kSafeExt / C;
+        if (!(ra <= 0x1p-10L && rb <= 0x1p-10L))
+            return false;
+        U = C / s;
+        rel = (ra + rb + 2 * uExt) * (1 + 0x1p-8L);
+    }
+    if (!(rel <= 0x1p-10L))
+        return false;
+    const Ext r = Ext(rA) + rB;
+    X = U - r;
+    eX = (rel * U + uExt * r + uExt * std::abs(X)) * kSafeExt;
+    return true;
+}
+
+// The correctly rounded max(0, X*) from X with |X* - X| <= eX (both > 0 decided by the caller),
+// or a negative value: the nearest double m, and X's interval strictly inside m's rounding
+// interval (X - m is exact: Sterbenz).
+GJK_INLINE double roundExtended(Ext X, Ext eX)
+{
+    const double m = double(X);
+    if (!(m >= 0x1p-1000 && m <= 0x1p1000))
+        return -1;
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
+    const Ext gapAbove = Ext(std::bit_cast<double>(bits + 1)) - m, gapBelow = Ext(m) - std::bit_cast<double>(bits - 1);
+    const Ext d = X - m;
+    return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : -1;
+}
+
 // The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
 // cache the plain query returned: its index pairs are the final features. Out of line, so that
 // gjk::distance does not carry its code and stack frame into the default query.
@@ -657,7 +742,7 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
     }
 
     // The output of a decided answer (a negative one: not decided).
-    auto finish = [&out](double answer)
+    auto finish = [&out](double answer, CorrectPath path = CorrectPath::DoubleDouble)
     {
         if (!(answer >= 0))
             return;
@@ -670,24 +755,22 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
             out.normal = {};
         }
         out.distance = answer;
-        out.path = CorrectPath::DoubleDouble;
+        out.path = path;
     };
-    Context cx;
     const int a1 = cache.indexA[0], b1 = cache.indexB[0];
+    Context cx;
     const ApproxVec W1 = minkowskiPoint(cx, in, a1, b1);
-    ApproxVec W2{}, n{};
-    // |n_v| for the direction n_v = n's values (below), and U.
-    Approx normV, U, unum;
+    ApproxVec W2{}, n{}, e{};
+    // For an edge, unum = cross(e, W1).
+    Approx unum;
     auto valuesOf = [](const ApproxVec& v) { return ApproxVec{{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; };
     const bool isEdge = cache.count == 2;
     if (!isEdge)
     {
-        // Vertex feature: n = W1, U = |W1| = |n_v| within |W1 - n_v| <= W1.x.err + W1.y.err.
+        // Vertex feature: n = W1, U = |W1|.
         n = W1;
         if (!cx.ok)
             return;
-        normV = squareRoot(cx, dot(cx, valuesOf(W1), valuesOf(W1)));
-        U = {normV.hi, normV.lo, (normV.err + W1.x.err + W1.y.err) * kSafe};
     }
     else
     {
@@ -695,58 +778,86 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
         // the segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0.
         // e = W2 - W1; recomputed from the shapes' local differences (the translations cancel
         // before any rounding) when that difference is not accurate to 2^-80 of e.
+        // cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
         const int a2 = cache.indexA[1], b2 = cache.indexB[1];
         W2 = minkowskiPoint(cx, in, a2, b2);
-        ApproxVec e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
+        unum = cross(cx, W2, W1);
+        e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
         if (!(std::max(e.x.err, e.y.err) <= 0x1p-80 * std::max(std::abs(e.x.hi), std::abs(e.y.hi))))
             e = minkowskiEdge(cx, in, a1, b1, a2, b2);
         if (!cx.ok || signOfDot(W2, e) != 1 || signOfDot(W1, e) != -1)
             return;
-        unum = cross(cx, e, W1);
-        // |n_v| = |e_v| (a perpendicular), and |e| within e.x.err + e.y.err of it.
-        normV = squareRoot(cx, dot(cx, valuesOf(e), valuesOf(e)));
-        if (!cx.ok)
-            return;
-        U = div(cx, absolute(unum), {normV.hi, normV.lo, (normV.err + e.x.err + e.y.err) * kSafe});
         // n: the perpendicular of e towards Z (n.W1 > 0).
         n = unum.hi > 0 ? ApproxVec{negate(e.y), e.x} : ApproxVec{e.y, negate(e.x)};
     }
+    if (!cx.ok)
+        return;
+
+    // The common case: the features' own vertices attain the support of each shape along n, for
+    // the exact n too (n's own bound below 2^-60 of it: featuresAttainSupport). Then the minimum
+    // of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
+    // edge of one shape against a vertex of the other, n is perpendicular to that edge, so both
+    // its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin
+    // lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed. Evaluated once,
+    // when first needed.
+    const ApproxVec nv = valuesOf(n);
+    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
+    int attained = -1;
+    auto supportAttained = [&]
+    {
+        if (attained < 0)
+            attained = std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
+                       (a1 == a2 || b1 == b2) && featuresAttainSupport(in.proxyA, in.transformA, nv, 1, a1, a2) &&
+                       featuresAttainSupport(in.proxyB, in.transformB, nv, -1, b1, b2);
+        return attained == 1;
+    };
+
+    // CorrectPath::Extended: the square root, the quotient and the rounding in extended
+    // precision, where the double-double ones are the longest chains of dependent operations.
+    if constexpr (kExtended)
+    {
+        Ext X, eX;
+        if (extendedPrecisionOn() && distanceExtended(isEdge ? e : W1, isEdge ? &unum : nullptr, rA, rB, X, eX))
+        {
+            double answer = -1;
+            if (X + eX <= 0)
+                answer = 0; // apart by less than the radii (U* bounds d* from above: a point of Z)
+            else if (X - eX > 0 && supportAttained())
+                answer = roundExtended(X, eX);
+            finish(answer, CorrectPath::Extended);
+            if (out.path == CorrectPath::Extended)
+                return;
+        }
+    }
+
+    // sq = |n_v|^2 for the direction n_v = n's values; the exact length (|W1| or |e|) lies within
+    // lengthErr of |n_v|.
+    const ApproxVec& v = isEdge ? e : W1;
+    const Approx sq = dot(cx, valuesOf(v), valuesOf(v));
+    const double lengthErr = v.x.err + v.y.err;
+    const Approx normV = squareRoot(cx, sq);
+    if (!cx.ok)
+        return;
+    const Approx U = isEdge ? div(cx, absolute(unum), {normV.hi, normV.lo, (normV.err + lengthErr) * kSafe})
+                            : Approx{normV.hi, normV.lo, (normV.err + lengthErr) * kSafe};
     if (!cx.ok)
         return;
     const Approx xh = sub(U, r);
     // Apart by less than the radii: 0 whatever the other bound.
     if (xh.hi <= -certify::up(xh.lo + xh.err))
     {
-        if (out.distance > 0)
-        {
-            const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
-            out.pointA = out.pointB = mid;
-            out.normal = {};
-        }
-        out.distance = 0;
-        out.path = CorrectPath::DoubleDouble;
+        finish(0);
         return;
     }
     if (isEdge && !(std::abs(unum.hi) > unum.err * kSafe + std::abs(unum.lo)))
         return; // the origin on (or too near) the edge's line: the side is not decided
-
-    // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
-    // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
-    const ApproxVec nv = valuesOf(n);
-    // The common case: the features' own vertices attain the support of each shape along n, for
-    // the exact n too (n's own bound below 2^-60 of it: featuresAttainSupport). Then the minimum
-    // of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
-    // edge of one shape against a vertex of the other, n is perpendicular to that edge, so both
-    // its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin
-    // lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed.
-    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
-    if (std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
-        (a1 == a2 || b1 == b2) && featuresAttainSupport(in.proxyA, in.transformA, nv, 1, a1, a2) &&
-        featuresAttainSupport(in.proxyB, in.transformB, nv, -1, b1, b2))
+    if (supportAttained())
     {
         finish(roundInterval(xh, xh));
         return;
     }
+    // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
+    // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
     // Otherwise L from the few vertices that can attain the support.
     int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
     const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);

@@ -191,7 +191,8 @@ constexpr const char* stopReasonName(StopReason r)
 enum class CorrectPath : std::uint8_t
 {
     Plain,        // the option is off: the plain answer
-    Double,       // containment certified in double with a running error bound
+    Double,       // containment certified in double (a static filter, then a running error bound)
+    Extended,     // the features' distance in 80-bit extended precision with a static error bound
     DoubleDouble, // the features' distance and its support bound in double-double
     NeedsExact,   // not decided: the output holds the plain answer, the caller completes it
     Exact,        // completed with exact arithmetic (set by the completion, outside gjk/)
@@ -203,6 +204,7 @@ constexpr const char* correctPathName(CorrectPath p)
     {
     case CorrectPath::Plain: return "plain";
     case CorrectPath::Double: return "double";
+    case CorrectPath::Extended: return "extended";
     case CorrectPath::DoubleDouble: return "double-double";
     case CorrectPath::NeedsExact: return "needs-exact";
     case CorrectPath::Exact: return "exact";

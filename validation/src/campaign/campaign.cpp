@@ -325,6 +325,7 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
     {
         s.hasPaths = true;
         s.pathDouble += v.path == gjk::CorrectPath::Double ? 1 : 0;
+        s.pathExtended += v.path == gjk::CorrectPath::Extended ? 1 : 0;
         s.pathDoubleDouble += v.path == gjk::CorrectPath::DoubleDouble ? 1 : 0;
         s.pathExact += v.path == gjk::CorrectPath::Exact ? 1 : 0;
         s.bitMismatch += v.bitMismatch ? 1 : 0;

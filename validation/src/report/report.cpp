@@ -197,9 +197,13 @@ std::string renderMarkdown(const Json& r)
             const Json& p = st["correct"]["paths"];
             const double n = std::max(1.0, double(st["cases"].get<std::uint64_t>()));
             auto share = [&](const char* k)
-            { return fmt::format("{} {} ({:.4g} %)", k, u(p[k]), 100.0 * double(p[k].get<std::uint64_t>()) / n); };
-            s += fmt::format("\n{}: paths {}, {}, {}; {} bit mismatches with the exact side.\n", name,
-                             share("double"), share("double-double"), share("exact"),
+            {
+                // "extended" is missing from reports written before CorrectPath::Extended.
+                const std::uint64_t c = p.contains(k) ? p[k].get<std::uint64_t>() : 0;
+                return fmt::format("{} {} ({:.4g} %)", k, u(Json(c)), 100.0 * double(c) / n);
+            };
+            s += fmt::format("\n{}: paths {}, {}, {}, {}; {} bit mismatches with the exact side.\n", name,
+                             share("double"), share("extended"), share("double-double"), share("exact"),
                              u(st["correct"]["bit_mismatches"]));
         }
     }

@@ -207,6 +207,7 @@ void Stats::merge(const Stats& o)
     uncertified += o.uncertified;
     hasPaths = hasPaths || o.hasPaths;
     pathDouble += o.pathDouble;
+    pathExtended += o.pathExtended;
     pathDoubleDouble += o.pathDoubleDouble;
     pathExact += o.pathExact;
     bitMismatch += o.bitMismatch;
@@ -273,7 +274,7 @@ Json Stats::state() const
     j["iterations"] = iterations.state();
     j["stops"] = stops;
     if (hasPaths) // written only by correctly rounded variants (older states have none)
-        j["correct_paths"] = {pathDouble, pathDoubleDouble, pathExact, bitMismatch};
+        j["correct_paths"] = {pathDouble, pathDoubleDouble, pathExact, bitMismatch, pathExtended};
     return j;
 }
 
@@ -292,13 +293,14 @@ Stats Stats::fromState(const Json& j)
     if (j.contains("correct_paths"))
     {
         const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
-        if (p.size() != 4)
-            throw std::runtime_error("stats state: correct_paths needs 4 counts");
+        if (p.size() != 4 && p.size() != 5) // 4: before CorrectPath::Extended
+            throw std::runtime_error("stats state: correct_paths needs 4 or 5 counts");
         s.hasPaths = true;
         s.pathDouble = p[0];
         s.pathDoubleDouble = p[1];
         s.pathExact = p[2];
         s.bitMismatch = p[3];
+        s.pathExtended = p.size() == 5 ? p[4] : 0;
     }
     return s;
 }
@@ -343,7 +345,11 @@ Json Stats::toJson() const
                          {"uncertified", uncertified},
                          {"width_ulps", widthUlps.toJson()}};
     if (hasPaths)
-        j["correct"] = {{"paths", {{"double", pathDouble}, {"double-double", pathDoubleDouble}, {"exact", pathExact}}},
+        j["correct"] = {{"paths",
+                         {{"double", pathDouble},
+                          {"extended", pathExtended},
+                          {"double-double", pathDoubleDouble},
+                          {"exact", pathExact}}},
                         {"bit_mismatches", bitMismatch}};
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)

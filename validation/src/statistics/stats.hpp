@@ -85,10 +85,10 @@ struct Stats
     std::uint64_t certified = 0, contains = 0, uncertified = 0;
     Hist widthUlps{-20, 40}; // (upper - lower) / ulp(d_exact), d_exact > 0
     // Correctly rounded variants (Options::correctlyRounded): the queries each path decided
-    // (gjk::CorrectPath Double, DoubleDouble, Exact) and the answers not bit-identical to the
-    // exact side's (each a failure).
+    // (gjk::CorrectPath Double, Extended, DoubleDouble, Exact) and the answers not bit-identical
+    // to the exact side's (each a failure).
     bool hasPaths = false;
-    std::uint64_t pathDouble = 0, pathDoubleDouble = 0, pathExact = 0, bitMismatch = 0;
+    std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0, bitMismatch = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
     bool hasInputRounding = false;
