@@ -239,3 +239,21 @@ TEST_CASE("correctly rounded: the extended stage steps aside under another x87 p
     CHECK(gjk::distance(inputOf(a, b), kCorrect).path == gjk::CorrectPath::Extended);
 }
 #endif
+
+TEST_CASE("correctly rounded: the support test excludes a vertex only beyond both bounds", "[correct]")
+{
+    // featuresAttainSupport: vertex i is certainly above the feature f when v_i - eps_i > v_f + eps_f.
+    // Feature (0, 0): v_f = 0, eps_f = 2^-1000 (the underflow term). Identity transform, n = (1, 0):
+    // v_i = x exactly, eps_i = 8u (1 + 2^-40) |x| + 2^-1000.
+    const gjk::Transform<double> identity{};
+    const gjk::correct::ApproxVec n = {{1, 0, 0}, {0, 0, 0}};
+    auto attains = [&](double x)
+    {
+        const std::vector<gjk::Vec2<double>> points = {{0, 0}, {x, 0}};
+        return gjk::correct::featuresAttainSupport({points.data(), 2, 0}, identity, n, 1, 0, 0);
+    };
+    CHECK_FALSE(attains(1.5 * 0x1p-1000)); // within eps_i + eps_f of the feature: not excluded
+    CHECK(attains(3 * 0x1p-1000));         // beyond both bounds
+    CHECK(attains(1.0));
+    CHECK_FALSE(attains(-1.0)); // below the feature
+}
