@@ -240,6 +240,36 @@ TEST_CASE("bench: timings per variant without the exact side", "[variants][bench
     CHECK_THAT(benchTable(j), Catch::Contains("float-warm") && Catch::Contains("x double"));
 }
 
+TEST_CASE("bench: the variants' passes alternate", "[variants][bench]")
+{
+    // Two fake loops that record the order of their passes and report fixed times: one
+    // calibration pass each, then pass k of both before pass k + 1 of either; the medians per
+    // query are the fixed times over reps x cases.
+    std::vector<char> order;
+    auto loop = [&](char name, double nsPerQuery, std::size_t cases)
+    {
+        TimedLoop l;
+        l.cases = cases;
+        l.pass = [&order, name, nsPerQuery, cases](int reps)
+        {
+            order.push_back(name);
+            return nsPerQuery * double(reps) * double(cases);
+        };
+        return l;
+    };
+    TimingConfig tc;
+    tc.minPasses = tc.maxPasses = 3;
+    tc.budgetSeconds = 1e9;
+    tc.minPassSeconds = 1e-9; // one rep per pass
+    const std::vector<TimingResult> r = medianOfAlternatedPasses({loop('a', 10, 4), loop('b', 25, 2)}, tc);
+    CHECK(std::string(order.begin(), order.end()) == "ababab" "ab"); // calibration, then 3 rounds
+    REQUIRE(r.size() == 2);
+    CHECK(r[0].nsPerQuery == 10.0);
+    CHECK(r[1].nsPerQuery == 25.0);
+    CHECK(r[0].passes == 3);
+    CHECK(r[1].cases == 2);
+}
+
 TEST_CASE("every-start variants judge the worst answer over many starts", "[variants]")
 {
     // The talk's walk-through pentagon against the origin (distance exactly 1): every start the

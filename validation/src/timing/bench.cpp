@@ -52,10 +52,16 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     tc.minPassSeconds = config.minPassSeconds;
     tc.warm = config.warm;
 
-    std::vector<TimingResult> results;
+    // gjk2d's variants are timed with their passes alternated (medianOfAlternatedPasses: all
+    // their inputs are held at once); plugin variants, timed in a child process each, on their
+    // own.
+    std::vector<TimingResult> results(config.variants.size());
     std::vector<std::size_t> skipped, notApplicable;
-    for (const VariantInfo* v : config.variants)
+    std::vector<TimedLoop> loops;
+    std::vector<std::size_t> loopOf; // the variant of each loop
+    for (std::size_t k = 0; k < config.variants.size(); ++k)
     {
+        const VariantInfo* v = config.variants[k];
         std::vector<const PreparedCase*> cases;
         std::size_t sk = 0, na = 0;
         for (const auto& p : prepared)
@@ -74,11 +80,19 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
             }
             cases.push_back(&p);
         }
-        results.push_back(v->plugin ? timeContained(cases, *v, tc, config.pluginTimeoutSeconds)
-                                    : timeQueries(cases, *v, tc));
+        if (v->plugin)
+            results[k] = timeContained(cases, *v, tc, config.pluginTimeoutSeconds);
+        else
+        {
+            loops.push_back(timedLoop(cases, *v, tc));
+            loopOf.push_back(k);
+        }
         skipped.push_back(sk);
         notApplicable.push_back(na);
     }
+    const std::vector<TimingResult> alternated = medianOfAlternatedPasses(loops, tc);
+    for (std::size_t l = 0; l < loops.size(); ++l)
+        results[loopOf[l]] = alternated[l];
     const auto tTimed = Clock::now();
 
     const TimingResult* base = nullptr;
@@ -119,7 +133,9 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
         {"min_pass_s", tc.minPassSeconds},
         {"warm", config.warm},
         {"note", "single thread; per variant the cases are copied into one contiguous array and "
-                 "each pass loops over all of them (repeated to last at least min_pass_s); "
+                 "each pass loops over all of them (repeated to last at least min_pass_s); the "
+                 "passes of gjk2d's variants are alternated (pass k of each before pass k + 1 of "
+                 "any); plugin variants are timed on their own. "
                  "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
                  "Warm: each query starts from the SimplexCache of a previous query of the same "
                  "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <memory>
 #include <type_traits>
 
 namespace gjkval
@@ -125,49 +126,44 @@ double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps, s
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
-template <class T>
-TimingResult timeT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
-                   const TimingConfig& cfg, bool warm, bool batch)
+// The loop's state (the contiguous inputs, a batch's caches and outputs), owned by its pass.
+template <class T> struct LoopState
 {
-    if (cases.empty())
+    TimingSet<T> set;
+    std::vector<gjk::SimplexCache> caches;
+    std::vector<gjk::DistanceOutput<T>> outputs;
+    LoopState(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm, bool batch)
+        : set(cases, o, warm), caches(batch ? set.inputs.size() : 0), outputs(batch ? set.inputs.size() : 0)
     {
-        TimingResult res;
-        res.warm = warm;
-        return res;
     }
-    const TimingSet<T> set(cases, o, warm);
-    std::vector<gjk::SimplexCache> caches(batch ? set.inputs.size() : 0);
-    std::vector<gjk::DistanceOutput<T>> outputs(batch ? set.inputs.size() : 0);
-    auto pass = [&](int reps)
+};
+
+template <class T>
+TimedLoop loopT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm, bool batch)
+{
+    TimedLoop loop;
+    loop.cases = cases.size();
+    loop.warm = warm;
+    if (cases.empty())
+        return loop;
+    auto state = std::make_shared<LoopState<T>>(cases, o, warm, batch);
+    loop.pass = [state, o, batch](int reps)
     {
         if (batch)
-            return timePassBatch<T>(set, o, reps, caches, outputs);
+            return timePassBatch<T>(state->set, o, reps, state->caches, state->outputs);
         if constexpr (std::is_same_v<T, double>)
             if (o.correctlyRounded)
-                return timePassCorrect(set, o, reps);
-        return timePass<T>(set, o, reps);
+                return timePassCorrect(state->set, o, reps);
+        return timePass<T>(state->set, o, reps);
     };
-    TimingResult res = medianOfPasses(cases.size(), cfg, pass);
-    res.warm = warm;
-    return res;
+    return loop;
 }
-} // namespace
 
-TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
-                            const std::function<double(int)>& pass)
+// The median, min and max of a loop's per-query times (sorted in place).
+TimingResult summary(std::size_t cases, std::vector<double>& perQuery, int reps)
 {
     TimingResult res;
     res.cases = cases;
-    if (cases == 0)
-        return res;
-    const double first = std::max(1.0, pass(1)); // warm-up and calibration
-    const int reps = std::clamp(int(std::ceil(cfg.minPassSeconds * 1e9 / first)), 1, 100000);
-    std::vector<double> perQuery;
-    const auto start = Clock::now();
-    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
-    while (int(perQuery.size()) < cfg.maxPasses &&
-           (int(perQuery.size()) < cfg.minPasses || elapsed() < cfg.budgetSeconds))
-        perQuery.push_back(pass(reps) / (double(reps) * double(cases)));
     std::sort(perQuery.begin(), perQuery.end());
     const std::size_t n = perQuery.size();
     if (n == 0)
@@ -180,12 +176,72 @@ TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
     return res;
 }
 
+// One calibration pass: the reps that make a pass last cfg.minPassSeconds.
+int calibrate(const TimingConfig& cfg, const std::function<double(int)>& pass)
+{
+    const double first = std::max(1.0, pass(1)); // warm-up and calibration
+    return std::clamp(int(std::ceil(cfg.minPassSeconds * 1e9 / first)), 1, 100000);
+}
+} // namespace
+
+TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v, const TimingConfig& cfg)
+{
+    const bool warm = v.start == Start::Warm || cfg.warm;
+    return v.scalar == Scalar::Float ? loopT<float>(cases, v.options, warm, v.batch)
+                                     : loopT<double>(cases, v.options, warm, v.batch);
+}
+
+std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops, const TimingConfig& cfg)
+{
+    std::vector<int> reps(loops.size(), 0);
+    std::vector<std::vector<double>> perQuery(loops.size());
+    for (std::size_t k = 0; k < loops.size(); ++k)
+        if (loops[k].cases > 0)
+            reps[k] = calibrate(cfg, loops[k].pass);
+    const auto start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    for (int p = 0; p < cfg.maxPasses && (p < cfg.minPasses || elapsed() < cfg.budgetSeconds); ++p)
+        for (std::size_t k = 0; k < loops.size(); ++k)
+            if (loops[k].cases > 0)
+                perQuery[k].push_back(loops[k].pass(reps[k]) / (double(reps[k]) * double(loops[k].cases)));
+    std::vector<TimingResult> results;
+    for (std::size_t k = 0; k < loops.size(); ++k)
+    {
+        results.push_back(summary(loops[k].cases, perQuery[k], reps[k]));
+        results.back().warm = loops[k].warm;
+    }
+    return results;
+}
+
+TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
+                            const std::function<double(int)>& pass)
+{
+    if (cases == 0)
+    {
+        TimingResult res;
+        res.cases = cases;
+        return res;
+    }
+    const int reps = calibrate(cfg, pass);
+    std::vector<double> perQuery;
+    const auto start = Clock::now();
+    auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+    while (int(perQuery.size()) < cfg.maxPasses &&
+           (int(perQuery.size()) < cfg.minPasses || elapsed() < cfg.budgetSeconds))
+        perQuery.push_back(pass(reps) / (double(reps) * double(cases)));
+    return summary(cases, perQuery, reps);
+}
+
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg)
 {
-    const bool warm = v.start == Start::Warm || cfg.warm;
-    return v.scalar == Scalar::Float ? timeT<float>(cases, v.options, cfg, warm, v.batch)
-                                     : timeT<double>(cases, v.options, cfg, warm, v.batch);
+    const TimedLoop loop = timedLoop(cases, v, cfg);
+    TimingResult res;
+    if (loop.cases > 0)
+        res = medianOfPasses(loop.cases, cfg, loop.pass);
+    res.cases = loop.cases;
+    res.warm = loop.warm;
+    return res;
 }
 
 } // namespace gjkval
