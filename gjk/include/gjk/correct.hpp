@@ -639,13 +639,16 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
 // --- The extended-precision stage (CorrectPath::Extended) ---------------------------------------
 //
 // Where long double is the x87 80-bit format (a 64-bit significand: GCC and Clang on x86 Linux,
-// at the x87 unit's default precision control), the features' distance is first computed in it
-// with a static error bound. Unit roundoff u = 2^-64 per operation, and no operation can underflow
-// or overflow: products and sums of doubles stay far inside its exponent range (+-16382). Its
-// error, about 2^-60 of the distance, decides all but about 1 % of the separated queries that
-// double-double would (a result within that of a rounding midpoint goes on to double-double),
-// with a fraction of double-double's dependency chains. Elsewhere (long double is double with
-// MSVC, binary128 in software on AArch64) the stage is skipped.
+// at the x87 unit's default precision control, checked), the separated case's tail runs in it
+// with a static error bound: from the points of Z in double-double (refine, below) to the length,
+// the square root, the quotient, the radii and the rounding decision. Unit roundoff u = 2^-64 per
+// operation, and no operation can underflow or overflow: products and sums of doubles stay far
+// inside its exponent range (+-16382). Its error, about 2^-61 of the distance, leaves undecided
+// only distances that close to a rounding midpoint (0.37 % of `random`, which go on to the
+// double-double tail), at a fraction of that tail's chains of dependent operations. Computing the
+// points of Z in extended precision too was tried: each coordinate then errs by u times its
+// terms' magnitudes, not its own, which left a quarter of `random` undecided. Elsewhere (long
+// double is double with MSVC, binary128 in software on AArch64) the stage is skipped.
 using Ext = long double;
 inline constexpr bool kExtended = std::numeric_limits<Ext>::digits == 64;
 inline constexpr Ext uExt = 0x1p-64L;
