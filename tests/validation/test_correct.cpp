@@ -257,3 +257,24 @@ TEST_CASE("correctly rounded: the support test excludes a vertex only beyond bot
     CHECK(attains(1.0));
     CHECK_FALSE(attains(-1.0)); // below the feature
 }
+
+TEST_CASE("correctly rounded: exact ties round to even without the exact side", "[correct]")
+{
+    // A point translated by 2^-53 or 3 2^-53 lies exactly at 1 + 2^-53 (a tie between 1 and
+    // 1 + 2^-52: the even one is 1) or 1 + 3 2^-53 (between 1 + 2^-52 and 1 + 2^-51: the even one
+    // is 1 + 2^-51), from a vertex and from an edge. No bound can decide a tie; the expansions do.
+    const std::vector<gjk::Vec2<double>> origin = {{0, 0}}, edge = {{-1, 0}, {1, 0}}, point = {{0, 1}};
+    for (const auto* a : {&origin, &edge})
+        for (const auto& [offset, expected] : {std::pair{0x1p-53, 1.0}, std::pair{3 * 0x1p-53, 1 + 0x1p-51}})
+        {
+            gjk::DistanceInput<double> in = inputOf(*a, point);
+            in.transformB.p = {0, offset};
+            const auto out = gjk::distance(in, kCorrect);
+            INFO("from " << (a == &origin ? "a vertex" : "an edge") << ", offset " << offset);
+            CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+            CHECK(sameBits(out.distance, expected));
+            const exact::Result truth = exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
+                                                        exact::shapeOf(in.proxyB, in.transformB, true));
+            CHECK(sameBits(out.distance, truth.distance));
+        }
+}

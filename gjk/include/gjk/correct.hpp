@@ -636,6 +636,164 @@ GJK_INLINE double roundInterval(const Approx& xl, const Approx& xh)
     return m;
 }
 
+// --- Exact ties: floating-point expansions ------------------------------------------------------
+//
+// Float-engine data make exact ties common: a distance whose exact value has few bits (sums of
+// products of floats) can sit exactly on a midpoint between two doubles, where no bound can
+// decide (5 % of engine/pyramid-toi). When the features are the closest ones and the interval
+// around X = U - rA - rB straddles one midpoint T, the sign of U* - (T + rA + rB) is computed
+// exactly with Shewchuk's expansion arithmetic ("Adaptive precision floating-point arithmetic
+// and fast robust geometric predicates", 1997): an Expansion is a sum of doubles, nonoverlapping,
+// in increasing magnitude, zeros eliminated, exact; its sign is its largest term's. Every product
+// goes through TwoProduct under Terms::addProduct's guard (a failure leaves the query to the
+// exact side). Vertex: U*^2 = |W1|^2; edge: U* = |C| / |e| with C = cross(e, W1), compared as
+// C^2 against T'^2 |e|^2 (T' = T + rA + rB > 0).
+struct Expansion
+{
+    static constexpr int kCapacity = 48; // a nonoverlapping sum of doubles has at most ~40 terms
+    double t[kCapacity];
+    int n = 0;
+};
+
+// e += b exactly (Grow-Expansion with zero elimination).
+inline void grow(Context& cx, Expansion& e, double b)
+{
+    cx.require(std::abs(b) <= 0x1p900);
+    double q = b;
+    int k = 0;
+    for (int i = 0; i < e.n; ++i)
+    {
+        const DD s = twoSum(q, e.t[i]);
+        if (s.lo != 0)
+            e.t[k++] = s.lo;
+        q = s.hi;
+    }
+    if (q != 0)
+    {
+        if (k == Expansion::kCapacity)
+        {
+            cx.require(false);
+            return;
+        }
+        e.t[k++] = q;
+    }
+    e.n = k;
+}
+
+// e += sign a b exactly (TwoProduct, guarded as Terms::addProduct).
+inline void growProduct(Context& cx, Expansion& e, double a, double b)
+{
+    const DD p = twoProduct(a, b);
+    const double m = std::abs(p.hi);
+    cx.require((a == 0) || (b == 0) ||
+               ((m >= 0x1p-960) && (m <= 0x1p900) && (std::abs(a) <= 0x1p900) && (std::abs(b) <= 0x1p900)));
+    grow(cx, e, p.lo);
+    grow(cx, e, p.hi);
+}
+
+// out += sign a b for expansions a, b.
+inline void growProduct(Context& cx, Expansion& out, const Expansion& a, const Expansion& b, double sign)
+{
+    for (int i = 0; i < a.n && cx.ok; ++i)
+        for (int j = 0; j < b.n && cx.ok; ++j)
+            growProduct(cx, out, sign * a.t[i], b.t[j]);
+}
+
+inline int signOf(const Expansion& e) { return e.n == 0 ? 0 : (e.t[e.n - 1] > 0 ? 1 : -1); }
+
+// The exact point W(i, j) of Z, both coordinates.
+inline void exactPoint(Context& cx, const DistanceInput<double>& in, int i, int j, Expansion& x, Expansion& y)
+{
+    const Transform<double>&xa = in.transformA, &xb = in.transformB;
+    const Vec2<double> a = in.proxyA.points[i], b = in.proxyB.points[j];
+    growProduct(cx, x, xa.q.c, a.x);
+    growProduct(cx, x, -xa.q.s, a.y);
+    grow(cx, x, xa.p.x);
+    growProduct(cx, x, -xb.q.c, b.x);
+    growProduct(cx, x, xb.q.s, b.y);
+    grow(cx, x, -xb.p.x);
+    growProduct(cx, y, xa.q.s, a.x);
+    growProduct(cx, y, xa.q.c, a.y);
+    grow(cx, y, xa.p.y);
+    growProduct(cx, y, -xb.q.s, b.x);
+    growProduct(cx, y, -xb.q.c, b.y);
+    grow(cx, y, -xb.p.y);
+}
+
+// sign(U* - (tHi + tLo + rA + rB)), U* the exact distance from the origin to the feature (the
+// vertex W(a1, b1), or the edge's line through W(a1, b1) and W(a2, b2)), for a positive target;
+// 2 when a guard fails.
+inline int exactSideOfTarget(const DistanceInput<double>& in, const SimplexCache& cache, double tHi, double tLo,
+                             double rA, double rB)
+{
+    Context cx;
+    Expansion x1, y1, T;
+    exactPoint(cx, in, cache.indexA[0], cache.indexB[0], x1, y1);
+    grow(cx, T, tLo);
+    grow(cx, T, tHi);
+    grow(cx, T, rA);
+    grow(cx, T, rB);
+    Expansion lhs, rhs, T2;
+    growProduct(cx, T2, T, T, 1);
+    if (cache.count == 1)
+    {
+        growProduct(cx, lhs, x1, x1, 1); // |W1|^2
+        growProduct(cx, lhs, y1, y1, 1);
+        rhs = T2;
+    }
+    else
+    {
+        Expansion x2, y2, C, C2, e2;
+        exactPoint(cx, in, cache.indexA[1], cache.indexB[1], x2, y2);
+        Expansion ex = x2, ey = y2; // e = W2 - W1
+        for (int i = 0; i < x1.n; ++i)
+            grow(cx, ex, -x1.t[i]);
+        for (int i = 0; i < y1.n; ++i)
+            grow(cx, ey, -y1.t[i]);
+        growProduct(cx, C, ex, y1, 1); // cross(e, W1)
+        growProduct(cx, C, ey, x1, -1);
+        growProduct(cx, lhs, C, C, 1);
+        growProduct(cx, e2, ex, ex, 1);
+        growProduct(cx, e2, ey, ey, 1);
+        growProduct(cx, rhs, T2, e2, 1);
+    }
+    for (int i = 0; i < rhs.n; ++i)
+        grow(cx, lhs, -rhs.t[i]);
+    return cx.ok ? signOf(lhs) : 2;
+}
+
+// The correctly rounded X* = U* - rA - rB > 0 when [xh.hi + xh.lo +- xh.err] straddles exactly
+// one midpoint between two positive doubles (normal, below 2^900): the exact side of that
+// midpoint decides, a tie goes to the even one (round half to even). Negative: not decided.
+inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCache& cache, const Approx& xh, double rA,
+                              double rB)
+{
+    using certify::down;
+    using certify::up;
+    const double m = xh.hi;
+    if (!(m >= 0x1p-900 && m <= 0x1p900) || !(xh.hi > up(xh.err - xh.lo)))
+        return -1;
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
+    const double below = std::bit_cast<double>(bits - 1), above = std::bit_cast<double>(bits + 1);
+    const double halfBelow = 0.5 * (m - below), halfAbove = 0.5 * (above - m); // exact
+    // X within [m + dLow, m + dHigh] (d = xh.lo +- err, rounded outwards), and strictly between
+    // two neighbouring doubles lo < hi whose midpoint it straddles (so the answer is lo or hi).
+    const double dHigh = up(xh.lo + xh.err), dLow = down(xh.lo - xh.err);
+    double lo, hi, tLo;
+    if (dHigh >= halfAbove && dLow > -halfBelow && dHigh < 2 * halfAbove)
+        lo = m, hi = above, tLo = halfAbove; // m < X < above
+    else if (dLow <= -halfBelow && dHigh < halfAbove && dLow > -2 * halfBelow)
+        lo = below, hi = m, tLo = -halfBelow; // below < X < m
+    else
+        return -1;
+    const int side = exactSideOfTarget(in, cache, m, tLo, rA, rB);
+    if (side == 2)
+        return -1;
+    if (side != 0)
+        return side > 0 ? hi : lo;
+    return (std::bit_cast<std::uint64_t>(lo) & 1) == 0 ? lo : hi; // a tie: the even one
+}
+
 // --- The extended-precision stage (CorrectPath::Extended) ---------------------------------------
 //
 // Where long double is the x87 80-bit format (a 64-bit significand: GCC and Clang on x86 Linux,
@@ -856,7 +1014,8 @@ GJK_INLINE double roundExtended(Ext X, Ext eX)
         return; // the origin on (or too near) the edge's line: the side is not decided
     if (supportAttained())
     {
-        finish(roundInterval(xh, xh));
+        const double answer = roundInterval(xh, xh);
+        finish(answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB));
         return;
     }
     // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
