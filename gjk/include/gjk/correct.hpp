@@ -31,9 +31,13 @@
 //      The points of Z are computed in two lanes (a point's x and y side by side, below).
 //      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
-//      answer; if all are <= 0, the answer is 0.
+//      answer; if all are <= 0, the answer is 0. When the features are the closest ones and the
+//      interval straddles one rounding midpoint (an exact tie, common with float-engine data), the
+//      exact side of that midpoint is computed with floating-point expansions (Shewchuk), and a
+//      tie goes to the even double.
 //   5. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
-//      rounding midpoint to within about 2^-90 relative, features that are not the closest, a
+//      rounding midpoint when the features are not both shapes' support, features that are not
+//      the closest, an expansion beyond its guards, a
 //      product of the features' coordinates beyond [2^-960, 2^900], a culled triangle). The output then holds the plain answer, and
 //      the caller completes it with exact arithmetic: exact/include/exact/correct_fallback.hpp
 //      (GMP, outside gjk/) does it in one call.
