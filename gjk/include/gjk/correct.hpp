@@ -15,7 +15,7 @@
 //      double-double (stage 4's first steps, below); then the square root, the quotient, the radii
 //      and the rounding decision in 80-bit extended precision (long double, where it is that
 //      format), with a static error bound: about 2^-61 of the distance. A distance within that of
-//      a rounding midpoint goes on to stage 4's double-double tail (0.3 % of `random`).
+//      a rounding midpoint goes on to stage 4's double-double tail (0.37 % of `random`).
 //   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
@@ -37,8 +37,8 @@
 //      tie goes to the even double.
 //   5. CorrectPath::NeedsExact: anything the bounds cannot decide (exact touching, a distance on a
 //      rounding midpoint when the features are not both shapes' support, features that are not
-//      the closest, an expansion beyond its guards, a
-//      product of the features' coordinates beyond [2^-960, 2^900], a culled triangle). The output then holds the plain answer, and
+//      the closest, an expansion beyond its guards, a product of the features' coordinates
+//      beyond [2^-960, 2^900], a culled triangle). The output then holds the plain answer, and
 //      the caller completes it with exact arithmetic: exact/include/exact/correct_fallback.hpp
 //      (GMP, outside gjk/) does it in one call.
 //
@@ -294,7 +294,6 @@ struct ApproxVec
     Approx x, y;
 };
 
-
 // The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
 GJK_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
 {
@@ -312,8 +311,9 @@ GJK_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf,
 // (c, s) x + (-s, c) y + (px, py)), so the hot stages below run them side by side: one SSE2
 // register with GCC's and Clang's vector extensions, a pair of doubles elsewhere. Each lane
 // rounds exactly as the scalar code would (IEEE operations lane by lane, no contraction: the
-// prologue above), so the derivations are the scalar ones.
-#if defined(__GNUC__)
+// prologue above), so the derivations are the scalar ones. GJK_NO_VECTOR_EXTENSIONS selects the
+// pair of doubles with GCC and Clang too (a check of that code).
+#if defined(__GNUC__) && !defined(GJK_NO_VECTOR_EXTENSIONS)
 typedef double V2 __attribute__((vector_size(16)));
 typedef std::int64_t M2 __attribute__((vector_size(16))); // comparison masks: -1 (true) or 0
 GJK_INLINE V2 abs2(V2 v) { return V2(M2(v) & M2{INT64_MAX, INT64_MAX}); }
