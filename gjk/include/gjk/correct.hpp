@@ -200,6 +200,16 @@ GJK_CORRECT_INLINE Approx squareRoot(Context& cx, const Approx& a)
 
 // --- Exact sums --------------------------------------------------------------------------------
 
+// TwoProduct(a, b) = p + e is exact when the factors cannot overflow the split and the exponents'
+// sum is at least -961 (every partial product is then a multiple of 2^-1074, representable): a
+// product of at least 2^-960 in magnitude, or a zero factor.
+GJK_CORRECT_INLINE bool exactProduct(double a, double b, double p)
+{
+    const double m = std::abs(p);
+    return (a == 0) | (b == 0) |
+           ((m >= 0x1p-960) & (m <= 0x1p900) & (std::abs(a) <= 0x1p900) & (std::abs(b) <= 0x1p900));
+}
+
 // A short list of doubles whose exact sum is a wanted quantity (error-free pieces of products).
 // The pieces are kept in two lists: `big` (products' leading parts, translations) and `small`
 // (products' trailing parts, each below u times its leading part). `ok`: every piece is exact and
@@ -214,15 +224,10 @@ struct Terms
         ok = ok && std::abs(x) <= 0x1p900;
         big[nb++] = x;
     }
-    // TwoProduct is exact when the factors cannot overflow the split and the exponents' sum is at
-    // least -961 (every partial product is then a multiple of 2^-1074, representable): a product
-    // of at least 2^-960 in magnitude, or a zero factor.
     GJK_CORRECT_INLINE void addProduct(double a, double b)
     {
         const DD p = twoProduct(a, b);
-        const double m = std::abs(p.hi);
-        ok = ok && ((a == 0) | (b == 0) |
-                    ((m >= 0x1p-960) & (m <= 0x1p900) & (std::abs(a) <= 0x1p900) & (std::abs(b) <= 0x1p900)));
+        ok = ok && exactProduct(a, b, p.hi);
         big[nb++] = p.hi;
         small[ns++] = p.lo;
     }
@@ -347,7 +352,6 @@ inline V2 operator-(V2 a, V2 b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
 inline V2 operator*(V2 a, V2 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
 inline V2 operator*(double a, V2 b) { return {{a * b.v[0], a * b.v[1]}}; }
 inline M2 operator<=(V2 a, V2 b) { return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1]}}; }
-inline M2 operator>=(V2 a, V2 b) { return {{a.v[0] >= b.v[0], a.v[1] >= b.v[1]}}; }
 inline M2 operator<=(V2 a, double b) { return {{a.v[0] <= b, a.v[1] <= b}}; }
 inline M2 operator>=(V2 a, double b) { return {{a.v[0] >= b, a.v[1] >= b}}; }
 inline M2 operator==(V2 a, double b) { return {{a.v[0] == b, a.v[1] == b}}; }
@@ -374,7 +378,7 @@ GJK_CORRECT_INLINE DD2 twoProduct(V2 a, V2 b) // twoProduct above, lane by lane
     const V2 cb = split * b, bh = cb - (cb - b), bl = b - bh;
     return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
 }
-// Terms::addProduct's guard, lane by lane, with the factors' range tested at 2^450 (which also
+// exactProduct's guard, lane by lane, with the factors' range tested at 2^450 (which also
 // keeps the product below 2^900): exact unless a factor is zero or |a b| >= 2^-960.
 GJK_CORRECT_INLINE M2 exactProduct(V2 a, V2 b, V2 p)
 {
@@ -695,13 +699,11 @@ inline void grow(Context& cx, Expansion& e, double b)
     e.n = k;
 }
 
-// e += sign a b exactly (TwoProduct, guarded as Terms::addProduct).
+// e += a b exactly (TwoProduct under exactProduct's guard).
 inline void growProduct(Context& cx, Expansion& e, double a, double b)
 {
     const DD p = twoProduct(a, b);
-    const double m = std::abs(p.hi);
-    cx.require((a == 0) || (b == 0) ||
-               ((m >= 0x1p-960) && (m <= 0x1p900) && (std::abs(a) <= 0x1p900) && (std::abs(b) <= 0x1p900)));
+    cx.require(exactProduct(a, b, p.hi));
     grow(cx, e, p.lo);
     grow(cx, e, p.hi);
 }
@@ -716,23 +718,22 @@ inline void growProduct(Context& cx, Expansion& out, const Expansion& a, const E
 
 inline int signOf(const Expansion& e) { return e.n == 0 ? 0 : (e.t[e.n - 1] > 0 ? 1 : -1); }
 
-// The exact point W(i, j) of Z, both coordinates.
+// The exact point W(i, j) of Z, both coordinates: the exact pieces of Terms (addWorldPoint), summed
+// into expansions.
 inline void exactPoint(Context& cx, const DistanceInput<double>& in, int i, int j, Expansion& x, Expansion& y)
 {
-    const Transform<double>&xa = in.transformA, &xb = in.transformB;
-    const Vec2<double> a = in.proxyA.points[i], b = in.proxyB.points[j];
-    growProduct(cx, x, xa.q.c, a.x);
-    growProduct(cx, x, -xa.q.s, a.y);
-    grow(cx, x, xa.p.x);
-    growProduct(cx, x, -xb.q.c, b.x);
-    growProduct(cx, x, xb.q.s, b.y);
-    grow(cx, x, -xb.p.x);
-    growProduct(cx, y, xa.q.s, a.x);
-    growProduct(cx, y, xa.q.c, a.y);
-    grow(cx, y, xa.p.y);
-    growProduct(cx, y, -xb.q.s, b.x);
-    growProduct(cx, y, -xb.q.c, b.y);
-    grow(cx, y, -xb.p.y);
+    Terms tx, ty;
+    addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
+    addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
+    cx.require(tx.ok && ty.ok);
+    for (int k = 0; k < tx.ns; ++k)
+        grow(cx, x, tx.small[k]);
+    for (int k = 0; k < tx.nb; ++k)
+        grow(cx, x, tx.big[k]);
+    for (int k = 0; k < ty.ns; ++k)
+        grow(cx, y, ty.small[k]);
+    for (int k = 0; k < ty.nb; ++k)
+        grow(cx, y, ty.big[k]);
 }
 
 // sign(U* - (tHi + tLo + rA + rB)), U* the exact distance from the origin to the feature (the
