@@ -10,17 +10,20 @@ Drives Chromium over the DevTools protocol on --remote-debugging-pipe (Python st
      any network request other than file:/data:/about: fails the test; the number of scatter points
      must equal the count computed here from report.json; "next" must change the drawn iteration;
   4. checks the first screen: at 1400 x 900 the verdict, the counts, the heat map and the speed plot
-     lie within the first 1,200 px of the page; at 1280 px wide, with every folded block open, no
-     table is cut off and the page does not scroll sideways;
-  5. checks the variants' colours: one per variant, the same on the report page, the case page and
-     the explain page, and no two variants of the report (nearly) alike;
+     lie within the first 1,200 px of the page; at 1280 px wide, with every folded block open, the
+     page does not scroll sideways and no table is cut off (a wide table scrolls in its own box);
+     and what the page says against report.json (check_data_views): counts in every heat-map
+     cell's hover text, grey cells without a judged case, invalid answers, plugin files;
+  5. checks the variants' colours and markers: one pair per variant, the same on the report page,
+     the case page and the explain page, no two variants of the report with the same pair, and
+     two with the same marker well apart in colour;
   6. takes screenshots (test artefacts): the first screen, the whole page, the first viewer;
   7. does the same for the single-case viewer page (gjk_html::renderCase) of the report's first worst
      case, as `gjk-validate explain --html` writes it.
 
 usage: browser_check.py --chromium PATH --render report_render --report REPORT.json --out DIR
-                        [--screenshot PNG] [--case-screenshot PNG] [--expect-index HTML]
-                        [--campaign EXE ARG... --]
+                        [--screenshot PNG] [--screenshot-1280 PNG] [--case-screenshot PNG]
+                        [--expect-index HTML] [--campaign EXE ARG... -- | --generate CMD ARG... --]
 Exit status: 0 pass, 1 fail, 77 Chromium missing (CTest SKIP_RETURN_CODE).
 """
 import argparse

@@ -159,7 +159,7 @@
     'double-correct': '#c62828'
   };
   var BUILTIN_MARKER = 'circle';
-  // At least 44 (RGB distance) from every built-in colour and 50 from each other.
+  // RGB distances: at least 48 from every built-in colour, at least 72 from each other (docs/report.md).
   var EXTRA_VARIANT_COLORS = ['#212121', '#f2b600', '#8e24aa', '#546e7a', '#ff6f00', '#283593', '#9e9d24', '#a1887f', '#e040fb', '#2962ff'];
   var EXTRA_MARKERS = ['diamond', 'square', 'triangle', 'triangle-down'];
 
