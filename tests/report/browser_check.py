@@ -10,17 +10,20 @@ Drives Chromium over the DevTools protocol on --remote-debugging-pipe (Python st
      any network request other than file:/data:/about: fails the test; the number of scatter points
      must equal the count computed here from report.json; "next" must change the drawn iteration;
   4. checks the first screen: at 1400 x 900 the verdict, the counts, the heat map and the speed plot
-     lie within the first 1,200 px of the page; at 1280 px wide, with every folded block open, no
-     table is cut off and the page does not scroll sideways;
-  5. checks the variants' colours: one per variant, the same on the report page, the case page and
-     the explain page, and no two variants of the report (nearly) alike;
+     lie within the first 1,200 px of the page; at 1280 px wide, with every folded block open, the
+     page does not scroll sideways and no table is cut off (a wide table scrolls in its own box);
+     and what the page says against report.json (check_data_views): counts in every heat-map
+     cell's hover text, grey cells without a judged case, invalid answers, plugin files;
+  5. checks the variants' colours and markers: one pair per variant, the same on the report page,
+     the case page and the explain page, no two variants of the report with the same pair, and
+     two with the same marker well apart in colour;
   6. takes screenshots (test artefacts): the first screen, the whole page, the first viewer;
   7. does the same for the single-case viewer page (gjk_html::renderCase) of the report's first worst
      case, as `gjk-validate explain --html` writes it.
 
 usage: browser_check.py --chromium PATH --render report_render --report REPORT.json --out DIR
-                        [--screenshot PNG] [--case-screenshot PNG] [--expect-index HTML]
-                        [--campaign EXE ARG... --]
+                        [--screenshot PNG] [--screenshot-1280 PNG] [--case-screenshot PNG]
+                        [--expect-index HTML] [--campaign EXE ARG... -- | --generate CMD ARG... --]
 Exit status: 0 pass, 1 fail, 77 Chromium missing (CTest SKIP_RETURN_CODE).
 """
 import argparse
@@ -299,32 +302,74 @@ FIRST_SCREEN_PROBE = """(function() {
   return out;
 })()"""
 
-# Tables wider than their place, with every folded block opened: none may be cut off.
+# With every folded block open: the page must not scroll sideways, and a table wider than its place
+# must sit in a box that scrolls (overflow-x auto or scroll) within the window: a table scrolls or
+# wraps inside its own box, never the page, and is never cut off.
 OVERFLOW_PROBE = """(function() {
   document.querySelectorAll('details').forEach(function (d) { d.open = true; });
-  var width = document.documentElement.clientWidth, bad = [];
+  var width = document.documentElement.clientWidth, bad = [], scrolling = [];
+  function scroller(e) {
+    for (var p = e.parentElement; p && p !== document.body; p = p.parentElement) {
+      var o = getComputedStyle(p).overflowX;
+      if (o === 'auto' || o === 'scroll') return p;
+    }
+    return null;
+  }
   document.querySelectorAll('table').forEach(function (t, i) {
     var r = t.getBoundingClientRect(), box = t.parentElement.getBoundingClientRect();
     if (r.width === 0) return;
-    if (r.right > width + 0.5 || r.right > box.right + 0.5 || t.parentElement.scrollWidth > t.parentElement.clientWidth + 1)
-      bad.push((t.className || 'table') + ' #' + i + ' right ' + Math.round(r.right) + ' in ' + Math.round(box.right) + ' (page ' + width + ')');
+    var name = (t.className || 'table') + ' #' + i, sc = scroller(t);
+    if (sc) {
+      var b = sc.getBoundingClientRect();
+      if (b.right > width + 0.5) bad.push(name + ': its scroll box ends at ' + Math.round(b.right) + ' (page ' + width + ')');
+      if (sc.scrollWidth > sc.clientWidth + 1) scrolling.push(name + ' (' + Math.round(r.width) + ' px in ' + Math.round(b.width) + ')');
+    } else if (r.right > width + 0.5 || r.right > box.right + 0.5) {
+      bad.push(name + ' right ' + Math.round(r.right) + ' in ' + Math.round(box.right) + ' (page ' + width + '), in no scroll box');
+    }
   });
   var page = document.documentElement.scrollWidth;
   document.querySelectorAll('details').forEach(function (d) { d.open = false; });
-  return {page: page, width: width, bad: bad};
+  return {page: page, width: width, bad: bad, scrolling: scrolling};
 })()"""
 
-# Each variant's colour as drawn: the colour dots (tables, legends) and the heat map's column heads.
-COLOR_PROBE = """(function() {
+# Each variant as drawn: every element with data-marker (colour dots in tables and legends, the heat
+# map's column heads, the speed plot's legend) gives its marker and its fill (or its shape's).
+STYLE_PROBE = """(function() {
   var seen = {}, clash = [];
-  function add(name, color) {
-    if (!name || !color) return;
-    if (name in seen && seen[name] !== color) clash.push(name + ': ' + seen[name] + ' and ' + color);
-    seen[name] = color;
-  }
-  document.querySelectorAll('.dot[data-variant]').forEach(function (e) { add(e.getAttribute('data-variant'), getComputedStyle(e).backgroundColor); });
-  document.querySelectorAll('circle[data-variant]').forEach(function (e) { add(e.getAttribute('data-variant'), getComputedStyle(e).fill); });
-  return {colors: seen, clash: clash};
+  document.querySelectorAll('[data-variant][data-marker]').forEach(function (e) {
+    var shape = e.tagName.toLowerCase() === 'svg' ? e.querySelector('.vmark-shape') : e;
+    var style = getComputedStyle(shape).fill + ' ' + e.getAttribute('data-marker'), name = e.getAttribute('data-variant');
+    if (name in seen && seen[name] !== style) clash.push(name + ': ' + seen[name] + ' and ' + style);
+    seen[name] = style;
+  });
+  return {styles: seen, clash: clash};
+})()"""
+
+# What the heat map, the family tables, the variants table and the viewers say, for check_data_views.
+VIEWS_PROBE = """(function() {
+  var out = {cells: [], invalid: [], rows: [], variantsText: '', counts: ''};
+  document.querySelectorAll('#heatmap .hm-cell').forEach(function (c) {
+    out.cells.push({family: c.getAttribute('data-family'), variant: c.getAttribute('data-variant'), kind: c.getAttribute('data-kind'),
+      fill: c.querySelector('rect').getAttribute('fill'), tip: c.querySelector('title').textContent});
+  });
+  document.querySelectorAll('details.family').forEach(function (d) {
+    d.querySelectorAll('tr[data-variant] td.invalid-cell').forEach(function (td) {
+      out.invalid.push({family: d.getAttribute('data-family'), variant: td.parentElement.getAttribute('data-variant'),
+        count: td.getAttribute('data-invalid'), text: td.textContent, title: td.getAttribute('title') || ''});
+    });
+  });
+  document.querySelectorAll('.viewer').forEach(function (v) {
+    v.querySelectorAll('table.results tr[data-variant]').forEach(function (tr) {
+      var wb = tr.querySelector('td.witness-bound');
+      out.rows.push({case: v.getAttribute('data-case'), variant: tr.getAttribute('data-variant'),
+        cls: tr.lastElementChild.textContent, witnessBound: wb ? wb.textContent : null});
+    });
+  });
+  var ctx = document.getElementById('context');
+  out.variantsText = ctx ? ctx.textContent : '';
+  var counts = document.getElementById('counts');
+  out.counts = counts ? counts.textContent : '';
+  return out;
 })()"""
 
 
@@ -350,7 +395,8 @@ STEP_PROBE = """(function() {
 })()"""
 
 
-def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewer_screenshot=None, label=None):
+def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewer_screenshot=None, label=None,
+               screenshot_1280=None):
     """Loads html (kind 'report' or 'case' page); returns a list of failures."""
     fails = []
     label = label or kind
@@ -393,13 +439,17 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
                 fails.append(f'report: no {part} on the page')
             elif p['top'] < 0 or p['bottom'] > 1200:
                 fails.append(f'report: the {part} is not within the first 1,200 px: {p}')
-        # No table is cut off at 1280 px.
+        # At 1280 px the page does not scroll sideways, and no table is cut off.
         page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1280, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
         time.sleep(0.2)
         over = page.eval(OVERFLOW_PROBE)
-        log('report: at 1280 px: page width', over['page'], 'tables cut off:', len(over['bad']))
-        if over['page'] > over['width'] or over['bad']:
+        log('report: at 1280 px: page width', over['page'], 'tables cut off:', len(over['bad']),
+            'tables scrolling in their own box:', over['scrolling'])
+        if over['page'] > 1280 or over['page'] > over['width'] or over['bad']:
             fails.append(f'report: at 1280 px the page scrolls sideways or a table is cut off: {over}')
+        if screenshot_1280:
+            page.eval('window.scrollTo(0, 0)')
+            page.screenshot(screenshot_1280)
         page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1400, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
         time.sleep(0.2)
         fams = [str(f.get('name')) for f in report.get('families', []) if isinstance(f, dict)] if isinstance(report, dict) else []
@@ -409,9 +459,10 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
                 fails.append(f'report: family {f!r} has no section on the page')
         if page.eval("document.querySelectorAll('.error-box').length"):
             fails.append('report: the page shows an error box: ' + str(page.eval("document.querySelector('.error-box').textContent")))
-    colors = page.eval(COLOR_PROBE)
-    for c in colors['clash']:
-        fails.append(f'{label}: a variant drawn in two colours: {c}')
+        fails += check_data_views(page.eval(VIEWS_PROBE), report)
+    styles = page.eval(STYLE_PROBE)
+    for c in styles['clash']:
+        fails.append(f'{label}: a variant drawn in two colours or markers: {c}')
     if screenshot:
         # The first screen, as a reader opens the page (1400 x 900), and the whole page.
         page.cmd('Emulation.setDeviceMetricsOverride', {'width': 1400, 'height': 900, 'deviceScaleFactor': 1, 'mobile': False})
@@ -435,32 +486,110 @@ def check_page(browser, html, out_dir, kind, report=None, screenshot=None, viewe
             if clip:
                 page.screenshot(viewer_screenshot, clip=clip)
     fails += [f'{label}: {p}' for p in page.problems()]
-    return fails, colors['colors']
+    return fails, styles['styles']
 
 
-def check_colors(report, page_colors):
-    """One colour per variant: the same on every page, and distinct variants distinct colours."""
+def check_styles(report, page_styles):
+    """Every variant of the report drawn with one colour and marker, the same on every page; no two
+    variants with the same colour and marker; two with the same marker well apart in colour (RGB
+    distance at least 40)."""
     fails = []
     merged = {}
-    for label, colors in page_colors.items():
-        for name, c in colors.items():
-            merged.setdefault(name, {})[label] = c
+    for label, styles in page_styles.items():
+        for name, st in styles.items():
+            merged.setdefault(name, {})[label] = st
     for name, by_page in merged.items():
         if len(set(by_page.values())) > 1:
-            fails.append(f'variant {name!r} has different colours on different pages: {by_page}')
+            fails.append(f'variant {name!r} has different colours or markers on different pages: {by_page}')
     names = [str(v.get('name')) for v in (report.get('variants') or []) if isinstance(v, dict)] if isinstance(report, dict) else []
-    report_colors = page_colors.get('report', {})
-    missing = [n for n in names if n not in report_colors]
+    report_styles = page_styles.get('report', {})
+    missing = [n for n in names if n not in report_styles]
     if missing:
-        fails.append(f'report: no colour dot for the variants {missing}')
-    drawn = {n: rgb(report_colors[n]) for n in names if n in report_colors}
-    for i, a in enumerate(sorted(drawn)):
-        for b in sorted(drawn)[i + 1:]:
-            d = math.dist(drawn[a], drawn[b])
-            if d < 40:
-                fails.append(f'variants {a!r} and {b!r} have (nearly) the same colour: {drawn[a]} and {drawn[b]}')
-    log(f'colours: {len(drawn)} variants, {len(set(drawn.values()))} distinct colours on the report page;',
-        'pages compared:', ', '.join(sorted(page_colors)))
+        fails.append(f'report: no colour and marker drawn for the variants {missing}')
+    drawn = {}
+    for n in names:
+        if n in report_styles:
+            color, marker = report_styles[n].rsplit(' ', 1)
+            drawn[n] = (rgb(color), marker)
+    order = sorted(drawn)
+    for i, a in enumerate(order):
+        for b in order[i + 1:]:
+            (ca, ma), (cb, mb) = drawn[a], drawn[b]
+            if ma == mb and math.dist(ca, cb) < 40:
+                fails.append(f'variants {a!r} and {b!r} have the same marker ({ma}) and (nearly) the same colour: {ca} and {cb}')
+    log(f'variant styles: {len(drawn)} variants, {len(set(drawn.values()))} distinct colour and marker pairs,',
+        f'{len(set(c for c, _ in drawn.values()))} colours, {len(set(m for _, m in drawn.values()))} markers on the report page;',
+        'pages compared:', ', '.join(sorted(page_styles)))
+    return fails
+
+
+def count_of(st, key):
+    """A Stats count; a field an older report lacks counts 0 (as on the page)."""
+    v = num(st.get(key)) if isinstance(st, dict) else math.nan
+    return int(v) if math.isfinite(v) else 0
+
+
+def plural(n, one):
+    return f'{n:,} {one}' + ('' if n == 1 else 's')
+
+
+NOT_RUN_GREY = '#ece9e3'
+
+
+def check_data_views(views, report):
+    """What the page says about each family x variant, against report.json: a cell with no judged case
+    is grey and says why; every cell's hover text gives cases, refused, skipped and invalid; the family
+    tables show the invalid counts and reasons; the viewers show an invalid answer's reason and its
+    witness bound; the variants table names each plugin's file; the header counts invalid answers."""
+    fails = []
+    fams = {str(f.get('name')): f for f in report.get('families', []) if isinstance(f, dict)}
+    cells = {(c['family'], c['variant']): c for c in views['cells']}
+    checked = {'grey': 0, 'tips': 0, 'invalid': 0, 'viewer': 0, 'plugin files': 0}
+    for (fam, var), c in cells.items():
+        st = (fams.get(fam, {}).get('variants') or {}).get(var)
+        k = {key: count_of(st, key) for key in ('cases', 'refused', 'skipped', 'invalid')}
+        want = f"{plural(k['cases'], 'case')}, {k['refused']:,} refused, {k['skipped']:,} skipped, {k['invalid']:,} invalid"
+        if want not in c['tip']:
+            fails.append(f'heat map {fam} / {var}: the hover text does not say {want!r}: {c["tip"]!r}')
+        checked['tips'] += 1
+        if isinstance(st, dict) and k['cases'] == 0:
+            checked['grey'] += 1
+            if c['fill'] != NOT_RUN_GREY or c['kind'] != 'notrun':
+                fails.append(f'heat map {fam} / {var}: no judged case, but the cell is {c["fill"]} ({c["kind"]}), not the grey of "not run"')
+            if k['refused'] > 0 and 'refused by the implementation' not in c['tip'] and 'refused or skipped' not in c['tip']:
+                fails.append(f'heat map {fam} / {var}: every case refused, but the hover text does not say so: {c["tip"]!r}')
+    for row in views['invalid']:
+        st = (fams.get(row['family'], {}).get('variants') or {}).get(row['variant'])
+        n = count_of(st, 'invalid')
+        reasons = [f'{v:,} {r.replace("_", " ")}' for r, v in ((st or {}).get('invalid_reasons') or {}).items() if num(v) > 0]
+        checked['invalid'] += 1
+        if row['count'] != str(n) or not row['text'].startswith(f'{n:,}'):
+            fails.append(f'family {row["family"]} / {row["variant"]}: invalid shown as {row["text"]!r}, report.json has {n}')
+        for r in reasons:
+            if r not in row['title'] or r not in row['text']:
+                fails.append(f'family {row["family"]} / {row["variant"]}: invalid reason {r!r} not shown: {row}')
+    want_rows = sum(len(f.get('variants') or {}) for f in fams.values())
+    if len(views['invalid']) != want_rows:
+        fails.append(f'the family tables have {len(views["invalid"])} invalid cells, report.json has {want_rows} family x variant statistics')
+    worst = {str(w.get('name')): w for w in report.get('worst') or [] if isinstance(w, dict)}
+    for row in views['rows']:
+        r = ((worst.get(row['case']) or {}).get('variants') or {}).get(row['variant']) or {}
+        if r.get('invalid') and f"invalid: {str(r['invalid']).replace('_', ' ')}" not in row['cls']:
+            fails.append(f'viewer {row["case"]} / {row["variant"]}: invalid answer ({r["invalid"]}) not shown: {row["cls"]!r}')
+        if r.get('witness_bound') is not None:
+            checked['viewer'] += 1
+            if row['witnessBound'] in (None, '—'):
+                fails.append(f'viewer {row["case"]} / {row["variant"]}: witness bound {r["witness_bound"]} not shown')
+    for v in report.get('variants') or []:
+        path = (v.get('plugin') or {}).get('path') if isinstance(v, dict) and isinstance(v.get('plugin'), dict) else None
+        if path:
+            checked['plugin files'] += 1
+            if path not in views['variantsText']:
+                fails.append(f'the variants table does not name the plugin file {path!r} of {v.get("name")!r}')
+    total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
+    if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
+        fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')
+    log('data views checked:', checked, f'(invalid answers in all: {total_invalid})')
     return fails
 
 
@@ -488,8 +617,8 @@ def explain_page(exe, report, out):
 
 def main(argv):
     campaign = None
-    if '--campaign' in argv:
-        i = argv.index('--campaign')
+    if '--campaign' in argv or '--generate' in argv:  # --generate: a command that writes the report (a fixture)
+        i = argv.index('--campaign') if '--campaign' in argv else argv.index('--generate')
         try:
             j = argv.index('--', i + 1)
         except ValueError:
@@ -504,6 +633,7 @@ def main(argv):
     ap.add_argument('--expect-index', help='use this index.html (written by the runner) instead of rendering one')
     ap.add_argument('--screenshot')
     ap.add_argument('--case-screenshot')
+    ap.add_argument('--screenshot-1280', help='the first screen at 1280 x 900')
     ap.add_argument('--explain', metavar='GJK_VALIDATE',
                     help='also run `GJK_VALIDATE explain --family F --name N --html` on the report\'s first worst case '
                          'and check that page')
@@ -564,12 +694,13 @@ def main(argv):
                 if kind == 'case':
                     f, page_colors[label] = check_page(browser, path, out, kind, report=report, viewer_screenshot=shot, label=label)
                 else:
-                    f, page_colors[label] = check_page(browser, path, out, kind, report=report, screenshot=shot, viewer_screenshot=vshot, label=label)
+                    f, page_colors[label] = check_page(browser, path, out, kind, report=report, screenshot=shot, viewer_screenshot=vshot, label=label,
+                                                       screenshot_1280=a.screenshot_1280)
                 fails += f
             except Exception as e:  # a timeout or a crash is a failure, with the browser's log
                 fails.append(f'{label}: {type(e).__name__}: {e}')
         if 'report' in page_colors:
-            fails += check_colors(report, page_colors)
+            fails += check_styles(report, page_colors)
     finally:
         browser.close()
     log(f'done in {time.monotonic() - t0:.1f} s')

@@ -128,13 +128,24 @@
     return list.filter(finitePoint).map(pt);
   }
 
-  // --- Colours ------------------------------------------------------------------------------------
+  // --- Variant colours and markers ------------------------------------------------------------------
 
-  // One colour per variant, the same on every page (index.html and every `explain --html` page), so
-  // it never depends on which variants a page lists or in which order. The runner's built-in
-  // variants (validation/src/evaluate/variants.cpp) come in hue pairs: the double variant dark, its
-  // float twin light. tests/report/browser_check.py checks that the campaign's variants get distinct
-  // colours and that a variant has the same colour on the report page and on an explain page.
+  // Each variant of a page is drawn with a colour and a marker shape, and no two variants of the page
+  // share both. This is the rule's one home (docs/report.md, "Variant colours and markers"):
+  //  - gjk2d's built-in variants (validation/src/evaluate/variants.cpp) keep their fixed colours,
+  //    in hue pairs (the double variant dark, its float twin light), and the circle: the same on
+  //    every page whatever else it lists;
+  //  - every other name (a plugin, an external implementation) gets a slot of EXTRA_VARIANT_COLORS x
+  //    EXTRA_MARKERS (10 colours, none a built-in's, x 4 markers). The names are taken in sorted
+  //    order; each takes the first free slot starting from the colour its name hashes to (FNV-1a),
+  //    trying every colour as a diamond before any square, then triangles, then triangles pointing
+  //    down. So up to 10 such names all get different colours, the same set of names always gets
+  //    the same slots, and a name keeps its colour on a page listing fewer names unless another
+  //    name had taken it. Beyond 40 names: colours by the golden angle (distinct, less easy to tell).
+  // tests/report/browser_check.py checks, on a 30-variant report, that no two variants of a page have
+  // the same colour and marker, that two with the same marker have well-separated colours, and that a
+  // variant looks the same on the report page and on its case pages; a Catch2 test of the runner
+  // checks that every built-in variant has its fixed colour here.
   var BUILTIN_VARIANT_COLORS = {
     'double': '#1f5fa8', 'float': '#64a6e8',
     'double-closest-point': '#c2570c', 'float-closest-point': '#f7a35c',
@@ -147,9 +158,12 @@
     'double-batch': '#00695c', 'float-batch': '#80cbc4',
     'double-correct': '#c62828'
   };
-  // Any other variant (an external implementation, a future one): a colour none of the built-ins
-  // uses, picked by a hash of its name (FNV-1a), so it too is the same on every page.
-  var EXTRA_VARIANT_COLORS = ['#283593', '#546e7a', '#a1887f', '#f2b600', '#212121', '#8e24aa', '#9e9d24', '#4e342e'];
+  var BUILTIN_MARKER = 'circle';
+  // RGB distances: at least 48 from every built-in colour, at least 72 from each other (docs/report.md).
+  var EXTRA_VARIANT_COLORS = ['#212121', '#f2b600', '#8e24aa', '#546e7a', '#ff6f00', '#283593', '#9e9d24', '#a1887f', '#e040fb', '#2962ff'];
+  var EXTRA_MARKERS = ['diamond', 'square', 'triangle', 'triangle-down'];
+
+  function isBuiltinVariant(name) { return Object.prototype.hasOwnProperty.call(BUILTIN_VARIANT_COLORS, name); }
 
   function nameHash(s) {
     var x = 0x811c9dc5;
@@ -157,15 +171,69 @@
     return x >>> 0;
   }
 
-  function variantColor(name) {
-    name = String(name);
-    if (Object.prototype.hasOwnProperty.call(BUILTIN_VARIANT_COLORS, name)) return BUILTIN_VARIANT_COLORS[name];
-    return EXTRA_VARIANT_COLORS[nameHash(name) % EXTRA_VARIANT_COLORS.length];
+  function hslHex(hue, s, l) {
+    var c = (1 - Math.abs(2 * l - 1)) * s, x = c * (1 - Math.abs((hue / 60) % 2 - 1)), m = l - c / 2;
+    var rgb = hue < 60 ? [c, x, 0] : hue < 120 ? [x, c, 0] : hue < 180 ? [0, c, x] : hue < 240 ? [0, x, c] : hue < 300 ? [x, 0, c] : [c, 0, x];
+    return '#' + rgb.map(function (v) { var b = Math.round((v + m) * 255); return (b < 16 ? '0' : '') + b.toString(16); }).join('');
   }
 
-  // A variant's colour dot; data-variant lets the tests compare colours across pages.
+  // The page's styles: set once from every variant name the page draws (setVariantNames), before
+  // anything is drawn. A name found later (not in the data's lists) takes a slot the same way.
+  var variantStyles = {}, slotTaken = {}, overflowCount = 0;
+
+  function takeExtraSlot(name) {
+    var nc = EXTRA_VARIANT_COLORS.length, slots = nc * EXTRA_MARKERS.length, start = nameHash(name) % nc;
+    for (var i = 0; i < slots; ++i) {
+      var row = Math.floor(i / nc), col = (start + i) % nc, slot = row * nc + col;
+      if (slotTaken[slot]) continue;
+      slotTaken[slot] = true;
+      return {color: EXTRA_VARIANT_COLORS[col], marker: EXTRA_MARKERS[row]};
+    }
+    var k = overflowCount++;
+    return {color: hslHex(Math.round((k * 137.508) % 360), 0.65, 0.42), marker: EXTRA_MARKERS[k % EXTRA_MARKERS.length]};
+  }
+
+  function setVariantNames(names) {
+    variantStyles = {};
+    slotTaken = {};
+    overflowCount = 0;
+    var extras = [];
+    names.forEach(function (n) {
+      n = String(n);
+      if (!isBuiltinVariant(n) && extras.indexOf(n) < 0) extras.push(n);
+    });
+    extras.sort(function (a, b) { return a < b ? -1 : a > b ? 1 : 0; }); // code-unit order: no locale
+    extras.forEach(function (n) { variantStyles[n] = takeExtraSlot(n); });
+  }
+
+  function variantStyle(name) {
+    name = String(name);
+    if (isBuiltinVariant(name)) return {color: BUILTIN_VARIANT_COLORS[name], marker: BUILTIN_MARKER};
+    if (!Object.prototype.hasOwnProperty.call(variantStyles, name)) variantStyles[name] = takeExtraSlot(name);
+    return variantStyles[name];
+  }
+
+  function variantColor(name) { return variantStyle(name).color; }
+
+  // A marker shape centred on (x, y), about 2r across; the caller sets fill and stroke.
+  function markerShape(marker, x, y, r) {
+    var d;
+    if (marker === 'diamond') { var q = r * 1.25; d = 'M' + x + ' ' + (y - q) + 'l' + q + ' ' + q + 'l' + (-q) + ' ' + q + 'l' + (-q) + ' ' + (-q) + 'Z'; }
+    else if (marker === 'square') { var s = r * 0.9; d = 'M' + (x - s) + ' ' + (y - s) + 'h' + 2 * s + 'v' + 2 * s + 'h' + (-2 * s) + 'Z'; }
+    else if (marker === 'triangle') { var t = r * 1.2; d = 'M' + x + ' ' + (y - t) + 'l' + t * 0.95 + ' ' + t * 1.6 + 'h' + (-t * 1.9) + 'Z'; }
+    else if (marker === 'triangle-down') { var u = r * 1.2; d = 'M' + x + ' ' + (y + u) + 'l' + u * 0.95 + ' ' + (-u * 1.6) + 'h' + (-u * 1.9) + 'Z'; }
+    else return sv('circle', {cx: x, cy: y, r: r, class: 'vmark-shape'});
+    return sv('path', {d: d, class: 'vmark-shape'});
+  }
+
+  // A variant's marker as a small inline picture (tables, legends); data-variant, data-color and
+  // data-marker let the tests compare variants within and across pages.
   function variantDot(name) {
-    return h('span', {class: 'dot', 'data-variant': String(name), style: 'background:' + variantColor(name)});
+    var st = variantStyle(name);
+    var m = markerShape(st.marker, 7, 7, 4.6);
+    setAttrs(m, {fill: st.color, stroke: 'rgba(0,0,0,.45)', 'stroke-width': 0.8});
+    return sv('svg', {class: 'dot', width: 14, height: 14, 'aria-hidden': 'true', 'data-variant': String(name),
+      'data-color': st.color, 'data-marker': st.marker}, m);
   }
 
   // The talk's pastels, for geometry.
@@ -279,6 +347,7 @@
     else if (shape === 'ring-red') sw.appendChild(sv('circle', {cx: 9, cy: 7, r: 5, fill: color, stroke: '#c0392b', 'stroke-width': 2.5}));
     else if (shape === 'cross') sw.appendChild(sv('path', {d: 'M4 2L14 12M4 12L14 2', stroke: color, 'stroke-width': 2.2}));
     else if (shape === 'diamond') sw.appendChild(sv('path', {d: 'M9 0.5L15.5 7L9 13.5L2.5 7Z', fill: color, stroke: '#6b5200', 'stroke-width': 1}));
+    else if (shape === 'cap') sw.appendChild(sv('path', {d: 'M9 12V4M3 4h12', stroke: color, 'stroke-width': 2.2, 'stroke-linecap': 'round', fill: 'none'}));
     else if (shape === 'line') sw.appendChild(sv('line', {x1: 1, x2: 17, y1: 7, y2: 7, stroke: color, 'stroke-width': 2}));
     else if (shape === 'dash') sw.appendChild(sv('line', {x1: 1, x2: 17, y1: 7, y2: 7, stroke: color, 'stroke-width': 2, 'stroke-dasharray': '4 3'}));
     else sw.appendChild(sv('rect', {x: 1, y: 2, width: 16, height: 10, rx: 2, fill: color, stroke: 'rgba(0,0,0,.35)', 'stroke-width': 0.7}));
@@ -382,7 +451,7 @@
 
   // Totals over the whole report: judged and comparison failures, misclassifications, undecidable.
   function totals(report) {
-    var t = {judgedFailures: 0, comparisonFailures: 0, misclassified: 0, undecidable: 0, makeupFailed: 0, failingPairs: 0};
+    var t = {judgedFailures: 0, comparisonFailures: 0, misclassified: 0, undecidable: 0, makeupFailed: 0, failingPairs: 0, invalid: 0, judgedInvalid: 0};
     families(report).forEach(function (f) {
       if (Array.isArray(f.makeup)) f.makeup.forEach(function (m) { if (m && m.ok === false) ++t.makeupFailed; });
       var fv = familyVariants(f);
@@ -392,6 +461,8 @@
         if (fails > 0 && isJudged(n)) ++t.failingPairs;
         t.misclassified += wrongClass(st);
         t.undecidable += isNum(st.undecidable) ? num(st.undecidable) : 0;
+        t.invalid += caseCounts(st).invalid;
+        if (isJudged(n)) t.judgedInvalid += caseCounts(st).invalid;
       });
     });
     return t;
@@ -413,6 +484,8 @@
         names.length !== nJudged ? ' (' + nJudged + ' judged, ' + (names.length - nJudged) + ' comparison)' : ''),
       h('span', {class: t.judgedFailures > 0 ? 'bad' : ''}, h('b', {}, fmtInt(t.judgedFailures)), t.judgedFailures === 1 ? ' failure' : ' failures',
         t.comparisonFailures > 0 ? h('span', {class: 'muted'}, ' (+ ' + fmtInt(t.comparisonFailures) + ' in comparison variants, not judged)') : null),
+      t.invalid ? h('span', {class: t.judgedInvalid ? 'bad' : '', id: 'invalid-count', title: 'answers that are no valid answer, counted in the failures (judged variants: ' + fmtInt(t.judgedInvalid) + ')'},
+        h('b', {}, fmtInt(t.invalid)), t.invalid === 1 ? ' invalid answer' : ' invalid answers') : null,
       t.makeupFailed ? h('span', {class: 'bad'}, h('b', {}, String(t.makeupFailed)), ' make-up checks failed') : null,
       h('span', {class: rejected > 0 ? 'bad' : ''}, h('a', {href: '#rejected'}, h('b', {}, fmtInt(rejected)), ' rejected')));
     return h('header', {class: 'page-head'},
@@ -498,15 +571,21 @@
             ? [formula && formula !== commonFormula ? formula : null, has(v.bound.unit_roundoff) ? 'u = ' + fmt(v.bound.unit_roundoff) : null].filter(Boolean).join(', ')
             : '—';
           return h('tr', {},
-            h('td', {class: 'nowrap'}, variantDot(String(v.name)), String(v.name),
+            h('td', {class: 'variant-cell'}, variantDot(String(v.name)), String(v.name),
               report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null, comparisonTag(String(v.name)),
               v.warm === true ? h('span', {class: 'tag'}, 'warm start') : null),
-            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, opts), h('td', {class: 'small'}, bound));
+            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, pluginFile(v), opts), h('td', {class: 'small'}, bound));
         })));
     }
-    append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), vt,
+    append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), h('div', {class: 'table-wrap'}, vt),
       commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null) : null)]);
     return sec;
+  }
+
+  // The file a plugin's variant came from (report.variants[].plugin.path), for the variants table.
+  function pluginFile(v) {
+    if (!v.plugin || typeof v.plugin !== 'object' || !has(v.plugin.path)) return null;
+    return h('div', {class: 'plugin-file'}, 'plugin file ', h('code', {}, String(v.plugin.path)));
   }
 
   // Judged variants first (they decide the verdict), then comparison variants; each group in the
@@ -543,11 +622,32 @@
 
   // --- Heat map: families x variants ---------------------------------------------------------------
 
+  // The counts every heat-map cell's hover text gives (Stats "cases", "refused", "skipped", "invalid"):
+  // `cases` are the judged ones; refused (plugins) and skipped cases are not in it. A field an older
+  // report lacks counts 0.
+  function caseCounts(st) {
+    st = st && typeof st === 'object' ? st : {};
+    function c(k) { return isNum(st[k]) ? num(st[k]) : 0; }
+    return {cases: c('cases'), refused: c('refused'), skipped: c('skipped'), invalid: c('invalid')};
+  }
+
+  function countsText(k) {
+    return plural(k.cases, 'case') + ', ' + fmtInt(k.refused) + ' refused, ' + fmtInt(k.skipped) + ' skipped, ' + fmtInt(k.invalid) + ' invalid';
+  }
+
+  // Why an answer was invalid (Stats "invalid_reasons", docs/report-schema.md), as "2 witness gap, ...".
+  function invalidReasons(st) {
+    var r = st && st.invalid_reasons && typeof st.invalid_reasons === 'object' ? st.invalid_reasons : {};
+    return Object.keys(r).filter(function (k) { return num(r[k]) > 0; }).map(function (k) { return fmtInt(r[k]) + ' ' + k.replace(/_/g, ' '); });
+  }
+
   // What a heat-map cell shows for one family x variant: the worst error relative to the error
   // bound, or (a variant without a bound) the largest normalised error.
+  // A family x variant with no judged case (cases 0: all refused, all skipped, or none) is "not run",
+  // grey, never the colour of an error of 0.
   function cellValue(st) {
     if (!st || typeof st !== 'object') return {kind: 'missing'};
-    if (isNum(st.cases) && isNum(st.skipped) && num(st.skipped) >= num(st.cases) && num(st.cases) > 0) return {kind: 'skipped'};
+    if (!(caseCounts(st).cases > 0)) return {kind: 'notrun'};
     var hb = hist(st, 'bound_ratio');
     if (hb && has(hb.max) && !isNaN(num(hb.max))) return {kind: 'bound', v: num(hb.max)};
     var hn = hist(st, 'normalized');
@@ -607,6 +707,21 @@
     return measureCtx.measureText(String(s)).width;
   }
 
+  // A cell's hover text: what its colour shows, then its cases, refused, skipped and invalid answers
+  // (every cell, 0 when the family has no statistics for the variant), failures and misclassified.
+  function cellTip(f, n, st, c) {
+    var k = caseCounts(st), fails = st && isNum(st.failures) ? num(st.failures) : 0;
+    var und = st && isNum(st.undecidable) ? num(st.undecidable) : 0, reasons = invalidReasons(st);
+    var why = k.refused > 0 && k.skipped > 0 ? 'every case refused or skipped' : k.refused > 0 ? 'every case refused by the implementation' :
+      k.skipped > 0 ? 'every case skipped' : 'no case';
+    return f.name + ' / ' + n + (isJudged(n) ? '' : ' (comparison, not judged)') + '\n' +
+      (c.kind === 'bound' ? 'worst error / bound ' + fmt(c.v) : c.kind === 'norm' ? 'largest error ' + fmt(c.v) + ' u·R (no bound)' :
+       c.kind === 'notrun' ? 'not run: ' + why : c.kind === 'missing' ? 'not run in this family' : 'no error recorded') +
+      '\n' + countsText(k) + (reasons.length ? ' (' + reasons.join(', ') + ')' : '') +
+      (st ? '\n' + plural(fails, 'failure') + ', ' + fmtInt(st ? wrongClass(st) : 0) + ' misclassified' + (und ? ', ' + fmtInt(und) + ' undecidable' : '') : '') +
+      '\nclick: the family\'s detail';
+  }
+
   function renderHeatmap(report) {
     var fams = families(report), names = orderedVariants(report);
     var wrap = h('figure', {class: 'overview-part heatmap-part'});
@@ -621,6 +736,9 @@
     var right = Math.max.apply(null, [12].concat(names.map(function (n, i) {
       return i * cw + (i >= nJudged ? gap : 0) + cw / 2 + 4 + textWidth(n, 11.5) * Math.cos(Math.PI / 3) - gridW;
     })));
+    // A bracket's label wider than its columns starts at the bracket's left end (room for it too).
+    var COMP_LABEL = 'comparison, not judged';
+    if (gap) right = Math.max(right, nJudged * cw + gap + textWidth(COMP_LABEL, 11) + 4 - gridW);
     var W = Math.ceil(x0 + gridW + right), H = Math.ceil(y0 + gridH + 30);
     var svg = sv('svg', {id: 'heatmap', class: 'plot heatmap', viewBox: '0 0 ' + W + ' ' + H, width: W, height: H, role: 'img',
       'aria-label': 'families by variants, coloured by the worst error relative to the bound'});
@@ -629,7 +747,8 @@
     names.forEach(function (n, i) {
       var cx = colX(i) + cw / 2;
       svg.appendChild(sv('g', {class: 'hm-head'},
-        sv('circle', {cx: cx, cy: y0 - 6, r: 4, fill: variantColor(n), stroke: 'rgba(0,0,0,.35)', 'stroke-width': 0.7, 'data-variant': n}),
+        setAttrs(markerShape(variantStyle(n).marker, cx, y0 - 6, 4), {fill: variantColor(n), stroke: 'rgba(0,0,0,.45)', 'stroke-width': 0.7,
+          'data-variant': n, 'data-color': variantColor(n), 'data-marker': variantStyle(n).marker}),
         sv('text', {x: cx + 2, y: y0 - 13, class: 'hm-col' + (isJudged(n) ? '' : ' comparison'), transform: 'rotate(-60 ' + (cx + 2) + ' ' + (y0 - 13) + ')'}, n)));
     });
     // Rows: one per family.
@@ -641,17 +760,12 @@
       names.forEach(function (n, i) {
         var st = fv[n], c = cellValue(st), x = colX(i), fill = cellColor(c);
         var fails = st && isNum(st.failures) ? num(st.failures) : 0, wrong = st ? wrongClass(st) : 0;
-        var und = st && isNum(st.undecidable) ? num(st.undecidable) : 0;
-        var tip = f.name + ' / ' + n + (isJudged(n) ? '' : ' (comparison, not judged)') + '\n' +
-          (c.kind === 'bound' ? 'worst error / bound ' + fmt(c.v) : c.kind === 'norm' ? 'largest error ' + fmt(c.v) + ' u·R (no bound)' :
-           c.kind === 'skipped' ? 'every case skipped' : c.kind === 'missing' ? 'not run in this family' : 'no error recorded') +
-          (st ? '\n' + plural(st.cases, 'case') + ', ' + plural(fails, 'failure') + ', ' + fmtInt(wrong) + ' misclassified' +
-            (und ? ', ' + fmtInt(und) + ' undecidable' : '') : '') + '\nclick: the family\'s detail';
+        var tip = cellTip(f, n, st, c);
         var cell = sv('g', {class: 'hm-cell', 'data-family': String(f.name), 'data-variant': n, 'data-kind': c.kind,
           'data-fail': fails > 0 ? '1' : null, 'data-wrong': wrong > 0 ? '1' : null}, svgTitle(tip));
         cell.appendChild(sv('rect', {x: x + 0.5, y: y + 0.5, width: cw - 1, height: ch - 1, rx: 2, fill: fill,
           stroke: fails > 0 && isJudged(n) ? '#c0392b' : 'none', 'stroke-width': fails > 0 && isJudged(n) ? 2 : 0}));
-        if (c.kind === 'missing' || c.kind === 'skipped' || c.kind === 'none') {
+        if (c.kind === 'missing' || c.kind === 'notrun' || c.kind === 'none') {
           cell.appendChild(sv('text', {x: x + cw / 2, y: y + ch / 2 + 4, class: 'hm-glyph muted-glyph', 'text-anchor': 'middle'}, '–'));
         }
         if (fails > 0) {
@@ -668,9 +782,11 @@
       if (i1 < i0) return;
       var a = colX(i0) + 1, b = colX(i1) + cw - 1, y = y0 + gridH + 6;
       svg.appendChild(sv('path', {d: 'M' + a + ' ' + y + 'v4H' + b + 'v-4', fill: 'none', stroke: '#a39b8e'}));
-      svg.appendChild(sv('text', {x: (a + b) / 2, y: y + 17, class: 'legend-text small', 'text-anchor': 'middle'}, text));
+      // Too wide for its columns: the judged label ends at its bracket's right end, the other starts at its left end.
+      var wide = textWidth(text, 11) > b - a, anchor = !wide ? 'middle' : i0 === 0 ? 'end' : 'start';
+      svg.appendChild(sv('text', {x: !wide ? (a + b) / 2 : i0 === 0 ? b : a, y: y + 17, class: 'legend-text small', 'text-anchor': anchor}, text));
     }
-    if (gap) { bracket(0, nJudged - 1, 'judged'); bracket(nJudged, names.length - 1, 'comparison, not judged'); }
+    if (gap) { bracket(0, nJudged - 1, 'judged'); bracket(nJudged, names.length - 1, COMP_LABEL); }
     wrap.appendChild(h('div', {class: 'plot-wrap'}, svg));
     wrap.appendChild(heatLegend(fams, names));
     return wrap;
@@ -702,7 +818,7 @@
       kinds.norm ? bar(NORM_RAMP, NORM_DECADES, 'error / (u·R), no bound', false) : null,
       h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures (red frame: judged)'),
       h('span', {class: 'legend-item'}, glyph({d: 'M13.5 1h7.5v7.5Z', fill: '#111'}), 'false overlap or separation'),
-      h('span', {class: 'legend-item'}, glyph(null, '#ece9e3'), 'not run / skipped'));
+      h('span', {class: 'legend-item'}, glyph(null, '#ece9e3'), 'not run (no judged case: refused, skipped or absent)'));
   }
 
   // --- Speed against error --------------------------------------------------------------------------
@@ -767,18 +883,12 @@
     return wrap;
   }
 
-  function markerPath(x, y, r, judged) {
-    // Judged variants: circles; comparison variants: diamonds.
-    if (judged) return sv('circle', {cx: x, cy: y, r: r});
-    return sv('path', {d: 'M' + x + ' ' + (y - r * 1.25) + 'l' + r * 1.25 + ' ' + r * 1.25 + 'l' + (-r * 1.25) + ' ' + r * 1.25 + 'l' + (-r * 1.25) + ' ' + (-r * 1.25) + 'Z'});
-  }
-
   function speedLegend(report) {
     var names = orderedVariants(report);
     function item(n) {
       var s = sv('svg', {width: 16, height: 14, class: 'legend-swatch'});
-      var m = markerPath(8, 7, 5, isJudged(n));
-      setAttrs(m, {fill: variantColor(n), stroke: '#333', 'stroke-width': 0.8});
+      var m = markerShape(variantStyle(n).marker, 8, 7, 5);
+      setAttrs(m, {fill: variantColor(n), stroke: '#333', 'stroke-width': 0.8, 'data-variant': n, 'data-color': variantColor(n), 'data-marker': variantStyle(n).marker});
       s.appendChild(m);
       return h('span', {class: 'legend-item', 'data-variant': n}, s, n);
     }
@@ -786,8 +896,8 @@
     return h('div', {class: 'speed-legend'},
       judged.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'judged'), judged.map(item)) : null,
       comp.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'comparison'), comp.map(item)) : null,
-      h('div', {class: 'legend small'}, legendItem('#bbb', 'p99 error', 'circle'), legendItem('none', 'max error', 'triangle'),
-        legendItem('#bbb', 'fails (red ring)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
+      h('div', {class: 'legend small'}, legendItem('#bbb', 'p99 error (the variant\'s marker)', 'circle'), legendItem('#888', 'max error', 'cap'),
+        legendItem('#bbb', 'fails (red outline)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
   }
 
   function speedPlot(report, family) {
@@ -857,9 +967,10 @@
       var yp = isFinite(it.p99) ? yOf(it.p99) : null, ym = isFinite(it.max) ? yOf(it.max) : null;
       if (all) pg.appendChild(sv('line', {x1: xs(it.nsLo), x2: xs(it.nsHi), y1: yp === null ? ym : yp, y2: yp === null ? ym : yp, stroke: c, 'stroke-width': 2.5, opacity: 0.55}));
       if (yp !== null && ym !== null) pg.appendChild(sv('line', {x1: x, x2: x, y1: yp, y2: ym, stroke: c, 'stroke-width': 1.5, opacity: 0.7}));
-      if (ym !== null) pg.appendChild(sv('path', {d: 'M' + x + ' ' + (ym - 6) + ' l5.5 9.5 l-11 0 Z', fill: 'white', stroke: c, 'stroke-width': 2, class: 'mk-max'}));
+      // The maximum: a cap at the end of the line from the p99 marker (not a marker shape: those are the variants').
+      if (ym !== null) pg.appendChild(sv('path', {d: 'M' + (x - 6) + ' ' + ym + 'h12', stroke: c, 'stroke-width': 3, 'stroke-linecap': 'round', class: 'mk-max'}));
       if (yp !== null) {
-        var m = markerPath(x, yp, judged ? 6 : 5.5, judged);
+        var m = markerShape(variantStyle(it.variant).marker, x, yp, 6);
         setAttrs(m, {fill: c, stroke: failing ? '#c0392b' : '#333', 'stroke-width': failing ? 2.5 : 0.8, class: 'mk-p99'});
         pg.appendChild(m);
       }
@@ -890,6 +1001,7 @@
       h('th', {rowspan: 2}, 'Variant'), h('th', {rowspan: 2, class: 'num'}, 'Cases'),
       h('th', {rowspan: 2, class: 'num', title: 'false overlap + false separation + undecidable'}, 'Mis\u00adclass.'),
       h('th', {rowspan: 2, class: 'num'}, 'Fail\u00adures'),
+      h('th', {rowspan: 2, class: 'num', title: 'answers that are no valid answer (a negative distance, a witness point off its shape, witness points further apart than the distance allows), each also a failure; by reason below the count'}, 'In\u00advalid'),
       h('th', {colspan: 2, class: 'grp'}, 'Absolute error'), h('th', {colspan: 2, class: 'grp'}, 'Error [ulps]'),
       h('th', {colspan: 2, class: 'grp'}, 'Error / (u·R)'),
       hasBound ? h('th', {class: 'grp'}, 'Error / bound') : null,
@@ -897,7 +1009,7 @@
       h('th', {rowspan: 2, class: 'num', title: 'median time per query; below it, the ratio to the baseline variant'}, 'ns / query'),
       h('th', {rowspan: 2}, 'Result'));
     var head2 = h('tr', {}, ['max', 'p99', 'max', 'p99', 'max', 'p99'].concat(hasBound ? ['max'] : [], ['mean', 'max']).map(function (t) { return h('th', {class: 'num sub'}, t); }));
-    var ncol = hasBound ? 15 : 14;
+    var ncol = hasBound ? 16 : 15;
     var body = h('tbody', {});
     var present = names.filter(function (n) { return n in fv; }), missing = names.filter(function (n) { return !(n in fv); });
     var startedComparison = false;
@@ -927,6 +1039,7 @@
           wrongClass(st) > 0 || num(st.undecidable) > 0 ? h('div', {class: 'small'}, misDetail.join(', ')) : null),
         h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: [rate].concat(failDetail).filter(Boolean).join(', ') || null},
           fmtInt(st.failures), failDetail.length ? h('div', {class: 'small'}, failDetail.join(', ')) : null),
+        invalidCell(st, vn),
         h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
         h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
         h('td', {class: 'num'}, fmt(hn && hn.max)), h('td', {class: 'num'}, fmt(hn && hn.p99)),
@@ -940,6 +1053,14 @@
       body.appendChild(h('tr', {class: 'missing-row'}, h('td', {colspan: ncol, class: 'muted small'}, 'not run in this family: ' + missing.join(', '))));
     }
     return h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
+  }
+
+  // The invalid answers of a family x variant (0 when an older report has no "invalid"), with their
+  // reasons under the count and as hover text.
+  function invalidCell(st, vn) {
+    var n = caseCounts(st).invalid, reasons = invalidReasons(st);
+    return h('td', {class: 'num invalid-cell' + (n > 0 && isJudged(vn) ? ' bad' : ''), 'data-invalid': String(n), title: reasons.join(', ') || null},
+      fmtInt(n), reasons.map(function (r) { return h('div', {class: 'reasons'}, r); }));
   }
 
   // --- Families: histograms -------------------------------------------------------------------------
@@ -1138,7 +1259,7 @@
       draw();
     }}, metrics.map(function (m) { return h('option', {value: m.key}, m.label); }));
     draw();
-    var legend = h('div', {class: 'legend'}, present.map(function (n) { return legendItem(variantColor(n), n); }),
+    var legend = h('div', {class: 'legend'}, present.map(function (n) { return h('span', {class: 'legend-item'}, variantDot(n), n); }),
       legendItem('#555', 'p99', 'dash'));
     card.appendChild(h('div', {class: 'family-plots'},
       h('div', {class: 'plot-box'}, h('div', {class: 'plot-title'}, 'Error distribution ', metrics.length ? select : null), histHolder, legend),
@@ -1168,8 +1289,8 @@
     var rej = Array.isArray(report.rejected) ? report.rejected : [];
     if (!rej.length) { sec.appendChild(h('p', {class: 'note'}, 'No input was rejected.')); }
     else {
-      sec.appendChild(h('table', {class: 'data compact'}, h('thead', {}, h('tr', {}, h('th', {}, 'Input'), h('th', {}, 'Reason'))),
-        h('tbody', {}, rej.map(function (r) { r = r || {}; return h('tr', {}, h('td', {}, h('code', {}, String(r.name))), h('td', {}, String(r.reason))); }))));
+      sec.appendChild(h('div', {class: 'table-wrap'}, h('table', {class: 'data compact'}, h('thead', {}, h('tr', {}, h('th', {}, 'Input'), h('th', {}, 'Reason'))),
+        h('tbody', {}, rej.map(function (r) { r = r || {}; return h('tr', {}, h('td', {}, h('code', {}, String(r.name))), h('td', {}, String(r.reason))); })))));
     }
     if (has(report.worst_cases_file)) sec.appendChild(h('p', {class: 'small muted'}, 'The worst cases are also in ', h('code', {}, String(report.worst_cases_file)),
       ' (replay them with gjk-validate explain).'));
@@ -1818,25 +1939,42 @@
         this.step === tr.length - 1 && has(vd.stop) ? [h('dt', {}, 'stop'), h('dd', {}, String(vd.stop))] : null))]);
   };
 
+  // A variant's verdict on this case, for the results table: invalid (with its reason), misclassified,
+  // skipped or refused, a plugin's error, or correct.
+  function caseClass(r) {
+    if (has(r.invalid)) return h('td', {class: 'bad invalid-reason', title: 'not a valid answer (docs/report-schema.md)'}, 'invalid: ' + String(r.invalid).replace(/_/g, ' '));
+    if (r.misclassified) return h('td', {class: 'bad'}, String(r.misclassified));
+    if (has(r.plugin_status)) return h('td', {class: 'bad small'}, 'plugin ' + r.plugin_status + (has(r.plugin_detail) ? ': ' + r.plugin_detail : ''));
+    if (has(r.skipped)) return h('td', {class: 'small muted'}, 'not run: ' + String(r.skipped));
+    return h('td', {class: 'small muted'}, 'correct');
+  }
+
   Viewer.prototype.drawResults = function () {
     var d = this.d, ex = d.exact || {}, vmap = d.variants || {};
     var names = this.variants;
-    var hasBound = names.some(function (n) { return vmap[n] && vmap[n].errors && has(vmap[n].errors.bound_ratio); });
+    var any = function (f) { return names.some(function (n) { return vmap[n] && f(vmap[n]); }); };
+    var hasBound = any(function (r) { return r.errors && has(r.errors.bound_ratio); });
+    // The witness columns when some variant was held to a witness bound (or answered invalidly).
+    var hasWit = any(function (r) { return has(r.witness_bound) || has(r.invalid); });
     var sq = has(ex.squared) ? String(ex.squared) : null;
     append(this.resultInfo, [
       h('div', {class: 'table-wrap'}, h('table', {class: 'data compact results'},
         h('thead', {}, h('tr', {}, h('th', {}, ''), h('th', {class: 'num'}, 'distance'), h('th', {class: 'num'}, 'abs error'), h('th', {class: 'num'}, 'ulps'),
-          h('th', {class: 'num'}, 'error / (u·R)'), hasBound ? h('th', {class: 'num'}, 'error / bound') : null, h('th', {class: 'num'}, 'iter.'), h('th', {}, 'stop'), h('th', {}, 'class'))),
+          h('th', {class: 'num'}, 'error / (u·R)'), hasBound ? h('th', {class: 'num'}, 'error / bound') : null,
+          hasWit ? [h('th', {class: 'num', title: 'largest distance of a witness point to its shape'}, 'witness error'),
+            h('th', {class: 'num', title: 'the derived witness bound this answer was held to'}, 'witness bound')] : null,
+          h('th', {class: 'num'}, 'iter.'), h('th', {}, 'stop'), h('th', {}, 'class'))),
         h('tbody', {},
-          h('tr', {class: 'exact-row'}, h('td', {}, 'exact'), h('td', {class: 'num mono'}, fmtFull(ex.distance)), h('td', {colspan: hasBound ? 6 : 5}),
+          h('tr', {class: 'exact-row'}, h('td', {}, 'exact'), h('td', {class: 'num mono'}, fmtFull(ex.distance)), h('td', {colspan: 5 + (hasBound ? 1 : 0) + (hasWit ? 2 : 0)}),
             h('td', {class: 'small muted'}, ex.overlap === true ? 'overlap' : ex.overlap === false ? 'separated' : '')),
           names.map(function (n) {
             var r = vmap[n] || {}, e = r.errors || {};
-            return h('tr', {}, h('td', {class: 'nowrap'}, variantDot(n), n),
+            return h('tr', {'data-variant': n}, h('td', {class: 'variant-cell'}, variantDot(n), n),
               h('td', {class: 'num mono'}, fmtFull(r.distance)), h('td', {class: 'num'}, fmt(e.abs)), h('td', {class: 'num'}, fmt(e.ulps)),
               h('td', {class: 'num'}, fmt(e.normalized)), hasBound ? h('td', {class: 'num' + (num(e.bound_ratio) > 1 ? ' bad' : '')}, fmt(e.bound_ratio)) : null,
-              h('td', {class: 'num'}, fmtInt(r.iterations)), h('td', {class: 'small'}, has(r.stop) ? String(r.stop) : '—'),
-              h('td', {class: r.misclassified ? 'bad' : 'small muted'}, r.misclassified ? String(r.misclassified) : 'correct'));
+              hasWit ? [h('td', {class: 'num' + (num(e.witness) > num(r.witness_bound) ? ' bad' : '')}, fmt(e.witness)),
+                h('td', {class: 'num witness-bound'}, fmt(r.witness_bound))] : null,
+              h('td', {class: 'num'}, fmtInt(r.iterations)), h('td', {class: 'small'}, has(r.stop) ? String(r.stop) : '—'), caseClass(r));
           })))),
 
     ]);
@@ -1868,6 +2006,12 @@
   function renderReportPage(app, report) {
     if (!report || typeof report !== 'object') throw new Error('the report data is not a JSON object');
     readJudged(report);
+    // Every name the page draws: the report's variants, the families' and the worst cases'.
+    var drawn = variantNames(report);
+    (Array.isArray(report.worst) ? report.worst : []).forEach(function (w) {
+      if (w && w.variants && typeof w.variants === 'object') drawn = drawn.concat(Object.keys(w.variants));
+    });
+    setVariantNames(drawn);
     document.title = 'GJK report — ' + (report.passed === true ? 'PASS' : report.passed === false ? 'FAIL' : 'no verdict') +
       (report.context && report.context.date ? ' — ' + report.context.date : '');
     app.appendChild(guarded('header', function () { return renderHeader(report); }));
@@ -1890,6 +2034,7 @@
   function renderCasePage(app, detail) {
     if (!detail || typeof detail !== 'object') throw new Error('the case data is not a JSON object');
     document.title = 'GJK case — ' + (has(detail.name) ? detail.name : 'unnamed');
+    setVariantNames(detail.variants && typeof detail.variants === 'object' ? Object.keys(detail.variants) : []);
     app.appendChild(h('header', {class: 'page-head'}, h('div', {class: 'title-row'}, h('div', {},
       h('h1', {}, 'GJK iteration viewer'),
       h('div', {class: 'subtitle'}, 'case ', h('code', {}, has(detail.name) ? String(detail.name) : 'unnamed'))))));
