@@ -131,7 +131,7 @@ void hashOutput(Hashes& h, const gjk::DistanceOutput<T>& o, const gjk::SimplexCa
 struct Counts
 {
     int queries = 0, certified = 0, apart = 0, broken = 0, bounded = 0, beyondBound = 0,
-        disjoint = 0;
+        disjoint = 0, unmatched = 0; // unmatched: intervals with none left in the --against dump
     double worstRatio = 0; // largest max(d - lower, upper - d) / bound
 };
 
@@ -210,11 +210,16 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
             if (o.certify)
             {
                 const double interval[2] = {out.lower, out.upper};
-                if (dumpFile)
-                    std::fwrite(interval, sizeof interval, 1, dumpFile);
+                if (dumpFile && std::fwrite(interval, sizeof interval, 1, dumpFile) != 1)
+                {
+                    std::printf("%s BROKEN: writing the interval dump failed\n", name);
+                    std::exit(1);
+                }
                 double other[2];
-                if (againstFile && std::fread(other, sizeof other, 1, againstFile) == 1 &&
-                    !(std::max(interval[0], other[0]) <= std::min(interval[1], other[1])))
+                if (againstFile && std::fread(other, sizeof other, 1, againstFile) != 1)
+                    ++n.unmatched; // a short dump: a comparison that cannot be made is a failure
+                else if (againstFile &&
+                         !(std::max(interval[0], other[0]) <= std::min(interval[1], other[1])))
                     ++n.disjoint;
             }
             if (out.certified)
@@ -248,12 +253,12 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
     // The worst ratio goes to stderr: it is a measurement, and its bits may differ between builds.
     std::fprintf(stderr, "%s bound checked on %d queries, worst error / bound %.3g\n", name,
                  n.bounded, n.worstRatio);
-    if (n.broken || n.beyondBound || n.disjoint)
+    if (n.broken || n.beyondBound || n.disjoint || n.unmatched)
     {
         std::printf(
             "%s BROKEN: %d inverted certified intervals, %d errors beyond the bound, %d intervals "
-            "disjoint from the other build's\n",
-            name, n.broken, n.beyondBound, n.disjoint);
+            "disjoint from the other build's, %d missing from it (its dump is shorter)\n",
+            name, n.broken, n.beyondBound, n.disjoint, n.unmatched);
         std::fflush(stdout);
         std::exit(1);
     }
@@ -277,7 +282,15 @@ int main(int argc, char** argv)
     // 10,000 pairs per type, each queried cold and warm: 20,000 queries per type, 40,000 in all.
     run<float>("float ", 20260601, 10000);
     run<double>("double", 20260602, 10000);
-    if (dumpFile)
-        std::fclose(dumpFile);
+    if (dumpFile && std::fclose(dumpFile) != 0)
+    {
+        std::printf("BROKEN: writing the interval dump failed\n");
+        return 1;
+    }
+    if (againstFile && std::fgetc(againstFile) != EOF) // a longer dump: another sequence of queries
+    {
+        std::printf("BROKEN: the --against dump holds more intervals than this build computed\n");
+        return 1;
+    }
     return 0;
 }

@@ -5,7 +5,8 @@
       cmake --install B to W/prefix; copy examples/plugin to W (nothing else of the source tree) and
       build it with find_package(gjk2d CONFIG), CMAKE_PREFIX_PATH=W/prefix only; run the installed
       gjk-validate with it; check that report.json has its two variants (and the shipped Box2D
-      adapter's) in every family, with counts and ns/query; compile and link a consumer of
+      adapter's) in every family, with counts and ns/query, and that example-gjk gives double's
+      answer on every case (cases.jsonl); compile and link a consumer of
       gjk2d::exact with `pkg-config --cflags --libs gjk2d`, and with find_package.
   plugin_ci.py contained --exe E --plugin P --kind good-but-quirky|crash|hang --work W
       a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
@@ -55,6 +56,26 @@ def variant_stats(report, name):
     return out
 
 
+def same_answers(cases_jsonl, name, ref_name):
+    """Fails unless variant `name` gives `ref_name`'s answer on every case; returns the count.
+    The answer is what a plugin returns (gjk2d/plugin.h, gjk2d_result_d): the distance, the witness
+    points and the iteration count. A plugin's normal is the runner's, from its witness points, and
+    its stop reason is "plugin": neither is the plugin's to match."""
+    compared = 0
+    with open(cases_jsonl) as f:
+        for line in f:
+            c = json.loads(line)
+            if "rejected" in c:
+                fail("{}: case {} rejected: {}".format(cases_jsonl, c["name"], c["rejected"]))
+            mine, ref = c["variants"][name], c["variants"][ref_name]
+            for key in ("distance", "pointA", "pointB", "iterations"):
+                if key not in ref or mine.get(key) != ref[key]:
+                    fail("{} differs from {} on {}: {} {} against {}".format(
+                        name, ref_name, c["name"], key, mine.get(key), ref.get(key)))
+            compared += 1
+    return compared
+
+
 def sdk(a):
     fresh(a.work)
     prefix = os.path.join(a.work, "prefix")
@@ -71,7 +92,7 @@ def sdk(a):
     out = os.path.join(a.work, "report")
     p = run([os.path.join(prefix, "bin", "gjk-validate"), "run", "--family", "random:300",
              "--family", "hard/sliver:20", "--plugin", plugin, "--passes", "1", "--out", out,
-             "--no-progress"])
+             "--no-progress", "--per-case"])
     report = json.load(open(os.path.join(out, "report.json")))
     names = [v["name"] for v in report["variants"]]
     for name in ["example-gjk", "example-naive-f32", "box2d-2.4.1"]:
@@ -83,11 +104,11 @@ def sdk(a):
         for fam, st in variant_stats(report, name).items():
             if st["cases"] == 0 or not isinstance(st["ns_per_query"], (int, float)):
                 fail("{} in {}: no cases or no ns/query: {}".format(name, fam, st))
-    # example-gjk is gjk2d's reference double behind the ABI: the same answers as `double`.
-    for fam, st in variant_stats(report, "example-gjk").items():
-        ref = report["families"][[f["name"] for f in report["families"]].index(fam)]["variants"]["double"]
-        if st["errors"]["abs"]["max"] != ref["errors"]["abs"]["max"] or st["failures"] != ref["failures"]:
-            fail("example-gjk differs from double in {}".format(fam))
+    # example-gjk is gjk2d's reference double behind the ABI: the same answers as `double`, case by
+    # case and bit for bit (cases.jsonl: JSON numbers round-trip doubles).
+    compared = same_answers(os.path.join(out, "cases.jsonl"), "example-gjk", "double")
+    if compared != 320:
+        fail("cases.jsonl compared {} cases, expected 320 (random:300, hard/sliver:20)".format(compared))
     # pkg-config: a consumer of the exact side, compiled and linked from gjk2d.pc alone.
     consumer = os.path.join(a.work, "consumer.cpp")
     open(consumer, "w").write(

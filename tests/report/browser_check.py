@@ -24,7 +24,8 @@ Drives Chromium over the DevTools protocol on --remote-debugging-pipe (Python st
 usage: browser_check.py --chromium PATH --render report_render --report REPORT.json --out DIR
                         [--screenshot PNG] [--screenshot-1280 PNG] [--case-screenshot PNG]
                         [--expect-index HTML] [--campaign EXE ARG... -- | --generate CMD ARG... --]
-Exit status: 0 pass, 1 fail, 77 Chromium missing (CTest SKIP_RETURN_CODE).
+Exit status: 0 pass, 1 fail, 77 Chromium missing (CTest SKIP_RETURN_CODE); with GJK2D_REQUIRE_ALL=1
+(CI) a missing Chromium is a failure, 1.
 """
 import argparse
 import base64
@@ -641,6 +642,10 @@ def main(argv):
 
     chromium = a.chromium if os.path.isabs(a.chromium) else shutil.which(a.chromium)
     if not chromium or not os.access(chromium, os.X_OK):
+        if os.environ.get('GJK2D_REQUIRE_ALL') == '1':  # CI (.ci/run): a skip is a failure
+            log(f'FAIL: Chromium not found at {a.chromium}, and GJK2D_REQUIRE_ALL=1 makes a skip a failure '
+                '(scripts/setup.sh --tests installs it)')
+            return 1
         log(f'SKIP: Chromium not found at {a.chromium} (scripts/setup.sh --tests installs it)')
         return 77
     out = Path(a.out)

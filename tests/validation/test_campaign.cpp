@@ -4,6 +4,7 @@
 #include "inputs/geometry.hpp"
 #include "report/report.hpp"
 
+#include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -382,25 +383,28 @@ TEST_CASE("case detail: trace and Minkowski difference in world coordinates", "[
     c.a.px = 10;
     c.a.py = -3;
     c.b.points = {{0, 0}, {1, 0}, {0, 1}};
-    c.b.px = 14;
-    c.b.py = -3;
+    c.b.px = 12.5; // 1.56 apart, an edge of A closest: the double trace is a vertex, then an edge
+    c.b.py = -2;
     EvalContext ctx;
     ctx.variants = parseVariants("double,float");
     const CaseOutcome o = evaluateCase(c, ctx);
     REQUIRE(o.rejected.empty());
     const Json d = caseDetail(c, "test", ctx, o, "normalized");
     const auto wa = worldPoints(c.a), wb = worldPoints(c.b);
+    int vertices = 0;
     for (const auto& step : d["variants"]["double"]["trace"])
         for (const auto& v : step["simplex"])
         {
+            ++vertices;
             const auto& pa = wa[v["iA"].get<std::size_t>()];
             const auto& pb = wb[v["iB"].get<std::size_t>()];
-            CHECK(v["wA"][0].get<double>() == Approx(pa[0]).margin(1e-12));
-            CHECK(v["wA"][1].get<double>() == Approx(pa[1]).margin(1e-12));
-            CHECK(v["wB"][0].get<double>() == Approx(pb[0]).margin(1e-12));
-            CHECK(v["w"][0].get<double>() == Approx(pa[0] - pb[0]).margin(1e-12));
-            CHECK(v["w"][1].get<double>() == Approx(pa[1] - pb[1]).margin(1e-12));
+            CHECK(v["wA"][0].get<double>() == within(pa[0], 1e-12));
+            CHECK(v["wA"][1].get<double>() == within(pa[1], 1e-12));
+            CHECK(v["wB"][0].get<double>() == within(pb[0], 1e-12));
+            CHECK(v["w"][0].get<double>() == within(pa[0] - pb[0], 1e-12));
+            CHECK(v["w"][1].get<double>() == within(pa[1] - pb[1], 1e-12));
         }
+    CHECK(vertices == 3); // steps of 1 and 2 vertices
     // Minkowski difference A - B: counter-clockwise, positive area, 4 + 3 edges at most.
     const Json& mk = d["minkowski"];
     REQUIRE(mk.size() >= 3);
@@ -442,7 +446,7 @@ TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
     m.unitRoundoff = unitRoundoff(Scalar::Double);
     const double bd = errorBound(*findVariant("double"), m);
     CHECK(bf > 0);
-    CHECK(bf / bd == Approx(std::ldexp(1.0, 29)));
+    CHECK(bf / bd == std::ldexp(1.0, 29)); // u_float / u_double; every other factor the same
 
     // Exact touching: double GJK may answer a tiny positive distance; within the bound it is
     // "undecidable", never a failure.
@@ -458,7 +462,7 @@ TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
     CHECK((o.variants[0].mis == Misclass::None || o.variants[0].mis == Misclass::Undecidable));
 }
 
-TEST_CASE("a broken invariant of the truth fails the run; only invalid input rejects a case",
+TEST_CASE("a broken invariant of the truth fails the run, and only invalid input rejects a case",
           "[campaign][errors]")
 {
     // Regression (hostile-input hardening: a broken invariant of the truth rejected cases): computeTruth caught every std::exception of the exact side

@@ -165,7 +165,7 @@ TEST_CASE("a file of another format is refused", "[cases]")
     CHECK_THROWS_AS(readCaseFile("/nonexistent/cases.json"), InputError);
 }
 
-TEST_CASE("invalid cases are rejected naming file, case and field; the others are valid", "[cases]")
+TEST_CASE("invalid cases are rejected naming file, case and field, and the others are valid", "[cases]")
 {
     const CaseFile f = readCaseFile(std::string(VALIDATION_TEST_DATA) + "/bad-cases.json");
     REQUIRE(f.entries.size() == 9);
@@ -403,7 +403,7 @@ TEST_CASE("a number that overflows or silently becomes 0 is refused", "[cases][h
     CHECK(bits(p[2][1]) == bits(-0.0)); // regression: the integer literal -0 was read as +0
 }
 
-TEST_CASE("names must be short, printable UTF-8; labels are excerpts", "[cases][hostile]")
+TEST_CASE("names must be short, printable UTF-8, and labels are excerpts", "[cases][hostile]")
 {
     // Regression (hostile-input hardening): a name or path with bytes that are not UTF-8 went into
     // labels and report.json, where nlohmann's dump threw type_error (abort). A JSON string is

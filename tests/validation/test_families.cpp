@@ -131,9 +131,14 @@ TEST_CASE("a make-up check fails on cases that do not have that make-up", "[fami
     CHECK(failed >= 2);
     // Statistical checks are not judged below 100 cases.
     f.cases.resize(50);
+    int skipped = 0;
     for (const auto& m : makeupOf(f))
         if (m.skipped)
+        {
             CHECK(m.ok);
+            ++skipped;
+        }
+    CHECK(skipped == 2); // the two fractions of randomMakeup(); its three every-case checks are judged
 }
 
 // --- The numerical-stability sub-families (scale and offset sweeps, short contact edges, near
@@ -328,35 +333,64 @@ TEST_CASE("stability sub-families: exact contacts are exact, gaps are gaps",
         }
     CHECK(touching == 43);
     // Short contact edges: touching exactly; gaps of a thousandth of an edge of 1e-9 resolved.
+    // 126 cases = 3 partners x 6 gaps x 7 lengths (genShortContactEdge): per branch 21 touching,
+    // 63 gaps (gap-l, -l/10, -l/1000), 42 overlaps, and 3 gaps of l/1000 at l = 1e-9.
+    int touches = 0, gaps = 0, overlaps = 0, tinyGaps = 0;
     for (const auto& c : family("short-contact-edge", 1).cases)
     {
         INFO(c.name);
         const auto t = truthOf(c);
         if (nameHas(c, "touching"))
+        {
             CHECK(t.squared == 0);
+            ++touches;
+        }
         else if (nameHas(c, "-gap-"))
+        {
             CHECK(t.distance > 0);
+            ++gaps;
+        }
         else
+        {
             CHECK(exactIsZero(t));
+            ++overlaps;
+        }
         if (nameHas(c, "l1e-9-gap-l/1000"))
+        {
             CHECK(std::abs(t.distance - 1e-12) < 1e-14);
+            ++tinyGaps;
+        }
     }
+    CHECK(touches == 21);
+    CHECK(gaps == 63);
+    CHECK(overlaps == 42);
+    CHECK(tinyGaps == 3);
     // Near-zero separations: exact contacts are at distance 0, separations of 1e-3..1e-12 land
-    // within 1e-14 of their target (the construction's rounding is far below them).
+    // within 1e-14 of their target (the construction's rounding is far below them). 180 cases =
+    // 12 x 15 levels (genNearZeroSeparation): 12 exact contacts, 10 x 12 targets of 1e-3..1e-12.
+    int contacts = 0, targets = 0;
     for (const auto& c : family("near-zero-separation", 1).cases)
     {
         INFO(c.name);
         const auto t = truthOf(c);
         if (nameHas(c, "exact-contact"))
+        {
             CHECK(t.squared == 0);
+            ++contacts;
+        }
         const auto pos = c.name.rfind("sep1e-");
         if (pos != std::string::npos)
         {
             const int e = std::stoi(c.name.substr(pos + 6));
             if (e <= 12)
+            {
                 CHECK(std::abs(t.distance - std::pow(10.0, -e)) < 1e-14);
+                ++targets;
+            }
         }
     }
+    CHECK(contacts == 12);
+    CHECK(targets == 120);
 }
 
 TEST_CASE("cold-start sweep: every vertex pair starts, every order describes the same pair",

@@ -138,7 +138,7 @@ TEST_CASE("an error of exactly the bound is within it: undecidable, not a failur
     CHECK(beyond.failed);
 }
 
-TEST_CASE("false separation needs a positive answer; a zero answer on a zero truth is right",
+TEST_CASE("false separation needs a positive answer: a zero answer on a zero truth is right",
           "[judgement][classification]")
 {
     const VariantInfo* dbl = findVariant("double");

@@ -8,8 +8,10 @@
 #include <gjk_html/html.hpp>
 #endif
 
+#include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -137,7 +139,7 @@ TEST_CASE("binary-search support is skipped as not applicable where its precondi
     CHECK(o.variants[2].notApplicable);
     const CaseOutcome ok = evaluateCase(caseOf(regular(20), regular(40)), ctx);
     CHECK_FALSE(ok.variants[1].skipped);
-    CHECK(ok.variants[1].distance == Approx(ok.variants[0].distance).margin(1e-12));
+    CHECK(ok.variants[1].distance == within(ok.variants[0].distance, 1e-12));
 }
 
 TEST_CASE("a reduced campaign over every variant: judged variants pass, comparison variants run",
@@ -272,21 +274,60 @@ TEST_CASE("bench: the variants' passes alternate", "[variants][bench]")
 
 TEST_CASE("every-start variants judge the worst answer over many starts", "[variants]")
 {
-    // The talk's walk-through pentagon against the origin (distance exactly 1): every start the
-    // variant tries must agree with the truth, so the worst one is as good as the cold one; and a
-    // wrong truth makes the worst answer the one farthest from it, whatever the start.
-    Case c;
-    c.name = "walk";
-    c.a.points = {{-4, 3}, {-4, 6}, {3, 5}, {3, 1}, {-1, 1}};
-    c.b.points = {{0, 0}};
-    const PreparedCase p = prepare(c);
     const VariantInfo* v = findVariant("double-every-start");
     REQUIRE(v != nullptr);
     REQUIRE(v->start == Start::EveryStart);
-    const auto worst = worstStart<double>(p, *v, 1.0);
-    CHECK(worst.distance == 1.0);
-    const auto far = worstStart<double>(p, *v, 100.0);
-    CHECK(far.distance == 1.0); // every start gives 1: the farthest from 100 is still 1
+    // The talk's walk-through pentagon against the origin (distance exactly 1): every start the
+    // variant tries agrees with the truth.
+    Case walk;
+    walk.name = "walk";
+    walk.a.points = {{-4, 3}, {-4, 6}, {3, 5}, {3, 1}, {-1, 1}};
+    walk.b.points = {{0, 0}};
+    CHECK(worstStart<double>(prepare(walk), *v, 1.0).distance == 1.0);
+
+    // Starts that disagree: a pentagon and a triangle 2.016 apart (found by a random search over
+    // small polygons; digits round-trip), where the starts' answers differ in the last bits. With
+    // at most 12 points a side the variant starts from every vertex pair (and four edge and
+    // triangle caches besides), so the answers of the cold start and of every vertex pair, computed
+    // here, are among those it judges: whatever the truth, the judged answer must be at least as
+    // far from it as each of them, never the best of them.
+    Case c;
+    c.name = "starts-disagree";
+    c.a.points = {{0.1135283153087232, 0.89031030845795578},
+                  {-0.8116532416105342, 0.3830928596390818},
+                  {-0.61515760570306366, -0.6535459003536106},
+                  {0.43146493284803461, -0.78700643926576508},
+                  {0.8818175991568401, 0.16714917152233785}};
+    c.b.points = {{4.3673514235223836, -1.1939405016232185},
+                  {3.0666654538527451, 1.472448605923772},
+                  {2.7991215561036595, -0.78729330572428835}};
+    const PreparedCase p = prepare(c);
+    const gjk::DistanceInput<double> in = p.input<double>();
+    gjk::SimplexCache cold;
+    double lo = gjk::distance(in, cold, v->options).distance, hi = lo;
+    for (int i = 0; i < in.proxyA.count; ++i)
+        for (int j = 0; j < in.proxyB.count; ++j)
+        {
+            gjk::SimplexCache start{1, {i, 0, 0}, {j, 0, 0}};
+            const double d = gjk::distance(in, start, v->options).distance;
+            lo = std::min(lo, d);
+            hi = std::max(hi, d);
+        }
+    INFO("the starts' answers range over [" << lo << ", " << hi << "]");
+    REQUIRE(lo < hi); // the starts disagree
+    // A truth below every answer: the farthest is the largest; above every answer: the smallest.
+    CHECK(worstStart<double>(p, *v, 0.0).distance >= hi);
+    CHECK(worstStart<double>(p, *v, 100.0).distance <= lo);
+    // The campaign judges that answer against the exact truth.
+    EvalContext ctx;
+    ctx.variants = parseVariants("double-every-start");
+    const CaseOutcome o = evaluateCase(c, ctx);
+    REQUIRE(o.rejected.empty());
+    const VariantOutcome& judged = o.variants[0];
+    INFO("truth " << judged.truth << ", judged answer " << judged.distance);
+    CHECK(judged.distance == worstStart<double>(p, *v, judged.truth).distance);
+    CHECK(std::abs(judged.distance - judged.truth) >=
+          std::max(std::abs(lo - judged.truth), std::abs(hi - judged.truth)));
 }
 
 #ifdef GJK2D_HAVE_HTML
