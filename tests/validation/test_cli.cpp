@@ -6,8 +6,12 @@
 #include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -57,7 +61,8 @@ std::map<std::string, std::string> snapshot(const fs::path& dir)
 std::vector<std::string> leftovers(const fs::path& dir)
 {
     std::vector<std::string> v;
-    const std::string prefix = "." + dir.filename().string();
+    std::string prefix = "."; // appended: GCC 12 warns (-Wrestrict, a false positive) on "." + name
+    prefix += dir.filename().string();
     for (const auto& e : fs::directory_iterator(dir.parent_path()))
         if (e.path().filename().string().rfind(prefix, 0) == 0)
             v.push_back(e.path().string());
@@ -213,4 +218,165 @@ TEST_CASE("docs list every exit code as kExitCodeTable says", "[cli]")
     const std::string help = exitCodesHelp();
     for (const auto& e : kExitCodeTable)
         CHECK(contains(help, "\n  " + std::to_string(e.code) + "  "));
+}
+
+// Issue 30: a run killed by SIGKILL left its staging directory (.DIR.tmp-...) beside DIR, and no
+// later run removed it. Now a run removes those of DIR's earlier runs that are dead: of this host,
+// whose pid is gone (or reused by a later process). A live run's, another host's, and one of the
+// old name (.DIR.tmp-XXXXXX, before the owner was in it) changed within 7 days are kept; one of
+// the old name untouched for longer is removed.
+TEST_CASE("cli a later run removes the staging directory of a run killed by SIGKILL", "[cli]")
+{
+    const fs::path d = freshDir("killed") / "latest";
+    const std::string outDir = d.string();
+    const pid_t pid = ::fork();
+    if (pid == 0)
+    {
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::execl(GJK_VALIDATE_EXE, GJK_VALIDATE_EXE, "run", "--family", "random:2000000",
+                "--variants", "double", "--no-default-plugins", "--no-timing", "--out",
+                outDir.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    // The run stages its directory before its first case; it is killed once the directory is there.
+    std::vector<std::string> staged;
+    for (int i = 0; i < 600 && staged.empty(); ++i)
+    {
+        ::usleep(50 * 1000);
+        staged = leftovers(d);
+    }
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    REQUIRE(WIFSIGNALED(status));
+    REQUIRE(staged.size() == 1);
+    CHECK(fs::is_directory(staged[0]));
+    const std::string name = fs::path(staged[0]).filename().string();
+    INFO(name);
+    CHECK(name.rfind(".latest.tmp-", 0) == 0);
+    const std::string owner = fmt::format("-{}-", pid); // fmt: GCC 12's -Wrestrict false positive on "-" + s
+    CHECK(contains(name, owner));
+
+    // Beside it: a live process's (this test's), another host's, an old-named one of today, and
+    // an old-named one untouched for 8 days.
+    char host[256] = {};
+    ::gethostname(host, sizeof host - 1);
+    const fs::path parent = d.parent_path();
+    const fs::path live = parent / (".latest.tmp-" + std::string(host) + "-" + std::to_string(::getpid()) + "-Abc123");
+    const fs::path otherHost = parent / (".latest.tmp-no-such-host.example-" + std::to_string(pid) + "-Abc123");
+    const fs::path legacyNew = parent / ".latest.tmp-Abc123", legacyOld = parent / ".latest.tmp-Def456";
+    for (const auto& p : {live, otherHost, legacyNew, legacyOld})
+        fs::create_directories(p);
+    fs::last_write_time(legacyOld, fs::file_time_type::clock::now() - std::chrono::hours(8 * 24));
+
+    const Run again = runCli({"run", "--family", "random:20", "--variants", "double",
+                              "--no-default-plugins", "--no-timing", "--out", outDir});
+    INFO(again.err);
+    REQUIRE(again.code == kExitPass);
+    CHECK(fs::is_regular_file(d / "report.json"));
+    CHECK(!fs::exists(staged[0]));
+    CHECK(!fs::exists(legacyOld));
+    CHECK(fs::is_directory(live));
+    CHECK(fs::is_directory(otherHost));
+    CHECK(fs::is_directory(legacyNew));
+    for (const auto& p : {live, otherHost, legacyNew})
+        fs::remove_all(p);
+}
+
+// Issue 30, "smaller things": the plugins on the command line.
+namespace
+{
+const fs::path kShippedPlugin = fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / "gjk2d-box2d.so";
+
+std::string oneSpaced(const std::string& s) // help text as one line: its wrapping aside
+{
+    std::string out;
+    for (const char c : s)
+        if (!std::isspace(static_cast<unsigned char>(c)))
+            out += c;
+        else if (!out.empty() && out.back() != ' ')
+            out += ' ';
+    return out;
+}
+
+std::vector<std::string> linesWith(const std::string& text, const std::string& part)
+{
+    std::vector<std::string> v;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);)
+        if (contains(line, part))
+            v.push_back(line);
+    return v;
+}
+} // namespace
+
+TEST_CASE("cli list shows the shipped plugin, and a --plugin one", "[cli]")
+{
+    const std::string real = fs::canonical(kShippedPlugin).string();
+    const Run shipped = runCli({"list"});
+    INFO(shipped.err);
+    REQUIRE(shipped.code == kExitPass);
+    auto lines = linesWith(shipped.out, "box2d-2.4.1");
+    REQUIRE(lines.size() == 1);
+    CHECK(contains(lines[0], "comparison"));
+    CHECK(contains(lines[0], "(shipped, " + real + ")"));
+
+    // Given by a path of another spelling: listed once, with its real path, not as shipped.
+    const std::string other = (fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / ".." / "plugins" /
+                               "gjk2d-box2d.so")
+                                  .string();
+    const Run given = runCli({"list", "--no-default-plugins", "--plugin", other});
+    INFO(given.err);
+    REQUIRE(given.code == kExitPass);
+    lines = linesWith(given.out, "box2d-2.4.1");
+    REQUIRE(lines.size() == 1);
+    CHECK(contains(lines[0], "(" + real + ")"));
+    CHECK(!contains(lines[0], "shipped"));
+
+    const Run missing = runCli({"list", "--plugin", "no-such-plugin.so"});
+    CHECK(missing.code == kExitInput);
+    CHECK(missing.out.empty());
+    CHECK(linesWith(missing.err, "").size() == 1);
+    CHECK(contains(missing.err, "plugin no-such-plugin.so: No such file"));
+}
+
+TEST_CASE("cli bench refuses --judge, which it cannot honour", "[cli]")
+{
+    const Run r = runCli({"bench", "--family", "random:10", "--judge", "box2d-2.4.1"});
+    CHECK(r.code == kExitInput);
+    CHECK(r.out.empty());
+    CHECK(linesWith(r.err, "").size() == 1);
+    CHECK(contains(r.err, "--judge box2d-2.4.1: this command judges no variant"));
+    CHECK(linesWith(runCli({"bench", "--help"}).out, "  --judge").empty()); // not offered
+}
+
+TEST_CASE("cli run --help names the plugins' exit codes", "[cli]")
+{
+    const Run r = runCli({"run", "--help"});
+    REQUIRE(r.code == kExitPass);
+    const std::string help = oneSpaced(r.out);
+    CHECK(contains(help, "1 some case failed"));
+    CHECK(contains(help, "a judged plugin (--judge) that crashed, hung or answered an error status on a case"));
+    CHECK(contains(help, "2 usage or input error"));
+    CHECK(contains(help, "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
+                         "description, given twice)"));
+}
+
+TEST_CASE("cli the same plugin file given twice exits 2 naming it", "[cli]")
+{
+    const fs::path d = freshDir("plugin-twice");
+    const fs::path link = d / "box2d-link.so";
+    fs::create_symlink(kShippedPlugin, link);
+    for (const auto& second : {kShippedPlugin.string(), link.string()})
+    {
+        INFO(second);
+        const Run r = runCli({"run", "--family", "random:10", "--no-default-plugins", "--plugin",
+                              kShippedPlugin.string(), "--plugin", second, "--out", (d / "out").string()});
+        CHECK(r.code == kExitInput);
+        CHECK(linesWith(r.err, "").size() == 1);
+        CHECK(contains(r.err, "--plugin " + second + ": given twice (also as " + kShippedPlugin.string() + ")"));
+        CHECK(!fs::exists(d / "out"));
+    }
 }

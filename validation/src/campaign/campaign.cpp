@@ -43,34 +43,6 @@ double elapsed(Clock::time_point a, Clock::time_point b)
     return std::chrono::duration<double>(b - a).count();
 }
 
-std::string runCommand(const std::string& cmd)
-{
-    std::string out;
-    if (FILE* p = popen(cmd.c_str(), "r"))
-    {
-        char buf[256];
-        while (std::fgets(buf, sizeof buf, p))
-            out += buf;
-        if (pclose(p) != 0)
-            return {};
-    }
-    while (!out.empty() && (out.back() == '\n' || out.back() == '\r'))
-        out.pop_back();
-    return out;
-}
-
-std::string gitRevisionImpl()
-{
-    const std::string dir = GJK2D_SOURCE_DIR;
-    const std::string rev =
-        runCommand("git -C '" + dir + "' rev-parse --short=12 HEAD 2>/dev/null");
-    if (rev.empty())
-        return "unknown";
-    const std::string dirty =
-        runCommand("git -C '" + dir + "' status --porcelain --untracked-files=no 2>/dev/null");
-    return dirty.empty() ? rev : rev + " (dirty)";
-}
-
 std::string isoDateUtcImpl()
 {
     const std::time_t t = std::time(nullptr);
@@ -91,10 +63,6 @@ std::string hostName()
 
 } // namespace
 
-std::string gitRevision()
-{
-    return gitRevisionImpl();
-}
 std::string isoDateUtc()
 {
     return isoDateUtcImpl();
@@ -134,14 +102,18 @@ std::vector<std::string> defaultFamilies()
 
 std::vector<std::string> defaultCaseFiles()
 {
-    std::vector<std::string> files;
-    fs::path dir = fs::path(GJK2D_SOURCE_DIR) / "validation" / "cases";
     std::error_code ec;
-    if (!fs::is_directory(dir, ec)) // an installed gjk-validate: <prefix>/share/gjk2d/cases
-        dir = fs::read_symlink("/proc/self/exe", ec).parent_path() / ".." / GJK2D_INSTALL_CASE_DIR;
+    const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+    const fs::path build = exeDir / "cases", installed = exeDir / ".." / GJK2D_INSTALL_CASE_DIR;
+    const fs::path dir = fs::is_directory(build, ec) ? build : installed;
+    if (!fs::is_directory(dir, ec))
+        throw InputError(fmt::format(
+            "the default campaign's case files are in neither {} nor {}: give --family or --cases",
+            excerpt(build.string()), excerpt(installed.lexically_normal().string())));
+    std::vector<std::string> files;
     for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file() && e.path().extension() == ".json")
-            files.push_back(e.path().string());
+            files.push_back(e.path().lexically_normal().string());
     std::sort(files.begin(), files.end());
     return files;
 }
@@ -451,9 +423,7 @@ void timeVariants(CampaignState& state, const CampaignConfig& config, const Eval
                 if (f.timing.runs[i][k])
                     cases.push_back(&f.timing.cases[i]);
             const VariantInfo& v = *ctx.variants[k];
-            const TimingResult t = v.plugin
-                                       ? timeContained(cases, v, tc, ctx.pluginTimeoutSeconds)
-                                       : timeQueries(cases, v, tc);
+            const TimingResult t = timeQueries(cases, v, tc, ctx.pluginTimeoutSeconds);
             Stats& s = f.stats[k];
             s.nsPerQuery = t.nsPerQuery;
             s.nsMin = t.nsMin;
@@ -1102,7 +1072,8 @@ void joinPerCase(const Json& report, std::size_t chunkCases,
 
 namespace
 {
-// Every file a report directory holds; writeCampaign replaces the directory as a whole.
+// Every file a report directory holds, besides the plugins' logs (plugin-*.log, evaluate/plugins.hpp);
+// writeCampaign replaces the directory as a whole.
 const char* const kReportFiles[] = {"report.json", "report.md",  "worst-cases.json",
                                     "cases.jsonl", "index.html", "shard.json"};
 } // namespace
@@ -1123,8 +1094,10 @@ void checkReportDir(const std::string& outDir)
         for (const auto& e : fs::directory_iterator(dir, ec))
         {
             const std::string name = e.path().filename().string();
-            if (std::find(std::begin(kReportFiles), std::end(kReportFiles), name) ==
-                std::end(kReportFiles))
+            const bool pluginLog = name.rfind("plugin-", 0) == 0 && name.size() > 11 &&
+                                   name.compare(name.size() - 4, 4, ".log") == 0;
+            if (!pluginLog && std::find(std::begin(kReportFiles), std::end(kReportFiles), name) ==
+                                  std::end(kReportFiles))
                 throw InputError(fmt::format(
                     "--out {}: holds '{}', which is not part of a report (the directory is "
                     "replaced as a whole: give a new or a report directory)",

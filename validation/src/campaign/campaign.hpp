@@ -50,7 +50,9 @@ struct CampaignConfig
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
 
-// `git rev-parse` of the source tree ("abc123 (dirty)"), "unknown" when git fails.
+// The source tree's revision when gjk-validate was built ("0123456789ab", "... (dirty)" with
+// modified tracked files, "unknown" outside a git checkout): recorded by the build
+// (src/common/build_info.cpp), never asked of git at run time.
 std::string gitRevision();
 std::string isoDateUtc();
 
@@ -63,7 +65,10 @@ Json contextJson(const std::string& date, const std::string& revision, const std
 
 // The default campaign of `gjk-validate run` without inputs.
 std::vector<std::string> defaultFamilies();
-std::vector<std::string> defaultCaseFiles(); // every *.json in <source>/validation/cases, sorted
+// Every *.json of the default campaign's case files, sorted, found relative to the program: in
+// <dir>/cases (the build tree, a link to validation/cases) or <dir>/../<datadir>/gjk2d/cases (an
+// installed prefix). InputError, one line naming both places, when neither exists.
+std::vector<std::string> defaultCaseFiles();
 
 // The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
 std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);

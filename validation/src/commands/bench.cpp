@@ -70,7 +70,7 @@ Subcommand addBench(CLI::App& app, const CommandLine& line)
     bench->add_flag("--warm", o->bcfg.warm,
                     "time warm-started queries: each starts from the SimplexCache of a previous "
                     "query of the same case");
-    addPluginOptions(*bench, o->plugins, false);
+    addPluginOptions(*bench, o->plugins, false, false);
     bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
         ->capture_default_str();
     bench->add_option("--json", o->benchJson, "write the timings as JSON to this file");

@@ -138,17 +138,20 @@ void checkFamilies(const std::vector<std::string>& specs, bool streamed)
 
 static_assert(PluginOptions{}.timeoutSeconds == kDefaultPluginTimeoutSeconds);
 
-void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped)
+void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges)
 {
     sub.add_option("--plugin", o.paths,
                    "a shared library implementing gjk2d/plugin.h: each implementation it describes "
-                   "becomes a comparison variant (evaluated in a child process); repeatable")
+                   "becomes a comparison variant (evaluated in a child process); repeatable, each "
+                   "file once")
         ->allow_extra_args(false);
-    sub.add_option("--judge", o.judge,
-                   "judge this plugin implementation like gjk2d's judged variants: a case fails "
-                   "beyond the error bound of gjk2d's reference options in its scalar type; "
-                   "repeatable")
-        ->allow_extra_args(false);
+    auto* judge = sub.add_option("--judge", o.judge,
+                                 "judge this plugin implementation like gjk2d's judged variants: a "
+                                 "case fails beyond the error bound of gjk2d's reference options in "
+                                 "its scalar type; repeatable")
+                      ->allow_extra_args(false);
+    if (!judges) // parsed, to be refused with a line that says why (selectVariants)
+        judge->group("");
     sub.add_option("--plugin-timeout", o.timeoutSeconds,
                    "seconds a plugin may take on one case before it counts as hung, 0.01..3600")
         ->capture_default_str();
@@ -157,22 +160,42 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped)
                            "joins when --variants is left at its default"
                          : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
                            "--variants can name");
+    o.judges = judges;
+}
+
+LoadedPlugins loadPlugins(const PluginOptions& o)
+{
+    for (std::size_t i = 0; i < o.paths.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+        {
+            std::error_code ec;
+            if (o.paths[i] == o.paths[j] || fs::equivalent(o.paths[i], o.paths[j], ec))
+                throw InputError(fmt::format("--plugin {}: given twice (also as {}); each plugin "
+                                             "file is loaded once",
+                                             o.paths[i], o.paths[j]));
+        }
+    LoadedPlugins loaded;
+    if (!o.noDefault)
+        for (const auto& path : shippedPluginPaths())
+            for (const VariantInfo* v : loadPlugin(path))
+                loaded.shipped.push_back(v);
+    for (const auto& path : o.paths)
+        for (const VariantInfo* v : loadPlugin(path))
+            loaded.given.push_back(v);
+    return loaded;
 }
 
 std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
                                                bool shippedByDefault)
 {
+    if (!o.judges && !o.judge.empty())
+        throw InputError(fmt::format("--judge {}: this command judges no variant (bench times "
+                                     "them); judge a plugin with `gjk-validate run --judge NAME`",
+                                     excerpt(o.judge.front())));
     if (!(o.timeoutSeconds >= 0.01 && o.timeoutSeconds <= 3600))
         throw InputError("--plugin-timeout: expected seconds in 0.01..3600");
     // Loaded first, so that --variants can name their implementations.
-    std::vector<const VariantInfo*> shipped, given;
-    if (!o.noDefault)
-        for (const auto& path : shippedPluginPaths())
-            for (const VariantInfo* v : loadPlugin(path))
-                shipped.push_back(v);
-    for (const auto& path : o.paths)
-        for (const VariantInfo* v : loadPlugin(path))
-            given.push_back(v);
+    const LoadedPlugins loaded = loadPlugins(o);
     std::vector<const VariantInfo*> variants = parseVariants(list);
     auto add = [&](const std::vector<const VariantInfo*>& vs)
     {
@@ -181,8 +204,8 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
                 variants.push_back(v);
     };
     if (shippedByDefault && list == kDefaultVariants)
-        add(shipped);
-    add(given);
+        add(loaded.shipped);
+    add(loaded.given);
     for (const auto& name : o.judge)
         judgePluginVariant(name);
     return variants;
@@ -216,9 +239,23 @@ void flushStdout()
     if (std::fflush(stdout) != 0 || std::ferror(stdout))
         throw OutputError(fmt::format("standard output: write failed: {}", std::strerror(errno)));
 }
+void printPluginLogs(const std::vector<PluginLog>& logs, const fs::path& dir)
+{
+    for (const PluginLog& l : logs)
+    {
+        const std::string how =
+            l.capped ? fmt::format("at least {} bytes (the log's cap; the rest was dropped)", l.bytes)
+                     : fmt::format("{} bytes", l.bytes);
+        std::fprintf(stderr, "gjk-validate: plugin %s printed %s on its stdout and stderr: see %s\n",
+                     l.plugin.c_str(), how.c_str(), (dir / l.file).c_str());
+    }
+}
+
 void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose)
 {
+    const std::vector<PluginLog> logs = finishPluginLogs(); // into the directory before its commit
     const std::string page = writeCampaign(camp, out);
+    printPluginLogs(logs, out.dir());
     if (verbose)
         std::fputs(terminalTable(camp.report).c_str(), stdout);
     std::fputs(terminalSummary(camp.report).c_str(), stdout);

@@ -9,12 +9,15 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
 namespace gjkval
 {
+
+struct VariantInfo;
 
 // Ranges of the numeric options (docs/validation.md).
 inline constexpr int kMaxThreads = 256;
@@ -58,32 +61,41 @@ Subcommand addList(CLI::App& app, const CommandLine& line);
 Subcommand addCompare(CLI::App& app, const CommandLine& line);
 Subcommand addMerge(CLI::App& app, const CommandLine& line);
 
-// run's and merge's last step: the report into `out` (committed), then the terminal summary
-// (with every family x variant when `verbose`) and the page's path.
+// run's and merge's last step: the report into `out` (committed, with the plugins' logs), then
+// the terminal summary (with every family x variant when `verbose`) and the page's path.
 struct Campaign;
 class StagedDir;
 void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose);
+// One line on stderr per plugin that printed: how much, and its log in `dir`.
+struct PluginLog;
+void printPluginLogs(const std::vector<PluginLog>& logs, const std::filesystem::path& dir);
 // merge's and mpirun's DIR/cases.jsonl: the shards' files (files[s] is shard s's) joined in case
 // order (joinPerCase). InputError naming a file that cannot be opened, followed by `hint`.
 void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
                         const std::vector<std::string>& files, StagedDir& out,
                         const std::string& hint = {});
 
-struct VariantInfo;
-
 // --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, --no-default-plugins
 // (docs/validate-your-gjk.md). `shipped`: the command joins the shipped plugins by default (run).
+// `judges`: the command judges variants; bench does not, and refuses --judge (exit 2).
 struct PluginOptions
 {
     std::vector<std::string> paths, judge;
     double timeoutSeconds = 5; // kDefaultPluginTimeoutSeconds
     bool noDefault = false;
+    bool judges = true;
 };
-void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped);
-// --variants LIST with the plugins: loads the shipped plugins (unless --no-default-plugins) and
-// the --plugin ones (InputError, exit 2, naming the file), so that LIST can name their
-// implementations; then LIST's variants, the shipped plugins' when `shippedByDefault` and LIST is
-// the default, and every --plugin one; then --judge.
+void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges = true);
+// The shipped plugins (unless --no-default-plugins) and the --plugin ones, loaded: InputError
+// (exit 2) naming the file when one cannot be used or a --plugin file is given twice.
+struct LoadedPlugins
+{
+    std::vector<const VariantInfo*> shipped, given;
+};
+LoadedPlugins loadPlugins(const PluginOptions& o);
+// --variants LIST with the plugins: loadPlugins(), so that LIST can name their implementations;
+// then LIST's variants, the shipped plugins' when `shippedByDefault` and LIST is the default, and
+// every --plugin one; then --judge.
 std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
                                                bool shippedByDefault);
 

@@ -1,16 +1,20 @@
-// gjk-validate list: the families and the variants.
+// gjk-validate list: the families and the variants, the plugins' among them.
 #include "commands/command_line.hpp"
+#include "evaluate/plugins.hpp"
 #include "evaluate/variants.hpp"
 #include "inputs/families.hpp"
+#include "report/report.hpp"
 
 #include <cstdio>
+#include <memory>
 
 namespace gjkval
 {
 namespace
 {
-int listCommand()
+int listCommand(const PluginOptions& plugins)
 {
+    const LoadedPlugins loaded = loadPlugins(plugins); // before any output: a bad one exits 2
     std::printf("families:\n  random  (default count %d)\n", kDefaultRandomCount);
     for (const auto& h : hardSubFamilies())
         std::printf("  hard/%-20s %4d cases  %s\n", h.name.c_str(), h.count, h.reason.c_str());
@@ -22,6 +26,12 @@ int listCommand()
     for (const auto& v : variantTable())
         std::printf("  %-22s %-6s %-10s %s\n", v.name.c_str(), scalarName(v.scalar),
                     v.judged ? "judged" : "comparison", v.description.c_str());
+    // The plugins' (shipped, then --plugin): comparison variants unless run --judge names them.
+    for (const auto* group : {&loaded.shipped, &loaded.given})
+        for (const VariantInfo* v : *group)
+            std::printf("  %-22s %-6s %-10s %s (%s%s)\n", v->name.c_str(), scalarName(v->scalar),
+                        "comparison", v->description.c_str(),
+                        group == &loaded.shipped ? "shipped, " : "", v->plugin->path.c_str());
     flushStdout();
     return kExitPass;
 }
@@ -29,9 +39,17 @@ int listCommand()
 
 Subcommand addList(CLI::App& app, const CommandLine&)
 {
-    auto* list =
-        app.add_subcommand("list", "List the families (with their reasons) and the variants.");
-    return {list, [] { return listCommand(); }};
+    auto o = std::make_shared<PluginOptions>();
+    auto* list = app.add_subcommand(
+        "list", "List the families (with their reasons) and the variants, the shipped plugins' "
+                "and those of --plugin included.");
+    list->add_option("--plugin", o->paths,
+                     "also list this plugin's implementations (gjk2d/plugin.h); repeatable")
+        ->allow_extra_args(false);
+    list->add_flag("--no-default-plugins", o->noDefault,
+                   "leave out the shipped plugins (the Box2D 2.4.1 adapter)");
+    list->footer(exitCodesHelp());
+    return {list, [o] { return listCommand(*o); }};
 }
 
 } // namespace gjkval

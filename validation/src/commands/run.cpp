@@ -2,6 +2,7 @@
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
+#include "evaluate/plugins.hpp"
 #include "evaluate/variants.hpp"
 #include "report/report.hpp"
 
@@ -35,7 +36,7 @@ struct RunOptions
     std::string variants = kDefaultVariants, outDir = "reports/latest/", route = "default",
                 seed = "1";
     std::size_t chunkCases = kDefaultChunkCases;
-    bool noProgress = false, noTiming = false, verbose = false;
+    bool noProgress = false, noTiming = false, verbose = false, defaultCases = false;
     std::string shard; // "I/N"
     PluginOptions plugins;
 };
@@ -79,11 +80,11 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     cfg.command = line.text();
     cfg.families = o.families;
     cfg.caseFiles = o.files;
-    if (cfg.families.empty() && cfg.caseFiles.empty())
-    {
+    if (cfg.families.empty() && cfg.caseFiles.empty() && !o.defaultCases)
         cfg.families = defaultFamilies();
-        cfg.caseFiles = defaultCaseFiles();
-    }
+    if ((o.families.empty() && o.files.empty()) || o.defaultCases)
+        for (const auto& f : defaultCaseFiles())
+            cfg.caseFiles.push_back(f);
     checkFamilies(cfg.families, true);
     checkCaseFiles(cfg.caseFiles);
     checkReportDir(o.outDir);
@@ -113,6 +114,7 @@ int shardCommand(RunOptions& o, const CampaignConfig& cfg)
     const Shard shard = parseShard(o.shard);
     std::vector<CampaignInput> inputs = campaignInputs(cfg);
     StagedDir out(reportDirPath(o.outDir));
+    setPluginLogDirectory(out.staging().string()); // plugin-*.log beside shard.json
     std::ofstream perCase; // the shard's chunks; merge joins the shards' files in case order
     if (cfg.perCase)
         perCase = openPerCase(out);
@@ -120,7 +122,9 @@ int shardCommand(RunOptions& o, const CampaignConfig& cfg)
     if (cfg.perCase)
         closePerCase(perCase, out);
     out.write("shard.json", state.dump() + "\n");
+    const std::vector<PluginLog> logs = finishPluginLogs();
     out.commit();
+    printPluginLogs(logs, out.dir());
     removeCheckpoint(cfg);
     std::size_t cases = 0;
     for (const auto& f : state.at("families"))
@@ -275,6 +279,7 @@ int runCommand(RunOptions& o, const CommandLine& line)
     std::vector<CampaignInput> inputs = campaignInputs(cfg);
     // Staged beside DIR and swapped in at the end: DIR holds this run or the previous one.
     StagedDir out(reportDirPath(o.outDir));
+    setPluginLogDirectory(out.staging().string()); // what plugins print: DIR/plugin-*.log
     std::ofstream perCase;
     if (cfg.perCase)
         perCase = openPerCase(out);
@@ -305,6 +310,9 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
                     "within it); repeatable (see `list`)")
         ->allow_extra_args(false);
     run->add_option("--cases", o->files, "a gjk-cases/1 file; repeatable")->allow_extra_args(false);
+    run->add_flag("--default-cases", o->defaultCases,
+                  "also run the default campaign's case files (validation/cases/*.json, installed "
+                  "in <prefix>/share/gjk2d/cases: found beside the program)");
     run->add_option("--seed", o->seed, "campaign seed, 0..2^64-1 (each family derives its own)")
         ->capture_default_str();
     run->add_option("--variants", o->variants, "comma-separated variant names, or all (see `list`)")

@@ -45,12 +45,16 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
                 "failures are reported, never judged."},
     {kExitFail, "some case failed for a judged variant (error beyond the bound, misclassification "
                 "beyond it, non-finite output, iteration limit, a certified interval missing the "
-                "truth), or a family make-up check failed; compare: a statistic of NEW got "
-                "worse than OLD's beyond its tolerance."},
+                "truth), or a family make-up check failed; "
+                "a judged plugin (--judge) that crashed, hung or answered an error status on a case; "
+                "compare: a statistic of NEW got worse than OLD's beyond its tolerance."},
     {kExitInput, "usage or input error: a bad option or argument, an unreadable or invalid case "
                  "file, an unknown case name, an output path that cannot be used, a report compare "
                  "cannot read or two reports of different inputs, a run too large "
-                 "for this machine's memory (all detected before any work starts); also rejected "
+                 "for this machine's memory, "
+                 "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
+                 "description, given twice) "
+                 "(all detected before any work starts); also rejected "
                  "cases (the report is still written, the other cases still run)."},
     {kExitSetup, "used only by scripts/setup.sh: missing Debian packages and not root."},
     {kExitInternal, "internal error: a broken invariant of gjk2d itself (std::logic_error or any "

@@ -18,6 +18,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <vector>
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -207,10 +208,22 @@ inline std::filesystem::path reportDirPath(const std::string& outDir)
     return p;
 }
 
-// A report directory written whole: files go into DIR's sibling ".NAME.tmp-XXXXXX"; commit()
-// swaps it with DIR (renameat2 RENAME_EXCHANGE; a plain rename when DIR does not exist) and removes
-// the previous one. Until commit() DIR is untouched; without commit() the staging directory is
-// removed. Throws OutputError.
+// The staging directories of DIR's earlier runs that died without removing theirs (SIGKILL, a
+// power cut), beside DIR: ".NAME.tmp-HOST-PID-XXXXXX" of this host whose process PID is gone, or
+// is a later process than the directory (its start after the directory's last change: the pid
+// was reused); and ".NAME.tmp-XXXXXX" (the name before the owner was in it) untouched for
+// kStaleLegacyStagingSeconds. A live run's directory, another host's (a shared file system) and
+// anything else are left alone. The paths removed (best effort: errors are ignored).
+inline constexpr double kStaleLegacyStagingSeconds = 7 * 24 * 3600;
+std::vector<std::filesystem::path> removeStaleStaging(const std::filesystem::path& dir);
+// The name of this process's staging directory of DIR, for mkdtemp: ".NAME.tmp-HOST-PID-XXXXXX".
+std::string stagingTemplate(const std::filesystem::path& dir);
+
+// A report directory written whole: files go into DIR's sibling ".NAME.tmp-HOST-PID-XXXXXX";
+// commit() swaps it with DIR (renameat2 RENAME_EXCHANGE; a plain rename when DIR does not exist)
+// and removes the previous one. Until commit() DIR is untouched; without commit() the staging
+// directory is removed. Earlier dead runs' staging directories of DIR are removed first
+// (removeStaleStaging). Throws OutputError.
 class StagedDir
 {
   public:
@@ -222,8 +235,8 @@ class StagedDir
         if (ec)
             throw OutputError(fmt::format("{}: cannot create the directory: {}",
                                           excerpt(dir_.parent_path().string()), ec.message()));
-        std::string tmpl =
-            (dir_.parent_path() / ("." + dir_.filename().string() + ".tmp-XXXXXX")).string();
+        removeStaleStaging(dir_);
+        std::string tmpl = stagingTemplate(dir_);
         if (::mkdtemp(tmpl.data()) == nullptr)
             throw OutputError(fmt::format("{}: cannot create a temporary directory beside it: {}",
                                           excerpt(dir_.string()), std::strerror(errno)));
@@ -242,6 +255,8 @@ class StagedDir
     }
 
     const std::filesystem::path& dir() const { return dir_; }
+    // The staging directory: DIR's files until commit().
+    const std::filesystem::path& staging() const { return staging_; }
     // Where a file of the staged directory is written when it is streamed rather than given whole.
     std::filesystem::path staged(const std::string& name) const { return staging_ / name; }
 

@@ -1,13 +1,15 @@
 #include "evaluate/plugins.hpp"
 
 #include "evaluate/evaluate.hpp"
-#include "timing/timing.hpp"
 
 #include <fmt/format.h>
 
 #include <dlfcn.h>
 #include <poll.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <stdio_ext.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -32,6 +34,7 @@ struct Registry
     std::deque<PluginImpl> impls;
     std::deque<VariantInfo> variants;
     std::vector<std::string> paths; // canonical paths loaded
+    std::string logDir;             // setPluginLogDirectory()
 };
 Registry& registry()
 {
@@ -96,7 +99,7 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         if (reg.paths[i] == canonical)
         {
             for (std::size_t k = 0; k < reg.variants.size(); ++k)
-                if (std::filesystem::canonical(reg.impls[k].path).string() == canonical)
+                if (reg.impls[k].path == canonical)
                     out.push_back(&reg.variants[k]);
             return out;
         }
@@ -148,11 +151,19 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
                 path, i, name));
         names.push_back(name);
     }
+    // One log per plugin file, named after it: "plugin-gjk2d-box2d.log" (a second file of the
+    // same name in another directory: "plugin-gjk2d-box2d-2.log").
+    const std::string stem = std::filesystem::path(canonical).stem().string();
+    std::string logName = "plugin-" + stem + ".log";
+    for (int n = 2; std::any_of(reg.impls.begin(), reg.impls.end(),
+                                [&](const PluginImpl& p) { return p.logName == logName; });
+         ++n)
+        logName = fmt::format("plugin-{}-{}.log", stem, n);
     reg.paths.push_back(canonical);
     for (int i = 0; i < d->count; ++i)
     {
         const gjk2d_implementation& im = d->implementations[i];
-        reg.impls.push_back({path, im});
+        reg.impls.push_back({canonical, logName, im});
         VariantInfo v;
         v.name = im.name;
         v.scalar = im.scalar == GJK2D_SCALAR_FLOAT ? Scalar::Float : Scalar::Double;
@@ -317,7 +328,7 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
                                                          shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
 }
 
-bool writeAll(int fd, const void* data, std::size_t n)
+bool writeAllBytes(int fd, const void* data, std::size_t n)
 {
     const char* p = static_cast<const char*>(data);
     while (n > 0)
@@ -333,83 +344,156 @@ bool writeAll(int fd, const void* data, std::size_t n)
     return true;
 }
 
-// A child process fed by fork: it sees the parent's memory (the cases) as it was, runs `work`
-// writing to the pipe, and leaves with _exit (no atexit handlers, no stdio flush of the parent's
-// buffers). The campaign forks between its parallel phases, when no worker thread runs.
-struct Child
-{
-    pid_t pid = -1;
-    int fd = -1; // read end
-
-    template <class Work> static Child start(Work&& work)
-    {
-        int fds[2];
-        if (::pipe(fds) != 0)
-            throw std::runtime_error(
-                fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
-        const pid_t pid = ::fork();
-        if (pid < 0)
-            throw std::runtime_error(
-                fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
-        if (pid == 0)
-        {
-            ::close(fds[0]);
-            // A plugin's crash ends the child at once, by its signal: the program's own handlers
-            // (a sanitizer's, which symbolizes a report first and would count as a hang) are
-            // not the plugin's.
-            for (const int sig : {SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
-                ::signal(sig, SIG_DFL);
-            work(fds[1]);
-            ::_exit(0);
-        }
-        ::close(fds[1]);
-        return {pid, fds[0]};
-    }
-
-    // How the child ended, after its pipe closed: "" for a clean exit 0.
-    std::string finish()
-    {
-        ::close(fd);
-        int status = 0;
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR)
-        {
-        }
-        if (WIFSIGNALED(status))
-            return fmt::format("signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)));
-        if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
-            return fmt::format("exit code {}", WEXITSTATUS(status));
-        return {};
-    }
-
-    void kill()
-    {
-        ::kill(pid, SIGKILL);
-        finish();
-    }
-
-    // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1
-    // timeout.
-    ssize_t read(void* buf, std::size_t n, double timeoutSeconds) const
-    {
-        pollfd pfd{fd, POLLIN, 0};
-        for (;;)
-        {
-            const int r = ::poll(&pfd, 1, int(timeoutSeconds * 1000));
-            if (r < 0 && errno == EINTR)
-                continue;
-            if (r == 0)
-                return -1;
-            const ssize_t got = ::read(fd, buf, n);
-            if (got < 0 && errno == EINTR)
-                continue;
-            return got < 0 ? 0 : got;
-        }
-    }
-};
-
 std::mutex g_messages; // crash and hang lines on stderr
 
+// In a child: where its output goes until routePluginOutput() names a plugin's log.
+void firstOutputRoute(const PluginImpl* plugin)
+{
+    // The parent's unwritten stdio buffers were copied by fork: they are the parent's to write.
+    __fpurge(stdout);
+    __fpurge(stderr);
+    if (registry().logDir.empty())
+    {
+        ::dup2(STDERR_FILENO, STDOUT_FILENO); // gjk-validate's stdout carries its results only
+        return;
+    }
+    // Each log holds at most kPluginLogCapBytes: a write beyond fails (EFBIG) instead of raising
+    // SIGXFSZ, which would end the child as if the plugin had crashed.
+    ::signal(SIGXFSZ, SIG_IGN);
+    const rlimit cap{rlim_t(kPluginLogCapBytes), rlim_t(kPluginLogCapBytes)};
+    ::setrlimit(RLIMIT_FSIZE, &cap);
+    if (plugin)
+        routePluginOutput(*plugin);
+}
+
 } // namespace
+
+bool writeToParent(int fd, const void* data, std::size_t n)
+{
+    return writeAllBytes(fd, data, n);
+}
+
+void routePluginOutput(const PluginImpl& plugin)
+{
+    const std::string& dir = registry().logDir;
+    if (dir.empty())
+        return;
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const std::string file = dir + "/" + plugin.logName;
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0666);
+    if (fd < 0)
+        return; // the output stays where it went; the plugin's answers do not depend on it
+    ::dup2(fd, STDOUT_FILENO);
+    ::dup2(fd, STDERR_FILENO);
+    ::close(fd);
+}
+
+void setPluginLogDirectory(const std::string& dir)
+{
+    registry().logDir = dir;
+}
+
+std::vector<PluginLog> finishPluginLogs()
+{
+    std::vector<PluginLog> logs;
+    const std::string& dir = registry().logDir;
+    if (dir.empty())
+        return logs;
+    for (const PluginImpl& p : registry().impls)
+    {
+        if (std::any_of(logs.begin(), logs.end(), [&](const PluginLog& l) { return l.file == p.logName; }))
+            continue;
+        const std::filesystem::path file = std::filesystem::path(dir) / p.logName;
+        std::error_code ec;
+        const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+        if (ec || bytes == 0)
+        {
+            std::filesystem::remove(file, ec);
+            continue;
+        }
+        PluginLog log{p.path, p.logName, bytes, bytes >= kPluginLogCapBytes};
+        if (log.capped)
+            if (FILE* f = std::fopen(file.c_str(), "a"))
+            {
+                std::fprintf(f, "\n[gjk-validate: this log is capped at %ju bytes of the plugin's "
+                                "output; the rest was dropped]\n",
+                             std::uintmax_t(kPluginLogCapBytes));
+                std::fclose(f);
+            }
+        logs.push_back(log);
+    }
+    return logs;
+}
+
+PluginChild PluginChild::start(const PluginImpl* plugin, const std::function<void(int fd)>& work)
+{
+    int fds[2];
+    if (::pipe(fds) != 0)
+        throw std::runtime_error(fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
+    std::fflush(stdout); // written once, by the parent, not again by the child's copy of the buffer
+    std::fflush(stderr);
+    const pid_t pid = ::fork();
+    if (pid < 0)
+        throw std::runtime_error(fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
+    if (pid == 0)
+    {
+        ::close(fds[0]);
+        // A plugin's crash ends the child at once, by its signal: the program's own handlers (a
+        // sanitizer's, which symbolizes a report first and would count as a hang) are not the
+        // plugin's.
+        for (const int sig : {SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
+            ::signal(sig, SIG_DFL);
+        firstOutputRoute(plugin);
+        work(fds[1]);
+        std::fflush(stdout); // what the plugin printed last, into its log
+        std::fflush(stderr);
+        ::_exit(0);
+    }
+    ::close(fds[1]);
+    PluginChild c;
+    c.pid_ = pid;
+    c.fd_ = fds[0];
+    return c;
+}
+
+std::string PluginChild::finish()
+{
+    ::close(fd_);
+    int status = 0;
+    while (::waitpid(pid_t(pid_), &status, 0) < 0 && errno == EINTR)
+    {
+    }
+    if (WIFSIGNALED(status))
+        return fmt::format("signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)));
+    if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
+        return fmt::format("exit code {}", WEXITSTATUS(status));
+    return {};
+}
+
+void PluginChild::kill()
+{
+    ::kill(pid_t(pid_), SIGKILL);
+    finish();
+}
+
+long PluginChild::read(void* buf, std::size_t n, double timeoutSeconds) const
+{
+    pollfd pfd{fd_, POLLIN, 0};
+    const int ms = int(std::min(timeoutSeconds * 1000, 2e9));
+    for (;;)
+    {
+        const int r = ::poll(&pfd, 1, ms);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r == 0)
+            return -1;
+        const ssize_t got = ::read(fd_, buf, n);
+        if (got < 0 && errno == EINTR)
+            continue;
+        return got < 0 ? 0 : long(got);
+    }
+}
 
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds)
 {
@@ -417,15 +501,19 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
     while (next < tasks.size())
     {
         const std::size_t from = next;
-        Child child = Child::start(
+        PluginChild child = PluginChild::start(
+            tasks[from].v->plugin,
             [&](int fd)
             {
                 std::vector<unsigned char> cache(4096);
+                const PluginImpl* printsTo = tasks[from].v->plugin;
                 for (std::size_t t = from; t < tasks.size(); ++t)
                 {
+                    if (tasks[t].v->plugin->logName != printsTo->logName)
+                        routePluginOutput(*(printsTo = tasks[t].v->plugin));
                     AnswerRecord r = callPlugin(*tasks[t].v, *tasks[t].p, cache);
                     r.task = t;
-                    if (!writeAll(fd, &r, sizeof r))
+                    if (!writeAllBytes(fd, &r, sizeof r))
                         ::_exit(3);
                 }
             });
@@ -433,7 +521,7 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
         std::size_t have = 0;
         for (;;)
         {
-            const ssize_t got =
+            const long got =
                 child.read(reinterpret_cast<char*>(&rec) + have, sizeof rec - have, timeoutSeconds);
             if (got > 0)
             {
@@ -486,60 +574,6 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
             break;
         }
     }
-}
-
-TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
-                           const TimingConfig& cfg, double timeoutSeconds)
-{
-    TimingResult res;
-    res.cases = cases.size();
-    if (cases.empty())
-        return res;
-    Child child = Child::start(
-        [&](int fd)
-        {
-            std::vector<unsigned char> cache(4096);
-            volatile double sink = 0;
-            const TimingResult t =
-                medianOfPasses(cases.size(), cfg,
-                               [&](int reps)
-                               {
-                                   const auto t0 = std::chrono::steady_clock::now();
-                                   double acc = 0;
-                                   for (int r = 0; r < reps; ++r)
-                                       for (const PreparedCase* p : cases)
-                                           acc += callPlugin(v, *p, cache).distance;
-                                   const auto t1 = std::chrono::steady_clock::now();
-                                   sink = sink + acc;
-                                   return std::chrono::duration<double, std::nano>(t1 - t0).count();
-                               });
-            writeAll(fd, &t, sizeof t);
-        });
-    // The child times for at most the budget (plus one pass of each kind): the limit allows that
-    // and one hung call.
-    const double limit = cfg.budgetSeconds * 4 + timeoutSeconds + 30;
-    TimingResult got;
-    std::size_t have = 0;
-    while (have < sizeof got)
-    {
-        const ssize_t n =
-            child.read(reinterpret_cast<char*>(&got) + have, sizeof got - have, limit);
-        if (n <= 0)
-        {
-            if (n < 0)
-                child.kill();
-            else
-                child.finish();
-            std::lock_guard lock(g_messages);
-            std::fprintf(stderr, "gjk-validate: plugin variant '%s' %s while timed; no ns/query\n",
-                         v.name.c_str(), n < 0 ? "hung" : "crashed");
-            return res;
-        }
-        have += std::size_t(n);
-    }
-    child.finish();
-    got.cases = cases.size();
-    return got;
 }
 
 } // namespace gjkval

@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -16,20 +18,20 @@ namespace gjkval
 {
 
 struct PreparedCase;
-struct TimingConfig;
-struct TimingResult;
 
 // One implementation of a loaded plugin.
 struct PluginImpl
 {
-    std::string path; // the shared library, as given
+    std::string path;    // the shared library: absolute, symbolic links resolved (the report's)
+    std::string logName; // its output's log in the report directory: "plugin-<file stem>.log"
     gjk2d_implementation impl{};
 };
 
 // Loads the plugin at `path` (dlopen) and registers one variant per implementation it describes,
 // comparison variants (judged = false). Throws InputError, one line naming the file: missing
 // file, not loadable, missing entry point, wrong ABI version, bad description, a name already
-// taken. Loading the same path twice registers it once.
+// taken. Loading the same file again (a shipped plugin also given with --plugin) registers it
+// once; the command line refuses a --plugin given twice (selectVariants).
 std::vector<const VariantInfo*> loadPlugin(const std::string& path);
 // Every plugin variant registered so far, in load order.
 std::vector<const VariantInfo*> pluginVariants();
@@ -89,9 +91,47 @@ inline constexpr double kDefaultPluginTimeoutSeconds = 5;
 // next task. Never throws for what a plugin does; std::runtime_error when fork or pipe fail.
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
-// ns per query of a plugin variant over `cases` (cold starts), measured in a child process as
-// timeQueries() measures gjk2d's: a crashed or hung timing gives nsPerQuery = -1.
-TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
-                           const TimingConfig& cfg, double timeoutSeconds);
+// What plugins print (their stdout and stderr in the child processes) is kept apart from
+// gjk-validate's own output (issue 30: a plugin printing on every call buried the summary):
+// with a directory set, each plugin's goes to <dir>/<its logName>, at most kPluginLogCapBytes
+// (RLIMIT_FSIZE in the child: the rest is dropped); without one (bench, explain, search), to
+// gjk-validate's stderr, never its stdout. `run` sets its staged report directory.
+inline constexpr std::uintmax_t kPluginLogCapBytes = 1 << 20; // 1 MiB per plugin
+void setPluginLogDirectory(const std::string& dir); // "" for stderr
+struct PluginLog
+{
+    std::string plugin; // PluginImpl::path
+    std::string file;   // its logName
+    std::uintmax_t bytes = 0;
+    bool capped = false; // reached kPluginLogCapBytes: a closing line says so
+};
+// The logs of the plugins that printed; empty logs are removed. Call once the plugins' work is
+// done, before the directory is committed.
+std::vector<PluginLog> finishPluginLogs();
+
+// A child process for plugin calls, fed by fork: it sees the parent's memory (the cases) as it
+// was, runs `work` writing its answers to the pipe `fd`, and leaves with _exit (no atexit
+// handlers). Crash signals are at their defaults in it, and its stdout and stderr go where
+// setPluginLogDirectory() says (routePluginOutput). The campaign forks between its parallel
+// phases, when no worker thread runs.
+class PluginChild
+{
+  public:
+    // `plugin`: whose log the child's output goes to first (null: none yet).
+    static PluginChild start(const PluginImpl* plugin, const std::function<void(int fd)>& work);
+    // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1
+    // timeout.
+    long read(void* buf, std::size_t n, double timeoutSeconds) const;
+    // How the child ended, after its pipe closed: "" for a clean exit 0.
+    std::string finish();
+    void kill(); // SIGKILL, then finish()
+
+  private:
+    int pid_ = -1, fd_ = -1;
+};
+// In a child: its stdout and stderr to `plugin`'s log from here on (stdio flushed first).
+void routePluginOutput(const PluginImpl& plugin);
+// In a child: writes n bytes to the parent; false when the pipe is gone.
+bool writeToParent(int fd, const void* data, std::size_t n);
 
 } // namespace gjkval

@@ -81,7 +81,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
             cases.push_back(&p);
         }
         if (v->plugin)
-            results[k] = timeContained(cases, *v, tc, config.pluginTimeoutSeconds);
+            results[k] = timeQueries(cases, *v, tc, config.pluginTimeoutSeconds);
         else
         {
             loops.push_back(timedLoop(cases, *v, tc));

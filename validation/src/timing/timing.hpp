@@ -29,14 +29,25 @@ struct TimingResult
     bool warm = false; // warm-started queries were timed
 };
 
-// Times the variant's query over `cases` (none skipped for it: see skipReason()). Cold queries
-// (fresh SimplexCache), or warm ones when v.start is Start::Warm or cfg.warm: the caches are prepared by a cold
-// query of each case before timing, and each timed query starts from a copy of its case's cache.
+// Times the variant's query over `cases` (none skipped for it: see skipReason()): the one timing
+// of `run` (per family) and `bench`. Cold queries (fresh SimplexCache), or warm ones when v.start
+// is Start::Warm or cfg.warm: the caches are prepared by a cold query of each case before timing,
+// and each timed query starts from a copy of its case's cache. A plugin variant (cold only) is
+// timed by the same loop and passes, in a child process (timeContained).
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
-                         const TimingConfig& cfg);
+                         const TimingConfig& cfg, double pluginTimeoutSeconds);
+
+// A plugin variant's timeQueries(): its timed loop built here, its passes run in a child process
+// (PluginChild, evaluate/plugins.hpp), which sends back only the result. A crash, or no pass
+// finished within pluginTimeoutSeconds + 30 s (+ the pass's expected length), gives
+// nsPerQuery = -1 and a line on stderr.
+TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                           const TimingConfig& cfg, double pluginTimeoutSeconds);
 
 // A variant's timed loop over `cases`, prepared as timeQueries() does: pass(reps) runs `reps`
 // loops over the cases and returns the nanoseconds taken (empty `pass` when there are no cases).
+// The inputs are copied into contiguous arrays first, for gjk2d's variants and plugins alike, so
+// that the time does not depend on where the campaign's threads happened to allocate each case.
 struct TimedLoop
 {
     std::size_t cases = 0;
@@ -55,6 +66,7 @@ std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>&
 // lasts cfg.minPassSeconds; then minPasses..maxPasses passes (no new one after budgetSeconds);
 // the median, min and max per query. Plugin variants (evaluate/plugins.cpp) are timed by it too.
 TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
-                            const std::function<double(int)>& pass);
+                            const std::function<double(int)>& pass,
+                            const std::function<void()>& afterPass = {});
 
 } // namespace gjkval
