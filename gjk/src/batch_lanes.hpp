@@ -312,7 +312,28 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V ve = sel(is3, sel(r12, v12, sel(r13, v13, v23)), v12);
         const V inv = one / (ue + ve);
         const V ae0 = ue * inv, ae1 = ve * inv;
+        // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from the vertex
+        // opposite the longest edge, else (the edges' cross product 0 or not finite) the areas'.
+        const V l12 = e12x * e12x + e12y * e12y, l13 = e13x * e13x + e13y * e13y,
+                l23 = e23x * e23x + e23y * e23y;
+        const M ref1 = (l23 >= l12) & (l23 >= l13);
+        const M ref2 = ~ref1 & (l13 >= l12);
+        const M ref3 = ~ref1 & ~ref2;
+        const V wrx = sel(ref1, wx[0], sel(ref2, wx[1], wx[2])), wry = sel(ref1, wy[0], sel(ref2, wy[1], wy[2]));
+        const V epx = sel(ref1, e12x, sel(ref2, -e12x, -e13x)), epy = sel(ref1, e12y, sel(ref2, -e12y, -e13y));
+        const V eqx = sel(ref1, e13x, sel(ref2, e23x, -e23x)), eqy = sel(ref1, e13y, sel(ref2, e23y, -e23y));
+        const V nr = epx * eqy - epy * eqx;
+        const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
+                         (nr >= L::splat(-std::numeric_limits<T>::max()));
+        V bq = (eqx * wry - eqy * wrx) / nr, cq = (wrx * epy - wry * epx) / nr;
+        bq = sel(bq > zero, bq, zero);
+        cq = sel(cq > zero, cq, zero);
+        V arq = (one - bq) - cq;
+        arq = sel(arq > zero, arq, zero);
         const V sum = (u123 + v123) + w123;
+        const V i1 = sel(cramer, sel(ref1, arq, bq), u123 / sum);
+        const V i2 = sel(cramer, sel(ref2, arq, sel(ref1, bq, cq)), v123 / sum);
+        const V i3 = sel(cramer, sel(ref3, arq, cq), w123 / sum);
         const M edge = (is2 & s2e) | (is3 & (r12 | r13 | r23));
         const M interior = is3 & r123;
         const M from1to0 = (is2 & s2v2) | (is3 & (r2 | r23));
@@ -323,9 +344,9 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         L::move(wy, solving, from1to0, from2to0, from2to1);
         L::move(ia, solving, from1to0, from2to0, from2to1);
         L::move(ib, solving, from1to0, from2to0, from2to1);
-        a[0] = sel(solving, sel(interior, u123 / sum, sel(edge, ae0, one)), a[0]);
-        a[1] = sel(solving & (edge | interior), sel(interior, v123 / sum, ae1), a[1]);
-        a[2] = sel(solving & interior, w123 / sum, a[2]);
+        a[0] = sel(solving, sel(interior, i1, sel(edge, ae0, one)), a[0]);
+        a[1] = sel(solving & (edge | interior), sel(interior, i2, ae1), a[1]);
+        a[2] = sel(solving & interior, i3, a[2]);
         count = seli(solving, seli(interior, splati(3), seli(edge, splati(2), mone)), count);
 
         // Case 2: containment.
@@ -503,7 +524,9 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
             const V rSum = rA + rB;
             const M apart = rounded & (dist > rSum);
             const M overlap = rounded & ~apart;
-            const V midx = T(0.5) * (worldAx + worldBx), midy = T(0.5) * (worldAy + worldBy);
+            // One point in both (distance.hpp): rA / (rA + rB) of the way from A's point to B's.
+            const V t = rA / rSum;
+            const V midx = worldAx + t * (worldBx - worldAx), midy = worldAy + t * (worldBy - worldAy);
             dist = sel(apart, dist - rSum, sel(overlap, zero, dist));
             const V ax2 = sel(apart, worldAx + rA * nx, sel(overlap, midx, worldAx));
             const V ay2 = sel(apart, worldAy + rA * ny, sel(overlap, midy, worldAy));

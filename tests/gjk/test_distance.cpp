@@ -478,7 +478,9 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
     }
     SECTION("overlapping rounded shapes: distance clamped at 0, one common point")
     {
-        // Core distance 2 < 1 + 2: overlap; the midpoint of the core points (1,0) is reported.
+        // Core distance 2 < 1 + 2: overlap; the point rA / (rA + rB) = 1/3 of the way from A's core
+        // point to B's, (2/3, 0): within 1 of A and 4/3 <= 2 of B, in both rounded shapes (the
+        // midpoint (1, 0) was before issue 30: it is in both here, not when one radius is small).
         Scene<T> s;
         s.a = {{0, 0}};
         s.b = {{2, 0}};
@@ -486,7 +488,7 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
         s.radiusB = 2;
         const auto out = query(s);
         CHECK(out.distance == T(0));
-        CHECK(out.pointA == Vec2<T>{1, 0});
+        CHECK(out.pointA == Vec2<T>{T(2) / T(3), 0});
         CHECK(out.pointB == out.pointA);
     }
     SECTION("useRadii = false gives the core distance")

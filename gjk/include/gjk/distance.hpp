@@ -718,10 +718,38 @@ template <class T> void solve3(Simplex<T>& s)
     // tests were consistent; their sum |n123| is then positive and the division is safe.
     if (u123 > T(0) && v123 > T(0) && w123 > T(0))
     {
+        // The weights (only the witness point uses them: containment ends the query): Cramer's
+        // rule for w_r + b (w_p - w_r) + c (w_q - w_r) = 0 from the vertex w_r opposite the
+        // longest edge, whose angle has the largest sine. Its residual sum a_k w_k is within about
+        // 7u |w_r| of the origin (docs/error-bound.md, "Witness points"), where the areas above
+        // (each with 2u |w|^2 of error, against a sum |n123| as small as a needle triangle's) put
+        // A's witness 6e-14 outside B in random/35820 (witness bound 1.2e-14) and 3.1 outside in
+        // hard/mixed-scale/60. If the edges' cross product vanishes or is not finite (underflow,
+        // overflow), the areas' weights; each weight clamped at 0.
+        const Vec2<T> d12 = w2 - w1, d13 = w3 - w1, d23 = w3 - w2;
+        const T l12 = dot(d12, d12), l13 = dot(d13, d13), l23 = dot(d23, d23);
+        const int r = (l23 >= l12 && l23 >= l13) ? 0 : (l13 >= l12 ? 1 : 2);
+        const Vec2<T> wr = r == 0 ? w1 : (r == 1 ? w2 : w3);
+        const Vec2<T> ep = r == 0 ? d12 : (r == 1 ? -d12 : -d13); // to the first other vertex
+        const Vec2<T> eq = r == 0 ? d13 : (r == 1 ? d23 : -d23);  // to the second
+        const T n = cross(ep, eq);
+        if ((n > T(0) || n < T(0)) && std::abs(n) <= std::numeric_limits<T>::max())
+        {
+            T b = cross(eq, wr) / n, c = cross(wr, ep) / n;
+            b = b > T(0) ? b : T(0);
+            c = c > T(0) ? c : T(0);
+            T ar = (T(1) - b) - c;
+            ar = ar > T(0) ? ar : T(0);
+            s.v[0].a = r == 0 ? ar : b;
+            s.v[1].a = r == 1 ? ar : (r == 0 ? b : c);
+            s.v[2].a = r == 2 ? ar : c;
+            s.count = 3;
+            return;
+        }
         // Three divisions, not a reciprocal: for a sum in the subnormal range 1/sum overflows and
         // the weights became inf, the witness points NaN (the fuzzer, float coordinates near
         // 2^-89). Each quotient is in [0, 1]. Once per query (containment ends it).
-        const T sum = u123 + v123 + w123;
+        const T sum = (u123 + v123) + w123;
         s.v[0].a = u123 / sum;
         s.v[1].a = v123 / sum;
         s.v[2].a = w123 / sum;
@@ -1114,8 +1142,12 @@ GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexC
         }
         else
         {
-            // The rounded shapes overlap: report the midpoint on both, distance 0.
-            const Vec2<T> p = T(0.5) * (worldA + worldB);
+            // The rounded shapes overlap, distance 0: one point in both, on the segment from A's
+            // closest point to B's (at most rA + rB long) rA / (rA + rB) of the way, so within rA of
+            // A's and rB of B's. The midpoint was not: a capsule of radius 0.39 touching a disc of
+            // radius 0.0016 got a point 0.19 outside the disc (hard/rounded/17-capsule-disc).
+            const T t = rA / (rA + rB);
+            const Vec2<T> p = worldA + t * (worldB - worldA);
             worldA = p;
             worldB = p;
             dist = T(0);
