@@ -223,3 +223,139 @@ TEST_CASE("reaching the iteration limit fails, even with the right distance", "[
     CHECK(v.failed);
     CHECK(worstKey(v) == INFINITY);
 }
+
+namespace
+{
+// An answer as a plugin would give it, judged by judge() against `truth` (bounds set by hand).
+VariantOutcome answer(double distance, std::array<double, 2> pA, std::array<double, 2> pB,
+                      const exact::Result& truth, double bound = 1, double witnessBound = 0.25)
+{
+    VariantOutcome v;
+    v.distance = distance;
+    v.pointA = pA;
+    v.pointB = pB;
+    v.R = 1;
+    v.bound = bound;
+    v.witnessBound = witnessBound;
+    gjkval::judge(v, truth, Scalar::Double, false);
+    return v;
+}
+
+// Phase 3 on one answer of `double` for case c: its witness points' exact distances to their
+// shapes, and the witness verdict.
+VariantOutcome checked(const Case& c, VariantOutcome v)
+{
+    EvalContext ctx;
+    ctx.variants = {findVariant("double")};
+    CaseOutcome o;
+    o.variants = {v};
+    checkWitnesses(c, ctx, o);
+    return o.variants[0];
+}
+} // namespace
+
+TEST_CASE("a negative distance is invalid, and a false overlap on separated shapes",
+          "[judgement][invalid]")
+{
+    // Separated (exact 2): -1 claims overlap whatever the bound, so a false overlap, never
+    // undecidable (the bound here, 5, covers the error 3), and invalid: a failure.
+    const VariantOutcome sep = answer(-1, {0, 0}, {0, 0}, truthOf(2, 2), 5);
+    CHECK_FALSE(sep.beyondBound);
+    CHECK(sep.mis == Misclass::FalseOverlap);
+    CHECK(sep.invalid == Invalid::NegativeDistance);
+    CHECK(sep.failed);
+    CHECK(worstKey(sep) == INFINITY);
+    CHECK(std::string(invalidName(sep.invalid)) == "negative_distance");
+    // Overlapping (exact 0): no misclassification (the answer says overlap), still invalid.
+    const VariantOutcome ovl = answer(-1, {0, 0}, {0, 0}, truthOf(0, 0, true), 5);
+    CHECK(ovl.mis == Misclass::None);
+    CHECK(ovl.invalid == Invalid::NegativeDistance);
+    CHECK(ovl.failed);
+    // -0.0 is not negative: zero, the right answer on overlapping shapes.
+    const VariantOutcome zero = answer(-0.0, {0, 0}, {0, 0}, truthOf(0, 0, true), 5);
+    CHECK(zero.invalid == Invalid::None);
+    CHECK_FALSE(zero.failed);
+    // A non-finite answer stays non-finite, never invalid (one reason, no double count).
+    const VariantOutcome nan = answer(-1, {NAN, 0}, {0, 0}, truthOf(2, 2), 5);
+    CHECK(nan.nonfinite);
+    CHECK(nan.invalid == Invalid::None);
+    CHECK(nan.failed);
+}
+
+TEST_CASE("the witness gap: ||pB - pA|| against d, within the witness bound or invalid",
+          "[judgement][invalid]")
+{
+    // d = 1 and exact 1 (no distance error), witness bound 0.25 = 2^-2: points 1.25 apart are
+    // exactly on the bound (valid), one ulp further beyond it (invalid, witness_gap).
+    const VariantOutcome on = answer(1, {0, 0}, {1.25, 0}, truthOf(1, 1));
+    CHECK(on.witnessGap == 0.25);
+    CHECK(on.invalid == Invalid::None);
+    CHECK_FALSE(on.failed);
+    const VariantOutcome beyond = answer(1, {0, 0}, {std::nextafter(1.25, 2.0), 0}, truthOf(1, 1));
+    CHECK(beyond.invalid == Invalid::WitnessGap);
+    CHECK(beyond.mis == Misclass::None);
+    CHECK_FALSE(beyond.beyondBound); // the distance is right; the answer is not
+    CHECK(beyond.failed);
+    // Negative distance comes first: one reason per answer.
+    CHECK(answer(-1, {0, 0}, {5, 0}, truthOf(1, 1)).invalid == Invalid::NegativeDistance);
+}
+
+TEST_CASE("a witness point off its shape beyond the witness bound is invalid", "[judgement][invalid]")
+{
+    // A the point (0, 0), B the point (3, 0), the exact answer 3 with witnesses on the points.
+    // A's witness moved up by 0.25 (the witness bound, 2^-2) is on the bound: valid; by 0.5:
+    // witness_off_shape, which also replaces a witness_gap (first in the order).
+    const Case c = points(3, 0);
+    const exact::Result truth = truthOf(3, 3);
+    const VariantOutcome right = checked(c, answer(3, {0, 0}, {3, 0}, truth));
+    CHECK(right.witness == 0);
+    CHECK(right.invalid == Invalid::None);
+    CHECK_FALSE(right.failed);
+    // (0, 0.25) to (3, 0): gap sqrt(9.0625) - 3 = 0.0104 < 0.25, so only the shape decides.
+    const VariantOutcome on = checked(c, answer(3, {0, 0.25}, {3, 0}, truth));
+    CHECK(on.witness == 0.25);
+    CHECK(on.invalid == Invalid::None);
+    CHECK_FALSE(on.failed);
+    const VariantOutcome off = checked(c, answer(3, {0, 0.5}, {3, 0}, truth));
+    CHECK(off.witness == 0.5);
+    CHECK(off.invalid == Invalid::WitnessOffShape);
+    CHECK(off.failed);
+    CHECK(worstKey(off) == INFINITY);
+    // Swapped witnesses: gap 0 (same two points), each point 3 from its own shape.
+    const VariantOutcome swapped = checked(c, answer(3, {3, 0}, {0, 0}, truth));
+    CHECK(swapped.witnessGap == 0);
+    CHECK(swapped.witness == 3);
+    CHECK(swapped.invalid == Invalid::WitnessOffShape);
+    // Off its shape and a gap: the shape is named (before the gap in the order).
+    const VariantOutcome both = answer(3, {0, 1}, {3, 5}, truth);
+    REQUIRE(both.invalid == Invalid::WitnessGap);
+    CHECK(checked(c, both).invalid == Invalid::WitnessOffShape);
+    // A negative distance keeps its reason.
+    CHECK(checked(c, answer(-3, {0, 1}, {3, 0}, truth)).invalid == Invalid::NegativeDistance);
+}
+
+TEST_CASE("the witness bound, term by term, as docs/error-bound.md writes it", "[judgement][bound]")
+{
+    // u (15 A + 15 B + 10.2 D + 16.5 B~ + 12 M + 26.5 W + 9.5 d + 18.5 (rA + rB)) + 2 sub_T.
+    struct Term
+    {
+        double CaseMetrics::*metric;
+        double coefficient;
+    };
+    const Term terms[] = {{&CaseMetrics::maxA, 15},         {&CaseMetrics::maxB, 15},
+                          {&CaseMetrics::translation, 10.2}, {&CaseMetrics::maxBMapped, 16.5},
+                          {&CaseMetrics::worldExtent, 12},   {&CaseMetrics::maxW, 26.5},
+                          {&CaseMetrics::exactDistance, 9.5}, {&CaseMetrics::radiusA, 18.5},
+                          {&CaseMetrics::radiusB, 18.5}};
+    for (const Term& t : terms)
+    {
+        CaseMetrics m;
+        m.unitRoundoff = 0x1p-53;
+        m.*t.metric = 1;
+        INFO("coefficient " << t.coefficient);
+        CHECK(witnessBound(*findVariant("double"), m) == t.coefficient * 0x1p-53);
+    }
+    CaseMetrics none;
+    none.unitRoundoff = 0x1p-24;
+    CHECK(witnessBound(*findVariant("float"), none) == 2 * 0x1p-149);
+}
