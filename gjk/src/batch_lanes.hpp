@@ -218,6 +218,22 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
     auto sel = [](M m, V x, V y) { return L::sel(m, x, y); };
     auto seli = [](M m, M x, M y) { return L::sel(m, x, y); };
     auto splati = [](int x) { return L::splat(I(x)); };
+    // gjk::accurateCross (distance.hpp), lane by lane: the same steps, the same bits.
+    auto accurateCross = [](V ax, V ay, V bx, V by)
+    {
+        const V split = L::splat(T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1));
+        auto twoProduct = [&split](V x, V y, V& lo)
+        {
+            const V p = x * y;
+            const V cx = split * x, xh = cx - (cx - x), xl = x - xh;
+            const V cy = split * y, yh = cy - (cy - y), yl = y - yh;
+            lo = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+            return p;
+        };
+        V l1, l2;
+        const V h1 = twoProduct(ax, by, l1), h2 = twoProduct(ay, bx, l2);
+        return (h1 - h2) + (l1 - l2);
+    };
 
     M stop = L::load(s.stop);
     M running = stop == splati(kRunning);
@@ -312,28 +328,21 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V ve = sel(is3, sel(r12, v12, sel(r13, v13, v23)), v12);
         const V inv = one / (ue + ve);
         const V ae0 = ue * inv, ae1 = ve * inv;
-        // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from the vertex
-        // opposite the longest edge, else (the edges' cross product 0 or not finite) the areas'.
-        const V l12 = e12x * e12x + e12y * e12y, l13 = e13x * e13x + e13y * e13y,
-                l23 = e23x * e23x + e23y * e23y;
-        const M ref1 = (l23 >= l12) & (l23 >= l13);
-        const M ref2 = ~ref1 & (l13 >= l12);
-        const M ref3 = ~ref1 & ~ref2;
-        const V wrx = sel(ref1, wx[0], sel(ref2, wx[1], wx[2])), wry = sel(ref1, wy[0], sel(ref2, wy[1], wy[2]));
-        const V epx = sel(ref1, e12x, sel(ref2, -e12x, -e13x)), epy = sel(ref1, e12y, sel(ref2, -e12y, -e13y));
-        const V eqx = sel(ref1, e13x, sel(ref2, e23x, -e23x)), eqy = sel(ref1, e13y, sel(ref2, e23y, -e23y));
-        const V nr = epx * eqy - epy * eqx;
+        // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from w1 with
+        // accurateCross's steps, else (n zero or not finite) the areas'.
+        const V nr = accurateCross(e12x, e12y, e13x, e13y);
         const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
                          (nr >= L::splat(-std::numeric_limits<T>::max()));
-        V bq = (eqx * wry - eqy * wrx) / nr, cq = (wrx * epy - wry * epx) / nr;
+        V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr, cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
         bq = sel(bq > zero, bq, zero);
         cq = sel(cq > zero, cq, zero);
         V arq = (one - bq) - cq;
         arq = sel(arq > zero, arq, zero);
+        const V tq = (arq + bq) + cq;
         const V sum = (u123 + v123) + w123;
-        const V i1 = sel(cramer, sel(ref1, arq, bq), u123 / sum);
-        const V i2 = sel(cramer, sel(ref2, arq, sel(ref1, bq, cq)), v123 / sum);
-        const V i3 = sel(cramer, sel(ref3, arq, cq), w123 / sum);
+        const V i1 = sel(cramer, arq / tq, u123 / sum);
+        const V i2 = sel(cramer, bq / tq, v123 / sum);
+        const V i3 = sel(cramer, cq / tq, w123 / sum);
         const M edge = (is2 & s2e) | (is3 & (r12 | r13 | r23));
         const M interior = is3 & r123;
         const M from1to0 = (is2 & s2v2) | (is3 & (r2 | r23));

@@ -491,6 +491,21 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
         CHECK(out.pointA == Vec2<T>{T(2) / T(3), 0});
         CHECK(out.pointB == out.pointA);
     }
+    SECTION("overlapping rounded shapes of unequal radii: the common point is in the smaller one")
+    {
+        // Core distance 0.5 < 0.875 + 0.125: t = 0.875, the point (0.4375, 0), exact: 0.4375
+        // from A's core (<= 0.875) and 0.0625 from B's (<= 0.125). The midpoint (0.25, 0) would
+        // be 0.25 from B's core, outside B (hard/rounded/17-capsule-disc, docs/error-bound.md).
+        Scene<T> s;
+        s.a = {{0, 0}};
+        s.b = {{0.5, 0}};
+        s.radiusA = 0.875;
+        s.radiusB = 0.125;
+        const auto out = query(s);
+        CHECK(out.distance == T(0));
+        CHECK(out.pointA == Vec2<T>{0.4375, 0});
+        CHECK(out.pointB == out.pointA);
+    }
     SECTION("useRadii = false gives the core distance")
     {
         Scene<T> s;

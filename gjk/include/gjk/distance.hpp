@@ -640,6 +640,27 @@ template <class T> void solve2(Simplex<T>& s)
     s.count = 2;
 }
 
+// cross(a, b) to about 3u relative (not 2u |a| |b| absolute): both products error-free (Dekker's
+// TwoProduct with Veltkamp's split; no FMA, which is a library call on the x86-64 baseline), then
+// (h1 - h2) + (l1 - l2). For components up to 2 Tolerances<T>::maxCoordinate the split cannot
+// overflow; products below T's normal range lose their low parts (an absolute error of a few
+// subnormals). solve3's containment weights use it; gjk/src/batch_lanes.hpp has the same steps.
+template <class T> T accurateCross(Vec2<T> a, Vec2<T> b)
+{
+    constexpr T split = T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1); // 2^27 + 1, 2^12 + 1
+    auto twoProduct = [](T x, T y, T& lo)
+    {
+        const T p = x * y;
+        const T cx = split * x, xh = cx - (cx - x), xl = x - xh;
+        const T cy = split * y, yh = cy - (cy - y), yl = y - yh;
+        lo = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+        return p;
+    };
+    T l1, l2;
+    const T h1 = twoProduct(a.x, b.y, l1), h2 = twoProduct(a.y, b.x, l2);
+    return (h1 - h2) + (l1 - l2);
+}
+
 // --- Section 2: point (the origin) to triangle ---------------------------------------------------
 //
 // Nine barycentric coordinates (numerators only):
@@ -719,30 +740,30 @@ template <class T> void solve3(Simplex<T>& s)
     if (u123 > T(0) && v123 > T(0) && w123 > T(0))
     {
         // The weights (only the witness point uses them: containment ends the query): Cramer's
-        // rule for w_r + b (w_p - w_r) + c (w_q - w_r) = 0 from the vertex w_r opposite the
-        // longest edge, whose angle has the largest sine. Its residual sum a_k w_k is within about
-        // 7u |w_r| of the origin (docs/error-bound.md, "Witness points"), where the areas above
-        // (each with 2u |w|^2 of error, against a sum |n123| as small as a needle triangle's) put
-        // A's witness 6e-14 outside B in random/35820 (witness bound 1.2e-14) and 3.1 outside in
-        // hard/mixed-scale/60. If the edges' cross product vanishes or is not finite (underflow,
-        // overflow), the areas' weights; each weight clamped at 0.
-        const Vec2<T> d12 = w2 - w1, d13 = w3 - w1, d23 = w3 - w2;
-        const T l12 = dot(d12, d12), l13 = dot(d13, d13), l23 = dot(d23, d23);
-        const int r = (l23 >= l12 && l23 >= l13) ? 0 : (l13 >= l12 ? 1 : 2);
-        const Vec2<T> wr = r == 0 ? w1 : (r == 1 ? w2 : w3);
-        const Vec2<T> ep = r == 0 ? d12 : (r == 1 ? -d12 : -d13); // to the first other vertex
-        const Vec2<T> eq = r == 0 ? d13 : (r == 1 ? d23 : -d23);  // to the second
-        const T n = cross(ep, eq);
+        // rule for w1 + b (w2 - w1) + c (w3 - w1) = 0 with cross products to a few u relative
+        // (accurateCross), so that b and c are each within ~7u of their own size and the residual
+        // sum a_k w_k within ~18u W of the origin whatever the triangle's shape (docs/error-bound.md,
+        // "Witness points"). The areas above carry 2u |w|^2 each, against a sum |n123| that a
+        // needle or a nearly flat triangle makes small: A's witness was 6e-14 outside B in
+        // random/35820 (witness bound 1.2e-14), 3.1 outside in hard/mixed-scale/60, and Cramer's
+        // rule with plain cross products still left 2.7e-7 on a flat triangle found by
+        // `gjk-validate search`. If n vanishes or is not finite, the areas' weights. Each weight
+        // clamped at 0, then divided by their sum.
+        const Vec2<T> d12 = w2 - w1, d13 = w3 - w1;
+        const T n = accurateCross(d12, d13);
         if ((n > T(0) || n < T(0)) && std::abs(n) <= std::numeric_limits<T>::max())
         {
-            T b = cross(eq, wr) / n, c = cross(wr, ep) / n;
+            T b = accurateCross(d13, w1) / n, c = accurateCross(w1, d12) / n;
             b = b > T(0) ? b : T(0);
             c = c > T(0) ? c : T(0);
-            T ar = (T(1) - b) - c;
-            ar = ar > T(0) ? ar : T(0);
-            s.v[0].a = r == 0 ? ar : b;
-            s.v[1].a = r == 1 ? ar : (r == 0 ? b : c);
-            s.v[2].a = r == 2 ? ar : c;
+            T a1 = (T(1) - b) - c;
+            a1 = a1 > T(0) ? a1 : T(0);
+            // Normalised: a clamped weight (the origin within rounding of an edge) would leave the
+            // sum above 1, the point off A.
+            const T t = (a1 + b) + c;
+            s.v[0].a = a1 / t;
+            s.v[1].a = b / t;
+            s.v[2].a = c / t;
             s.count = 3;
             return;
         }
