@@ -11,7 +11,10 @@ case was held to, never from the verdict under test:
   negative       every case fails, invalid "negative_distance"; a false overlap where the exact
                  distance is > 0, none where it is 0
   nan_witness    every case fails as non-finite (invalid stays null)
-  shift_witness  every case fails, invalid "witness_off_shape"
+  shift_witness  fails, invalid "witness_off_shape", wherever a point moved by (10, 0) leaves its
+                 shape (by more than 4 x the witness bound; the distance computed here from the
+                 shapes of `E generate`); passes where both stay on their shapes (a long shared
+                 edge: hard/touching-edge/13-shared-edge-rot270); cases in between not asserted
   swap_witness   fails exactly where the exact distance exceeds twice the witness bound (A's point
                  then lies at about d from A), invalid "witness_off_shape"; passes where the exact
                  distance is 0 (the points are one point); the cases in between are not asserted
@@ -42,6 +45,51 @@ def fail(msg):
 def number(v):
     """A report number: a JSON number, or "inf" / "-inf" / "nan"."""
     return float(v)
+
+
+def world_points(shape):
+    t = shape.get("transform", {})
+    c, s = t.get("q", [1.0, 0.0])
+    px, py = t.get("p", [0.0, 0.0])
+    return [(c * x - s * y + px, s * x + c * y + py) for x, y in shape["points"]]
+
+
+def hull(pts):
+    """Convex hull, counter-clockwise (monotone chain); 1 or 2 points for degenerate sets."""
+    pts = sorted(set(pts))
+    if len(pts) <= 2:
+        return pts
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def segment_distance(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    l2 = dx * dx + dy * dy
+    t = 0.0 if l2 == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2))
+    return math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy)
+
+
+def shape_distance(shape, p):
+    """Distance from world point p to the shape with its radius (0 inside), in double."""
+    h = hull(world_points(shape))
+    if len(h) >= 3 and all((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0
+                           for a, b in zip(h, h[1:] + h[:1])):
+        return 0.0
+    d = min(segment_distance(p, a, b) for a, b in zip(h, h[1:] + h[:1])) if len(h) > 1 else \
+        math.hypot(p[0] - h[0][0], p[1] - h[0][1])
+    return max(0.0, d - shape.get("radius", 0.0))
 
 
 def main():
@@ -78,6 +126,16 @@ def main():
         if f["variants"]["double"]["failures"] != 0:
             fail("{} x double: {} failures".format(fam, f["variants"]["double"]["failures"]))
 
+    shapes = {}  # case name -> the case (shift_witness: the shapes, from `generate`)
+    if a.kind == "shift_witness":
+        gen = os.path.join(a.work, "cases.json")
+        g = [a.exe, "generate", "-o", gen]
+        for fam, n in FAMILIES:
+            g += ["--family", "{}:{}".format(fam, n)]
+        q = subprocess.run(g, capture_output=True, text=True)
+        if q.returncode != 0:
+            fail("{} exited {}: {}".format(" ".join(g), q.returncode, q.stderr[-2000:]))
+        shapes = {c["name"]: c for c in json.load(open(gen))["cases"]}
     branches = {}  # branch -> cases checked
     failures = read = 0
     with open(os.path.join(out, "cases.jsonl")) as lines:
@@ -114,7 +172,15 @@ def main():
                     fail("case {}: pointA {} is not NaN".format(c["name"], v["pointA"]))
                 expect("every case (non-finite)", True, None)
             elif a.kind == "shift_witness":
-                expect("every case", True, "witness_off_shape")
+                case = shapes[c["name"]]
+                off = max(shape_distance(case["a"], [number(x) for x in v["pointA"]]),
+                          shape_distance(case["b"], [number(x) for x in v["pointB"]]))
+                if off > 4 * wbound:
+                    expect("moved off a shape: fails", True, "witness_off_shape")
+                elif off < wbound / 4:
+                    expect("both still on their shapes: passes", False, None)
+                else:
+                    branches["between (not asserted)"] = branches.get("between (not asserted)", 0) + 1
             elif a.kind == "swap_witness":
                 # Swapped, A's point is B's: at the exact distance d from A, to within the witness
                 # bound (both points are within it of their shapes). It fails where d > 2 x bound
@@ -139,6 +205,7 @@ def main():
                 else:
                     expect("error within both bounds: passes", False, None)
     need = {"negative": ["separated: false overlap", "overlapping: no misclass"],
+            "shift_witness": ["moved off a shape: fails"],
             "swap_witness": ["d > 2 x witness bound: fails", "d = 0: passes"],
             "rel_error": ["d = 0: passes", "error beyond the bound: fails"]}.get(a.kind, [])
     for b in need:

@@ -45,8 +45,8 @@ std::string boundFormula(const VariantInfo& variant)
 // lengths, for the reference options (every variant and plugin is held to it). Term by term:
 //   9 A + 15 B + 10.2 D + 10.5 B~ + 3 M + 6 (rA + rB)   each point off its shape: the weights' sum,
 //                         the combination, to world, B's mapped points (term 1), the radius offsets
-//   18 W                  a triangle's (containment) point off B: Cramer's residual, largest angle
-//                         at most 150 degrees
+//   18 W                  a triangle's (containment) point off B: Cramer's residual with
+//                         accurate cross products
 //   6 A + 6 B~ + 6 M + 8.5 W + 9.5 d + 12.5 (rA + rB)   ||pB - pA|| against d
 //   3 M                   overlapping rounded shapes: the one point between the two, which is off
 //                         its shapes by at most the first line plus the gap
