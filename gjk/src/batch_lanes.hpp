@@ -218,6 +218,22 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
     auto sel = [](M m, V x, V y) { return L::sel(m, x, y); };
     auto seli = [](M m, M x, M y) { return L::sel(m, x, y); };
     auto splati = [](int x) { return L::splat(I(x)); };
+    // gjk::accurateCross (distance.hpp), lane by lane: the same steps, the same bits.
+    auto accurateCross = [](V ax, V ay, V bx, V by)
+    {
+        const V split = L::splat(T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1));
+        auto twoProduct = [&split](V x, V y, V& lo)
+        {
+            const V p = x * y;
+            const V cx = split * x, xh = cx - (cx - x), xl = x - xh;
+            const V cy = split * y, yh = cy - (cy - y), yl = y - yh;
+            lo = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+            return p;
+        };
+        V l1, l2;
+        const V h1 = twoProduct(ax, by, l1), h2 = twoProduct(ay, bx, l2);
+        return (h1 - h2) + (l1 - l2);
+    };
 
     M stop = L::load(s.stop);
     M running = stop == splati(kRunning);
@@ -312,7 +328,21 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V ve = sel(is3, sel(r12, v12, sel(r13, v13, v23)), v12);
         const V inv = one / (ue + ve);
         const V ae0 = ue * inv, ae1 = ve * inv;
+        // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from w1 with
+        // accurateCross's steps, else (n zero or not finite) the areas'.
+        const V nr = accurateCross(e12x, e12y, e13x, e13y);
+        const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
+                         (nr >= L::splat(-std::numeric_limits<T>::max()));
+        V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr, cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
+        bq = sel(bq > zero, bq, zero);
+        cq = sel(cq > zero, cq, zero);
+        V arq = (one - bq) - cq;
+        arq = sel(arq > zero, arq, zero);
+        const V tq = (arq + bq) + cq;
         const V sum = (u123 + v123) + w123;
+        const V i1 = sel(cramer, arq / tq, u123 / sum);
+        const V i2 = sel(cramer, bq / tq, v123 / sum);
+        const V i3 = sel(cramer, cq / tq, w123 / sum);
         const M edge = (is2 & s2e) | (is3 & (r12 | r13 | r23));
         const M interior = is3 & r123;
         const M from1to0 = (is2 & s2v2) | (is3 & (r2 | r23));
@@ -323,9 +353,9 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         L::move(wy, solving, from1to0, from2to0, from2to1);
         L::move(ia, solving, from1to0, from2to0, from2to1);
         L::move(ib, solving, from1to0, from2to0, from2to1);
-        a[0] = sel(solving, sel(interior, u123 / sum, sel(edge, ae0, one)), a[0]);
-        a[1] = sel(solving & (edge | interior), sel(interior, v123 / sum, ae1), a[1]);
-        a[2] = sel(solving & interior, w123 / sum, a[2]);
+        a[0] = sel(solving, sel(interior, i1, sel(edge, ae0, one)), a[0]);
+        a[1] = sel(solving & (edge | interior), sel(interior, i2, ae1), a[1]);
+        a[2] = sel(solving & interior, i3, a[2]);
         count = seli(solving, seli(interior, splati(3), seli(edge, splati(2), mone)), count);
 
         // Case 2: containment.
@@ -503,7 +533,9 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
             const V rSum = rA + rB;
             const M apart = rounded & (dist > rSum);
             const M overlap = rounded & ~apart;
-            const V midx = T(0.5) * (worldAx + worldBx), midy = T(0.5) * (worldAy + worldBy);
+            // One point in both (distance.hpp): rA / (rA + rB) of the way from A's point to B's.
+            const V t = rA / rSum;
+            const V midx = worldAx + t * (worldBx - worldAx), midy = worldAy + t * (worldBy - worldAy);
             dist = sel(apart, dist - rSum, sel(overlap, zero, dist));
             const V ax2 = sel(apart, worldAx + rA * nx, sel(overlap, midx, worldAx));
             const V ay2 = sel(apart, worldAy + rA * ny, sel(overlap, midy, worldAy));

@@ -481,7 +481,9 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
     }
     SECTION("overlapping rounded shapes: distance clamped at 0, one common point")
     {
-        // Core distance 2 < 1 + 2: overlap; the midpoint of the core points (1,0) is reported.
+        // Core distance 2 < 1 + 2: overlap; the point rA / (rA + rB) = 1/3 of the way from A's core
+        // point to B's, (2/3, 0): within 1 of A and 4/3 <= 2 of B, in both rounded shapes (the
+        // midpoint (1, 0) was before issue 30: it is in both here, not when one radius is small).
         Scene<T> s;
         s.a = {{0, 0}};
         s.b = {{2, 0}};
@@ -489,7 +491,22 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
         s.radiusB = 2;
         const auto out = query(s);
         CHECK(out.distance == T(0));
-        CHECK(out.pointA == Vec2<T>{1, 0});
+        CHECK(out.pointA == Vec2<T>{T(2) / T(3), 0});
+        CHECK(out.pointB == out.pointA);
+    }
+    SECTION("overlapping rounded shapes of unequal radii: the common point is in the smaller one")
+    {
+        // Core distance 0.5 < 0.875 + 0.125: t = 0.875, the point (0.4375, 0), exact: 0.4375
+        // from A's core (<= 0.875) and 0.0625 from B's (<= 0.125). The midpoint (0.25, 0) would
+        // be 0.25 from B's core, outside B (hard/rounded/17-capsule-disc, docs/error-bound.md).
+        Scene<T> s;
+        s.a = {{0, 0}};
+        s.b = {{0.5, 0}};
+        s.radiusA = 0.875;
+        s.radiusB = 0.125;
+        const auto out = query(s);
+        CHECK(out.distance == T(0));
+        CHECK(out.pointA == Vec2<T>{0.4375, 0});
         CHECK(out.pointB == out.pointA);
     }
     SECTION("useRadii = false gives the core distance")

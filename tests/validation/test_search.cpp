@@ -131,11 +131,13 @@ TEST_CASE("search: a failing variant is reported as failing, exit code 1", "[sea
 
 TEST_CASE("search: it finds failures its start cases do not have", "[search]")
 {
-    // float-closest-point passes all 16 cases of hard/talk-segment (largest ratio 4e-5); mutated
-    // toward a larger ratio they fail (seeds 1 to 6 at 10000 evaluations: 4068 to 6715 failures).
+    // float-closest-point passes all 16 cases of hard/talk-segment (largest error / bound 4e-5,
+    // largest witness error / witness bound 0.0135: the objective is the larger, answerRatio);
+    // mutated toward a larger ratio they fail (seeds 1 to 6 at 10000 evaluations: 4068 to 6715
+    // failures).
     const SearchResult r =
         search(searchConfig({"hard/talk-segment"}, "float-closest-point", 10000, 2));
-    CHECK(r.startBest[0] < 1e-3);
+    CHECK(r.startBest[0] < 0.02);
     CHECK(r.best[0] > 1);
     CHECK(r.failures.cases >= 1);
     CHECK(r.exitCode == kExitFail);

@@ -137,7 +137,8 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
         return {&s.cases,        &s.failures,   &s.falseOverlap, &s.falseSeparation,
                 &s.undecidable,  &s.nonfinite,  &s.outOfRange,   &s.iterationLimit,
                 &s.beyondBound,  &s.skipped,    &s.notApplicable, &s.certified,
-                &s.contains,     &s.uncertified};
+                &s.contains,     &s.uncertified, &s.invalid,
+                &s.invalidReasons[0], &s.invalidReasons[1], &s.invalidReasons[2]};
     };
     Stats a, b;
     const auto ca = counters(a), cb = counters(b);
@@ -163,6 +164,11 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
     CHECK(j["false_overlap"] == 303);
     CHECK(j["false_separation"] == 404);
     CHECK(j["undecidable"] == 505);
+    // invalid (counter 14) and its reasons (15 to 17), by name.
+    CHECK(j["invalid"] == 1515);
+    CHECK(j["invalid_reasons"]["negative_distance"] == 1616);
+    CHECK(j["invalid_reasons"]["witness_off_shape"] == 1717);
+    CHECK(j["invalid_reasons"]["witness_gap"] == 1818);
 }
 
 TEST_CASE("merging histograms: zeros add, the maximum stays, ties keep the first shard's case",
@@ -223,12 +229,24 @@ TEST_CASE("statistics survive their state: what a shard or a checkpoint writes",
     s.iterations.add(2);
     s.iterations.add(5);
     s.stops[1] = 3;
+    s.invalid = 3;
+    s.invalidReasons = {1, 0, 2};
     const Json state = s.state();
     const Stats back = Stats::fromState(Json::parse(state.dump())); // through text, as on disk
     CHECK(back.state() == state);
     CHECK(back.toJson() == s.toJson());
     CHECK(back.abs.maxCase == "b");
     CHECK(back.iterations.sum == 7);
+    CHECK(back.invalid == 3);
+    CHECK(back.invalidReasons == std::array<std::uint64_t, kInvalidReasons>{1, 0, 2});
+    // A state written before the witness judgement (no "invalid"): read as none.
+    Json old = state;
+    old.erase("invalid");
+    old.erase("invalid_reasons");
+    CHECK(Stats::fromState(old).invalid == 0);
+    Json wrongReasons = state;
+    wrongReasons["invalid_reasons"] = std::vector<std::uint64_t>{1, 2};
+    CHECK_THROWS(Stats::fromState(wrongReasons));
     Json broken = state;
     broken["abs"]["counts"] = std::vector<std::uint64_t>{1, 2};
     CHECK_THROWS(Stats::fromState(broken));

@@ -640,6 +640,27 @@ template <class T> void solve2(Simplex<T>& s)
     s.count = 2;
 }
 
+// cross(a, b) to about 3u relative (not 2u |a| |b| absolute): both products error-free (Dekker's
+// TwoProduct with Veltkamp's split; no FMA, which is a library call on the x86-64 baseline), then
+// (h1 - h2) + (l1 - l2). For components up to 2 Tolerances<T>::maxCoordinate the split cannot
+// overflow; products below T's normal range lose their low parts (an absolute error of a few
+// subnormals). solve3's containment weights use it; gjk/src/batch_lanes.hpp has the same steps.
+template <class T> T accurateCross(Vec2<T> a, Vec2<T> b)
+{
+    constexpr T split = T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1); // 2^27 + 1, 2^12 + 1
+    auto twoProduct = [](T x, T y, T& lo)
+    {
+        const T p = x * y;
+        const T cx = split * x, xh = cx - (cx - x), xl = x - xh;
+        const T cy = split * y, yh = cy - (cy - y), yl = y - yh;
+        lo = ((xh * yh - p) + xh * yl + xl * yh) + xl * yl;
+        return p;
+    };
+    T l1, l2;
+    const T h1 = twoProduct(a.x, b.y, l1), h2 = twoProduct(a.y, b.x, l2);
+    return (h1 - h2) + (l1 - l2);
+}
+
 // --- Section 2: point (the origin) to triangle ---------------------------------------------------
 //
 // Nine barycentric coordinates (numerators only):
@@ -718,10 +739,38 @@ template <class T> void solve3(Simplex<T>& s)
     // tests were consistent; their sum |n123| is then positive and the division is safe.
     if (u123 > T(0) && v123 > T(0) && w123 > T(0))
     {
+        // The weights (only the witness point uses them: containment ends the query): Cramer's
+        // rule for w1 + b (w2 - w1) + c (w3 - w1) = 0 with cross products to a few u relative
+        // (accurateCross), so that b and c are each within ~7u of their own size and the residual
+        // sum a_k w_k within ~18u W of the origin whatever the triangle's shape (docs/error-bound.md,
+        // "Witness points"). The areas above carry 2u |w|^2 each, against a sum |n123| that a
+        // needle or a nearly flat triangle makes small: A's witness was 6e-14 outside B in
+        // random/35820 (witness bound 1.2e-14), 3.1 outside in hard/mixed-scale/60, and Cramer's
+        // rule with plain cross products still left 2.7e-7 on a flat triangle found by
+        // `gjk-validate search`. If n vanishes or is not finite, the areas' weights. Each weight
+        // clamped at 0, then divided by their sum.
+        const Vec2<T> d12 = w2 - w1, d13 = w3 - w1;
+        const T n = accurateCross(d12, d13);
+        if ((n > T(0) || n < T(0)) && std::abs(n) <= std::numeric_limits<T>::max())
+        {
+            T b = accurateCross(d13, w1) / n, c = accurateCross(w1, d12) / n;
+            b = b > T(0) ? b : T(0);
+            c = c > T(0) ? c : T(0);
+            T a1 = (T(1) - b) - c;
+            a1 = a1 > T(0) ? a1 : T(0);
+            // Normalised: a clamped weight (the origin within rounding of an edge) would leave the
+            // sum above 1, the point off A.
+            const T t = (a1 + b) + c;
+            s.v[0].a = a1 / t;
+            s.v[1].a = b / t;
+            s.v[2].a = c / t;
+            s.count = 3;
+            return;
+        }
         // Three divisions, not a reciprocal: for a sum in the subnormal range 1/sum overflows and
         // the weights became inf, the witness points NaN (the fuzzer, float coordinates near
         // 2^-89). Each quotient is in [0, 1]. Once per query (containment ends it).
-        const T sum = u123 + v123 + w123;
+        const T sum = (u123 + v123) + w123;
         s.v[0].a = u123 / sum;
         s.v[1].a = v123 / sum;
         s.v[2].a = w123 / sum;
@@ -1114,8 +1163,12 @@ GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexC
         }
         else
         {
-            // The rounded shapes overlap: report the midpoint on both, distance 0.
-            const Vec2<T> p = T(0.5) * (worldA + worldB);
+            // The rounded shapes overlap, distance 0: one point in both, on the segment from A's
+            // closest point to B's (at most rA + rB long) rA / (rA + rB) of the way, so within rA of
+            // A's and rB of B's. The midpoint was not: a capsule of radius 0.39 touching a disc of
+            // radius 0.0016 got a point 0.19 outside the disc (hard/rounded/17-capsule-disc).
+            const T t = rA / (rA + rB);
+            const Vec2<T> p = worldA + t * (worldB - worldA);
             worldA = p;
             worldB = p;
             dist = T(0);

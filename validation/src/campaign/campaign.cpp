@@ -258,6 +258,11 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
         s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
         s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
         s.beyondBound += v.beyondBound ? 1 : 0;
+        if (v.invalid != Invalid::None)
+        {
+            ++s.invalid;
+            ++s.invalidReasons[std::size_t(v.invalid) - 1];
+        }
         if (!v.nonfinite)
         {
             s.abs.add(v.abs, name, index);
@@ -267,6 +272,7 @@ void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std:
             s.boundRatio.add(v.boundRatio, name, index);
             s.witness.add(v.witness, name, index);
             s.witnessGap.add(v.witnessGap, name, index);
+            s.witnessRatio.add(v.witnessRatio, name, index); // NaN (not checked) is ignored
         }
     }
     if (vi.scalar == Scalar::Float)
@@ -547,6 +553,7 @@ Json variantsJson(const EvalContext& ctx)
                            {"max_vertices", v->plugin->impl.max_vertices}};
         }
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
+        j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};
         out.push_back(std::move(j));
     }
     return out;

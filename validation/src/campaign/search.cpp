@@ -307,8 +307,8 @@ struct Candidate
     CaseOutcome o;
 };
 
-// One evaluation: the reader's checks, then the campaign's phases 1 and 2 (exact truth, every
-// variant's query with its errors and bound). The witness phase is left out: it judges nothing.
+// One evaluation: the reader's checks, then the campaign's phases 1 to 3 (exact truth, every
+// variant's query with its errors and bounds, the witness points' distances to their shapes).
 void evaluate(Candidate& cand, const EvalContext& ctx)
 {
     cand.invalid = validCandidate(cand.sc.c);
@@ -321,6 +321,7 @@ void evaluate(Candidate& cand, const EvalContext& ctx)
         return;
     }
     runVariants(cand.sc.c, prepare(cand.sc.c), ctx, cand.o);
+    checkWitnesses(cand.sc.c, ctx, cand.o);
 }
 
 const char* failureKind(const VariantOutcome& v)
@@ -333,7 +334,19 @@ const char* failureKind(const VariantOutcome& v)
         return misclassName(v.mis);
     if (v.certified && !v.intervalContains)
         return "certified interval misses the truth";
+    if (v.invalid != Invalid::None)
+        return invalidName(v.invalid);
     return "error beyond the bound";
+}
+
+// The objective of one answer: error / bound, or the witness points' error / the witness bound
+// when larger (each point's distance to its shape, and the gap ||pB - pA|| against d). A witness
+// bound within 1024 subnormals of its floor measures resolution (as for the distance, below).
+double answerRatio(const VariantOutcome& v, Scalar scalar)
+{
+    if (v.witnessBound < 1024 * smallestSubnormal(scalar))
+        return v.boundRatio;
+    return std::isnan(v.witnessRatio) ? v.boundRatio : std::max(v.boundRatio, v.witnessRatio);
 }
 
 std::string ratioText(double r)
@@ -518,7 +531,8 @@ class Search
     struct CaseTally
     {
         bool counted = true, skipped = false, outOfRange = false, failed = false;
-        bool nonfinite = false, limit = false, mis = false, interval = false, beyond = false;
+        bool nonfinite = false, limit = false, mis = false, interval = false, beyond = false,
+             invalid = false;
     };
 
     void merge(Candidate& cand)
@@ -558,6 +572,7 @@ class Search
             t.mis |= v.mis == Misclass::FalseOverlap || v.mis == Misclass::FalseSeparation;
             t.interval |= v.certified && !v.intervalContains;
             t.beyond |= v.beyondBound && !v.nonfinite;
+            t.invalid |= v.invalid != Invalid::None;
             if (sc.failure.empty())
                 sc.failure = fmt::format("{}: {}", ctx_.variants[k]->name, failureKind(v));
         }
@@ -581,19 +596,20 @@ class Search
             t.counted = false;
             return;
         }
-        sc.ratios[k] = v.boundRatio;
-        if (!v.failed && !(v.boundRatio <= res_.bestPassing[k]))
-            res_.bestPassing[k] = v.boundRatio;
-        if (!(v.boundRatio <= res_.best[k])) // NaN (no best yet) too
+        const double ratio = answerRatio(v, ctx_.variants[k]->scalar);
+        sc.ratios[k] = ratio;
+        if (!v.failed && !(ratio <= res_.bestPassing[k]))
+            res_.bestPassing[k] = ratio;
+        if (!(ratio <= res_.best[k])) // NaN (no best yet) too
         {
-            res_.best[k] = v.boundRatio;
+            res_.best[k] = ratio;
             res_.bestCase[k] = sc.c.name;
             if (reportImprovements_ && cfg_.progress)
                 std::fprintf(stderr,
                              "search: %llu evaluations, %.1f s: %s best ratio %s (%s, from "
                              "%s, %d mutations)\n",
                              (unsigned long long)res_.evaluations, secondsSince(t0_),
-                             ctx_.variants[k]->name.c_str(), ratioText(v.boundRatio).c_str(),
+                             ctx_.variants[k]->name.c_str(), ratioText(ratio).c_str(),
                              sc.c.name.c_str(), sc.origin.c_str(), sc.mutations);
         }
     }
@@ -607,6 +623,7 @@ class Search
         f.misclassified += t.mis;
         f.interval += t.interval;
         f.beyondBound += t.beyond;
+        f.invalid += t.invalid;
         if (cfg_.progress && f.cases <= 10)
             std::fprintf(stderr, "search: FAILURE %s (%s)\n", sc.c.name.c_str(),
                          sc.failure.c_str());
@@ -718,6 +735,7 @@ Json searchJson(const SearchConfig& cfg, const SearchResult& r,
     j["variants"] = std::move(vars);
     j["failures"] = {{"cases", r.failures.cases},
                      {"beyond_bound", r.failures.beyondBound},
+                     {"invalid", r.failures.invalid},
                      {"non_finite", r.failures.nonfinite},
                      {"misclassified", r.failures.misclassified},
                      {"iteration_limit", r.failures.iterationLimit},
@@ -767,10 +785,10 @@ std::string searchSummary(const SearchConfig& config, const SearchResult& r)
                      "range, {} duplicates\n",
                      r.invalidMutations, r.skipped, r.outOfRange, r.duplicates);
     const SearchFailures& f = r.failures;
-    s += fmt::format("failures: {} (beyond the bound {}, non-finite {}, misclassified {}, "
-                     "iteration limit {}, interval {})\n",
-                     f.cases, f.beyondBound, f.nonfinite, f.misclassified, f.iterationLimit,
-                     f.interval);
+    s += fmt::format("failures: {} (beyond the bound {}, invalid {}, non-finite {}, misclassified "
+                     "{}, iteration limit {}, interval {})\n",
+                     f.cases, f.beyondBound, f.invalid, f.nonfinite, f.misclassified,
+                     f.iterationLimit, f.interval);
     s += fmt::format("result: {} (exit code {})\n",
                      r.exitCode == kExitPass   ? "PASS"
                      : r.exitCode == kExitFail ? "FAIL"

@@ -2,9 +2,10 @@
 // Starts from families and case files (collectInputs), mutates the best cases it has seen (a vertex
 // or a shape moved by ulps or by 2^-k, a scale, a tiny rotation, the gap shifted toward 0, a
 // vertex duplicated, collapsed or added near an edge, A and B swapped, everything rounded to
-// float) and keeps the K best by the objective: the largest bound_ratio over the chosen variants,
-// measured by the campaign's own phases (computeTruth, runVariants: the same truth, queries and
-// errorBound). docs/validation.md, "Adversarial search".
+// float) and keeps the K best by the objective: the largest bound_ratio (or witness error / witness
+// bound, when larger) over the chosen variants, measured by the campaign's own phases
+// (computeTruth, runVariants, checkWitnesses: the same truth, queries, errorBound and
+// witnessBound). docs/validation.md, "Adversarial search".
 #pragma once
 
 #include "campaign/campaign.hpp"
@@ -34,7 +35,7 @@ struct SearchConfig
 struct SearchCase
 {
     Case c;
-    double score = 0;            // the objective: max over the variants of bound_ratio
+    double score = 0;            // the objective: max over the variants of answerRatio (search.cpp)
     std::vector<double> ratios;  // per variant (NaN: not counted for that variant)
     std::size_t bestVariant = 0; // the variant of `score`
     std::string origin;          // the start case it descends from
@@ -52,6 +53,7 @@ struct SearchFailures
     std::uint64_t cases = 0;                              // evaluations with a failing variant
     std::uint64_t beyondBound = 0, nonfinite = 0, misclassified = 0, iterationLimit = 0,
                   interval = 0;
+    std::uint64_t invalid = 0; // an answer outside its contract (negative, witness points)
 };
 
 struct SearchResult

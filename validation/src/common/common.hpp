@@ -64,6 +64,25 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
                      "a previous report or output file stays in place, whole."},
 };
 
+// Why an answer is not a valid answer (docs/validation.md, "Failures"): one reason per answer, the
+// first that applies in this order (evaluate.cpp decides; Stats counts them by name). A non-finite
+// distance or witness point is `nonfinite` instead, never Invalid.
+enum class Invalid
+{
+    None,
+    NegativeDistance, // distance < 0
+    WitnessOffShape,  // a witness point further from its shape than the witness bound
+    WitnessGap,       // | ||pB - pA|| - distance | beyond the witness bound
+};
+inline constexpr int kInvalidReasons = 3; // the reasons after None
+// The report's name of a reason (cases.jsonl "invalid", Stats "invalid_reasons"); null for None.
+inline const char* invalidName(Invalid r)
+{
+    constexpr const char* names[kInvalidReasons + 1] = {nullptr, "negative_distance",
+                                                        "witness_off_shape", "witness_gap"};
+    return names[int(r)];
+}
+
 // A double as the report writes it: a JSON number when finite, else "inf", "-inf" or "nan".
 inline Json num(double v)
 {

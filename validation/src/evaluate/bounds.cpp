@@ -41,4 +41,30 @@ std::string boundFormula(const VariantInfo& variant)
     return f + " (docs/error-bound.md)";
 }
 
+// The witness bound derived in docs/error-bound.md ("Witness points"), to first order in u, in world
+// lengths, for the reference options (every variant and plugin is held to it). Term by term:
+//   9 A + 15 B + 10.2 D + 10.5 B~ + 3 M + 6 (rA + rB)   each point off its shape: the weights' sum,
+//                         the combination, to world, B's mapped points (term 1), the radius offsets
+//   18 W                  a triangle's (containment) point off B: Cramer's residual with
+//                         accurate cross products
+//   6 A + 6 B~ + 6 M + 8.5 W + 9.5 d + 12.5 (rA + rB)   ||pB - pA|| against d
+//   3 M                   overlapping rounded shapes: the one point between the two, which is off
+//                         its shapes by at most the first line plus the gap
+// One number for every check: their sum. Plus the subnormal resolution of the two points (a
+// rescaled query's points are scaled back, rounded to T's subnormals).
+double witnessBound(const VariantInfo& variant, const CaseMetrics& m)
+{
+    const double u = m.unitRoundoff;
+    const double terms = 15 * m.maxA + 15 * m.maxB + 10.2 * m.translation + 16.5 * m.maxBMapped +
+                         12 * m.worldExtent + 26.5 * m.maxW + 9.5 * m.exactDistance +
+                         18.5 * (m.radiusA + m.radiusB);
+    return u * terms + 2 * smallestSubnormal(variant.scalar);
+}
+
+std::string witnessBoundFormula(const VariantInfo&)
+{
+    return "u (15 A + 15 B + 10.2 D + 16.5 B~ + 12 M + 26.5 W + 9.5 d + 18.5 (rA + rB)) + 2 x the "
+           "type's smallest subnormal, world lengths (docs/error-bound.md, \"Witness points\")";
+}
+
 } // namespace gjkval

@@ -1,5 +1,6 @@
-// The error bound each case is judged against. ONE function, errorBound(): replace its body (and
-// boundFormula()) to change the bound for every report, test and exit code.
+// The error bounds each case is judged against. ONE function each, errorBound() for the distance
+// and witnessBound() for the witness points: replace its body (and its formula's text) to change
+// the bound for every report, test and exit code.
 #pragma once
 
 #include "evaluate/variants.hpp"
@@ -24,6 +25,7 @@ struct CaseMetrics
     double maxBMapped = 0;    // B~ = max |b~_j|, B's points mapped into the compute frame
     double translation = 0;   // D  = |pB - pA| (world translations)
     double maxW = 0; // W  = max |a_i - b~_j| (exact over pairs when n*m <= 1e6, else A + B~)
+    double worldExtent = 0; // M = max |world coordinate| of A's and B's points, + max(rA, rB)
 };
 
 // The derived bound of docs/error-bound.md. Cases GJK flags outOfRange are not judged against it
@@ -31,5 +33,12 @@ struct CaseMetrics
 double errorBound(const VariantInfo& variant, const CaseMetrics& metrics);
 // Human-readable formula for the report ("variants[].bound.formula").
 std::string boundFormula(const VariantInfo& variant);
+
+// The witness bound of docs/error-bound.md ("Witness points"): each witness point within it of its
+// shape, and ||pB - pA|| within it of the answer's own distance. Plugins are held to the
+// reference options' (as for errorBound).
+double witnessBound(const VariantInfo& variant, const CaseMetrics& metrics);
+// Human-readable formula for the report ("variants[].witness_bound.formula").
+std::string witnessBoundFormula(const VariantInfo& variant);
 
 } // namespace gjkval

@@ -216,8 +216,10 @@ double worstKey(const VariantOutcome& v)
         return -1;
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
         return kInf; // error, crash, hang
-    return (v.nonfinite || v.iterationLimit || (v.certified && !v.intervalContains)) ? kInf
-                                                                                     : v.normalized;
+    return (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit ||
+            (v.certified && !v.intervalContains))
+               ? kInf
+               : v.normalized;
 }
 
 double CaseOutcome::worstKey() const
@@ -314,10 +316,11 @@ class CaseScales
     bool haveFloatShapes_ = false;
 };
 
-// The bound a variant's answer is judged against: the reference variant's (A's local frame
-// scales `sc`), what the library promises for this input, so that a variant that computes
-// differently (world frame) fails where it breaks that promise.
-double boundOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, double exactDistance)
+// The bounds a variant's answer is judged against (distance, witness points): the reference
+// variant's (A's local frame scales `sc`), what the library promises for this input, so that a
+// variant that computes differently (world frame) fails where it breaks that promise.
+void boundsOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, double exactDistance,
+              VariantOutcome& v)
 {
     const bool isFloat = vi.scalar == Scalar::Float;
     CaseMetrics m;
@@ -333,67 +336,9 @@ double boundOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, doub
     m.maxBMapped = sc.Bmapped;
     m.translation = sc.D;
     m.maxW = sc.W;
-    return errorBound(vi, m);
-}
-
-// The judgement of one variant's answer v (v.R and v.bound set) against the exact `truth`: its
-// errors, its misclassification, whether its certified interval holds the truth, and whether it
-// failed (docs/validation.md, "Failures").
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
-{
-    const double u = unitRoundoff(scalar);
-    const bool truthZero = exactIsZero(truth);
-    v.truth = truth.distance;
-    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
-                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
-                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
-                  !std::isfinite(v.normal[1]);
-    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-    const double td = truth.distance;
-    if (v.nonfinite)
-    {
-        v.abs = v.normalized = v.boundRatio = kInf;
-        v.rel = td > 0 ? kInf : kNaN;
-        v.ulps = td > 0 ? kInf : kNaN;
-        v.witnessGap = kInf;
-        v.beyondBound = true;
-    }
-    else
-    {
-        v.abs = std::abs(v.distance - td);
-        v.rel = td > 0 ? v.abs / td : kNaN;
-        v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
-        v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
-        v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-        v.witnessGap =
-            std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
-        v.beyondBound = !(v.abs <= v.bound);
-        if (!v.outOfRange)
-        {
-            if (truthZero && v.distance > 0)
-                v.mis = Misclass::FalseSeparation;
-            else if (!truthZero && v.distance == 0)
-                v.mis = Misclass::FalseOverlap;
-            if (v.mis != Misclass::None && !v.beyondBound)
-                v.mis = Misclass::Undecidable;
-        }
-    }
-    // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
-    // value strictly between): the double interval [lower, upper] contains it iff it contains
-    // that enclosure.
-    v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
-    v.witness = kNaN;
-    // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
-    // certified interval that misses the truth always fails.
-    v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
-               (v.certified && !v.intervalContains);
-    // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
-    // case (out of range ones too: the exact completion answers them).
-    if (zeroTolerance)
-    {
-        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) != std::bit_cast<std::uint64_t>(truth.distance);
-        v.failed = v.failed || v.bitMismatch;
-    }
+    m.worldExtent = sc.M;
+    v.bound = errorBound(vi, m);
+    v.witnessBound = witnessBound(vi, m);
 }
 
 template <class T> bool sameBits(T a, T b)
@@ -436,6 +381,72 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
     return out;
 }
 } // namespace
+
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+{
+    const double u = unitRoundoff(scalar);
+    const bool truthZero = exactIsZero(truth);
+    v.truth = truth.distance;
+    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
+                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
+                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
+                  !std::isfinite(v.normal[1]);
+    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
+    const double td = truth.distance;
+    if (v.nonfinite)
+    {
+        v.abs = v.normalized = v.boundRatio = kInf;
+        v.rel = td > 0 ? kInf : kNaN;
+        v.ulps = td > 0 ? kInf : kNaN;
+        v.witnessGap = kInf;
+        v.beyondBound = true;
+    }
+    else
+    {
+        v.abs = std::abs(v.distance - td);
+        v.rel = td > 0 ? v.abs / td : kNaN;
+        v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
+        v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
+        v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
+        v.witnessGap =
+            std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+        v.beyondBound = !(v.abs <= v.bound);
+        if (!v.outOfRange)
+        {
+            // A negative distance claims overlap (and is not a distance): on separated shapes a
+            // false overlap whatever its error.
+            if (truthZero && v.distance > 0)
+                v.mis = Misclass::FalseSeparation;
+            else if (!truthZero && v.distance <= 0)
+                v.mis = Misclass::FalseOverlap;
+            if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
+                v.mis = Misclass::Undecidable;
+            // The answer's own contract, first part (the witness points' distances to their
+            // shapes are measured in phase 3, checkWitnesses, which may replace WitnessGap).
+            if (v.distance < 0)
+                v.invalid = Invalid::NegativeDistance;
+            else if (!(v.witnessGap <= v.witnessBound))
+                v.invalid = Invalid::WitnessGap;
+        }
+    }
+    // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
+    // value strictly between): the double interval [lower, upper] contains it iff it contains
+    // that enclosure.
+    v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
+    v.witness = v.witnessRatio = kNaN;
+    // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
+    // certified interval that misses the truth always fails.
+    v.failed = (!v.outOfRange && (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit ||
+                                  v.beyondBound)) ||
+               (v.certified && !v.intervalContains);
+    // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
+    // case (out of range ones too: the exact completion answers them).
+    if (zeroTolerance)
+    {
+        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) != std::bit_cast<std::uint64_t>(truth.distance);
+        v.failed = v.failed || v.bitMismatch;
+    }
+}
 
 void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
                      gjk::DistanceOutput<double>& out)
@@ -503,7 +514,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             fillOutput(checkedQuery<double>(c, p, vi), v);
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
-        v.bound = boundOf(vi, c, scales.get(false, isFloat), truth.distance);
+        boundsOf(vi, c, scales.get(false, isFloat), truth.distance, v);
         judge(v, truth, vi.scalar, vi.options.correctlyRounded);
     }
 }
@@ -558,6 +569,15 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         witnessB[k] = wb;
         done[k] = 1;
         v.witness = std::max(wa, wb);
+        const double worst = std::max(v.witness, v.witnessGap);
+        v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
+        // The witness verdict (judge() left the rest): off its shape comes before the gap.
+        if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
+            !(v.witness <= v.witnessBound))
+        {
+            v.invalid = Invalid::WitnessOffShape;
+            v.failed = true;
+        }
     }
 }
 
@@ -639,15 +659,19 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
     vj["R"] = num(v.R);
     vj["bound"] = num(v.bound);
+    vj["witness_bound"] = num(v.witnessBound);
     vj["errors"] = {{"abs", num(v.abs)},
                     {"rel", optNum(v.rel)},
                     {"ulps", optNum(v.ulps)},
                     {"normalized", num(v.normalized)},
                     {"bound_ratio", num(v.boundRatio)},
                     {"witness", optNum(v.witness)},
-                    {"witness_gap", num(v.witnessGap)}};
+                    {"witness_gap", num(v.witnessGap)},
+                    {"witness_ratio", optNum(v.witnessRatio)}};
     const char* mis = misclassName(v.mis);
     vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
+    const char* invalid = invalidName(v.invalid);
+    vj["invalid"] = invalid ? Json(invalid) : Json(nullptr);
     vj["out_of_range"] = v.outOfRange;
     if (vi.options.correctlyRounded)
     {
@@ -789,6 +813,10 @@ std::string explainText(const Json& d)
             fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
             fmtNum(e["witness_gap"]),
             v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
+        // Reports before issue 30 have no witness judgement.
+        if (v.contains("invalid"))
+            s += fmt::format("     witness bound {}  invalid answer: {}\n", fmtNum(v["witness_bound"]),
+                             v["invalid"].is_null() ? "no" : v["invalid"].get<std::string>());
         if (v.contains("certified") && !v["certified"].get<bool>())
             s += "     certified interval: none (the query did not certify this case)\n";
         else if (v.contains("certified"))

@@ -133,10 +133,14 @@ struct VariantOutcome
     double truth = 0; // the exact distance this variant is judged against
     double R = 0;     // scale in the compute frame
     double bound = 0;
+    double witnessBound = 0; // each witness point's distance to its shape, and the gap, at most this
     // Errors; NaN = not applicable (rel and ulps when the truth is 0, witness before checking).
     double abs = 0, rel = 0, ulps = 0, normalized = 0, boundRatio = 0;
     double witness = 0, witnessGap = 0;
+    // max(witness, witnessGap) / witnessBound (0 when both are 0), set with witness in phase 3.
+    double witnessRatio = 0;
     Misclass mis = Misclass::None;
+    Invalid invalid = Invalid::None; // judged cases only (not outOfRange); a failure
     bool nonfinite = false, iterationLimit = false;
     bool outOfRange =
         false; // GJK's own flag (DistanceOutput::outOfRange): not judged, counted apart
@@ -173,8 +177,8 @@ struct CaseOutcome
 };
 
 // How bad one variant's result is, for ranking the worst cases: -1 when it is not judged (not run,
-// or flagged out of range by GJK without failing), +inf for a non-finite result, an iteration limit
-// or a certified interval that misses the truth, else the normalised error.
+// or flagged out of range by GJK without failing), +inf for a non-finite or invalid result, an
+// iteration limit or a certified interval that misses the truth, else the normalised error.
 double worstKey(const VariantOutcome& v);
 
 struct EvalContext
@@ -190,6 +194,12 @@ struct EvalContext
     bool hasPlugins() const;
 };
 
+// The judgement of one answer v (v.R, v.bound and v.witnessBound set) against the exact `truth`:
+// its errors, its misclassification, whether it is invalid (negative distance, witness gap; the
+// witness points' distances to their shapes come in phase 3), whether its certified interval holds
+// the truth, and whether it failed (docs/validation.md, "Failures"). runVariants calls it.
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance);
+
 // Phase 1: the exact truths. The truth's std::invalid_argument rejects the case (bad input);
 // any other exception (a broken invariant of ours) propagates and fails the run.
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out);
@@ -199,7 +209,8 @@ void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseO
                           std::size_t n, const EvalContext& ctx);
 // Phase 2: GJK for every variant, errors, misclassification, failure.
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out);
-// Phase 3: exact distance of each witness point to its shape.
+// Phase 3: exact distance of each witness point to its shape, and the witness verdict (a point off
+// its shape beyond the witness bound makes the answer invalid, and failed).
 void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
 // All of them.
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);

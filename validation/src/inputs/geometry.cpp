@@ -230,6 +230,13 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     s.B *= std::hypot(b.c, b.s);
     s.R = unit * (ia + ib) + a.radius + b.radius;
     s.D = std::hypot(b.px - a.px, b.py - a.py);
+    for (const ShapeIn* sh : {&a, &b})
+        for (const auto& p : sh->points)
+        {
+            const auto w = gjk::transformPoint(xf(*sh), gjk::Vec2<double>{p[0], p[1]});
+            s.M = std::max({s.M, std::abs(w.x), std::abs(w.y)});
+        }
+    s.M += std::max(a.radius, b.radius);
     return s;
 }
 

@@ -37,6 +37,9 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
 struct FrameScales
 {
     double R = 0, A = 0, B = 0, Bmapped = 0, D = 0, W = 0;
+    // M: the largest |world coordinate| of either shape's points, plus the larger radius (the
+    // size of a world witness point, whatever the compute frame).
+    double M = 0;
 };
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame);
 double maxAbsWorldCoordinate(const Case& c);

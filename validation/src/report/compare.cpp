@@ -29,7 +29,8 @@ const double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The Stats counts that regress on any increase (docs/report-schema.md, Stats), in its order.
 constexpr const char* kCounts[] = {"failures",        "false_overlap", "false_separation",
                                    "undecidable",     "nonfinite",     "out_of_range",
-                                   "iteration_limit", "beyond_bound",  "skipped"};
+                                   "iteration_limit", "beyond_bound",  "invalid",
+                                   "skipped"};
 
 std::string typeName(const Json& j)
 {

@@ -75,6 +75,20 @@ std::string pluginCounts(const Json& st)
     return out.empty() ? out : " (" + out + ")";
 }
 
+// Invalid answers (docs/validation.md, "Failures"): "N (k reason, ...)", "0" when none; "-" for a
+// report written before the witness judgement.
+std::string invalidCounts(const Json& st)
+{
+    if (!st.contains("invalid"))
+        return "-";
+    std::string out = u(st["invalid"]), reasons;
+    if (st.contains("invalid_reasons"))
+        for (const auto& [reason, n] : st["invalid_reasons"].items())
+            if (n.get<std::uint64_t>() > 0)
+                reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", u(n), reason);
+    return reasons.empty() ? out : out + " (" + reasons + ")";
+}
+
 } // namespace
 
 std::string renderMarkdown(const Json& r)
@@ -161,12 +175,12 @@ std::string renderMarkdown(const Json& r)
                                      : (m["ok"].get<bool>() ? "ok" : "**FAILED**"));
             s += "\n\n";
         }
-        s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | iter lim | "
-             "out of range | "
+        s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | invalid | "
+             "iter lim | out of range | "
              "skipped | max abs | p99 abs | max norm | p99 norm | p99 ulps | max witness | iters "
              "mean/max | "
              "ns/query | x base |\n"
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
         for (const auto& [name, st] : f["variants"].items())
         {
             const Json& e = st["errors"];
@@ -174,14 +188,14 @@ std::string renderMarkdown(const Json& r)
             const std::uint64_t na =
                 st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
             s += fmt::format(
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
+                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
                 "{:.2f}/{} | {} | {} |\n",
                 j ? name : name + " (comparison)", u(st["cases"]),
                 u(st["failures"]) +
                     (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
                 u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
-                u(st["nonfinite"]), u(st["iteration_limit"]), u(st["out_of_range"]),
-                u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") +
+                u(st["nonfinite"]), invalidCounts(st), u(st["iteration_limit"]),
+                u(st["out_of_range"]), u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") +
                     pluginCounts(st),
                 g(e["abs"]["max"]),
                 g(e["abs"]["p99"]), g(e["normalized"]["max"]), g(e["normalized"]["p99"]),
@@ -244,8 +258,10 @@ std::string renderMarkdown(const Json& r)
                 s += fmt::format(" **{}** |", x["plugin_status"].get<std::string>());
                 continue;
             }
-            s += fmt::format(" {}, {}{} |", g(x["errors"]["normalized"]),
+            const bool invalid = x.contains("invalid") && x["invalid"].is_string();
+            s += fmt::format(" {}, {}{}{} |", g(x["errors"]["normalized"]),
                              x["stop"].get<std::string>(),
+                             invalid ? ", invalid: " + x["invalid"].get<std::string>() : "",
                              x["failed"].get<bool>() ? " **FAIL**" : "");
         }
         s += "\n";
@@ -315,6 +331,8 @@ std::string problemLine(const std::string& family, const std::string& name, cons
           std::pair{"plugin_errors", "error status"}, std::pair{"refused", "refused"}})
         if (count(st, key) > 0)
             detail += fmt::format(", {} {}", count(st, key), label);
+    if (count(st, "invalid") > 0)
+        detail += ", invalid " + invalidCounts(st);
     const Json& e = st["errors"];
     if (e.contains("bound_ratio"))
         detail += ", max error/bound " + g(e["bound_ratio"]["max"]);

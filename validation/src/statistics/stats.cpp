@@ -195,6 +195,9 @@ void Stats::merge(const Stats& o)
     outOfRange += o.outOfRange;
     iterationLimit += o.iterationLimit;
     beyondBound += o.beyondBound;
+    invalid += o.invalid;
+    for (int i = 0; i < kInvalidReasons; ++i)
+        invalidReasons[std::size_t(i)] += o.invalidReasons[std::size_t(i)];
     skipped += o.skipped;
     notApplicable += o.notApplicable;
     refused += o.refused;
@@ -219,6 +222,7 @@ void Stats::merge(const Stats& o)
     boundRatio.merge(o.boundRatio);
     witness.merge(o.witness);
     witnessGap.merge(o.witnessGap);
+    witnessRatio.merge(o.witnessRatio);
     inputRounding.merge(o.inputRounding);
     hasInputRounding = hasInputRounding || o.hasInputRounding;
     iterations.merge(o.iterations);
@@ -273,6 +277,9 @@ Json Stats::state() const
         [&](const char* k, const Hist& h) { j[k] = h.state(); });
     j["iterations"] = iterations.state();
     j["stops"] = stops;
+    j["invalid"] = invalid;
+    j["invalid_reasons"] = invalidReasons;
+    j["witness_ratio"] = witnessRatio.state();
     if (hasPaths) // written only by correctly rounded variants (older states have none)
         j["correct_paths"] = {pathDouble, pathDoubleDouble, pathExact, bitMismatch, pathExtended};
     return j;
@@ -290,6 +297,15 @@ Stats Stats::fromState(const Json& j)
     if (stops.size() != s.stops.size())
         throw std::runtime_error("stats state: the number of stop reasons differs");
     std::copy(stops.begin(), stops.end(), s.stops.begin());
+    if (j.contains("invalid")) // states before issue 30 have none
+    {
+        s.invalid = j.at("invalid").get<std::uint64_t>();
+        const auto r = j.at("invalid_reasons").get<std::vector<std::uint64_t>>();
+        if (r.size() != s.invalidReasons.size())
+            throw std::runtime_error("stats state: the number of invalid reasons differs");
+        std::copy(r.begin(), r.end(), s.invalidReasons.begin());
+        s.witnessRatio = Hist::fromState(j.at("witness_ratio"));
+    }
     if (j.contains("correct_paths"))
     {
         const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
@@ -318,6 +334,11 @@ Json Stats::toJson() const
     j["out_of_range"] = outOfRange;
     j["iteration_limit"] = iterationLimit;
     j["beyond_bound"] = beyondBound;
+    j["invalid"] = invalid;
+    Json reasons = Json::object();
+    for (int i = 0; i < kInvalidReasons; ++i)
+        reasons[invalidName(Invalid(i + 1))] = invalidReasons[std::size_t(i)];
+    j["invalid_reasons"] = std::move(reasons);
     j["skipped"] = skipped;
     j["not_applicable"] = notApplicable;
     j["refused"] = refused;
@@ -334,6 +355,7 @@ Json Stats::toJson() const
     e["bound_ratio"] = boundRatio.toJson();
     e["witness"] = witness.toJson();
     e["witness_gap"] = witnessGap.toJson();
+    e["witness_ratio"] = witnessRatio.toJson();
     if (hasInputRounding)
         e["input_rounding"] = inputRounding.toJson();
     j["errors"] = std::move(e);

@@ -74,6 +74,10 @@ struct Stats
     std::uint64_t falseOverlap = 0, falseSeparation = 0, undecidable = 0;
     std::uint64_t nonfinite = 0, outOfRange = 0, iterationLimit = 0;
     std::uint64_t beyondBound = 0;   // judged cases with |error| > bound
+    // Judged cases whose answer is not a valid answer (negative distance, witness points beyond the
+    // witness bound), each also a failure; by reason (Invalid, common.hpp: [r - 1] for reason r).
+    std::uint64_t invalid = 0;
+    std::array<std::uint64_t, kInvalidReasons> invalidReasons{};
     std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
     std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
     // Plugin variants (evaluate/plugins.hpp): cases the implementation refused (not run, not
@@ -91,6 +95,7 @@ struct Stats
     std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0, bitMismatch = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
+    Hist witnessRatio{-20, 40}; // max(witness, witness_gap) / witness bound; > 1: invalid
     bool hasInputRounding = false;
     IterHist iterations;
     std::array<std::uint64_t, kStopReasons> stops{};
