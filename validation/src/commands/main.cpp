@@ -43,8 +43,12 @@ int dispatch(int argc, char** argv)
     }
     catch (const CLI::ParseError& e)
     {
-        const int code = app.exit(e);
-        return code == 0 ? kExitPass : kExitInput;
+        // --help and --version print their text; a usage error is one line on stderr, naming the
+        // option, as every other error (CLI11's own app.exit(e) adds a second "Run with --help" line).
+        if (e.get_exit_code() == 0)
+            return app.exit(e) == 0 ? kExitPass : kExitInput;
+        std::fprintf(stderr, "gjk-validate: error: %s (see --help)\n", e.what());
+        return kExitInput;
     }
     for (const auto& s : subcommands)
         if (*s.app)
