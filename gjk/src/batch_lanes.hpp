@@ -329,20 +329,26 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V inv = one / (ue + ve);
         const V ae0 = ue * inv, ae1 = ve * inv;
         // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from w1 with
-        // accurateCross's steps, else (n zero or not finite) the areas'.
-        const V nr = accurateCross(e12x, e12y, e13x, e13y);
-        const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
-                         (nr >= L::splat(-std::numeric_limits<T>::max()));
-        V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr, cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
-        bq = sel(bq > zero, bq, zero);
-        cq = sel(cq > zero, cq, zero);
-        V arq = (one - bq) - cq;
-        arq = sel(arq > zero, arq, zero);
-        const V tq = (arq + bq) + cq;
+        // accurateCross's steps, else (n zero or not finite) the areas'. Only when some lane is in
+        // the interior (containment ends that lane's query): the other lanes never read them, and
+        // the exact products' cost stays out of the common iteration.
         const V sum = (u123 + v123) + w123;
-        const V i1 = sel(cramer, arq / tq, u123 / sum);
-        const V i2 = sel(cramer, bq / tq, v123 / sum);
-        const V i3 = sel(cramer, cq / tq, w123 / sum);
+        V i1 = u123 / sum, i2 = v123 / sum, i3 = w123 / sum;
+        if (L::any(is3 & r123)) [[unlikely]]
+        {
+            const V nr = accurateCross(e12x, e12y, e13x, e13y);
+            const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
+                             (nr >= L::splat(-std::numeric_limits<T>::max()));
+            V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr, cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
+            bq = sel(bq > zero, bq, zero);
+            cq = sel(cq > zero, cq, zero);
+            V arq = (one - bq) - cq;
+            arq = sel(arq > zero, arq, zero);
+            const V tq = (arq + bq) + cq;
+            i1 = sel(cramer, arq / tq, i1);
+            i2 = sel(cramer, bq / tq, i2);
+            i3 = sel(cramer, cq / tq, i3);
+        }
         const M edge = (is2 & s2e) | (is3 & (r12 | r13 | r23));
         const M interior = is3 & r123;
         const M from1to0 = (is2 & s2v2) | (is3 & (r2 | r23));
