@@ -333,3 +333,30 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
         paths.push_back(key);
     CHECK(paths == std::vector<std::string>{"double", "extended", "double-double", "exact"});
 }
+
+TEST_CASE("the shard state's keys keep their order", "[stats]")
+{
+    // The order of a shard.json written by main before the tables (gjk-validate run --family
+    // random:300 --family hard/points --family hard/float-rotation:50 --no-timing --shard 0/2,
+    // variant double-correct): StatsState is public (docs/report-schema.md, gjk-shard/1).
+    Stats s;
+    s.hasPaths = true;
+    const Json state = s.state();
+    std::vector<std::string> keys;
+    for (const auto& [key, _] : state.items())
+        keys.push_back(key);
+    CHECK(keys == std::vector<std::string>{
+                      "cases", "failures", "false_overlap", "false_separation", "undecidable",
+                      "nonfinite", "out_of_range", "iteration_limit", "beyond_bound", "skipped",
+                      "not_applicable", "refused", "plugin_errors", "crashed", "hung",
+                      "certified", "contains", "uncertified", "has_interval",
+                      "has_input_rounding", "width_ulps", "abs", "rel", "ulps", "normalized",
+                      "bound_ratio", "witness", "witness_gap", "input_rounding", "iterations",
+                      "stops", "invalid", "invalid_reasons", "witness_ratio", "correct_paths"});
+    s.pathDouble = 1;
+    s.pathDoubleDouble = 2;
+    s.pathExact = 3;
+    s.bitMismatch = 4;
+    s.pathExtended = 5;
+    CHECK(s.state()["correct_paths"] == std::vector<std::uint64_t>{1, 2, 3, 4, 5});
+}
