@@ -251,3 +251,112 @@ TEST_CASE("statistics survive their state: what a shard or a checkpoint writes",
     broken["abs"]["counts"] = std::vector<std::uint64_t>{1, 2};
     CHECK_THROWS(Stats::fromState(broken));
 }
+
+TEST_CASE("every row of the Stats tables merges, survives the state and reaches the report",
+          "[stats][merge]")
+{
+    // Each row a different value in each shard, so a row merged into another field, dropped by
+    // the state or written under another name shows.
+    Stats a, b;
+    std::uint64_t k = 1;
+    for (const CountField& f : kCountFields)
+    {
+        a.*f.member = k;
+        b.*f.member = 100 * k++;
+    }
+    for (const PathField& f : kPathFields)
+    {
+        a.*f.member = k;
+        b.*f.member = 100 * k++;
+    }
+    for (const HistField& f : kHistFields)
+    {
+        (a.*f.member).add(double(k), "a", 0);
+        (b.*f.member).add(double(100 * k++), "b", 1);
+    }
+    b.hasInterval = b.hasInputRounding = b.hasPaths = true;
+    a.merge(b);
+    const Stats back = Stats::fromState(Json::parse(a.state().dump()));
+    CHECK(back.state() == a.state());
+    const Json j = back.toJson();
+    k = 1;
+    for (const CountField& f : kCountFields)
+    {
+        INFO(f.name);
+        const Json& at = f.section == Section::Interval ? j["interval"]
+                         : f.section == Section::Correct ? j["correct"]
+                                                          : j;
+        CHECK(at[f.name] == 101 * k++);
+    }
+    for (const PathField& f : kPathFields)
+        CHECK(j["correct"]["paths"][gjk::correctPathName(f.path)] == 101 * k++);
+    for (const HistField& f : kHistFields)
+    {
+        INFO(f.name);
+        const Json& at = f.section == Section::Interval ? j["interval"] : j["errors"];
+        CHECK(at[f.name]["count"] == 2);
+        CHECK(at[f.name]["max"] == double(100 * k++));
+    }
+}
+
+TEST_CASE("the report's Stats keys keep their order", "[stats]")
+{
+    // The order main's report.json had before the tables (gjk-validate run --no-timing, variants
+    // double-certified and double-correct): the tables and their exceptions must reproduce it.
+    Stats s;
+    s.hasInterval = s.hasPaths = s.hasInputRounding = true;
+    const Json j = s.toJson();
+    std::vector<std::string> keys, errors, interval, correct;
+    for (const auto& [key, _] : j.items())
+        keys.push_back(key);
+    for (const auto& [key, _] : j["errors"].items())
+        errors.push_back(key);
+    for (const auto& [key, _] : j["interval"].items())
+        interval.push_back(key);
+    for (const auto& [key, _] : j["correct"].items())
+        correct.push_back(key);
+    CHECK(keys == std::vector<std::string>{
+                      "cases", "failures", "pass", "false_overlap", "false_separation",
+                      "undecidable", "nonfinite", "out_of_range", "iteration_limit",
+                      "beyond_bound", "invalid", "invalid_reasons", "skipped", "not_applicable",
+                      "refused", "plugin_errors", "crashed", "hung", "failure_rate_upper95",
+                      "errors", "iterations", "interval", "correct", "stops", "ns_per_query",
+                      "ns_spread", "timing_passes", "ratio_to_baseline"});
+    CHECK(errors == std::vector<std::string>{"abs", "rel", "ulps", "normalized", "bound_ratio",
+                                             "witness", "witness_gap", "witness_ratio",
+                                             "input_rounding"});
+    CHECK(interval ==
+          std::vector<std::string>{"certified", "contains", "misses", "uncertified", "width_ulps"});
+    CHECK(correct == std::vector<std::string>{"paths", "bit_mismatches"});
+    std::vector<std::string> paths;
+    for (const auto& [key, _] : j["correct"]["paths"].items())
+        paths.push_back(key);
+    CHECK(paths == std::vector<std::string>{"double", "extended", "double-double", "exact"});
+}
+
+TEST_CASE("the shard state's keys keep their order", "[stats]")
+{
+    // The order of a shard.json written by main before the tables (gjk-validate run --family
+    // random:300 --family hard/points --family hard/float-rotation:50 --no-timing --shard 0/2,
+    // variant double-correct): StatsState is public (docs/report-schema.md, gjk-shard/1).
+    Stats s;
+    s.hasPaths = true;
+    const Json state = s.state();
+    std::vector<std::string> keys;
+    for (const auto& [key, _] : state.items())
+        keys.push_back(key);
+    CHECK(keys == std::vector<std::string>{
+                      "cases", "failures", "false_overlap", "false_separation", "undecidable",
+                      "nonfinite", "out_of_range", "iteration_limit", "beyond_bound", "skipped",
+                      "not_applicable", "refused", "plugin_errors", "crashed", "hung",
+                      "certified", "contains", "uncertified", "has_interval",
+                      "has_input_rounding", "width_ulps", "abs", "rel", "ulps", "normalized",
+                      "bound_ratio", "witness", "witness_gap", "input_rounding", "iterations",
+                      "stops", "invalid", "invalid_reasons", "witness_ratio", "correct_paths"});
+    s.pathDouble = 1;
+    s.pathDoubleDouble = 2;
+    s.pathExact = 3;
+    s.bitMismatch = 4;
+    s.pathExtended = 5;
+    CHECK(s.state()["correct_paths"] == std::vector<std::uint64_t>{1, 2, 3, 4, 5});
+}

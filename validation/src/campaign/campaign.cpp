@@ -226,92 +226,6 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
 
 // --- Statistics, make-up, worst cases, per-case lines: folded in case order --------------------
 
-void accumulate(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index,
-                const VariantInfo& vi, const CaseOutcome& o)
-{
-    if (v.plugin == PluginStatus::Refused)
-    {
-        ++s.refused;
-        return;
-    }
-    if (v.skipped)
-    {
-        ++s.skipped;
-        s.notApplicable += v.notApplicable ? 1 : 0;
-        return;
-    }
-    ++s.cases;
-    s.failures += v.failed ? 1 : 0;
-    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
-    {
-        s.pluginErrors += v.plugin == PluginStatus::Error ? 1 : 0;
-        s.crashed += v.plugin == PluginStatus::Crashed ? 1 : 0;
-        s.hung += v.plugin == PluginStatus::Hung ? 1 : 0;
-        return; // no answer to measure
-    }
-    s.outOfRange += v.outOfRange ? 1 : 0;
-    s.nonfinite += v.nonfinite ? 1 : 0;
-    s.iterationLimit += v.iterationLimit ? 1 : 0;
-    if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
-    {
-        s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
-        s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
-        s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
-        s.beyondBound += v.beyondBound ? 1 : 0;
-        if (v.invalid != Invalid::None)
-        {
-            ++s.invalid;
-            ++s.invalidReasons[std::size_t(v.invalid) - 1];
-        }
-        if (!v.nonfinite)
-        {
-            s.abs.add(v.abs, name, index);
-            s.rel.add(v.rel, name, index); // NaN (not applicable) is ignored by add()
-            s.ulps.add(v.ulps, name, index);
-            s.normalized.add(v.normalized, name, index);
-            s.boundRatio.add(v.boundRatio, name, index);
-            s.witness.add(v.witness, name, index);
-            s.witnessGap.add(v.witnessGap, name, index);
-            s.witnessRatio.add(v.witnessRatio, name, index); // NaN (not checked) is ignored
-        }
-    }
-    if (vi.scalar == Scalar::Float)
-    {
-        s.hasInputRounding = true;
-        s.inputRounding.add(o.inputRounding, name, index);
-    }
-    if (vi.options.certify)
-    {
-        s.hasInterval = true;
-        if (v.certified)
-        {
-            ++s.certified;
-            s.contains += v.intervalContains ? 1 : 0;
-            if (v.truth > 0)
-                s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name, index);
-        }
-        else
-            ++s.uncertified;
-    }
-    if (vi.plugin)
-    {
-        if (v.iterations >= 0) // -1: the implementation does not count
-            s.iterations.add(v.iterations);
-        return; // no stop reason
-    }
-    if (vi.options.correctlyRounded)
-    {
-        s.hasPaths = true;
-        s.pathDouble += v.path == gjk::CorrectPath::Double ? 1 : 0;
-        s.pathExtended += v.path == gjk::CorrectPath::Extended ? 1 : 0;
-        s.pathDoubleDouble += v.path == gjk::CorrectPath::DoubleDouble ? 1 : 0;
-        s.pathExact += v.path == gjk::CorrectPath::Exact ? 1 : 0;
-        s.bitMismatch += v.bitMismatch ? 1 : 0;
-    }
-    s.iterations.add(v.iterations);
-    ++s.stops[std::size_t(v.stop)];
-}
-
 void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, EvaluatedChunk& e,
                const CampaignConfig& config, const EvalContext& ctx,
                std::vector<RejectedCase>& rejected, std::ostream* perCase)
@@ -335,7 +249,7 @@ void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, Evalu
             continue;
         }
         for (std::size_t k = 0; k < nv; ++k)
-            accumulate(r.stats[k], o.variants[k], c.name, chunk.first + i, *ctx.variants[k], o);
+            r.stats[k].add(o.variants[k], c.name, chunk.first + i, *ctx.variants[k], o);
         r.makeup.add(c, o.exact);
         r.worst.offer(chunk.first + i, c, o);
         if (config.timing && r.timing.cases.size() < kTimingSampleCases)

@@ -2,6 +2,7 @@
 #include "report/compare.hpp"
 
 #include "inputs/cases.hpp" // lineColumn
+#include "statistics/stats.hpp" // kCountFields
 
 #include <fmt/format.h>
 
@@ -25,12 +26,6 @@ namespace fs = std::filesystem;
 constexpr const char* kSchema = "gjk-report/1";
 constexpr int kMaxReportDepth = 64; // report.json nests about 8 deep; a deeper file is not one
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// The Stats counts that regress on any increase (docs/report-schema.md, Stats), in its order.
-constexpr const char* kCounts[] = {"failures",        "false_overlap", "false_separation",
-                                   "undecidable",     "nonfinite",     "out_of_range",
-                                   "iteration_limit", "beyond_bound",  "invalid",
-                                   "skipped"};
 
 std::string typeName(const Json& j)
 {
@@ -224,10 +219,11 @@ void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
         r.higherIsBetter = higherIsBetter;
         rows.add(std::move(r), floor);
     };
-    for (const char* key : kCounts)
-        if (oldStats.contains(key) || newStats.contains(key))
-            row(key, CompareRule::Count, number(&oldStats, key, os, where),
-                number(&newStats, key, ns, where));
+    // The Stats counts that regress on any increase, in the report's order (statistics/stats.hpp).
+    for (const CountField& f : kCountFields)
+        if (f.regresses && (oldStats.contains(f.name) || newStats.contains(f.name)))
+            row(f.name, CompareRule::Count, number(&oldStats, f.name, os, where),
+                number(&newStats, f.name, ns, where));
     // errors: every histogram either report has, OLD's order first.
     const Json* oe = object(&oldStats, "errors", os, where);
     const Json* ne = object(&newStats, "errors", ns, where);

@@ -1,6 +1,9 @@
 #include "report/report.hpp"
 
+#include "statistics/stats.hpp" // kPathFields
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <map>
@@ -216,9 +219,11 @@ std::string renderMarkdown(const Json& r)
                 const std::uint64_t c = p.contains(k) ? p[k].get<std::uint64_t>() : 0;
                 return fmt::format("{} {} ({:.4g} %)", k, u(Json(c)), 100.0 * double(c) / n);
             };
-            s += fmt::format("\n{}: paths {}, {}, {}, {}; {} bit mismatches with the exact side.\n", name,
-                             share("double"), share("extended"), share("double-double"), share("exact"),
-                             u(st["correct"]["bit_mismatches"]));
+            std::vector<std::string> shares;
+            for (const PathField& f : kPathFields)
+                shares.push_back(share(gjk::correctPathName(f.path)));
+            s += fmt::format("\n{}: paths {}; {} bit mismatches with the exact side.\n", name,
+                             fmt::join(shares, ", "), u(st["correct"]["bit_mismatches"]));
         }
     }
     if (!r["rejected"].empty())

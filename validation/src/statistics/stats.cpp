@@ -1,5 +1,7 @@
 #include "statistics/stats.hpp"
 
+#include "evaluate/evaluate.hpp"
+
 #include "gjk/distance.hpp"
 
 #include <algorithm>
@@ -184,195 +186,183 @@ IterHist IterHist::fromState(const Json& j)
     return h;
 }
 
-void Stats::merge(const Stats& o)
-{
-    cases += o.cases;
-    failures += o.failures;
-    falseOverlap += o.falseOverlap;
-    falseSeparation += o.falseSeparation;
-    undecidable += o.undecidable;
-    nonfinite += o.nonfinite;
-    outOfRange += o.outOfRange;
-    iterationLimit += o.iterationLimit;
-    beyondBound += o.beyondBound;
-    invalid += o.invalid;
-    for (int i = 0; i < kInvalidReasons; ++i)
-        invalidReasons[std::size_t(i)] += o.invalidReasons[std::size_t(i)];
-    skipped += o.skipped;
-    notApplicable += o.notApplicable;
-    refused += o.refused;
-    pluginErrors += o.pluginErrors;
-    crashed += o.crashed;
-    hung += o.hung;
-    hasInterval = hasInterval || o.hasInterval;
-    certified += o.certified;
-    contains += o.contains;
-    uncertified += o.uncertified;
-    hasPaths = hasPaths || o.hasPaths;
-    pathDouble += o.pathDouble;
-    pathExtended += o.pathExtended;
-    pathDoubleDouble += o.pathDoubleDouble;
-    pathExact += o.pathExact;
-    bitMismatch += o.bitMismatch;
-    widthUlps.merge(o.widthUlps);
-    abs.merge(o.abs);
-    rel.merge(o.rel);
-    ulps.merge(o.ulps);
-    normalized.merge(o.normalized);
-    boundRatio.merge(o.boundRatio);
-    witness.merge(o.witness);
-    witnessGap.merge(o.witnessGap);
-    witnessRatio.merge(o.witnessRatio);
-    inputRounding.merge(o.inputRounding);
-    hasInputRounding = hasInputRounding || o.hasInputRounding;
-    iterations.merge(o.iterations);
-    for (int i = 0; i < kStopReasons; ++i)
-        stops[std::size_t(i)] += o.stops[std::size_t(i)];
-}
-
 namespace
 {
-// Stats' merged members, by name, for state() and fromState(): one list for both directions.
-template <typename S, typename Count, typename Flag, typename H>
-void forEachMember(S& s, Count&& count, Flag&& flag, H&& hist)
+template <typename T, std::size_t N>
+void addEach(std::array<T, N>& to, const std::array<T, N>& from)
 {
-    count("cases", s.cases);
-    count("failures", s.failures);
-    count("false_overlap", s.falseOverlap);
-    count("false_separation", s.falseSeparation);
-    count("undecidable", s.undecidable);
-    count("nonfinite", s.nonfinite);
-    count("out_of_range", s.outOfRange);
-    count("iteration_limit", s.iterationLimit);
-    count("beyond_bound", s.beyondBound);
-    count("skipped", s.skipped);
-    count("not_applicable", s.notApplicable);
-    count("refused", s.refused);
-    count("plugin_errors", s.pluginErrors);
-    count("crashed", s.crashed);
-    count("hung", s.hung);
-    count("certified", s.certified);
-    count("contains", s.contains);
-    count("uncertified", s.uncertified);
-    flag("has_interval", s.hasInterval);
-    flag("has_input_rounding", s.hasInputRounding);
-    hist("width_ulps", s.widthUlps);
-    hist("abs", s.abs);
-    hist("rel", s.rel);
-    hist("ulps", s.ulps);
-    hist("normalized", s.normalized);
-    hist("bound_ratio", s.boundRatio);
-    hist("witness", s.witness);
-    hist("witness_gap", s.witnessGap);
-    hist("input_rounding", s.inputRounding);
+    for (std::size_t i = 0; i < N; ++i)
+        to[i] += from[i];
 }
+
+template <typename T, std::size_t N>
+void copyExactly(std::array<T, N>& to, const Json& j, const char* what)
+{
+    const auto v = j.get<std::vector<T>>();
+    if (v.size() != N)
+        throw std::runtime_error(std::string("stats state: the number of ") + what + " differs");
+    std::copy(v.begin(), v.end(), to.begin());
+}
+
+// The state's "correct_paths": the four path counts and the bit mismatches, in the order states
+// have always had (Extended came last, so that 4-count states from before it still read).
+constexpr std::uint64_t Stats::*kStatePathOrder[] = {&Stats::pathDouble, &Stats::pathDoubleDouble,
+                                                     &Stats::pathExact, &Stats::bitMismatch,
+                                                     &Stats::pathExtended};
 } // namespace
 
+void Stats::merge(const Stats& o)
+{
+    for (const CountField& f : kCountFields)
+        this->*f.member += o.*f.member;
+    for (const PathField& f : kPathFields)
+        this->*f.member += o.*f.member;
+    for (const HistField& f : kHistFields)
+        (this->*f.member).merge(o.*f.member);
+    for (const FlagField& f : kFlagFields)
+        this->*f.member = this->*f.member || o.*f.member;
+    hasPaths = hasPaths || o.hasPaths;
+    iterations.merge(o.iterations);
+    addEach(invalidReasons, o.invalidReasons);
+    addEach(stops, o.stops);
+}
+
+// The state: StatsState (docs/report-schema.md), in its order (see Section).
 Json Stats::state() const
 {
     Json j;
-    forEachMember(
-        *this, [&](const char* k, const std::uint64_t& v) { j[k] = v; },
-        [&](const char* k, const bool& v) { j[k] = v; },
-        [&](const char* k, const Hist& h) { j[k] = h.state(); });
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Top || f.section == Section::Interval)
+            j[f.name] = this->*f.member;
+    for (const FlagField& f : kFlagFields)
+        j[f.name] = this->*f.member;
+    for (Section section : {Section::Interval, Section::Top})
+        for (const HistField& f : kHistFields)
+            if (f.section == section)
+                j[f.name] = (this->*f.member).state();
     j["iterations"] = iterations.state();
     j["stops"] = stops;
-    j["invalid"] = invalid;
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Since30)
+            j[f.name] = this->*f.member;
     j["invalid_reasons"] = invalidReasons;
-    j["witness_ratio"] = witnessRatio.state();
+    for (const HistField& f : kHistFields)
+        if (f.section == Section::Since30)
+            j[f.name] = (this->*f.member).state();
     if (hasPaths) // written only by correctly rounded variants (older states have none)
-        j["correct_paths"] = {pathDouble, pathDoubleDouble, pathExact, bitMismatch, pathExtended};
+    {
+        Json p = Json::array();
+        for (auto m : kStatePathOrder)
+            p.push_back(this->*m);
+        j["correct_paths"] = std::move(p);
+    }
     return j;
 }
 
 Stats Stats::fromState(const Json& j)
 {
     Stats s;
-    forEachMember(
-        s, [&](const char* k, std::uint64_t& v) { v = j.at(k).get<std::uint64_t>(); },
-        [&](const char* k, bool& v) { v = j.at(k).get<bool>(); },
-        [&](const char* k, Hist& h) { h = Hist::fromState(j.at(k)); });
+    const bool since30 = j.contains("invalid"); // states before issue 30 have none
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Top || f.section == Section::Interval ||
+            (f.section == Section::Since30 && since30))
+            s.*f.member = j.at(f.name).get<std::uint64_t>();
+    for (const FlagField& f : kFlagFields)
+        s.*f.member = j.at(f.name).get<bool>();
+    for (const HistField& f : kHistFields)
+        if (f.section != Section::Since30 || since30)
+            s.*f.member = Hist::fromState(j.at(f.name));
     s.iterations = IterHist::fromState(j.at("iterations"));
-    const auto stops = j.at("stops").get<std::vector<std::uint64_t>>();
-    if (stops.size() != s.stops.size())
-        throw std::runtime_error("stats state: the number of stop reasons differs");
-    std::copy(stops.begin(), stops.end(), s.stops.begin());
-    if (j.contains("invalid")) // states before issue 30 have none
-    {
-        s.invalid = j.at("invalid").get<std::uint64_t>();
-        const auto r = j.at("invalid_reasons").get<std::vector<std::uint64_t>>();
-        if (r.size() != s.invalidReasons.size())
-            throw std::runtime_error("stats state: the number of invalid reasons differs");
-        std::copy(r.begin(), r.end(), s.invalidReasons.begin());
-        s.witnessRatio = Hist::fromState(j.at("witness_ratio"));
-    }
+    copyExactly(s.stops, j.at("stops"), "stop reasons");
+    if (since30)
+        copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
     if (j.contains("correct_paths"))
     {
         const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
         if (p.size() != 4 && p.size() != 5) // 4: before CorrectPath::Extended
             throw std::runtime_error("stats state: correct_paths needs 4 or 5 counts");
         s.hasPaths = true;
-        s.pathDouble = p[0];
-        s.pathDoubleDouble = p[1];
-        s.pathExact = p[2];
-        s.bitMismatch = p[3];
-        s.pathExtended = p.size() == 5 ? p[4] : 0;
+        for (std::size_t i = 0; i < p.size(); ++i)
+            s.*kStatePathOrder[i] = p[i];
     }
     return s;
 }
 
+namespace
+{
+// The report's top-level counts, with the fields derived beside them (the exceptions in
+// stats.hpp): "pass" after failures, "invalid_reasons" after invalid.
+void writeCounts(const Stats& s, Json& j)
+{
+    for (const CountField& f : kCountFields)
+    {
+        if (f.section != Section::Top && f.section != Section::Since30)
+            continue;
+        j[f.name] = s.*f.member;
+        if (f.member == &Stats::failures)
+            j["pass"] = s.failures == 0;
+        if (f.member == &Stats::invalid)
+        {
+            Json reasons = Json::object();
+            for (int i = 0; i < kInvalidReasons; ++i)
+                reasons[invalidName(Invalid(i + 1))] = s.invalidReasons[std::size_t(i)];
+            j["invalid_reasons"] = std::move(reasons);
+        }
+    }
+}
+
+Json errorsJson(const Stats& s)
+{
+    Json e;
+    for (const HistField& f : kHistFields)
+        if ((f.section == Section::Top || f.section == Section::Since30) &&
+            (f.shownIf == nullptr || s.*f.shownIf))
+            e[f.name] = (s.*f.member).toJson();
+    return e;
+}
+
+// Certified variants: the Interval rows, "misses" (derived) after contains.
+Json intervalJson(const Stats& s)
+{
+    Json in;
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Interval)
+        {
+            in[f.name] = s.*f.member;
+            if (f.member == &Stats::contains)
+                in["misses"] = s.certified - s.contains;
+        }
+    for (const HistField& f : kHistFields)
+        if (f.section == Section::Interval)
+            in[f.name] = (s.*f.member).toJson();
+    return in;
+}
+
+Json correctJson(const Stats& s)
+{
+    Json paths;
+    for (const PathField& f : kPathFields)
+        paths[gjk::correctPathName(f.path)] = s.*f.member;
+    Json c{{"paths", std::move(paths)}};
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Correct)
+            c[f.name] = s.*f.member;
+    return c;
+}
+} // namespace
+
 Json Stats::toJson() const
 {
     Json j;
-    j["cases"] = cases;
-    j["failures"] = failures;
-    j["pass"] = failures == 0;
-    j["false_overlap"] = falseOverlap;
-    j["false_separation"] = falseSeparation;
-    j["undecidable"] = undecidable;
-    j["nonfinite"] = nonfinite;
-    j["out_of_range"] = outOfRange;
-    j["iteration_limit"] = iterationLimit;
-    j["beyond_bound"] = beyondBound;
-    j["invalid"] = invalid;
-    Json reasons = Json::object();
-    for (int i = 0; i < kInvalidReasons; ++i)
-        reasons[invalidName(Invalid(i + 1))] = invalidReasons[std::size_t(i)];
-    j["invalid_reasons"] = std::move(reasons);
-    j["skipped"] = skipped;
-    j["not_applicable"] = notApplicable;
-    j["refused"] = refused;
-    j["plugin_errors"] = pluginErrors;
-    j["crashed"] = crashed;
-    j["hung"] = hung;
+    writeCounts(*this, j);
     j["failure_rate_upper95"] =
         (failures == 0 && cases > 0) ? Json(3.0 / double(cases)) : Json(nullptr);
-    Json e;
-    e["abs"] = abs.toJson();
-    e["rel"] = rel.toJson();
-    e["ulps"] = ulps.toJson();
-    e["normalized"] = normalized.toJson();
-    e["bound_ratio"] = boundRatio.toJson();
-    e["witness"] = witness.toJson();
-    e["witness_gap"] = witnessGap.toJson();
-    e["witness_ratio"] = witnessRatio.toJson();
-    if (hasInputRounding)
-        e["input_rounding"] = inputRounding.toJson();
-    j["errors"] = std::move(e);
+    j["errors"] = errorsJson(*this);
     j["iterations"] = iterations.toJson();
     if (hasInterval)
-        j["interval"] = {{"certified", certified},
-                         {"contains", contains},
-                         {"misses", certified - contains},
-                         {"uncertified", uncertified},
-                         {"width_ulps", widthUlps.toJson()}};
+        j["interval"] = intervalJson(*this);
     if (hasPaths)
-        j["correct"] = {{"paths",
-                         {{"double", pathDouble},
-                          {"extended", pathExtended},
-                          {"double-double", pathDoubleDouble},
-                          {"exact", pathExact}}},
-                        {"bit_mismatches", bitMismatch}};
+        j["correct"] = correctJson(*this);
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)
         st[gjk::stopReasonName(gjk::StopReason(i))] = stops[std::size_t(i)];
@@ -382,6 +372,106 @@ Json Stats::toJson() const
     j["timing_passes"] = timingPasses;
     j["ratio_to_baseline"] = ratioToBaseline >= 0 ? Json(ratioToBaseline) : Json(nullptr);
     return j;
+}
+
+// --- Folding one query ---------------------------------------------------------------------------
+// (Was campaign.cpp's accumulate. statistics/ may read evaluate/: it is the phase before it, as
+// worst.hpp already does; stats.hpp only names the outcome types.)
+
+namespace
+{
+// A query judged against the truth (not out of range): misclassification, bound, validity and,
+// when the answer is finite, its errors.
+void addJudged(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index)
+{
+    s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
+    s.falseSeparation += v.mis == Misclass::FalseSeparation ? 1 : 0;
+    s.undecidable += v.mis == Misclass::Undecidable ? 1 : 0;
+    s.beyondBound += v.beyondBound ? 1 : 0;
+    if (v.invalid != Invalid::None)
+    {
+        ++s.invalid;
+        ++s.invalidReasons[std::size_t(v.invalid) - 1];
+    }
+    if (v.nonfinite)
+        return;
+    s.abs.add(v.abs, name, index);
+    s.rel.add(v.rel, name, index); // NaN (not applicable) is ignored by add()
+    s.ulps.add(v.ulps, name, index);
+    s.normalized.add(v.normalized, name, index);
+    s.boundRatio.add(v.boundRatio, name, index);
+    s.witness.add(v.witness, name, index);
+    s.witnessGap.add(v.witnessGap, name, index);
+    s.witnessRatio.add(v.witnessRatio, name, index); // NaN (not checked) is ignored
+}
+
+// Certified variants: the interval given, whether it holds the truth, its width.
+void addInterval(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index,
+                 const VariantInfo& vi)
+{
+    s.hasInterval = true;
+    if (!v.certified)
+    {
+        ++s.uncertified;
+        return;
+    }
+    ++s.certified;
+    s.contains += v.intervalContains ? 1 : 0;
+    if (v.truth > 0)
+        s.widthUlps.add((v.upper - v.lower) / ulpOf(vi.scalar, v.truth), name, index);
+}
+} // namespace
+
+void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t index,
+                const VariantInfo& vi, const CaseOutcome& o)
+{
+    if (v.plugin == PluginStatus::Refused)
+    {
+        ++refused;
+        return;
+    }
+    if (v.skipped)
+    {
+        ++skipped;
+        notApplicable += v.notApplicable ? 1 : 0;
+        return;
+    }
+    ++cases;
+    failures += v.failed ? 1 : 0;
+    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
+    {
+        pluginErrors += v.plugin == PluginStatus::Error ? 1 : 0;
+        crashed += v.plugin == PluginStatus::Crashed ? 1 : 0;
+        hung += v.plugin == PluginStatus::Hung ? 1 : 0;
+        return; // no answer to measure
+    }
+    outOfRange += v.outOfRange ? 1 : 0;
+    nonfinite += v.nonfinite ? 1 : 0;
+    iterationLimit += v.iterationLimit ? 1 : 0;
+    if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
+        addJudged(*this, v, name, index);
+    if (vi.scalar == Scalar::Float)
+    {
+        hasInputRounding = true;
+        inputRounding.add(o.inputRounding, name, index);
+    }
+    if (vi.options.certify)
+        addInterval(*this, v, name, index, vi);
+    if (vi.plugin)
+    {
+        if (v.iterations >= 0) // -1: the implementation does not count
+            iterations.add(v.iterations);
+        return; // no stop reason
+    }
+    if (vi.options.correctlyRounded)
+    {
+        hasPaths = true;
+        for (const PathField& f : kPathFields)
+            this->*f.member += v.path == f.path ? 1 : 0;
+        bitMismatch += v.bitMismatch ? 1 : 0;
+    }
+    iterations.add(v.iterations);
+    ++stops[std::size_t(v.stop)];
 }
 
 } // namespace gjkval

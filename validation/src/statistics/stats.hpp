@@ -66,6 +66,10 @@ struct IterHist
 
 inline constexpr int kStopReasons = int(gjk::stopReasonCount);
 
+struct VariantOutcome; // evaluate/evaluate.hpp (below statistics/ in the pipeline)
+struct VariantInfo;
+struct CaseOutcome;
+
 // One family x one variant.
 struct Stats
 {
@@ -104,11 +108,110 @@ struct Stats
     double nsPerQuery = -1, nsMin = -1, nsMax = -1, ratioToBaseline = -1;
     int timingPasses = 0;
 
+    // Folds one judged query (case `name`, its place `index` in the family) of variant `vi`.
+    void add(const VariantOutcome& v, const std::string& name, std::uint64_t index,
+             const VariantInfo& vi, const CaseOutcome& o);
     void merge(const Stats& other);
     Json toJson() const;
     // The merged part (not the timing), exactly: what a shard or a checkpoint writes.
     Json state() const;
     static Stats fromState(const Json& j);
+};
+
+// --- Stats' members as data: the one place a metric is named -------------------------------------
+// A new counter or histogram: declare it in Stats above, fold it in Stats::add, and give it one
+// row below. merge, toJson (the report, docs/report-schema.md), state/fromState (shards and
+// checkpoints) and `gjk-validate compare` (the rows with `regresses`) all read these tables.
+// Rows are in the report's order; where a member sits in the report and in the state is its
+// Section. Documented exceptions, kept so the JSON stays byte for byte what it was:
+// - derived fields written beside a row: "pass" after failures, "invalid_reasons" after invalid,
+//   "misses" after contains (stats.cpp, toJson);
+// - the state writes the Interval histograms before the others (StatsState's order);
+// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder).
+enum class Section : std::uint8_t
+{
+    Top,      // report: top level (a histogram: under "errors"); state: top level, in table order
+    Since30,  // as Top in the report; state: after "stops", absent from states before issue 30
+    Interval, // report: under "interval" (certified variants); state: top level
+    Correct,  // report: under "correct" (correctly rounded variants); state: in "correct_paths"
+};
+
+struct CountField
+{
+    const char* name; // the report's and the state's key
+    std::uint64_t Stats::*member;
+    Section section;
+    bool regresses; // `compare` flags any increase (docs/report-schema.md, Stats)
+};
+
+inline constexpr CountField kCountFields[] = {
+    {"cases", &Stats::cases, Section::Top, false},
+    {"failures", &Stats::failures, Section::Top, true},
+    {"false_overlap", &Stats::falseOverlap, Section::Top, true},
+    {"false_separation", &Stats::falseSeparation, Section::Top, true},
+    {"undecidable", &Stats::undecidable, Section::Top, true},
+    {"nonfinite", &Stats::nonfinite, Section::Top, true},
+    {"out_of_range", &Stats::outOfRange, Section::Top, true},
+    {"iteration_limit", &Stats::iterationLimit, Section::Top, true},
+    {"beyond_bound", &Stats::beyondBound, Section::Top, true},
+    {"invalid", &Stats::invalid, Section::Since30, true},
+    {"skipped", &Stats::skipped, Section::Top, true},
+    {"not_applicable", &Stats::notApplicable, Section::Top, false},
+    {"refused", &Stats::refused, Section::Top, false},
+    {"plugin_errors", &Stats::pluginErrors, Section::Top, false},
+    {"crashed", &Stats::crashed, Section::Top, false},
+    {"hung", &Stats::hung, Section::Top, false},
+    {"certified", &Stats::certified, Section::Interval, false},
+    {"contains", &Stats::contains, Section::Interval, false},
+    {"uncertified", &Stats::uncertified, Section::Interval, false},
+    {"bit_mismatches", &Stats::bitMismatch, Section::Correct, false},
+};
+
+struct HistField
+{
+    const char* name;
+    Hist Stats::*member;
+    Section section;          // Top or Since30: under the report's "errors"
+    bool Stats::*shownIf;     // the report writes it only when this flag is set; nullptr: always
+};
+
+inline constexpr HistField kHistFields[] = {
+    {"abs", &Stats::abs, Section::Top, nullptr},
+    {"rel", &Stats::rel, Section::Top, nullptr},
+    {"ulps", &Stats::ulps, Section::Top, nullptr},
+    {"normalized", &Stats::normalized, Section::Top, nullptr},
+    {"bound_ratio", &Stats::boundRatio, Section::Top, nullptr},
+    {"witness", &Stats::witness, Section::Top, nullptr},
+    {"witness_gap", &Stats::witnessGap, Section::Top, nullptr},
+    {"witness_ratio", &Stats::witnessRatio, Section::Since30, nullptr},
+    {"input_rounding", &Stats::inputRounding, Section::Top, &Stats::hasInputRounding},
+    {"width_ulps", &Stats::widthUlps, Section::Interval, nullptr},
+};
+
+// Flags merged by "or"; hasPaths is not one: the state's "correct_paths" stands for it.
+struct FlagField
+{
+    const char* name;
+    bool Stats::*member;
+};
+
+inline constexpr FlagField kFlagFields[] = {
+    {"has_interval", &Stats::hasInterval},
+    {"has_input_rounding", &Stats::hasInputRounding},
+};
+
+// The queries each gjk::CorrectPath decided, in the report's order; named by gjk::correctPathName.
+struct PathField
+{
+    gjk::CorrectPath path;
+    std::uint64_t Stats::*member;
+};
+
+inline constexpr PathField kPathFields[] = {
+    {gjk::CorrectPath::Double, &Stats::pathDouble},
+    {gjk::CorrectPath::Extended, &Stats::pathExtended},
+    {gjk::CorrectPath::DoubleDouble, &Stats::pathDoubleDouble},
+    {gjk::CorrectPath::Exact, &Stats::pathExact},
 };
 
 } // namespace gjkval
