@@ -2,6 +2,7 @@
 // timings -> report.json (docs/report-schema.md), from which everything else is rendered.
 #pragma once
 
+#include "common/context.hpp"
 #include "common/output.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/sources.hpp"
@@ -49,19 +50,6 @@ struct CampaignConfig
     bool resume = false;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
-
-// The source tree's revision when gjk-validate was built ("0123456789ab", "... (dirty)" with
-// modified tracked files, "unknown" outside a git checkout): recorded by the build
-// (src/common/build_info.cpp), never asked of git at run time.
-std::string gitRevision();
-std::string isoDateUtc();
-
-// report.json's context block up to "cases_rejected" (date, host, compiler, flags, build_type,
-// gjk_checked, git_revision, command, seed, threads, inputs, cases_total, cases_rejected); `bench`
-// writes the same block.
-Json contextJson(const std::string& date, const std::string& revision, const std::string& command,
-                 std::uint64_t seed, int threads, Json inputs, std::size_t casesTotal,
-                 std::size_t casesRejected);
 
 // The default campaign of `gjk-validate run` without inputs.
 std::vector<std::string> defaultFamilies();

@@ -1,6 +1,6 @@
 // The source tree's git revision, as the build recorded it (validation/cmake/git_revision.cmake,
 // run on every build). gjk-validate runs no git and reads nothing of the source tree at run time.
-#include "campaign/campaign.hpp"
+#include "common/context.hpp"
 
 #include "git_revision.hpp"
 

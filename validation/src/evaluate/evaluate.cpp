@@ -1,6 +1,5 @@
 #include "evaluate/evaluate.hpp"
 
-#include "inputs/families.hpp"
 #include "inputs/geometry.hpp"
 
 #include <exact/correct_fallback.hpp>

@@ -215,6 +215,12 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
 // All of them.
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
 
+// Exact distance is 0: the (rounded) shapes touch or overlap.
+inline bool exactIsZero(const exact::Result& r)
+{
+    return r.overlap || r.upper == 0;
+}
+
 // Unit in the last place of the variant's type at x > 0.
 double ulpOf(Scalar s, double x);
 

@@ -250,23 +250,6 @@ Json readJsonFile(const std::string& path, const std::string& who)
     }
 }
 
-std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset)
-{
-    std::size_t line = 1, column = 1;
-    const std::size_t end = std::min(byteOffset, text.size());
-    for (std::size_t i = 0; i < end; ++i)
-    {
-        if (text[i] == '\n')
-        {
-            ++line;
-            column = 1;
-        }
-        else
-            ++column;
-    }
-    return {line, column};
-}
-
 namespace
 {
 bool isControl(std::string_view s)

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "common/common.hpp"
+#include "common/json_text.hpp"
 
 #include <exact/exact.hpp>
 
@@ -88,8 +89,6 @@ void writeCaseFile(const std::string& path, const std::vector<std::string>& comm
 Json caseToJson(const Case& c);
 Json shapeToJson(const ShapeIn& s);
 
-// Line and column (both from 1) of a byte offset in text.
-std::pair<std::size_t, std::size_t> lineColumn(const std::string& text, std::size_t byteOffset);
 // A JSON file (a shard's state, a checkpoint), parsed; InputError "who: PATH: cannot open: ..." or
 // "who: PATH:LINE:COLUMN: not JSON".
 Json readJsonFile(const std::string& path, const std::string& who);

@@ -138,10 +138,4 @@ std::vector<GeneratedFamily> generateFamilies(const std::string& spec, std::uint
 
 // The checks are evaluated by statistics/makeup.hpp.
 
-// Exact distance is 0: the (rounded) shapes touch or overlap.
-inline bool exactIsZero(const exact::Result& r)
-{
-    return r.overlap || r.upper == 0;
-}
-
 } // namespace gjkval

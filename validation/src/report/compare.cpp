@@ -1,7 +1,8 @@
 // gjk-validate compare: the comparison of two reports (compare.hpp states the tolerance rule).
 #include "report/compare.hpp"
 
-#include "inputs/cases.hpp" // lineColumn
+#include "common/json_text.hpp"
+#include "report/report.hpp"
 #include "statistics/stats.hpp" // kCountFields
 
 #include <fmt/format.h>
@@ -23,7 +24,7 @@ namespace
 {
 namespace fs = std::filesystem;
 
-constexpr const char* kSchema = "gjk-report/1";
+constexpr const char* kSchema = kReportSchema;
 constexpr int kMaxReportDepth = 64; // report.json nests about 8 deep; a deeper file is not one
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -37,7 +38,7 @@ void checkShape(const Json& r, const std::string& label)
 {
     if (!r.is_object())
         throw InputError(
-            fmt::format("{}: the JSON is {}, expected a gjk-report/1 object", label, typeName(r)));
+            fmt::format("{}: the JSON is {}, expected a {} object", label, typeName(r), kSchema));
     if (!r.contains("schema"))
         throw InputError(fmt::format("{}: not a {} report (no \"schema\")", label, kSchema));
     if (!r["schema"].is_string() || r["schema"].get_ref<const std::string&>() != kSchema)
@@ -495,9 +496,9 @@ Json readReport(const std::string& path)
                              {
                                  if (depth > kMaxReportDepth)
                                      throw InputError(fmt::format(
-                                         "compare: {}: not a gjk-report/1 report (JSON nested "
+                                         "compare: {}: not a {} report (JSON nested "
                                          "more than {} deep)",
-                                         shown, kMaxReportDepth));
+                                         shown, kSchema, kMaxReportDepth));
                                  return true;
                              });
     }

@@ -8,6 +8,10 @@
 namespace gjkval
 {
 
+// report.json's format name and version (docs/report-schema.md): written by the campaign, checked
+// by compare. report.js and the HTML renderer (validation/html/) spell it again: they are not C++.
+inline constexpr const char* kReportSchema = "gjk-report/1";
+
 std::string renderMarkdown(const Json& report);
 // The run's summary for the terminal: totals, one line per family x variant that failed or answered
 // overlap wrongly (false overlap or separation), failed make-up checks, rejected cases, throughput

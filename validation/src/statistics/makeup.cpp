@@ -1,5 +1,6 @@
 #include "statistics/makeup.hpp"
 
+#include "evaluate/evaluate.hpp"
 #include "inputs/geometry.hpp"
 
 #include "gjk/math.hpp"

@@ -3,7 +3,8 @@
 // spread over the passes. Reuses the campaign's inputs (loadInputs) and timing (timeQueries).
 #pragma once
 
-#include "campaign/campaign.hpp"
+#include "common/context.hpp"
+#include "inputs/sources.hpp"
 #include "timing/timing.hpp"
 
 #include <cstdint>
