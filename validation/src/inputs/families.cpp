@@ -129,22 +129,6 @@ void placeAtGap(const ShapeIn& a, ShapeIn& b, double gap, Rng& r)
     b.py = p[1] + off * n[1] - rk[1];
 }
 
-// Largest distance between two of the (hull) points; 0 for a single point.
-void scaleShape(ShapeIn& s, double k)
-{
-    for (auto& p : s.points)
-        p = {p[0] * k, p[1] * k};
-    s.radius *= k;
-    s.px *= k;
-    s.py *= k;
-}
-
-void scaleCase(Case& c, double k)
-{
-    scaleShape(c.a, k);
-    scaleShape(c.b, k);
-}
-
 // Points replaced by their world coordinates (rounded), identity transform.
 void bake(ShapeIn& s)
 {
