@@ -90,6 +90,11 @@ ShapeIn roundedToFloat(const ShapeIn& s)
     return o;
 }
 
+// A field added to one of the two shapes and not to the other changes one size.
+static_assert(sizeof(ShapeIn) == sizeof(exact::Shape) &&
+                  sizeof(ShapeIn::points) == sizeof(exact::Shape::points),
+              "ShapeIn and exact::Shape must keep the same fields (cases.hpp)");
+
 exact::Shape toExact(const ShapeIn& in, bool roundToFloat)
 {
     const ShapeIn s = roundToFloat ? roundedToFloat(in) : in;
