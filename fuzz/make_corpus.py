@@ -18,12 +18,14 @@ import struct
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CORPUS = os.path.join(ROOT, "fuzz", "corpus")
 
-# The certified interval on overflow (unit rotations, coordinates 1.5e308).
-DEFECT2 = ('{"format":"gjk-cases/1","cases":[{"name":"r1","a":{"points":[[1.5e308,-1.4e308]],'
+# Two points near the largest double (1.5e308) under the same 45-degree rotation: the certified
+# interval's products overflow.
+ROTATED_POINTS_NEAR_MAX = ('{"format":"gjk-cases/1","cases":[{"name":"r1","a":{"points":[[1.5e308,-1.4e308]],'
            '"radius":1,"transform":{"q":[0.7071067811865476,0.7071067811865476]}},"b":{"points":'
            '[[1.5e308,-1.5e308]],"transform":{"q":[0.7071067811865476,0.7071067811865476]}}}]}')
-# Warm and cold answers differed (a vertex at 3.6e18).
-DEFECT7 = ('{"format":"gjk-cases/1","cases":[{"name":"s6","a":{"points":[[0.0099668502807617188,'
+# A rotated point against five points, one of them a vertex 3.6e18 away: warm and cold starts
+# walk different simplices.
+POINT_FAR_VERTEX = ('{"format":"gjk-cases/1","cases":[{"name":"s6","a":{"points":[[0.0099668502807617188,'
            '-0.7109375]],"transform":{"p":[-4.7393143177032471e-05,-1.862645149230957e-07],"q":'
            '[0.54540534970280896,0.83817241932406528]}},"b":{"points":[[-0.7109375,'
            '6.7949295043945312e-06],[-5.5511151231257827e-15,-3.5809246537129656e+18],[0,'
@@ -40,18 +42,17 @@ def case_file_seeds():
         for name in sorted(os.listdir(os.path.join(ROOT, folder))):
             with open(os.path.join(ROOT, folder, name), "rb") as f:
                 seeds[folder.replace("/", "-") + "-" + name] = f.read()
-    seeds["issue12-defect2-certified-overflow.json"] = DEFECT2.encode()
-    seeds["issue12-defect7-warm-cold.json"] = DEFECT7.encode()
-    # Defect 3: a deeply nested "format" value (2,000 levels; the issue's had 100,000), and deep
-    # nesting inside a case.
+    seeds["rotated-points-near-max.json"] = ROTATED_POINTS_NEAR_MAX.encode()
+    seeds["point-far-vertex.json"] = POINT_FAR_VERTEX.encode()
+    # A deeply nested "format" value (2,000 levels), and deep nesting inside a case.
     depth = 2000
-    seeds["issue12-defect3-deep-format.json"] = (
+    seeds["deep-format.json"] = (
         '{"format":' + "[" * depth + "]" * depth + ',"cases":[]}').encode()
     seeds["deep-points.json"] = ('{"format":"gjk-cases/1","cases":[{"name":"d","a":{"points":'
                                  + "[" * depth + "]" * depth + '},"b":{"points":[[0,0]]}}]}').encode()
     seeds["deep-unclosed.json"] = ('{"format":"gjk-cases/1","cases":' + "[{" * 1000).encode()
     seeds["long-format-string.json"] = ('{"format":"' + "x" * 5000 + '","cases":[]}').encode()
-    # Defect 6: duplicate keys, 1e-999 and friends.
+    # Duplicate keys; numbers that overflow, underflow or are subnormal.
     seeds["duplicate-format-key.json"] = b'{"format":"gjk-cases/1","format":"gjk-cases/1","cases":[]}'
     seeds["duplicate-cases-key.json"] = ('{"format":"gjk-cases/1","cases":[],"cases":[' + GOOD_CASE
                                          + ']}').encode()
@@ -70,7 +71,7 @@ def case_file_seeds():
             + ']],"transform":{"p":[' + text + ',0],"q":[1,' + text + ']}}}]}').encode()
     seeds["strings-nan-inf.json"] = (b'{"format":"gjk-cases/1","cases":[{"name":"s","a":{"points":'
                                      b'[["nan","inf"]],"radius":"-inf"},"b":{"points":[[0,0]]}}]}')
-    # Defect 4: non-UTF-8 bytes in names, comments and the format, a lone surrogate escape, a BOM.
+    # Non-UTF-8 bytes in names, comments and the format, a lone surrogate escape, a BOM.
     seeds["non-utf8-name.json"] = (b'{"format":"gjk-cases/1","cases":[{"name":"x\xff","a":{"points":'
                                    b'[[0,0]]},"b":{"points":[[1,0]]}}]}')
     seeds["non-utf8-comment.json"] = (b'{"format":"gjk-cases/1","comments":["\xc0\x80 overlong",'
@@ -132,8 +133,8 @@ def distance_seeds():
         with open(os.path.join(ROOT, "validation/cases", name)) as f:
             cases += [("cases-" + name[:-5] + "-" + c["name"].split("/")[-1], c)
                       for c in json.load(f)["cases"]]
-    cases.append(("issue12-defect2", json.loads(DEFECT2)["cases"][0]))
-    cases.append(("issue12-defect7", json.loads(DEFECT7)["cases"][0]))
+    cases.append(("issue12-defect2", json.loads(ROTATED_POINTS_NEAR_MAX)["cases"][0]))
+    cases.append(("issue12-defect7", json.loads(POINT_FAR_VERTEX)["cases"][0]))
     # Defect 1: solve3's fallback with all three edge lengths overflowing. Identity rotations and
     # coordinates near 1e265: an axis-aligned triangle around the origin and a point, and the
     # shapes of `gjk-validate generate --family hard/range --seed 1`'s case 10-gap-x1e+160 scaled

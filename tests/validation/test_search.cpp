@@ -25,11 +25,7 @@ SearchConfig searchConfig(std::vector<std::string> families, const std::string& 
 
 SearchResult search(const SearchConfig& c)
 {
-    CampaignConfig in;
-    in.families = c.families;
-    in.caseFiles = c.caseFiles;
-    in.seed = c.seed;
-    return runSearch(c, loadInputs(in));
+    return runSearch(c, collectInputs(c.families, c.caseFiles, c.seed));
 }
 
 double maxOf(const std::vector<double>& v)

@@ -211,14 +211,12 @@ TEST_CASE("a reduced campaign over every variant: judged variants pass, comparis
 
 TEST_CASE("bench: timings per variant without the exact side", "[variants][bench]")
 {
-    CampaignConfig in;
-    in.families = {"random:300", "hard/points"};
     BenchConfig b;
     b.variants = parseVariants("double,float,float-warm");
     b.passes = 3;
     b.minPassSeconds = 0.001;
     b.command = "test";
-    const BenchResult res = runBench(b, loadInputs(in));
+    const BenchResult res = runBench(b, collectInputs({"random:300", "hard/points"}, {}, 1));
     CHECK(res.exitCode == kExitPass);
     const Json& j = res.json;
     for (const char* k : {"date", "host", "compiler", "flags", "build_type", "git_revision",

@@ -72,11 +72,6 @@ std::vector<CampaignInput> campaignInputs(const CampaignConfig& config)
     return campaignInputs(config.families, config.caseFiles, config.seed);
 }
 
-std::vector<FamilyData> loadInputs(const CampaignConfig& config)
-{
-    return collectInputs(config.families, config.caseFiles, config.seed);
-}
-
 namespace
 {
 // --- The pipeline's state ---------------------------------------------------------------------

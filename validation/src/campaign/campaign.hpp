@@ -60,8 +60,6 @@ std::vector<std::string> defaultCaseFiles();
 
 // The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
 std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);
-// ... held whole, for bench and search.
-std::vector<FamilyData> loadInputs(const CampaignConfig& config);
 
 struct Campaign
 {

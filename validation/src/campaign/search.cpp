@@ -111,18 +111,6 @@ bool shapeStep(Case& c, const SearchCase&, Rng& rng)
     return true;
 }
 
-void scaleCase(Case& c, double f)
-{
-    for (ShapeIn* s : {&c.a, &c.b})
-    {
-        for (auto& p : s->points)
-            p = {p[0] * f, p[1] * f};
-        s->px *= f;
-        s->py *= f;
-        s->radius *= f;
-    }
-}
-
 bool scalePow2(Case& c, const SearchCase&, Rng& rng)
 {
     const int e = rng.integer(1, 16) * int(rng.sign());

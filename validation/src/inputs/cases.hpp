@@ -14,8 +14,13 @@
 namespace gjkval
 {
 
-// One shape of a case: the convex hull of `points` mapped by x' = c*x - s*y + px,
-// y' = s*x + c*y + py, grown by `radius`.
+// One shape of a case as given: field for field exact::Shape (exact/exact.hpp states what each
+// field means: the convex hull of `points` mapped by x' = c*x - s*y + px, y' = s*x + c*y + py,
+// grown by `radius`). Not the same type, because the points differ: here std::array<double, 2>
+// (P2), which the runner's geometry (geometry.hpp), the generators and the conversions to
+// gjk::Polygon index as p[0], p[1]; there exact::Point {x, y}, exact/ being independent of
+// validation/ and gjk/. toExact (below) is the one translation, and cases.cpp checks that the two
+// keep the same fields.
 struct ShapeIn
 {
     std::vector<std::array<double, 2>> points;

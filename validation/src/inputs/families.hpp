@@ -1,7 +1,8 @@
 // Case families: seeded generators of cases, each with the checks of its own make-up.
-// `random` is the realistic mix; `hard/<sub>` are the known ways to break GJK, all in ONE table in
-// families.cpp with a reason per sub-family; `engine/<scene>-<kind>` are queries recorded from
-// Box2D worlds (engine.hpp), in a second table there.
+// `random` is the realistic mix; `hard/<sub>` are the known ways to break GJK, with a reason per
+// sub-family; `engine/<scene>-<kind>` are queries recorded from Box2D worlds (engine.hpp). Each
+// family's row (name, count, reason, make-up) sits beside its generator in its group's file under
+// inputs/families/ (rows.hpp lists the groups); families.cpp gathers them.
 #pragma once
 
 #include "inputs/cases.hpp"

@@ -283,4 +283,19 @@ double hullDiameter(const std::vector<P2>& h)
     return d;
 }
 
+void scaleShape(ShapeIn& s, double k)
+{
+    for (auto& p : s.points)
+        p = {p[0] * k, p[1] * k};
+    s.radius *= k;
+    s.px *= k;
+    s.py *= k;
+}
+
+void scaleCase(Case& c, double k)
+{
+    scaleShape(c.a, k);
+    scaleShape(c.b, k);
+}
+
 } // namespace gjkval

@@ -50,4 +50,11 @@ double aspectRatio(const ShapeIn& s);
 // Largest distance between two points of h.
 double hullDiameter(const std::vector<P2>& h);
 
+// Every length of the shape (points, radius, translation) times k; the rotation (c, s) is kept.
+// Each number is one product, rounded once (exact when k is a power of two and nothing
+// overflows or underflows).
+void scaleShape(ShapeIn& s, double k);
+// Both shapes scaled by k about the world origin.
+void scaleCase(Case& c, double k);
+
 } // namespace gjkval

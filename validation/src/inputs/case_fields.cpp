@@ -1,0 +1,200 @@
+#include "inputs/case_fields.hpp"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <limits>
+
+namespace gjkval
+{
+
+const char* typeName(const RJson& j)
+{
+    switch (j.type())
+    {
+    case RJson::value_t::null:
+        return "null";
+    case RJson::value_t::object:
+        return "an object";
+    case RJson::value_t::array:
+        return "an array";
+    case RJson::value_t::string:
+        return "a string";
+    case RJson::value_t::boolean:
+        return "a boolean";
+    case RJson::value_t::number_integer:
+    case RJson::value_t::number_unsigned:
+    case RJson::value_t::number_float:
+        return "a number";
+    default:
+        return "not a value";
+    }
+}
+
+namespace
+{
+// A field error: thrown while reading one case, caught per case (the case is rejected).
+struct FieldError
+{
+    std::string message;
+};
+
+[[noreturn]] void fieldError(std::string message)
+{
+    throw FieldError{std::move(message)};
+}
+
+// A number field. JSON has no NaN or infinity: the strings "nan", "inf", "-inf" (the report's own
+// convention) are read as such so that they can be rejected with a precise message.
+double readNumber(const RJson& j, const std::string& field)
+{
+    double v = 0;
+    if (j.is_number())
+        v = j.get<double>();
+    else if (j.is_string())
+    {
+        std::string s = j.get<std::string>();
+        for (auto& ch : s)
+            ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        if (s == "nan" || s == "-nan" || s == "+nan")
+            v = std::numeric_limits<double>::quiet_NaN();
+        else if (s == "inf" || s == "+inf" || s == "infinity" || s == "+infinity")
+            v = std::numeric_limits<double>::infinity();
+        else if (s == "-inf" || s == "-infinity")
+            v = -std::numeric_limits<double>::infinity();
+        else
+            fieldError(fmt::format("{} is a string, expected a number", field));
+    }
+    else
+        fieldError(fmt::format("{} is {}, expected a number", field, typeName(j)));
+    if (std::isnan(v))
+        fieldError(fmt::format("{} is NaN", field));
+    if (std::isinf(v))
+        fieldError(fmt::format("{} is infinite", field));
+    return v;
+}
+
+std::array<double, 2> readPair(const RJson& j, const std::string& field)
+{
+    if (!j.is_array())
+        fieldError(fmt::format("{} is {}, expected an array [x, y]", field, typeName(j)));
+    if (j.size() != 2)
+        fieldError(fmt::format("{} has {} elements, expected 2", field, j.size()));
+    return {readNumber(j[0], field + "[0]"), readNumber(j[1], field + "[1]")};
+}
+
+ShapeIn readShape(const RJson& c, const char* key)
+{
+    const std::string k = key;
+    if (!c.contains(key))
+        fieldError(fmt::format("missing field '{}'", k));
+    const RJson& j = c[key];
+    if (!j.is_object())
+        fieldError(fmt::format("{} is {}, expected an object", k, typeName(j)));
+    ShapeIn s;
+    if (!j.contains("points"))
+        fieldError(fmt::format("missing field '{}.points'", k));
+    const RJson& pts = j["points"];
+    if (!pts.is_array())
+        fieldError(fmt::format("{}.points is {}, expected an array", k, typeName(pts)));
+    if (pts.empty())
+        fieldError(fmt::format("{}.points is empty", k));
+    if (pts.size() > kMaxShapePoints)
+        fieldError(
+            fmt::format("{}.points has {} points, more than {}", k, pts.size(), kMaxShapePoints));
+    s.points.reserve(pts.size());
+    for (std::size_t i = 0; i < pts.size(); ++i)
+        s.points.push_back(readPair(pts[i], fmt::format("{}.points[{}]", k, i)));
+    if (j.contains("radius"))
+    {
+        s.radius = readNumber(j["radius"], k + ".radius");
+        if (s.radius < 0)
+            fieldError(fmt::format("{}.radius is negative ({})", k, s.radius));
+    }
+    if (j.contains("transform"))
+    {
+        const RJson& t = j["transform"];
+        if (!t.is_object())
+            fieldError(fmt::format("{}.transform is {}, expected an object", k, typeName(t)));
+        if (t.contains("p"))
+        {
+            const auto p = readPair(t["p"], k + ".transform.p");
+            s.px = p[0];
+            s.py = p[1];
+        }
+        if (t.contains("q"))
+        {
+            const auto q = readPair(t["q"], k + ".transform.q");
+            s.c = q[0];
+            s.s = q[1];
+            // Any finite (c, s) other than (0, 0) is a transform (x' = c x - s y + p scales by
+            // sqrt(c^2 + s^2)): GJK and the exact side both apply it as given. A float engine's
+            // (cos, sin) is a unit vector only to float rounding. (0, 0) maps the whole
+            // shape to one point: not a transform.
+            if (s.c == 0 && s.s == 0)
+                fieldError(fmt::format("{}.transform.q is (0, 0): not a rotation", k));
+        }
+    }
+    return s;
+}
+
+bool isControl(std::string_view s)
+{
+    for (std::size_t i = 0; i < s.size();)
+    {
+        const std::size_t n = utf8SequenceLength(s, i);
+        const unsigned c = static_cast<unsigned char>(s[i]);
+        if (n == 0 || c < 0x20 || c == 0x7F ||
+            (n == 2 && c == 0xC2 && static_cast<unsigned char>(s[i + 1]) < 0xA0))
+            return true;
+        i += n;
+    }
+    return false;
+}
+} // namespace
+
+CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std::string& base,
+                   std::set<std::string>& names)
+{
+    CaseEntry e;
+    e.label = fmt::format("{}#{}", base, index);
+    try
+    {
+        const std::string tooLarge =
+            fmt::format("the case has more than {} JSON values", kMaxCaseJsonValues);
+        if (truncated && !(c.is_object() && c.contains("name")))
+            fieldError(tooLarge);
+        if (!c.is_object())
+            fieldError(fmt::format("the case is {}, expected an object", typeName(c)));
+        if (!c.contains("name"))
+            fieldError("missing field 'name'");
+        if (!c["name"].is_string() || c["name"].get_ref<const std::string&>().empty())
+            fieldError("name is not a non-empty string");
+        // The name is quoted in labels, reports and terminals and looked up by `explain`: short,
+        // printable, and (as every JSON string nlohmann reads) valid UTF-8.
+        const std::string& name = c["name"].get_ref<const std::string&>();
+        e.label = fmt::format("{}#{} (case '{}')", base, index, excerpt(name));
+        if (name.size() > kMaxCaseNameBytes)
+            fieldError(
+                fmt::format("name is {} bytes long, more than {}", name.size(), kMaxCaseNameBytes));
+        if (!isValidUtf8(name) || isControl(name))
+            fieldError("name contains a control character or is not valid UTF-8");
+        if (!names.insert(name).second)
+            fieldError(fmt::format("duplicate case name '{}'", excerpt(name)));
+        e.c.name = name;
+        if (truncated) // named when the name came before the cut
+            fieldError(tooLarge);
+        e.c.a = readShape(c, "a");
+        e.c.b = readShape(c, "b");
+    }
+    catch (const FieldError& err)
+    {
+        e.rejected = err.message;
+        if (e.c.name.empty())
+            e.c.name = e.label;
+    }
+    return e;
+}
+
+} // namespace gjkval
