@@ -466,7 +466,7 @@ class Search
 
     void evaluateAll(std::vector<Candidate>& batch)
     {
-        Progress none(false, "", 0);
+        Progress none = Progress::silent();
         parallelFor(batch.size(), res_.threads, none,
                     [&](std::size_t i) { evaluate(batch[i], ctx_); });
         res_.evaluations += batch.size();

@@ -4,6 +4,7 @@
 #include "common/output.hpp"
 #include "evaluate/plugins.hpp"
 #include "inputs/families.hpp"
+#include "report/pages.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -251,14 +252,14 @@ void printPluginLogs(const std::vector<PluginLog>& logs, const fs::path& dir)
     }
 }
 
-void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose)
+void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool verbose)
 {
     const std::vector<PluginLog> logs = finishPluginLogs(); // into the directory before its commit
-    const std::string page = writeCampaign(camp, out);
+    const std::string page = writeReportPages(result, out);
     printPluginLogs(logs, out.dir());
     if (verbose)
-        std::fputs(terminalTable(camp.report).c_str(), stdout);
-    std::fputs(terminalSummary(camp.report).c_str(), stdout);
+        std::fputs(terminalTable(result.report).c_str(), stdout);
+    std::fputs(terminalSummary(result.report).c_str(), stdout);
     std::printf("report: %s\n", page.c_str());
     flushStdout();
 }

@@ -64,8 +64,9 @@ Subcommand addMerge(CLI::App& app, const CommandLine& line);
 // run's and merge's last step: the report into `out` (committed, with the plugins' logs), then
 // the terminal summary (with every family x variant when `verbose`) and the page's path.
 struct Campaign;
+struct CampaignReport;
 class StagedDir;
-void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose);
+void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool verbose);
 // One line on stderr per plugin that printed: how much, and its log in `dir`.
 struct PluginLog;
 void printPluginLogs(const std::vector<PluginLog>& logs, const std::filesystem::path& dir);

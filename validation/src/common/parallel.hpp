@@ -33,6 +33,8 @@ class Progress
         if (enabled_)
             thread_ = std::thread([this] { loop(); });
     }
+    // A progress that draws nothing: for the phases whose progress is not shown.
+    static Progress silent() { return Progress(false, "", 0); }
     ~Progress()
     {
         if (!enabled_)
