@@ -139,8 +139,9 @@ void checkFamilies(const std::vector<std::string>& specs, bool streamed)
 
 static_assert(PluginOptions{}.timeoutSeconds == kDefaultPluginTimeoutSeconds);
 
-void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges)
+void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, Judging judging)
 {
+    const bool judges = judging == Judging::Judges;
     sub.add_option("--plugin", o.paths,
                    "a shared library implementing gjk2d/plugin.h: each implementation it describes "
                    "becomes a comparison variant (evaluated in a child process); repeatable, each "
@@ -157,7 +158,8 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges
                    "seconds a plugin may take on one case before it counts as hung, 0.01..3600")
         ->capture_default_str();
     sub.add_flag("--no-default-plugins", o.noDefault,
-                 shipped ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
+                 shipped == ShippedPlugins::JoinDefaultList
+                     ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
                            "joins when --variants is left at its default"
                          : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
                            "--variants can name");
@@ -187,7 +189,7 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
 }
 
 std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
-                                               bool shippedByDefault)
+                                               ShippedPlugins shipped)
 {
     if (!o.judges && !o.judge.empty())
         throw InputError(fmt::format("--judge {}: this command judges no variant (bench times "
@@ -204,7 +206,7 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
             if (std::find(variants.begin(), variants.end(), v) == variants.end())
                 variants.push_back(v);
     };
-    if (shippedByDefault && list == kDefaultVariants)
+    if (shipped == ShippedPlugins::JoinDefaultList && list == kDefaultVariants)
         add(loaded.shipped);
     add(loaded.given);
     for (const auto& name : o.judge)
