@@ -48,7 +48,6 @@ exact::Route parseRouteOrThrow(const std::string& name)
     return r;
 }
 
-// A \xff in --out used to abort the program after the whole campaign.
 void checkArgsUtf8(int argc, char** argv)
 {
     for (int i = 1; i < argc; ++i)

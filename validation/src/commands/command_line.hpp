@@ -116,7 +116,7 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.
 void checkArgsUtf8(int argc, char** argv);
-// A seed: decimal digits only, 0 .. 2^64 - 1 ("-1" used to become 2^64 - 1 silently).
+// A seed: decimal digits only, 0 .. 2^64 - 1 (no sign: strtoull would wrap "-1" to 2^64 - 1).
 std::uint64_t parseSeed(const std::string& text);
 exact::Route parseRouteOrThrow(const std::string& name);
 void checkRange(const char* option, int value, int lo, int hi);
