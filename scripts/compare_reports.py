@@ -4,7 +4,7 @@
     scripts/compare_reports.py OLD_DIR NEW_DIR
 
 Compares report.json with what legitimately changes between runs removed (the same fields as
-stripVolatile() in validation/src/campaign/campaign.cpp: date, host, threads, timings, command,
+stripVolatile() in validation/src/campaign/verdict.cpp: date, host, threads, timings, command,
 revision), and the cases of worst-cases.json (names and inputs; its comments quote the command).
 Prints the first differences and exits 1 when there are any, 0 when the two are the same.
 """

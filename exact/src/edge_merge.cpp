@@ -64,11 +64,14 @@ void accumulate(mpz_class& v, long& ve, bool& set, const mpz_class& term, long t
     }
 }
 
-void addProduct(mpz_class& v, long& ve, bool& set, const Dec& a, const Dec& b, bool negate) {
+// The sign a product enters its sum with.
+enum class Sign { Plus, Minus };
+
+void addProduct(mpz_class& v, long& ve, bool& set, const Dec& a, const Dec& b, Sign sign) {
     if (a.m == 0 || b.m == 0) return;
     mpz_class t(a.m);
     t *= b.m;
-    if (negate) t = -t;
+    if (sign == Sign::Minus) t = -t;
     accumulate(v, ve, set, t, a.e + b.e);
 }
 
@@ -87,11 +90,11 @@ E2 transformExact(const DecShape& t, const Point& p) {
     E2 r;
     long ex = 0, ey = 0;
     bool sx = false, sy = false;
-    addProduct(r.x, ex, sx, t.c, x, false);
-    addProduct(r.x, ex, sx, t.s, y, true);
+    addProduct(r.x, ex, sx, t.c, x, Sign::Plus);
+    addProduct(r.x, ex, sx, t.s, y, Sign::Minus);
     addTerm(r.x, ex, sx, t.px);
-    addProduct(r.y, ey, sy, t.s, x, false);
-    addProduct(r.y, ey, sy, t.c, y, false);
+    addProduct(r.y, ey, sy, t.s, x, Sign::Plus);
+    addProduct(r.y, ey, sy, t.c, y, Sign::Plus);
     addTerm(r.y, ey, sy, t.py);
     if (!sx) ex = ey;
     if (!sy) ey = ex;

@@ -55,7 +55,7 @@ std::string write(const Run& r, const std::string& dir)
         lines += l + "\n";
     if (!r.perCaseLines.empty())
         out.write("cases.jsonl", lines);
-    return writeCampaign(r, out);
+    return writeReportPages(r, out);
 }
 
 std::string tmpDir(const std::string& name)

@@ -8,6 +8,7 @@
 #include "inputs/sources.hpp"
 #include "evaluate/evaluate.hpp"
 #include "inputs/families.hpp"
+#include "report/pages.hpp"
 #include "statistics/stats.hpp"
 #include "evaluate/variants.hpp"
 
@@ -61,11 +62,9 @@ std::vector<std::string> defaultCaseFiles();
 // The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
 std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);
 
-struct Campaign
+// A campaign's report (report/pages.hpp writes it) and its exit code.
+struct Campaign : CampaignReport
 {
-    Json report;                  // report.json
-    std::vector<Case> worstCases; // worst-cases.json
-    std::vector<std::string> worstComments;
     int exitCode = kExitPass;
 };
 
@@ -123,17 +122,6 @@ Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::str
 // inputs' case counts in `report`. InputError when a shard has too few or too many lines.
 void joinPerCase(const Json& report, std::size_t chunkCases,
                  const std::vector<std::istream*>& shardLines, std::ostream& out);
-
-// Up front, before any work: throws InputError when outDir cannot hold a report (empty, not a
-// directory, holds files that are not a report's, parent not creatable or not writable).
-void checkReportDir(const std::string& outDir);
-
-// Writes report.json, report.md, worst-cases.json and index.html (when the HTML renderer is built
-// in) into `out`, staged beside the report directory (cases.jsonl is streamed there during the
-// run), then swaps it in: the directory holds this run or the previous one, never a mix. Throws
-// OutputError (exit code 5) when a write fails. Returns the absolute path of the page to open
-// (index.html, or report.md without the renderer).
-std::string writeCampaign(const Campaign& campaign, StagedDir& out);
 
 // The report without what legitimately changes between runs of the same campaign (timings,
 // date, host, thread count): what "identical whatever the number of threads" compares.

@@ -86,6 +86,11 @@ inline constexpr std::size_t kMaxFailingKept = 100;
 
 SearchResult runSearch(const SearchConfig& config, const std::vector<FamilyData>& inputs);
 
+// The --json summary (docs/validation.md), from the result; runSearch puts it in result.json.
+Json searchJson(const SearchConfig& config, const SearchResult& result,
+                const std::vector<FamilyData>& inputs);
+// A bound ratio as the summaries print it: 4 significant digits, "n/a" for NaN.
+std::string ratioText(double r);
 // The summary printed on stdout.
 std::string searchSummary(const SearchConfig& config, const SearchResult& result);
 // The --out file: the population (best first) and the failing cases, with a comment per case.

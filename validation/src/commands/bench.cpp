@@ -24,7 +24,7 @@ struct Options
 int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.bcfg.seed = parseSeed(o.benchSeed);
-    o.bcfg.variants = selectVariants(o.benchVariants, o.plugins, false);
+    o.bcfg.variants = selectVariants(o.benchVariants, o.plugins, ShippedPlugins::OnlyNamed);
     o.bcfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     o.bcfg.command = line.text();
     if (o.benchFamilies.empty() && o.benchFiles.empty())
@@ -70,7 +70,7 @@ Subcommand addBench(CLI::App& app, const CommandLine& line)
     bench->add_flag("--warm", o->bcfg.warm,
                     "time warm-started queries: each starts from the SimplexCache of a previous "
                     "query of the same case");
-    addPluginOptions(*bench, o->plugins, false, false);
+    addPluginOptions(*bench, o->plugins, ShippedPlugins::OnlyNamed, Judging::RefusesJudge);
     bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
         ->capture_default_str();
     bench->add_option("--json", o->benchJson, "write the timings as JSON to this file");

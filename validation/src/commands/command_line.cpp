@@ -4,6 +4,7 @@
 #include "common/output.hpp"
 #include "evaluate/plugins.hpp"
 #include "inputs/families.hpp"
+#include "report/pages.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -47,7 +48,6 @@ exact::Route parseRouteOrThrow(const std::string& name)
     return r;
 }
 
-// A \xff in --out used to abort the program after the whole campaign.
 void checkArgsUtf8(int argc, char** argv)
 {
     for (int i = 1; i < argc; ++i)
@@ -138,8 +138,9 @@ void checkFamilies(const std::vector<std::string>& specs, bool streamed)
 
 static_assert(PluginOptions{}.timeoutSeconds == kDefaultPluginTimeoutSeconds);
 
-void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges)
+void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, Judging judging)
 {
+    const bool judges = judging == Judging::Judges;
     sub.add_option("--plugin", o.paths,
                    "a shared library implementing gjk2d/plugin.h: each implementation it describes "
                    "becomes a comparison variant (evaluated in a child process); repeatable, each "
@@ -156,7 +157,8 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges
                    "seconds a plugin may take on one case before it counts as hung, 0.01..3600")
         ->capture_default_str();
     sub.add_flag("--no-default-plugins", o.noDefault,
-                 shipped ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
+                 shipped == ShippedPlugins::JoinDefaultList
+                     ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
                            "joins when --variants is left at its default"
                          : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
                            "--variants can name");
@@ -186,7 +188,7 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
 }
 
 std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
-                                               bool shippedByDefault)
+                                               ShippedPlugins shipped)
 {
     if (!o.judges && !o.judge.empty())
         throw InputError(fmt::format("--judge {}: this command judges no variant (bench times "
@@ -203,7 +205,7 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
             if (std::find(variants.begin(), variants.end(), v) == variants.end())
                 variants.push_back(v);
     };
-    if (shippedByDefault && list == kDefaultVariants)
+    if (shipped == ShippedPlugins::JoinDefaultList && list == kDefaultVariants)
         add(loaded.shipped);
     add(loaded.given);
     for (const auto& name : o.judge)
@@ -251,14 +253,14 @@ void printPluginLogs(const std::vector<PluginLog>& logs, const fs::path& dir)
     }
 }
 
-void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose)
+void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool verbose)
 {
     const std::vector<PluginLog> logs = finishPluginLogs(); // into the directory before its commit
-    const std::string page = writeCampaign(camp, out);
+    const std::string page = writeReportPages(result, out);
     printPluginLogs(logs, out.dir());
     if (verbose)
-        std::fputs(terminalTable(camp.report).c_str(), stdout);
-    std::fputs(terminalSummary(camp.report).c_str(), stdout);
+        std::fputs(terminalTable(result.report).c_str(), stdout);
+    std::fputs(terminalSummary(result.report).c_str(), stdout);
     std::printf("report: %s\n", page.c_str());
     flushStdout();
 }

@@ -64,8 +64,9 @@ Subcommand addMerge(CLI::App& app, const CommandLine& line);
 // run's and merge's last step: the report into `out` (committed, with the plugins' logs), then
 // the terminal summary (with every family x variant when `verbose`) and the page's path.
 struct Campaign;
+struct CampaignReport;
 class StagedDir;
-void writeReportAndSummary(const Campaign& camp, StagedDir& out, bool verbose);
+void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool verbose);
 // One line on stderr per plugin that printed: how much, and its log in `dir`.
 struct PluginLog;
 void printPluginLogs(const std::vector<PluginLog>& logs, const std::filesystem::path& dir);
@@ -76,8 +77,20 @@ void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
                         const std::string& hint = {});
 
 // --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, --no-default-plugins
-// (docs/validate-your-gjk.md). `shipped`: the command joins the shipped plugins by default (run).
-// `judges`: the command judges variants; bench does not, and refuses --judge (exit 2).
+// (docs/validate-your-gjk.md).
+// Whether the shipped plugins' variants join the command's default variant list (run), or are
+// loaded only for --variants to name them.
+enum class ShippedPlugins
+{
+    JoinDefaultList,
+    OnlyNamed
+};
+// Whether the command judges variants (--judge); bench does not, and refuses it (exit 2).
+enum class Judging
+{
+    Judges,
+    RefusesJudge
+};
 struct PluginOptions
 {
     std::vector<std::string> paths, judge;
@@ -85,7 +98,8 @@ struct PluginOptions
     bool noDefault = false;
     bool judges = true;
 };
-void addPluginOptions(CLI::App& sub, PluginOptions& o, bool shipped, bool judges = true);
+void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped,
+                      Judging judging = Judging::Judges);
 // The shipped plugins (unless --no-default-plugins) and the --plugin ones, loaded: InputError
 // (exit 2) naming the file when one cannot be used or a --plugin file is given twice.
 struct LoadedPlugins
@@ -94,15 +108,15 @@ struct LoadedPlugins
 };
 LoadedPlugins loadPlugins(const PluginOptions& o);
 // --variants LIST with the plugins: loadPlugins(), so that LIST can name their implementations;
-// then LIST's variants, the shipped plugins' when `shippedByDefault` and LIST is the default, and
-// every --plugin one; then --judge.
+// then LIST's variants, the shipped plugins' when they join the default list and LIST is the
+// default, and every --plugin one; then --judge.
 std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
-                                               bool shippedByDefault);
+                                               ShippedPlugins shipped);
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.
 void checkArgsUtf8(int argc, char** argv);
-// A seed: decimal digits only, 0 .. 2^64 - 1 ("-1" used to become 2^64 - 1 silently).
+// A seed: decimal digits only, 0 .. 2^64 - 1 (no sign: strtoull would wrap "-1" to 2^64 - 1).
 std::uint64_t parseSeed(const std::string& text);
 exact::Route parseRouteOrThrow(const std::string& name);
 void checkRange(const char* option, int value, int lo, int hi);

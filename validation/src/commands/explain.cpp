@@ -48,10 +48,11 @@ struct Options
     PluginOptions plugins;
 };
 
-int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
+// `explain FILE NAME`, `explain FILE --name NAME`, `explain --family F NAME`,
+// `explain --family F --name NAME`: anything more is refused. Returns FILE (empty with --family)
+// and sets o.exName.
+std::string caseFileArgument(Options& o)
 {
-    // `explain FILE NAME`, `explain FILE --name NAME`, `explain --family F NAME`,
-    // `explain --family F --name NAME`: anything more is refused.
     std::string exFile;
     const std::size_t wanted = (o.exFamily.empty() ? 1 : 0) + (o.exName.empty() ? 1 : 0);
     if (o.exPositional.size() > wanted)
@@ -67,9 +68,14 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
         throw InputError("explain: give a case FILE or --family");
     if (o.exName.empty())
         throw InputError("explain: which case? give its name (explain FILE NAME)");
-    const std::uint64_t seedValue = parseSeed(o.exSeed);
+    return exFile;
+}
+
+// The variants, the exact route and the outputs, checked before any work (InputError).
+EvalContext checkedContext(const Options& o, const std::string& exFile, CLI::App& sub)
+{
     EvalContext ctx;
-    ctx.variants = selectVariants(o.exVariants, o.plugins, false);
+    ctx.variants = selectVariants(o.exVariants, o.plugins, ShippedPlugins::OnlyNamed);
     ctx.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     ctx.exactOptions.route = parseRouteOrThrow(o.exRoute);
     if (!o.exFamily.empty())
@@ -85,52 +91,75 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
 #endif
         checkOutputFile("--html", o.exHtml);
     }
-    testFault();
-    Case found;
-    std::string family;
+    return ctx;
+}
+
+// The case named o.exName, from --family or the case file.
+struct FoundCase
+{
+    Case c;
+    std::string family, rejected; // rejected: the case file's reason, if it holds one
     bool ok = false;
-    std::string rejected;
-    std::vector<std::string> names; // every name looked at, for the error when none matches
-    if (!o.exFamily.empty())
-    {
-        for (auto& f : generateFamilies(o.exFamily, seedValue))
-            for (auto& c : f.cases)
-            {
-                names.push_back(c.name);
-                if (!ok && c.name == o.exName)
-                {
-                    found = c;
-                    family = f.name;
-                    ok = true;
-                }
-            }
-    }
-    else
-    {
-        CaseFile file = readCaseFile(exFile);
-        family = "file:" + fs::path(exFile).filename().string();
-        for (auto& e : file.entries)
+};
+
+FoundCase findInFamily(const Options& o, std::uint64_t seed, std::vector<std::string>& names)
+{
+    FoundCase found;
+    for (auto& f : generateFamilies(o.exFamily, seed))
+        for (auto& c : f.cases)
         {
-            names.push_back(e.c.name);
-            if (!ok && e.c.name == o.exName)
-            {
-                found = e.c;
-                rejected = e.rejected;
-                ok = true;
-            }
+            names.push_back(c.name);
+            if (!found.ok && c.name == o.exName)
+                found = {c, f.name, {}, true};
+        }
+    return found;
+}
+
+FoundCase findInFile(const Options& o, const std::string& exFile, std::vector<std::string>& names)
+{
+    FoundCase found;
+    CaseFile file = readCaseFile(exFile);
+    found.family = "file:" + fs::path(exFile).filename().string();
+    for (auto& e : file.entries)
+    {
+        names.push_back(e.c.name);
+        if (!found.ok && e.c.name == o.exName)
+        {
+            found.c = e.c;
+            found.rejected = e.rejected;
+            found.ok = true;
         }
     }
-    if (!ok)
+    return found;
+}
+
+// InputError when no case has the name (listing some that do exist) or the case is rejected.
+FoundCase findCase(const Options& o, const std::string& exFile, std::uint64_t seed)
+{
+    std::vector<std::string> names; // every name looked at, for the error when none matches
+    FoundCase found =
+        o.exFamily.empty() ? findInFile(o, exFile, names) : findInFamily(o, seed, names);
+    if (!found.ok)
         throw InputError(fmt::format("explain: no case named '{}' in {}; it has {}",
                                      excerpt(o.exName),
                                      o.exFamily.empty() ? shownPath(exFile)
                                                         : "--family " + o.exFamily,
                                      someNames(names)));
-    if (!rejected.empty())
+    if (!found.rejected.empty())
         throw InputError(
-            fmt::format("explain: case '{}' is rejected: {}", excerpt(o.exName), rejected));
-    CaseOutcome outcome = evaluateCase(found, ctx);
-    const Json detail = caseDetail(found, family, ctx, outcome, "explain");
+            fmt::format("explain: case '{}' is rejected: {}", excerpt(o.exName), found.rejected));
+    return found;
+}
+
+int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
+{
+    const std::string exFile = caseFileArgument(o);
+    const std::uint64_t seedValue = parseSeed(o.exSeed);
+    const EvalContext ctx = checkedContext(o, exFile, sub);
+    testFault();
+    const FoundCase found = findCase(o, exFile, seedValue);
+    CaseOutcome outcome = evaluateCase(found.c, ctx);
+    const Json detail = caseDetail(found.c, found.family, ctx, outcome, "explain");
     std::fputs(explainText(detail).c_str(), stdout);
     if (!o.exJson.empty())
         writeFileAtomic(o.exJson, detail.dump(1) + "\n");
@@ -158,7 +187,7 @@ Subcommand addExplain(CLI::App& app, const CommandLine& line)
                    "take the case from this generated family instead of a file");
     ex->add_option("--seed", o->exSeed, "seed for --family, 0..2^64-1")->capture_default_str();
     ex->add_option("--variants", o->exVariants, "variants to run")->capture_default_str();
-    addPluginOptions(*ex, o->plugins, false);
+    addPluginOptions(*ex, o->plugins, ShippedPlugins::OnlyNamed);
     ex->add_option("--exact-route", o->exRoute, "exact construction")->capture_default_str();
     ex->add_option("--json", o->exJson,
                    "write the CaseDetail JSON (docs/report-schema.md) to this file");

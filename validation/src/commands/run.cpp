@@ -59,7 +59,7 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     CampaignConfig cfg = o.config;
     cfg.seed = parseSeed(o.seed);
     // The shipped plugins (Box2D 2.4.1) join the default variant list; an explicit one names them.
-    cfg.variants = selectVariants(o.variants, o.plugins, true);
+    cfg.variants = selectVariants(o.variants, o.plugins, ShippedPlugins::JoinDefaultList);
     cfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     cfg.route = parseRouteOrThrow(o.route);
     checkRange("--threads", cfg.threads, 0, kMaxThreads);
@@ -151,50 +151,56 @@ std::size_t worldSize()
 }
 
 #if defined(GJK2D_HAVE_MPI)
-// Under mpirun: rank r of n runs shard r/n; rank 0 gathers the shard states, merges them and
-// writes the report (the one-process report, timing fields aside; each rank times the inputs
-// whose first chunk it holds, while the other ranks work). Every rank returns the campaign's
-// exit code.
-int mpiCommand(const RunOptions& o, CampaignConfig cfg)
+// --per-case under mpirun: each rank writes its chunks' lines beside DIR (a file system every rank
+// shares), rank 0 joins them into DIR/cases.jsonl in case order and removes them.
+fs::path rankLinesPath(const std::string& outDir, int rank)
 {
-    if (!o.shard.empty())
-        throw InputError("--shard: not under mpirun, where every rank is a shard");
-    MPI_Init(nullptr, nullptr);
-    const double start = MPI_Wtime();
-    int rank = 0, size = 1;
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &size);
-    if (cfg.threads == 0) // the node's cores shared among its ranks
+    return fs::path(reportDirPath(outDir).string() + fmt::format(".rank-{}.cases.jsonl", rank));
+}
+
+// The rank's configuration: the node's cores shared among its ranks (unless --threads), the
+// progress bar on rank 0 only, a checkpoint directory of its own.
+CampaignConfig rankConfig(CampaignConfig cfg, int rank)
+{
+    if (cfg.threads == 0)
         cfg.threads = int(std::max<std::size_t>(
             1, std::thread::hardware_concurrency() /
                    std::max<std::size_t>(1, launcherSize("OMPI_COMM_WORLD_LOCAL_SIZE"))));
     cfg.progress = cfg.progress && rank == 0;
-    if (!cfg.checkpointDir.empty()) // each rank its own
+    if (!cfg.checkpointDir.empty())
         cfg.checkpointDir = (fs::path(cfg.checkpointDir) / fmt::format("rank-{}", rank)).string();
-    // --per-case: each rank writes its chunks' lines beside DIR (a file system every rank shares),
-    // rank 0 joins them into DIR/cases.jsonl in case order and removes them.
-    const auto rankLines = [&](int r)
-    { return fs::path(reportDirPath(o.outDir).string() + fmt::format(".rank-{}.cases.jsonl", r)); };
+    return cfg;
+}
+
+// Shard rank/size of the campaign, its per-case lines into rankLinesPath: the shard's state.
+std::string runRankShard(const RunOptions& o, const CampaignConfig& cfg, int rank, int size)
+{
+    const fs::path lines = rankLinesPath(o.outDir, rank);
     std::ofstream perCase;
     if (cfg.perCase)
     {
-        perCase.open(rankLines(rank), std::ios::binary);
+        perCase.open(lines, std::ios::binary);
         if (!perCase)
             throw OutputError(fmt::format("{}: cannot create the file: {}",
-                                          excerpt(rankLines(rank).string()), std::strerror(errno)));
+                                          excerpt(lines.string()), std::strerror(errno)));
     }
-    const std::string state = runShard(cfg, campaignInputs(cfg),
-                                       Shard{std::size_t(rank), std::size_t(size)},
-                                       cfg.perCase ? &perCase : nullptr)
-                                  .dump();
+    std::string state = runShard(cfg, campaignInputs(cfg),
+                                 Shard{std::size_t(rank), std::size_t(size)},
+                                 cfg.perCase ? &perCase : nullptr)
+                            .dump();
     if (cfg.perCase)
     {
         perCase.close();
         if (!perCase)
-            throw OutputError(fmt::format("{}: write failed: {}",
-                                          excerpt(rankLines(rank).string()), std::strerror(errno)));
+            throw OutputError(fmt::format("{}: write failed: {}", excerpt(lines.string()),
+                                          std::strerror(errno)));
     }
+    return state;
+}
 
+// Every rank's state gathered on rank 0, in rank order (empty on the other ranks).
+std::vector<std::string> gatherStates(const std::string& state, int rank, int size)
+{
     const int length = int(state.size());
     std::vector<int> lengths(static_cast<std::size_t>(size)), offsets(lengths.size());
     MPI_Gather(&length, 1, MPI_INT, lengths.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
@@ -207,34 +213,63 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
     }
     MPI_Gatherv(state.data(), length, MPI_CHAR, all.data(), lengths.data(), offsets.data(),
                 MPI_CHAR, 0, MPI_COMM_WORLD);
+    std::vector<std::string> states;
+    if (rank == 0)
+        for (std::size_t r = 0; r < lengths.size(); ++r)
+            states.push_back(all.substr(std::size_t(offsets[r]), std::size_t(lengths[r])));
+    return states;
+}
 
+// Rank 0: the ranks' states merged into the report, their per-case lines joined; the campaign's
+// exit code.
+int writeMergedReport(const RunOptions& o, const CampaignConfig& cfg,
+                      const std::vector<std::string>& states, double wallSeconds)
+{
+    std::vector<Json> shards;
+    std::vector<std::string> names;
+    for (std::size_t r = 0; r < states.size(); ++r)
+    {
+        shards.push_back(Json::parse(states[r]));
+        names.push_back(fmt::format("rank {}", r));
+    }
+    const Campaign camp = mergeShards(shards, names, cfg, wallSeconds);
+    StagedDir out(reportDirPath(o.outDir));
+    if (cfg.perCase)
+    {
+        std::vector<std::string> files;
+        for (std::size_t r = 0; r < states.size(); ++r)
+            files.push_back(rankLinesPath(o.outDir, int(r)).string());
+        writeJoinedPerCase(camp, cfg.chunkCases, files, out,
+                           " (is the directory on a file system every rank shares?)");
+        for (const auto& f : files)
+            fs::remove(f);
+    }
+    writeReportAndSummary(camp, out, o.verbose);
+    return camp.exitCode;
+}
+
+// Under mpirun: rank r of n runs shard r/n; rank 0 gathers the shard states, merges them and
+// writes the report (the one-process report, timing fields aside; each rank times the inputs
+// whose first chunk it holds, while the other ranks work). Every rank returns the campaign's
+// exit code: rank 0's error, if any, is broadcast as its exit code and rethrown there.
+int mpiCommand(const RunOptions& o, const CampaignConfig& config)
+{
+    if (!o.shard.empty())
+        throw InputError("--shard: not under mpirun, where every rank is a shard");
+    MPI_Init(nullptr, nullptr);
+    const double start = MPI_Wtime();
+    int rank = 0, size = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    const CampaignConfig cfg = rankConfig(config, rank);
+    const std::vector<std::string> states =
+        gatherStates(runRankShard(o, cfg, rank, size), rank, size);
     int code = kExitPass;
     std::exception_ptr error;
     if (rank == 0)
         try
         {
-            std::vector<Json> shards;
-            std::vector<std::string> names;
-            for (int r = 0; r < size; ++r)
-            {
-                shards.push_back(Json::parse(all.substr(std::size_t(offsets[std::size_t(r)]),
-                                                        std::size_t(lengths[std::size_t(r)]))));
-                names.push_back(fmt::format("rank {}", r));
-            }
-            const Campaign camp = mergeShards(shards, names, cfg, MPI_Wtime() - start);
-            StagedDir out(reportDirPath(o.outDir));
-            if (cfg.perCase)
-            {
-                std::vector<std::string> files;
-                for (int r = 0; r < size; ++r)
-                    files.push_back(rankLines(r).string());
-                writeJoinedPerCase(camp, cfg.chunkCases, files, out,
-                                   " (is the directory on a file system every rank shares?)");
-                for (const auto& f : files)
-                    fs::remove(f);
-            }
-            writeReportAndSummary(camp, out, o.verbose);
-            code = camp.exitCode;
+            code = writeMergedReport(o, cfg, states, MPI_Wtime() - start);
         }
         catch (const InputError&)
         {
@@ -259,7 +294,27 @@ int mpiCommand(const RunOptions& o, CampaignConfig cfg)
 }
 #endif
 
-int runCommand(RunOptions& o, const CommandLine& line)
+// The whole campaign in this process: its report into DIR.
+int wholeCampaignCommand(const RunOptions& o, const CampaignConfig& cfg)
+{
+    std::vector<CampaignInput> inputs = campaignInputs(cfg);
+    // Staged beside DIR and swapped in at the end: DIR holds this run or the previous one.
+    StagedDir out(reportDirPath(o.outDir));
+    setPluginLogDirectory(out.staging().string()); // what plugins print: DIR/plugin-*.log
+    std::ofstream perCase;
+    if (cfg.perCase)
+        perCase = openPerCase(out);
+    const Campaign camp = runCampaign(cfg, std::move(inputs), cfg.perCase ? &perCase : nullptr);
+    if (cfg.perCase)
+        closePerCase(perCase, out);
+    writeReportAndSummary(camp, out, o.verbose);
+    removeCheckpoint(cfg);
+    return camp.exitCode;
+}
+
+// The campaign the way it was launched: under mpirun (a shard per rank), as one shard
+// (--shard), or whole in this process.
+int runAsLaunched(RunOptions& o, const CommandLine& line)
 {
     const CampaignConfig cfg = checkedConfig(o, line);
     testFault();
@@ -276,50 +331,37 @@ int runCommand(RunOptions& o, const CommandLine& line)
     }
     if (!o.shard.empty())
         return shardCommand(o, cfg);
-    std::vector<CampaignInput> inputs = campaignInputs(cfg);
-    // Staged beside DIR and swapped in at the end: DIR holds this run or the previous one.
-    StagedDir out(reportDirPath(o.outDir));
-    setPluginLogDirectory(out.staging().string()); // what plugins print: DIR/plugin-*.log
-    std::ofstream perCase;
-    if (cfg.perCase)
-        perCase = openPerCase(out);
-    const Campaign camp = runCampaign(cfg, std::move(inputs), cfg.perCase ? &perCase : nullptr);
-    if (cfg.perCase)
-        closePerCase(perCase, out);
-    writeReportAndSummary(camp, out, o.verbose);
-    removeCheckpoint(cfg);
-    return camp.exitCode;
+    return wholeCampaignCommand(o, cfg);
 }
-} // namespace
 
-Subcommand addRun(CLI::App& app, const CommandLine& line)
+// --family, --cases, --default-cases, --seed, --variants: the campaign's cases and variants.
+void addInputOptions(CLI::App* run, RunOptions& o)
 {
-    auto o = std::make_shared<RunOptions>();
-    CampaignConfig& cfg = o->config;
-    auto* run = app.add_subcommand(
-        "run", "Run a campaign and write DIR/report.json, report.md, worst-cases.json "
-               "(and cases.jsonl, index.html). Without --family and --cases: the "
-               "default campaign, --family random:200000 --family hard --family engine plus every "
-               "validation/cases/*.json.");
-    run->footer(exitCodesHelp());
-    run->add_option("--family", o->families,
+    run->add_option("--family", o.families,
                     "case family with optional count: random[:N] (default N 200000), hard[:N] (all "
                     "sub-families, N each, default their built-in counts), hard/<sub>[:N], "
                     "engine[:N] (all engine families, N each, default 2000), "
                     "engine/<scene>-<kind>[:N]; N in 1..1e8 (engine families are held in memory: "
                     "within it); repeatable (see `list`)")
         ->allow_extra_args(false);
-    run->add_option("--cases", o->files, "a gjk-cases/1 file; repeatable")->allow_extra_args(false);
-    run->add_flag("--default-cases", o->defaultCases,
+    run->add_option("--cases", o.files, "a gjk-cases/1 file; repeatable")->allow_extra_args(false);
+    run->add_flag("--default-cases", o.defaultCases,
                   "also run the default campaign's case files (validation/cases/*.json, installed "
                   "in <prefix>/share/gjk2d/cases: found beside the program)");
-    run->add_option("--seed", o->seed, "campaign seed, 0..2^64-1 (each family derives its own)")
+    run->add_option("--seed", o.seed, "campaign seed, 0..2^64-1 (each family derives its own)")
         ->capture_default_str();
-    run->add_option("--variants", o->variants, "comma-separated variant names, or all (see `list`)")
+    run->add_option("--variants", o.variants, "comma-separated variant names, or all (see `list`)")
         ->capture_default_str();
+}
+
+// --threads, --out, --per-case, --worst, --exact-route, --passes, --chunk, --no-timing: how the
+// campaign runs and what it writes.
+void addEvaluationOptions(CLI::App* run, RunOptions& o)
+{
+    CampaignConfig& cfg = o.config;
     run->add_option("--threads", cfg.threads, "worker threads, 0..256 (0: all cores)")
         ->capture_default_str();
-    run->add_option("--out", o->outDir,
+    run->add_option("--out", o.outDir,
                     "output directory, replaced as a whole (it may hold only a previous report)")
         ->capture_default_str();
     run->add_flag("--per-case", cfg.perCase,
@@ -327,17 +369,23 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
     run->add_option("--worst", cfg.worstPerFamily,
                     "worst cases kept per family in worst-cases.json, 0..1000")
         ->capture_default_str();
-    run->add_option("--exact-route", o->route,
+    run->add_option("--exact-route", o.route,
                     "exact construction: edge-merge, hull-of-differences, minkowski-sum-2")
         ->capture_default_str();
     run->add_option("--passes", cfg.maxPasses,
                     "maximum timed passes per family and variant, 1..1000 (at least 5 are run "
                     "unless fewer are asked)")
         ->capture_default_str();
-    run->add_option("--chunk", o->chunkCases,
+    run->add_option("--chunk", o.chunkCases,
                     "cases evaluated together, 1..1e6: memory follows it, the report does not")
         ->capture_default_str();
-    run->add_flag("--no-timing", o->noTiming, "skip the timed passes (ns_per_query is null)");
+    run->add_flag("--no-timing", o.noTiming, "skip the timed passes (ns_per_query is null)");
+}
+
+// --checkpoint, --checkpoint-seconds, --resume, --shard: a campaign in parts.
+void addPartOptions(CLI::App* run, RunOptions& o)
+{
+    CampaignConfig& cfg = o.config;
     run->add_option("--checkpoint", cfg.checkpointDir,
                     "write the campaign's state to DIR/checkpoint.json as it goes (removed once "
                     "the report is written)")
@@ -348,17 +396,32 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
     run->add_flag("--resume", cfg.resume,
                   "start from --checkpoint DIR's state (the same command line otherwise); the "
                   "report is the uninterrupted run's, timing aside");
-    run->add_option("--shard", o->shard,
+    run->add_option("--shard", o.shard,
                     "I/N: evaluate only shard I of N (chunks round robin) and write DIR/shard.json; "
                     "`gjk-validate merge` makes the report of all N")
         ->type_name("I/N");
+}
+} // namespace
+
+Subcommand addRun(CLI::App& app, const CommandLine& line)
+{
+    auto o = std::make_shared<RunOptions>();
+    auto* run = app.add_subcommand(
+        "run", "Run a campaign and write DIR/report.json, report.md, worst-cases.json "
+               "(and cases.jsonl, index.html). Without --family and --cases: the "
+               "default campaign, --family random:200000 --family hard --family engine plus every "
+               "validation/cases/*.json.");
+    run->footer(exitCodesHelp());
+    addInputOptions(run, *o);
+    addEvaluationOptions(run, *o);
+    addPartOptions(run, *o);
     run->add_flag("--verbose", o->verbose,
                   "also print every family x variant to the terminal (the summary lists only "
                   "those that failed or misclassified; report.md has the full table)");
-    addPluginOptions(*run, o->plugins, true);
+    addPluginOptions(*run, o->plugins, ShippedPlugins::JoinDefaultList);
     run->add_flag("--no-progress", o->noProgress,
                   "no progress bar (it is shown only when stderr is a terminal)");
-    return {run, [o, line] { return runCommand(*o, line); }};
+    return {run, [o, line] { return runAsLaunched(*o, line); }};
 }
 
 } // namespace gjkval

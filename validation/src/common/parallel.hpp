@@ -1,5 +1,5 @@
 // Work on several threads whose outcome does not depend on their number: parallelFor stores each
-// index's result by index, and the callers reduce in index order. Shared by `run` (campaign.cpp)
+// index's result by index, and the callers reduce in index order. Shared by `run` (campaign/fold.cpp)
 // and `search` (search.cpp).
 #pragma once
 
@@ -33,6 +33,8 @@ class Progress
         if (enabled_)
             thread_ = std::thread([this] { loop(); });
     }
+    // A progress that draws nothing: for the phases whose progress is not shown.
+    static Progress silent() { return Progress(false, "", 0); }
     ~Progress()
     {
         if (!enabled_)

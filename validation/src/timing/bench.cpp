@@ -21,90 +21,110 @@ std::string g(const Json& v, const char* spec)
 }
 } // namespace
 
-BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& inputs)
+namespace
 {
-    const auto tStart = Clock::now();
+// The valid cases, prepared, and what the report says of the inputs and the rejected cases.
+struct BenchCases
+{
     std::vector<PreparedCase> prepared;
     std::size_t total = 0, rejected = 0;
-    Json inputsJson = Json::array();
-    Json rejectedJson = Json::array();
+    Json inputs = Json::array(), rejectedList = Json::array();
+};
+
+BenchCases prepareCases(const std::vector<FamilyData>& inputs)
+{
+    BenchCases b;
     for (const auto& f : inputs)
     {
-        inputsJson.push_back(f.input);
+        b.inputs.push_back(f.input);
         for (std::size_t i = 0; i < f.cases.size(); ++i)
         {
-            ++total;
+            ++b.total;
             if (!f.rejected[i].empty())
             {
-                ++rejected;
-                rejectedJson.push_back(
+                ++b.rejected;
+                b.rejectedList.push_back(
                     {{"name", f.labels[i]}, {"family", f.name}, {"reason", f.rejected[i]}});
                 continue;
             }
-            prepared.push_back(prepare(f.cases[i]));
+            b.prepared.push_back(prepare(f.cases[i]));
         }
     }
-    const auto tPrepared = Clock::now();
+    return b;
+}
 
-    TimingConfig tc;
-    tc.minPasses = tc.maxPasses = std::max(1, config.passes);
-    tc.budgetSeconds = std::numeric_limits<double>::infinity();
-    tc.minPassSeconds = config.minPassSeconds;
-    tc.warm = config.warm;
+// The cases a variant is timed on, and how many it skips (of which not applicable).
+struct VariantCases
+{
+    std::vector<const PreparedCase*> cases;
+    std::size_t skipped = 0, notApplicable = 0;
+};
 
-    // gjk2d's variants are timed with their passes alternated (medianOfAlternatedPasses: all
-    // their inputs are held at once); plugin variants, timed in a child process each, on their
-    // own.
-    std::vector<TimingResult> results(config.variants.size());
-    std::vector<std::size_t> skipped, notApplicable;
+VariantCases casesOf(const VariantInfo& v, const std::vector<PreparedCase>& prepared)
+{
+    VariantCases c;
+    for (const auto& p : prepared)
+    {
+        if (const char* why = skipReason(v, p, p.floatOk))
+        {
+            ++c.skipped;
+            c.notApplicable += why == kSkipNotConvexOrder ? 1 : 0;
+            continue;
+        }
+        if (v.plugin && refusedByDescription(v, p)) // counted as skipped, not applicable
+        {
+            ++c.skipped;
+            ++c.notApplicable;
+            continue;
+        }
+        c.cases.push_back(&p);
+    }
+    return c;
+}
+
+// Every variant timed. gjk2d's variants are timed with their passes alternated
+// (medianOfAlternatedPasses: all their inputs are held at once); plugin variants, timed in a child
+// process each, on their own.
+struct VariantTimings
+{
+    std::vector<TimingResult> results;
+    std::vector<VariantCases> cases; // only the counts are used once timed
+};
+
+VariantTimings timeEveryVariant(const BenchConfig& config, const std::vector<PreparedCase>& prepared,
+                                const TimingConfig& tc)
+{
+    VariantTimings t;
+    t.results.resize(config.variants.size());
     std::vector<TimedLoop> loops;
     std::vector<std::size_t> loopOf; // the variant of each loop
     for (std::size_t k = 0; k < config.variants.size(); ++k)
     {
         const VariantInfo* v = config.variants[k];
-        std::vector<const PreparedCase*> cases;
-        std::size_t sk = 0, na = 0;
-        for (const auto& p : prepared)
-        {
-            if (const char* why = skipReason(*v, p, p.floatOk))
-            {
-                ++sk;
-                na += why == kSkipNotConvexOrder ? 1 : 0;
-                continue;
-            }
-            if (v->plugin && refusedByDescription(*v, p)) // counted as skipped, not applicable
-            {
-                ++sk;
-                ++na;
-                continue;
-            }
-            cases.push_back(&p);
-        }
+        t.cases.push_back(casesOf(*v, prepared));
         if (v->plugin)
-            results[k] = timeQueries(cases, *v, tc, config.pluginTimeoutSeconds);
+            t.results[k] = timeQueries(t.cases[k].cases, *v, tc, config.pluginTimeoutSeconds);
         else
         {
-            loops.push_back(timedLoop(cases, *v, tc));
+            loops.push_back(timedLoop(t.cases[k].cases, *v, tc));
             loopOf.push_back(k);
         }
-        skipped.push_back(sk);
-        notApplicable.push_back(na);
     }
     const std::vector<TimingResult> alternated = medianOfAlternatedPasses(loops, tc);
     for (std::size_t l = 0; l < loops.size(); ++l)
-        results[loopOf[l]] = alternated[l];
-    const auto tTimed = Clock::now();
+        t.results[loopOf[l]] = alternated[l];
+    return t;
+}
 
-    const TimingResult* base = nullptr;
-    for (std::size_t k = 0; k < config.variants.size(); ++k)
-        if (config.variants[k]->name == kBaselineVariant && results[k].nsPerQuery > 0)
-            base = &results[k];
-
+// The bench report's "variants": each one's timing, its ratio to `base` when there is one.
+Json variantsJson(const BenchConfig& config, const VariantTimings& timings,
+                  const TimingResult* base)
+{
     Json vars = Json::object();
     for (std::size_t k = 0; k < config.variants.size(); ++k)
     {
         const VariantInfo& v = *config.variants[k];
-        const TimingResult& t = results[k];
+        const TimingResult& t = timings.results[k];
         auto ns = [](double x) { return x > 0 ? Json(x) : Json(nullptr); };
         Json j;
         j["type"] = scalarName(v.scalar);
@@ -112,8 +132,8 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
         j["batch"] = v.batch;
         j["options"] = optionsJson(v.options);
         j["cases"] = t.cases;
-        j["skipped"] = skipped[k];
-        j["not_applicable"] = notApplicable[k];
+        j["skipped"] = timings.cases[k].skipped;
+        j["not_applicable"] = timings.cases[k].notApplicable;
         j["ns_per_query"] = ns(t.nsPerQuery);
         j["ns_min"] = ns(t.nsMin);
         j["ns_max"] = ns(t.nsMax);
@@ -123,11 +143,14 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
             base && t.nsPerQuery > 0 ? Json(t.nsPerQuery / base->nsPerQuery) : Json(nullptr);
         vars[v.name] = std::move(j);
     }
+    return vars;
+}
 
-    BenchResult out;
-    out.exitCode = rejected > 0 ? kExitInput : kExitPass;
+// The bench report's "context", but for elapsed_s.
+Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases& cases)
+{
     Json context = contextJson(isoDateUtc(), gitRevision(), config.command, config.seed, 1,
-                               std::move(inputsJson), total, rejected);
+                               std::move(cases.inputs), cases.total, cases.rejected);
     context["timing"] = {
         {"passes", tc.maxPasses},
         {"min_pass_s", tc.minPassSeconds},
@@ -140,6 +163,32 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
                  "Warm: each query starts from the SimplexCache of a previous query of the same "
                  "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
                  "on all its cases at once (context.batch_isa: the instruction set of its lanes)."}};
+    return context;
+}
+} // namespace
+
+BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& inputs)
+{
+    const auto tStart = Clock::now();
+    BenchCases cases = prepareCases(inputs);
+    const auto tPrepared = Clock::now();
+
+    TimingConfig tc;
+    tc.minPasses = tc.maxPasses = std::max(1, config.passes);
+    tc.budgetSeconds = std::numeric_limits<double>::infinity();
+    tc.minPassSeconds = config.minPassSeconds;
+    tc.warm = config.warm;
+    const VariantTimings timings = timeEveryVariant(config, cases.prepared, tc);
+    const auto tTimed = Clock::now();
+
+    const TimingResult* base = nullptr;
+    for (std::size_t k = 0; k < config.variants.size(); ++k)
+        if (config.variants[k]->name == kBaselineVariant && timings.results[k].nsPerQuery > 0)
+            base = &timings.results[k];
+
+    BenchResult out;
+    out.exitCode = cases.rejected > 0 ? kExitInput : kExitPass;
+    Json context = benchContext(config, tc, cases);
     context["elapsed_s"] = {{"prepare", seconds(tStart, tPrepared)},
                             {"timing", seconds(tPrepared, tTimed)},
                             {"total", seconds(tStart, Clock::now())}};
@@ -147,8 +196,8 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     j["schema"] = "gjk-bench/1";
     j["context"] = std::move(context);
     j["baseline_variant"] = base ? Json(kBaselineVariant) : Json(nullptr);
-    j["variants"] = std::move(vars);
-    j["rejected"] = std::move(rejectedJson);
+    j["variants"] = variantsJson(config, timings, base);
+    j["rejected"] = std::move(cases.rejectedList);
     j["exit_code"] = out.exitCode;
     return out;
 }

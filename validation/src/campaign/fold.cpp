@@ -1,0 +1,288 @@
+// The fold: a campaign's inputs streamed chunk by chunk through truth, variants and witnesses
+// (on the threads), then folded in case order into statistics, make-up, worst cases and per-case
+// lines; then the timed passes.
+#include "campaign/state.hpp"
+
+#include "common/output.hpp"
+#include "common/parallel.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <ostream>
+
+namespace gjkval
+{
+namespace
+{
+namespace fs = std::filesystem;
+} // namespace
+
+std::vector<std::string> defaultFamilies()
+{
+    return {"random:" + std::to_string(kDefaultRandomCount), "hard", "engine"};
+}
+
+std::vector<std::string> defaultCaseFiles()
+{
+    std::error_code ec;
+    const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+    const fs::path build = exeDir / "cases", installed = exeDir / ".." / GJK2D_INSTALL_CASE_DIR;
+    const fs::path dir = fs::is_directory(build, ec) ? build : installed;
+    if (!fs::is_directory(dir, ec))
+        throw InputError(fmt::format(
+            "the default campaign's case files are in neither {} nor {}: give --family or --cases",
+            excerpt(build.string()), excerpt(installed.lexically_normal().string())));
+    std::vector<std::string> files;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file() && e.path().extension() == ".json")
+            files.push_back(e.path().lexically_normal().string());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::vector<CampaignInput> campaignInputs(const CampaignConfig& config)
+{
+    return campaignInputs(config.families, config.caseFiles, config.seed);
+}
+
+EvalContext evalContext(const CampaignConfig& config)
+{
+    EvalContext ctx;
+    ctx.variants = config.variants;
+    ctx.exactOptions.route = config.route;
+    ctx.pluginTimeoutSeconds = config.pluginTimeoutSeconds;
+    return ctx;
+}
+
+FamilyResult emptyResult(const CampaignInput& input, const CampaignConfig& config,
+                         const EvalContext& ctx)
+{
+    return {&input, std::vector<Stats>(ctx.variants.size()), MakeupFold(input.makeup),
+            WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))), {}};
+}
+
+namespace
+{
+// --- Truth, variants, witnesses: one chunk on the campaign's threads ---------------------------
+
+struct EvaluatedChunk
+{
+    std::vector<CaseOutcome> outcomes;
+    std::vector<PreparedCase> prepared;
+};
+
+EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int threads,
+                             Progress& progress, PhaseSeconds& seconds)
+{
+    EvaluatedChunk e;
+    e.outcomes.resize(chunk.size());
+    e.prepared.resize(chunk.size());
+    for (std::size_t i = 0; i < chunk.size(); ++i)
+        e.outcomes[i].rejected = chunk.rejected[i];
+    Progress none = Progress::silent();
+    auto t0 = Clock::now();
+    parallelFor(chunk.size(), threads, none,
+                [&](std::size_t i)
+                {
+                    if (e.outcomes[i].rejected.empty())
+                    {
+                        computeTruth(chunk.cases[i], ctx, e.outcomes[i]);
+                        if (e.outcomes[i].rejected.empty())
+                            e.prepared[i] = prepare(chunk.cases[i]);
+                    }
+                });
+    auto t1 = Clock::now();
+    // Plugin variants, in child processes, between the parallel phases (no worker thread runs).
+    answerPluginVariants(chunk.cases.data(), e.prepared.data(), e.outcomes.data(), chunk.size(), ctx);
+    parallelFor(chunk.size(), threads, progress,
+                [&](std::size_t i)
+                {
+                    CaseOutcome& o = e.outcomes[i];
+                    if (!o.rejected.empty())
+                    {
+                        o.variants.assign(ctx.variants.size(), {});
+                        return;
+                    }
+                    runVariants(chunk.cases[i], e.prepared[i], ctx, o);
+                });
+    auto t2 = Clock::now();
+    parallelFor(chunk.size(), threads, none,
+                [&](std::size_t i) { checkWitnesses(chunk.cases[i], ctx, e.outcomes[i]); });
+    auto t3 = Clock::now();
+    seconds.exact += elapsed(t0, t1);
+    seconds.gjk += elapsed(t1, t2);
+    seconds.witness += elapsed(t2, t3);
+    return e;
+}
+
+// --- Statistics, make-up, worst cases, per-case lines: folded in case order --------------------
+
+void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, EvaluatedChunk& e,
+               const CampaignConfig& config, const EvalContext& ctx,
+               std::vector<RejectedCase>& rejected, std::ostream* perCase)
+{
+    const std::size_t nv = ctx.variants.size();
+    for (std::size_t i = 0; i < chunk.size(); ++i)
+    {
+        const Case& c = chunk.cases[i];
+        const CaseOutcome& o = e.outcomes[i];
+        ++r.cases;
+        if (perCase)
+            *perCase << perCaseJson(c, r.input->name, ctx, o).dump() << '\n';
+        if (!o.rejected.empty())
+        {
+            ++r.rejected;
+            if (rejected.size() < kMaxRejectedListed)
+                rejected.push_back({input, chunk.first + i,
+                                    {{"name", chunk.labels[i]},
+                                     {"family", r.input->name},
+                                     {"reason", o.rejected}}});
+            continue;
+        }
+        for (std::size_t k = 0; k < nv; ++k)
+            r.stats[k].add(o.variants[k], c.name, chunk.first + i, *ctx.variants[k], o);
+        r.makeup.add(c, o.exact);
+        r.worst.offer(chunk.first + i, c, o);
+        if (config.timing && r.timing.cases.size() < kTimingSampleCases)
+        {
+            std::vector<bool> runs(nv);
+            for (std::size_t k = 0; k < nv; ++k)
+                runs[k] = !o.variants[k].skipped &&
+                          (o.variants[k].plugin == PluginStatus::NotRun ||
+                           o.variants[k].plugin == PluginStatus::Ok); // a plugin's crash: untimed
+            r.timing.cases.push_back(std::move(e.prepared[i]));
+            r.timing.runs.push_back(std::move(runs));
+        }
+    }
+}
+
+// One input (state.families[inputIndex]), streamed: its cases are generated or read chunk by
+// chunk, and the plan's chunks are evaluated and folded.
+void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPlan& plan,
+              const EvalContext& ctx, int threads, Progress& progress, CampaignState& state,
+              std::ostream* perCase)
+{
+    FamilyResult& r = state.families[inputIndex];
+    const std::size_t chunkCases = std::max<std::size_t>(1, config.chunkCases);
+    const auto skip = [&](std::size_t chunk)
+    {
+        const ChunkPosition at{inputIndex, chunk};
+        return !plan.shard.owns(at.input, at.chunk) || at < plan.resumeAt;
+    };
+    auto t = Clock::now();
+    std::size_t seen = 0; // cases up to the end of the last chunk passed on (for the progress)
+    r.input->stream(chunkCases,
+                    [&](CaseChunk& chunk)
+                    {
+                        state.seconds.inputs += elapsed(t, Clock::now());
+                        const std::size_t j = chunk.first / chunkCases;
+                        progress.add(chunk.first - seen); // the chunks left out before it
+                        seen = chunk.first + chunk.size();
+                        if (skip(j)) // a case file passes every chunk
+                            progress.add(chunk.size());
+                        else
+                        {
+                            EvaluatedChunk e =
+                                evaluateChunk(chunk, ctx, threads, progress, state.seconds);
+                            foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected,
+                                      perCase);
+                            if (plan.afterChunk)
+                                plan.afterChunk({inputIndex, j + 1});
+                        }
+                        t = Clock::now();
+                    },
+                    skip);
+    progress.add(r.input->count - std::min(seen, r.input->count));
+    state.seconds.inputs += elapsed(t, Clock::now());
+    if (perCase && !*perCase)
+        throw OutputError("cases.jsonl: write failed: " + std::string(std::strerror(errno)));
+}
+
+// --- Timing: single-threaded, apart from everything else ---------------------------------------
+
+void timeVariants(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx)
+{
+    TimingConfig tc;
+    tc.minPasses = config.minPasses;
+    tc.maxPasses = config.maxPasses;
+    tc.budgetSeconds = config.timingBudgetSeconds;
+    const std::size_t nv = ctx.variants.size();
+    Progress p(config.progress, "timing", state.families.size() * nv);
+    for (auto& f : state.families)
+        for (std::size_t k = 0; k < nv; ++k)
+        {
+            std::vector<const PreparedCase*> cases;
+            for (std::size_t i = 0; i < f.timing.cases.size(); ++i)
+                if (f.timing.runs[i][k])
+                    cases.push_back(&f.timing.cases[i]);
+            const VariantInfo& v = *ctx.variants[k];
+            const TimingResult t = timeQueries(cases, v, tc, ctx.pluginTimeoutSeconds);
+            Stats& s = f.stats[k];
+            s.nsPerQuery = t.nsPerQuery;
+            s.nsMin = t.nsMin;
+            s.nsMax = t.nsMax;
+            s.timingPasses = t.passes;
+            p.add(1);
+        }
+    for (auto& f : state.families) // the samples are no longer needed
+        f.timing = {};
+}
+} // namespace
+
+CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                           Shard shard, const EvalContext& ctx, int threads, std::ostream* perCase)
+{
+    CampaignState state;
+    state.inputs = std::move(inputs); // not resized below: families point into it
+    std::size_t total = 0;
+    for (const auto& in : state.inputs)
+    {
+        total += in.count;
+        state.families.push_back(emptyResult(in, config, ctx));
+    }
+    FoldPlan plan{shard, {}, {}};
+    if (config.resume)
+        plan.resumeAt = resumeFrom(state, config, shard, ctx);
+    if (!config.checkpointDir.empty())
+        plan.afterChunk = checkpointAfterChunk(state, config, shard, threads);
+    {
+        Progress progress(config.progress, "cases", total);
+        for (std::size_t i = 0; i < state.inputs.size(); ++i)
+            runInput(i, config, plan, ctx, threads, progress, state, perCase);
+    }
+    // A shard times only the inputs whose first chunk it holds: the merge takes those.
+    for (std::size_t i = 0; i < state.families.size(); ++i)
+        if (!shard.owns(i, 0))
+            state.families[i].timing = {};
+    const auto tTiming = Clock::now();
+    if (config.timing)
+        timeVariants(state, config, ctx);
+    state.seconds.timing = elapsed(tTiming, Clock::now());
+    return state;
+}
+
+Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
+                     std::ostream* perCase)
+{
+    const auto tStart = Clock::now();
+    const int threads = resolveThreads(config.threads);
+    const EvalContext ctx = evalContext(config);
+    CampaignState state = foldCampaign(config, std::move(inputs), Shard{}, ctx, threads, perCase);
+    return finishCampaign(state, config, ctx, threads, elapsed(tStart, Clock::now()));
+}
+
+Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,
+              std::ostream* perCase)
+{
+    const int threads = resolveThreads(config.threads);
+    const EvalContext ctx = evalContext(config);
+    const CampaignState state =
+        foldCampaign(config, std::move(inputs), shard, ctx, threads, perCase);
+    return shardState(state, config, shard, threads);
+}
+
+} // namespace gjkval
