@@ -178,9 +178,9 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
     return edgeBase;
 }
 
-// The loop's final state besides the simplex, from which finishQuery makes the output and the
-// cache. Shared by the query below and the SIMD batch (gjk/batch.hpp), whose lanes run the loop
-// and end here. (The simplex is passed by reference: copied into this struct, it cost the scalar
+// The loop's state besides the simplex (startLoop sets it up, runLoop updates it), from which
+// finishQuery makes the output and the cache. Shared by the query below and the SIMD batch
+// (gjk/batch.hpp), whose lanes run the loop and end here. (The simplex is passed by reference: copied into this struct, it cost the scalar
 // query 6-20 %, docs/speed.md, "Batches in SIMD lanes".)
 template <class T> struct QueryEnd
 {
