@@ -16,7 +16,7 @@
 //    beyond the largest T: docs/gjk.md, "Rescaling");
 //  - the witness points and the normal are finite, or out.outOfRange is set;
 //  - 1 <= out.simplexCount <= 3 and 0 <= out.iterations <= the iteration limit
-//    (Options::maxIterations, or 32 + 2 (countA + countB) when it is 0);
+//    (gjk::iterationLimit: Options::maxIterations, or defaultMaxIterations when it is 0);
 //  - when out.certified: lower <= upper and the exact distance (exact::distance, the exact side)
 //    lies in [lower, upper];
 //  - the warm/cold promise of docs/gjk.md ("Warm start"): warmRepeatsCold.
@@ -282,9 +282,7 @@ void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const cha
         finding(out, which, "a witness point or the normal is not finite and outOfRange is not set");
     if (out.simplexCount < 1 || out.simplexCount > 3)
         finding(out, which, "simplexCount outside 1..3");
-    const int limit = q.options.maxIterations > 0
-                          ? q.options.maxIterations
-                          : 32 + 2 * (q.input.proxyA.count + q.input.proxyB.count);
+    const int limit = gjk::iterationLimit(q.options, q.input.proxyA.count, q.input.proxyB.count);
     if (out.iterations < 0 || out.iterations > limit)
         finding(out, which, "iterations outside 0..the iteration limit");
     if (out.certified && !q.options.certify)

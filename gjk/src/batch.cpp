@@ -92,21 +92,19 @@ constexpr int kMaxLanePoints = 64;
 
 // Whether the lanes run this pair with these options (docs/gjk.md, "Batches in SIMD lanes"):
 // the default search direction and stopping rule, A's local frame, the linear scan (a binary
-// search on shapes of at most 16 points is the linear scan too). Inputs that break a contract
-// (asserted by distance()) run the scalar query, which asserts.
+// search on small shapes is the linear scan too: usesBinarySearch). Inputs that break the input
+// contract (meetsInputContract, asserted by distance()) run the scalar query, which asserts.
 template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& options)
 {
     if (options.direction != SearchDirection::EdgePerpendicular || options.stopping != StoppingRule::RepeatedSupport ||
         options.frame != Frame::LocalA)
         return false;
+    if (!meetsInputContract(in))
+        return false;
     const int nA = in.proxyA.count, nB = in.proxyB.count;
-    if (nA < 1 || nB < 1 || nA > kMaxLanePoints || nB > kMaxLanePoints)
+    if (nA > kMaxLanePoints || nB > kMaxLanePoints)
         return false;
-    if (options.support == SupportStrategy::BinarySearch && (nA > 16 || nB > 16))
-        return false;
-    return in.proxyA.radius >= T(0) && in.proxyB.radius >= T(0) &&
-           !(in.transformA.q.c == T(0) && in.transformA.q.s == T(0)) &&
-           !(in.transformB.q.c == T(0) && in.transformB.q.s == T(0));
+    return !usesBinarySearch(options.support, nA) && !usesBinarySearch(options.support, nB);
 }
 
 constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
@@ -254,20 +252,17 @@ template <class T, int W, class State> class LaneBatch
     // The next pair into lane l, started as distance() starts it (A's frame, startSimplex).
     void start(int l)
     {
-        State& s = *s_;
         if (next_ == order_.size())
         {
             pair_[l] = kNone;
-            s.stop[l] = kIdle;
+            s_->stop[l] = kIdle;
             return;
         }
         const std::size_t i = order_[next_++];
         pair_[l] = i;
         const DistanceInput<T>& in = inputs_[i];
-        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
-        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
-        A.identity = true;
-        B.xf = invMulTransforms(in.transformA, in.transformB);
+        TransformedShape<T> A{.poly = in.proxyA, .identity = true};
+        TransformedShape<T> B{.poly = in.proxyB, .xf = invMulTransforms(in.transformA, in.transformB)};
         // Warm: the cache's simplex, made here (no search). Cold: a simplex of count 0, whose
         // first step in the lanes is startSimplex's support point between the shapes.
         Simplex<T> simplex;
@@ -278,6 +273,14 @@ template <class T, int W, class State> class LaneBatch
             simplex.count = 0;
         searchA_[l] = A.last;
         searchB_[l] = B.last;
+        loadSimplex(l, simplex, edgeBase);
+        loadPair(l, in, B.xf);
+    }
+
+    // Lane l's start simplex, and the largest coordinate among its points (the range check).
+    void loadSimplex(int l, const Simplex<T>& simplex, int edgeBase)
+    {
+        State& s = *s_;
         T maxAbs = T(0);
         for (int k = 0; k < simplex.count; ++k)
             maxAbs = std::max({maxAbs, std::abs(simplex.v[k].w.x), std::abs(simplex.v[k].w.y)});
@@ -292,14 +295,20 @@ template <class T, int W, class State> class LaneBatch
         }
         s.count[l] = simplex.count;
         s.edgeBase[l] = edgeBase;
-        s.iteration[l] = 0;
-        s.maxIterations[l] =
-            options_.maxIterations > 0 ? options_.maxIterations : 32 + 2 * (in.proxyA.count + in.proxyB.count);
         s.maxAbs[l] = maxAbs;
-        s.bpx[l] = B.xf.p.x;
-        s.bpy[l] = B.xf.p.y;
-        s.bqc[l] = B.xf.q.c;
-        s.bqs[l] = B.xf.q.s;
+    }
+
+    // Lane l's pair: its shapes' points, sizes and radii, B in A's frame (xfB), A's transform to
+    // world, and the loop's counters at their start.
+    void loadPair(int l, const DistanceInput<T>& in, const Transform<T>& xfB)
+    {
+        State& s = *s_;
+        s.iteration[l] = 0;
+        s.maxIterations[l] = iterationLimit(options_, in.proxyA.count, in.proxyB.count);
+        s.bpx[l] = xfB.p.x;
+        s.bpy[l] = xfB.p.y;
+        s.bqc[l] = xfB.q.c;
+        s.bqs[l] = xfB.q.s;
         s.xpx[l] = in.transformA.p.x;
         s.xpy[l] = in.transformA.p.y;
         s.xqc[l] = in.transformA.q.c;
@@ -320,61 +329,62 @@ template <class T, int W, class State> class LaneBatch
     // Lane l's query has stopped: its output and cache, as distance() ends it (finishQuery).
     void finish(int l)
     {
-        State& s = *s_;
         const std::size_t i = pair_[l];
-        const DistanceInput<T>& in = inputs_[i];
-        if (s.stop[l] == kHandBack)
+        if (s_->stop[l] == kHandBack)
         {
-            outputs_[i] = distance(in, caches_[i], options_);
+            outputs_[i] = distance(inputs_[i], caches_[i], options_);
             ++stats_.handedBack;
             return;
         }
         ++stats_.laneQueries;
-        const StopReason stop = StopReason(s.stop[l]);
+        if (s_->laneEnd && !s_->scalarEnd[l])
+            copyLaneEnd(l, i);
+        else
+            finishOnScalarSide(l, i);
+    }
+
+    // The lanes made the end: copy it out, and the cache as finishQuery writes it.
+    void copyLaneEnd(int l, std::size_t i)
+    {
+        const State& s = *s_;
         const int count = int(s.count[l]);
-        if (s.laneEnd && !s.scalarEnd[l])
-        {
-            // The lanes made the end: copy it out, and the cache as finishQuery writes it.
-            DistanceOutput<T> out;
-            out.pointA = {s.outAx[l], s.outAy[l]};
-            out.pointB = {s.outBx[l], s.outBy[l]};
-            out.normal = {s.outNx[l], s.outNy[l]};
-            out.distance = s.outDistance[l];
-            out.iterations = int(s.iteration[l]);
-            out.simplexCount = count;
-            out.stop = stop;
-            outputs_[i] = out;
-            SimplexCache& cache = caches_[i];
-            cache.count = count;
-            for (int k = 0; k < count; ++k)
-            {
-                cache.indexA[k] = int(s.ia[k][l]);
-                cache.indexB[k] = int(s.ib[k][l]);
-            }
-            const bool flip = s.flipEdge[l] != 0;
-            cache.edgeBase = count == 2 ? int(s.edgeBase[l]) ^ int(flip) : 0;
-            if (flip)
-            {
-                std::swap(cache.indexA[0], cache.indexA[1]);
-                std::swap(cache.indexB[0], cache.indexB[1]);
-            }
-            cache.searchA = searchA_[l];
-            cache.searchB = searchB_[l];
-            return;
-        }
-        // finishQuery on the lane's simplex.
-        QueryEnd<T> end;
-        Simplex<T> simplex;
-        simplex.count = count;
-        TransformedShape<T> A{in.proxyA, {}, false, false, 0, false};
-        TransformedShape<T> B{in.proxyB, {}, false, false, 0, false};
-        A.identity = true;
-        B.xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}};
+        DistanceOutput<T> out;
+        out.pointA = {s.outAx[l], s.outAy[l]};
+        out.pointB = {s.outBx[l], s.outBy[l]};
+        out.normal = {s.outNx[l], s.outNy[l]};
+        out.distance = s.outDistance[l];
+        out.iterations = int(s.iteration[l]);
+        out.simplexCount = count;
+        out.stop = StopReason(s.stop[l]);
+        outputs_[i] = out;
+        SimplexCache& cache = caches_[i];
+        cache.count = count;
         for (int k = 0; k < count; ++k)
+        {
+            cache.indexA[k] = int(s.ia[k][l]);
+            cache.indexB[k] = int(s.ib[k][l]);
+        }
+        storeEdgeInCanonicalOrder(cache, int(s.edgeBase[l]), s.flipEdge[l] != 0);
+        cache.searchA = searchA_[l];
+        cache.searchB = searchB_[l];
+    }
+
+    // finishQuery on the lane's simplex, remade from its indices and weights.
+    void finishOnScalarSide(int l, std::size_t i)
+    {
+        const State& s = *s_;
+        const DistanceInput<T>& in = inputs_[i];
+        const StopReason stop = StopReason(s.stop[l]);
+        Simplex<T> simplex;
+        simplex.count = int(s.count[l]);
+        TransformedShape<T> A{.poly = in.proxyA, .identity = true};
+        TransformedShape<T> B{.poly = in.proxyB, .xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}}};
+        for (int k = 0; k < simplex.count; ++k)
         {
             simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
             simplex.v[k].a = s.a[k][l];
         }
+        QueryEnd<T> end;
         end.edgeBase = int(s.edgeBase[l]);
         end.iteration = int(s.iteration[l]);
         end.maxAbs = s.maxAbs[l];
@@ -382,10 +392,9 @@ template <class T, int W, class State> class LaneBatch
         for (int k = 0; k < 3; ++k)
             end.saved[k] = s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
         const std::int64_t key = packIndices(int(s.lastA[l]), int(s.lastB[l]));
-        const Simplex<T>& sx = simplex;
         end.culledRepeat = stop == StopReason::RepeatedSupport &&
-                           key != packIndices(sx.v[0].indexA, sx.v[0].indexB) &&
-                           (sx.count == 1 || key != packIndices(sx.v[1].indexA, sx.v[1].indexB));
+                           key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
+                           (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
         end.searchA = searchA_[l];
         end.searchB = searchB_[l];
         end.supportOutOfRange = false; // an overflowing scan hands the lane back

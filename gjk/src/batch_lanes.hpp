@@ -202,8 +202,10 @@ inline constexpr int kHandBack = -2;
 // Runs the lanes whose stop is kRunning in lockstep until at least one of them stops; returns
 // whether any lane stopped (no lane running: returns false at once). LaneState::stopped then says
 // which, their stop values why (a StopReason or kHandBack), and for the lanes that stopped with
-// a StopReason, scalarEnd and the out* arrays give their end. Mirrors distanceImpl with Options'
-// default direction and stopping rule, A's local frame and the linear support scan.
+// a StopReason, scalarEnd and the out* arrays give their end. Mirrors distanceImpl (runLoop, then
+// finishQuery) with Options' default direction and stopping rule, A's local frame and the linear
+// support scan.
+// One long kernel on purpose: it reads beside distance.hpp's loop step by step, in one scope.
 template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
 {
     using L = Lanes<T, W>;

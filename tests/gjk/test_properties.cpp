@@ -459,7 +459,7 @@ TEST_CASE("certify: containment needs certified orientation signs, not rounded o
 TEMPLATE_TEST_CASE("support: ties keep the lowest index", "[gjk][support][properties]", float, double)
 {
     using T = TestType;
-    // distance.hpp, findSupport: a repeated support point is recognised by its index, so among tied
+    // support.hpp, findSupport: a repeated support point is recognised by its index, so among tied
     // vertices the scan must return the same one every time, the lowest index. The unit square
     // (0,0) (1,0) (1,1) (0,1) and a point twice: along +x vertices 1 and 2 tie (value 1), along +y
     // vertices 2 and 3, along (1, 1) only vertex 2, along -x vertices 0 and 3, along -y 0 and 1.

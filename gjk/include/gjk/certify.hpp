@@ -17,9 +17,12 @@
 // for float queries too: float inputs are exact doubles, and the interval is tighter than float.
 //
 // Cost: one scan of each shape (the lower bound needs every vertex) plus a few dozen operations.
+// certifyDistance, at the end, fills DistanceOutput's interval (gjk/distance.hpp calls it).
 #pragma once
 
+#include "gjk/detail/macros.hpp"
 #include "gjk/math.hpp"
+#include "gjk/types.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -88,7 +91,7 @@ struct BoundedVec
 
 // The origin strictly inside triangle W1 W2 W3: the three orientations cross(Wi, Wj) (i j cyclic)
 // nonzero and of one sign; certified when each bound excludes zero. Shared by the certified
-// interval (distance.hpp) and the correctly rounded query's containment (correct.hpp).
+// interval (certifyDistance, below) and the correctly rounded query's containment (correct.hpp).
 inline bool originCertainlyInside(const BoundedVec (&W)[3])
 {
     int positive = 0, negative = 0;
@@ -150,6 +153,98 @@ template <class T> double supportUpper(const Transform<T>& xf, const Vec2<T>* pt
     return up(up(best + scanError) + hi(np));
 }
 
+// --- The certified interval of a query (Options::certify) ----------------------------------------
+
+// Upper end of the hull distance: the point sum(a_i W_i) / sum(a_i) of Z named by the final
+// simplex, W_i = xfA * A[iA] - xfB * B[iB]; 0 when the simplex is a triangle that certainly
+// contains the origin.
+template <class T> GJK_INLINE double upperHullBound(const DistanceInput<T>& in, const Simplex<T>& s)
+{
+    BoundedVec W[3];
+    for (int i = 0; i < s.count; ++i)
+    {
+        const BoundedVec a = toWorld(in.transformA, in.proxyA.points[s.v[i].indexA]);
+        const BoundedVec b = toWorld(in.transformB, in.proxyB.points[s.v[i].indexB]);
+        W[i] = {a.x - b.x, a.y - b.y};
+    }
+    double upperHull = std::numeric_limits<double>::infinity();
+    const bool inside = s.count == 3 && originCertainlyInside(W);
+    if (inside)
+        upperHull = 0;
+    else
+    {
+        BoundedVec v{};
+        Bounded sum{};
+        for (int i = 0; i < s.count; ++i)
+        {
+            const Bounded a = exactly(std::max(double(s.v[i].a), 0.0));
+            v = {v.x + a * W[i].x, v.y + a * W[i].y};
+            sum = sum + a;
+        }
+        upperHull = upperNorm(v, sum);
+    }
+    return upperHull;
+}
+
+// Lower end of the hull distance: support functions along the computed world normal n (from A to
+// B): dist >= (min_j n.B_j - max_i n.A_i) / |n|. 0 for a zero normal.
+template <class T> GJK_INLINE double lowerHullBound(const DistanceInput<T>& in, Vec2<T> normal)
+{
+    double lowerHull = 0;
+    if (normal.x != T(0) || normal.y != T(0))
+    {
+        const Bounded nx = exactly(double(normal.x)), ny = exactly(double(normal.y));
+        const Bounded mnx = exactly(-double(normal.x)), mny = exactly(-double(normal.y));
+        const double hA = supportUpper(in.transformA, in.proxyA.points, in.proxyA.count, nx, ny);
+        const double hBneg = supportUpper(in.transformB, in.proxyB.points, in.proxyB.count, mnx, mny);
+        const double gap = down(-hBneg - hA);
+        const double nn = up(std::sqrt(up(up(nx.v * nx.v) + up(ny.v * ny.v))));
+        if (gap > 0)
+            lowerHull = down(gap / nn);
+    }
+    return lowerHull;
+}
+
 } // namespace gjk::certify
+
+namespace gjk
+{
+
+// Fills out.lower and out.upper from the final simplex (indices and weights) and the world normal.
+template <class T>
+void certifyDistance(const DistanceInput<T>& in, const Simplex<T>& s, bool useRadii, Vec2<T> normal,
+                     DistanceOutput<T>& out)
+{
+    using namespace certify;
+    const double upperHull = upperHullBound(in, s);
+    const double lowerHull = lowerHullBound(in, normal);
+
+    const double rA = useRadii ? double(in.proxyA.radius) : 0.0;
+    const double rB = useRadii ? double(in.proxyB.radius) : 0.0;
+    // Subtracting the radii, rounded outwards (a zero radius subtracts exactly).
+    const double rSum = rA + rB;
+    const double rLow = rB == 0 ? rA : down(rSum), rHigh = rB == 0 ? rA : up(rSum);
+    const double lower = rHigh == 0 ? lowerHull : std::max(0.0, down(lowerHull - rHigh));
+    const double upper = rLow == 0 ? upperHull : up(upperHull - rLow);
+    // Certified only when both ends are numbers and the upper end is finite: an overflow anywhere
+    // above (world coordinates beyond the double range, inf - inf = NaN) must never pass for a
+    // bound. std::max(0, NaN) is 0, which would turn an overflowed upper end into a certified
+    // [0, 0] (points near 1.5e308 rotated by 45 degrees). Comparisons with NaN are false, so each
+    // test below fails closed.
+    if (lower >= 0 && upper <= std::numeric_limits<double>::max() && lower <= std::max(upper, 0.0))
+    {
+        out.lower = lower;
+        out.upper = std::max(upper, 0.0);
+        out.certified = true;
+    }
+    else
+    {
+        out.lower = 0;
+        out.upper = std::numeric_limits<double>::infinity();
+        out.certified = false;
+    }
+}
+
+} // namespace gjk
 
 #include "gjk/detail/fp_end.hpp"

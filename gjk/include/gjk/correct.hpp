@@ -53,8 +53,9 @@
 #pragma once
 
 #include "gjk/certify.hpp"
-#include "gjk/distance.hpp"
+#include "gjk/detail/macros.hpp"
 #include "gjk/math.hpp"
+#include "gjk/types.hpp"
 
 #include <bit>
 #include <cmath>
