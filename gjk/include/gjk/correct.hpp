@@ -19,7 +19,8 @@
 //   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
-//      quantity carrying a rigorous bound on its distance to the exact value. That gives
+//      quantity carrying a rigorous bound on its distance to the exact value (that arithmetic:
+//      gjk/exact_arithmetic.hpp). That gives
 //        U = the distance from the origin to the feature (a point or a segment of Z = A' - B'),
 //            an upper bound of the exact hull distance d*;
 //        L = min over z in Z of n.z / |n| for the feature's direction n (the support-function,
@@ -28,7 +29,8 @@
 //            minimum; those few are evaluated in double-double.
 //      In the common case L is not needed: when the features' own vertices attain both shapes'
 //      support along n (featuresAttainSupport, one pass over each shape), d* = U exactly.
-//      The points of Z are computed in two lanes (a point's x and y side by side, below).
+//      The points of Z are computed in two lanes (a point's x and y side by side:
+//      minkowskiPointLanes, below).
 //      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
 //      answer; if all are <= 0, the answer is 0. When the features are the closest ones and the
@@ -209,7 +211,8 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
 // bound taken at the vertex's own |x| + |y| instead of the shape's largest; so exact(i) >=
 // v_i - eps_i > v_f + eps_f >= exact(f) for a feature vertex f, and no other vertex can attain
 // the minimum: the same conclusion as supportCandidates's candidates all lying in {i1, i2}, for
-// the exact n too (eps covers |n - n.hi| when n's own bound is below 2^-60 of it).
+// the exact n too (eps covers |n - n.hi| when n's own bound is below kDirectionAccuracy of it:
+// refine's guards, below).
 inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
                                   double sign, int i1, int i2)
 {
@@ -285,6 +288,10 @@ inline bool containsOriginCertified(const DistanceInput<double>& in, const Simpl
     return originCertainlyInside(W);
 }
 
+// What the rounding steps below (and refine) return when their bounds cannot decide: any negative
+// value is not an answer, since every answer is >= 0.
+inline constexpr double kUndecided = -1;
+
 // The decision: the exact x lies in [xl, xh] (each an Approx, with its bound). Returns the
 // correctly rounded max(0, x), or a negative value when the bounds cannot decide.
 GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
@@ -296,23 +303,23 @@ GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
         return 0;
     // Positive for sure: xl - err > 0.
     if (!(xl.hi > up(xl.err - xl.lo)))
-        return -1;
+        return kUndecided;
     const double m = xh.hi; // xh rounded to nearest (hi = fl(hi + lo))
     if (!(m >= 0x1p-900 && m <= 0x1p900))
-        return -1;
+        return kUndecided;
     // The neighbours of m > 0 (normal, finite) by its bit pattern, without std::nextafter's call.
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const double gapAbove = std::bit_cast<double>(bits + 1) - m;
     const double gapBelow = m - std::bit_cast<double>(bits - 1);
     // The upper end below the midpoint above m: xh.lo + err < gapAbove / 2.
     if (!(up(xh.lo + xh.err) < 0.5 * gapAbove))
-        return -1;
+        return kUndecided;
     // The lower end above the midpoint below m: (xl.hi - m) + xl.lo - err > -gapBelow / 2.
     // xl.hi - m is exact when xl.hi is within a factor 2 of m (Sterbenz).
     if (!(xl.hi >= 0.5 * m && xl.hi <= 2 * m))
-        return -1;
+        return kUndecided;
     if (!(down(down((xl.hi - m) + xl.lo) - xl.err) > -0.5 * gapBelow))
-        return -1;
+        return kUndecided;
     return m;
 }
 
@@ -397,7 +404,7 @@ inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCach
     using certify::up;
     const double m = xh.hi;
     if (!(m >= 0x1p-900 && m <= 0x1p900) || !(xh.hi > up(xh.err - xh.lo)))
-        return -1;
+        return kUndecided;
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const double below = std::bit_cast<double>(bits - 1), above = std::bit_cast<double>(bits + 1);
     const double halfBelow = 0.5 * (m - below), halfAbove = 0.5 * (above - m); // exact
@@ -410,10 +417,10 @@ inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCach
     else if (dLow <= -halfBelow && dHigh < halfAbove && dLow > -2 * halfBelow)
         lo = below, hi = m, tLo = -halfBelow; // below < X < m
     else
-        return -1;
+        return kUndecided;
     const int side = exactSideOfTarget(in, cache, m, tLo, rA, rB);
     if (side == 2)
-        return -1;
+        return kUndecided;
     if (side != 0)
         return side > 0 ? hi : lo;
     return (std::bit_cast<std::uint64_t>(lo) & 1) == 0 ? lo : hi; // a tie: the even one
@@ -495,162 +502,175 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
 {
     const double m = double(X);
     if (!(m >= 0x1p-1000 && m <= 0x1p1000))
-        return -1;
+        return kUndecided;
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const Ext gapAbove = Ext(std::bit_cast<double>(bits + 1)) - m, gapBelow = Ext(m) - std::bit_cast<double>(bits - 1);
     const Ext d = X - m;
-    return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : -1;
+    return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : kUndecided;
 }
 
-// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
-// cache the plain query returned: its index pairs are the final features. Out of line, so that
-// gjk::distance does not carry its code and stack frame into the default query.
-[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
-                   DistanceOutput<double>& out)
+// --- The refinement: refine and its steps --------------------------------------------------------
+
+// refine's guards, each with the derivation of its value.
+// The largest radius refined: the range of every guard of gjk/exact_arithmetic.hpp (pieces and
+// products at most 2^900), so that r = rA + rB and U - r stay far from overflow.
+inline constexpr double kMaxRadius = 0x1p900;
+// An edge e = W2 - W1 whose bound exceeds this fraction of |e| (cancellation: a short edge far from
+// the origin) is recomputed from the shapes' local differences, where the translations cancel
+// before any rounding. 2^-80 keeps e's share of U's relative bound below the extended stage's own
+// rounding (2^-64) and far below the half ulp (2^-53) the rounding must resolve, and an edge's n
+// (e turned) within kDirectionAccuracy.
+inline constexpr double kEdgeAccuracy = 0x1p-80;
+// featuresAttainSupport's certificate holds for the exact direction n too when n's own bound is
+// below this fraction of n: its eps, 8u (|c| + |s|) max|n| (|x| + |y|), exceeds the roundings it
+// covers (5u: supportCandidates) by 3u = 2^-51.4 of that scale, far more than the
+// 2^-60 (|c| + |s|) max|n| (|x| + |y|) such a direction error can move a vertex's value.
+inline constexpr double kDirectionAccuracy = 0x1p-60;
+// An absolute slack beside the relative kSafe in a candidate's reach (lowestSupportValue), as in
+// signOfDot and supportCandidates: it keeps the widened bound rigorous for values so small that a
+// relative margin vanishes (near underflow, multiples of 2^-1074), and lies far below any distance
+// the refinement decides (roundInterval and roundAtMidpoint answer only from 2^-900 on).
+inline constexpr double kUnderflowMargin = 0x1p-1000;
+
+// The features the plain query ended on, as points of Z in double-double with their bounds.
+struct Features
 {
-    out.path = CorrectPath::NeedsExact;
-    const double rA = options.useRadii ? in.proxyA.radius : 0.0;
-    const double rB = options.useRadii ? in.proxyB.radius : 0.0;
-    if (out.outOfRange || !(rA <= 0x1p900 && rB <= 0x1p900))
-        return;
-    const DD rs = twoSum(rA, rB);
-    const Approx r = {rs.hi, rs.lo, 0};
+    int a1 = 0, b1 = 0, a2 = 0, b2 = 0; // index pairs of the simplex; a vertex has a2 = a1, b2 = b1
+    bool isEdge = false;
+    ApproxVec W1, W2, e; // W(a1, b1); an edge's W(a2, b2) and e = W2 - W1
+    Approx unum;         // an edge's cross(e, W1) = cross(W2, W1): U's numerator
+    ApproxVec n, nv;     // the direction towards Z (n.W1 > 0), and n's values as an exact direction
+    int attained = -1;   // supportAttained's answer once evaluated: 1 or 0 (-1: not yet)
+};
 
-    if (cache.count == 3)
-    {
-        if (out.stop != StopReason::Containment ||
-            !(containsOriginFiltered(in, cache) || containsOriginCertified(in, cache)))
-            return;
-        // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
-        out.path = CorrectPath::Double;
-        out.distance = 0;
-        return;
-    }
+GJK_CORRECT_INLINE ApproxVec valuesOf(const ApproxVec& v) { return {{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; }
 
-    // The output of a decided answer (a negative one: not decided).
-    auto finish = [&out](double answer, CorrectPath path = CorrectPath::DoubleDouble)
+// Writes a decided answer (a negative one is not decided) with its path; false when not written.
+GJK_CORRECT_INLINE bool writeAnswer(DistanceOutput<double>& out, double answer, CorrectPath path)
+{
+    if (!(answer >= 0))
+        return false;
+    if (answer > 0 && !(out.distance > 0))
+        return false; // a plain overlap answer: the exact completion gives the witness points
+    if (answer == 0 && out.distance > 0)
     {
-        if (!(answer >= 0))
-            return;
-        if (answer > 0 && !(out.distance > 0))
-            return; // a plain overlap answer: the exact completion gives the witness points
-        if (answer == 0 && out.distance > 0)
-        {
-            const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
-            out.pointA = out.pointB = mid;
-            out.normal = {};
-        }
-        out.distance = answer;
-        out.path = path;
-    };
-    const int a1 = cache.indexA[0], b1 = cache.indexB[0];
-    Context cx;
-    const ApproxVec W1 = minkowskiPoint(cx, in, a1, b1);
-    ApproxVec W2{}, n{}, e{};
-    // For an edge, unum = cross(e, W1).
-    Approx unum;
-    auto valuesOf = [](const ApproxVec& v) { return ApproxVec{{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; };
-    const bool isEdge = cache.count == 2;
-    if (!isEdge)
-    {
-        // Vertex feature: n = W1, U = |W1|.
-        n = W1;
-        if (!cx.ok)
-            return;
+        const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
+        out.pointA = out.pointB = mid;
+        out.normal = {};
     }
-    else
-    {
-        // Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to
-        // the segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0.
-        // e = W2 - W1; recomputed from the shapes' local differences (the translations cancel
-        // before any rounding) when that difference is not accurate to 2^-80 of e.
-        // cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
-        const int a2 = cache.indexA[1], b2 = cache.indexB[1];
-        W2 = minkowskiPoint(cx, in, a2, b2);
-        unum = cross(cx, W2, W1);
-        e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
-        if (!(std::max(e.x.err, e.y.err) <= 0x1p-80 * std::max(std::abs(e.x.hi), std::abs(e.y.hi))))
-            e = minkowskiEdge(cx, in, a1, b1, a2, b2);
-        if (!cx.ok || signOfDot(W2, e) != 1 || signOfDot(W1, e) != -1)
-            return;
-        // n: the perpendicular of e towards Z (n.W1 > 0).
-        n = unum.hi > 0 ? ApproxVec{negate(e.y), e.x} : ApproxVec{e.y, negate(e.x)};
-    }
+    out.distance = answer;
+    out.path = path;
+    return true;
+}
+
+// A triangle simplex (CorrectPath::Double): the hulls overlap for certain when the plain query
+// stopped on containment and the three orientation signs are certified in double.
+GJK_CORRECT_INLINE bool containmentCertified(const DistanceInput<double>& in, const SimplexCache& cache,
+                                             const DistanceOutput<double>& out)
+{
+    return out.stop == StopReason::Containment &&
+           (containsOriginFiltered(in, cache) || containsOriginCertified(in, cache));
+}
+
+// Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to the
+// segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0. e = W2 - W1;
+// recomputed from the shapes' local differences when that difference is not accurate to
+// kEdgeAccuracy of e. cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
+// False when a guard fails or the projection is not certainly inside.
+GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in, Features& f)
+{
+    f.W2 = minkowskiPoint(cx, in, f.a2, f.b2);
+    f.unum = cross(cx, f.W2, f.W1);
+    f.e = {sub(f.W2.x, f.W1.x), sub(f.W2.y, f.W1.y)};
+    if (!(std::max(f.e.x.err, f.e.y.err) <= kEdgeAccuracy * std::max(std::abs(f.e.x.hi), std::abs(f.e.y.hi))))
+        f.e = minkowskiEdge(cx, in, f.a1, f.b1, f.a2, f.b2);
+    if (!cx.ok || signOfDot(f.W2, f.e) != 1 || signOfDot(f.W1, f.e) != -1)
+        return false;
+    // n: the perpendicular of e towards Z (n.W1 > 0).
+    f.n = f.unum.hi > 0 ? ApproxVec{negate(f.e.y), f.e.x} : ApproxVec{f.e.y, negate(f.e.x)};
+    return true;
+}
+
+// The final features of a one- or two-point simplex, their points of Z and direction n. False
+// when a guard fails or an edge's side is not decided (the caller then needs exact).
+GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in, const SimplexCache& cache,
+                                   Features& f)
+{
+    f.isEdge = cache.count == 2;
+    f.a1 = cache.indexA[0], f.b1 = cache.indexB[0];
+    f.a2 = f.isEdge ? cache.indexA[1] : f.a1, f.b2 = f.isEdge ? cache.indexB[1] : f.b1;
+    f.W1 = minkowskiPoint(cx, in, f.a1, f.b1);
+    if (!f.isEdge)
+        f.n = f.W1; // vertex feature: n = W1, U = |W1|
+    else if (!edgeFeature(cx, in, f))
+        return false;
     if (!cx.ok)
-        return;
+        return false;
+    f.nv = valuesOf(f.n);
+    return true;
+}
 
-    // The common case: the features' own vertices attain the support of each shape along n, for
-    // the exact n too (n's own bound below 2^-60 of it: featuresAttainSupport). Then the minimum
-    // of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
-    // edge of one shape against a vertex of the other, n is perpendicular to that edge, so both
-    // its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin
-    // lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed. Evaluated once,
-    // when first needed.
-    const ApproxVec nv = valuesOf(n);
-    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
-    int attained = -1;
-    auto supportAttained = [&]
-    {
-        if (attained < 0)
-            attained = std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
-                       (a1 == a2 || b1 == b2) && featuresAttainSupport(in.proxyA, in.transformA, nv, 1, a1, a2) &&
-                       featuresAttainSupport(in.proxyB, in.transformB, nv, -1, b1, b2);
-        return attained == 1;
-    };
+// The common case: the features' own vertices attain the support of each shape along n, for
+// the exact n too (n's own bound below kDirectionAccuracy of it: featuresAttainSupport). Then the
+// minimum of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
+// edge of one shape against a vertex of the other, n is perpendicular to that edge, so both its
+// ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin lies on
+// the feature (u, v > 0: edgeFeature): d* = U exactly, and L is not needed. Evaluated once, when
+// first needed.
+GJK_CORRECT_INLINE bool supportAttained(const DistanceInput<double>& in, Features& f)
+{
+    if (f.attained < 0)
+        f.attained = std::max(f.n.x.err, f.n.y.err) <=
+                         kDirectionAccuracy * std::max(std::abs(f.n.x.hi), std::abs(f.n.y.hi)) &&
+                     (f.a1 == f.a2 || f.b1 == f.b2) &&
+                     featuresAttainSupport(in.proxyA, in.transformA, f.nv, 1, f.a1, f.a2) &&
+                     featuresAttainSupport(in.proxyB, in.transformB, f.nv, -1, f.b1, f.b2);
+    return f.attained == 1;
+}
 
-    // CorrectPath::Extended: the square root, the quotient and the rounding in extended
-    // precision, where the double-double ones are the longest chains of dependent operations.
+// CorrectPath::Extended: the square root, the quotient and the rounding in extended precision,
+// where the double-double ones are the longest chains of dependent operations. True when it
+// decided (the answer written).
+GJK_CORRECT_INLINE bool decideExtended(const DistanceInput<double>& in, Features& f, double rA, double rB,
+                                       DistanceOutput<double>& out)
+{
     if constexpr (kExtended)
     {
         Ext X, eX;
-        if (extendedPrecisionOn() && distanceExtended(isEdge ? e : W1, isEdge ? &unum : nullptr, rA, rB, X, eX))
-        {
-            double answer = -1;
-            if (X + eX <= 0)
-                answer = 0; // apart by less than the radii (U* bounds d* from above: a point of Z)
-            else if (X - eX > 0 && supportAttained())
-                answer = roundExtended(X, eX);
-            finish(answer, CorrectPath::Extended);
-            if (out.path == CorrectPath::Extended)
-                return;
-        }
+        if (!extendedPrecisionOn() ||
+            !distanceExtended(f.isEdge ? f.e : f.W1, f.isEdge ? &f.unum : nullptr, rA, rB, X, eX))
+            return false;
+        double answer = kUndecided;
+        if (X + eX <= 0)
+            answer = 0; // apart by less than the radii (U* bounds d* from above: a point of Z)
+        else if (X - eX > 0 && supportAttained(in, f))
+            answer = roundExtended(X, eX);
+        return writeAnswer(out, answer, CorrectPath::Extended);
     }
+    else
+        return false;
+}
 
-    // sq = |n_v|^2 for the direction n_v = n's values; the exact length (|W1| or |e|) lies within
-    // lengthErr of |n_v|.
-    const ApproxVec& v = isEdge ? e : W1;
+// U, the distance from the origin to the feature (|W1|, or |cross(e, W1)| / |e|), in double-double
+// with its bound. normV = |n_v| for the direction n_v = n's values (sq = |n_v|^2); the exact
+// length (|W1| or |e|) lies within lengthErr of it.
+GJK_CORRECT_INLINE Approx upperBound(Context& cx, const Features& f, Approx& normV)
+{
+    const ApproxVec& v = f.isEdge ? f.e : f.W1;
     const Approx sq = dot(cx, valuesOf(v), valuesOf(v));
     const double lengthErr = v.x.err + v.y.err;
-    const Approx normV = squareRoot(cx, sq);
+    normV = squareRoot(cx, sq);
     if (!cx.ok)
-        return;
-    const Approx U = isEdge ? div(cx, absolute(unum), {normV.hi, normV.lo, (normV.err + lengthErr) * kSafe})
-                            : Approx{normV.hi, normV.lo, (normV.err + lengthErr) * kSafe};
-    if (!cx.ok)
-        return;
-    const Approx xh = sub(U, r);
-    // Apart by less than the radii: 0 whatever the other bound.
-    if (xh.hi <= -certify::up(xh.lo + xh.err))
-    {
-        finish(0);
-        return;
-    }
-    if (isEdge && !(std::abs(unum.hi) > unum.err * kSafe + std::abs(unum.lo)))
-        return; // the origin on (or too near) the edge's line: the side is not decided
-    if (supportAttained())
-    {
-        const double answer = roundInterval(xh, xh);
-        finish(answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB));
-        return;
-    }
-    // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
-    // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
-    // Otherwise L from the few vertices that can attain the support.
-    int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
-    const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);
-    const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
-    if (ca > kMaxCandidates || cb > kMaxCandidates)
-        return;
+        return {};
+    const Approx length = {normV.hi, normV.lo, (normV.err + lengthErr) * kSafe};
+    return f.isEdge ? div(cx, absolute(f.unum), length) : length;
+}
+
+// The lowest of n_v.W over the candidate pairs' points W of Z, its bound widened to cover every
+// other value's lower end: the minimum of the exact values lies within it.
+GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<double>& in, const Features& f,
+                                             const int* candA, int ca, const int* candB, int cb)
+{
     Approx lowest;
     bool first = true;
     double lowestEnd = 0;
@@ -662,10 +682,10 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
         for (int j = 0; j < cb; ++j)
         {
             const int ia = candA[i], jb = candB[j];
-            const ApproxVec W = (ia == a1 && jb == b1) ? W1
-                                : (isEdge && ia == cache.indexA[1] && jb == cache.indexB[1]) ? W2
-                                                                                              : minkowskiPoint(cx, in, ia, jb);
-            const Approx value = dot(cx, nv, W);
+            const ApproxVec W = (ia == f.a1 && jb == f.b1)                   ? f.W1
+                                : (f.isEdge && ia == f.a2 && jb == f.b2) ? f.W2
+                                                                         : minkowskiPoint(cx, in, ia, jb);
+            const Approx value = dot(cx, f.nv, W);
             his[count] = value.hi;
             los[count] = value.lo;
             errs[count++] = value.err;
@@ -677,16 +697,78 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
                 first = false;
             }
         }
-    // The minimum lies within lowest's bound, widened to cover every other value's lower end.
     for (int k = 0; k < count; ++k)
     {
-        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + 0x1p-1000;
+        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + kUnderflowMargin;
         lowest.err = std::max(lowest.err, reach);
     }
-    const Approx L = div(cx, lowest, normV);
+    return lowest;
+}
+
+// L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
+// direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|,
+// from the few vertices that can attain the support. False when there are too many candidates
+// or a guard fails.
+GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in, const Features& f,
+                                   const Approx& normV, Approx& L)
+{
+    int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
+    const int ca = supportCandidates(in.proxyA, in.transformA, f.nv, 1, candA);
+    const int cb = supportCandidates(in.proxyB, in.transformB, f.nv, -1, candB);
+    if (ca > kMaxCandidates || cb > kMaxCandidates)
+        return false;
+    L = div(cx, lowestSupportValue(cx, in, f, candA, ca, candB, cb), normV);
+    return cx.ok;
+}
+
+// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
+// cache the plain query returned: its index pairs are the final features. Out of line, so that
+// gjk::distance does not carry its code and stack frame into the default query.
+[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
+                                     DistanceOutput<double>& out)
+{
+    out.path = CorrectPath::NeedsExact;
+    const double rA = options.useRadii ? in.proxyA.radius : 0.0;
+    const double rB = options.useRadii ? in.proxyB.radius : 0.0;
+    if (out.outOfRange || !(rA <= kMaxRadius && rB <= kMaxRadius))
+        return;
+    const DD rs = twoSum(rA, rB);
+    const Approx r = {rs.hi, rs.lo, 0};
+    if (cache.count == 3)
+    {
+        if (!containmentCertified(in, cache, out))
+            return;
+        // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
+        out.path = CorrectPath::Double;
+        out.distance = 0;
+        return;
+    }
+    Context cx;
+    Features f;
+    if (!featuresOf(cx, in, cache, f) || decideExtended(in, f, rA, rB, out))
+        return;
+    Approx normV;
+    const Approx U = upperBound(cx, f, normV);
     if (!cx.ok)
         return;
-    finish(roundInterval(sub(L, r), xh));
+    const Approx xh = sub(U, r);
+    // Apart by less than the radii: 0 whatever the other bound.
+    if (xh.hi <= -certify::up(xh.lo + xh.err))
+    {
+        writeAnswer(out, 0, CorrectPath::DoubleDouble);
+        return;
+    }
+    if (f.isEdge && !(std::abs(f.unum.hi) > f.unum.err * kSafe + std::abs(f.unum.lo)))
+        return; // the origin on (or too near) the edge's line: the side is not decided
+    if (supportAttained(in, f))
+    {
+        const double answer = roundInterval(xh, xh);
+        writeAnswer(out, answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB), CorrectPath::DoubleDouble);
+        return;
+    }
+    Approx L;
+    if (lowerBound(cx, in, f, normV, L))
+        writeAnswer(out, roundInterval(sub(L, r), xh), CorrectPath::DoubleDouble);
 }
 
 } // namespace gjk::correct
