@@ -546,7 +546,9 @@ struct Features
 GJK_CORRECT_INLINE ApproxVec valuesOf(const ApproxVec& v) { return {{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; }
 
 // Writes a decided answer (a negative one is not decided) with its path; false when not written.
-GJK_CORRECT_INLINE bool writeAnswer(DistanceOutput<double>& out, double answer, CorrectPath path)
+// Plain `inline`, as supportAttained: the compiler keeps both out of line, as it did the lambdas
+// they were.
+inline bool writeAnswer(DistanceOutput<double>& out, double answer, CorrectPath path)
 {
     if (!(answer >= 0))
         return false;
@@ -617,7 +619,7 @@ GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in,
 // ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin lies on
 // the feature (u, v > 0: edgeFeature): d* = U exactly, and L is not needed. Evaluated once, when
 // first needed.
-GJK_CORRECT_INLINE bool supportAttained(const DistanceInput<double>& in, Features& f)
+inline bool supportAttained(const DistanceInput<double>& in, Features& f)
 {
     if (f.attained < 0)
         f.attained = std::max(f.n.x.err, f.n.y.err) <=
