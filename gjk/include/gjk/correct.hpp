@@ -19,7 +19,8 @@
 //   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
-//      quantity carrying a rigorous bound on its distance to the exact value. That gives
+//      quantity carrying a rigorous bound on its distance to the exact value (that arithmetic:
+//      gjk/exact_arithmetic.hpp). That gives
 //        U = the distance from the origin to the feature (a point or a segment of Z = A' - B'),
 //            an upper bound of the exact hull distance d*;
 //        L = min over z in Z of n.z / |n| for the feature's direction n (the support-function,
@@ -28,7 +29,8 @@
 //            minimum; those few are evaluated in double-double.
 //      In the common case L is not needed: when the features' own vertices attain both shapes'
 //      support along n (featuresAttainSupport, one pass over each shape), d* = U exactly.
-//      The points of Z are computed in two lanes (a point's x and y side by side, below).
+//      The points of Z are computed in two lanes (a point's x and y side by side:
+//      minkowskiPointLanes, below).
 //      When the features are the closest ones, L = U = d* in exact arithmetic. If every value of
 //      [L - rA - rB, U - rA - rB] (with the bounds) rounds to the same double, that double is the
 //      answer; if all are <= 0, the answer is 0. When the features are the closest ones and the
@@ -54,6 +56,7 @@
 
 #include "gjk/certify.hpp"
 #include "gjk/detail/macros.hpp"
+#include "gjk/exact_arithmetic.hpp"
 #include "gjk/math.hpp"
 #include "gjk/types.hpp"
 
@@ -65,251 +68,8 @@
 
 #include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
 
-// The steps below are forced inline in optimised builds (the speed measured in docs/gjk.md), and
-// only `inline` in checked builds (GJK2D_CHECKED: the sanitizer and fuzzing builds), where forcing
-// them nearly doubled the compile time of every translation unit that instantiates the query:
-// 28.6 s against 17.4 s for one such unit under -O2 -fsanitize=address,undefined (GCC 12), which
-// CI pays in dozens of units.
-#if defined(GJK2D_CHECKED)
-#define GJK_CORRECT_INLINE inline
-#else
-#define GJK_CORRECT_INLINE GJK_INLINE
-#endif
-
 namespace gjk::correct
 {
-
-// --- Error-free transformations ----------------------------------------------------------------
-
-struct DD
-{
-    double hi = 0, lo = 0;
-};
-
-// a + b = s + e exactly (Knuth), for any finite a, b whose sum does not overflow.
-GJK_CORRECT_INLINE DD twoSum(double a, double b)
-{
-    const double s = a + b;
-    const double bb = s - a;
-    return {s, (a - (s - bb)) + (b - bb)};
-}
-// The same when |a| >= |b| (or a == 0) (Dekker).
-GJK_CORRECT_INLINE DD fastTwoSum(double a, double b)
-{
-    const double s = a + b;
-    return {s, b - (s - a)};
-}
-// a * b = p + e exactly (Dekker, Veltkamp's split by 2^27 + 1), when |a|, |b| <= 2^996 and no
-// partial product underflows (guarded: Terms::addProduct).
-GJK_CORRECT_INLINE DD twoProduct(double a, double b)
-{
-    constexpr double split = 134217729.0; // 2^27 + 1
-    const double p = a * b;
-    const double ca = split * a, ah = ca - (ca - a), al = a - ah;
-    const double cb = split * b, bh = cb - (cb - b), bl = b - bh;
-    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
-}
-
-// --- Double-double values with a bound ---------------------------------------------------------
-//
-// An Approx is hi + lo (|lo| <= ulp(hi) / 2) with |exact - (hi + lo)| <= err, exact being the
-// quantity it stands for. Every operation below adds its own rounding, bounded by kRel times the
-// result. The double-double algorithms are those of Joldes, Muller and Popescu, "Tight and
-// rigorous error bounds for basic building blocks of double-word arithmetic" (ACM TOMS 2017):
-// addition (AccurateDWPlusDW) <= 3u^2, product (DWTimesDW without FMA) <= 7u^2, quotient
-// (DWDivDW2) <= 15u^2, and the square root (one Newton step from sqrt(hi), Dekker) <= 4u^2,
-// u = 2^-53. kRel = 2^-96 = 1024 u^2 covers each with a wide margin, and also the few roundings
-// of the bounds themselves (kSafe). Underflow: products of values below 2^-400 may lose up to a
-// few 2^-1074 each, covered by kTiny per operation; divisors and square roots are guarded away
-// from that range.
-inline constexpr double kRel = 0x1p-96;
-inline constexpr double kSafe = 1 + 0x1p-40;
-inline constexpr double kTiny = 0x1p-900;
-
-struct Approx
-{
-    double hi = 0, lo = 0, err = 0;
-};
-
-GJK_CORRECT_INLINE double mag(const Approx& a) { return std::abs(a.hi) * (1 + 0x1p-50); } // >= |hi + lo|
-
-// The evaluation context: `ok` turns false when a guard fails (the caller then needs exact).
-struct Context
-{
-    bool ok = true;
-    void require(bool c) { ok = ok && c; }
-};
-
-GJK_CORRECT_INLINE Approx exactly(double v) { return {v, 0, 0}; }
-GJK_CORRECT_INLINE Approx negate(const Approx& a) { return {-a.hi, -a.lo, a.err}; }
-GJK_CORRECT_INLINE Approx absolute(const Approx& a) { return a.hi < 0 ? negate(a) : a; }
-
-GJK_CORRECT_INLINE Approx add(const Approx& a, const Approx& b)
-{
-    DD s = twoSum(a.hi, b.hi);
-    const DD t = twoSum(a.lo, b.lo);
-    s = fastTwoSum(s.hi, s.lo + t.hi);
-    s = fastTwoSum(s.hi, s.lo + t.lo);
-    return {s.hi, s.lo, (a.err + b.err + kRel * std::abs(s.hi)) * kSafe};
-}
-GJK_CORRECT_INLINE Approx sub(const Approx& a, const Approx& b) { return add(a, negate(b)); }
-
-GJK_CORRECT_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
-{
-    cx.require(std::abs(a.hi) <= 0x1p450 && std::abs(b.hi) <= 0x1p450); // product <= 2^900
-    const DD p = twoProduct(a.hi, b.hi);
-    const double t = a.hi * b.lo + a.lo * b.hi;
-    const DD r = fastTwoSum(p.hi, p.lo + t);
-    const double e = mag(a) * b.err + mag(b) * a.err + a.err * b.err + kRel * std::abs(r.hi) + kTiny;
-    return {r.hi, r.lo, e * kSafe};
-}
-
-GJK_CORRECT_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
-{
-    const double bLow = std::abs(b.hi) * (1 - 0x1p-50) - b.err * kSafe; // <= |exact b|
-    cx.require(std::abs(b.hi) >= 0x1p-400 && bLow > 0 && std::abs(a.hi) <= 0x1p900 &&
-               std::abs(b.hi) <= 0x1p450);
-    if (!cx.ok)
-        return {};
-    const double th = a.hi / b.hi;
-    const DD c = twoProduct(b.hi, th);
-    const DD t = fastTwoSum(c.hi, b.lo * th);
-    const DD r = fastTwoSum(t.hi, t.lo + c.lo);
-    const DD pi = twoSum(a.hi, -r.hi);
-    const double delta = pi.hi + ((pi.lo - r.lo) + a.lo);
-    const DD q = fastTwoSum(th, delta / b.hi);
-    // |a/b - av/bv| <= (|a - av| + |av/bv| |b - bv|) / |b|
-    const double e = (a.err + std::abs(q.hi) * (1 + 0x1p-50) * b.err) / bLow + kRel * std::abs(q.hi) +
-                     kTiny / bLow;
-    return {q.hi, q.lo, e * kSafe};
-}
-
-GJK_CORRECT_INLINE Approx squareRoot(Context& cx, const Approx& a)
-{
-    const double aLow = a.hi * (1 - 0x1p-50) - a.err * kSafe; // <= exact a
-    cx.require(a.hi >= 0x1p-800 && a.hi <= 0x1p900 && aLow > 0);
-    if (!cx.ok)
-        return {};
-    const double s = std::sqrt(a.hi);
-    const DD p = twoProduct(s, s);
-    const double r = ((a.hi - p.hi) - p.lo) + a.lo;
-    const DD q = fastTwoSum(s, r / (2 * s));
-    // |sqrt(a) - sqrt(av)| = |a - av| / (sqrt(a) + sqrt(av)) <= err / sqrt(aLow)
-    const double e = a.err / std::sqrt(aLow) + kRel * std::abs(q.hi) + kTiny;
-    return {q.hi, q.lo, e * kSafe};
-}
-
-// --- Exact sums --------------------------------------------------------------------------------
-
-// TwoProduct(a, b) = p + e is exact when the factors cannot overflow the split and the exponents'
-// sum is at least -961 (every partial product is then a multiple of 2^-1074, representable): a
-// product of at least 2^-960 in magnitude, or a zero factor.
-GJK_CORRECT_INLINE bool exactProduct(double a, double b, double p)
-{
-    const double m = std::abs(p);
-    return (a == 0) | (b == 0) |
-           ((m >= 0x1p-960) & (m <= 0x1p900) & (std::abs(a) <= 0x1p900) & (std::abs(b) <= 0x1p900));
-}
-
-// A short list of doubles whose exact sum is a wanted quantity (error-free pieces of products).
-// The pieces are kept in two lists: `big` (products' leading parts, translations) and `small`
-// (products' trailing parts, each below u times its leading part). `ok`: every piece is exact and
-// the sum cannot overflow (else the caller needs exact).
-struct Terms
-{
-    double big[10], small[10];
-    int nb = 0, ns = 0;
-    bool ok = true;
-    GJK_CORRECT_INLINE void add(double x)
-    {
-        ok = ok && std::abs(x) <= 0x1p900;
-        big[nb++] = x;
-    }
-    GJK_CORRECT_INLINE void addProduct(double a, double b)
-    {
-        const DD p = twoProduct(a, b);
-        ok = ok && exactProduct(a, b, p.hi);
-        big[nb++] = p.hi;
-        small[ns++] = p.lo;
-    }
-    // a * (x - y), the difference taken exactly first.
-    GJK_CORRECT_INLINE void addProductOfDifference(double a, double x, double y)
-    {
-        const DD d = twoSum(x, -y);
-        addProduct(a, d.hi);
-        addProduct(a, d.lo);
-    }
-};
-
-// The exact sum of the terms as an Approx. Ogita, Rump and Oishi's VecSum (a cascade of TwoSum,
-// error-free: the sum of the returned vector is the exact sum, its last element the
-// floating-point sum) runs over the big pieces; the rest (its errors and the small pieces) is
-// summed in double, its error bounded by the running bound n u sum|rest| (with room to spare:
-// n 2^-52, n the number of pieces). That leaves a rest of about u sum|terms|; while it is larger
-// than 2^-40 of the result (heavy cancellation: near touching, a small gap far from the origin),
-// VecSum passes over all the pieces follow (up to three), each shrinking it by about u. A rest of
-// 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp (2^-53) the final
-// rounding must resolve.
-GJK_CORRECT_INLINE Approx exactSum(Context& cx, Terms t)
-{
-    cx.require(t.ok);
-    if (t.nb == 0)
-        return {};
-    for (int i = 1; i < t.nb; ++i)
-    {
-        const DD s = twoSum(t.big[i - 1], t.big[i]);
-        t.big[i] = s.hi;
-        t.big[i - 1] = s.lo;
-    }
-    double sum = t.big[t.nb - 1];
-    double rest = 0, restAbs = 0;
-    for (int i = 0; i + 1 < t.nb; ++i)
-    {
-        rest += t.big[i];
-        restAbs += std::abs(t.big[i]);
-    }
-    for (int i = 0; i < t.ns; ++i)
-    {
-        rest += t.small[i];
-        restAbs += std::abs(t.small[i]);
-    }
-    const int n = t.nb + t.ns;
-    if (!(restAbs <= 0x1p-40 * std::abs(sum))) [[unlikely]]
-    {
-        // All pieces in one vector, the sum last.
-        double v[20];
-        int k = 0;
-        for (int i = 0; i < t.ns; ++i)
-            v[k++] = t.small[i];
-        for (int i = 0; i < t.nb; ++i)
-            v[k++] = t.big[i];
-        for (int pass = 0; pass < 3; ++pass)
-        {
-            for (int i = 1; i < n; ++i)
-            {
-                const DD s = twoSum(v[i - 1], v[i]);
-                v[i] = s.hi;
-                v[i - 1] = s.lo;
-            }
-            rest = restAbs = 0;
-            for (int i = 0; i + 1 < n; ++i)
-            {
-                rest += v[i];
-                restAbs += std::abs(v[i]);
-            }
-            if (restAbs <= 0x1p-40 * std::abs(v[n - 1]))
-                break;
-        }
-        sum = v[n - 1];
-    }
-    const DD s = twoSum(sum, rest);
-    return {s.hi, s.lo, n * 0x1p-52 * restAbs * kSafe};
-}
-
-struct ApproxVec
-{
-    Approx x, y;
-};
 
 // The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
 GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
@@ -322,103 +82,6 @@ GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<doub
     ty.add(sign * xf.p.y);
 }
 
-// --- Two lanes: a point's x and y --------------------------------------------------------------
-//
-// A world point's two coordinates take the same operations (c x - s y + px and s x + c y + py are
-// (c, s) x + (-s, c) y + (px, py)), so the hot stages below run them side by side: one SSE2
-// register with GCC's and Clang's vector extensions, a pair of doubles elsewhere. Each lane
-// rounds exactly as the scalar code would (IEEE operations lane by lane, no contraction: the
-// prologue above), so the derivations are the scalar ones. GJK_NO_VECTOR_EXTENSIONS selects the
-// pair of doubles with GCC and Clang too (a check of that code).
-#if defined(__GNUC__) && !defined(GJK_NO_VECTOR_EXTENSIONS)
-typedef double V2 __attribute__((vector_size(16)));
-typedef std::int64_t M2 __attribute__((vector_size(16))); // comparison masks: -1 (true) or 0
-GJK_CORRECT_INLINE V2 abs2(V2 v) { return V2(M2(v) & M2{INT64_MAX, INT64_MAX}); }
-GJK_CORRECT_INLINE bool all2(M2 m) { return (m[0] & m[1]) != 0; }
-#else
-struct M2
-{
-    bool v[2];
-    bool operator[](int i) const { return v[i]; }
-    M2 operator&(M2 o) const { return {{v[0] && o.v[0], v[1] && o.v[1]}}; }
-    M2 operator|(M2 o) const { return {{v[0] || o.v[0], v[1] || o.v[1]}}; }
-};
-struct V2
-{
-    double v[2];
-    double operator[](int i) const { return v[i]; }
-};
-inline V2 operator+(V2 a, V2 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}}; }
-inline V2 operator-(V2 a, V2 b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
-inline V2 operator*(V2 a, V2 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
-inline V2 operator*(double a, V2 b) { return {{a * b.v[0], a * b.v[1]}}; }
-inline M2 operator<=(V2 a, V2 b) { return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1]}}; }
-inline M2 operator<=(V2 a, double b) { return {{a.v[0] <= b, a.v[1] <= b}}; }
-inline M2 operator>=(V2 a, double b) { return {{a.v[0] >= b, a.v[1] >= b}}; }
-inline M2 operator==(V2 a, double b) { return {{a.v[0] == b, a.v[1] == b}}; }
-inline V2 abs2(V2 a) { return {{std::abs(a.v[0]), std::abs(a.v[1])}}; }
-inline bool all2(M2 m) { return m.v[0] && m.v[1]; }
-#endif
-GJK_CORRECT_INLINE V2 pair(double x, double y) { return V2{x, y}; }
-
-struct DD2
-{
-    V2 hi, lo;
-};
-GJK_CORRECT_INLINE DD2 twoSum(V2 a, V2 b) // twoSum above, lane by lane
-{
-    const V2 s = a + b;
-    const V2 bb = s - a;
-    return {s, (a - (s - bb)) + (b - bb)};
-}
-GJK_CORRECT_INLINE DD2 twoProduct(V2 a, V2 b) // twoProduct above, lane by lane
-{
-    const V2 split = pair(134217729.0, 134217729.0);
-    const V2 p = a * b;
-    const V2 ca = split * a, ah = ca - (ca - a), al = a - ah;
-    const V2 cb = split * b, bh = cb - (cb - b), bl = b - bh;
-    return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
-}
-// exactProduct's guard, lane by lane, with the factors' range tested at 2^450 (which also
-// keeps the product below 2^900): exact unless a factor is zero or |a b| >= 2^-960.
-GJK_CORRECT_INLINE M2 exactProduct(V2 a, V2 b, V2 p)
-{
-    const V2 aa = abs2(a), ab = abs2(b);
-    return ((aa <= 0x1p450) & (ab <= 0x1p450)) & ((abs2(p) >= 0x1p-960) | (aa == 0.0) | (ab == 0.0));
-}
-
-GJK_CORRECT_INLINE DD2 fastTwoSum(V2 a, V2 b) // fastTwoSum above, lane by lane
-{
-    const V2 s = a + b;
-    return {s, b - (s - a)};
-}
-// mul above, lane by lane: the products a0 b0 and a1 b1 at once.
-GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0, const Approx& a1, const Approx& b1,
-                         Approx& r0, Approx& r1)
-{
-    const V2 ah = pair(a0.hi, a1.hi), al = pair(a0.lo, a1.lo), ae = pair(a0.err, a1.err);
-    const V2 bh = pair(b0.hi, b1.hi), bl = pair(b0.lo, b1.lo), be = pair(b0.err, b1.err);
-    cx.require(all2((abs2(ah) <= 0x1p450) & (abs2(bh) <= 0x1p450))); // products <= 2^900
-    const DD2 p = twoProduct(ah, bh);
-    const V2 t = ah * bl + al * bh;
-    const DD2 r = fastTwoSum(p.hi, p.lo + t);
-    const V2 magA = (1 + 0x1p-50) * abs2(ah), magB = (1 + 0x1p-50) * abs2(bh); // mag() above
-    const V2 e = kSafe * ((((magA * be + magB * ae) + ae * be) + kRel * abs2(r.hi)) + pair(kTiny, kTiny));
-    r0 = {r.hi[0], r.lo[0], e[0]};
-    r1 = {r.hi[1], r.lo[1], e[1]};
-}
-GJK_CORRECT_INLINE Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
-{
-    Approx p, q;
-    mulLanes(cx, a.x, b.x, a.y, b.y, p, q);
-    return add(p, q);
-}
-GJK_CORRECT_INLINE Approx cross(Context& cx, const ApproxVec& a, const ApproxVec& b)
-{
-    Approx p, q;
-    mulLanes(cx, a.x, b.y, a.y, b.x, p, q);
-    return sub(p, q);
-}
 
 // W = xfA * A[i] - xfB * B[j] from the same ten pieces as the scalar Terms (four exact products,
 // their trailing parts, two translations), both coordinates at once: one VecSum pass over the six
@@ -549,7 +212,8 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
 // bound taken at the vertex's own |x| + |y| instead of the shape's largest; so exact(i) >=
 // v_i - eps_i > v_f + eps_f >= exact(f) for a feature vertex f, and no other vertex can attain
 // the minimum: the same conclusion as supportCandidates's candidates all lying in {i1, i2}, for
-// the exact n too (eps covers |n - n.hi| when n's own bound is below 2^-60 of it).
+// the exact n too (eps covers |n - n.hi| when n's own bound is below kDirectionAccuracy of it:
+// refine's guards, below).
 inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
                                   double sign, int i1, int i2)
 {
@@ -625,6 +289,10 @@ inline bool containsOriginCertified(const DistanceInput<double>& in, const Simpl
     return originCertainlyInside(W);
 }
 
+// What the rounding steps below (and refine) return when their bounds cannot decide: any negative
+// value is not an answer, since every answer is >= 0.
+inline constexpr double kUndecided = -1;
+
 // The decision: the exact x lies in [xl, xh] (each an Approx, with its bound). Returns the
 // correctly rounded max(0, x), or a negative value when the bounds cannot decide.
 GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
@@ -636,88 +304,36 @@ GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
         return 0;
     // Positive for sure: xl - err > 0.
     if (!(xl.hi > up(xl.err - xl.lo)))
-        return -1;
+        return kUndecided;
     const double m = xh.hi; // xh rounded to nearest (hi = fl(hi + lo))
     if (!(m >= 0x1p-900 && m <= 0x1p900))
-        return -1;
+        return kUndecided;
     // The neighbours of m > 0 (normal, finite) by its bit pattern, without std::nextafter's call.
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const double gapAbove = std::bit_cast<double>(bits + 1) - m;
     const double gapBelow = m - std::bit_cast<double>(bits - 1);
     // The upper end below the midpoint above m: xh.lo + err < gapAbove / 2.
     if (!(up(xh.lo + xh.err) < 0.5 * gapAbove))
-        return -1;
+        return kUndecided;
     // The lower end above the midpoint below m: (xl.hi - m) + xl.lo - err > -gapBelow / 2.
     // xl.hi - m is exact when xl.hi is within a factor 2 of m (Sterbenz).
     if (!(xl.hi >= 0.5 * m && xl.hi <= 2 * m))
-        return -1;
+        return kUndecided;
     if (!(down(down((xl.hi - m) + xl.lo) - xl.err) > -0.5 * gapBelow))
-        return -1;
+        return kUndecided;
     return m;
 }
 
-// --- Exact ties: floating-point expansions ------------------------------------------------------
+// --- Exact ties ---------------------------------------------------------------------------------
 //
 // Float-engine data make exact ties common: a distance whose exact value has few bits (sums of
 // products of floats) can sit exactly on a midpoint between two doubles, where no bound can
 // decide (5 % of engine/pyramid-toi). When the features are the closest ones and the interval
 // around X = U - rA - rB straddles one midpoint T, the sign of U* - (T + rA + rB) is computed
-// exactly with Shewchuk's expansion arithmetic ("Adaptive precision floating-point arithmetic
-// and fast robust geometric predicates", 1997): an Expansion is a sum of doubles, nonoverlapping,
-// in increasing magnitude, zeros eliminated, exact; its sign is its largest term's. Every product
-// goes through TwoProduct under Terms::addProduct's guard (a failure leaves the query to the
-// exact side). Vertex: U*^2 = |W1|^2; edge: U* = |C| / |e| with C = cross(e, W1), compared as
+// exactly with expansions (gjk/exact_arithmetic.hpp); a guard that fails leaves the query to the
+// exact side. Vertex: U*^2 = |W1|^2; edge: U* = |C| / |e| with C = cross(e, W1), compared as
 // C^2 against T'^2 |e|^2 (T' = T + rA + rB > 0).
-struct Expansion
-{
-    static constexpr int kCapacity = 48; // a nonoverlapping sum of doubles has at most ~40 terms
-    double t[kCapacity];
-    int n = 0;
-};
 
-// e += b exactly (Grow-Expansion with zero elimination).
-inline void grow(Context& cx, Expansion& e, double b)
-{
-    cx.require(std::abs(b) <= 0x1p900);
-    double q = b;
-    int k = 0;
-    for (int i = 0; i < e.n; ++i)
-    {
-        const DD s = twoSum(q, e.t[i]);
-        if (s.lo != 0)
-            e.t[k++] = s.lo;
-        q = s.hi;
-    }
-    if (q != 0)
-    {
-        if (k == Expansion::kCapacity)
-        {
-            cx.require(false);
-            return;
-        }
-        e.t[k++] = q;
-    }
-    e.n = k;
-}
-
-// e += a b exactly (TwoProduct under exactProduct's guard).
-inline void growProduct(Context& cx, Expansion& e, double a, double b)
-{
-    const DD p = twoProduct(a, b);
-    cx.require(exactProduct(a, b, p.hi));
-    grow(cx, e, p.lo);
-    grow(cx, e, p.hi);
-}
-
-// out += sign a b for expansions a, b.
-inline void growProduct(Context& cx, Expansion& out, const Expansion& a, const Expansion& b, double sign)
-{
-    for (int i = 0; i < a.n && cx.ok; ++i)
-        for (int j = 0; j < b.n && cx.ok; ++j)
-            growProduct(cx, out, sign * a.t[i], b.t[j]);
-}
-
-inline int signOf(const Expansion& e) { return e.n == 0 ? 0 : (e.t[e.n - 1] > 0 ? 1 : -1); }
 
 // The exact point W(i, j) of Z, both coordinates: the exact pieces of Terms (addWorldPoint), summed
 // into expansions.
@@ -789,7 +405,7 @@ inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCach
     using certify::up;
     const double m = xh.hi;
     if (!(m >= 0x1p-900 && m <= 0x1p900) || !(xh.hi > up(xh.err - xh.lo)))
-        return -1;
+        return kUndecided;
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const double below = std::bit_cast<double>(bits - 1), above = std::bit_cast<double>(bits + 1);
     const double halfBelow = 0.5 * (m - below), halfAbove = 0.5 * (above - m); // exact
@@ -802,10 +418,10 @@ inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCach
     else if (dLow <= -halfBelow && dHigh < halfAbove && dLow > -2 * halfBelow)
         lo = below, hi = m, tLo = -halfBelow; // below < X < m
     else
-        return -1;
+        return kUndecided;
     const int side = exactSideOfTarget(in, cache, m, tLo, rA, rB);
     if (side == 2)
-        return -1;
+        return kUndecided;
     if (side != 0)
         return side > 0 ? hi : lo;
     return (std::bit_cast<std::uint64_t>(lo) & 1) == 0 ? lo : hi; // a tie: the even one
@@ -887,162 +503,177 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
 {
     const double m = double(X);
     if (!(m >= 0x1p-1000 && m <= 0x1p1000))
-        return -1;
+        return kUndecided;
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
     const Ext gapAbove = Ext(std::bit_cast<double>(bits + 1)) - m, gapBelow = Ext(m) - std::bit_cast<double>(bits - 1);
     const Ext d = X - m;
-    return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : -1;
+    return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : kUndecided;
 }
 
-// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
-// cache the plain query returned: its index pairs are the final features. Out of line, so that
-// gjk::distance does not carry its code and stack frame into the default query.
-[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
-                   DistanceOutput<double>& out)
+// --- The refinement: refine and its steps --------------------------------------------------------
+
+// refine's guards, each with the derivation of its value.
+// The largest radius refined: the range of every guard of gjk/exact_arithmetic.hpp (pieces and
+// products at most 2^900), so that r = rA + rB and U - r stay far from overflow.
+inline constexpr double kMaxRadius = 0x1p900;
+// An edge e = W2 - W1 whose bound exceeds this fraction of |e| (cancellation: a short edge far from
+// the origin) is recomputed from the shapes' local differences, where the translations cancel
+// before any rounding. 2^-80 keeps e's share of U's relative bound below the extended stage's own
+// rounding (2^-64) and far below the half ulp (2^-53) the rounding must resolve, and an edge's n
+// (e turned) within kDirectionAccuracy.
+inline constexpr double kEdgeAccuracy = 0x1p-80;
+// featuresAttainSupport's certificate holds for the exact direction n too when n's own bound is
+// below this fraction of n: its eps, 8u (|c| + |s|) max|n| (|x| + |y|), exceeds the roundings it
+// covers (5u: supportCandidates) by 3u = 2^-51.4 of that scale, far more than the
+// 2^-60 (|c| + |s|) max|n| (|x| + |y|) such a direction error can move a vertex's value.
+inline constexpr double kDirectionAccuracy = 0x1p-60;
+// An absolute slack beside the relative kSafe in a candidate's reach (lowestSupportValue), as in
+// signOfDot and supportCandidates: it keeps the widened bound rigorous for values so small that a
+// relative margin vanishes (near underflow, multiples of 2^-1074), and lies far below any distance
+// the refinement decides (roundInterval and roundAtMidpoint answer only from 2^-900 on).
+inline constexpr double kUnderflowMargin = 0x1p-1000;
+
+// The features the plain query ended on, as points of Z in double-double with their bounds.
+struct Features
 {
-    out.path = CorrectPath::NeedsExact;
-    const double rA = options.useRadii ? in.proxyA.radius : 0.0;
-    const double rB = options.useRadii ? in.proxyB.radius : 0.0;
-    if (out.outOfRange || !(rA <= 0x1p900 && rB <= 0x1p900))
-        return;
-    const DD rs = twoSum(rA, rB);
-    const Approx r = {rs.hi, rs.lo, 0};
+    int a1 = 0, b1 = 0, a2 = 0, b2 = 0; // index pairs of the simplex; a vertex has a2 = a1, b2 = b1
+    bool isEdge = false;
+    ApproxVec W1, W2, e; // W(a1, b1); an edge's W(a2, b2) and e = W2 - W1
+    Approx unum;         // an edge's cross(e, W1) = cross(W2, W1): U's numerator
+    ApproxVec n, nv;     // the direction towards Z (n.W1 > 0), and n's values as an exact direction
+    int attained = -1;   // supportAttained's answer once evaluated: 1 or 0 (-1: not yet)
+};
 
-    if (cache.count == 3)
-    {
-        if (out.stop != StopReason::Containment ||
-            !(containsOriginFiltered(in, cache) || containsOriginCertified(in, cache)))
-            return;
-        // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
-        out.path = CorrectPath::Double;
-        out.distance = 0;
-        return;
-    }
+GJK_CORRECT_INLINE ApproxVec valuesOf(const ApproxVec& v) { return {{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; }
 
-    // The output of a decided answer (a negative one: not decided).
-    auto finish = [&out](double answer, CorrectPath path = CorrectPath::DoubleDouble)
+// Writes a decided answer (a negative one is not decided) with its path; false when not written.
+// Plain `inline`, as supportAttained: the compiler keeps both out of line, as it did the lambdas
+// they were.
+inline bool writeAnswer(DistanceOutput<double>& out, double answer, CorrectPath path)
+{
+    if (!(answer >= 0))
+        return false;
+    if (answer > 0 && !(out.distance > 0))
+        return false; // a plain overlap answer: the exact completion gives the witness points
+    if (answer == 0 && out.distance > 0)
     {
-        if (!(answer >= 0))
-            return;
-        if (answer > 0 && !(out.distance > 0))
-            return; // a plain overlap answer: the exact completion gives the witness points
-        if (answer == 0 && out.distance > 0)
-        {
-            const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
-            out.pointA = out.pointB = mid;
-            out.normal = {};
-        }
-        out.distance = answer;
-        out.path = path;
-    };
-    const int a1 = cache.indexA[0], b1 = cache.indexB[0];
-    Context cx;
-    const ApproxVec W1 = minkowskiPoint(cx, in, a1, b1);
-    ApproxVec W2{}, n{}, e{};
-    // For an edge, unum = cross(e, W1).
-    Approx unum;
-    auto valuesOf = [](const ApproxVec& v) { return ApproxVec{{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; };
-    const bool isEdge = cache.count == 2;
-    if (!isEdge)
-    {
-        // Vertex feature: n = W1, U = |W1|.
-        n = W1;
-        if (!cx.ok)
-            return;
+        const Vec2<double> mid = 0.5 * (out.pointA + out.pointB);
+        out.pointA = out.pointB = mid;
+        out.normal = {};
     }
-    else
-    {
-        // Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to
-        // the segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0.
-        // e = W2 - W1; recomputed from the shapes' local differences (the translations cancel
-        // before any rounding) when that difference is not accurate to 2^-80 of e.
-        // cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
-        const int a2 = cache.indexA[1], b2 = cache.indexB[1];
-        W2 = minkowskiPoint(cx, in, a2, b2);
-        unum = cross(cx, W2, W1);
-        e = {sub(W2.x, W1.x), sub(W2.y, W1.y)};
-        if (!(std::max(e.x.err, e.y.err) <= 0x1p-80 * std::max(std::abs(e.x.hi), std::abs(e.y.hi))))
-            e = minkowskiEdge(cx, in, a1, b1, a2, b2);
-        if (!cx.ok || signOfDot(W2, e) != 1 || signOfDot(W1, e) != -1)
-            return;
-        // n: the perpendicular of e towards Z (n.W1 > 0).
-        n = unum.hi > 0 ? ApproxVec{negate(e.y), e.x} : ApproxVec{e.y, negate(e.x)};
-    }
+    out.distance = answer;
+    out.path = path;
+    return true;
+}
+
+// A triangle simplex (CorrectPath::Double): the hulls overlap for certain when the plain query
+// stopped on containment and the three orientation signs are certified in double.
+GJK_CORRECT_INLINE bool containmentCertified(const DistanceInput<double>& in, const SimplexCache& cache,
+                                             const DistanceOutput<double>& out)
+{
+    return out.stop == StopReason::Containment &&
+           (containsOriginFiltered(in, cache) || containsOriginCertified(in, cache));
+}
+
+// Edge feature W1 W2: the distance to its line, |cross(e, W1)| / |e|, is the distance to the
+// segment when the origin projects inside it: u = W2.e > 0 and v = -W1.e > 0. e = W2 - W1;
+// recomputed from the shapes' local differences when that difference is not accurate to
+// kEdgeAccuracy of e. cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
+// False when a guard fails or the projection is not certainly inside.
+GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in, Features& f)
+{
+    f.W2 = minkowskiPoint(cx, in, f.a2, f.b2);
+    f.unum = cross(cx, f.W2, f.W1);
+    f.e = {sub(f.W2.x, f.W1.x), sub(f.W2.y, f.W1.y)};
+    if (!(std::max(f.e.x.err, f.e.y.err) <= kEdgeAccuracy * std::max(std::abs(f.e.x.hi), std::abs(f.e.y.hi))))
+        f.e = minkowskiEdge(cx, in, f.a1, f.b1, f.a2, f.b2);
+    if (!cx.ok || signOfDot(f.W2, f.e) != 1 || signOfDot(f.W1, f.e) != -1)
+        return false;
+    // n: the perpendicular of e towards Z (n.W1 > 0).
+    f.n = f.unum.hi > 0 ? ApproxVec{negate(f.e.y), f.e.x} : ApproxVec{f.e.y, negate(f.e.x)};
+    return true;
+}
+
+// The final features of a one- or two-point simplex, their points of Z and direction n. False
+// when a guard fails or an edge's side is not decided (the caller then needs exact).
+GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in, const SimplexCache& cache,
+                                   Features& f)
+{
+    f.isEdge = cache.count == 2;
+    f.a1 = cache.indexA[0], f.b1 = cache.indexB[0];
+    f.a2 = f.isEdge ? cache.indexA[1] : f.a1, f.b2 = f.isEdge ? cache.indexB[1] : f.b1;
+    f.W1 = minkowskiPoint(cx, in, f.a1, f.b1);
+    if (!f.isEdge)
+        f.n = f.W1; // vertex feature: n = W1, U = |W1|
+    else if (!edgeFeature(cx, in, f))
+        return false;
     if (!cx.ok)
-        return;
+        return false;
+    f.nv = valuesOf(f.n);
+    return true;
+}
 
-    // The common case: the features' own vertices attain the support of each shape along n, for
-    // the exact n too (n's own bound below 2^-60 of it: featuresAttainSupport). Then the minimum
-    // of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
-    // edge of one shape against a vertex of the other, n is perpendicular to that edge, so both
-    // its ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin
-    // lies on the feature (u, v > 0 above): d* = U exactly, and L is not needed. Evaluated once,
-    // when first needed.
-    const ApproxVec nv = valuesOf(n);
-    const int a2 = isEdge ? cache.indexA[1] : a1, b2 = isEdge ? cache.indexB[1] : b1;
-    int attained = -1;
-    auto supportAttained = [&]
-    {
-        if (attained < 0)
-            attained = std::max(n.x.err, n.y.err) <= 0x1p-60 * std::max(std::abs(n.x.hi), std::abs(n.y.hi)) &&
-                       (a1 == a2 || b1 == b2) && featuresAttainSupport(in.proxyA, in.transformA, nv, 1, a1, a2) &&
-                       featuresAttainSupport(in.proxyB, in.transformB, nv, -1, b1, b2);
-        return attained == 1;
-    };
+// The common case: the features' own vertices attain the support of each shape along n, for
+// the exact n too (n's own bound below kDirectionAccuracy of it: featuresAttainSupport). Then the
+// minimum of n.z over Z is attained at the feature: for a vertex W1 (n = W1), n.z >= n.W1; for an
+// edge of one shape against a vertex of the other, n is perpendicular to that edge, so both its
+// ends give n.W1. Z lies in the half-plane n.z >= n.W1, whose closest point to the origin lies on
+// the feature (u, v > 0: edgeFeature): d* = U exactly, and L is not needed. Evaluated once, when
+// first needed.
+inline bool supportAttained(const DistanceInput<double>& in, Features& f)
+{
+    if (f.attained < 0)
+        f.attained = std::max(f.n.x.err, f.n.y.err) <=
+                         kDirectionAccuracy * std::max(std::abs(f.n.x.hi), std::abs(f.n.y.hi)) &&
+                     (f.a1 == f.a2 || f.b1 == f.b2) &&
+                     featuresAttainSupport(in.proxyA, in.transformA, f.nv, 1, f.a1, f.a2) &&
+                     featuresAttainSupport(in.proxyB, in.transformB, f.nv, -1, f.b1, f.b2);
+    return f.attained == 1;
+}
 
-    // CorrectPath::Extended: the square root, the quotient and the rounding in extended
-    // precision, where the double-double ones are the longest chains of dependent operations.
+// CorrectPath::Extended: the square root, the quotient and the rounding in extended precision,
+// where the double-double ones are the longest chains of dependent operations. True when it
+// decided (the answer written).
+GJK_CORRECT_INLINE bool decideExtended(const DistanceInput<double>& in, Features& f, double rA, double rB,
+                                       DistanceOutput<double>& out)
+{
     if constexpr (kExtended)
     {
         Ext X, eX;
-        if (extendedPrecisionOn() && distanceExtended(isEdge ? e : W1, isEdge ? &unum : nullptr, rA, rB, X, eX))
-        {
-            double answer = -1;
-            if (X + eX <= 0)
-                answer = 0; // apart by less than the radii (U* bounds d* from above: a point of Z)
-            else if (X - eX > 0 && supportAttained())
-                answer = roundExtended(X, eX);
-            finish(answer, CorrectPath::Extended);
-            if (out.path == CorrectPath::Extended)
-                return;
-        }
+        if (!extendedPrecisionOn() ||
+            !distanceExtended(f.isEdge ? f.e : f.W1, f.isEdge ? &f.unum : nullptr, rA, rB, X, eX))
+            return false;
+        double answer = kUndecided;
+        if (X + eX <= 0)
+            answer = 0; // apart by less than the radii (U* bounds d* from above: a point of Z)
+        else if (X - eX > 0 && supportAttained(in, f))
+            answer = roundExtended(X, eX);
+        return writeAnswer(out, answer, CorrectPath::Extended);
     }
+    else
+        return false;
+}
 
-    // sq = |n_v|^2 for the direction n_v = n's values; the exact length (|W1| or |e|) lies within
-    // lengthErr of |n_v|.
-    const ApproxVec& v = isEdge ? e : W1;
+// U, the distance from the origin to the feature (|W1|, or |cross(e, W1)| / |e|), in double-double
+// with its bound. normV = |n_v| for the direction n_v = n's values (sq = |n_v|^2); the exact
+// length (|W1| or |e|) lies within lengthErr of it.
+GJK_CORRECT_INLINE Approx upperBound(Context& cx, const Features& f, Approx& normV)
+{
+    const ApproxVec& v = f.isEdge ? f.e : f.W1;
     const Approx sq = dot(cx, valuesOf(v), valuesOf(v));
     const double lengthErr = v.x.err + v.y.err;
-    const Approx normV = squareRoot(cx, sq);
+    normV = squareRoot(cx, sq);
     if (!cx.ok)
-        return;
-    const Approx U = isEdge ? div(cx, absolute(unum), {normV.hi, normV.lo, (normV.err + lengthErr) * kSafe})
-                            : Approx{normV.hi, normV.lo, (normV.err + lengthErr) * kSafe};
-    if (!cx.ok)
-        return;
-    const Approx xh = sub(U, r);
-    // Apart by less than the radii: 0 whatever the other bound.
-    if (xh.hi <= -certify::up(xh.lo + xh.err))
-    {
-        finish(0);
-        return;
-    }
-    if (isEdge && !(std::abs(unum.hi) > unum.err * kSafe + std::abs(unum.lo)))
-        return; // the origin on (or too near) the edge's line: the side is not decided
-    if (supportAttained())
-    {
-        const double answer = roundInterval(xh, xh);
-        finish(answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB));
-        return;
-    }
-    // L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
-    // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|.
-    // Otherwise L from the few vertices that can attain the support.
-    int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
-    const int ca = supportCandidates(in.proxyA, in.transformA, nv, 1, candA);
-    const int cb = supportCandidates(in.proxyB, in.transformB, nv, -1, candB);
-    if (ca > kMaxCandidates || cb > kMaxCandidates)
-        return;
+        return {};
+    const Approx length = {normV.hi, normV.lo, (normV.err + lengthErr) * kSafe};
+    return f.isEdge ? div(cx, absolute(f.unum), length) : length;
+}
+
+// The lowest of n_v.W over the candidate pairs' points W of Z, its bound widened to cover every
+// other value's lower end: the minimum of the exact values lies within it.
+GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<double>& in, const Features& f,
+                                             const int* candA, int ca, const int* candB, int cb)
+{
     Approx lowest;
     bool first = true;
     double lowestEnd = 0;
@@ -1054,10 +685,10 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
         for (int j = 0; j < cb; ++j)
         {
             const int ia = candA[i], jb = candB[j];
-            const ApproxVec W = (ia == a1 && jb == b1) ? W1
-                                : (isEdge && ia == cache.indexA[1] && jb == cache.indexB[1]) ? W2
-                                                                                              : minkowskiPoint(cx, in, ia, jb);
-            const Approx value = dot(cx, nv, W);
+            const ApproxVec W = (ia == f.a1 && jb == f.b1)                   ? f.W1
+                                : (f.isEdge && ia == f.a2 && jb == f.b2) ? f.W2
+                                                                         : minkowskiPoint(cx, in, ia, jb);
+            const Approx value = dot(cx, f.nv, W);
             his[count] = value.hi;
             los[count] = value.lo;
             errs[count++] = value.err;
@@ -1069,16 +700,78 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
                 first = false;
             }
         }
-    // The minimum lies within lowest's bound, widened to cover every other value's lower end.
     for (int k = 0; k < count; ++k)
     {
-        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + 0x1p-1000;
+        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + kUnderflowMargin;
         lowest.err = std::max(lowest.err, reach);
     }
-    const Approx L = div(cx, lowest, normV);
+    return lowest;
+}
+
+// L: the support bound along n_v = (n.x.hi + n.x.lo, n.y.hi + n.y.lo), taken as an exact
+// direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|,
+// from the few vertices that can attain the support. False when there are too many candidates
+// or a guard fails.
+GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in, const Features& f,
+                                   const Approx& normV, Approx& L)
+{
+    int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
+    const int ca = supportCandidates(in.proxyA, in.transformA, f.nv, 1, candA);
+    const int cb = supportCandidates(in.proxyB, in.transformB, f.nv, -1, candB);
+    if (ca > kMaxCandidates || cb > kMaxCandidates)
+        return false;
+    L = div(cx, lowestSupportValue(cx, in, f, candA, ca, candB, cb), normV);
+    return cx.ok;
+}
+
+// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
+// cache the plain query returned: its index pairs are the final features. Out of line, so that
+// gjk::distance does not carry its code and stack frame into the default query.
+[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
+                                     DistanceOutput<double>& out)
+{
+    out.path = CorrectPath::NeedsExact;
+    const double rA = options.useRadii ? in.proxyA.radius : 0.0;
+    const double rB = options.useRadii ? in.proxyB.radius : 0.0;
+    if (out.outOfRange || !(rA <= kMaxRadius && rB <= kMaxRadius))
+        return;
+    const DD rs = twoSum(rA, rB);
+    const Approx r = {rs.hi, rs.lo, 0};
+    if (cache.count == 3)
+    {
+        if (!containmentCertified(in, cache, out))
+            return;
+        // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
+        out.path = CorrectPath::Double;
+        out.distance = 0;
+        return;
+    }
+    Context cx;
+    Features f;
+    if (!featuresOf(cx, in, cache, f) || decideExtended(in, f, rA, rB, out))
+        return;
+    Approx normV;
+    const Approx U = upperBound(cx, f, normV);
     if (!cx.ok)
         return;
-    finish(roundInterval(sub(L, r), xh));
+    const Approx xh = sub(U, r);
+    // Apart by less than the radii: 0 whatever the other bound.
+    if (xh.hi <= -certify::up(xh.lo + xh.err))
+    {
+        writeAnswer(out, 0, CorrectPath::DoubleDouble);
+        return;
+    }
+    if (f.isEdge && !(std::abs(f.unum.hi) > f.unum.err * kSafe + std::abs(f.unum.lo)))
+        return; // the origin on (or too near) the edge's line: the side is not decided
+    if (supportAttained(in, f))
+    {
+        const double answer = roundInterval(xh, xh);
+        writeAnswer(out, answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB), CorrectPath::DoubleDouble);
+        return;
+    }
+    Approx L;
+    if (lowerBound(cx, in, f, normV, L))
+        writeAnswer(out, roundInterval(sub(L, r), xh), CorrectPath::DoubleDouble);
 }
 
 } // namespace gjk::correct
