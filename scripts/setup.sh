@@ -2,7 +2,8 @@
 # Installs the Debian packages this project needs, only when some are missing.
 #   scripts/setup.sh          packages to build and run the validation campaign
 #   scripts/setup.sh --tests  also what the test suite alone needs: Chromium and Python for the browser
-#                             tests, clang (clang++) for the flag builds (CTest label flags)
+#                             tests, clang (clang++) for the flag builds (CTest label flags),
+#                             clang-format (14, Debian 12's) for the format check
 #   scripts/setup.sh --fuzz   also what the fuzz targets need (clang 14 and its libFuzzer/sanitizer runtimes)
 # Exit codes: 0 everything present (or installed), 3 packages missing and we cannot install them
 # (not root, or no apt-get): the exact command to run is printed.
@@ -17,7 +18,7 @@ packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
           openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
 if [[ "${1:-}" == "--tests" ]]; then
-  packages+=(chromium python3 clang)
+  packages+=(chromium python3 clang clang-format)
 fi
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang-14 libclang-rt-14-dev)
