@@ -995,7 +995,7 @@ std::string writeCampaign(const Campaign& camp, StagedDir& out)
     out.write("report.md", renderMarkdown(camp.report));
     out.write("worst-cases.json", caseFileText(camp.worstComments, camp.worstCases));
 #if defined(GJK2D_HAVE_HTML)
-    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump())));
+    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(camp.report.dump()), kReportSchema));
     const std::string page = "index.html";
 #else
     const std::string page = "report.md";

@@ -1,5 +1,6 @@
 #include "evaluate/plugins.hpp"
 
+#include "common/output.hpp" // writeAllBytes
 #include "evaluate/evaluate.hpp"
 
 #include <fmt/format.h>
@@ -326,22 +327,6 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
     return callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d,
                                                          shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
                                                          shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
-}
-
-bool writeAllBytes(int fd, const void* data, std::size_t n)
-{
-    const char* p = static_cast<const char*>(data);
-    while (n > 0)
-    {
-        const ssize_t w = ::write(fd, p, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return false;
-        p += w;
-        n -= std::size_t(w);
-    }
-    return true;
 }
 
 std::mutex g_messages; // crash and hang lines on stderr
