@@ -362,17 +362,12 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
 }
 } // namespace
 
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+namespace
 {
-    const double u = unitRoundoff(scalar);
-    const bool truthZero = exactIsZero(truth);
-    v.truth = truth.distance;
-    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
-                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
-                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
-                  !std::isfinite(v.normal[1]);
-    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-    const double td = truth.distance;
+// The answer's errors against the truth td: absolute, relative, in ulps, normalised, against the
+// bound, and the witness gap ||pB - pA|| - distance; all infinite for a non-finite answer.
+void measureErrors(VariantOutcome& v, double td, Scalar scalar)
+{
     if (v.nonfinite)
     {
         v.abs = v.normalized = v.boundRatio = kInf;
@@ -380,35 +375,50 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
         v.ulps = td > 0 ? kInf : kNaN;
         v.witnessGap = kInf;
         v.beyondBound = true;
+        return;
     }
-    else
-    {
-        v.abs = std::abs(v.distance - td);
-        v.rel = td > 0 ? v.abs / td : kNaN;
-        v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
-        v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
-        v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-        v.witnessGap =
-            std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
-        v.beyondBound = !(v.abs <= v.bound);
-        if (!v.outOfRange)
-        {
-            // A negative distance claims overlap (and is not a distance): on separated shapes a
-            // false overlap whatever its error.
-            if (truthZero && v.distance > 0)
-                v.mis = Misclass::FalseSeparation;
-            else if (!truthZero && v.distance <= 0)
-                v.mis = Misclass::FalseOverlap;
-            if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
-                v.mis = Misclass::Undecidable;
-            // The answer's own contract, first part (the witness points' distances to their
-            // shapes are measured in phase 3, checkWitnesses, which may replace WitnessGap).
-            if (v.distance < 0)
-                v.invalid = Invalid::NegativeDistance;
-            else if (!(v.witnessGap <= v.witnessBound))
-                v.invalid = Invalid::WitnessGap;
-        }
-    }
+    const double u = unitRoundoff(scalar);
+    v.abs = std::abs(v.distance - td);
+    v.rel = td > 0 ? v.abs / td : kNaN;
+    v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
+    v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
+    v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
+    v.witnessGap =
+        std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+    v.beyondBound = !(v.abs <= v.bound);
+}
+
+// A finite answer in range: its claim of overlap against the truth's, and its own contract.
+void classifyAnswer(VariantOutcome& v, bool truthZero)
+{
+    // A negative distance claims overlap (and is not a distance): on separated shapes a false
+    // overlap whatever its error.
+    if (truthZero && v.distance > 0)
+        v.mis = Misclass::FalseSeparation;
+    else if (!truthZero && v.distance <= 0)
+        v.mis = Misclass::FalseOverlap;
+    if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
+        v.mis = Misclass::Undecidable;
+    // The answer's own contract, first part (the witness points' distances to their shapes are
+    // measured in phase 3, checkWitnesses, which may replace WitnessGap).
+    if (v.distance < 0)
+        v.invalid = Invalid::NegativeDistance;
+    else if (!(v.witnessGap <= v.witnessBound))
+        v.invalid = Invalid::WitnessGap;
+}
+} // namespace
+
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+{
+    v.truth = truth.distance;
+    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
+                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
+                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
+                  !std::isfinite(v.normal[1]);
+    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
+    measureErrors(v, truth.distance, scalar);
+    if (!v.nonfinite && !v.outOfRange)
+        classifyAnswer(v, exactIsZero(truth));
     // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
     // value strictly between): the double interval [lower, upper] contains it iff it contains
     // that enclosure.
@@ -434,6 +444,60 @@ void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& o
     exact::completeCorrectlyRounded(in, options, out);
 }
 
+namespace
+{
+// Plugin variant k's answer, which answerPluginVariants gave: false when there is nothing to judge
+// (refused: skipped; an error status, a crash or a hang: failed).
+bool takePluginAnswer(const CaseOutcome& out, std::size_t k, const VariantInfo& vi,
+                      VariantOutcome& v)
+{
+    if (out.external.size() != out.variants.size() ||
+        out.external[k].status == PluginStatus::NotRun)
+        throw std::logic_error("runVariants: plugin variant '" + vi.name +
+                               "' has no answer (answerPluginVariants not run)");
+    const ExternalAnswer& a = out.external[k];
+    v.plugin = a.status;
+    v.pluginDetail = a.detail;
+    if (a.status == PluginStatus::Refused)
+    {
+        v.skipped = true;
+        return false;
+    }
+    if (a.status != PluginStatus::Ok)
+    {
+        v.failed = true;
+        return false;
+    }
+    v.distance = a.distance;
+    v.pointA = a.pointA;
+    v.pointB = a.pointB;
+    // The implementation gives no normal: the unit vector from A's witness to B's.
+    const double dx = a.pointB[0] - a.pointA[0], dy = a.pointB[1] - a.pointA[1];
+    const double len = std::hypot(dx, dy);
+    v.normal = len > 0 ? std::array<double, 2>{dx / len, dy / len} : std::array<double, 2>{0, 0};
+    v.iterations = a.iterations;
+    return true;
+}
+
+// gjk2d's answer for the variant: the worst of every start's, or the (batch-checked) query's.
+void runQuery(const Case& c, const PreparedCase& p, const VariantInfo& vi, double truth,
+              VariantOutcome& v)
+{
+    const bool isFloat = vi.scalar == Scalar::Float;
+    if (vi.start == Start::EveryStart)
+    {
+        if (isFloat)
+            fillOutput(worstStart<float>(p, vi, truth), v);
+        else
+            fillOutput(worstStart<double>(p, vi, truth), v);
+    }
+    else if (isFloat)
+        fillOutput(checkedQuery<float>(c, p, vi), v);
+    else
+        fillOutput(checkedQuery<double>(c, p, vi), v);
+}
+} // namespace
+
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
 {
     out.variants.assign(ctx.variants.size(), {});
@@ -452,46 +516,10 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             continue;
         }
         const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
-        if (vi.plugin)
-        {
-            if (out.external.size() != ctx.variants.size() ||
-                out.external[k].status == PluginStatus::NotRun)
-                throw std::logic_error("runVariants: plugin variant '" + vi.name +
-                                       "' has no answer (answerPluginVariants not run)");
-            const ExternalAnswer& a = out.external[k];
-            v.plugin = a.status;
-            v.pluginDetail = a.detail;
-            if (a.status == PluginStatus::Refused)
-            {
-                v.skipped = true;
-                continue;
-            }
-            if (a.status != PluginStatus::Ok)
-            {
-                v.failed = true;
-                continue;
-            }
-            v.distance = a.distance;
-            v.pointA = a.pointA;
-            v.pointB = a.pointB;
-            // The implementation gives no normal: the unit vector from A's witness to B's.
-            const double dx = a.pointB[0] - a.pointA[0], dy = a.pointB[1] - a.pointA[1];
-            const double len = std::hypot(dx, dy);
-            v.normal = len > 0 ? std::array<double, 2>{dx / len, dy / len}
-                               : std::array<double, 2>{0, 0};
-            v.iterations = a.iterations;
-        }
-        else if (vi.start == Start::EveryStart)
-        {
-            if (isFloat)
-                fillOutput(worstStart<float>(p, vi, truth.distance), v);
-            else
-                fillOutput(worstStart<double>(p, vi, truth.distance), v);
-        }
-        else if (isFloat)
-            fillOutput(checkedQuery<float>(c, p, vi), v);
-        else
-            fillOutput(checkedQuery<double>(c, p, vi), v);
+        if (vi.plugin && !takePluginAnswer(out, k, vi, v))
+            continue;
+        if (!vi.plugin)
+            runQuery(c, p, vi, truth.distance, v);
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         boundsOf(vi, c, scales.get(false, isFloat), truth.distance, v);
@@ -499,12 +527,52 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
     }
 }
 
+namespace
+{
+// A case's shapes on the exact side, as given and rounded to float, converted when first needed.
+class ExactShapes
+{
+  public:
+    explicit ExactShapes(const Case& c) : c_(c) {}
+    const exact::Shape& a(bool isFloat) { return get(isFloat).first; }
+    const exact::Shape& b(bool isFloat) { return get(isFloat).second; }
+
+  private:
+    const std::pair<exact::Shape, exact::Shape>& get(bool isFloat)
+    {
+        const int t = isFloat ? 1 : 0;
+        if (!have_[t])
+        {
+            shapes_[t] = {toExact(c_.a, isFloat), toExact(c_.b, isFloat)};
+            have_[t] = true;
+        }
+        return shapes_[t];
+    }
+    const Case& c_;
+    std::pair<exact::Shape, exact::Shape> shapes_[2];
+    bool have_[2] = {false, false};
+};
+
+// The witness verdict (judge() left the rest): off its shape comes before the gap.
+void judgeWitnesses(VariantOutcome& v, double wa, double wb)
+{
+    v.witness = std::max(wa, wb);
+    const double worst = std::max(v.witness, v.witnessGap);
+    v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
+    if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
+        !(v.witness <= v.witnessBound))
+    {
+        v.invalid = Invalid::WitnessOffShape;
+        v.failed = true;
+    }
+}
+} // namespace
+
 void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     if (!out.rejected.empty())
         return;
-    exact::Shape ea, eb, fa, fb;
-    bool haveD = false, haveF = false;
+    ExactShapes shapes(c);
     const std::size_t nv = ctx.variants.size();
     std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
     std::vector<char> done(nv, 0);
@@ -514,20 +582,6 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         if (v.skipped || v.nonfinite || (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
             continue;
         const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
-        if (isFloat && !haveF)
-        {
-            fa = toExact(c.a, true);
-            fb = toExact(c.b, true);
-            haveF = true;
-        }
-        if (!isFloat && !haveD)
-        {
-            ea = toExact(c.a);
-            eb = toExact(c.b);
-            haveD = true;
-        }
-        const exact::Shape& sa = isFloat ? fa : ea;
-        const exact::Shape& sb = isFloat ? fb : eb;
         // Variants often return the very same witness points (same scalar type): each distinct
         // point is measured once per case (the exact query dominates the campaign's time).
         double wa = -1, wb = -1;
@@ -542,22 +596,13 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
                 wb = witnessB[j];
         }
         if (wa < 0)
-            wa = exact::pointToShapeDistance(sa, {v.pointA[0], v.pointA[1]});
+            wa = exact::pointToShapeDistance(shapes.a(isFloat), {v.pointA[0], v.pointA[1]});
         if (wb < 0)
-            wb = exact::pointToShapeDistance(sb, {v.pointB[0], v.pointB[1]});
+            wb = exact::pointToShapeDistance(shapes.b(isFloat), {v.pointB[0], v.pointB[1]});
         witnessA[k] = wa;
         witnessB[k] = wb;
         done[k] = 1;
-        v.witness = std::max(wa, wb);
-        const double worst = std::max(v.witness, v.witnessGap);
-        v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
-        // The witness verdict (judge() left the rest): off its shape comes before the gap.
-        if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
-            !(v.witness <= v.witnessBound))
-        {
-            v.invalid = Invalid::WitnessOffShape;
-            v.failed = true;
-        }
+        judgeWitnesses(v, wa, wb);
     }
 }
 
