@@ -30,7 +30,7 @@ int main(int argc, char** argv)
         const nlohmann::json data = nlohmann::json::parse(in);
         std::string html;
         if (mode == "report")
-            html = gjk_html::renderReport(data);
+            html = gjk_html::renderReport(data, "gjk-report/1"); // kReportSchema (report/report.hpp)
         else if (mode == "case")
         {
             if (data.contains("worst"))

@@ -15,6 +15,10 @@ using nlohmann::json;
 
 namespace
 {
+// The report format the pages are made for: kReportSchema (validation/src/report/report.hpp), which
+// this test, linking gjk_html alone, cannot include.
+constexpr const char* kSchema = "gjk-report/1";
+
 
 json loadFixture(const std::string& name)
 {
@@ -72,7 +76,7 @@ void checkSelfContained(const std::string& page)
 void checkTemplateFilled(const std::string& page)
 {
     CHECK(page.rfind("<!DOCTYPE html>", 0) == 0);
-    for (const char* placeholder : {"@MODE@", "/*@CSS@*/", "@DATA@", "/*@JS@*/"})
+    for (const char* placeholder : {"@MODE@", "@SCHEMA@", "/*@CSS@*/", "@DATA@", "/*@JS@*/"})
         CHECK(page.find(placeholder) == std::string::npos);
     // Three script elements (error hook, data, page script), and nothing else closes one.
     CHECK(count(page, "<script") == 3);
@@ -85,10 +89,11 @@ void checkTemplateFilled(const std::string& page)
 TEST_CASE("renderReport on the realistic fixture is a complete, self-contained page", "[html]")
 {
     const json report = loadFixture("report.json");
-    const std::string page = gjk_html::renderReport(report);
+    const std::string page = gjk_html::renderReport(report, kSchema);
     checkTemplateFilled(page);
     checkSelfContained(page);
-    CHECK(page.find("<html lang=\"en\" data-mode=\"report\">") != std::string::npos);
+    CHECK(page.find("<html lang=\"en\" data-mode=\"report\" data-schema=\"gjk-report/1\">") !=
+          std::string::npos);
     // The page's own code is inlined: CSS and the viewer's JS are there.
     CHECK(page.find("Viewer.prototype.drawMinkowski") != std::string::npos);
     CHECK(page.find("--pass:") != std::string::npos);
@@ -97,7 +102,7 @@ TEST_CASE("renderReport on the realistic fixture is a complete, self-contained p
 TEST_CASE("the data block parses back to the report, with every family", "[html]")
 {
     const json report = loadFixture("report.json");
-    const std::string page = gjk_html::renderReport(report);
+    const std::string page = gjk_html::renderReport(report, kSchema);
     const json back = json::parse(dataBlock(page));
     CHECK(back == report);
     REQUIRE(back["families"].size() == report["families"].size());
@@ -118,7 +123,7 @@ TEST_CASE("markup inside strings cannot close or disturb the data block", "[html
     json report = loadFixture("report.json");
     report["context"]["host"] = "</SCRIPT><!--<script>alert(1)</script>-->&amp;";
     report["families"][0]["name"] = "</script >";
-    const std::string page = gjk_html::renderReport(report);
+    const std::string page = gjk_html::renderReport(report, kSchema);
     const std::string data = dataBlock(page);
     CHECK(data.find('<') == std::string::npos);
     CHECK(data.find('>') == std::string::npos);
@@ -161,7 +166,7 @@ TEST_CASE("pages render from sparse or odd data without throwing", "[html]")
                           json::parse(R"({"families": [{"name": "f"}], "worst": [{}]})")})
     {
         std::string page;
-        REQUIRE_NOTHROW(page = gjk_html::renderReport(j));
+        REQUIRE_NOTHROW(page = gjk_html::renderReport(j, kSchema));
         checkTemplateFilled(page);
         checkSelfContained(page);
         CHECK(json::parse(dataBlock(page)) == j);
@@ -170,13 +175,13 @@ TEST_CASE("pages render from sparse or odd data without throwing", "[html]")
     }
     // Non-finite doubles (which JSON cannot hold) become null rather than invalid JSON.
     const json nan = {{"x", std::numeric_limits<double>::quiet_NaN()}, {"y", std::numeric_limits<double>::infinity()}};
-    CHECK(json::parse(dataBlock(gjk_html::renderReport(nan)))["x"].is_null());
+    CHECK(json::parse(dataBlock(gjk_html::renderReport(nan, kSchema)))["x"].is_null());
 }
 
 TEST_CASE("the minimal fixture's tricky family name stays inside the data", "[html]")
 {
     const json minimal = loadFixture("minimal.json");
-    const std::string page = gjk_html::renderReport(minimal);
+    const std::string page = gjk_html::renderReport(minimal, kSchema);
     CHECK(page.find("tricky family") != std::string::npos);
     CHECK(page.find("<!-- tricky") == std::string::npos);
     CHECK(page.find("<script>alert") == std::string::npos);

@@ -2,6 +2,7 @@
 // not stop the others, failures are detected, and nothing depends on the number of threads.
 #include "campaign/campaign.hpp"
 #include "inputs/geometry.hpp"
+#include "report/explain.hpp"
 #include "report/report.hpp"
 
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else

@@ -13,6 +13,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
 #include <set>
 
 using namespace gjkval;
@@ -345,3 +348,52 @@ TEST_CASE("every variant of the table has its own colour on the report page", "[
     }
 }
 #endif
+
+TEST_CASE("docs list every variant of the table once, with its type and judged flag", "[variants][docs]")
+{
+    // docs/validation.md, "Variants", lists the table by hand: `| names | type | judged | options |`,
+    // a row naming one variant or a double/float pair (type "both"). A variant added to the table,
+    // renamed or made a comparison one without the docs following fails here.
+    std::ifstream in(std::filesystem::path(GJK2D_SOURCE_DIR) / "docs" / "validation.md");
+    REQUIRE(in);
+    std::string line;
+    bool inSection = false;
+    std::map<std::string, int> listed;
+    while (std::getline(in, line))
+    {
+        if (line.rfind("## ", 0) == 0)
+            inSection = line == "## Variants";
+        if (!inSection || line.rfind("| `", 0) != 0)
+            continue;
+        std::vector<std::string> cells;
+        std::size_t at = 1;
+        for (int k = 0; k < 3; ++k)
+        {
+            const std::size_t bar = line.find(" | ", at);
+            REQUIRE(bar != std::string::npos);
+            cells.push_back(line.substr(at, bar - at));
+            at = bar + 2;
+        }
+        const std::string type = cells[1].substr(cells[1].find_first_not_of(' ')),
+                          judged = cells[2].substr(cells[2].find_first_not_of(' '));
+        for (std::size_t q = cells[0].find('`'); q != std::string::npos;
+             q = cells[0].find('`', cells[0].find('`', q + 1) + 1))
+        {
+            const std::string name = cells[0].substr(q + 1, cells[0].find('`', q + 1) - q - 1);
+            INFO(line);
+            INFO("docs name " << name);
+            ++listed[name];
+            const auto it = std::find_if(variantTable().begin(), variantTable().end(),
+                                         [&](const VariantInfo& v) { return v.name == name; });
+            REQUIRE(it != variantTable().end());
+            CHECK(judged == (it->judged ? "judged" : "comparison"));
+            CHECK((type == "both" || type == scalarName(it->scalar)));
+        }
+    }
+    for (const auto& v : variantTable())
+    {
+        INFO(v.name);
+        CHECK(listed[v.name] == 1);
+    }
+    CHECK(listed.size() == variantTable().size());
+}

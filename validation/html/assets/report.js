@@ -2015,8 +2015,11 @@
     document.title = 'GJK report — ' + (report.passed === true ? 'PASS' : report.passed === false ? 'FAIL' : 'no verdict') +
       (report.context && report.context.date ? ' — ' + report.context.date : '');
     app.appendChild(guarded('header', function () { return renderHeader(report); }));
-    if (has(report.schema) && String(report.schema) !== 'gjk-report/1') {
-      app.appendChild(h('div', {class: 'error-box'}, 'This page was made for schema gjk-report/1; the data says ' + report.schema + '. Some parts may be missing.'));
+    // The schema this page was made for: the renderer writes it into <html data-schema> (its one
+    // home is kReportSchema, validation/src/report/report.hpp).
+    var schema = document.documentElement.getAttribute('data-schema');
+    if (has(report.schema) && schema && String(report.schema) !== schema) {
+      app.appendChild(h('div', {class: 'error-box'}, 'This page was made for schema ' + schema + '; the data says ' + report.schema + '. Some parts may be missing.'));
     }
     var main = h('main', {});
     app.appendChild(main);

@@ -36,9 +36,25 @@ std::string embedJson(const nlohmann::json& data)
 namespace
 {
 
+// Text as an HTML attribute's value (between double quotes).
+std::string attribute(std::string_view text)
+{
+    std::string out;
+    for (char c : text)
+        switch (c)
+        {
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '&': out += "&amp;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    return out;
+}
+
 // Fills the template's placeholders. Each placeholder is searched for in the template only, never
 // in text already substituted, so data that happens to contain a placeholder is left alone.
-std::string renderPage(std::string_view mode, const nlohmann::json& data)
+std::string renderPage(std::string_view mode, std::string_view schema, const nlohmann::json& data)
 {
     const std::string_view tpl = assets::page_html();
     struct Slot
@@ -48,12 +64,16 @@ std::string renderPage(std::string_view mode, const nlohmann::json& data)
     };
     const Slot slots[] = {
         {"@MODE@", std::string(mode)},
+        {"@SCHEMA@", attribute(schema)},
         {"/*@CSS@*/", std::string(assets::report_css())},
         {"@DATA@", embedJson(data)},
         {"/*@JS@*/", std::string(assets::report_js())},
     };
     std::string out;
-    out.reserve(tpl.size() + slots[1].value.size() + slots[2].value.size() + slots[3].value.size());
+    std::size_t size = tpl.size();
+    for (const Slot& s : slots)
+        size += s.value.size();
+    out.reserve(size);
     std::size_t pos = 0;
     for (const Slot& s : slots)
     {
@@ -70,8 +90,13 @@ std::string renderPage(std::string_view mode, const nlohmann::json& data)
 
 } // namespace
 
-std::string renderReport(const nlohmann::json& report) { return renderPage("report", report); }
+std::string renderReport(const nlohmann::json& report, std::string_view schema)
+{
+    return renderPage("report", schema, report);
+}
 
-std::string renderCase(const nlohmann::json& caseDetail) { return renderPage("case", caseDetail); }
+std::string renderCase(const nlohmann::json& caseDetail) { return renderPage("case", "", caseDetail); }
+
+std::string_view styleSheet() { return assets::report_css(); }
 
 } // namespace gjk_html

@@ -6,6 +6,7 @@
 #include "evaluate/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
+#include "report/explain.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>

@@ -33,6 +33,29 @@ class OutputError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
+// Writes all n bytes to fd, through short writes and EINTR. False when a write fails, with errno
+// set (ENOSPC for a write that wrote nothing). Throws nothing and allocates nothing: a forked child
+// (evaluate/plugins.cpp) calls it before _exit.
+inline bool writeAllBytes(int fd, const void* data, std::size_t n) noexcept
+{
+    const char* p = static_cast<const char*>(data);
+    while (n > 0)
+    {
+        const ssize_t w = ::write(fd, p, n);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+        {
+            if (w == 0)
+                errno = ENOSPC;
+            return false;
+        }
+        p += w;
+        n -= std::size_t(w);
+    }
+    return true;
+}
+
 namespace output_detail
 {
 namespace fs = std::filesystem;
@@ -52,18 +75,10 @@ inline mode_t defaultMode(mode_t base)
 
 inline void writeAll(int fd, const std::string& text, const std::string& what)
 {
-    const char* p = text.data();
-    std::size_t left = text.size();
-    while (left > 0)
+    if (!writeAllBytes(fd, text.data(), text.size()))
     {
-        const ssize_t n = ::write(fd, p, left);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            throw OutputError(fmt::format("{}: write failed: {}", what,
-                                          errnoText(n < 0 ? errno : ENOSPC)));
-        p += n;
-        left -= std::size_t(n);
+        const int e = errno;
+        throw OutputError(fmt::format("{}: write failed: {}", what, errnoText(e)));
     }
 }
 

@@ -119,25 +119,6 @@ template <class T> Json tracedRun(const Case& c, const VariantInfo& v, gjk::Dist
     return traceJson(tr);
 }
 
-std::string fmtPt(const Json& p)
-{
-    auto f = [](const Json& v)
-    { return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump(); };
-    return p.is_array() && p.size() == 2 ? fmt::format("({}, {})", f(p[0]), f(p[1])) : p.dump();
-}
-
-std::string fmtFull(const Json& v)
-{
-    return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump();
-}
-
-std::string fmtNum(const Json& v)
-{
-    if (v.is_number())
-        return fmt::format("{:.6g}", v.get<double>());
-    return v.is_null() ? "n/a" : v.dump();
-}
-
 } // namespace
 
 const char* misclassName(Misclass m)
@@ -381,17 +362,12 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
 }
 } // namespace
 
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+namespace
 {
-    const double u = unitRoundoff(scalar);
-    const bool truthZero = exactIsZero(truth);
-    v.truth = truth.distance;
-    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
-                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
-                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
-                  !std::isfinite(v.normal[1]);
-    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-    const double td = truth.distance;
+// The answer's errors against the truth td: absolute, relative, in ulps, normalised, against the
+// bound, and the witness gap ||pB - pA|| - distance; all infinite for a non-finite answer.
+void measureErrors(VariantOutcome& v, double td, Scalar scalar)
+{
     if (v.nonfinite)
     {
         v.abs = v.normalized = v.boundRatio = kInf;
@@ -399,35 +375,50 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
         v.ulps = td > 0 ? kInf : kNaN;
         v.witnessGap = kInf;
         v.beyondBound = true;
+        return;
     }
-    else
-    {
-        v.abs = std::abs(v.distance - td);
-        v.rel = td > 0 ? v.abs / td : kNaN;
-        v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
-        v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
-        v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-        v.witnessGap =
-            std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
-        v.beyondBound = !(v.abs <= v.bound);
-        if (!v.outOfRange)
-        {
-            // A negative distance claims overlap (and is not a distance): on separated shapes a
-            // false overlap whatever its error.
-            if (truthZero && v.distance > 0)
-                v.mis = Misclass::FalseSeparation;
-            else if (!truthZero && v.distance <= 0)
-                v.mis = Misclass::FalseOverlap;
-            if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
-                v.mis = Misclass::Undecidable;
-            // The answer's own contract, first part (the witness points' distances to their
-            // shapes are measured in phase 3, checkWitnesses, which may replace WitnessGap).
-            if (v.distance < 0)
-                v.invalid = Invalid::NegativeDistance;
-            else if (!(v.witnessGap <= v.witnessBound))
-                v.invalid = Invalid::WitnessGap;
-        }
-    }
+    const double u = unitRoundoff(scalar);
+    v.abs = std::abs(v.distance - td);
+    v.rel = td > 0 ? v.abs / td : kNaN;
+    v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
+    v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
+    v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
+    v.witnessGap =
+        std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+    v.beyondBound = !(v.abs <= v.bound);
+}
+
+// A finite answer in range: its claim of overlap against the truth's, and its own contract.
+void classifyAnswer(VariantOutcome& v, bool truthZero)
+{
+    // A negative distance claims overlap (and is not a distance): on separated shapes a false
+    // overlap whatever its error.
+    if (truthZero && v.distance > 0)
+        v.mis = Misclass::FalseSeparation;
+    else if (!truthZero && v.distance <= 0)
+        v.mis = Misclass::FalseOverlap;
+    if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
+        v.mis = Misclass::Undecidable;
+    // The answer's own contract, first part (the witness points' distances to their shapes are
+    // measured in phase 3, checkWitnesses, which may replace WitnessGap).
+    if (v.distance < 0)
+        v.invalid = Invalid::NegativeDistance;
+    else if (!(v.witnessGap <= v.witnessBound))
+        v.invalid = Invalid::WitnessGap;
+}
+} // namespace
+
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+{
+    v.truth = truth.distance;
+    v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
+                  !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
+                  !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
+                  !std::isfinite(v.normal[1]);
+    v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
+    measureErrors(v, truth.distance, scalar);
+    if (!v.nonfinite && !v.outOfRange)
+        classifyAnswer(v, exactIsZero(truth));
     // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
     // value strictly between): the double interval [lower, upper] contains it iff it contains
     // that enclosure.
@@ -453,6 +444,60 @@ void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& o
     exact::completeCorrectlyRounded(in, options, out);
 }
 
+namespace
+{
+// Plugin variant k's answer, which answerPluginVariants gave: false when there is nothing to judge
+// (refused: skipped; an error status, a crash or a hang: failed).
+bool takePluginAnswer(const CaseOutcome& out, std::size_t k, const VariantInfo& vi,
+                      VariantOutcome& v)
+{
+    if (out.external.size() != out.variants.size() ||
+        out.external[k].status == PluginStatus::NotRun)
+        throw std::logic_error("runVariants: plugin variant '" + vi.name +
+                               "' has no answer (answerPluginVariants not run)");
+    const ExternalAnswer& a = out.external[k];
+    v.plugin = a.status;
+    v.pluginDetail = a.detail;
+    if (a.status == PluginStatus::Refused)
+    {
+        v.skipped = true;
+        return false;
+    }
+    if (a.status != PluginStatus::Ok)
+    {
+        v.failed = true;
+        return false;
+    }
+    v.distance = a.distance;
+    v.pointA = a.pointA;
+    v.pointB = a.pointB;
+    // The implementation gives no normal: the unit vector from A's witness to B's.
+    const double dx = a.pointB[0] - a.pointA[0], dy = a.pointB[1] - a.pointA[1];
+    const double len = std::hypot(dx, dy);
+    v.normal = len > 0 ? std::array<double, 2>{dx / len, dy / len} : std::array<double, 2>{0, 0};
+    v.iterations = a.iterations;
+    return true;
+}
+
+// gjk2d's answer for the variant: the worst of every start's, or the (batch-checked) query's.
+void runQuery(const Case& c, const PreparedCase& p, const VariantInfo& vi, double truth,
+              VariantOutcome& v)
+{
+    const bool isFloat = vi.scalar == Scalar::Float;
+    if (vi.start == Start::EveryStart)
+    {
+        if (isFloat)
+            fillOutput(worstStart<float>(p, vi, truth), v);
+        else
+            fillOutput(worstStart<double>(p, vi, truth), v);
+    }
+    else if (isFloat)
+        fillOutput(checkedQuery<float>(c, p, vi), v);
+    else
+        fillOutput(checkedQuery<double>(c, p, vi), v);
+}
+} // namespace
+
 void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, CaseOutcome& out)
 {
     out.variants.assign(ctx.variants.size(), {});
@@ -471,46 +516,10 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             continue;
         }
         const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
-        if (vi.plugin)
-        {
-            if (out.external.size() != ctx.variants.size() ||
-                out.external[k].status == PluginStatus::NotRun)
-                throw std::logic_error("runVariants: plugin variant '" + vi.name +
-                                       "' has no answer (answerPluginVariants not run)");
-            const ExternalAnswer& a = out.external[k];
-            v.plugin = a.status;
-            v.pluginDetail = a.detail;
-            if (a.status == PluginStatus::Refused)
-            {
-                v.skipped = true;
-                continue;
-            }
-            if (a.status != PluginStatus::Ok)
-            {
-                v.failed = true;
-                continue;
-            }
-            v.distance = a.distance;
-            v.pointA = a.pointA;
-            v.pointB = a.pointB;
-            // The implementation gives no normal: the unit vector from A's witness to B's.
-            const double dx = a.pointB[0] - a.pointA[0], dy = a.pointB[1] - a.pointA[1];
-            const double len = std::hypot(dx, dy);
-            v.normal = len > 0 ? std::array<double, 2>{dx / len, dy / len}
-                               : std::array<double, 2>{0, 0};
-            v.iterations = a.iterations;
-        }
-        else if (vi.start == Start::EveryStart)
-        {
-            if (isFloat)
-                fillOutput(worstStart<float>(p, vi, truth.distance), v);
-            else
-                fillOutput(worstStart<double>(p, vi, truth.distance), v);
-        }
-        else if (isFloat)
-            fillOutput(checkedQuery<float>(c, p, vi), v);
-        else
-            fillOutput(checkedQuery<double>(c, p, vi), v);
+        if (vi.plugin && !takePluginAnswer(out, k, vi, v))
+            continue;
+        if (!vi.plugin)
+            runQuery(c, p, vi, truth.distance, v);
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         boundsOf(vi, c, scales.get(false, isFloat), truth.distance, v);
@@ -518,12 +527,52 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
     }
 }
 
+namespace
+{
+// A case's shapes on the exact side, as given and rounded to float, converted when first needed.
+class ExactShapes
+{
+  public:
+    explicit ExactShapes(const Case& c) : c_(c) {}
+    const exact::Shape& a(bool isFloat) { return get(isFloat).first; }
+    const exact::Shape& b(bool isFloat) { return get(isFloat).second; }
+
+  private:
+    const std::pair<exact::Shape, exact::Shape>& get(bool isFloat)
+    {
+        const int t = isFloat ? 1 : 0;
+        if (!have_[t])
+        {
+            shapes_[t] = {toExact(c_.a, isFloat), toExact(c_.b, isFloat)};
+            have_[t] = true;
+        }
+        return shapes_[t];
+    }
+    const Case& c_;
+    std::pair<exact::Shape, exact::Shape> shapes_[2];
+    bool have_[2] = {false, false};
+};
+
+// The witness verdict (judge() left the rest): off its shape comes before the gap.
+void judgeWitnesses(VariantOutcome& v, double wa, double wb)
+{
+    v.witness = std::max(wa, wb);
+    const double worst = std::max(v.witness, v.witnessGap);
+    v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
+    if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
+        !(v.witness <= v.witnessBound))
+    {
+        v.invalid = Invalid::WitnessOffShape;
+        v.failed = true;
+    }
+}
+} // namespace
+
 void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     if (!out.rejected.empty())
         return;
-    exact::Shape ea, eb, fa, fb;
-    bool haveD = false, haveF = false;
+    ExactShapes shapes(c);
     const std::size_t nv = ctx.variants.size();
     std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
     std::vector<char> done(nv, 0);
@@ -533,20 +582,6 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         if (v.skipped || v.nonfinite || (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
             continue;
         const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
-        if (isFloat && !haveF)
-        {
-            fa = toExact(c.a, true);
-            fb = toExact(c.b, true);
-            haveF = true;
-        }
-        if (!isFloat && !haveD)
-        {
-            ea = toExact(c.a);
-            eb = toExact(c.b);
-            haveD = true;
-        }
-        const exact::Shape& sa = isFloat ? fa : ea;
-        const exact::Shape& sb = isFloat ? fb : eb;
         // Variants often return the very same witness points (same scalar type): each distinct
         // point is measured once per case (the exact query dominates the campaign's time).
         double wa = -1, wb = -1;
@@ -561,22 +596,13 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
                 wb = witnessB[j];
         }
         if (wa < 0)
-            wa = exact::pointToShapeDistance(sa, {v.pointA[0], v.pointA[1]});
+            wa = exact::pointToShapeDistance(shapes.a(isFloat), {v.pointA[0], v.pointA[1]});
         if (wb < 0)
-            wb = exact::pointToShapeDistance(sb, {v.pointB[0], v.pointB[1]});
+            wb = exact::pointToShapeDistance(shapes.b(isFloat), {v.pointB[0], v.pointB[1]});
         witnessA[k] = wa;
         witnessB[k] = wb;
         done[k] = 1;
-        v.witness = std::max(wa, wb);
-        const double worst = std::max(v.witness, v.witnessGap);
-        v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
-        // The witness verdict (judge() left the rest): off its shape comes before the gap.
-        if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
-            !(v.witness <= v.witnessBound))
-        {
-            v.invalid = Invalid::WitnessOffShape;
-            v.failed = true;
-        }
+        judgeWitnesses(v, wa, wb);
     }
 }
 
@@ -747,103 +773,6 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
         }
     }
     return j;
-}
-
-std::string explainText(const Json& d)
-{
-    std::string s;
-    s += fmt::format("case {}  (family {})\n", d["name"].get<std::string>(),
-                     d["family"].get<std::string>());
-    for (const char* k : {"a", "b"})
-    {
-        const Json& sh = d[k];
-        s += fmt::format("  {}: {} points, radius {}, transform p = {}, q = {}\n", k,
-                         sh["points"].size(), fmtNum(sh["radius"]), fmtPt(sh["transform"]["p"]),
-                         fmtPt(sh["transform"]["q"]));
-        const std::size_t shown = std::min<std::size_t>(sh["points"].size(), 12);
-        for (std::size_t i = 0; i < shown; ++i)
-            s += fmt::format("     [{}] local {}  world {}\n", i, fmtPt(sh["points"][i]),
-                             fmtPt(sh["world"][i]));
-        if (shown < sh["points"].size())
-            s += fmt::format("     ... {} more\n", sh["points"].size() - shown);
-    }
-    if (d.contains("rejected"))
-        return s + fmt::format("  REJECTED: {}\n", d["rejected"].get<std::string>());
-    auto exactLine = [&](const char* label, const Json& e)
-    {
-        s += fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label,
-                         fmtFull(e["distance"]), fmtFull(e["lower"]), fmtFull(e["upper"]),
-                         e["overlap"].get<bool>());
-        s += fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
-                         e["squared"].get<std::string>(), fmtPt(e["witnessA"]),
-                         fmtPt(e["witnessB"]));
-    };
-    exactLine("exact", d["exact"]);
-    if (d.contains("exact_float_input"))
-    {
-        exactLine("exact (float-rounded input)", d["exact_float_input"]);
-        s += fmt::format("     input rounding error {}\n", fmtNum(d["input_rounding"]));
-    }
-    for (const auto& [name, v] : d["variants"].items())
-    {
-        if (v.contains("skipped"))
-        {
-            s += fmt::format("  variant {}: skipped ({})\n", name, v["skipped"].get<std::string>());
-            continue;
-        }
-        if (v.contains("plugin_status"))
-        {
-            s += fmt::format("  variant {} ({}): {}: {}\n", name, v["type"].get<std::string>(),
-                             v["plugin_status"].get<std::string>(),
-                             v["plugin_detail"].get<std::string>());
-            continue;
-        }
-        s += fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
-                         v["type"].get<std::string>(), fmtFull(v["distance"]),
-                         v["iterations"].get<int>(), v["stop"].get<std::string>(),
-                         v["failed"].get<bool>() ? "  ** FAILED **" : "");
-        s += fmt::format("     pointA {}  pointB {}  normal {}\n", fmtPt(v["pointA"]),
-                         fmtPt(v["pointB"]), fmtPt(v["normal"]));
-        const Json& e = v["errors"];
-        s += fmt::format(
-            "     errors: abs {}  rel {}  ulps {}  normalized {}  bound {} (ratio {})  "
-            "witness {}  witness gap {}  misclassified {}\n",
-            fmtNum(e["abs"]), fmtNum(e["rel"]), fmtNum(e["ulps"]), fmtNum(e["normalized"]),
-            fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
-            fmtNum(e["witness_gap"]),
-            v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
-        // Reports before issue 30 have no witness judgement.
-        if (v.contains("invalid"))
-            s += fmt::format("     witness bound {}  invalid answer: {}\n", fmtNum(v["witness_bound"]),
-                             v["invalid"].is_null() ? "no" : v["invalid"].get<std::string>());
-        if (v.contains("certified") && !v["certified"].get<bool>())
-            s += "     certified interval: none (the query did not certify this case)\n";
-        else if (v.contains("certified"))
-            s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
-                             fmtFull(v["lower"]), fmtFull(v["upper"]),
-                             v["interval_contains"].get<bool>() ? "yes" : "NO");
-        if (!v.contains("trace"))
-        {
-            s += "     (no trace: the implementation is a plugin's)\n";
-            continue;
-        }
-        int k = 0;
-        for (const auto& step : v["trace"])
-        {
-            s += fmt::format("     step {}: simplex", k++);
-            for (const auto& sv : step["simplex"])
-                s += fmt::format(" [w {} a {} iA {} iB {}]", fmtPt(sv["w"]), fmtNum(sv["a"]),
-                                 sv["iA"].get<int>(), sv["iB"].get<int>());
-            s += fmt::format("\n            closest {}  direction {}", fmtPt(step["closest"]),
-                             fmtPt(step["direction"]));
-            if (!step["support"].is_null())
-                s +=
-                    fmt::format("  support w {} (iA {}, iB {})", fmtPt(step["support"]["w"]),
-                                step["support"]["iA"].get<int>(), step["support"]["iB"].get<int>());
-            s += "\n";
-        }
-    }
-    return s;
 }
 
 } // namespace gjkval

@@ -230,7 +230,5 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
 // One line of cases.jsonl.
 Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
                  const CaseOutcome& o);
-// `explain`'s text from a case detail.
-std::string explainText(const Json& detail);
 
 } // namespace gjkval

@@ -1,5 +1,6 @@
 #include "evaluate/plugins.hpp"
 
+#include "common/output.hpp" // writeAllBytes
 #include "evaluate/evaluate.hpp"
 
 #include <fmt/format.h>
@@ -83,9 +84,11 @@ std::string descriptionProblem(const gjk2d_implementation& im)
 
 } // namespace
 
-std::vector<const VariantInfo*> loadPlugin(const std::string& path)
+namespace
 {
-    Registry& reg = registry();
+// The plugin file's canonical path; InputError when it is missing or not a regular file.
+std::string pluginFile(const std::string& path)
+{
     struct stat st
     {
     };
@@ -93,16 +96,14 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         throw InputError(fmt::format("plugin {}: {}", path, std::strerror(errno)));
     if (!S_ISREG(st.st_mode))
         throw InputError(fmt::format("plugin {}: not a regular file", path));
-    const std::string canonical = std::filesystem::canonical(path).string();
-    std::vector<const VariantInfo*> out;
-    for (std::size_t i = 0; i < reg.paths.size(); ++i)
-        if (reg.paths[i] == canonical)
-        {
-            for (std::size_t k = 0; k < reg.variants.size(); ++k)
-                if (reg.impls[k].path == canonical)
-                    out.push_back(&reg.variants[k]);
-            return out;
-        }
+    return std::filesystem::canonical(path).string();
+}
+
+// Opens the plugin and reads its description, of this ABI version and with 1 .. 64
+// implementations; InputError otherwise. The handle stays open for the whole run: the
+// description and the functions live in it.
+const gjk2d_plugin* openPlugin(const std::string& path)
+{
     // A path without a slash would make dlopen search the library path, not this file.
     const std::string openPath = path.find('/') == std::string::npos ? "./" + path : path;
     void* handle = ::dlopen(openPath.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -112,7 +113,6 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         throw InputError(
             fmt::format("plugin {}: cannot be loaded: {}", path, e ? e : "dlopen failed"));
     }
-    // The handle stays open for the whole run: the description and the functions live in it.
     auto describe =
         reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(handle, GJK2D_PLUGIN_ENTRY_POINT));
     if (describe == nullptr)
@@ -132,10 +132,16 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
         throw InputError(fmt::format("plugin {}: bad description: count {} is outside 1..64 or "
                                      "implementations is NULL",
                                      path, d->count));
+    return d;
+}
+
+// Every implementation well described, under a name no variant and no other implementation has.
+void checkImplementations(const std::string& path, const gjk2d_plugin& d)
+{
     std::vector<std::string> names;
-    for (int i = 0; i < d->count; ++i)
+    for (int i = 0; i < d.count; ++i)
     {
-        const gjk2d_implementation& im = d->implementations[i];
+        const gjk2d_implementation& im = d.implementations[i];
         const std::string problem = descriptionProblem(im);
         if (!problem.empty())
             throw InputError(fmt::format("plugin {}: bad description of implementation {}: {}",
@@ -151,32 +157,60 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
                 path, i, name));
         names.push_back(name);
     }
-    // One log per plugin file, named after it: "plugin-gjk2d-box2d.log" (a second file of the
-    // same name in another directory: "plugin-gjk2d-box2d-2.log").
+}
+
+// One log per plugin file, named after it: "plugin-gjk2d-box2d.log" (a second file of the same
+// name in another directory: "plugin-gjk2d-box2d-2.log").
+std::string logNameFor(const Registry& reg, const std::string& canonical)
+{
     const std::string stem = std::filesystem::path(canonical).stem().string();
     std::string logName = "plugin-" + stem + ".log";
     for (int n = 2; std::any_of(reg.impls.begin(), reg.impls.end(),
                                 [&](const PluginImpl& p) { return p.logName == logName; });
          ++n)
         logName = fmt::format("plugin-{}-{}.log", stem, n);
+    return logName;
+}
+
+// The variant of one implementation: a comparison variant, cold, held to gjk2d's bound.
+VariantInfo pluginVariant(const std::string& path, const PluginImpl& impl)
+{
+    const gjk2d_implementation& im = impl.impl;
+    VariantInfo v;
+    v.name = im.name;
+    v.scalar = im.scalar == GJK2D_SCALAR_FLOAT ? Scalar::Float : Scalar::Double;
+    // The options whose error bound the implementation is compared with (and judged by, with
+    // --judge): gjk2d's reference options in the implementation's scalar type.
+    v.options = gjk::referenceOptions;
+    v.description = fmt::format("plugin {}{}{}", std::filesystem::path(path).filename().string(),
+                                im.description ? ": " : "", im.description ? im.description : "");
+    v.judged = false;
+    v.start = Start::Cold;
+    v.plugin = &impl;
+    return v;
+}
+} // namespace
+
+std::vector<const VariantInfo*> loadPlugin(const std::string& path)
+{
+    Registry& reg = registry();
+    const std::string canonical = pluginFile(path);
+    std::vector<const VariantInfo*> out;
+    if (std::find(reg.paths.begin(), reg.paths.end(), canonical) != reg.paths.end())
+    {
+        for (std::size_t k = 0; k < reg.variants.size(); ++k)
+            if (reg.impls[k].path == canonical)
+                out.push_back(&reg.variants[k]);
+        return out;
+    }
+    const gjk2d_plugin* d = openPlugin(path);
+    checkImplementations(path, *d);
+    const std::string logName = logNameFor(reg, canonical);
     reg.paths.push_back(canonical);
     for (int i = 0; i < d->count; ++i)
     {
-        const gjk2d_implementation& im = d->implementations[i];
-        reg.impls.push_back({canonical, logName, im});
-        VariantInfo v;
-        v.name = im.name;
-        v.scalar = im.scalar == GJK2D_SCALAR_FLOAT ? Scalar::Float : Scalar::Double;
-        // The options whose error bound the implementation is compared with (and judged by, with
-        // --judge): gjk2d's reference options in the implementation's scalar type.
-        v.options = gjk::referenceOptions;
-        v.description =
-            fmt::format("plugin {}{}{}", std::filesystem::path(path).filename().string(),
-                        im.description ? ": " : "", im.description ? im.description : "");
-        v.judged = false;
-        v.start = Start::Cold;
-        v.plugin = &reg.impls.back();
-        reg.variants.push_back(std::move(v));
+        reg.impls.push_back({canonical, logName, d->implementations[i]});
+        reg.variants.push_back(pluginVariant(path, reg.impls.back()));
         out.push_back(&reg.variants.back());
     }
     return out;
@@ -326,22 +360,6 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
     return callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d,
                                                          shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
                                                          shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
-}
-
-bool writeAllBytes(int fd, const void* data, std::size_t n)
-{
-    const char* p = static_cast<const char*>(data);
-    while (n > 0)
-    {
-        const ssize_t w = ::write(fd, p, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return false;
-        p += w;
-        n -= std::size_t(w);
-    }
-    return true;
 }
 
 std::mutex g_messages; // crash and hang lines on stderr
@@ -495,28 +513,61 @@ long PluginChild::read(void* buf, std::size_t n, double timeoutSeconds) const
     }
 }
 
+namespace
+{
+// The child's work: tasks from `from` on, one AnswerRecord each written to `fd`, each plugin's
+// output into its own log.
+void answerInChild(const std::vector<PluginTask>& tasks, std::size_t from, int fd)
+{
+    std::vector<unsigned char> cache(4096);
+    const PluginImpl* printsTo = tasks[from].v->plugin;
+    for (std::size_t t = from; t < tasks.size(); ++t)
+    {
+        if (tasks[t].v->plugin->logName != printsTo->logName)
+            routePluginOutput(*(printsTo = tasks[t].v->plugin));
+        AnswerRecord r = callPlugin(*tasks[t].v, *tasks[t].p, cache);
+        r.task = t;
+        if (!writeAllBytes(fd, &r, sizeof r))
+            ::_exit(3);
+    }
+}
+
+// The answer a record carries: its status (an unknown one is an error status) and its values.
+void takeAnswer(const AnswerRecord& rec, ExternalAnswer& a)
+{
+    a.status = rec.status == GJK2D_STATUS_OK        ? PluginStatus::Ok
+               : rec.status == GJK2D_STATUS_REFUSED ? PluginStatus::Refused
+                                                    : PluginStatus::Error;
+    if (a.status == PluginStatus::Error && rec.status != GJK2D_STATUS_ERROR)
+        a.detail = fmt::format("status {} is not a gjk2d_status", rec.status);
+    a.distance = rec.distance;
+    a.pointA = {rec.pointA[0], rec.pointA[1]};
+    a.pointB = {rec.pointB[0], rec.pointB[1]};
+    a.iterations = rec.iterations;
+}
+
+// The task the child was on when it crashed or hung: its status, and one line on stderr.
+void recordLoss(const PluginTask& t, PluginStatus status, const std::string& how)
+{
+    t.out->status = status;
+    t.out->detail = how.empty() ? "the child exited before answering" : how;
+    std::lock_guard lock(g_messages);
+    std::fprintf(stderr,
+                 "gjk-validate: plugin variant '%s' (%s) %s on case '%s': %s; "
+                 "the other cases go on\n",
+                 t.v->name.c_str(), t.v->plugin->path.c_str(), pluginStatusName(status),
+                 t.caseName ? t.caseName->c_str() : "?", t.out->detail.c_str());
+}
+} // namespace
+
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds)
 {
     std::size_t next = 0;
     while (next < tasks.size())
     {
         const std::size_t from = next;
-        PluginChild child = PluginChild::start(
-            tasks[from].v->plugin,
-            [&](int fd)
-            {
-                std::vector<unsigned char> cache(4096);
-                const PluginImpl* printsTo = tasks[from].v->plugin;
-                for (std::size_t t = from; t < tasks.size(); ++t)
-                {
-                    if (tasks[t].v->plugin->logName != printsTo->logName)
-                        routePluginOutput(*(printsTo = tasks[t].v->plugin));
-                    AnswerRecord r = callPlugin(*tasks[t].v, *tasks[t].p, cache);
-                    r.task = t;
-                    if (!writeAllBytes(fd, &r, sizeof r))
-                        ::_exit(3);
-                }
-            });
+        PluginChild child = PluginChild::start(tasks[from].v->plugin, [&](int fd)
+                                               { answerInChild(tasks, from, fd); });
         AnswerRecord rec{};
         std::size_t have = 0;
         for (;;)
@@ -532,16 +583,7 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
                 if (rec.task != next)
                     throw std::logic_error(fmt::format(
                         "plugin child answered task {} where {} was expected", rec.task, next));
-                ExternalAnswer& a = *tasks[next].out;
-                a.status = rec.status == GJK2D_STATUS_OK        ? PluginStatus::Ok
-                           : rec.status == GJK2D_STATUS_REFUSED ? PluginStatus::Refused
-                                                                : PluginStatus::Error;
-                if (a.status == PluginStatus::Error && rec.status != GJK2D_STATUS_ERROR)
-                    a.detail = fmt::format("status {} is not a gjk2d_status", rec.status);
-                a.distance = rec.distance;
-                a.pointA = {rec.pointA[0], rec.pointA[1]};
-                a.pointB = {rec.pointB[0], rec.pointB[1]};
-                a.iterations = rec.iterations;
+                takeAnswer(rec, *tasks[next].out);
                 ++next;
                 continue;
             }
@@ -556,21 +598,7 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
             else
                 how = child.finish();
             if (next < tasks.size())
-            {
-                const PluginTask& t = tasks[next];
-                t.out->status = status;
-                t.out->detail = how.empty() ? "the child exited before answering" : how;
-                {
-                    std::lock_guard lock(g_messages);
-                    std::fprintf(stderr,
-                                 "gjk-validate: plugin variant '%s' (%s) %s on case '%s': %s; "
-                                 "the other cases go on\n",
-                                 t.v->name.c_str(), t.v->plugin->path.c_str(),
-                                 pluginStatusName(status), t.caseName ? t.caseName->c_str() : "?",
-                                 t.out->detail.c_str());
-                }
-                ++next;
-            }
+                recordLoss(tasks[next++], status, how);
             break;
         }
     }

@@ -9,6 +9,7 @@
 namespace gjkval
 {
 
+// A data table, one row per variant: long, and kept whole so that the variants read side by side.
 const std::vector<VariantInfo>& variantTable()
 {
     using gjk::Options;

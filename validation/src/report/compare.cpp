@@ -1,14 +1,15 @@
-// gjk-validate compare: the comparison of two reports (compare.hpp states the tolerance rule).
+// gjk-validate compare: the comparison of two reports (compare.hpp states the tolerance rule); its
+// renderings are in compare_render.cpp.
 #include "report/compare.hpp"
 
 #include "common/json_text.hpp"
 #include "report/report.hpp"
 #include "statistics/stats.hpp" // kCountFields
 
+
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -203,14 +204,14 @@ class Rows
     std::vector<CompareRow>& rows_;
 };
 
-// Every statistic of one family x variant (docs/report-schema.md, Stats).
-void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
-                  const CompareOptions& o, const Side& os, const Side& ns, Rows& rows)
+// The rows of one family x variant: each from `base` (family, variant, judged, gates).
+struct StatRows
 {
-    const std::string where =
-        fmt::format("families['{}'].variants['{}']", excerpt(base.family), excerpt(base.variant));
-    auto row = [&](const std::string& statistic, CompareRule rule, double a, double b,
-                   double floor = 0, bool higherIsBetter = false)
+    CompareRow base;
+    Rows& rows;
+
+    void add(const std::string& statistic, CompareRule rule, double a, double b, double floor = 0,
+             bool higherIsBetter = false) const
     {
         CompareRow r = base;
         r.statistic = statistic;
@@ -219,15 +220,14 @@ void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
         r.newValue = b;
         r.higherIsBetter = higherIsBetter;
         rows.add(std::move(r), floor);
-    };
-    // The Stats counts that regress on any increase, in the report's order (statistics/stats.hpp).
-    for (const CountField& f : kCountFields)
-        if (f.regresses && (oldStats.contains(f.name) || newStats.contains(f.name)))
-            row(f.name, CompareRule::Count, number(&oldStats, f.name, os, where),
-                number(&newStats, f.name, ns, where));
-    // errors: every histogram either report has, OLD's order first.
-    const Json* oe = object(&oldStats, "errors", os, where);
-    const Json* ne = object(&newStats, "errors", ns, where);
+    }
+};
+
+// errors: every histogram either report has, OLD's order first; max and mean by the relative
+// tolerance, the percentiles by the percentile one, above the smallest value the bins resolve.
+void compareErrors(const Json* oe, const Json* ne, const std::string& where, const Side& os,
+                   const Side& ns, const StatRows& out)
+{
     std::vector<std::string> metrics;
     for (const Json* e : {oe, ne})
         if (e != nullptr)
@@ -247,34 +247,61 @@ void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
         for (const char* s : {"max", "p99", "p999", "mean"})
         {
             const bool percentile = s[0] == 'p';
-            row(fmt::format("errors.{}.{}", metric, s),
-                percentile ? CompareRule::Percentile : CompareRule::Exact,
-                number(oh, s, os, at + "." + metric), number(nh, s, ns, at + "." + metric), floor);
+            out.add(fmt::format("errors.{}.{}", metric, s),
+                    percentile ? CompareRule::Percentile : CompareRule::Exact,
+                    number(oh, s, os, at + "." + metric), number(nh, s, ns, at + "." + metric),
+                    floor);
         }
     }
+}
+
+// iterations (max as a count, mean by the relative tolerance) and the certified interval's counts.
+void compareIterationsAndInterval(const Json& oldStats, const Json& newStats,
+                                  const std::string& where, const Side& os, const Side& ns,
+                                  const StatRows& out)
+{
     const Json* oi = object(&oldStats, "iterations", os, where);
     const Json* ni = object(&newStats, "iterations", ns, where);
     if (oi != nullptr || ni != nullptr)
     {
-        row("iterations.max", CompareRule::Count, number(oi, "max", os, where + ".iterations"),
-            number(ni, "max", ns, where + ".iterations"));
-        row("iterations.mean", CompareRule::Exact, number(oi, "mean", os, where + ".iterations"),
-            number(ni, "mean", ns, where + ".iterations"));
+        out.add("iterations.max", CompareRule::Count, number(oi, "max", os, where + ".iterations"),
+                number(ni, "max", ns, where + ".iterations"));
+        out.add("iterations.mean", CompareRule::Exact,
+                number(oi, "mean", os, where + ".iterations"),
+                number(ni, "mean", ns, where + ".iterations"));
     }
     const Json* ov = object(&oldStats, "interval", os, where);
     const Json* nv = object(&newStats, "interval", ns, where);
     if (ov != nullptr || nv != nullptr)
     {
         const std::string at = where + ".interval";
-        row("interval.contains", CompareRule::Count, number(ov, "contains", os, at),
-            number(nv, "contains", ns, at), 0, true);
+        out.add("interval.contains", CompareRule::Count, number(ov, "contains", os, at),
+                number(nv, "contains", ns, at), 0, true);
         for (const char* key : {"misses", "uncertified"})
-            row(fmt::format("interval.{}", key), CompareRule::Count, number(ov, key, os, at),
-                number(nv, key, ns, at));
+            out.add(fmt::format("interval.{}", key), CompareRule::Count, number(ov, key, os, at),
+                    number(nv, key, ns, at));
     }
+}
+
+// Every statistic of one family x variant (docs/report-schema.md, Stats).
+void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
+                  const CompareOptions& o, const Side& os, const Side& ns, Rows& rows)
+{
+    const std::string where =
+        fmt::format("families['{}'].variants['{}']", excerpt(base.family), excerpt(base.variant));
+    const StatRows out{std::move(base), rows};
+    // The Stats counts that regress on any increase, in the report's order (statistics/stats.hpp).
+    for (const CountField& f : kCountFields)
+        if (f.regresses && (oldStats.contains(f.name) || newStats.contains(f.name)))
+            out.add(f.name, CompareRule::Count, number(&oldStats, f.name, os, where),
+                    number(&newStats, f.name, ns, where));
+    const Json* oe = object(&oldStats, "errors", os, where);
+    const Json* ne = object(&newStats, "errors", ns, where);
+    compareErrors(oe, ne, where, os, ns, out);
+    compareIterationsAndInterval(oldStats, newStats, where, os, ns, out);
     if (o.timing)
-        row("ns_per_query", CompareRule::Timing, number(&oldStats, "ns_per_query", os, where),
-            number(&newStats, "ns_per_query", ns, where));
+        out.add("ns_per_query", CompareRule::Timing, number(&oldStats, "ns_per_query", os, where),
+                number(&newStats, "ns_per_query", ns, where));
 }
 
 // A family's own rows: makeup_ok, pass, and each make-up check (by its name) that both have.
@@ -322,112 +349,6 @@ bool judgedInEither(const std::string& variant, const Json& a, const Json& b)
     return !listed;
 }
 
-std::string formatValue(const CompareRow& r, double v)
-{
-    if (std::isnan(v))
-        return "n/a";
-    if (r.rule == CompareRule::Presence)
-        return v != 0 ? "present" : "absent";
-    if (r.higherIsBetter && r.rule == CompareRule::Count && r.statistic != "interval.contains")
-        return v != 0 ? "true" : "false";
-    if (r.rule == CompareRule::Count && std::isfinite(v))
-        return fmt::format("{:.0f}", v);
-    return fmt::format("{:.4g}", v);
-}
-
-std::string changeText(const CompareRow& r)
-{
-    switch (r.change)
-    {
-    case Change::Regressed:
-        return r.gates ? "REGRESSED" : "regressed (comparison variant, not gated)";
-    case Change::Worse:
-        return "worse, within tolerance";
-    case Change::OnlyOld:
-    case Change::OnlyNew:
-        return std::string(changeName(r.change)) + (r.gates ? " (FAILS: --strict)" : "");
-    case Change::NotCompared:
-        return "not compared: " + r.note;
-    default:
-        return changeName(r.change);
-    }
-}
-
-// Rows shown: not Same, failing ones first, then not-gated regressions, presence and
-// not-compared rows, worse within tolerance, better.
-std::vector<const CompareRow*> shownRows(const Comparison& c)
-{
-    auto rank = [](const CompareRow& r)
-    {
-        if (r.fails())
-            return 0;
-        switch (r.change)
-        {
-        case Change::Regressed:
-            return 1;
-        case Change::OnlyOld:
-        case Change::OnlyNew:
-        case Change::NotCompared:
-            return 2;
-        case Change::Worse:
-            return 3;
-        default:
-            return 4;
-        }
-    };
-    std::vector<const CompareRow*> v;
-    for (const auto& r : c.rows)
-        if (r.change != Change::Same)
-            v.push_back(&r);
-    std::stable_sort(v.begin(), v.end(),
-                     [&](const CompareRow* a, const CompareRow* b) { return rank(*a) < rank(*b); });
-    return v;
-}
-
-std::string limitText(const CompareRow& r)
-{
-    if ((r.change != Change::Worse && r.change != Change::Regressed) ||
-        r.rule == CompareRule::Presence)
-        return "";
-    if (r.rule == CompareRule::Timing)
-        return fmt::format("{:.4g} ({})", r.limit, r.note);
-    return formatValue(r, r.limit);
-}
-
-std::string summaryText(const Comparison& c)
-{
-    std::size_t notGated = 0;
-    for (const auto& r : c.rows)
-        notGated += r.change == Change::Regressed && !r.gates ? 1 : 0;
-    return fmt::format("{} statistic(s) compared: {} regression(s) that fail, {} beyond tolerance "
-                       "in comparison variants (not gated), {} worse within tolerance, {} better, "
-                       "{} the same",
-                       c.rows.size(), c.failing(), notGated, c.count(Change::Worse),
-                       c.count(Change::Better), c.count(Change::Same));
-}
-
-std::string resultLine(const Comparison& c)
-{
-    return c.exitCode == kExitPass ? "result: NO REGRESSION (exit code 0)"
-                                   : fmt::format("result: REGRESSION (exit code {}): {} "
-                                                 "statistic(s) beyond tolerance",
-                                                 c.exitCode, c.failing());
-}
-
-std::string optionsText(const CompareOptions& o)
-{
-    std::string s = fmt::format("tolerances: max and mean x(1 + {:g}), p99 and p999 x(1 + {:g}), "
-                                "counts none",
-                                o.relTol, o.percentileTol);
-    if (o.timing)
-        s += fmt::format(", ns_per_query x{:g}", o.timingTol);
-    s += o.allVariants ? "; every variant gates" : "; judged variants gate";
-    if (o.strict)
-        s += "; --strict";
-    if (o.allowDifferentInputs)
-        s += "; --allow-different-inputs";
-    return s;
-}
 } // namespace
 
 const char* changeName(Change c)
@@ -518,17 +439,15 @@ Json readReport(const std::string& path)
     return report;
 }
 
-Comparison compareReports(const Json& oldReport, const Json& newReport, const CompareOptions& o)
+namespace
 {
-    checkShape(oldReport, o.oldName);
-    checkShape(newReport, o.newName);
-    const Side os{oldReport, o.oldName}, ns{newReport, o.newName};
-    Comparison c;
-    c.options = o;
-    Rows rows(o, c.rows);
+using Families = std::map<std::string, const Json*>;
 
-    // The inputs: the same families, each with the same cases, seed and source.
-    const auto oldFamilies = familiesByName(oldReport), newFamilies = familiesByName(newReport);
+// The inputs: the same families, each with the same cases, seed and source; one line per
+// difference (none: the reports ran the same inputs).
+std::vector<std::string> inputDifferences(const Json& oldReport, const Json& newReport,
+                                          const Families& oldFamilies, const Families& newFamilies)
+{
     std::vector<std::string> differences;
     for (const auto& f : oldReport["families"])
     {
@@ -543,30 +462,31 @@ Comparison compareReports(const Json& oldReport, const Json& newReport, const Co
         if (!oldFamilies.count(f["name"].get<std::string>()))
             differences.push_back(
                 fmt::format("family '{}' is in NEW only", excerpt(f["name"].get<std::string>())));
-    c.inputsDiffer = !differences.empty();
-    if (c.inputsDiffer && !o.allowDifferentInputs)
-        throw InputError(
-            fmt::format("compare: {} and {} ran different inputs: {}{} (give "
-                        "--allow-different-inputs to compare the families both ran "
-                        "alike)",
-                        o.oldName, o.newName, differences.front(),
-                        differences.size() > 1
-                            ? fmt::format(" and {} more difference(s)", differences.size() - 1)
-                            : ""));
+    return differences;
+}
 
-    // The variants each report ran (a variant in one only: one row, not one per family).
-    auto variantNames = [](const Json& r)
-    {
-        std::vector<std::string> v;
-        for (const auto& x : r["variants"])
-            v.push_back(x["name"]);
-        return v;
-    };
-    const auto oldVariants = variantNames(oldReport), newVariants = variantNames(newReport);
-    auto has = [](const std::vector<std::string>& v, const std::string& name)
-    { return std::find(v.begin(), v.end(), name) != v.end(); };
-    auto presence = [&](std::string family, std::string variant, std::string statistic, bool inOld,
-                        std::string note)
+std::vector<std::string> variantNames(const Json& r)
+{
+    std::vector<std::string> v;
+    for (const auto& x : r["variants"])
+        v.push_back(x["name"]);
+    return v;
+}
+
+bool has(const std::vector<std::string>& v, const std::string& name)
+{
+    return std::find(v.begin(), v.end(), name) != v.end();
+}
+
+// The rows of one comparison beyond the statistics: a family or variant in one report only (gates
+// with --strict), a family whose inputs differ (not compared).
+struct Comparing
+{
+    Comparison& c;
+    const CompareOptions& o;
+
+    void presence(std::string family, std::string variant, std::string statistic, bool inOld,
+                  std::string note) const
     {
         CompareRow r;
         r.family = std::move(family);
@@ -579,254 +499,130 @@ Comparison compareReports(const Json& oldReport, const Json& newReport, const Co
         r.gates = o.strict;
         r.note = std::move(note);
         c.rows.push_back(std::move(r));
-    };
+    }
+
+    void notCompared(const std::string& family, const std::string& statistic, double a, double b,
+                     std::string note) const
+    {
+        CompareRow r;
+        r.family = family;
+        r.statistic = statistic;
+        r.change = Change::NotCompared;
+        r.oldValue = a;
+        r.newValue = b;
+        r.gates = false;
+        r.note = std::move(note);
+        c.rows.push_back(std::move(r));
+    }
+};
+
+// A variant one report ran and the other did not: one row, not one per family.
+void compareVariantSets(const std::vector<std::string>& oldVariants,
+                        const std::vector<std::string>& newVariants, const Comparing& cmp)
+{
     for (const auto& v : oldVariants)
         if (!has(newVariants, v))
-            presence("", v, "variant", true, "the variant is in OLD only");
+            cmp.presence("", v, "variant", true, "the variant is in OLD only");
     for (const auto& v : newVariants)
         if (!has(oldVariants, v))
-            presence("", v, "variant", false, "the variant is in NEW only");
+            cmp.presence("", v, "variant", false, "the variant is in NEW only");
+}
+
+// One family both reports ran alike: its own rows, then each variant's statistics.
+void compareFamilyVariants(const Json& of, const Json& nf, const std::string& name,
+                           const std::vector<std::string>& oldVariants,
+                           const std::vector<std::string>& newVariants, const Side& os,
+                           const Side& ns, const Comparing& cmp, Rows& rows)
+{
+    const CompareOptions& o = cmp.o;
+    compareFamily(of, nf, name, os, ns, rows);
+    for (const auto& [variant, oldStats] : of["variants"].items())
+    {
+        const Json* newStats = nf["variants"].contains(variant) ? &nf["variants"][variant] : nullptr;
+        if (newStats == nullptr)
+        {
+            if (has(newVariants, variant))
+                cmp.presence(name, variant, "variant", true, "absent from the family in NEW");
+            continue;
+        }
+        CompareRow base;
+        base.family = name;
+        base.variant = variant;
+        base.judged = judgedInEither(variant, os.report, ns.report);
+        base.gates = base.judged || o.allVariants;
+        const std::string where = fmt::format("families['{}'].variants", excerpt(name));
+        if (!oldStats.is_object())
+            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.oldName,
+                                         where, excerpt(variant), typeName(oldStats)));
+        if (!newStats->is_object())
+            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.newName,
+                                         where, excerpt(variant), typeName(*newStats)));
+        compareStats(oldStats, *newStats, base, o, os, ns, rows);
+    }
+    for (const auto& [variant, _] : nf["variants"].items())
+        if (!of["variants"].contains(variant) && has(oldVariants, variant))
+            cmp.presence(name, variant, "variant", false, "absent from the family in OLD");
+}
+} // namespace
+
+Comparison compareReports(const Json& oldReport, const Json& newReport, const CompareOptions& o)
+{
+    checkShape(oldReport, o.oldName);
+    checkShape(newReport, o.newName);
+    const Side os{oldReport, o.oldName}, ns{newReport, o.newName};
+    Comparison c;
+    c.options = o;
+    Rows rows(o, c.rows);
+    const Comparing cmp{c, o};
+
+    const auto oldFamilies = familiesByName(oldReport), newFamilies = familiesByName(newReport);
+    const auto differences = inputDifferences(oldReport, newReport, oldFamilies, newFamilies);
+    c.inputsDiffer = !differences.empty();
+    if (c.inputsDiffer && !o.allowDifferentInputs)
+        throw InputError(
+            fmt::format("compare: {} and {} ran different inputs: {}{} (give "
+                        "--allow-different-inputs to compare the families both ran "
+                        "alike)",
+                        o.oldName, o.newName, differences.front(),
+                        differences.size() > 1
+                            ? fmt::format(" and {} more difference(s)", differences.size() - 1)
+                            : ""));
+
+    // The variants each report ran (a variant in one only: one row, not one per family).
+    const auto oldVariants = variantNames(oldReport), newVariants = variantNames(newReport);
+    compareVariantSets(oldVariants, newVariants, cmp);
 
     for (const auto& of : oldReport["families"])
     {
         const std::string name = of["name"];
         const auto it = newFamilies.find(name);
         if (it == newFamilies.end())
-        {
-            presence(name, "", "family", true, "the family is in OLD only");
-            continue;
-        }
-        const Json& nf = *it->second;
-        if (const std::string d = inputDifference(of, nf); !d.empty())
-        {
-            CompareRow r;
-            r.family = name;
-            r.statistic = "inputs";
-            r.change = Change::NotCompared;
-            r.oldValue = r.newValue = kNaN;
-            r.gates = false;
-            r.note = d;
-            c.rows.push_back(std::move(r));
-            continue;
-        }
-        compareFamily(of, nf, name, os, ns, rows);
-        for (const auto& [variant, oldStats] : of["variants"].items())
-        {
-            const Json* newStats =
-                nf["variants"].contains(variant) ? &nf["variants"][variant] : nullptr;
-            if (newStats == nullptr)
-            {
-                if (has(newVariants, variant))
-                    presence(name, variant, "variant", true, "absent from the family in NEW");
-                continue;
-            }
-            CompareRow base;
-            base.family = name;
-            base.variant = variant;
-            base.judged = judgedInEither(variant, oldReport, newReport);
-            base.gates = base.judged || o.allVariants;
-            const std::string where = fmt::format("families['{}'].variants", excerpt(name));
-            if (!oldStats.is_object())
-                throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.oldName,
-                                             where, excerpt(variant), typeName(oldStats)));
-            if (!newStats->is_object())
-                throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.newName,
-                                             where, excerpt(variant), typeName(*newStats)));
-            compareStats(oldStats, *newStats, base, o, os, ns, rows);
-        }
-        for (const auto& [variant, _] : nf["variants"].items())
-            if (!of["variants"].contains(variant) && has(oldVariants, variant))
-                presence(name, variant, "variant", false, "absent from the family in OLD");
+            cmp.presence(name, "", "family", true, "the family is in OLD only");
+        else if (const std::string d = inputDifference(of, *it->second); !d.empty())
+            cmp.notCompared(name, "inputs", kNaN, kNaN, d);
+        else
+            compareFamilyVariants(of, *it->second, name, oldVariants, newVariants, os, ns, cmp,
+                                  rows);
     }
     for (const auto& nf : newReport["families"])
         if (!oldFamilies.count(nf["name"].get<std::string>()))
-            presence(nf["name"], "", "family", false, "the family is in NEW only");
+            cmp.presence(nf["name"], "", "family", false, "the family is in NEW only");
 
     // The overall exit code: meaningful only when both ran the same inputs.
-    CompareRow exit;
-    exit.statistic = "exit_code";
-    exit.oldValue = number(&oldReport, "exit_code", os, "report");
-    exit.newValue = number(&newReport, "exit_code", ns, "report");
+    const double oldExit = number(&oldReport, "exit_code", os, "report");
+    const double newExit = number(&newReport, "exit_code", ns, "report");
     if (c.inputsDiffer)
-    {
-        exit.change = Change::NotCompared;
-        exit.gates = false;
-        exit.note = "the reports ran different inputs";
-        c.rows.push_back(std::move(exit));
-    }
+        cmp.notCompared("", "exit_code", oldExit, newExit, "the reports ran different inputs");
     else
+    {
+        CompareRow exit;
+        exit.statistic = "exit_code";
+        exit.oldValue = oldExit;
+        exit.newValue = newExit;
         rows.add(std::move(exit));
-
+    }
     c.exitCode = c.failing() > 0 ? kExitFail : kExitPass;
     return c;
-}
-
-std::string compareText(const Comparison& c)
-{
-    const auto shown = shownRows(c);
-    const std::string headers[] = {"family", "variant", "statistic", "OLD",
-                                   "NEW",    "limit",   "change"};
-    std::vector<std::array<std::string, 7>> table;
-    table.push_back(
-        {headers[0], headers[1], headers[2], headers[3], headers[4], headers[5], headers[6]});
-    for (const CompareRow* r : shown)
-        table.push_back({r->family.empty() ? "-" : excerpt(r->family),
-                         r->variant.empty() ? "-" : excerpt(r->variant) + (r->judged ? "" : " (c)"),
-                         r->statistic, formatValue(*r, r->oldValue), formatValue(*r, r->newValue),
-                         limitText(*r), changeText(*r)});
-    std::array<std::size_t, 7> width{};
-    for (const auto& row : table)
-        for (std::size_t i = 0; i < row.size(); ++i)
-            width[i] = std::max(width[i], row[i].size());
-    std::string s = fmt::format("compare: {}\n     vs: {}\n{}\n", c.options.oldName,
-                                c.options.newName, optionsText(c.options));
-    if (shown.empty())
-        s += "every statistic is the same\n";
-    else
-    {
-        for (const auto& row : table)
-        {
-            std::string line;
-            for (std::size_t i = 0; i < row.size(); ++i)
-                line += i + 1 < row.size() ? fmt::format("{:<{}}  ", row[i], width[i]) : row[i];
-            s += line + "\n";
-        }
-        if (std::any_of(shown.begin(), shown.end(), [](const CompareRow* r) { return !r->judged; }))
-            s += "(c): a comparison variant (reported; gates only with --all-variants)\n";
-    }
-    s += summaryText(c) + "\n" + resultLine(c) + "\n";
-    return s;
-}
-
-std::string compareMarkdown(const Comparison& c)
-{
-    auto cell = [](std::string v)
-    {
-        std::string out;
-        for (char ch : v)
-            out += ch == '|' ? std::string("\\|") : std::string(1, ch);
-        return out;
-    };
-    std::string s =
-        fmt::format("# gjk-validate compare\n\n- {}\n- {}\n- {}\n\n", cell(c.options.oldName),
-                    cell(c.options.newName), optionsText(c.options));
-    const auto shown = shownRows(c);
-    if (shown.empty())
-        s += "Every statistic is the same.\n\n";
-    else
-    {
-        s += "| family | variant | statistic | OLD | NEW | limit | change |\n"
-             "|---|---|---|---|---|---|---|\n";
-        for (const CompareRow* r : shown)
-            s += fmt::format("| {} | {} | {} | {} | {} | {} | {} |\n", cell(excerpt(r->family)),
-                             cell(excerpt(r->variant) + (r->judged ? "" : " (comparison)")),
-                             cell(r->statistic), formatValue(*r, r->oldValue),
-                             formatValue(*r, r->newValue), cell(limitText(*r)),
-                             cell(changeText(*r)));
-        s += "\n";
-    }
-    s += summaryText(c) + ".\n\n**" + resultLine(c) + "**\n";
-    return s;
-}
-
-std::string compareHtml(const Comparison& c)
-{
-    auto esc = [](const std::string& v)
-    {
-        std::string out;
-        for (char ch : v)
-            switch (ch)
-            {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += ch;
-            }
-        return out;
-    };
-    auto rowClass = [](const CompareRow& r)
-    {
-        switch (r.change)
-        {
-        case Change::Regressed: return r.fails() ? "regressed" : "worse";
-        case Change::Worse: return "worse";
-        case Change::Better: return "better";
-        default: return "other";
-        }
-    };
-    const bool failed = c.exitCode != kExitPass;
-    std::string s = fmt::format(
-        "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>gjk-validate "
-        "compare</title>\n<style>body{{font:14px system-ui,sans-serif;margin:2em;color:#222}}"
-        "table{{border-collapse:collapse}}td,th{{padding:3px 8px;border-bottom:1px solid #ddd;"
-        "text-align:left}}td.n{{text-align:right;font-variant-numeric:tabular-nums}}"
-        "tr.regressed{{background:#f8d7da}}tr.worse{{background:#fff3cd}}"
-        "tr.better{{background:#d4edda}}.result{{font-size:1.3em;font-weight:bold;color:{}}}"
-        "</style></head><body>\n<h1>gjk-validate compare</h1>\n<p class=\"result\">{}</p>\n"
-        "<ul><li>{}</li><li>{}</li><li>{}</li></ul>\n<p>{}.</p>\n",
-        failed ? "#a00" : "#070", esc(resultLine(c)), esc(c.options.oldName),
-        esc(c.options.newName), esc(optionsText(c.options)), esc(summaryText(c)));
-    const auto shown = shownRows(c);
-    if (shown.empty())
-        s += "<p>Every statistic is the same.</p>\n";
-    else
-    {
-        s += "<table><tr><th>family</th><th>variant</th><th>statistic</th><th>OLD</th>"
-             "<th>NEW</th><th>limit</th><th>change</th></tr>\n";
-        for (const CompareRow* r : shown)
-            s += fmt::format("<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td class=\"n\">"
-                             "{}</td><td class=\"n\">{}</td><td class=\"n\">{}</td><td>{}</td>"
-                             "</tr>\n",
-                             rowClass(*r), esc(excerpt(r->family)),
-                             esc(excerpt(r->variant) + (r->judged ? "" : " (comparison)")),
-                             esc(r->statistic), esc(formatValue(*r, r->oldValue)),
-                             esc(formatValue(*r, r->newValue)), esc(limitText(*r)),
-                             esc(changeText(*r)));
-        s += "</table>\n";
-    }
-    return s + "</body></html>\n";
-}
-
-Json compareJson(const Comparison& c)
-{
-    const CompareOptions& o = c.options;
-    Json j;
-    j["schema"] = "gjk-compare/1";
-    j["old"] = o.oldName;
-    j["new"] = o.newName;
-    j["options"] = {{"rel_tol", o.relTol},
-                    {"percentile_tol", o.percentileTol},
-                    {"timing", o.timing},
-                    {"timing_tol", o.timingTol},
-                    {"all_variants", o.allVariants},
-                    {"strict", o.strict},
-                    {"allow_different_inputs", o.allowDifferentInputs}};
-    j["inputs_differ"] = c.inputsDiffer;
-    j["compared"] = c.rows.size();
-    j["same"] = c.count(Change::Same);
-    Json rows = Json::array();
-    for (const CompareRow* r : shownRows(c))
-    {
-        static constexpr const char* kRules[] = {"count", "exact", "percentile", "timing",
-                                                 "presence"};
-        rows.push_back({{"family", r->family},
-                        {"variant", r->variant},
-                        {"judged", r->judged},
-                        {"statistic", r->statistic},
-                        {"rule", kRules[int(r->rule)]},
-                        {"old", optNum(r->oldValue)},
-                        {"new", optNum(r->newValue)},
-                        {"limit", limitText(*r).empty() ? Json(nullptr) : num(r->limit)},
-                        {"change", changeName(r->change)},
-                        {"gates", r->gates},
-                        {"fails", r->fails()},
-                        {"note", r->note}});
-    }
-    j["rows"] = std::move(rows); // every row that is not "same", failing ones first
-    j["regressions"] = c.failing();
-    j["exit_code"] = c.exitCode;
-    return j;
 }
 
 } // namespace gjkval

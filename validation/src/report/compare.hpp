@@ -83,7 +83,8 @@ struct Comparison
 };
 
 // Reads a report: PATH is report.json or a report directory holding it. InputError (exit 2), one
-// line naming the file: missing, unreadable, not JSON (with line and column), not gjk-report/1.
+// line naming the file: missing, unreadable, not JSON (with line and column), not a kReportSchema
+// report.
 Json readReport(const std::string& path);
 
 // The comparison, a pure function of the two reports. InputError (naming options.oldName and

@@ -74,7 +74,7 @@ std::string writeReportPages(const CampaignReport& result, StagedDir& out)
     out.write("report.md", renderMarkdown(result.report));
     out.write("worst-cases.json", caseFileText(result.worstComments, result.worstCases));
 #if defined(GJK2D_HAVE_HTML)
-    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(result.report.dump())));
+    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(result.report.dump()), kReportSchema));
     const std::string page = "index.html";
 #else
     const std::string page = "report.md";

@@ -94,12 +94,13 @@ std::string invalidCounts(const Json& st)
 
 } // namespace
 
-std::string renderMarkdown(const Json& r)
+namespace
+{
+// The result line and the run's context block: date, host, build, seed, elapsed, throughput, inputs.
+std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& judged)
 {
     const Json& c = r["context"];
-    const auto judged = judgedMap(r);
-    std::string s;
-    s += "# GJK validation report\n\n";
+    std::string s = "# GJK validation report\n\n";
     s += fmt::format("**Result: {}** (judged variants only: comparison variants' "
                      "{} failures are shown, not judged)\n\n",
                      resultText(r), comparisonFailures(r, judged));
@@ -130,10 +131,17 @@ std::string renderMarkdown(const Json& r)
         s += in.contains("family")
                  ? fmt::format("`{}` x{}; ", in["family"].get<std::string>(), u(in["count"]))
                  : fmt::format("`{}` x{}; ", in["file"].get<std::string>(), u(in["count"]));
-    s += "\n\n## Variants\n\nJudged variants decide the result; comparison variants (the "
-         "alternatives the talk discusses) are run and reported, their failures not judged.\n\n"
-         "| variant | judged | type | direction | stopping | frame | support | start | bound |\n"
-         "|---|---|---|---|---|---|---|---|---|\n";
+    return s + "\n";
+}
+
+// The variants: judged or comparison, type, options (or the plugin's path) and the bound.
+std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& judged)
+{
+    std::string s =
+        "\n## Variants\n\nJudged variants decide the result; comparison variants (the "
+        "alternatives the talk discusses) are run and reported, their failures not judged.\n\n"
+        "| variant | judged | type | direction | stopping | frame | support | start | bound |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& v : r["variants"])
     {
         const Json& o = v["options"];
@@ -158,82 +166,98 @@ std::string renderMarkdown(const Json& r)
          "float variants "
          "are judged against the exact distance of the float-rounded input. p99 values are bin "
          "upper edges.\n";
-    s += "\n## Families\n";
-    for (const auto& f : r["families"])
+    return s;
+}
+
+// One row of a family's table: one variant's counts, errors, iterations and speed.
+std::string statsRow(const std::string& name, const Json& st, bool j)
+{
+    const Json& e = st["errors"];
+    const std::uint64_t na =
+        st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
+    return fmt::format(
+        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
+        "{:.2f}/{} | {} | {} |\n",
+        j ? name : name + " (comparison)", u(st["cases"]),
+        u(st["failures"]) + (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
+        u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
+        u(st["nonfinite"]), invalidCounts(st), u(st["iteration_limit"]), u(st["out_of_range"]),
+        u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") + pluginCounts(st),
+        g(e["abs"]["max"]), g(e["abs"]["p99"]), g(e["normalized"]["max"]),
+        g(e["normalized"]["p99"]), g(e["ulps"]["p99"]), g(e["witness"]["max"]),
+        st["iterations"]["mean"].get<double>(), st["iterations"]["max"].get<int>(),
+        g(st["ns_per_query"], "{:.1f}"), g(st["ratio_to_baseline"], "{:.2f}"));
+}
+
+// A correctly rounded variant: the share of the queries each path decided.
+std::string correctPathsLine(const std::string& name, const Json& st)
+{
+    const Json& p = st["correct"]["paths"];
+    const double n = std::max(1.0, double(st["cases"].get<std::uint64_t>()));
+    std::vector<std::string> shares;
+    for (const PathField& f : kPathFields)
     {
-        s += fmt::format("\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
-                         f["pass"].get<bool>() ? "pass" : "**FAIL**", u(f["cases"]),
-                         f["rejected"].get<std::uint64_t>()
-                             ? fmt::format(", {} rejected", u(f["rejected"]))
-                             : "");
-        s += mdEscape(f["reason"].get<std::string>()) + "\n\n";
-        if (!f["makeup"].empty())
-        {
-            s += "Make-up: ";
-            for (const auto& m : f["makeup"])
-                s += fmt::format("{} = {} in [{}, {}] {}; ", m["check"].get<std::string>(),
-                                 g(m["value"]), g(m["min"]), g(m["max"]),
-                                 m.contains("skipped")
-                                     ? "(not judged)"
-                                     : (m["ok"].get<bool>() ? "ok" : "**FAILED**"));
-            s += "\n\n";
-        }
-        s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | invalid | "
-             "iter lim | out of range | "
-             "skipped | max abs | p99 abs | max norm | p99 norm | p99 ulps | max witness | iters "
-             "mean/max | "
-             "ns/query | x base |\n"
-             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-        for (const auto& [name, st] : f["variants"].items())
-        {
-            const Json& e = st["errors"];
-            const bool j = isJudged(judged, name);
-            const std::uint64_t na =
-                st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
-            s += fmt::format(
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
-                "{:.2f}/{} | {} | {} |\n",
-                j ? name : name + " (comparison)", u(st["cases"]),
-                u(st["failures"]) +
-                    (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
-                u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
-                u(st["nonfinite"]), invalidCounts(st), u(st["iteration_limit"]),
-                u(st["out_of_range"]), u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") +
-                    pluginCounts(st),
-                g(e["abs"]["max"]),
-                g(e["abs"]["p99"]), g(e["normalized"]["max"]), g(e["normalized"]["p99"]),
-                g(e["ulps"]["p99"]), g(e["witness"]["max"]), st["iterations"]["mean"].get<double>(),
-                st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
-                g(st["ratio_to_baseline"], "{:.2f}"));
-        }
-        // Correctly rounded variants: the share of the queries each path decided.
-        for (const auto& [name, st] : f["variants"].items())
-        {
-            if (!st.contains("correct"))
-                continue;
-            const Json& p = st["correct"]["paths"];
-            const double n = std::max(1.0, double(st["cases"].get<std::uint64_t>()));
-            auto share = [&](const char* k)
-            {
-                // "extended" is missing from reports written before CorrectPath::Extended.
-                const std::uint64_t c = p.contains(k) ? p[k].get<std::uint64_t>() : 0;
-                return fmt::format("{} {} ({:.4g} %)", k, u(Json(c)), 100.0 * double(c) / n);
-            };
-            std::vector<std::string> shares;
-            for (const PathField& f : kPathFields)
-                shares.push_back(share(gjk::correctPathName(f.path)));
-            s += fmt::format("\n{}: paths {}; {} bit mismatches with the exact side.\n", name,
-                             fmt::join(shares, ", "), u(st["correct"]["bit_mismatches"]));
-        }
+        const char* k = gjk::correctPathName(f.path);
+        // A path newer than the report is missing from it: 0.
+        const std::uint64_t c = p.contains(k) ? p[k].get<std::uint64_t>() : 0;
+        shares.push_back(fmt::format("{} {} ({:.4g} %)", k, u(Json(c)), 100.0 * double(c) / n));
     }
-    if (!r["rejected"].empty())
+    return fmt::format("\n{}: paths {}; {} bit mismatches with the exact side.\n", name,
+                       fmt::join(shares, ", "), u(st["correct"]["bit_mismatches"]));
+}
+
+// One family: verdict, reason, make-up checks, the table of variants and the correct paths' shares.
+std::string familyMarkdown(const Json& f, const std::map<std::string, bool>& judged)
+{
+    std::string s = fmt::format("\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
+                                f["pass"].get<bool>() ? "pass" : "**FAIL**", u(f["cases"]),
+                                f["rejected"].get<std::uint64_t>()
+                                    ? fmt::format(", {} rejected", u(f["rejected"]))
+                                    : "");
+    s += mdEscape(f["reason"].get<std::string>()) + "\n\n";
+    if (!f["makeup"].empty())
     {
-        s += "\n## Rejected cases\n\n";
-        for (const auto& j : r["rejected"])
-            s += fmt::format("- {}: {}\n", mdEscape(j["name"].get<std::string>()),
-                             mdEscape(j["reason"].get<std::string>()));
+        s += "Make-up: ";
+        for (const auto& m : f["makeup"])
+            s += fmt::format("{} = {} in [{}, {}] {}; ", m["check"].get<std::string>(),
+                             g(m["value"]), g(m["min"]), g(m["max"]),
+                             m.contains("skipped") ? "(not judged)"
+                                                   : (m["ok"].get<bool>() ? "ok" : "**FAILED**"));
+        s += "\n\n";
     }
-    s += fmt::format(
+    s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | invalid | "
+         "iter lim | out of range | "
+         "skipped | max abs | p99 abs | max norm | p99 norm | p99 ulps | max witness | iters "
+         "mean/max | "
+         "ns/query | x base |\n"
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const auto& [name, st] : f["variants"].items())
+        s += statsRow(name, st, isJudged(judged, name));
+    for (const auto& [name, st] : f["variants"].items())
+        if (st.contains("correct"))
+            s += correctPathsLine(name, st);
+    return s;
+}
+
+// One worst case's cell for variant `n`: normalised error, stop reason, invalid, failed.
+std::string worstCell(const Json& w, const std::string& n)
+{
+    if (!w.contains("variants") || !w["variants"].contains(n) ||
+        w["variants"][n].contains("skipped"))
+        return " - |";
+    const Json& x = w["variants"][n];
+    if (x.contains("plugin_status")) // a plugin's error status, crash or hang
+        return fmt::format(" **{}** |", x["plugin_status"].get<std::string>());
+    const bool invalid = x.contains("invalid") && x["invalid"].is_string();
+    return fmt::format(" {}, {}{}{} |", g(x["errors"]["normalized"]), x["stop"].get<std::string>(),
+                       invalid ? ", invalid: " + x["invalid"].get<std::string>() : "",
+                       x["failed"].get<bool>() ? " **FAIL**" : "");
+}
+
+// The worst cases: how to replay them, and one row per case with a column per variant.
+std::string worstMarkdown(const Json& r)
+{
+    std::string s = fmt::format(
         "\n## Worst cases\n\nReplay them with `gjk-validate run --cases {}`; inspect one with "
         "`gjk-validate explain {} NAME`.\n\n| family | case | exact distance |",
         r["worst_cases_file"].get<std::string>(), r["worst_cases_file"].get<std::string>());
@@ -249,29 +273,28 @@ std::string renderMarkdown(const Json& r)
                          w["name"].get<std::string>(),
                          w.contains("exact") ? g(w["exact"]["distance"], "{:.17g}") : "-");
         for (const auto& v : r["variants"])
-        {
-            const std::string n = v["name"].get<std::string>();
-            if (!w.contains("variants") || !w["variants"].contains(n) ||
-                w["variants"][n].contains("skipped"))
-            {
-                s += " - |";
-                continue;
-            }
-            const Json& x = w["variants"][n];
-            if (x.contains("plugin_status")) // a plugin's error status, crash or hang
-            {
-                s += fmt::format(" **{}** |", x["plugin_status"].get<std::string>());
-                continue;
-            }
-            const bool invalid = x.contains("invalid") && x["invalid"].is_string();
-            s += fmt::format(" {}, {}{}{} |", g(x["errors"]["normalized"]),
-                             x["stop"].get<std::string>(),
-                             invalid ? ", invalid: " + x["invalid"].get<std::string>() : "",
-                             x["failed"].get<bool>() ? " **FAIL**" : "");
-        }
+            s += worstCell(w, v["name"].get<std::string>());
         s += "\n";
     }
     return s;
+}
+} // namespace
+
+std::string renderMarkdown(const Json& r)
+{
+    const auto judged = judgedMap(r);
+    std::string s = contextMarkdown(r, judged) + variantsMarkdown(r, judged);
+    s += "\n## Families\n";
+    for (const auto& f : r["families"])
+        s += familyMarkdown(f, judged);
+    if (!r["rejected"].empty())
+    {
+        s += "\n## Rejected cases\n\n";
+        for (const auto& j : r["rejected"])
+            s += fmt::format("- {}: {}\n", mdEscape(j["name"].get<std::string>()),
+                             mdEscape(j["reason"].get<std::string>()));
+    }
+    return s + worstMarkdown(r);
 }
 
 std::string terminalTable(const Json& r)

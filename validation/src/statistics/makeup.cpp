@@ -78,12 +78,61 @@ bool nonUnit(const ShapeIn& s)
     return s.c * s.c + s.s * s.s != 1;
 }
 
+// The larger finite aspect ratio of the two shapes; kNone when neither has one.
+double maxAspect(const Case& c)
+{
+    double v = kNone;
+    for (const ShapeIn* sh : {&c.a, &c.b})
+        if (const double a = aspectRatio(*sh); std::isfinite(a))
+            v = std::isnan(v) ? a : std::max(v, a);
+    return v;
+}
+
+// The smaller shortest-edge-over-diameter ratio of the two hulls; kNone when neither hull has 3
+// vertices.
+double minEdgeRatio(const Case& c)
+{
+    double v = kNone;
+    for (const ShapeIn* sh : {&c.a, &c.b})
+    {
+        const auto h = convexHull(sh->points);
+        if (h.size() < 3)
+            continue;
+        double shortest = kInf;
+        for (std::size_t i = 0; i < h.size(); ++i)
+            shortest = std::min(shortest, std::hypot(h[(i + 1) % h.size()][0] - h[i][0],
+                                                     h[(i + 1) % h.size()][1] - h[i][1]));
+        const double ratio = shortest / hullDiameter(h);
+        v = std::isnan(v) ? ratio : std::min(v, ratio);
+    }
+    return v;
+}
+
+// 1 when the case's largest world coordinate is outside float's query range (gjk::Tolerances).
+double outsideFloatRange(const Case& c)
+{
+    const double x = maxAbsWorldCoordinate(c);
+    return (x >= double(gjk::Tolerances<float>::minCoordinate) &&
+            x <= double(gjk::Tolerances<float>::maxCoordinate))
+               ? 0
+               : 1;
+}
+
+// The larger radius of a shape with at least 3 points (0 when neither has).
+double maxPolygonRadius(const Case& c)
+{
+    double v = 0;
+    for (const ShapeIn* sh : {&c.a, &c.b})
+        if (sh->points.size() >= 3)
+            v = std::max(v, sh->radius);
+    return v;
+}
+
 // One case's value for a metric: 0 or 1 for a fraction (SeparatedFraction counts the overlaps and
 // is 1 - their fraction, as the check was first written), its value for a minimum or maximum,
 // kNone when the case has none (no finite aspect, no hull of 3 vertices, touching).
 double caseValue(M m, const Case& c, const exact::Result& t)
 {
-    const ShapeIn* shapes[] = {&c.a, &c.b};
     switch (m)
     {
     case M::OverlapFraction:
@@ -105,55 +154,22 @@ double caseValue(M m, const Case& c, const exact::Result& t)
     case M::MinHullVertices:
         return double(std::min(convexHull(c.a.points).size(), convexHull(c.b.points).size()));
     case M::MaxAspect:
-    {
-        double v = kNone;
-        for (const ShapeIn* sh : shapes)
-            if (const double a = aspectRatio(*sh); std::isfinite(a))
-                v = std::isnan(v) ? a : std::max(v, a);
-        return v;
-    }
+        return maxAspect(c);
     case M::RadiusFraction:
         return (c.a.radius > 0 || c.b.radius > 0) ? 1 : 0;
     case M::MinEdgeRatio:
-    {
-        double v = kNone;
-        for (const ShapeIn* sh : shapes)
-        {
-            const auto h = convexHull(sh->points);
-            if (h.size() < 3)
-                continue;
-            double shortest = kInf;
-            for (std::size_t i = 0; i < h.size(); ++i)
-                shortest = std::min(shortest, std::hypot(h[(i + 1) % h.size()][0] - h[i][0],
-                                                         h[(i + 1) % h.size()][1] - h[i][1]));
-            const double ratio = shortest / hullDiameter(h);
-            v = std::isnan(v) ? ratio : std::min(v, ratio);
-        }
-        return v;
-    }
+        return minEdgeRatio(c);
     case M::MinSizeRatio:
     case M::MaxSizeRatio:
         return sizeRatio(c);
     case M::OutsideFloatRangeFraction:
-    {
-        const double x = maxAbsWorldCoordinate(c);
-        return (x >= double(gjk::Tolerances<float>::minCoordinate) &&
-                x <= double(gjk::Tolerances<float>::maxCoordinate))
-                   ? 0
-                   : 1;
-    }
+        return outsideFloatRange(c);
     case M::DistinctDistances:
         return t.distance;
     case M::SharedOriginFraction:
         return (c.a.px == c.b.px && c.a.py == c.b.py) ? 1 : 0;
     case M::MaxPolygonRadius:
-    {
-        double v = 0;
-        for (const ShapeIn* sh : shapes)
-            if (sh->points.size() >= 3)
-                v = std::max(v, sh->radius);
-        return v;
-    }
+        return maxPolygonRadius(c);
     case M::NonUnitRotationFraction:
         return (nonUnit(c.a) || nonUnit(c.b)) ? 1 : 0;
     }

@@ -8,17 +8,23 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <string_view>
 
 namespace gjk_html
 {
 
-// The full index.html for a report.json (docs/report-schema.md, "gjk-report/1"): context,
-// summary table, speed-against-error plot, per-family histograms, and an iteration viewer for each
-// of the report's worst cases. Missing optional fields are tolerated.
-std::string renderReport(const nlohmann::json& report);
+// The full index.html for a report.json (docs/report-schema.md): context, summary table,
+// speed-against-error plot, per-family histograms, and an iteration viewer for each of the report's
+// worst cases. Missing optional fields are tolerated. `schema`: the report format the page is made
+// for (gjkval::kReportSchema); the page warns when the data names another.
+std::string renderReport(const nlohmann::json& report, std::string_view schema);
 
 // A page with the iteration viewer for one CaseDetail (for `gjk-validate explain CASE --html`).
 std::string renderCase(const nlohmann::json& caseDetail);
+
+// The page's style sheet (assets/report.css), the one home of the pass/fail palette: other pages
+// (gjk-validate compare --html) inline it and use its classes.
+std::string_view styleSheet();
 
 // The JSON text as inlined into the page's <script type="application/json" id="report-data">
 // block: compact, invalid UTF-8 replaced by U+FFFD, and every '<', '>' and '&' written as a

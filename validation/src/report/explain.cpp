@@ -1,0 +1,143 @@
+#include "report/explain.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace gjkval
+{
+namespace
+{
+std::string fmtPt(const Json& p)
+{
+    auto f = [](const Json& v)
+    { return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump(); };
+    return p.is_array() && p.size() == 2 ? fmt::format("({}, {})", f(p[0]), f(p[1])) : p.dump();
+}
+
+std::string fmtFull(const Json& v)
+{
+    return v.is_number() ? fmt::format("{:.17g}", v.get<double>()) : v.dump();
+}
+
+std::string fmtNum(const Json& v)
+{
+    if (v.is_number())
+        return fmt::format("{:.6g}", v.get<double>());
+    return v.is_null() ? "n/a" : v.dump();
+}
+
+// Shape `k` ("a" or "b"): its size, radius and transform, and its first 12 points, local and world.
+std::string shapeText(const char* k, const Json& sh)
+{
+    std::string s = fmt::format("  {}: {} points, radius {}, transform p = {}, q = {}\n", k,
+                                sh["points"].size(), fmtNum(sh["radius"]),
+                                fmtPt(sh["transform"]["p"]), fmtPt(sh["transform"]["q"]));
+    const std::size_t shown = std::min<std::size_t>(sh["points"].size(), 12);
+    for (std::size_t i = 0; i < shown; ++i)
+        s += fmt::format("     [{}] local {}  world {}\n", i, fmtPt(sh["points"][i]),
+                         fmtPt(sh["world"][i]));
+    if (shown < sh["points"].size())
+        s += fmt::format("     ... {} more\n", sh["points"].size() - shown);
+    return s;
+}
+
+// An exact result: its distance interval, overlap, squared distance and witness points.
+std::string exactText(const char* label, const Json& e)
+{
+    return fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label,
+                       fmtFull(e["distance"]), fmtFull(e["lower"]), fmtFull(e["upper"]),
+                       e["overlap"].get<bool>()) +
+           fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
+                       e["squared"].get<std::string>(), fmtPt(e["witnessA"]),
+                       fmtPt(e["witnessB"]));
+}
+
+// A variant's answer and its judgement: distance, witnesses, errors, validity, certified interval.
+std::string answerText(const std::string& name, const Json& v)
+{
+    std::string s =
+        fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
+                    v["type"].get<std::string>(), fmtFull(v["distance"]),
+                    v["iterations"].get<int>(), v["stop"].get<std::string>(),
+                    v["failed"].get<bool>() ? "  ** FAILED **" : "");
+    s += fmt::format("     pointA {}  pointB {}  normal {}\n", fmtPt(v["pointA"]),
+                     fmtPt(v["pointB"]), fmtPt(v["normal"]));
+    const Json& e = v["errors"];
+    s += fmt::format(
+        "     errors: abs {}  rel {}  ulps {}  normalized {}  bound {} (ratio {})  "
+        "witness {}  witness gap {}  misclassified {}\n",
+        fmtNum(e["abs"]), fmtNum(e["rel"]), fmtNum(e["ulps"]), fmtNum(e["normalized"]),
+        fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
+        fmtNum(e["witness_gap"]),
+        v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
+    // Older reports have no witness judgement.
+    if (v.contains("invalid"))
+        s += fmt::format("     witness bound {}  invalid answer: {}\n", fmtNum(v["witness_bound"]),
+                         v["invalid"].is_null() ? "no" : v["invalid"].get<std::string>());
+    if (v.contains("certified") && !v["certified"].get<bool>())
+        s += "     certified interval: none (the query did not certify this case)\n";
+    else if (v.contains("certified"))
+        s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
+                         fmtFull(v["lower"]), fmtFull(v["upper"]),
+                         v["interval_contains"].get<bool>() ? "yes" : "NO");
+    return s;
+}
+
+// A variant's iteration trace, one step per block: simplex, closest point, direction, support.
+std::string traceText(const Json& trace)
+{
+    std::string s;
+    int k = 0;
+    for (const auto& step : trace)
+    {
+        s += fmt::format("     step {}: simplex", k++);
+        for (const auto& sv : step["simplex"])
+            s += fmt::format(" [w {} a {} iA {} iB {}]", fmtPt(sv["w"]), fmtNum(sv["a"]),
+                             sv["iA"].get<int>(), sv["iB"].get<int>());
+        s += fmt::format("\n            closest {}  direction {}", fmtPt(step["closest"]),
+                         fmtPt(step["direction"]));
+        if (!step["support"].is_null())
+            s += fmt::format("  support w {} (iA {}, iB {})", fmtPt(step["support"]["w"]),
+                             step["support"]["iA"].get<int>(), step["support"]["iB"].get<int>());
+        s += "\n";
+    }
+    return s;
+}
+
+// One variant on the case: skipped, a plugin's failure status, or its answer and trace.
+std::string variantText(const std::string& name, const Json& v)
+{
+    if (v.contains("skipped"))
+        return fmt::format("  variant {}: skipped ({})\n", name, v["skipped"].get<std::string>());
+    if (v.contains("plugin_status"))
+        return fmt::format("  variant {} ({}): {}: {}\n", name, v["type"].get<std::string>(),
+                           v["plugin_status"].get<std::string>(),
+                           v["plugin_detail"].get<std::string>());
+    const std::string s = answerText(name, v);
+    if (!v.contains("trace"))
+        return s + "     (no trace: the implementation is a plugin's)\n";
+    return s + traceText(v["trace"]);
+}
+} // namespace
+
+std::string explainText(const Json& d)
+{
+    std::string s = fmt::format("case {}  (family {})\n", d["name"].get<std::string>(),
+                                d["family"].get<std::string>());
+    for (const char* k : {"a", "b"})
+        s += shapeText(k, d[k]);
+    if (d.contains("rejected"))
+        return s + fmt::format("  REJECTED: {}\n", d["rejected"].get<std::string>());
+    s += exactText("exact", d["exact"]);
+    if (d.contains("exact_float_input"))
+    {
+        s += exactText("exact (float-rounded input)", d["exact_float_input"]);
+        s += fmt::format("     input rounding error {}\n", fmtNum(d["input_rounding"]));
+    }
+    for (const auto& [name, v] : d["variants"].items())
+        s += variantText(name, v);
+    return s;
+}
+
+} // namespace gjkval
