@@ -1,6 +1,7 @@
 // Stands in for the two CGAL routes of the exact side (exact/src/cgal_hull.cpp and
 // cgal_minkowski.cpp) in the fuzz build: the fuzzers call only the default route (edge-merge), and
-// the CGAL routes take minutes to compile under the sanitizers. Reaching one is a bug of the fuzzer.
+// the CGAL routes take minutes to compile under the sanitizers. Reaching one is a bug of the
+// fuzzer.
 #include "internal.hpp"
 
 #include <stdexcept>

@@ -79,9 +79,12 @@ template <class T> double number(Reader& r, double previous)
     constexpr bool isFloat = std::is_same_v<T, float>;
     switch (r.byte() % 8)
     {
-    case 0: return 0.0;
-    case 1: return double(std::int8_t(r.byte()));               // small integers
-    case 2: return double(std::int8_t(r.byte())) / 64.0;        // small fractions
+    case 0:
+        return 0.0;
+    case 1:
+        return double(std::int8_t(r.byte())); // small integers
+    case 2:
+        return double(std::int8_t(r.byte())) / 64.0; // small fractions
     case 3:
     case 4:
     {
@@ -90,9 +93,11 @@ template <class T> double number(Reader& r, double previous)
         const int e = isFloat ? -165 + r.u16() % 293 : -1090 + r.u16() % 2099;
         return std::ldexp(m, e);
     }
-    case 5: return std::bit_cast<double>(r.u64()); // any bit pattern (NaN and inf are skipped)
-    case 6: return previous;                       // a repeated coordinate
-    default:                                       // a neighbour of the previous value
+    case 5:
+        return std::bit_cast<double>(r.u64()); // any bit pattern (NaN and inf are skipped)
+    case 6:
+        return previous; // a repeated coordinate
+    default:             // a neighbour of the previous value
         return r.byte() & 1 ? std::nextafter(T(previous), std::numeric_limits<T>::infinity())
                             : std::nextafter(T(previous), -std::numeric_limits<T>::infinity());
     }
@@ -173,8 +178,10 @@ bool decodeShape(Reader& r, bool convex, std::vector<gjk::Vec2<T>>& points, gjk:
         return false;
     switch (r.byte() % 4)
     {
-    case 0: xf.q = {T(1), T(0)}; break; // identity
-    case 1:                             // unit-ish: (cos, sin) of an angle, rounded to T
+    case 0:
+        xf.q = {T(1), T(0)};
+        break; // identity
+    case 1:    // unit-ish: (cos, sin) of an angle, rounded to T
     {
         const double angle = r.u16() * (6.283185307179586 / 65536.0);
         xf.q = {T(std::cos(angle)), T(std::sin(angle))};
@@ -206,7 +213,8 @@ bool decodeShape(Reader& r, bool convex, std::vector<gjk::Vec2<T>>& points, gjk:
 template <class T> bool decode(Reader& r, std::uint8_t bits, Query<T>& q)
 {
     gjk::Options& o = q.options;
-    o.direction = bits & 1 ? gjk::SearchDirection::ClosestPoint : gjk::SearchDirection::EdgePerpendicular;
+    o.direction =
+        bits & 1 ? gjk::SearchDirection::ClosestPoint : gjk::SearchDirection::EdgePerpendicular;
     o.stopping = bits & 2 ? gjk::StoppingRule::DualityGap : gjk::StoppingRule::RepeatedSupport;
     o.frame = bits & 4 ? gjk::Frame::World : gjk::Frame::LocalA;
     o.support = bits & 8 ? gjk::SupportStrategy::BinarySearch : gjk::SupportStrategy::Linear;
@@ -279,7 +287,8 @@ void checkOutput(const Query<T>& q, const gjk::DistanceOutput<T>& out, const cha
         finding(out, which, "distance is negative or not finite and outOfRange is not set");
     auto finite = [](gjk::Vec2<T> v) { return std::isfinite(v.x) && std::isfinite(v.y); };
     if (!out.outOfRange && !(finite(out.pointA) && finite(out.pointB) && finite(out.normal)))
-        finding(out, which, "a witness point or the normal is not finite and outOfRange is not set");
+        finding(out, which,
+                "a witness point or the normal is not finite and outOfRange is not set");
     if (out.simplexCount < 1 || out.simplexCount > 3)
         finding(out, which, "simplexCount outside 1..3");
     const int limit = gjk::iterationLimit(q.options, q.input.proxyA.count, q.input.proxyB.count);
@@ -318,7 +327,8 @@ template <class T> void run(Reader& r, std::uint8_t bits)
     if (!warmRepeatsCold(cold, warm))
     {
         describe("cold", cold);
-        finding(warm, "warm", "a warm repeat does not give the cold answer's bits (warmRepeatsCold)");
+        finding(warm, "warm",
+                "a warm repeat does not give the cold answer's bits (warmRepeatsCold)");
     }
 }
 

@@ -1,9 +1,10 @@
 // Benchmarks of exact::distance for every route (docs/exact.md has the table and the command).
 //
-//   Pair/<route>/<n>/<transformed>: two random regular-ish convex polygons of n vertices each (points
-//     on a circle at jittered angles, so every point is a hull vertex), separated, either untransformed
-//     (c = 1, s = 0, no translation: the coordinates are the doubles as given) or with a rotation by a
-//     non-trivial angle (c, s from std::cos/std::sin) and a translation.
+//   Pair/<route>/<n>/<transformed>: two random regular-ish convex polygons of n vertices each
+//   (points
+//     on a circle at jittered angles, so every point is a hull vertex), separated, either
+//     untransformed (c = 1, s = 0, no translation: the coordinates are the doubles as given) or
+//     with a rotation by a non-trivial angle (c, s from std::cos/std::sin) and a translation.
 //     hull-of-differences (O(nm log nm)) stops at 256; minkowski-sum-2 stops at 1024.
 //   Small/<route>: the validation runner's workload: a fixed set of 1024 random pairs of 3-8 point
 //     shapes (random points, transforms, radii; about 15% overlapping), one case per iteration.
@@ -16,25 +17,32 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace
+{
 
-exact::Shape polygon(std::mt19937_64& rng, int n, double cx, double cy, bool transformed) {
+exact::Shape polygon(std::mt19937_64& rng, int n, double cx, double cy, bool transformed)
+{
     std::uniform_real_distribution<double> jitter(-0.3, 0.3);
     const double pi = std::acos(-1.0);
     exact::Shape s;
-    for (int k = 0; k < n; ++k) {
+    for (int k = 0; k < n; ++k)
+    {
         const double t = 2 * pi * (k + jitter(rng)) / n;
         s.points.push_back({std::cos(t), std::sin(t)});
     }
-    if (transformed) {
+    if (transformed)
+    {
         std::uniform_real_distribution<double> angle(0, 2 * pi);
         const double a = angle(rng);
         s.c = std::cos(a);
         s.s = std::sin(a);
         s.px = cx + 0.123456789;
         s.py = cy - 0.987654321;
-    } else {
-        for (auto& p : s.points) {
+    }
+    else
+    {
+        for (auto& p : s.points)
+        {
             p.x += cx;
             p.y += cy;
         }
@@ -42,7 +50,8 @@ exact::Shape polygon(std::mt19937_64& rng, int n, double cx, double cy, bool tra
     return s;
 }
 
-void pair(benchmark::State& state, exact::Route route) {
+void pair(benchmark::State& state, exact::Route route)
+{
     const int n = static_cast<int>(state.range(0));
     const bool transformed = state.range(1) != 0;
     std::mt19937_64 rng(12345 + n);
@@ -50,24 +59,29 @@ void pair(benchmark::State& state, exact::Route route) {
     const exact::Shape b = polygon(rng, n, 2.5, 0.75, transformed);
     exact::Options o;
     o.route = route;
-    for (auto _ : state) {
+    for (auto _ : state)
+    {
         exact::Result r = exact::distance(a, b, o);
         benchmark::DoNotOptimize(r.distance);
     }
     state.SetLabel(transformed ? "transformed" : "identity");
 }
 
-std::vector<std::pair<exact::Shape, exact::Shape>> smallCases() {
+std::vector<std::pair<exact::Shape, exact::Shape>> smallCases()
+{
     std::mt19937_64 rng(2024);
     std::uniform_int_distribution<int> count(3, 8);
-    std::uniform_real_distribution<double> coord(-1, 1), angle(0, 2 * std::acos(-1.0)), offset(-2.5, 2.5),
-        radius(0, 0.3);
+    std::uniform_real_distribution<double> coord(-1, 1), angle(0, 2 * std::acos(-1.0)),
+        offset(-2.5, 2.5), radius(0, 0.3);
     std::vector<std::pair<exact::Shape, exact::Shape>> cases;
-    for (int k = 0; k < 1024; ++k) {
+    for (int k = 0; k < 1024; ++k)
+    {
         exact::Shape s[2];
-        for (auto& sh : s) {
+        for (auto& sh : s)
+        {
             const int n = count(rng);
-            for (int i = 0; i < n; ++i) sh.points.push_back({coord(rng), coord(rng)});
+            for (int i = 0; i < n; ++i)
+                sh.points.push_back({coord(rng), coord(rng)});
             const double a = angle(rng);
             sh.c = std::cos(a);
             sh.s = std::sin(a);
@@ -80,47 +94,59 @@ std::vector<std::pair<exact::Shape, exact::Shape>> smallCases() {
     return cases;
 }
 
-void small(benchmark::State& state, exact::Options o) {
+void small(benchmark::State& state, exact::Options o)
+{
     static const auto cases = smallCases();
     std::size_t k = 0;
-    for (auto _ : state) {
+    for (auto _ : state)
+    {
         const auto& c = cases[k++ % cases.size()];
         exact::Result r = exact::distance(c.first, c.second, o);
         benchmark::DoNotOptimize(r.distance);
     }
 }
 
-void bruteForceSmall(benchmark::State& state) {
+void bruteForceSmall(benchmark::State& state)
+{
     static const auto cases = smallCases();
     std::size_t k = 0;
-    for (auto _ : state) {
+    for (auto _ : state)
+    {
         const auto& c = cases[k++ % cases.size()];
         exact::Result r = exact::bruteForce(c.first, c.second);
         benchmark::DoNotOptimize(r.distance);
     }
 }
 
-const int registered = [] {
-    for (exact::Route route : exact::kAllRoutes) {
+const int registered = []
+{
+    for (exact::Route route : exact::kAllRoutes)
+    {
         const std::string name = exact::routeName(route);
         exact::Options o;
         o.route = route;
-        benchmark::RegisterBenchmark(("Small/" + name).c_str(), small, o)->Unit(benchmark::kMicrosecond);
-        auto* b = benchmark::RegisterBenchmark(("Pair/" + name).c_str(), pair, route)->Unit(benchmark::kMicrosecond);
+        benchmark::RegisterBenchmark(("Small/" + name).c_str(), small, o)
+            ->Unit(benchmark::kMicrosecond);
+        auto* b = benchmark::RegisterBenchmark(("Pair/" + name).c_str(), pair, route)
+                      ->Unit(benchmark::kMicrosecond);
         std::vector<int64_t> sizes = {4, 8, 64, 256, 1024, 8192};
-        if (route == exact::Route::HullOfDifferences) sizes = {4, 8, 64, 256};
-        if (route == exact::Route::MinkowskiSum2) sizes = {4, 8, 64, 256, 1024};
+        if (route == exact::Route::HullOfDifferences)
+            sizes = {4, 8, 64, 256};
+        if (route == exact::Route::MinkowskiSum2)
+            sizes = {4, 8, 64, 256, 1024};
         for (int64_t n : sizes)
-            for (int64_t t : {0, 1}) b->Args({n, t});
+            for (int64_t t : {0, 1})
+                b->Args({n, t});
     }
     exact::Options witnesses;
     witnesses.exactWitnesses = true;
     benchmark::RegisterBenchmark("Small/edge-merge+exact-witnesses", small, witnesses)
         ->Unit(benchmark::kMicrosecond);
-    benchmark::RegisterBenchmark("Small/brute-force", bruteForceSmall)->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("Small/brute-force", bruteForceSmall)
+        ->Unit(benchmark::kMicrosecond);
     return 0;
 }();
 
-}  // namespace
+} // namespace
 
 BENCHMARK_MAIN();

@@ -5,24 +5,34 @@
 #include <stdexcept>
 #include <string>
 
-namespace exact {
+namespace exact
+{
 
-const char* routeName(Route r) {
-    switch (r) {
-        case Route::HullOfDifferences: return "hull-of-differences";
-        case Route::MinkowskiSum2: return "minkowski-sum-2";
-        case Route::EdgeMerge: return "edge-merge";
+const char* routeName(Route r)
+{
+    switch (r)
+    {
+    case Route::HullOfDifferences:
+        return "hull-of-differences";
+    case Route::MinkowskiSum2:
+        return "minkowski-sum-2";
+    case Route::EdgeMerge:
+        return "edge-merge";
     }
     return "unknown";
 }
 
-bool parseRoute(const std::string& name, Route& out) {
-    if (name == "default") {
+bool parseRoute(const std::string& name, Route& out)
+{
+    if (name == "default")
+    {
         out = Route::Default;
         return true;
     }
-    for (Route r : kAllRoutes) {
-        if (name == routeName(r)) {
+    for (Route r : kAllRoutes)
+    {
+        if (name == routeName(r))
+        {
             out = r;
             return true;
         }
@@ -30,42 +40,59 @@ bool parseRoute(const std::string& name, Route& out) {
     return false;
 }
 
-void validateShape(const Shape& s, const char* name) {
+void validateShape(const Shape& s, const char* name)
+{
     const std::string who = name ? name : "shape";
-    if (s.points.empty()) throw std::invalid_argument("exact: " + who + " has no points");
-    auto finite = [&](double v, const char* what) {
-        if (!std::isfinite(v)) throw std::invalid_argument("exact: " + who + " has a non-finite " + what);
+    if (s.points.empty())
+        throw std::invalid_argument("exact: " + who + " has no points");
+    auto finite = [&](double v, const char* what)
+    {
+        if (!std::isfinite(v))
+            throw std::invalid_argument("exact: " + who + " has a non-finite " + what);
     };
     finite(s.radius, "radius");
-    if (s.radius < 0) throw std::invalid_argument("exact: " + who + " has a negative radius");
+    if (s.radius < 0)
+        throw std::invalid_argument("exact: " + who + " has a negative radius");
     finite(s.px, "translation");
     finite(s.py, "translation");
     finite(s.c, "rotation cosine");
     finite(s.s, "rotation sine");
-    for (const Point& p : s.points) {
+    for (const Point& p : s.points)
+    {
         finite(p.x, "point coordinate");
         finite(p.y, "point coordinate");
     }
 }
 
-Result distance(const Shape& a, const Shape& b, const Options& options) {
+Result distance(const Shape& a, const Shape& b, const Options& options)
+{
     validateShape(a, "shape A");
     validateShape(b, "shape B");
     detail::ExactResult e;
-    switch (options.route) {
-        case Route::HullOfDifferences: e = detail::hullOfDifferences(a, b); break;
-        case Route::MinkowskiSum2: e = detail::minkowskiSum2(a, b); break;
-        case Route::EdgeMerge: e = detail::edgeMerge(a, b); break;
-        default: throw std::invalid_argument("exact: unknown route");
+    switch (options.route)
+    {
+    case Route::HullOfDifferences:
+        e = detail::hullOfDifferences(a, b);
+        break;
+    case Route::MinkowskiSum2:
+        e = detail::minkowskiSum2(a, b);
+        break;
+    case Route::EdgeMerge:
+        e = detail::edgeMerge(a, b);
+        break;
+    default:
+        throw std::invalid_argument("exact: unknown route");
     }
     return detail::finish(e, a.radius, b.radius, options.exactWitnesses);
 }
 
-double pointToShapeDistance(const Shape& shape, Point p) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) throw std::invalid_argument("exact: non-finite query point");
+double pointToShapeDistance(const Shape& shape, Point p)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw std::invalid_argument("exact: non-finite query point");
     Shape q;
     q.points = {p};
-    return distance(q, shape).distance;  // max(0, dist(p, hull) - 0 - radius)
+    return distance(q, shape).distance; // max(0, dist(p, hull) - 0 - radius)
 }
 
-}  // namespace exact
+} // namespace exact

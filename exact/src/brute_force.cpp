@@ -1,5 +1,6 @@
 // Independent brute force, in plain GMP rationals with no hull construction, for the tests.
-//   overlap:  the hulls are disjoint iff some direction strictly separates the point sets; when they
+//   overlap:  the hulls are disjoint iff some direction strictly separates the point sets; when
+//   they
 //             are, the closest pair gives such a direction, and it is either the normal of a hull
 //             edge (a pair of points of one set) or the difference of two points (one per set).
 //             So: try the normals of all intra-set pairs and all inter-set differences.
@@ -11,78 +12,106 @@
 
 #include <vector>
 
-namespace exact {
-namespace {
+namespace exact
+{
+namespace
+{
 
 using detail::QPoint;
 
-std::vector<QPoint> transformed(const Shape& s) {
+std::vector<QPoint> transformed(const Shape& s)
+{
     std::vector<QPoint> out;
-    const mpq_class c(s.c), sn(s.s), px(s.px), py(s.py);  // mpq from double: exact
-    for (const Point& p : s.points) {
+    const mpq_class c(s.c), sn(s.s), px(s.px), py(s.py); // mpq from double: exact
+    for (const Point& p : s.points)
+    {
         const mpq_class x(p.x), y(p.y);
         out.push_back({c * x - sn * y + px, sn * x + c * y + py});
     }
     return out;
 }
 
-mpq_class dot(const mpq_class& dx, const mpq_class& dy, const QPoint& p) { return dx * p.x + dy * p.y; }
+mpq_class dot(const mpq_class& dx, const mpq_class& dy, const QPoint& p)
+{
+    return dx * p.x + dy * p.y;
+}
 
 // true if direction (dx, dy) strictly separates the sets (in either order)
-bool separates(const mpq_class& dx, const mpq_class& dy, const std::vector<QPoint>& a, const std::vector<QPoint>& b) {
-    if (sgn(dx) == 0 && sgn(dy) == 0) return false;
+bool separates(const mpq_class& dx, const mpq_class& dy, const std::vector<QPoint>& a,
+               const std::vector<QPoint>& b)
+{
+    if (sgn(dx) == 0 && sgn(dy) == 0)
+        return false;
     mpq_class minA = dot(dx, dy, a[0]), maxA = minA, minB = dot(dx, dy, b[0]), maxB = minB;
-    for (const QPoint& p : a) {
+    for (const QPoint& p : a)
+    {
         mpq_class v = dot(dx, dy, p);
-        if (v < minA) minA = v;
-        if (v > maxA) maxA = v;
+        if (v < minA)
+            minA = v;
+        if (v > maxA)
+            maxA = v;
     }
-    for (const QPoint& p : b) {
+    for (const QPoint& p : b)
+    {
         mpq_class v = dot(dx, dy, p);
-        if (v < minB) minB = v;
-        if (v > maxB) maxB = v;
+        if (v < minB)
+            minB = v;
+        if (v > maxB)
+            maxB = v;
     }
     return maxA < minB || maxB < minA;
 }
 
-bool disjoint(const std::vector<QPoint>& a, const std::vector<QPoint>& b) {
+bool disjoint(const std::vector<QPoint>& a, const std::vector<QPoint>& b)
+{
     for (const auto* s : {&a, &b})
         for (std::size_t i = 0; i < s->size(); ++i)
-            for (std::size_t j = i + 1; j < s->size(); ++j) {
+            for (std::size_t j = i + 1; j < s->size(); ++j)
+            {
                 const QPoint &p = (*s)[i], &q = (*s)[j];
-                if (separates(p.y - q.y, q.x - p.x, a, b)) return true;
+                if (separates(p.y - q.y, q.x - p.x, a, b))
+                    return true;
             }
     for (const QPoint& p : a)
         for (const QPoint& q : b)
-            if (separates(q.x - p.x, q.y - p.y, a, b)) return true;
+            if (separates(q.x - p.x, q.y - p.y, a, b))
+                return true;
     return false;
 }
 
 // Closest point of segment [p, q] to x and its squared distance.
-mpq_class pointSegment(const QPoint& x, const QPoint& p, const QPoint& q, QPoint& closest) {
+mpq_class pointSegment(const QPoint& x, const QPoint& p, const QPoint& q, QPoint& closest)
+{
     const mpq_class dx = q.x - p.x, dy = q.y - p.y;
     const mpq_class l = dx * dx + dy * dy;
-    if (sgn(l) == 0) {
+    if (sgn(l) == 0)
+    {
         closest = p;
-    } else {
+    }
+    else
+    {
         mpq_class t = ((x.x - p.x) * dx + (x.y - p.y) * dy) / l;
-        if (sgn(t) < 0) t = 0;
-        if (t > 1) t = 1;
+        if (sgn(t) < 0)
+            t = 0;
+        if (t > 1)
+            t = 1;
         closest = {p.x + t * dx, p.y + t * dy};
     }
     const mpq_class ex = x.x - closest.x, ey = x.y - closest.y;
     return ex * ex + ey * ey;
 }
 
-}  // namespace
+} // namespace
 
-Result bruteForce(const Shape& sa, const Shape& sb) {
+Result bruteForce(const Shape& sa, const Shape& sb)
+{
     validateShape(sa, "shape A");
     validateShape(sb, "shape B");
     const std::vector<QPoint> a = transformed(sa), b = transformed(sb);
     detail::ExactResult e;
     e.overlap = !disjoint(a, b);
-    if (e.overlap) {
+    if (e.overlap)
+    {
         e.squared = 0;
         e.z = e.wa = e.wb = {0, 0};
         return detail::finish(e, sa.radius, sb.radius, false);
@@ -91,9 +120,11 @@ Result bruteForce(const Shape& sa, const Shape& sb) {
     QPoint c;
     for (const QPoint& x : a)
         for (std::size_t i = 0; i < b.size(); ++i)
-            for (std::size_t j = i; j < b.size(); ++j) {
+            for (std::size_t j = i; j < b.size(); ++j)
+            {
                 const mpq_class d = pointSegment(x, b[i], b[j], c);
-                if (first || d < e.squared) {
+                if (first || d < e.squared)
+                {
                     first = false;
                     e.squared = d;
                     e.wa = x;
@@ -102,9 +133,11 @@ Result bruteForce(const Shape& sa, const Shape& sb) {
             }
     for (const QPoint& x : b)
         for (std::size_t i = 0; i < a.size(); ++i)
-            for (std::size_t j = i; j < a.size(); ++j) {
+            for (std::size_t j = i; j < a.size(); ++j)
+            {
                 const mpq_class d = pointSegment(x, a[i], a[j], c);
-                if (d < e.squared) {
+                if (d < e.squared)
+                {
                     e.squared = d;
                     e.wa = c;
                     e.wb = x;
@@ -114,4 +147,4 @@ Result bruteForce(const Shape& sa, const Shape& sb) {
     return detail::finish(e, sa.radius, sb.radius, false);
 }
 
-}  // namespace exact
+} // namespace exact

@@ -1,29 +1,36 @@
-// The exact construction step of the CGAL routes, in plain GMP rationals (mpq_class, canonical after
-// every operation). EdgeMerge does the same construction in dyadic integers (edge_merge.cpp); the
-// tests compare both with == on every case.
+// The exact construction step of the CGAL routes, in plain GMP rationals (mpq_class, canonical
+// after every operation). EdgeMerge does the same construction in dyadic integers (edge_merge.cpp);
+// the tests compare both with == on every case.
 #include "internal.hpp"
 
-namespace exact::detail {
+namespace exact::detail
+{
 
-ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, const QPoint* bs) {
+ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, const QPoint* bs)
+{
     ExactResult r;
     r.overlap = f.overlap;
-    if (f.kind == Feature::Vertex) {
+    if (f.kind == Feature::Vertex)
+    {
         r.z = zs[0];
         r.squared = zs[0].x * zs[0].x + zs[0].y * zs[0].y;
         r.wa = as[0];
         r.wb = bs[0];
         return r;
     }
-    if (f.kind == Feature::Edge) {
+    if (f.kind == Feature::Edge)
+    {
         const QPoint &P = zs[0], &Q = zs[1];
         const mpq_class dx = Q.x - P.x, dy = Q.y - P.y;
         const mpq_class L = dx * dx + dy * dy;
-        const mpq_class t = -(P.x * dx + P.y * dy) / L;  // closest point P + t (Q - P), 0 < t < 1
-        if (f.overlap) {
+        const mpq_class t = -(P.x * dx + P.y * dy) / L; // closest point P + t (Q - P), 0 < t < 1
+        if (f.overlap)
+        {
             r.squared = 0;
             r.z = {0, 0};
-        } else {
+        }
+        else
+        {
             const mpq_class C = P.x * Q.y - P.y * Q.x;
             r.squared = C * C / L;
             r.z = {P.x + t * dx, P.y + t * dy};
@@ -40,9 +47,10 @@ ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, cons
     const mpq_class den = l0 + l1 + l2;
     r.squared = 0;
     r.z = {0, 0};
-    r.wa = {(l0 * as[0].x + l1 * as[1].x + l2 * as[2].x) / den, (l0 * as[0].y + l1 * as[1].y + l2 * as[2].y) / den};
+    r.wa = {(l0 * as[0].x + l1 * as[1].x + l2 * as[2].x) / den,
+            (l0 * as[0].y + l1 * as[1].y + l2 * as[2].y) / den};
     r.wb = r.wa;
     return r;
 }
 
-}  // namespace exact::detail
+} // namespace exact::detail

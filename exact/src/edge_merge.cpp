@@ -1,6 +1,6 @@
 // Route EdgeMerge: hulls of A and B (Andrew's monotone chain), the linear-time Minkowski difference
-// Z = hull(A) - hull(B) by merging the two hulls' edge sequences by angle, then the predicate-located
-// closest feature and one exact construction.
+// Z = hull(A) - hull(B) by merging the two hulls' edge sequences by angle, then the
+// predicate-located closest feature and one exact construction.
 //
 // Arithmetic: every input double is m * 2^e, so a transformed coordinate c*x - s*y + px is a dyadic
 // rational, held exactly as a GMP integer times a power of two ("dyadic integers"): no division,
@@ -18,23 +18,28 @@
 #include <numeric>
 #include <vector>
 
-namespace exact::detail {
-namespace {
+namespace exact::detail
+{
+namespace
+{
 
-using I = CGAL::Interval_nt<false>;  // needs the FPU in round-upward mode: see the Protector below
+using I = CGAL::Interval_nt<false>; // needs the FPU in round-upward mode: see the Protector below
 
 // ---------------------------------------------------------------- exact dyadic integers
 
 // v = m * 2^e exactly (m odd, or m = 0).
-struct Dec {
+struct Dec
+{
     long m;
     long e;
 };
 
-Dec decompose(double v) {
-    if (v == 0) return {0, 0};
+Dec decompose(double v)
+{
+    if (v == 0)
+        return {0, 0};
     int k;
-    const double f = std::frexp(v, &k);  // |f| in [0.5, 1): exact
+    const double f = std::frexp(v, &k); // |f| in [0.5, 1): exact
     long m = static_cast<long>(std::ldexp(f, 53));
     long e = k - 53;
     const int tz = __builtin_ctzl(static_cast<unsigned long>(m < 0 ? -m : m));
@@ -42,22 +47,29 @@ Dec decompose(double v) {
 }
 
 // A point or vector (x, y) * 2^e with GMP integers x, y.
-struct E2 {
+struct E2
+{
     mpz_class x, y;
     long e = 0;
 };
 
 // Accumulates term * 2^te into (v, ve); `set` tells whether v holds anything yet.
-void accumulate(mpz_class& v, long& ve, bool& set, const mpz_class& term, long te) {
-    if (!set) {
+void accumulate(mpz_class& v, long& ve, bool& set, const mpz_class& term, long te)
+{
+    if (!set)
+    {
         v = term;
         ve = te;
         set = true;
-    } else if (te < ve) {
+    }
+    else if (te < ve)
+    {
         v <<= static_cast<mp_bitcnt_t>(ve - te);
         v += term;
         ve = te;
-    } else {
+    }
+    else
+    {
         mpz_class t = term;
         t <<= static_cast<mp_bitcnt_t>(te - ve);
         v += t;
@@ -65,27 +77,38 @@ void accumulate(mpz_class& v, long& ve, bool& set, const mpz_class& term, long t
 }
 
 // The sign a product enters its sum with.
-enum class Sign { Plus, Minus };
+enum class Sign
+{
+    Plus,
+    Minus
+};
 
-void addProduct(mpz_class& v, long& ve, bool& set, const Dec& a, const Dec& b, Sign sign) {
-    if (a.m == 0 || b.m == 0) return;
+void addProduct(mpz_class& v, long& ve, bool& set, const Dec& a, const Dec& b, Sign sign)
+{
+    if (a.m == 0 || b.m == 0)
+        return;
     mpz_class t(a.m);
     t *= b.m;
-    if (sign == Sign::Minus) t = -t;
+    if (sign == Sign::Minus)
+        t = -t;
     accumulate(v, ve, set, t, a.e + b.e);
 }
 
-void addTerm(mpz_class& v, long& ve, bool& set, const Dec& a) {
-    if (a.m == 0) return;
+void addTerm(mpz_class& v, long& ve, bool& set, const Dec& a)
+{
+    if (a.m == 0)
+        return;
     accumulate(v, ve, set, mpz_class(a.m), a.e);
 }
 
-struct DecShape {
+struct DecShape
+{
     Dec c, s, px, py;
 };
 
 // x' = c*x - s*y + px, y' = s*x + c*y + py, exactly.
-E2 transformExact(const DecShape& t, const Point& p) {
+E2 transformExact(const DecShape& t, const Point& p)
+{
     const Dec x = decompose(p.x), y = decompose(p.y);
     E2 r;
     long ex = 0, ey = 0;
@@ -96,8 +119,10 @@ E2 transformExact(const DecShape& t, const Point& p) {
     addProduct(r.y, ey, sy, t.s, x, Sign::Plus);
     addProduct(r.y, ey, sy, t.c, y, Sign::Plus);
     addTerm(r.y, ey, sy, t.py);
-    if (!sx) ex = ey;
-    if (!sy) ey = ex;
+    if (!sx)
+        ex = ey;
+    if (!sy)
+        ey = ex;
     r.e = std::min(ex, ey);
     r.x <<= static_cast<mp_bitcnt_t>(ex - r.e);
     r.y <<= static_cast<mp_bitcnt_t>(ey - r.e);
@@ -105,13 +130,15 @@ E2 transformExact(const DecShape& t, const Point& p) {
 }
 
 // Shifted copies at a smaller common exponent e (e <= v.e).
-mpz_class at(const mpz_class& v, long ve, long e) {
+mpz_class at(const mpz_class& v, long ve, long e)
+{
     mpz_class r = v;
     r <<= static_cast<mp_bitcnt_t>(ve - e);
     return r;
 }
 
-E2 sub(const E2& a, const E2& b) {
+E2 sub(const E2& a, const E2& b)
+{
     E2 r;
     r.e = std::min(a.e, b.e);
     r.x = at(a.x, a.e, r.e) - at(b.x, b.e, r.e);
@@ -120,130 +147,172 @@ E2 sub(const E2& a, const E2& b) {
 }
 
 // Signs of cross and dot products: both terms carry 2^(a.e + b.e), no alignment needed.
-int crossSignE(const E2& a, const E2& b) {
+int crossSignE(const E2& a, const E2& b)
+{
     mpz_class l = a.x * b.y, r = a.y * b.x;
     return cmp(l, r);
 }
-int dotSignE(const E2& a, const E2& b) {
+int dotSignE(const E2& a, const E2& b)
+{
     mpz_class d = a.x * b.x + a.y * b.y;
     return sgn(d);
 }
-int cmpCoord(const mpz_class& a, long ae, const mpz_class& b, long be) {
+int cmpCoord(const mpz_class& a, long ae, const mpz_class& b, long be)
+{
     const long e = std::min(ae, be);
     return cmp(at(a, ae, e), at(b, be, e));
 }
 
-mpq_class toQ(const mpz_class& v, long e) {
+mpq_class toQ(const mpz_class& v, long e)
+{
     mpq_class q(v);
-    if (e > 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
-    if (e < 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    if (e > 0)
+        mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+    if (e < 0)
+        mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
     return q;
 }
 // num/den * 2^e; canonical (lowest terms) only when asked: the witness coordinates are left
 // unreduced (see ExactResult), which saves a gcd each.
-mpq_class toQ(const mpz_class& num, const mpz_class& den, long e, bool canonical = false) {
+mpq_class toQ(const mpz_class& num, const mpz_class& den, long e, bool canonical = false)
+{
     mpq_class q;
     mpz_set(mpq_numref(q.get_mpq_t()), num.get_mpz_t());
     mpz_set(mpq_denref(q.get_mpq_t()), den.get_mpz_t());
-    if (canonical) q.canonicalize();
-    if (e > 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
-    if (e < 0) mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
+    if (canonical)
+        q.canonicalize();
+    if (e > 0)
+        mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(e));
+    if (e < 0)
+        mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<mp_bitcnt_t>(-e));
     return q;
 }
-QPoint toQ(const E2& p) { return {toQ(p.x, p.e), toQ(p.y, p.e)}; }
+QPoint toQ(const E2& p)
+{
+    return {toQ(p.x, p.e), toQ(p.y, p.e)};
+}
 
 // ---------------------------------------------------------------- filtered predicates
 
 // Sign of an interval, or 2 when it is uncertain.
 constexpr int kUnsure = 2;
-int sign(const I& v) {
-    if (v.inf() > 0) return 1;
-    if (v.sup() < 0) return -1;
-    if (v.inf() == 0 && v.sup() == 0) return 0;
+int sign(const I& v)
+{
+    if (v.inf() > 0)
+        return 1;
+    if (v.sup() < 0)
+        return -1;
+    if (v.inf() == 0 && v.sup() == 0)
+        return 0;
     return kUnsure;
 }
 
 // One input shape: interval and (lazily) exact transformed points.
-struct Side {
+struct Side
+{
     const Shape* shape = nullptr;
     DecShape dec;
     std::vector<I> x, y;
     std::vector<E2> ex;
     std::vector<char> have;
 
-    void init(const Shape& s) {
+    void init(const Shape& s)
+    {
         shape = &s;
         dec = {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};
         const std::size_t n = s.points.size();
         x.resize(n);
         y.resize(n);
         const I c(s.c), sn(s.s), px(s.px), py(s.py);
-        for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t i = 0; i < n; ++i)
+        {
             const I px_(s.points[i].x), py_(s.points[i].y);
             x[i] = c * px_ - sn * py_ + px;
             y[i] = sn * px_ + c * py_ + py;
         }
     }
-    const E2& exact(int i) {
-        if (ex.empty()) {  // exact values are rarely needed for more than a few points: allocate late
+    const E2& exact(int i)
+    {
+        if (ex.empty())
+        { // exact values are rarely needed for more than a few points: allocate late
             ex.resize(x.size());
             have.assign(x.size(), 0);
         }
-        if (!have[i]) {
+        if (!have[i])
+        {
             ex[i] = transformExact(dec, shape->points[i]);
             have[i] = 1;
         }
         return ex[i];
     }
 
-    int cmpX(int i, int j) {
-        if (x[i].sup() < x[j].inf()) return -1;
-        if (x[i].inf() > x[j].sup()) return 1;
-        if (x[i].is_point() && x[j].is_point()) return 0;  // equal points: exactly equal
+    int cmpX(int i, int j)
+    {
+        if (x[i].sup() < x[j].inf())
+            return -1;
+        if (x[i].inf() > x[j].sup())
+            return 1;
+        if (x[i].is_point() && x[j].is_point())
+            return 0; // equal points: exactly equal
         const E2 &a = exact(i), &b = exact(j);
         return cmpCoord(a.x, a.e, b.x, b.e);
     }
-    int cmpY(int i, int j) {
-        if (y[i].sup() < y[j].inf()) return -1;
-        if (y[i].inf() > y[j].sup()) return 1;
-        if (y[i].is_point() && y[j].is_point()) return 0;
+    int cmpY(int i, int j)
+    {
+        if (y[i].sup() < y[j].inf())
+            return -1;
+        if (y[i].inf() > y[j].sup())
+            return 1;
+        if (y[i].is_point() && y[j].is_point())
+            return 0;
         const E2 &a = exact(i), &b = exact(j);
         return cmpCoord(a.y, a.e, b.y, b.e);
     }
-    int cmpXY(int i, int j) {
+    int cmpXY(int i, int j)
+    {
         const int c = cmpX(i, j);
         return c != 0 ? c : cmpY(i, j);
     }
-    int cmpYX(int i, int j) {
+    int cmpYX(int i, int j)
+    {
         const int c = cmpY(i, j);
         return c != 0 ? c : cmpX(i, j);
     }
-    int orient(int i, int j, int k) {
+    int orient(int i, int j, int k)
+    {
         const int s = sign((x[j] - x[i]) * (y[k] - y[i]) - (y[j] - y[i]) * (x[k] - x[i]));
-        if (s != kUnsure) return s;
+        if (s != kUnsure)
+            return s;
         const E2& p = exact(i);
         return crossSignE(sub(exact(j), p), sub(exact(k), p));
     }
 
     // Convex hull, counterclockwise, no repeated or collinear vertices, starting at the
     // lexicographically smallest point; a single point or a segment's two ends when degenerate.
-    std::vector<int> hull() {
+    std::vector<int> hull()
+    {
         const int n = static_cast<int>(shape->points.size());
         std::vector<int> idx(n);
         std::iota(idx.begin(), idx.end(), 0);
         std::sort(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) < 0; });
-        idx.erase(std::unique(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) == 0; }),
-                  idx.end());
+        idx.erase(
+            std::unique(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) == 0; }),
+            idx.end());
         const int m = static_cast<int>(idx.size());
-        if (m <= 2) return idx;
+        if (m <= 2)
+            return idx;
         std::vector<int> h(2 * m);
         int k = 0;
-        for (int i = 0; i < m; ++i) {
-            while (k >= 2 && orient(h[k - 2], h[k - 1], idx[i]) <= 0) --k;
+        for (int i = 0; i < m; ++i)
+        {
+            while (k >= 2 && orient(h[k - 2], h[k - 1], idx[i]) <= 0)
+                --k;
             h[k++] = idx[i];
         }
-        for (int i = m - 2, t = k + 1; i >= 0; --i) {
-            while (k >= t && orient(h[k - 2], h[k - 1], idx[i]) <= 0) --k;
+        for (int i = m - 2, t = k + 1; i >= 0; --i)
+        {
+            while (k >= t && orient(h[k - 2], h[k - 1], idx[i]) <= 0)
+                --k;
             h[k++] = idx[i];
         }
         h.resize(k - 1);
@@ -251,17 +320,24 @@ struct Side {
     }
 };
 
-// Half-plane class of a nonzero vector for angle ordering in [pi, 3*pi): 0 for angles in [pi, 2*pi).
-int half(int sy, int sx) { return (sy < 0 || (sy == 0 && sx < 0)) ? 0 : 1; }
+// Half-plane class of a nonzero vector for angle ordering in [pi, 3*pi): 0 for angles in [pi,
+// 2*pi).
+int half(int sy, int sx)
+{
+    return (sy < 0 || (sy == 0 && sx < 0)) ? 0 : 1;
+}
 
-class Solver {
-public:
+class Solver
+{
+  public:
     Solver(const Shape& a, const Shape& b) : a_(a), b_(b) {}
 
-    ExactResult run() {
+    ExactResult run()
+    {
         Feature f;
         {
-            I::Protector protect;  // round upward for the interval filters; restored at the end of scope
+            I::Protector
+                protect; // round upward for the interval filters; restored at the end of scope
             A.init(a_);
             B.init(b_);
             ha = A.hull();
@@ -273,55 +349,67 @@ public:
     }
 
     // ---- locate() interface: Z vertex k is A point za[k] minus B point zb[k].
-    int orientO(int i, int j) {
+    int orientO(int i, int j)
+    {
         const int s = sign(zx[i] * zy[j] - zy[i] * zx[j]);
-        if (s != kUnsure) return s;
+        if (s != kUnsure)
+            return s;
         return crossSignE(z(i), z(j));
     }
-    int dotSign(int i, int j) {
+    int dotSign(int i, int j)
+    {
         const int s = sign(zx[i] * (zx[j] - zx[i]) + zy[i] * (zy[j] - zy[i]));
-        if (s != kUnsure) return -s;
+        if (s != kUnsure)
+            return -s;
         const E2& p = z(i);
         return -dotSignE(p, sub(z(j), p));
     }
-    bool isZero(int i) {
+    bool isZero(int i)
+    {
         const int sx = sign(zx[i]), sy = sign(zy[i]);
-        if ((sx != 0 && sx != kUnsure) || (sy != 0 && sy != kUnsure)) return false;
-        if (sx == 0 && sy == 0) return true;
+        if ((sx != 0 && sx != kUnsure) || (sy != 0 && sy != kUnsure))
+            return false;
+        if (sx == 0 && sy == 0)
+            return true;
         const E2& p = z(i);
         return sgn(p.x) == 0 && sgn(p.y) == 0;
     }
 
-private:
+  private:
     const Shape& a_;
     const Shape& b_;
     Side A, B;
     std::vector<int> ha, hb;
-    std::vector<int> za, zb;  // per Z vertex: index of the A point and of the B point
+    std::vector<int> za, zb; // per Z vertex: index of the A point and of the B point
     std::vector<I> zx, zy;
     std::vector<E2> zex;
     std::vector<char> zhave;
 
-    const E2& z(int k) {
-        if (zex.empty()) {
+    const E2& z(int k)
+    {
+        if (zex.empty())
+        {
             zex.resize(za.size());
             zhave.assign(za.size(), 0);
         }
-        if (!zhave[k]) {
+        if (!zhave[k])
+        {
             zex[k] = sub(A.exact(za[k]), B.exact(zb[k]));
             zhave[k] = 1;
         }
         return zex[k];
     }
 
-    // Compares the directions of edge vectors u = A[i2] - A[i1] and w = B[j1] - B[j2] (an edge of -B)
-    // by angle in [pi, 3*pi): -1 if u comes first, 1 if w does, 0 if they point the same way.
-    int cmpAngle(int i1, int i2, int j1, int j2) {
+    // Compares the directions of edge vectors u = A[i2] - A[i1] and w = B[j1] - B[j2] (an edge of
+    // -B) by angle in [pi, 3*pi): -1 if u comes first, 1 if w does, 0 if they point the same way.
+    int cmpAngle(int i1, int i2, int j1, int j2)
+    {
         const I ux = A.x[i2] - A.x[i1], uy = A.y[i2] - A.y[i1];
         const I wx = B.x[j1] - B.x[j2], wy = B.y[j1] - B.y[j2];
         int sux = sign(ux), suy = sign(uy), swx = sign(wx), swy = sign(wy);
         int sc = sign(ux * wy - uy * wx);
-        if (sux == kUnsure || suy == kUnsure || swx == kUnsure || swy == kUnsure || sc == kUnsure) {
+        if (sux == kUnsure || suy == kUnsure || swx == kUnsure || swy == kUnsure || sc == kUnsure)
+        {
             const E2 u = sub(A.exact(i2), A.exact(i1));
             const E2 w = sub(B.exact(j1), B.exact(j2));
             sux = sgn(u.x);
@@ -331,54 +419,70 @@ private:
             sc = crossSignE(u, w);
         }
         const int hu = half(suy, sux), hw = half(swy, swx);
-        if (hu != hw) return hu < hw ? -1 : 1;
-        return -sc;  // cross(u, w) > 0: u has the smaller angle
+        if (hu != hw)
+            return hu < hw ? -1 : 1;
+        return -sc; // cross(u, w) > 0: u has the smaller angle
     }
 
     // Minkowski difference Z = hull(A) + hull(-B): both edge sequences start at their highest (then
     // rightmost) vertex, so edge angles increase through [pi, 3*pi) in each; merge them. Z's first
-    // vertex is its highest-rightmost one, where locate()'s fan starts (docs/exact.md, "Witnesses").
-    void merge() {
+    // vertex is its highest-rightmost one, where locate()'s fan starts (docs/exact.md,
+    // "Witnesses").
+    void merge()
+    {
         const int na = static_cast<int>(ha.size()), nb = static_cast<int>(hb.size());
         // Highest-rightmost vertex of -B is the lowest-leftmost vertex of B.
         int sa = 0, sb = 0;
         for (int t = 1; t < na; ++t)
-            if (A.cmpYX(ha[t], ha[sa]) > 0) sa = t;
+            if (A.cmpYX(ha[t], ha[sa]) > 0)
+                sa = t;
         for (int t = 1; t < nb; ++t)
-            if (B.cmpYX(hb[t], hb[sb]) < 0) sb = t;
-        const int ea = na >= 2 ? na : 0, eb = nb >= 2 ? nb : 0;  // edge counts
+            if (B.cmpYX(hb[t], hb[sb]) < 0)
+                sb = t;
+        const int ea = na >= 2 ? na : 0, eb = nb >= 2 ? nb : 0; // edge counts
         auto av = [&](int t) { return ha[(sa + t) % na]; };
         auto bv = [&](int t) { return hb[(sb + t) % nb]; };
         za.reserve(na + nb);
         zb.reserve(na + nb);
         int i = 0, j = 0;
-        do {
+        do
+        {
             za.push_back(av(i));
             zb.push_back(bv(j));
-            if (i == ea) {
+            if (i == ea)
+            {
                 ++j;
-            } else if (j == eb) {
+            }
+            else if (j == eb)
+            {
                 ++i;
-            } else {
+            }
+            else
+            {
                 const int c = cmpAngle(av(i), av(i + 1), bv(j), bv(j + 1));
-                if (c <= 0) ++i;
-                if (c >= 0) ++j;
+                if (c <= 0)
+                    ++i;
+                if (c >= 0)
+                    ++j;
             }
         } while (i < ea || j < eb);
         const std::size_t k = za.size();
         zx.resize(k);
         zy.resize(k);
-        for (std::size_t t = 0; t < k; ++t) {
+        for (std::size_t t = 0; t < k; ++t)
+        {
             zx[t] = A.x[za[t]] - B.x[zb[t]];
             zy[t] = A.y[za[t]] - B.y[zb[t]];
         }
     }
 
     // The one exact construction, in dyadic integers.
-    ExactResult build(const Feature& f) {
+    ExactResult build(const Feature& f)
+    {
         ExactResult r;
         r.overlap = f.overlap;
-        if (f.kind == Feature::Vertex) {
+        if (f.kind == Feature::Vertex)
+        {
             const E2& p = z(f.i);
             r.z = toQ(p);
             mpz_class n = p.x * p.x + p.y * p.y;
@@ -387,18 +491,22 @@ private:
             r.wb = toQ(B.exact(zb[f.i]));
             return r;
         }
-        if (f.kind == Feature::Edge) {
+        if (f.kind == Feature::Edge)
+        {
             const E2 &P = z(f.i), &Q = z(f.j);
             const E2 D = sub(Q, P);
             const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
             const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
             const mpz_class L = D.x * D.x + D.y * D.y;
             const mpz_class C = px * qy - py * qx;
-            const mpz_class T = -(px * D.x + py * D.y);  // t = T / L, closest point P + t (Q - P)
-            if (f.overlap) {
+            const mpz_class T = -(px * D.x + py * D.y); // t = T / L, closest point P + t (Q - P)
+            if (f.overlap)
+            {
                 r.squared = 0;
                 r.z = {0, 0};
-            } else {
+            }
+            else
+            {
                 r.squared = toQ(C * C, L, 2 * D.e, true);
                 r.z = {toQ(px * L + T * D.x, L, D.e), toQ(py * L + T * D.y, L, D.e)};
             }
@@ -407,12 +515,14 @@ private:
             return r;
         }
         // Triangle (overlap): barycentric coordinates of O in (V0, V1, V2), with equal weights on
-        // the A and B points: sum l_t (a_t - b_t) = O, so sum l_t a_t = sum l_t b_t is in both hulls.
+        // the A and B points: sum l_t (a_t - b_t) = O, so sum l_t a_t = sum l_t b_t is in both
+        // hulls.
         const E2 &V0 = z(f.i), &V1 = z(f.j), &V2 = z(f.l);
         const long e = std::min({V0.e, V1.e, V2.e});
         E2 v[3];
         const E2* src[3] = {&V0, &V1, &V2};
-        for (int t = 0; t < 3; ++t) {
+        for (int t = 0; t < 3; ++t)
+        {
             v[t].x = at(src[t]->x, src[t]->e, e);
             v[t].y = at(src[t]->y, src[t]->e, e);
         }
@@ -420,12 +530,14 @@ private:
         l[0] = v[1].x * v[2].y - v[1].y * v[2].x;
         l[1] = v[2].x * v[0].y - v[2].y * v[0].x;
         l[2] = v[0].x * v[1].y - v[0].y * v[1].x;
-        const mpz_class den = l[0] + l[1] + l[2];  // twice the triangle's area, > 0
+        const mpz_class den = l[0] + l[1] + l[2]; // twice the triangle's area, > 0
         const int ia[3] = {za[f.i], za[f.j], za[f.l]};
         long ea = LONG_MAX;
-        for (int t = 0; t < 3; ++t) ea = std::min(ea, A.exact(ia[t]).e);
+        for (int t = 0; t < 3; ++t)
+            ea = std::min(ea, A.exact(ia[t]).e);
         mpz_class nx = 0, ny = 0;
-        for (int t = 0; t < 3; ++t) {
+        for (int t = 0; t < 3; ++t)
+        {
             const E2& a = A.exact(ia[t]);
             nx += l[t] * at(a.x, a.e, ea);
             ny += l[t] * at(a.y, a.e, ea);
@@ -438,18 +550,22 @@ private:
     }
 
     // Point s[i1] + (T/L) (s[i2] - s[i1]) of a side, exactly.
-    static QPoint along(Side& s, int i1, int i2, const mpz_class& T, const mpz_class& L) {
+    static QPoint along(Side& s, int i1, int i2, const mpz_class& T, const mpz_class& L)
+    {
         const E2& p = s.exact(i1);
-        if (i1 == i2) return toQ(p);
+        if (i1 == i2)
+            return toQ(p);
         const E2 d = sub(s.exact(i2), p);
         const mpz_class px = at(p.x, p.e, d.e), py = at(p.y, p.e, d.e);
         return {toQ(px * L + T * d.x, L, d.e), toQ(py * L + T * d.y, L, d.e)};
     }
-
 };
 
-}  // namespace
+} // namespace
 
-ExactResult edgeMerge(const Shape& a, const Shape& b) { return Solver(a, b).run(); }
+ExactResult edgeMerge(const Shape& a, const Shape& b)
+{
+    return Solver(a, b).run();
+}
 
-}  // namespace exact::detail
+} // namespace exact::detail

@@ -8,18 +8,22 @@
 
 #include <stdexcept>
 
-namespace exact::detail {
+namespace exact::detail
+{
 
-struct QPoint {
+struct QPoint
+{
     mpq_class x, y;
 };
 
 // What every route computes, exactly: the rest of Result is derived from it by finish().
-struct ExactResult {
+struct ExactResult
+{
     bool overlap = false;
-    mpq_class squared;  // canonical
-    QPoint z;           // closest point of Z = hull(A) - hull(B) to the origin (zero when overlapping); z = wa - wb
-    QPoint wa, wb;      // closest points of hull(A) and hull(B) (a common point when overlapping)
+    mpq_class squared; // canonical
+    QPoint z; // closest point of Z = hull(A) - hull(B) to the origin (zero when overlapping); z =
+              // wa - wb
+    QPoint wa, wb; // closest points of hull(A) and hull(B) (a common point when overlapping)
     // z, wa and wb may be unreduced fractions (denominator > 0, not in lowest terms): only finish()
     // reads them, and it reduces them before any use that needs canonical rationals.
 };
@@ -30,9 +34,10 @@ Result finish(const ExactResult& e, double radiusA, double radiusB, bool exactWi
 // Correctly rounded (to nearest, ties to even, subnormals and overflow handled) double of q.
 double roundToDouble(const mpq_class& q);
 // Correctly rounded max(0, sqrt(q) - rA - rB) with an enclosure; q >= 0, rA, rB >= 0.
-void roundDistance(const mpq_class& q, double rA, double rB, double& value, double& lower, double& upper);
+void roundDistance(const mpq_class& q, double rA, double rB, double& value, double& lower,
+                   double& upper);
 
-std::string toString(const mpq_class& q);  // "num" or "num/den"
+std::string toString(const mpq_class& q); // "num" or "num/den"
 
 // The three routes. Inputs are validated by the caller.
 ExactResult edgeMerge(const Shape& a, const Shape& b);
@@ -46,34 +51,48 @@ ExactResult minkowskiSum2(const Shape& a, const Shape& b);
 //   int orientO(i, j)   sign of cross(v_i, v_j) = orientation(v_i, v_j, O)
 //   int dotSign(i, j)   sign of (O - v_i) . (v_j - v_i)
 //   bool isZero(i)      v_i == O
-struct Feature {
-    enum Kind { Vertex, Edge, Triangle } kind = Vertex;
-    bool overlap = false;  // O in Z (inside or on the boundary)
+struct Feature
+{
+    enum Kind
+    {
+        Vertex,
+        Edge,
+        Triangle
+    } kind = Vertex;
+    bool overlap = false; // O in Z (inside or on the boundary)
     int i = 0, j = 0, l = 0;
     // Vertex: closest point is v_i (overlap: v_i == O).
-    // Edge: closest point is the projection of O on segment v_i v_j, strictly inside it (overlap: O on it).
-    // Triangle (overlap only, k >= 3): O lies in the closed triangle v_i v_j v_l (a fan triangle, i = 0).
+    // Edge: closest point is the projection of O on segment v_i v_j, strictly inside it (overlap: O
+    // on it). Triangle (overlap only, k >= 3): O lies in the closed triangle v_i v_j v_l (a fan
+    // triangle, i = 0).
 };
 
-template <class Pr>
-Feature locate(int k, Pr& pr) {
+template <class Pr> Feature locate(int k, Pr& pr)
+{
     Feature f;
-    if (k == 1) {
+    if (k == 1)
+    {
         f.kind = Feature::Vertex;
         f.i = 0;
         f.overlap = pr.isZero(0);
         return f;
     }
-    if (k == 2) {
-        if (pr.dotSign(0, 1) <= 0) {
+    if (k == 2)
+    {
+        if (pr.dotSign(0, 1) <= 0)
+        {
             f.kind = Feature::Vertex;
             f.i = 0;
             f.overlap = pr.isZero(0);
-        } else if (pr.dotSign(1, 0) <= 0) {
+        }
+        else if (pr.dotSign(1, 0) <= 0)
+        {
             f.kind = Feature::Vertex;
             f.i = 1;
             f.overlap = pr.isZero(1);
-        } else {
+        }
+        else
+        {
             f.kind = Feature::Edge;
             f.i = 0;
             f.j = 1;
@@ -82,39 +101,49 @@ Feature locate(int k, Pr& pr) {
         return f;
     }
     int firstOut = -1;
-    for (int e = 0; e < k; ++e) {
-        if (pr.orientO(e, e + 1 == k ? 0 : e + 1) < 0) {
+    for (int e = 0; e < k; ++e)
+    {
+        if (pr.orientO(e, e + 1 == k ? 0 : e + 1) < 0)
+        {
             firstOut = e;
             break;
         }
     }
-    if (firstOut < 0) {
+    if (firstOut < 0)
+    {
         // O inside or on the boundary: find the fan triangle (v_0, v_t, v_{t+1}) holding it.
         // orientO(0, t) >= 0 holds for t = 1 (an edge) and is kept as the loop invariant.
         f.kind = Feature::Triangle;
         f.overlap = true;
         int t = 1;
-        while (t + 1 < k - 1 && pr.orientO(0, t + 1) > 0) ++t;
+        while (t + 1 < k - 1 && pr.orientO(0, t + 1) > 0)
+            ++t;
         f.i = 0;
         f.j = t;
         f.l = t + 1;
         return f;
     }
     // O outside: the closest point is inside a visible edge or a vertex next to one.
-    for (int n = 0; n < k; ++n) {
+    for (int n = 0; n < k; ++n)
+    {
         const int e = (firstOut + n) % k;
         const int g = e + 1 == k ? 0 : e + 1;
-        if (n > 0 && pr.orientO(e, g) >= 0) continue;
-        if (pr.dotSign(e, g) <= 0) {
-            if (pr.dotSign(e, e == 0 ? k - 1 : e - 1) <= 0) {
+        if (n > 0 && pr.orientO(e, g) >= 0)
+            continue;
+        if (pr.dotSign(e, g) <= 0)
+        {
+            if (pr.dotSign(e, e == 0 ? k - 1 : e - 1) <= 0)
+            {
                 f.kind = Feature::Vertex;
                 f.i = e;
                 return f;
             }
             continue;
         }
-        if (pr.dotSign(g, e) <= 0) {
-            if (pr.dotSign(g, g + 1 == k ? 0 : g + 1) <= 0) {
+        if (pr.dotSign(g, e) <= 0)
+        {
+            if (pr.dotSign(g, g + 1 == k ? 0 : g + 1) <= 0)
+            {
                 f.kind = Feature::Vertex;
                 f.i = g;
                 return f;
@@ -134,4 +163,4 @@ Feature locate(int k, Pr& pr) {
 // as[] of A and bs[] of B with zs[t] = as[t] - bs[t]. Plain rationals: used by the CGAL routes.
 ExactResult construct(const Feature& f, const QPoint* zs, const QPoint* as, const QPoint* bs);
 
-}  // namespace exact::detail
+} // namespace exact::detail

@@ -83,15 +83,18 @@ gjk::Options variant(int v)
 // Time per query, as a counter: `queries` queries per benchmark iteration.
 void setNsPerQuery(benchmark::State& state, std::size_t queries)
 {
-    state.counters["ns_per_query"] = benchmark::Counter(double(state.iterations()) * double(queries),
-                                                        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns_per_query"] =
+        benchmark::Counter(double(state.iterations()) * double(queries),
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 // One pass of cold queries: in.size() queries over the first `pairs` inputs, cycling.
 template <class T>
-void coldPass(const std::vector<gjk::DistanceInput<T>>& in, std::size_t pairs, const gjk::Options& o)
+void coldPass(const std::vector<gjk::DistanceInput<T>>& in, std::size_t pairs,
+              const gjk::Options& o)
 {
-    for (std::size_t k = 0, j = 0; k < in.size(); ++k, j = j + 1 == pairs ? 0 : j + 1) // no division
+    for (std::size_t k = 0, j = 0; k < in.size();
+         ++k, j = j + 1 == pairs ? 0 : j + 1) // no division
     {
         gjk::SimplexCache cache;
         benchmark::DoNotOptimize(gjk::distance(in[j], cache, o));
@@ -109,8 +112,8 @@ template <class T> void BM_Random(benchmark::State& state)
     setNsPerQuery(state, in.size());
 }
 
-// The cold query on a float engine's rotations (transforms as given, docs/gjk.md): against BM_Random, the cost of the
-// non-unit path (docs/speed.md, "Transforms as given").
+// The cold query on a float engine's rotations (transforms as given, docs/gjk.md): against
+// BM_Random, the cost of the non-unit path (docs/speed.md, "Transforms as given").
 template <class T> void BM_RandomFloatRotations(benchmark::State& state)
 {
     const auto& in = inputs<T, true>().inputs;
@@ -169,13 +172,15 @@ template <class T, bool FloatRotations = false> void BM_RandomLanes(benchmark::S
     for (auto _ : state)
     {
         std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out, gjk::referenceOptions, isa,
-                           &stats);
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                           gjk::referenceOptions, isa, &stats);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());
-    state.counters["lane_use"] = stats.steps ? double(stats.busyLaneSteps) / double(stats.steps * stats.lanes) : 1.0;
-    state.counters["scan_use"] = stats.scannedPoints ? double(stats.usefulPoints) / double(stats.scannedPoints) : 1.0;
+    state.counters["lane_use"] =
+        stats.steps ? double(stats.busyLaneSteps) / double(stats.steps * stats.lanes) : 1.0;
+    state.counters["scan_use"] =
+        stats.scannedPoints ? double(stats.usefulPoints) / double(stats.scannedPoints) : 1.0;
     state.counters["handed_back"] = double(stats.handedBack);
 }
 
@@ -195,7 +200,8 @@ template <class T> void BM_RandomLanesWarm(benchmark::State& state)
         gjk::distance(in[i], caches[i]);
     for (auto _ : state)
     {
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out, gjk::referenceOptions, isa);
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                           gjk::referenceOptions, isa);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());
@@ -238,18 +244,47 @@ template <class T> void BM_RegularPolygons(benchmark::State& state)
 }
 } // namespace
 
-BENCHMARK_TEMPLATE(BM_Random, double)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_Random, float)->Arg(0)->Arg(1)->ArgName("certify")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Random, double)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("certify")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_Random, float)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("certify")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomFloatRotations, double)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLearned, double)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLearned, float)->Arg(500)->ArgName("pairs")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLearned, double)
+    ->Arg(500)
+    ->ArgName("pairs")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLearned, float)
+    ->Arg(500)
+    ->ArgName("pairs")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomBatch, float)->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLanes, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLanes, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLanes, double, true)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLanesWarm, double)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
-BENCHMARK_TEMPLATE(BM_RandomLanesWarm, float)->DenseRange(0, 3)->ArgName("isa")->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, double)
+    ->DenseRange(0, 3)
+    ->ArgName("isa")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, float)
+    ->DenseRange(0, 3)
+    ->ArgName("isa")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanes, double, true)
+    ->DenseRange(0, 3)
+    ->ArgName("isa")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanesWarm, double)
+    ->DenseRange(0, 3)
+    ->ArgName("isa")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomLanesWarm, float)
+    ->DenseRange(0, 3)
+    ->ArgName("isa")
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomWarm, float)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RegularPolygons, double)

@@ -96,8 +96,8 @@ constexpr int kMaxLanePoints = 64;
 // contract (meetsInputContract, asserted by distance()) run the scalar query, which asserts.
 template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& options)
 {
-    if (options.direction != SearchDirection::EdgePerpendicular || options.stopping != StoppingRule::RepeatedSupport ||
-        options.frame != Frame::LocalA)
+    if (options.direction != SearchDirection::EdgePerpendicular ||
+        options.stopping != StoppingRule::RepeatedSupport || options.frame != Frame::LocalA)
         return false;
     if (!meetsInputContract(in))
         return false;
@@ -128,8 +128,10 @@ template <class T, int W, class State> class LaneBatch
     using Run = bool (*)(State&, T, T, T);
 
     LaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
-              std::span<DistanceOutput<T>> outputs, const Options& options, Run run, BatchStats& stats)
-        : inputs_(inputs), caches_(caches), outputs_(outputs), options_(options), run_(run), stats_(stats)
+              std::span<DistanceOutput<T>> outputs, const Options& options, Run run,
+              BatchStats& stats)
+        : inputs_(inputs), caches_(caches), outputs_(outputs), options_(options), run_(run),
+          stats_(stats)
     {
     }
 
@@ -160,7 +162,7 @@ template <class T, int W, class State> class LaneBatch
         s_->bx = s_->ay + cap * W;
         s_->by = s_->bx + cap * W;
         for (int l = 0; l < W; ++l)
-            paddedA_[l] = paddedB_[l] = cap; // zeros
+            paddedA_[l] = paddedB_[l] = cap;                           // zeros
         s_->laneEnd = !options_.certify && !options_.correctlyRounded; // both end in finishQuery
         s_->minStopped = std::max(1, W * kStoppedPercent / 100);
         s_->useRadii = options_.useRadii;
@@ -196,7 +198,8 @@ template <class T, int W, class State> class LaneBatch
     {
         std::vector<std::size_t> sorted(order_.size());
         std::vector<std::size_t> start(std::size_t(cap) + 2);
-        auto key = [&](std::size_t i) { return std::size_t(std::max(inputs_[i].proxyA.count, inputs_[i].proxyB.count)); };
+        auto key = [&](std::size_t i)
+        { return std::size_t(std::max(inputs_[i].proxyA.count, inputs_[i].proxyB.count)); };
         for (std::size_t b = 0; b < order_.size(); b += kSortBlock)
         {
             const std::size_t e = std::min(order_.size(), b + kSortBlock);
@@ -262,7 +265,8 @@ template <class T, int W, class State> class LaneBatch
         pair_[l] = i;
         const DistanceInput<T>& in = inputs_[i];
         TransformedShape<T> A{.poly = in.proxyA, .identity = true};
-        TransformedShape<T> B{.poly = in.proxyB, .xf = invMulTransforms(in.transformA, in.transformB)};
+        TransformedShape<T> B{.poly = in.proxyB,
+                              .xf = invMulTransforms(in.transformA, in.transformB)};
         // Warm: the cache's simplex, made here (no search). Cold: a simplex of count 0, whose
         // first step in the lanes is startSimplex's support point between the shapes.
         Simplex<T> simplex;
@@ -378,7 +382,8 @@ template <class T, int W, class State> class LaneBatch
         Simplex<T> simplex;
         simplex.count = int(s.count[l]);
         TransformedShape<T> A{.poly = in.proxyA, .identity = true};
-        TransformedShape<T> B{.poly = in.proxyB, .xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}}};
+        TransformedShape<T> B{.poly = in.proxyB,
+                              .xf = {{s.bpx[l], s.bpy[l]}, {s.bqc[l], s.bqs[l]}}};
         for (int k = 0; k < simplex.count; ++k)
         {
             simplex.v[k] = makeVertex<T>(A, B, int(s.ia[k][l]), int(s.ib[k][l]));
@@ -390,15 +395,18 @@ template <class T, int W, class State> class LaneBatch
         end.maxAbs = s.maxAbs[l];
         end.savedCount = int(s.savedCount[l]);
         for (int k = 0; k < 3; ++k)
-            end.saved[k] = s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
+            end.saved[k] =
+                s.savedA[k][l] < 0 ? -1 : packIndices(int(s.savedA[k][l]), int(s.savedB[k][l]));
         const std::int64_t key = packIndices(int(s.lastA[l]), int(s.lastB[l]));
-        end.culledRepeat = stop == StopReason::RepeatedSupport &&
-                           key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
-                           (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
+        end.culledRepeat =
+            stop == StopReason::RepeatedSupport &&
+            key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
+            (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
         end.searchA = searchA_[l];
         end.searchB = searchB_[l];
         end.supportOutOfRange = false; // an overflowing scan hands the lane back
-        outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA, stop, simplex, end);
+        outputs_[i] = finishQuery<T, false>(in, caches_[i], options_, nullptr, 0, in.transformA,
+                                            stop, simplex, end);
     }
 
     std::span<const DistanceInput<T>> inputs_;
@@ -418,8 +426,8 @@ template <class T, int W, class State> class LaneBatch
 
 template <class T, int W, class State>
 void runLaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
-                  std::span<DistanceOutput<T>> outputs, const Options& options, bool (*run)(State&, T, T, T),
-                  BatchStats& stats)
+                  std::span<DistanceOutput<T>> outputs, const Options& options,
+                  bool (*run)(State&, T, T, T), BatchStats& stats)
 {
     stats.lanes = W;
     LaneBatch<T, W, State>(inputs, caches, outputs, options, run, stats)();

@@ -22,8 +22,8 @@
 //   points of a lane, below, could raise it where the scalar scan does not).
 // A lane whose end is not finishQuery's common path sets LaneState::scalarEnd, and the scalar side
 // runs finishQuery on the lane's simplex: a rescaled retry (out of range, or every support point
-// 0), a rotation of A whose squared size is out of range, a culled repeat (the cache keeps the simplex before
-// the last solve), the certified interval.
+// 0), a rotation of A whose squared size is out of range, a culled repeat (the cache keeps the
+// simplex before the last solve), the certified interval.
 
 namespace GJK_LANES_NAMESPACE
 {
@@ -70,7 +70,8 @@ template <class T, int W> struct Lanes
         const V m = ax < ay ? ay : ax;
         return m < V{} + minEdge;
     }
-    // Slots 0 and 1 of the solved simplex (slot 2 only ever stays): x[0] <- x[1] or x[2], x[1] <- x[2].
+    // Slots 0 and 1 of the solved simplex (slot 2 only ever stays): x[0] <- x[1] or x[2], x[1] <-
+    // x[2].
     template <class X>
     [[gnu::always_inline]] static void move(X* x, M solving, M from1to0, M from2to0, M from2to1)
     {
@@ -206,7 +207,8 @@ inline constexpr int kHandBack = -2;
 // finishQuery) with Options' default direction and stopping rule, A's local frame and the linear
 // support scan.
 // One long kernel on purpose: it reads beside distance.hpp's loop step by step, in one scope.
-template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
+template <class T, int W>
+bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
 {
     using L = Lanes<T, W>;
     using V = typename L::V;
@@ -311,7 +313,8 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
             taken |= r;
             return r;
         };
-        [[maybe_unused]] const M r1 = region((v12 <= zero) & (v13 <= zero)); // region w1: nothing moves
+        [[maybe_unused]] const M r1 =
+            region((v12 <= zero) & (v13 <= zero)); // region w1: nothing moves
         const M r2 = region((u12 <= zero) & (v23 <= zero));
         const M r3 = region((u13 <= zero) & (u23 <= zero));
         const M r12 = region((u12 > zero) & (v12 > zero) & (w123 <= zero));
@@ -339,9 +342,11 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         if (L::any(is3 & r123)) [[unlikely]]
         {
             const V nr = accurateCross(e12x, e12y, e13x, e13y);
-            const M cramer = ((nr > zero) | (nr < zero)) & (nr <= L::splat(std::numeric_limits<T>::max())) &
+            const M cramer = ((nr > zero) | (nr < zero)) &
+                             (nr <= L::splat(std::numeric_limits<T>::max())) &
                              (nr >= L::splat(-std::numeric_limits<T>::max()));
-            V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr, cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
+            V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr,
+              cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
             bq = sel(bq > zero, bq, zero);
             cq = sel(cq > zero, cq, zero);
             V arq = (one - bq) - cq;
@@ -383,7 +388,8 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V dx = sel(start, bpx, sel(edgeNow, sel(left, -fy, fy), -wx[0]));
         const V dy = sel(start, bpy, sel(edgeNow, sel(left, fx, -fx), -wy[0]));
         const M zeroDirection = running & ~start & ~containment & (dx == zero) & (dy == zero);
-        const M limit = running & ~start & ~containment & ~zeroDirection & (iteration == maxIterations);
+        const M limit =
+            running & ~start & ~containment & ~zeroDirection & (iteration == maxIterations);
         handBack &= running;
         stop = seli(containment, splati(int(gjk::StopReason::Containment)), stop);
         stop = seli(zeroDirection, splati(int(gjk::StopReason::ZeroDirection)), stop);
@@ -494,8 +500,10 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V pA2x = a[0] * wAx[0] + a[1] * wAx[1], pA2y = a[0] * wAy[0] + a[1] * wAy[1];
         const V pB2x = a[0] * wBx[0] + a[1] * wBx[1], pB2y = a[0] * wBy[0] + a[1] * wBy[1];
         const V pA3x = pA2x + a[2] * wAx[2], pA3y = pA2y + a[2] * wAy[2];
-        const V pAx = sel(c1, wAx[0], sel(c2, pA2x, pA3x)), pAy = sel(c1, wAy[0], sel(c2, pA2y, pA3y));
-        const V pBx = sel(c1, wBx[0], sel(c2, pB2x, pA3x)), pBy = sel(c1, wBy[0], sel(c2, pB2y, pA3y));
+        const V pAx = sel(c1, wAx[0], sel(c2, pA2x, pA3x)),
+                pAy = sel(c1, wAy[0], sel(c2, pA2y, pA3y));
+        const V pBx = sel(c1, wBx[0], sel(c2, pB2x, pA3x)),
+                pBy = sel(c1, wBy[0], sel(c2, pB2y, pA3y));
         // Distance and unit normal from A to B: a vertex, or an edge measured from edgeBase.
         const V len1 = L::sqrt(wx[0] * wx[0] + wy[0] * wy[0]); // length(w1)
         const V inv1 = one / len1;
@@ -517,9 +525,11 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         V dist = sel(c1, len1, sel(c2, dist2, zero));
         V nx = sel(c1, n1x, sel(c2, n2x, zero)), ny = sel(c1, n1y, sel(c2, n2y, zero));
         // Back to world coordinates through A's transform.
-        const V xc = L::load(s.xqc), xs = L::load(s.xqs), xpx = L::load(s.xpx), xpy = L::load(s.xpy);
+        const V xc = L::load(s.xqc), xs = L::load(s.xqs), xpx = L::load(s.xpx),
+                xpy = L::load(s.xpy);
         const V frameSize2 = xc * xc + xs * xs;
-        const M nonUnit = ~(L::absBits(frameSize2 - one) <= L::splat(gjk::Tolerances<T>::unitRotation));
+        const M nonUnit =
+            ~(L::absBits(frameSize2 - one) <= L::splat(gjk::Tolerances<T>::unitRotation));
         V worldAx = (xc * pAx - xs * pAy) + xpx, worldAy = (xs * pAx + xc * pAy) + xpy;
         V worldBx = (xc * pBx - xs * pBy) + xpx, worldBy = (xs * pBx + xc * pBy) + xpy;
         const V rnx = xc * nx - xs * ny, rny = xs * nx + xc * ny;
@@ -531,8 +541,9 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         dist = sel(nonUnit, dist * frameSize, dist);
         nx = sel(nonUnit, nx / frameSize, nx);
         ny = sel(nonUnit, ny / frameSize, ny);
-        const M frameOutOfRange = nonUnit & ~((frameSize2 >= L::splat(minCoordinate * minCoordinate)) &
-                                              (frameSize2 <= L::splat(maxCoordinate * maxCoordinate)));
+        const M frameOutOfRange =
+            nonUnit & ~((frameSize2 >= L::splat(minCoordinate * minCoordinate)) &
+                        (frameSize2 <= L::splat(maxCoordinate * maxCoordinate)));
         // The radii are world lengths.
         if (s.useRadii)
         {
@@ -543,7 +554,8 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
             const M overlap = rounded & ~apart;
             // One point in both (distance.hpp): rA / (rA + rB) of the way from A's point to B's.
             const V t = rA / rSum;
-            const V midx = worldAx + t * (worldBx - worldAx), midy = worldAy + t * (worldBy - worldAy);
+            const V midx = worldAx + t * (worldBx - worldAx),
+                    midy = worldAy + t * (worldBy - worldAy);
             dist = sel(apart, dist - rSum, sel(overlap, zero, dist));
             const V ax2 = sel(apart, worldAx + rA * nx, sel(overlap, midx, worldAx));
             const V ay2 = sel(apart, worldAy + rA * ny, sel(overlap, midy, worldAy));
@@ -565,10 +577,13 @@ template <class T, int W> bool runLanes(LaneState<T, W>& s, T minEdge, T minCoor
         const V bigT = L::splat(std::numeric_limits<T>::max());
         const M finite = (L::absBits(dist) <= bigT) & (L::absBits(worldAx) <= bigT) &
                          (L::absBits(worldAy) <= bigT) & (L::absBits(worldBx) <= bigT) &
-                         (L::absBits(worldBy) <= bigT) & (L::absBits(nx) <= bigT) & (L::absBits(ny) <= bigT);
-        const M inRange = (maxAbs <= L::splat(maxCoordinate)) & ~((maxAbs > zero) & (maxAbs < L::splat(minCoordinate)));
+                         (L::absBits(worldBy) <= bigT) & (L::absBits(nx) <= bigT) &
+                         (L::absBits(ny) <= bigT);
+        const M inRange = (maxAbs <= L::splat(maxCoordinate)) &
+                          ~((maxAbs > zero) & (maxAbs < L::splat(minCoordinate)));
         const M culled = (stop == splati(int(gjk::StopReason::RepeatedSupport))) &
-                         ((lastA != ia[0]) | (lastB != ib[0])) & (c1 | (lastA != ia[1]) | (lastB != ib[1]));
+                         ((lastA != ia[0]) | (lastB != ib[0])) &
+                         (c1 | (lastA != ia[1]) | (lastB != ib[1]));
         const M scalarEnd =
             ended & (~finite | ~inRange | (maxAbs == zero) | frameOutOfRange | culled | tinyEnd);
         L::store(s.outAx, worldAx);

@@ -132,7 +132,7 @@ struct Counts
 {
     int queries = 0, certified = 0, apart = 0, broken = 0, bounded = 0, beyondBound = 0,
         disjoint = 0, unmatched = 0; // unmatched: intervals with none left in the --against dump
-    double worstRatio = 0; // largest max(d - lower, upper - d) / bound
+    double worstRatio = 0;           // largest max(d - lower, upper - d) / bound
 };
 
 std::FILE* dumpFile = nullptr;    // --dump

@@ -9,16 +9,17 @@
 
 using namespace exact_test;
 
-TEST_CASE("pointToShapeDistance: hand cases") {
+TEST_CASE("pointToShapeDistance: hand cases")
+{
     const Shape sq = shape({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
     CHECK(exact::pointToShapeDistance(sq, {2, 0.5}) == 1.0);   // right edge, foot (1, 1/2)
-    CHECK(exact::pointToShapeDistance(sq, {0.5, 0.5}) == 0.0);  // inside
-    CHECK(exact::pointToShapeDistance(sq, {1, 0.25}) == 0.0);   // on the boundary
-    CHECK(exact::pointToShapeDistance(sq, {4, 5}) == 5.0);      // corner (1,1): 3-4-5
+    CHECK(exact::pointToShapeDistance(sq, {0.5, 0.5}) == 0.0); // inside
+    CHECK(exact::pointToShapeDistance(sq, {1, 0.25}) == 0.0);  // on the boundary
+    CHECK(exact::pointToShapeDistance(sq, {4, 5}) == 5.0);     // corner (1,1): 3-4-5
     Shape rounded = sq;
     rounded.radius = 0.25;
     CHECK(exact::pointToShapeDistance(rounded, {2, 0.5}) == 0.75);  // 1 - 1/4
-    CHECK(exact::pointToShapeDistance(rounded, {1.1, 0.5}) == 0.0);  // inside the rounding
+    CHECK(exact::pointToShapeDistance(rounded, {1.1, 0.5}) == 0.0); // inside the rounding
     // Slanted edge: triangle (0,0), (1,0), (0,2) and (1,1): 1/sqrt(5), correctly rounded.
     const double d = exact::pointToShapeDistance(shape({{0, 0}, {1, 0}, {0, 2}}), {1, 1});
     CHECK(distanceRoundsTo(d, mpq_class(1, 5), 0));
@@ -39,9 +40,11 @@ TEST_CASE("pointToShapeDistance: hand cases") {
     CHECK(exact::pointToShapeDistance(b, r.witnessB) < 1e-15);
 }
 
-TEST_CASE("invalid input throws std::invalid_argument") {
+TEST_CASE("invalid input throws std::invalid_argument")
+{
     const Shape ok = shape({{0, 0}});
-    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN(),
+                 inf = std::numeric_limits<double>::infinity();
     Shape empty;
     CHECK_THROWS_AS(exact::distance(empty, ok), std::invalid_argument);
     CHECK_THROWS_AS(exact::distance(ok, empty), std::invalid_argument);
@@ -60,8 +63,10 @@ TEST_CASE("invalid input throws std::invalid_argument") {
     CHECK_NOTHROW(exact::validateShape(ok));
 }
 
-TEST_CASE("route names round-trip") {
-    for (exact::Route r : exact::kAllRoutes) {
+TEST_CASE("route names round-trip")
+{
+    for (exact::Route r : exact::kAllRoutes)
+    {
         exact::Route back = exact::Route::HullOfDifferences;
         CHECK(exact::parseRoute(exact::routeName(r), back));
         CHECK(back == r);

@@ -16,13 +16,17 @@ using namespace gjk;
 namespace
 {
 
-template <class T> bool sameBits(T a, T b) { return std::memcmp(&a, &b, sizeof(T)) == 0; }
+template <class T> bool sameBits(T a, T b)
+{
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
 
 template <class T> bool sameOutput(const DistanceOutput<T>& x, const DistanceOutput<T>& y)
 {
-    return sameBits(x.distance, y.distance) && sameBits(x.pointA.x, y.pointA.x) && sameBits(x.pointA.y, y.pointA.y) &&
-           sameBits(x.pointB.x, y.pointB.x) && sameBits(x.pointB.y, y.pointB.y) &&
-           sameBits(x.normal.x, y.normal.x) && sameBits(x.normal.y, y.normal.y) && x.iterations == y.iterations &&
+    return sameBits(x.distance, y.distance) && sameBits(x.pointA.x, y.pointA.x) &&
+           sameBits(x.pointA.y, y.pointA.y) && sameBits(x.pointB.x, y.pointB.x) &&
+           sameBits(x.pointB.y, y.pointB.y) && sameBits(x.normal.x, y.normal.x) &&
+           sameBits(x.normal.y, y.normal.y) && x.iterations == y.iterations &&
            x.simplexCount == y.simplexCount && x.stop == y.stop && x.outOfRange == y.outOfRange &&
            x.rescaled == y.rescaled && x.certified == y.certified && sameBits(x.lower, y.lower) &&
            sameBits(x.upper, y.upper);
@@ -30,7 +34,8 @@ template <class T> bool sameOutput(const DistanceOutput<T>& x, const DistanceOut
 
 bool sameCache(const SimplexCache& x, const SimplexCache& y)
 {
-    bool same = x.count == y.count && x.edgeBase == y.edgeBase && x.searchA == y.searchA && x.searchB == y.searchB;
+    bool same = x.count == y.count && x.edgeBase == y.edgeBase && x.searchA == y.searchA &&
+                x.searchB == y.searchB;
     for (int i = 0; i < 3; ++i)
         same = same && x.indexA[i] == y.indexA[i] && x.indexB[i] == y.indexB[i];
     return same;
@@ -41,7 +46,8 @@ template <class T> struct Pairs
     std::vector<std::vector<Vec2<T>>> points;
     std::vector<DistanceInput<T>> inputs;
 
-    void add(const bench::ShapeData<double>& a, const bench::ShapeData<double>& b, T radiusA = 0, T radiusB = 0)
+    void add(const bench::ShapeData<double>& a, const bench::ShapeData<double>& b, T radiusA = 0,
+             T radiusB = 0)
     {
         const auto ca = bench::converted<T>(a), cb = bench::converted<T>(b);
         points.push_back(ca.points);
@@ -94,7 +100,8 @@ std::vector<BatchIsa> isasHere()
 // Runs the batch cold, then warm from its own caches (twice), on every instruction set here, and
 // checks each output and cache against gjk::distance with the same caches. Returns the stats of
 // the widest instruction set's cold batch.
-template <class T> BatchStats checkBatch(const std::vector<DistanceInput<T>>& inputs, const Options& options = {})
+template <class T>
+BatchStats checkBatch(const std::vector<DistanceInput<T>>& inputs, const Options& options = {})
 {
     BatchStats widest;
     for (BatchIsa isa : isasHere())
@@ -106,7 +113,8 @@ template <class T> BatchStats checkBatch(const std::vector<DistanceInput<T>>& in
         {
             INFO("pass " << pass << " (0: cold)");
             BatchStats stats;
-            distanceBatch(std::span<const DistanceInput<T>>(inputs), caches, outputs, options, isa, &stats);
+            distanceBatch(std::span<const DistanceInput<T>>(inputs), caches, outputs, options, isa,
+                          &stats);
             CHECK(stats.isa == isa);
             CHECK(stats.queries == inputs.size());
             CHECK(stats.laneQueries + stats.scalarQueries + stats.handedBack == inputs.size());
@@ -122,8 +130,9 @@ template <class T> BatchStats checkBatch(const std::vector<DistanceInput<T>>& in
                 {
                     if (mismatches++ < 3)
                     {
-                        INFO("pair " << i << ": distance " << outputs[i].distance << " vs " << expected.distance
-                                     << ", iterations " << outputs[i].iterations << " vs " << expected.iterations
+                        INFO("pair " << i << ": distance " << outputs[i].distance << " vs "
+                                     << expected.distance << ", iterations "
+                                     << outputs[i].iterations << " vs " << expected.iterations
                                      << ", stop " << stopReasonName(outputs[i].stop) << " vs "
                                      << stopReasonName(expected.stop));
                         CHECK(false);
@@ -138,8 +147,8 @@ template <class T> BatchStats checkBatch(const std::vector<DistanceInput<T>>& in
 
 } // namespace
 
-TEMPLATE_TEST_CASE("batch lanes: bit for bit the single query on random pairs of 3 to 8 points", "[gjk][batch]",
-                   float, double)
+TEMPLATE_TEST_CASE("batch lanes: bit for bit the single query on random pairs of 3 to 8 points",
+                   "[gjk][batch]", float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(1801);
@@ -156,8 +165,9 @@ TEMPLATE_TEST_CASE("batch lanes: bit for bit the single query on random pairs of
     }
 }
 
-TEMPLATE_TEST_CASE("batch lanes: mixed sizes from 1 to 64 points, and larger ones run the scalar query",
-                   "[gjk][batch]", float, double)
+TEMPLATE_TEST_CASE(
+    "batch lanes: mixed sizes from 1 to 64 points, and larger ones run the scalar query",
+    "[gjk][batch]", float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(1802);
@@ -166,7 +176,8 @@ TEMPLATE_TEST_CASE("batch lanes: mixed sizes from 1 to 64 points, and larger one
     for (int i = 0; i < 1500; ++i)
     {
         const int nA = i % 7 == 0 ? any(rng) : small(rng), nB = i % 5 == 0 ? any(rng) : small(rng);
-        pairs.add(shapeOf(rng, nA), shapeOf(rng, nB), T(i % 3 == 0 ? 0.25 : 0), T(i % 4 == 0 ? 0.5 : 0));
+        pairs.add(shapeOf(rng, nA), shapeOf(rng, nB), T(i % 3 == 0 ? 0.25 : 0),
+                  T(i % 4 == 0 ? 0.5 : 0));
     }
     for (int i = 0; i < 20; ++i) // beyond the lanes' 64 points
         pairs.add(shapeOf(rng, 65 + i), shapeOf(rng, 3 + i));
@@ -179,8 +190,9 @@ TEMPLATE_TEST_CASE("batch lanes: mixed sizes from 1 to 64 points, and larger one
     }
 }
 
-TEMPLATE_TEST_CASE("batch lanes: overlaps, touching, shared origins, repeated points, tiny edges, huge scales",
-                   "[gjk][batch]", float, double)
+TEMPLATE_TEST_CASE(
+    "batch lanes: overlaps, touching, shared origins, repeated points, tiny edges, huge scales",
+    "[gjk][batch]", float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(1803);
@@ -190,10 +202,16 @@ TEMPLATE_TEST_CASE("batch lanes: overlaps, touching, shared origins, repeated po
         auto a = bench::randomShape(rng), b = bench::randomShape(rng);
         switch (i % 8)
         {
-        case 0: b.xf.p = a.xf.p; break;                     // the same origin: cold start from vertex 0
-        case 1: b.xf.p = {a.xf.p.x + 0.1, a.xf.p.y}; break; // deep overlap: containment
-        case 2: b.points.push_back(b.points[0]); break;     // a repeated point: zero edges
-        case 3:                                             // a tiny shape: edges below minEdgeComponent
+        case 0:
+            b.xf.p = a.xf.p;
+            break; // the same origin: cold start from vertex 0
+        case 1:
+            b.xf.p = {a.xf.p.x + 0.1, a.xf.p.y};
+            break; // deep overlap: containment
+        case 2:
+            b.points.push_back(b.points[0]);
+            break; // a repeated point: zero edges
+        case 3:    // a tiny shape: edges below minEdgeComponent
             for (auto& p : a.points)
                 p = {p.x * 1e-30, p.y * 1e-30};
             break;
@@ -212,7 +230,8 @@ TEMPLATE_TEST_CASE("batch lanes: overlaps, touching, shared origins, repeated po
             a.points.resize(1);
             b.points.resize(2);
             break;
-        default: break;
+        default:
+            break;
         }
         pairs.add(a, b, T(i % 3 == 0 ? 0.1 : 0), T(0));
     }
@@ -222,8 +241,9 @@ TEMPLATE_TEST_CASE("batch lanes: overlaps, touching, shared origins, repeated po
         CHECK(stats.handedBack > 0); // the repeated points and tiny edges leave the lanes
 }
 
-TEMPLATE_TEST_CASE("batch lanes: options the lanes do not cover run the scalar query, with the same results",
-                   "[gjk][batch]", float, double)
+TEMPLATE_TEST_CASE(
+    "batch lanes: options the lanes do not cover run the scalar query, with the same results",
+    "[gjk][batch]", float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(1804);
@@ -263,7 +283,7 @@ TEST_CASE("batch lanes: the instruction sets", "[gjk][batch]")
     std::vector<SimplexCache> caches;
     std::vector<DistanceOutput<double>> outputs;
     BatchStats stats;
-    distanceBatch(std::span<const DistanceInput<double>>(none), caches, outputs, referenceOptions, BatchIsa::Best,
-                  &stats);
+    distanceBatch(std::span<const DistanceInput<double>>(none), caches, outputs, referenceOptions,
+                  BatchIsa::Best, &stats);
     CHECK(stats.queries == 0);
 }

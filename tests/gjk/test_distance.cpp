@@ -33,7 +33,8 @@ template <class T> struct Scene
     }
 };
 
-template <class T> DistanceOutput<T> query(const Scene<T>& s, const Options& o = {}, Trace<T>* tr = nullptr)
+template <class T>
+DistanceOutput<T> query(const Scene<T>& s, const Options& o = {}, Trace<T>* tr = nullptr)
 {
     SimplexCache cache;
     return distance(s.input(), cache, o, tr);
@@ -61,7 +62,10 @@ template <class T> T scaleOf(const Scene<T>& s)
 // division) on quantities of magnitude at most a few R, each with error at most u times such a
 // quantity; 64 u R covers them with room to spare, and is still 1e-5 R in float (so it would catch
 // a wrong feature or a wrong region: those are off by a fraction of R).
-template <class T> T tol(T scale) { return T(64) * Tolerances<T>::unitRoundoff * std::max(scale, T(1e-30)); }
+template <class T> T tol(T scale)
+{
+    return T(64) * Tolerances<T>::unitRoundoff * std::max(scale, T(1e-30));
+}
 
 // Counter-clockwise convex hull of a small point set (Andrew's monotone chain), in world
 // coordinates: the test's own, independent notion of "the shape".
@@ -70,7 +74,8 @@ template <class T> Points<T> hullOf(const Points<T>& pts, const Transform<T>& xf
     Points<T> p;
     for (auto v : pts)
         p.push_back(transformPoint(xf, v));
-    std::sort(p.begin(), p.end(), [](Vec2<T> a, Vec2<T> b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    std::sort(p.begin(), p.end(),
+              [](Vec2<T> a, Vec2<T> b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     p.erase(std::unique(p.begin(), p.end()), p.end());
     if (p.size() < 3)
         return p;
@@ -194,7 +199,8 @@ TEMPLATE_TEST_CASE("talk walk-through: E, then CE, then CDE, cull E, terminate o
     // Hand derivation (Q = origin):
     //  1. simplex {E}, P = E = (-4,3), d = Q - P = (4,-3). dot(d, .): E -25, A -34, B -3, C 9,
     //     D -7 -> support C.
-    //  2. simplex {E, C}: e = C - E = (7,-2), u = dot(C, e) = 19 > 0, v = -dot(E, e) = 34 > 0: edge.
+    //  2. simplex {E, C}: e = C - E = (7,-2), u = dot(C, e) = 19 > 0, v = -dot(E, e) = 34 > 0:
+    //  edge.
     //     cross(e, -E) = 7*(-3) - (-2)*4 = -13 < 0 -> d = rightPerp(e) = (-2,-7), and
     //     dot(d, Q - E) = 13 > 0. dot(d, .): E -13, A -34, B -41, C -13, D -5 -> support D.
     //  3. simplex {E, C, D}: Q is closest to edge CD (y = 1, x from -1 to 3) at P = (0,1), so E
@@ -218,8 +224,8 @@ TEMPLATE_TEST_CASE("talk walk-through: E, then CE, then CDE, cull E, terminate o
     CHECK(trace.steps[0].support.indexA == 3);      // C
     CHECK(trace.steps[1].simplex.count == 2);       // CE
     CHECK(trace.steps[1].direction == Vec2<T>{-2, -7});
-    CHECK(trace.steps[1].support.indexA == 4);      // D
-    CHECK(trace.steps[2].simplex.count == 2);       // CDE with E culled: CD
+    CHECK(trace.steps[1].support.indexA == 4); // D
+    CHECK(trace.steps[2].simplex.count == 2);  // CDE with E culled: CD
     CHECK(trace.steps[2].simplex.v[0].indexA == 3);
     CHECK(trace.steps[2].simplex.v[1].indexA == 4);
     CHECK(trace.steps[2].simplex.v[0].a == T(0.25));
@@ -246,8 +252,8 @@ TEMPLATE_TEST_CASE("the talk's single-precision example: an exactly perpendicula
     const Vec2<T> e = s.v[1].w - s.v[0].w;
 
     const Vec2<T> d = searchDirection(s, SearchDirection::EdgePerpendicular);
-    CHECK(dot(d, e) == T(0));            // exactly, as the talk promises
-    CHECK(dot(d, -s.v[0].w) > T(0));     // and towards Q
+    CHECK(dot(d, e) == T(0));        // exactly, as the talk promises
+    CHECK(dot(d, -s.v[0].w) > T(0)); // and towards Q
 
     // The naive direction Q - P is not perpendicular in single precision: the talk measured
     // dot(d, B - A) = 3.2457051e-006 with its barycentric formulas; ours differ, but not in kind.
@@ -353,7 +359,8 @@ TEMPLATE_TEST_CASE("termination cases", "[gjk][termination]", float, double)
     }
 }
 
-TEMPLATE_TEST_CASE("poorly formed polygons: collinear and non-convex points", "[gjk][talk]", float, double)
+TEMPLATE_TEST_CASE("poorly formed polygons: collinear and non-convex points", "[gjk][talk]", float,
+                   double)
 {
     using T = TestType;
     SECTION("collinear vertices")
@@ -387,7 +394,8 @@ TEMPLATE_TEST_CASE("poorly formed polygons: collinear and non-convex points", "[
     }
 }
 
-TEMPLATE_TEST_CASE("polygon to polygon: hand-derived distances and symmetries", "[gjk]", float, double)
+TEMPLATE_TEST_CASE("polygon to polygon: hand-derived distances and symmetries", "[gjk]", float,
+                   double)
 {
     using T = TestType;
     const Points<T> unit = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
@@ -535,9 +543,9 @@ TEMPLATE_TEST_CASE("conventions: frame, sign of w, direction of the normal", "[g
     Trace<T> trace;
     const auto out = query(s, {}, &trace);
     CHECK(out.distance == T(3));
-    CHECK(out.pointA == Vec2<T>{4, 4.5});  // world coordinates
+    CHECK(out.pointA == Vec2<T>{4, 4.5}); // world coordinates
     CHECK(out.pointB == Vec2<T>{7, 4.5});
-    CHECK(out.normal == Vec2<T>{1, 0});    // unit, from A towards B
+    CHECK(out.normal == Vec2<T>{1, 0}); // unit, from A towards B
     // The trace is in A's local frame; its frame maps it back to world.
     CHECK(trace.frame.p == Vec2<T>{4, 4});
     for (const auto& step : trace.steps)
@@ -549,7 +557,8 @@ TEMPLATE_TEST_CASE("conventions: frame, sign of w, direction of the normal", "[g
     CHECK(query(s, world).distance == T(3));
 }
 
-TEMPLATE_TEST_CASE("frame of A keeps small gaps far from the origin", "[gjk][numerics]", float, double)
+TEMPLATE_TEST_CASE("frame of A keeps small gaps far from the origin", "[gjk][numerics]", float,
+                   double)
 {
     using T = TestType;
     // Two unit squares under the same rounded rotation (cos 0.3, sin 0.3), B offset by (1.5, 0.25)
@@ -572,16 +581,16 @@ TEMPLATE_TEST_CASE("frame of A keeps small gaps far from the origin", "[gjk][num
     CHECK(near.distance > T(0));
 }
 
-TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit vector", "[gjk][transform]",
-                   float, double)
+TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit vector",
+                   "[gjk][transform]", float, double)
 {
     using T = TestType;
     // x' = c x - s y + p scales by |q| = sqrt(c^2 + s^2). By hand: the square [-1, 1]^2 under
     // q = (2, 0) covers [-2, 2]^2, under q = (0, 2) too (a quarter turn), under (0.5, 0)
     // [-0.5, 0.5]^2; B, a point at (5, 0.25) with radius 0.5, is then at distance 5 - h - 0.5
     // (h = 2 or 0.5), pointA = (h, 0.25), normal (1, 0). Every number is exact, so both frames
-    // must give these bits (before transforms were taken as given, A's frame inverted qA by transposing it: B landed at
-    // x = 10 in A's frame for q = (2, 0), and the query answered 8.5).
+    // must give these bits (before transforms were taken as given, A's frame inverted qA by
+    // transposing it: B landed at x = 10 in A's frame for q = (2, 0), and the query answered 8.5).
     Scene<T> s;
     s.a = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     s.b = {{0, 0}};
@@ -607,8 +616,8 @@ TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit ve
         }
 
     // B's rotation of any size too: B = the segment (-1, 0)-(1, 0) under qB = (0, 3) is the
-    // vertical segment x = 6, y in [-3, 3] after p = (6, 0); A the unit square [-1, 1]^2, unrotated:
-    // distance 5, the normal (1, 0).
+    // vertical segment x = 6, y in [-3, 3] after p = (6, 0); A the unit square [-1, 1]^2,
+    // unrotated: distance 5, the normal (1, 0).
     Scene<T> t;
     t.a = s.a;
     t.b = {{-1, 0}, {1, 0}};
@@ -617,8 +626,8 @@ TEMPLATE_TEST_CASE("transforms as given: a rotation (c, s) that is not a unit ve
     CHECK(query(t).normal == Vec2<T>{1, 0});
 }
 
-TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit size", "[gjk][transform]",
-                   float, double)
+TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit size",
+                   "[gjk][transform]", float, double)
 {
     using T = TestType;
     // qA = (1 + 2^-20, 0): |qA| is not 1 in float or double. The square [-1, 1]^2 then has the
@@ -646,15 +655,17 @@ TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit siz
     }
 }
 
-TEMPLATE_TEST_CASE("transforms as given: rotations of extreme size are normalised by the rescaled retry",
-                   "[gjk][transform][range]", float, double)
+TEMPLATE_TEST_CASE(
+    "transforms as given: rotations of extreme size are normalised by the rescaled retry",
+    "[gjk][transform][range]", float, double)
 {
     using T = TestType;
     // qA = (2^e, 0) with 2^(2e) beyond T's range: |qA|^2 overflows, so the first pass is out of
     // range and the rescaled retry normalises qA to (1, 0) and scales A's points by 2^e instead
     // (exact). A = the triangle (0,0) (1,0) (0,1) then covers up to x = 2^e, B a point at 3 * 2^e:
     // distance 2 * 2^e, by hand, bit for bit.
-    for (const int e : {std::numeric_limits<T>::max_exponent / 2 + 4, std::numeric_limits<T>::min_exponent / 2 - 4})
+    for (const int e : {std::numeric_limits<T>::max_exponent / 2 + 4,
+                        std::numeric_limits<T>::min_exponent / 2 - 4})
     {
         INFO("qA = (2^" << e << ", 0)");
         const T scale = std::ldexp(T(1), e);
@@ -672,7 +683,8 @@ TEMPLATE_TEST_CASE("transforms as given: rotations of extreme size are normalise
     }
 }
 
-TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk][cache]", float, double)
+TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk][cache]", float,
+                   double)
 {
     using T = TestType;
     const auto s = walkThrough<T>();
@@ -692,8 +704,9 @@ TEMPLATE_TEST_CASE("warm start: the cache from one query seeds the next", "[gjk]
     CHECK(distance(s.input(), stale).distance == cold.distance);
 }
 
-TEMPLATE_TEST_CASE("warm start: a repeated query over random pairs gives the cold answer, bit for bit",
-                   "[gjk][cache]", float, double)
+TEMPLATE_TEST_CASE(
+    "warm start: a repeated query over random pairs gives the cold answer, bit for bit",
+    "[gjk][cache]", float, double)
 {
     using T = TestType;
     // The speed targets' `random` distribution (gjk/bench/random_shapes.hpp). The cache stores a
@@ -762,7 +775,8 @@ TEST_CASE("warm start: a repeat after a culled support point gives the cold answ
     using T = double;
     Scene<T> s;
     s.a = {{0.0099668502807617188, -0.7109375}};
-    s.xfA = {{-4.7393143177032471e-05, -1.862645149230957e-07}, {0.54540534970280896, 0.83817241932406528}};
+    s.xfA = {{-4.7393143177032471e-05, -1.862645149230957e-07},
+             {0.54540534970280896, 0.83817241932406528}};
     s.b = {{-0.7109375, 6.7949295043945312e-06},
            {-5.5511151231257827e-15, -3.5809246537129656e+18},
            {0, -1.0103029524088925e-14},
@@ -792,10 +806,10 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
     // pairs (gjk/bench/random_shapes.hpp) under all 32 combinations of direction, stopping rule,
     // frame, support strategy and certification; every third pair has a vertex of A pushed out by
     // up to 2^59 and every fifth a vertex of B at 3.6e15, which make long edges far from the
-    // origin. Before the hardening against hostile inputs this failed 14,544 of 640,000 float and 976 double queries (20,000
-    // pairs): the edge's sign test from its far end is a cancellation, and a warm start from the
-    // reversed edge took the other side; and an origin exactly on the edge's line made both orders
-    // search opposite ways.
+    // origin. Before the hardening against hostile inputs this failed 14,544 of 640,000 float and
+    // 976 double queries (20,000 pairs): the edge's sign test from its far end is a cancellation,
+    // and a warm start from the reversed edge took the other side; and an origin exactly on the
+    // edge's line made both orders search opposite ways.
     std::mt19937_64 rng(11);
     auto sameBits = [](T a, T b) { return std::memcmp(&a, &b, sizeof a) == 0; };
     int compared = 0, differing = 0;
@@ -808,11 +822,14 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
         if (k % 5 == 2)
             b.points.push_back(Vec2<T>{T(1e-7), T(3.6e15)});
         const DistanceInput<T> in{{a.points.data(), int(a.points.size()), T(0)},
-                                  {b.points.data(), int(b.points.size()), T(0)}, a.xf, b.xf};
+                                  {b.points.data(), int(b.points.size()), T(0)},
+                                  a.xf,
+                                  b.xf};
         for (int o = 0; o < 32; ++o)
         {
             Options op;
-            op.direction = o & 1 ? SearchDirection::ClosestPoint : SearchDirection::EdgePerpendicular;
+            op.direction =
+                o & 1 ? SearchDirection::ClosestPoint : SearchDirection::EdgePerpendicular;
             op.stopping = o & 2 ? StoppingRule::DualityGap : StoppingRule::RepeatedSupport;
             op.frame = o & 4 ? Frame::World : Frame::LocalA;
             op.support = o & 8 ? SupportStrategy::BinarySearch : SupportStrategy::Linear;
@@ -823,10 +840,11 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
                 continue;
             const auto warm = distance(in, cache, op);
             ++compared;
-            differing += !(sameBits(cold.distance, warm.distance) && sameBits(cold.pointA.x, warm.pointA.x) &&
-                           sameBits(cold.pointA.y, warm.pointA.y) && sameBits(cold.pointB.x, warm.pointB.x) &&
-                           sameBits(cold.pointB.y, warm.pointB.y) && sameBits(cold.normal.x, warm.normal.x) &&
-                           sameBits(cold.normal.y, warm.normal.y));
+            differing += !(
+                sameBits(cold.distance, warm.distance) && sameBits(cold.pointA.x, warm.pointA.x) &&
+                sameBits(cold.pointA.y, warm.pointA.y) && sameBits(cold.pointB.x, warm.pointB.x) &&
+                sameBits(cold.pointB.y, warm.pointB.y) && sameBits(cold.normal.x, warm.normal.x) &&
+                sameBits(cold.normal.y, warm.normal.y));
         }
     }
     CHECK(compared > 90000);
@@ -836,9 +854,9 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
 TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]", float, double)
 {
     using T = TestType;
-    // Regression (found by the fuzzer): an axis-aligned final edge has a zero normal component whose
-    // sign came from the order of the edge's vertices (x - x is +0, -(x - x) is -0), and a warm
-    // start from the canonical (reversed) cache gave the other sign. A segment of A on an axis
+    // Regression (found by the fuzzer): an axis-aligned final edge has a zero normal component
+    // whose sign came from the order of the edge's vertices (x - x is +0, -(x - x) is -0), and a
+    // warm start from the canonical (reversed) cache gave the other sign. A segment of A on an axis
     // against a point of B across it, in the four axis directions; by hand the normal is +-(1, 0)
     // or +-(0, 1), the witness on A has one zero coordinate.
     const Vec2<T> axes[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
@@ -854,7 +872,8 @@ TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]
         for (const auto& out : {cold, warm})
         {
             REQUIRE(out.distance == T(2));
-            for (T c : {out.normal.x, out.normal.y, out.pointA.x, out.pointA.y, out.pointB.x, out.pointB.y})
+            for (T c : {out.normal.x, out.normal.y, out.pointA.x, out.pointA.y, out.pointB.x,
+                        out.pointB.y})
                 CHECK_FALSE((c == T(0) && std::signbit(c)));
         }
     }
@@ -871,20 +890,31 @@ TEST_CASE("warm start: the binary-search support starts where the last search st
     // 2^-64. SimplexCache::searchA/searchB now keep where the last searches started.
     using T = float;
     Scene<T> s;
-    s.a = {{0x1.6p-62f, 0x1.e4p-9f},  {0x1p-62f, 0x1p-9f},       {0x1p-63f, 0x1p-11f},
-           {0x1p-64f, 0x1p-13f},      {0x1.8p-65f, 0x1.2p-14f},  {0x1p-65f, 0x1p-15f},
-           {0x1p-66f, 0x1p-17f},      {0x1.fp-61f, 0x1.e08p-6f}, {0x1.ep-61f, 0x1.c2p-6f},
+    s.a = {{0x1.6p-62f, 0x1.e4p-9f},   {0x1p-62f, 0x1p-9f},        {0x1p-63f, 0x1p-11f},
+           {0x1p-64f, 0x1p-13f},       {0x1.8p-65f, 0x1.2p-14f},   {0x1p-65f, 0x1p-15f},
+           {0x1p-66f, 0x1p-17f},       {0x1.fp-61f, 0x1.e08p-6f},  {0x1.ep-61f, 0x1.c2p-6f},
            {0x1.d8p-61f, 0x1.b32p-6f}, {0x1.c8p-61f, 0x1.962p-6f}, {0x1.cp-61f, 0x1.88p-6f},
-           {0x1.9p-61f, 0x1.388p-6f}, {0x1.6p-61f, 0x1.e4p-7f},  {0x1.58p-61f, 0x1.ce4p-7f},
-           {0x1.5p-61f, 0x1.b9p-7f},  {0x1.38p-61f, 0x1.7c4p-7f}, {0x1.1p-61f, 0x1.21p-7f},
+           {0x1.9p-61f, 0x1.388p-6f},  {0x1.6p-61f, 0x1.e4p-7f},   {0x1.58p-61f, 0x1.ce4p-7f},
+           {0x1.5p-61f, 0x1.b9p-7f},   {0x1.38p-61f, 0x1.7c4p-7f}, {0x1.1p-61f, 0x1.21p-7f},
            {0x1.ep-62f, 0x1.c2p-8f}};
     s.xfA = {{0, -0x1p-149f}, {0, -1}};
-    s.b = {{0x1.b8p+41f, 0x1.7a2p-103f}, {0x1.ep+41f, 0x1.c2p-103f},  {-0x1.4p+40f, 0x1.9p-106f},
-           {-0x1.ep+39f, 0x1.c2p-107f},  {-0x1.4p+39f, 0x1.9p-108f},  {-0x1.4p+38f, 0x1.9p-110f},
-           {0, 0},                       {0x1.4p+38f, 0x1.9p-110f},   {0x1.4p+39f, 0x1.9p-108f},
-           {0x1.ep+39f, 0x1.c2p-107f},   {0x1.4p+40f, 0x1.9p-106f},   {0x1.9p+40f, 0x1.388p-105f},
-           {0x1.ep+40f, 0x1.c2p-105f},   {0x1.18p+41f, 0x1.324p-104f}, {0x1.4p+41f, 0x1.9p-104f},
-           {0x1.68p+41f, 0x1.fa4p-104f}, {0x1.9p+41f, 0x1.388p-103f}};
+    s.b = {{0x1.b8p+41f, 0x1.7a2p-103f},
+           {0x1.ep+41f, 0x1.c2p-103f},
+           {-0x1.4p+40f, 0x1.9p-106f},
+           {-0x1.ep+39f, 0x1.c2p-107f},
+           {-0x1.4p+39f, 0x1.9p-108f},
+           {-0x1.4p+38f, 0x1.9p-110f},
+           {0, 0},
+           {0x1.4p+38f, 0x1.9p-110f},
+           {0x1.4p+39f, 0x1.9p-108f},
+           {0x1.ep+39f, 0x1.c2p-107f},
+           {0x1.4p+40f, 0x1.9p-106f},
+           {0x1.9p+40f, 0x1.388p-105f},
+           {0x1.ep+40f, 0x1.c2p-105f},
+           {0x1.18p+41f, 0x1.324p-104f},
+           {0x1.4p+41f, 0x1.9p-104f},
+           {0x1.68p+41f, 0x1.fa4p-104f},
+           {0x1.9p+41f, 0x1.388p-103f}};
     Options o;
     o.direction = SearchDirection::ClosestPoint;
     o.stopping = StoppingRule::DualityGap;
@@ -902,7 +932,8 @@ TEST_CASE("warm start: the binary-search support starts where the last search st
     CHECK(warm.iterations == 1);
 }
 
-TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float, double)
+TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][large]", float,
+                   double)
 {
     using T = TestType;
     // Regular 4096-gon of circumradius 1 at the origin, a point at (3, 0): the closest feature is
@@ -921,7 +952,8 @@ TEMPLATE_TEST_CASE("many vertices: a 4096-gon approximating a circle", "[gjk][la
     CHECK(out.distance == within(T(2), tol(T(3))));
 }
 
-TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][certify]", float, double)
+TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][certify]", float,
+                   double)
 {
     using T = TestType;
     // Scenes with hand-derived exact distances (see the tests above). For sqrt(2) the bracket
@@ -1004,12 +1036,12 @@ TEMPLATE_TEST_CASE("certified interval contains the exact distance", "[gjk][cert
 
 TEST_CASE("certified interval: an overflow is never certified", "[gjk][certify][range]")
 {
-    // Regression (an overflow that passed for a certified interval). Points near 1.5e308 rotated by 45 degrees: the world
-    // coordinates overflow (c*x - s*y > max double), inf - inf = NaN, and std::max(0, NaN) == 0
-    // made the interval a certified [0, 0] for an exact distance near 1e307: in local coordinates
-    // A - B = (0, dy), dy = -1.4e308 - -1.5e308 as doubles (exact, by Sterbenz's lemma), of length
-    // dy |q| with |q| = 1 within 2e-16, less A's radius 1 (by hand). The interval must contain
-    // that or say it could not certify.
+    // Regression (an overflow that passed for a certified interval). Points near 1.5e308 rotated by
+    // 45 degrees: the world coordinates overflow (c*x - s*y > max double), inf - inf = NaN, and
+    // std::max(0, NaN) == 0 made the interval a certified [0, 0] for an exact distance near 1e307:
+    // in local coordinates A - B = (0, dy), dy = -1.4e308 - -1.5e308 as doubles (exact, by
+    // Sterbenz's lemma), of length dy |q| with |q| = 1 within 2e-16, less A's radius 1 (by hand).
+    // The interval must contain that or say it could not certify.
     const double c = 0.7071067811865476;
     Scene<double> s;
     s.a = {{1.5e308, -1.4e308}};
@@ -1042,8 +1074,8 @@ TEST_CASE("certified interval: an overflow is never certified", "[gjk][certify][
     CHECK(out.distance <= dy * (1 + 1e-13));
 }
 
-TEMPLATE_TEST_CASE("range: out-of-range queries are rescaled and answered exactly",
-                   "[gjk][range]", float, double)
+TEMPLATE_TEST_CASE("range: out-of-range queries are rescaled and answered exactly", "[gjk][range]",
+                   float, double)
 {
     using T = TestType;
     // Triangle (0,0) (1,0) (0,1) against the point (3,0): distance 2, witness (1,0) on A, by hand.
@@ -1076,30 +1108,34 @@ TEMPLATE_TEST_CASE("range: out-of-range queries are rescaled and answered exactl
     }
 }
 
-TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-finite", "[gjk][range]",
-                   float, double)
+TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-finite",
+                   "[gjk][range]", float, double)
 {
     using T = TestType;
-    // The tiny-edge reproducers (validation/cases/tiny-edges.json, from an adversarial search), in T. Each has a vertical edge of
-    // A, x = xe, whose y range contains the point B = (x0, y0): the distance is xe - x0 by hand, a
-    // subtraction that is exact in T (Sterbenz, or x0 = 0). The edge's squared length is
-    // subnormal, or below 1/max. At c925c49 (before tiny edges were scaled up) the inf-weights cases came out
-    // flagged outOfRange with NaN witness points (the weights' reciprocal overflowed, and the
-    // rescaled retry could not help: the problem's extent is already ~1), and the subnormal-edge
-    // cases were answered only by the rescaled retry.
+    // The tiny-edge reproducers (validation/cases/tiny-edges.json, from an adversarial search), in
+    // T. Each has a vertical edge of A, x = xe, whose y range contains the point B = (x0, y0): the
+    // distance is xe - x0 by hand, a subtraction that is exact in T (Sterbenz, or x0 = 0). The
+    // edge's squared length is subnormal, or below 1/max. At c925c49 (before tiny edges were scaled
+    // up) the inf-weights cases came out flagged outOfRange with NaN witness points (the weights'
+    // reciprocal overflowed, and the rescaled retry could not help: the problem's extent is already
+    // ~1), and the subnormal-edge cases were answered only by the rescaled retry.
     struct Case
     {
         double x0, y0, ax, xe, ylo, yhi;
     };
     const Case cases[] = {
         // subnormal-edge-float: A = (2^-50, 0) and the edge x = 1.49e-19, y in +-2.9e-23; B = 0
-        {0, 0, 8.881784197001252e-16, 1.4907779871675686e-19, -2.9296678432774486e-23, 2.9296678432774486e-23},
+        {0, 0, 8.881784197001252e-16, 1.4907779871675686e-19, -2.9296678432774486e-23,
+         2.9296678432774486e-23},
         // subnormal-edge-double
-        {0, 0, 4.004166190366202e-146, 2.051043701080057e-154, -1.7484367828556776e-162, 1.7484367828556776e-162},
+        {0, 0, 4.004166190366202e-146, 2.051043701080057e-154, -1.7484367828556776e-162,
+         1.7484367828556776e-162},
         // inf-weights-float: A = (1, 0) and the edge x = 8.88395e-16; B = (2^-50, 2^-50)
-        {8.881784197001252e-16, 8.881784197001252e-16, 1.0, 8.883952601346223e-16, 8.881716434365472e-16, 8.881851959637033e-16},
+        {8.881784197001252e-16, 8.881784197001252e-16, 1.0, 8.883952601346223e-16,
+         8.881716434365472e-16, 8.881851959637033e-16},
         // inf-weights-double
-        {2.002083095183101e-146, 2.002083095183101e-146, 1.0, 2.002113644546736e-146, 2.0020830942508083e-146, 2.0020830961153935e-146},
+        {2.002083095183101e-146, 2.002083095183101e-146, 1.0, 2.002113644546736e-146,
+         2.0020830942508083e-146, 2.0020830961153935e-146},
     };
     int checked = 0;
     for (const Case& k : cases)
@@ -1220,7 +1256,8 @@ TEMPLATE_TEST_CASE("binary-search support agrees with the linear scan on convex 
         }
     }
     // A square with collinear midpoints on every edge: (-1,-1) (0,-1) (1,-1) (1,0) (1,1) ...
-    std::vector<Vec2<T>> sq = {{-1, -1}, {0, -1}, {1, -1}, {1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}};
+    std::vector<Vec2<T>> sq = {{-1, -1}, {0, -1}, {1, -1}, {1, 0},
+                               {1, 1},   {0, 1},  {-1, 1}, {-1, 0}};
     const Polygon<T> poly{sq.data(), int(sq.size()), T(0)};
     for (int k = 0; k < 16; ++k)
     {
@@ -1235,7 +1272,8 @@ TEMPLATE_TEST_CASE("binary-search support agrees with the linear scan on convex 
     }
 }
 
-TEMPLATE_TEST_CASE("binary-search support gives the same distances", "[gjk][support]", float, double)
+TEMPLATE_TEST_CASE("binary-search support gives the same distances", "[gjk][support]", float,
+                   double)
 {
     using T = TestType;
     // Two regular 4096-gons of circumradius 1, centres 2.5 apart: vertex 0 of each faces the
@@ -1299,7 +1337,8 @@ TEMPLATE_TEST_CASE("range: overflowing support scans are caught even when the si
     Scene<T> s;
     s.a = {{0, 0}, {-side, 0}, {-side, -side}, {0, -side}};
     s.b = {{gap, 0}, {gap + side, 0}, {gap + side, -side}, {gap, -side}};
-    // Since the rescaled retry the query is rescaled (by 2^-(e + 9) or so) and answered exactly: the gap.
+    // Since the rescaled retry the query is rescaled (by 2^-(e + 9) or so) and answered exactly:
+    // the gap.
     const auto out = query(s);
     CHECK(out.rescaled);
     CHECK_FALSE(out.outOfRange);

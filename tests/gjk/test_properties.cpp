@@ -132,7 +132,8 @@ TEMPLATE_TEST_CASE("cache: every invalid field falls back to the cold start, at 
         SimplexCache cache = c;
         const auto out = distance(in, cache);
         CHECK(out.distance == T(2));
-        // Warm from (3,-1): one support point (2,0), then the repeat: two, not the cold query's one.
+        // Warm from (3,-1): one support point (2,0), then the repeat: two, not the cold query's
+        // one.
         CHECK(out.iterations == 2);
     }
 }
@@ -202,8 +203,10 @@ TEMPLATE_TEST_CASE("an exactly representable distance comes back exactly",
                     for (int segmentIsB = 0; segmentIsB < 2; ++segmentIsB)
                     {
                         CAPTURE(h, x1, x2, vertical, segmentIsB);
-                        auto pt = [&](int along, int across)
-                        { return vertical ? Vec2<T>{T(across), T(along)} : Vec2<T>{T(along), T(across)}; };
+                        auto pt = [&](int along, int across) {
+                            return vertical ? Vec2<T>{T(across), T(along)}
+                                            : Vec2<T>{T(along), T(across)};
+                        };
                         const Vec2<T> seg[2] = {pt(x1, h), pt(x2, h)};
                         const Vec2<T> origin[1] = {{0, 0}};
                         DistanceInput<T> in{{seg, 2, T(0)}, {origin, 1, T(0)}, {}, {}};
@@ -227,8 +230,8 @@ TEST_CASE("certify: up and down round outwards by at least one ulp, at most two"
     using certify::up;
     const double mx = std::numeric_limits<double>::max();
     const double tiny = std::numeric_limits<double>::denorm_min();
-    const double xs[] = {0.0, tiny, 3 * tiny, 0x1p-1022, 0x1.8p-1000, 0.1, 0.5, 1.0,
-                         1 + 0x1p-52, 1.5, 3.0, 0x1.fffffffffffffp0, 1e300, mx / 4};
+    const double xs[] = {0.0, tiny,        3 * tiny, 0x1p-1022, 0x1.8p-1000,         0.1,   0.5,
+                         1.0, 1 + 0x1p-52, 1.5,      3.0,       0x1.fffffffffffffp0, 1e300, mx / 4};
     for (double x0 : xs)
         for (double x : {x0, -x0})
         {
@@ -251,8 +254,8 @@ TEST_CASE("certify: hi and lo enclose v +- e exactly, and round outwards",
     // v + e and v - e are exact in long double (64-bit significand) for these dyadic pairs: the
     // enclosure is checked against the exact ends. Where v +- e is not a double the ends must round
     // outwards (e = 2^-60 at v = 1: to nearest, 1 + 2^-60 is 1).
-    const Bounded cases[] = {{1, 0x1p-60}, {1, 0x1p-54}, {1, 3 * 0x1p-53}, {-1, 0x1p-60},
-                             {0x1p-900, 0x1p-960}, {1e10, 0.25}, {0, 0x1p-1074}, {3, 0}};
+    const Bounded cases[] = {{1, 0x1p-60},         {1, 0x1p-54}, {1, 3 * 0x1p-53}, {-1, 0x1p-60},
+                             {0x1p-900, 0x1p-960}, {1e10, 0.25}, {0, 0x1p-1074},   {3, 0}};
     for (const Bounded& a : cases)
     {
         CAPTURE(a.v, a.e);
@@ -305,7 +308,8 @@ TEST_CASE("certify: the running error bound of each operation covers its exact e
     // Products of uncertain factors: every corner (a.v +- a.e)(b.v +- b.e), exact in small
     // integers, lies within the bound. By hand: (0 +- 1)(0 +- 1) reaches 1 with v = 0, which only
     // the a.e b.e term covers; (2 +- 1)(3 +- 1) reaches 12 = 6 + 2*1 + 3*1 + 1*1.
-    const Bounded pairs[][2] = {{{0, 1}, {0, 1}}, {{2, 1}, {3, 1}}, {{-5, 2}, {7, 3}}, {{4, 0}, {-9, 2}}};
+    const Bounded pairs[][2] = {
+        {{0, 1}, {0, 1}}, {{2, 1}, {3, 1}}, {{-5, 2}, {7, 3}}, {{4, 0}, {-9, 2}}};
     for (const auto& pr : pairs)
     {
         const Bounded p = pr[0] * pr[1];
@@ -331,15 +335,16 @@ TEMPLATE_TEST_CASE("certify: the support scan's upper bound is above the exact m
     // exact value is an integer over 2^32: c, s, nx, ny = k / 2^16 (|k| < 2^15 in double, < 2^21
     // in float, so that m = Q^T n has enough bits for m . x to round), point coordinates
     // and the translation integers below 2^(digits - 2) (exact in T). The points are chosen so that
-    // m . x (m = Q^T n) nearly cancels, and p so that n . p nearly cancels: the rounded dot products
-    // are then off by many units of their (small) result, which only the scan's own error term and
-    // the translation's error bound cover (the final up() adds a few ulps of the small result).
-    // The exact value: 2^32 n.(Qx + p) = NX (C X - S Y) + NY (S X + C Y) + 2^16 (NX PX + NY PY)
-    // in __int128 (at most ~2^83).
+    // m . x (m = Q^T n) nearly cancels, and p so that n . p nearly cancels: the rounded dot
+    // products are then off by many units of their (small) result, which only the scan's own error
+    // term and the translation's error bound cover (the final up() adds a few ulps of the small
+    // result). The exact value: 2^32 n.(Qx + p) = NX (C X - S Y) + NY (S X + C Y) + 2^16 (NX PX +
+    // NY PY) in __int128 (at most ~2^83).
     constexpr int bits = std::numeric_limits<T>::digits - 2;
     const std::int64_t range = std::int64_t(1) << bits;
     std::mt19937_64 rng(99);
-    const std::int64_t smallRange = std::numeric_limits<T>::digits < 53 ? std::int64_t(1) << 21 : 30000;
+    const std::int64_t smallRange =
+        std::numeric_limits<T>::digits < 53 ? std::int64_t(1) << 21 : 30000;
     auto small = [&] { return std::int64_t(rng() % std::uint64_t(2 * smallRange)) - smallRange; };
     auto big = [&] { return std::int64_t(rng() % std::uint64_t(range)) - range / 2; };
     int scanRoundedDown = 0, trials = 0;
@@ -376,17 +381,19 @@ TEMPLATE_TEST_CASE("certify: the support scan's upper bound is above the exact m
         for (const auto& v : pts)
         {
             const I128 X = I128(std::int64_t(v.x)), Y = I128(std::int64_t(v.y));
-            const I128 val = I128(NX) * (I128(C) * X - I128(S) * Y) + I128(NY) * (I128(S) * X + I128(C) * Y);
+            const I128 val =
+                I128(NX) * (I128(C) * X - I128(S) * Y) + I128(NY) * (I128(S) * X + I128(C) * Y);
             if (first || val > best)
                 best = val;
             first = false;
-            // How the scan itself rounds: m (exact here: integers of at most 45 bits over 2^32) times x.
+            // How the scan itself rounds: m (exact here: integers of at most 45 bits over 2^32)
+            // times x.
             const double mx = std::ldexp(double(MX), -32), my = std::ldexp(double(MY), -32);
             scanRoundedDown += !atLeast(mx * double(v.x) + my * double(v.y), val, 32);
         }
         const I128 exact = best + (I128(1) << 16) * (I128(NX) * PX + I128(NY) * PY);
-        const double upper = certify::supportUpper(xf, pts.data(), int(pts.size()), certify::exactly(nx),
-                                                   certify::exactly(ny));
+        const double upper = certify::supportUpper(xf, pts.data(), int(pts.size()),
+                                                   certify::exactly(nx), certify::exactly(ny));
         ++trials;
         CAPTURE(k, C, S, NX, NY, PX, PY);
         CHECK(atLeast(upper, exact, 32));
@@ -405,8 +412,10 @@ TEST_CASE("certify: containment needs certified orientation signs, not rounded o
     // negative and the distance is positive, so an upper end of 0 would be wrong. Found by a random
     // search over A near (-2^60,-2^60) (2^60,2^60) (-2^60,2^60) on the 2^8 grid and b in
     // [-256, 256]^2 (this issue's work, scratch program; the first hit).
-    const std::int64_t ax[3] = {-1152921504606847488LL, 1152921504606847232LL, -1152921504606845952LL};
-    const std::int64_t ay[3] = {-1152921504606848000LL, 1152921504606848000LL, 1152921504606848000LL};
+    const std::int64_t ax[3] = {-1152921504606847488LL, 1152921504606847232LL,
+                                -1152921504606845952LL};
+    const std::int64_t ay[3] = {-1152921504606848000LL, 1152921504606848000LL,
+                                1152921504606848000LL};
     const std::int64_t bx = -211, by = -125;
     std::vector<Vec2<double>> a;
     for (int i = 0; i < 3; ++i)
@@ -420,9 +429,11 @@ TEST_CASE("certify: containment needs certified orientation signs, not rounded o
     for (int i = 0; i < 3; ++i)
     {
         const int j = (i + 1) % 3;
-        const double wxi = a[i].x - b[0].x, wyi = a[i].y - b[0].y, wxj = a[j].x - b[0].x, wyj = a[j].y - b[0].y;
+        const double wxi = a[i].x - b[0].x, wyi = a[i].y - b[0].y, wxj = a[j].x - b[0].x,
+                     wyj = a[j].y - b[0].y;
         roundedPositive += wxi * wyj - wyi * wxj > 0;
-        const I128 exi = I128(ax[i]) - bx, eyi = I128(ay[i]) - by, exj = I128(ax[j]) - bx, eyj = I128(ay[j]) - by;
+        const I128 exi = I128(ax[i]) - bx, eyi = I128(ay[i]) - by, exj = I128(ax[j]) - bx,
+                   eyj = I128(ay[j]) - by;
         exactNegative += exi * eyj - eyi * exj < 0;
     }
     REQUIRE(roundedPositive == 3); // what a rounded-sign test would call containment
@@ -456,7 +467,8 @@ TEST_CASE("certify: containment needs certified orientation signs, not rounded o
 
 // --- Support points ------------------------------------------------------------------------------
 
-TEMPLATE_TEST_CASE("support: ties keep the lowest index", "[gjk][support][properties]", float, double)
+TEMPLATE_TEST_CASE("support: ties keep the lowest index", "[gjk][support][properties]", float,
+                   double)
 {
     using T = TestType;
     // support.hpp, findSupport: a repeated support point is recognised by its index, so among tied

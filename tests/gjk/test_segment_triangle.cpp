@@ -92,8 +92,8 @@ TEMPLATE_TEST_CASE("solve3: vertex, edge and interior regions", "[solve3]", floa
     SECTION("each vertex region")
     {
         // Triangle (1,1), (2,1), (1,2): Q is behind vertex (1,1) with respect to both edges from it
-        // (dot((0,0)-(1,1), (1,0)) = -1 and dot(.., (0,1)) = -1), so the vertex region. Rotating the
-        // vertex order puts that vertex in slot 1, 2 and 3 in turn.
+        // (dot((0,0)-(1,1), (1,0)) = -1 and dot(.., (0,1)) = -1), so the vertex region. Rotating
+        // the vertex order puts that vertex in slot 1, 2 and 3 in turn.
         const Vec2<T> p[3] = {{1, 1}, {2, 1}, {1, 2}};
         for (int r = 0; r < 3; ++r)
         {
@@ -201,14 +201,14 @@ TEMPLATE_TEST_CASE("solve3: overflowing barycentric coordinates still leave an e
                    "[solve3][range]", float, double)
 {
     using T = TestType;
-    // Regression (hostile-input hardening: uninitialised weights). Triangles found by a random search over coordinates of
-    // 1e150..1e300 (double) and 1e17..1e38 (float), where every segment and triangle coordinate
-    // overflows to inf or NaN: no region test passes, and in the fallback every edge's squared
-    // distance is inf or NaN, so "dot(c, c) < bestDist2" never held and the simplex was left with
-    // count 0 and uninitialised weights (valgrind saw the reads; the campaign's report depended on
-    // the thread count). The fallback now keeps edge w1w2 unless another is strictly closer. What
-    // matters is that the simplex is valid (one or two of the input vertices), not which edge: the
-    // query flags such inputs and answers them rescaled.
+    // Regression (hostile-input hardening: uninitialised weights). Triangles found by a random
+    // search over coordinates of 1e150..1e300 (double) and 1e17..1e38 (float), where every segment
+    // and triangle coordinate overflows to inf or NaN: no region test passes, and in the fallback
+    // every edge's squared distance is inf or NaN, so "dot(c, c) < bestDist2" never held and the
+    // simplex was left with count 0 and uninitialised weights (valgrind saw the reads; the
+    // campaign's report depended on the thread count). The fallback now keeps edge w1w2 unless
+    // another is strictly closer. What matters is that the simplex is valid (one or two of the
+    // input vertices), not which edge: the query flags such inputs and answers them rescaled.
     const bool isFloat = std::is_same_v<T, float>;
     auto s = isFloat ? triangle<T>({T(2.17408303e+19), T(8.60676328e+19)},
                                    {T(-6.7586342e+19), T(5.91416134e+19)},
@@ -223,7 +223,8 @@ TEMPLATE_TEST_CASE("solve3: overflowing barycentric coordinates still leave an e
     {
         bool fromInput = false;
         for (int j = 0; j < 3; ++j)
-            fromInput = fromInput || (s.v[i].indexA == before.v[j].indexA && s.v[i].w == before.v[j].w);
+            fromInput =
+                fromInput || (s.v[i].indexA == before.v[j].indexA && s.v[i].w == before.v[j].w);
         CHECK(fromInput);
     }
 }

@@ -1,7 +1,10 @@
-// report_render: renders a page with gjk_html, for the browser tests (tests/report/browser_check.py).
+// report_render: renders a page with gjk_html, for the browser tests
+// (tests/report/browser_check.py).
 //   report_render report REPORT.json OUT.html        index.html for a report.json
-//   report_render case   FILE.json   OUT.html [N]    viewer page for a CaseDetail, or for the report's
-//                                                    worst[N] when FILE.json is a report (default 0)
+//   report_render case   FILE.json   OUT.html [N]    viewer page for a CaseDetail, or for the
+//   report's
+//                                                    worst[N] when FILE.json is a report (default
+//                                                    0)
 #include "gjk_html/html.hpp"
 
 #include <cstdio>
@@ -30,7 +33,8 @@ int main(int argc, char** argv)
         const nlohmann::json data = nlohmann::json::parse(in);
         std::string html;
         if (mode == "report")
-            html = gjk_html::renderReport(data, "gjk-report/1"); // kReportSchema (report/report.hpp)
+            html =
+                gjk_html::renderReport(data, "gjk-report/1"); // kReportSchema (report/report.hpp)
         else if (mode == "case")
         {
             if (data.contains("worst"))

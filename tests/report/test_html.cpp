@@ -19,7 +19,6 @@ namespace
 // this test, linking gjk_html alone, cannot include.
 constexpr const char* kSchema = "gjk-report/1";
 
-
 json loadFixture(const std::string& name)
 {
     std::ifstream in(std::string(GJK_REPORT_FIXTURES) + "/" + name);
@@ -59,13 +58,15 @@ void checkSelfContained(const std::string& page)
     const std::string code = withoutData(page);
     // No external resource of any kind: no src/href to another document, no CSS import or url(),
     // no <link>, <iframe>, <img>, <object>, <embed>, and no script loaded by src.
-    const std::regex external(R"((src|href|action)\s*=\s*["']?\s*(https?:|//|file:|data:))", std::regex::icase);
+    const std::regex external(R"((src|href|action)\s*=\s*["']?\s*(https?:|//|file:|data:))",
+                              std::regex::icase);
     CHECK_FALSE(std::regex_search(code, external));
     const std::regex tags(R"(<\s*(link|iframe|img|object|embed|base)\b)", std::regex::icase);
     CHECK_FALSE(std::regex_search(code, tags));
     CHECK_FALSE(std::regex_search(code, std::regex(R"(<script[^>]*\bsrc\s*=)", std::regex::icase)));
     CHECK_FALSE(std::regex_search(code, std::regex(R"(@import|url\s*\()", std::regex::icase)));
-    CHECK_FALSE(std::regex_search(code, std::regex(R"(\b(fetch|XMLHttpRequest|WebSocket|EventSource|importScripts)\b)")));
+    CHECK_FALSE(std::regex_search(
+        code, std::regex(R"(\b(fetch|XMLHttpRequest|WebSocket|EventSource|importScripts)\b)")));
     // The only "http" is the SVG namespace name (an identifier, never fetched).
     std::string rest = code;
     for (std::size_t at; (at = rest.find("http://www.w3.org/2000/svg")) != std::string::npos;)
@@ -135,7 +136,8 @@ TEST_CASE("markup inside strings cannot close or disturb the data block", "[html
 
 TEST_CASE("embedJson is valid JSON for awkward strings", "[html]")
 {
-    const json j = {{"s", "a</script>b<!--c-->d&e\u2028f\"g\\h"}, {"n", {1.5, -0.0, 1e-300, 12345678901234567.0}}};
+    const json j = {{"s", "a</script>b<!--c-->d&e\u2028f\"g\\h"},
+                    {"n", {1.5, -0.0, 1e-300, 12345678901234567.0}}};
     const std::string text = gjk_html::embedJson(j);
     CHECK(text.find("</") == std::string::npos);
     CHECK(json::parse(text) == j);
@@ -174,7 +176,8 @@ TEST_CASE("pages render from sparse or odd data without throwing", "[html]")
         checkTemplateFilled(page);
     }
     // Non-finite doubles (which JSON cannot hold) become null rather than invalid JSON.
-    const json nan = {{"x", std::numeric_limits<double>::quiet_NaN()}, {"y", std::numeric_limits<double>::infinity()}};
+    const json nan = {{"x", std::numeric_limits<double>::quiet_NaN()},
+                      {"y", std::numeric_limits<double>::infinity()}};
     CHECK(json::parse(dataBlock(gjk_html::renderReport(nan, kSchema)))["x"].is_null());
 }
 

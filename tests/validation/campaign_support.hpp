@@ -2,9 +2,9 @@
 #pragma once
 
 #include "campaign/campaign.hpp"
+#include "evaluate/variants.hpp"
 #include "inputs/families.hpp"
 #include "statistics/makeup.hpp"
-#include "evaluate/variants.hpp"
 
 #include <exact/exact.hpp>
 
@@ -14,7 +14,8 @@
 namespace gjkval
 {
 // The given families and variants, 2 threads, no timed passes.
-inline CampaignConfig untimedConfig(std::vector<std::string> families, const std::string& variants = "all")
+inline CampaignConfig untimedConfig(std::vector<std::string> families,
+                                    const std::string& variants = "all")
 {
     CampaignConfig c;
     c.families = std::move(families);
@@ -26,7 +27,8 @@ inline CampaignConfig untimedConfig(std::vector<std::string> families, const std
 }
 
 // The make-up checks `specs` evaluated on `cases`, with their exact truths.
-inline std::vector<MakeupResult> makeupOn(const std::vector<MakeupSpec>& specs, const std::vector<Case>& cases)
+inline std::vector<MakeupResult> makeupOn(const std::vector<MakeupSpec>& specs,
+                                          const std::vector<Case>& cases)
 {
     std::vector<exact::Result> truths;
     for (const auto& c : cases)

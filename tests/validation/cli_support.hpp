@@ -2,15 +2,15 @@
 // test_compare.cpp): one child process per run, its exit code, stdout and stderr.
 #pragma once
 
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
 #include <string>
-#include <vector>
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace gjkval
 {
@@ -33,8 +33,8 @@ inline std::string slurp(const std::filesystem::path& p)
 inline CliRun runGjkValidate(const std::vector<std::string>& args,
                              const std::function<void()>& inChild = {})
 {
-    const std::filesystem::path dir = std::filesystem::path(VALIDATION_TEST_TMP) /
-                                      ("cli-" + std::to_string(::getpid()));
+    const std::filesystem::path dir =
+        std::filesystem::path(VALIDATION_TEST_TMP) / ("cli-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     const std::filesystem::path out = dir / "stdout.txt", err = dir / "stderr.txt";
     const pid_t pid = ::fork();

@@ -258,7 +258,8 @@ TEST_CASE("an interrupted run resumes from its checkpoint to the uninterrupted r
     CampaignConfig other = c;
     other.resume = true;
     other.seed = 9;
-    CHECK_THROWS_WITH(run(other), Catch::Contains("the checkpoint is of another campaign: its seed is 1"));
+    CHECK_THROWS_WITH(run(other),
+                      Catch::Contains("the checkpoint is of another campaign: its seed is 1"));
 }
 
 TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
@@ -290,7 +291,8 @@ TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated 
           "b/shard.json: a shard of another campaign: its seed is 2, a/shard.json's is 1");
     CHECK(refusal({s0}) == "merge: shard 1/2 is missing");
     CHECK(refusal({s0, s0}) == "b/shard.json: shard 0/2 is given twice");
-    CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) == "b/shard.json: not a gjk-shard/1 file");
+    CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) ==
+          "b/shard.json: not a gjk-shard/1 file");
 }
 
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")
@@ -466,10 +468,11 @@ TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
 TEST_CASE("a broken invariant of the truth fails the run, and only invalid input rejects a case",
           "[campaign][errors]")
 {
-    // Regression (hostile-input hardening: a broken invariant of the truth rejected cases): computeTruth caught every std::exception of the exact side
-    // as a rejected case (exit 2, "bad input"), and swallowed any exception of the float-input
-    // truth, skipping the float variants without a word. A validation tool that reports a bug in
-    // its truth as bad input cannot be trusted: only std::invalid_argument is a rejection.
+    // Regression (hostile-input hardening: a broken invariant of the truth rejected cases):
+    // computeTruth caught every std::exception of the exact side as a rejected case (exit 2, "bad
+    // input"), and swallowed any exception of the float-input truth, skipping the float variants
+    // without a word. A validation tool that reports a bug in its truth as bad input cannot be
+    // trusted: only std::invalid_argument is a rejection.
     Case c;
     c.name = "two points";
     c.a.points = {{0, 0}};
@@ -479,7 +482,8 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
 
     SECTION("invalid input: the case is rejected")
     {
-        ctx.truth = [](const exact::Shape&, const exact::Shape&, const exact::Options&) -> exact::Result
+        ctx.truth = [](const exact::Shape&, const exact::Shape&,
+                       const exact::Options&) -> exact::Result
         { throw std::invalid_argument("exact: shape A has no points"); };
         CaseOutcome o;
         computeTruth(c, ctx, o);
@@ -487,7 +491,8 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
     }
     SECTION("a broken invariant of the truth propagates")
     {
-        ctx.truth = [](const exact::Shape&, const exact::Shape&, const exact::Options&) -> exact::Result
+        ctx.truth = [](const exact::Shape&, const exact::Shape&,
+                       const exact::Options&) -> exact::Result
         { throw std::logic_error("exact: rounding did not converge"); };
         CaseOutcome o;
         CHECK_THROWS_AS(computeTruth(c, ctx, o), std::logic_error);

@@ -165,7 +165,8 @@ TEST_CASE("a file of another format is refused", "[cases]")
     CHECK_THROWS_AS(readCaseFile("/nonexistent/cases.json"), InputError);
 }
 
-TEST_CASE("invalid cases are rejected naming file, case and field, and the others are valid", "[cases]")
+TEST_CASE("invalid cases are rejected naming file, case and field, and the others are valid",
+          "[cases]")
 {
     const CaseFile f = readCaseFile(std::string(VALIDATION_TEST_DATA) + "/bad-cases.json");
     REQUIRE(f.entries.size() == 9);
@@ -201,7 +202,8 @@ TEST_CASE("any finite rotation (c, s) other than (0, 0) is a transform", "[cases
     for (const auto& e : f.entries)
         CHECK(e.rejected.empty());
     CHECK(f.entries[0].c.a.c == double(0.95533651113510132f));
-    CHECK(std::abs(f.entries[0].c.a.c * f.entries[0].c.a.c + f.entries[0].c.a.s * f.entries[0].c.a.s - 1) > 1e-9);
+    CHECK(std::abs(f.entries[0].c.a.c * f.entries[0].c.a.c +
+                   f.entries[0].c.a.s * f.entries[0].c.a.s - 1) > 1e-9);
     CHECK(f.entries[1].c.a.s == 4);
     CHECK(f.entries[3].c.a.s == -1e300);
 }
@@ -549,7 +551,8 @@ TEST_CASE("the streaming reader reads from disk what the whole-file reader reads
     const std::filesystem::path dir = std::string(VALIDATION_TEST_TMP) + "/case-files";
     std::filesystem::create_directories(dir);
     const std::string bad = (dir / "bad-at-3.json").string();
-    std::ofstream(bad) << "{\"format\": \"gjk-cases/1\",\n \"cases\": [\n  {\"name\": \"x\", \"a\": }\n ]}\n";
+    std::ofstream(bad)
+        << "{\"format\": \"gjk-cases/1\",\n \"cases\": [\n  {\"name\": \"x\", \"a\": }\n ]}\n";
     std::string streamedMessage;
     try
     {

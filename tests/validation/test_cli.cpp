@@ -1,9 +1,9 @@
-// The gjk-validate program on hostile command lines and failing writes (the hostile-input hardening):
-// what CMake's expect_exit.cmake cannot express (raw non-UTF-8 bytes, a file size limit, file
-// contents before and after). Each test runs the program in a child process.
+// The gjk-validate program on hostile command lines and failing writes (the hostile-input
+// hardening): what CMake's expect_exit.cmake cannot express (raw non-UTF-8 bytes, a file size
+// limit, file contents before and after). Each test runs the program in a child process.
+#include "cli_support.hpp"
 #include "common/common.hpp"
 #include "report/report.hpp"
-#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -12,16 +12,16 @@
 #include <cctype>
 #include <chrono>
 #include <csignal>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
-#include <vector>
-#include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 using namespace gjkval;
 namespace fs = std::filesystem;
@@ -91,8 +91,10 @@ TEST_CASE("cli refuses non-UTF-8 arguments before any work", "[cli]")
     const fs::path d = freshDir("utf8");
     const std::string bad = std::string("r\xff");
     for (const std::vector<std::string>& args :
-         {std::vector<std::string>{"run", "--family", "random:3", "--out", bad}, // relative: the
-          // message quotes at most 60 bytes, and a long build path would push the \xFF out of it
+         {std::vector<std::string>{"run", "--family", "random:3", "--out",
+                                   bad}, // relative: the
+                                         // message quotes at most 60 bytes, and a long build path
+                                         // would push the \xFF out of it
           std::vector<std::string>{"run", "--family", "random:3", "--cases", bad, "--out",
                                    (d / "r").string()},
           std::vector<std::string>{"generate", "--family", "random:3", "--comment", "x\xff", "-o",
@@ -147,17 +149,16 @@ TEST_CASE("cli generate leaves an existing file whole when it fails", "[cli]")
 TEST_CASE("cli report directory holds one whole run", "[cli]")
 {
     const fs::path d = freshDir("report") / "latest";
-    const std::vector<std::string> first = {"run",          "--family", "random:60",
-                                            "--seed",       "1",        "--no-timing",
-                                            "--per-case",   "--out",    d.string()};
+    const std::vector<std::string> first = {"run",        "--family", "random:60",
+                                            "--seed",     "1",        "--no-timing",
+                                            "--per-case", "--out",    d.string()};
     REQUIRE(runCli(first).code == kExitPass);
     const auto before = snapshot(d);
     REQUIRE(before.count("report.json") == 1);
     REQUIRE(before.count("cases.jsonl") == 1);
 
-    const std::vector<std::string> second = {"run",    "--family",    "random:60",
-                                             "--seed", "2",           "--no-timing",
-                                             "--out",  d.string()};
+    const std::vector<std::string> second = {"run", "--family",    "random:60", "--seed",
+                                             "2",   "--no-timing", "--out",     d.string()};
     const Run failed = runCli(second, 64 * 1024);
     INFO(failed.err);
     CHECK(failed.code == kExitResources);
@@ -196,8 +197,8 @@ TEST_CASE("cli refuses an output directory holding other files", "[cli]")
 TEST_CASE("cli top-level handlers give exit codes 4 and 5", "[cli]")
 {
     const fs::path d = freshDir("fault") / "r";
-    const std::vector<std::string> args = {"run", "--family", "random:3", "--no-timing", "--out",
-                                           d.string()};
+    const std::vector<std::string> args = {"run",         "--family", "random:3",
+                                           "--no-timing", "--out",    d.string()};
     Run r = runCli(args, 0, "logic_error");
     CHECK(r.code == kExitInternal);
     CHECK(contains(r.err, "gjk-validate: internal error: test fault"));
@@ -256,7 +257,8 @@ TEST_CASE("cli a later run removes the staging directory of a run killed by SIGK
     const std::string name = fs::path(staged[0]).filename().string();
     INFO(name);
     CHECK(name.rfind(".latest.tmp-", 0) == 0);
-    const std::string owner = fmt::format("-{}-", pid); // fmt: GCC 12's -Wrestrict false positive on "-" + s
+    const std::string owner =
+        fmt::format("-{}-", pid); // fmt: GCC 12's -Wrestrict false positive on "-" + s
     CHECK(contains(name, owner));
 
     // Beside it: a live process's (this test's), another host's, an old-named one of today, and
@@ -264,9 +266,12 @@ TEST_CASE("cli a later run removes the staging directory of a run killed by SIGK
     char host[256] = {};
     ::gethostname(host, sizeof host - 1);
     const fs::path parent = d.parent_path();
-    const fs::path live = parent / (".latest.tmp-" + std::string(host) + "-" + std::to_string(::getpid()) + "-Abc123");
-    const fs::path otherHost = parent / (".latest.tmp-no-such-host.example-" + std::to_string(pid) + "-Abc123");
-    const fs::path legacyNew = parent / ".latest.tmp-Abc123", legacyOld = parent / ".latest.tmp-Def456";
+    const fs::path live = parent / (".latest.tmp-" + std::string(host) + "-" +
+                                    std::to_string(::getpid()) + "-Abc123");
+    const fs::path otherHost =
+        parent / (".latest.tmp-no-such-host.example-" + std::to_string(pid) + "-Abc123");
+    const fs::path legacyNew = parent / ".latest.tmp-Abc123",
+                   legacyOld = parent / ".latest.tmp-Def456";
     for (const auto& p : {live, otherHost, legacyNew, legacyOld})
         fs::create_directories(p);
     fs::last_write_time(legacyOld, fs::file_time_type::clock::now() - std::chrono::hours(8 * 24));
@@ -288,7 +293,8 @@ TEST_CASE("cli a later run removes the staging directory of a run killed by SIGK
 // Issue 30, "smaller things": the plugins on the command line.
 namespace
 {
-const fs::path kShippedPlugin = fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / "gjk2d-box2d.so";
+const fs::path kShippedPlugin =
+    fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / "gjk2d-box2d.so";
 
 std::string oneSpaced(const std::string& s) // help text as one line: its wrapping aside
 {
@@ -324,9 +330,9 @@ TEST_CASE("cli list shows the shipped plugin, and a --plugin one", "[cli]")
     CHECK(contains(lines[0], "(shipped, " + real + ")"));
 
     // Given by a path of another spelling: listed once, with its real path, not as shipped.
-    const std::string other = (fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / ".." / "plugins" /
-                               "gjk2d-box2d.so")
-                                  .string();
+    const std::string other =
+        (fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / ".." / "plugins" / "gjk2d-box2d.so")
+            .string();
     const Run given = runCli({"list", "--no-default-plugins", "--plugin", other});
     INFO(given.err);
     REQUIRE(given.code == kExitPass);
@@ -358,10 +364,13 @@ TEST_CASE("cli run --help names the plugins' exit codes", "[cli]")
     REQUIRE(r.code == kExitPass);
     const std::string help = oneSpaced(r.out);
     CHECK(contains(help, "1 some case failed"));
-    CHECK(contains(help, "a judged plugin (--judge) that crashed, hung or answered an error status on a case"));
+    CHECK(contains(
+        help,
+        "a judged plugin (--judge) that crashed, hung or answered an error status on a case"));
     CHECK(contains(help, "2 usage or input error"));
-    CHECK(contains(help, "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
-                         "description, given twice)"));
+    CHECK(contains(
+        help, "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
+              "description, given twice)"));
 }
 
 TEST_CASE("cli the same plugin file given twice exits 2 naming it", "[cli]")
@@ -372,11 +381,13 @@ TEST_CASE("cli the same plugin file given twice exits 2 naming it", "[cli]")
     for (const auto& second : {kShippedPlugin.string(), link.string()})
     {
         INFO(second);
-        const Run r = runCli({"run", "--family", "random:10", "--no-default-plugins", "--plugin",
-                              kShippedPlugin.string(), "--plugin", second, "--out", (d / "out").string()});
+        const Run r =
+            runCli({"run", "--family", "random:10", "--no-default-plugins", "--plugin",
+                    kShippedPlugin.string(), "--plugin", second, "--out", (d / "out").string()});
         CHECK(r.code == kExitInput);
         CHECK(linesWith(r.err, "").size() == 1);
-        CHECK(contains(r.err, "--plugin " + second + ": given twice (also as " + kShippedPlugin.string() + ")"));
+        CHECK(contains(r.err, "--plugin " + second + ": given twice (also as " +
+                                  kShippedPlugin.string() + ")"));
         CHECK(!fs::exists(d / "out"));
     }
 }

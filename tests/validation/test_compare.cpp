@@ -3,9 +3,9 @@
 // changes, and the program's exit codes and messages. The real report comes from one small
 // campaign per test process: `gjk-validate run --family random:300 --family hard/near-parallel
 // --no-timing` (about a second in release).
+#include "cli_support.hpp"
 #include "common/common.hpp"
 #include "report/compare.hpp"
-#include "cli_support.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -19,10 +19,14 @@ using namespace gjkval;
 
 namespace
 {
-bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool sameBits(double a, double b)
+{
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
-gjk::DistanceInput<double> inputOf(const std::vector<gjk::Vec2<double>>& a, const std::vector<gjk::Vec2<double>>& b,
-                                   double ra = 0, double rb = 0)
+gjk::DistanceInput<double> inputOf(const std::vector<gjk::Vec2<double>>& a,
+                                   const std::vector<gjk::Vec2<double>>& b, double ra = 0,
+                                   double rb = 0)
 {
     return {{a.data(), int(a.size()), ra}, {b.data(), int(b.size()), rb}, {}, {}};
 }
@@ -75,7 +79,8 @@ TEST_CASE("correctly rounded: hand-derived distances", "[correct]")
     CHECK(gjk::distance(inputOf(a, b)).path == gjk::CorrectPath::Plain);
 }
 
-TEMPLATE_TEST_CASE("correctly rounded: a float query asks for the exact completion", "[correct]", float)
+TEMPLATE_TEST_CASE("correctly rounded: a float query asks for the exact completion", "[correct]",
+                   float)
 {
     using T = TestType;
     const std::vector<gjk::Vec2<T>> a = {{0, 0}}, b = {{3, 4}};
@@ -96,7 +101,8 @@ TEST_CASE("correctly rounded: a vertex at 3.6e18, plain double answers 0 for 0.6
                                               {1.6200374375330284e-12, 1.4551471139157002e-11},
                                               {1.9775847626135601e-16, -8.6736173798840355e-19}};
     gjk::DistanceInput<double> in = inputOf(a, b);
-    in.transformA = {{-4.7393143177032471e-05, -1.862645149230957e-07}, {0.54540534970280896, 0.83817241932406528}};
+    in.transformA = {{-4.7393143177032471e-05, -1.862645149230957e-07},
+                     {0.54540534970280896, 0.83817241932406528}};
     REQUIRE(gjk::distance(in).distance == 0.0);
     auto out = gjk::distance(in, kCorrect);
     CHECK(out.path == gjk::CorrectPath::NeedsExact); // a plain 0 for shapes apart: never trusted
@@ -123,11 +129,16 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
         bool target;
     };
     std::map<gjk::CorrectPath, int> total;
-    for (const Family fam :
-         {Family{"hard/near-zero-separation", true}, {"hard/mixed-scale", true}, {"hard/extreme-scale", true},
-          {"hard/ulp-gap", false}, {"hard/touching-edge", false}, {"hard/near-tied-support", true},
-          {"hard/offset-sweep", true}, {"hard/range", false}, {"engine/pyramid-toi:300", false},
-          {"random:2000", true}})
+    for (const Family fam : {Family{"hard/near-zero-separation", true},
+                             {"hard/mixed-scale", true},
+                             {"hard/extreme-scale", true},
+                             {"hard/ulp-gap", false},
+                             {"hard/touching-edge", false},
+                             {"hard/near-tied-support", true},
+                             {"hard/offset-sweep", true},
+                             {"hard/range", false},
+                             {"engine/pyramid-toi:300", false},
+                             {"random:2000", true}})
     {
         const char* family = fam.spec;
         int cases = 0, plainOff = 0, mismatches = 0;
@@ -147,10 +158,10 @@ TEST_CASE("correctly rounded: bit for bit on the hard families where plain doubl
                 if (headerOnly.path != gjk::CorrectPath::NeedsExact)
                     CHECK(sameBits(headerOnly.distance, out.distance));
             }
-        INFO(family << ": " << cases << " cases, plain double off on " << plainOff << ", extended decided "
-                    << paths[gjk::CorrectPath::Extended] << ", double-double decided "
-                    << paths[gjk::CorrectPath::DoubleDouble] << ", exact needed on "
-                    << paths[gjk::CorrectPath::NeedsExact]);
+        INFO(family << ": " << cases << " cases, plain double off on " << plainOff
+                    << ", extended decided " << paths[gjk::CorrectPath::Extended]
+                    << ", double-double decided " << paths[gjk::CorrectPath::DoubleDouble]
+                    << ", exact needed on " << paths[gjk::CorrectPath::NeedsExact]);
         CHECK(cases > 0);
         CHECK(mismatches == 0);
         if (fam.target)
@@ -175,7 +186,8 @@ TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "
     // containment filter) never claims what the running bound (containsOriginCertified) or the
     // exact side denies.
     int points = 0, lanesTaken = 0, filtered = 0, triangles = 0;
-    for (const char* family : {"random:500", "hard/mixed-scale", "hard/extreme-scale", "hard/near-zero-separation"})
+    for (const char* family :
+         {"random:500", "hard/mixed-scale", "hard/extreme-scale", "hard/near-zero-separation"})
         for (const auto& f : generateFamilies(family, 5))
             for (const Case& c : f.cases)
             {
@@ -193,13 +205,15 @@ TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "
                         gjk::correct::addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
                         gjk::correct::addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
                         gjk::correct::Context cx;
-                        const gjk::correct::Approx sx = gjk::correct::exactSum(cx, tx), sy = gjk::correct::exactSum(cx, ty);
+                        const gjk::correct::Approx sx = gjk::correct::exactSum(cx, tx),
+                                                   sy = gjk::correct::exactSum(cx, ty);
                         REQUIRE(cx.ok);
                         for (const auto& [l, s] : {std::pair{lanes.x, sx}, std::pair{lanes.y, sy}})
                         {
-                            INFO(c.name << " W(" << i << ", " << j << ") " << l.hi << " + " << l.lo << " against "
-                                        << s.hi << " + " << s.lo);
-                            CHECK(std::abs((l.hi - s.hi) + (l.lo - s.lo)) <= (l.err + s.err) * 2 + 0x1p-1000);
+                            INFO(c.name << " W(" << i << ", " << j << ") " << l.hi << " + " << l.lo
+                                        << " against " << s.hi << " + " << s.lo);
+                            CHECK(std::abs((l.hi - s.hi) + (l.lo - s.lo)) <=
+                                  (l.err + s.err) * 2 + 0x1p-1000);
                         }
                     }
                 gjk::SimplexCache cache;
@@ -215,14 +229,15 @@ TEST_CASE("correctly rounded: the two-lane stages agree with the scalar ones", "
                     CHECK(exact::distance(toExact(c.a), toExact(c.b)).distance == 0.0);
                 }
             }
-    INFO(points << " points, " << lanesTaken << " in lanes; " << triangles << " containment triangles, " << filtered
-                << " decided by the filter");
+    INFO(points << " points, " << lanesTaken << " in lanes; " << triangles
+                << " containment triangles, " << filtered << " decided by the filter");
     CHECK(lanesTaken > points / 2);
     CHECK(filtered > triangles / 2);
 }
 
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
-TEST_CASE("correctly rounded: the extended stage steps aside under another x87 precision", "[correct]")
+TEST_CASE("correctly rounded: the extended stage steps aside under another x87 precision",
+          "[correct]")
 {
     // A program that sets the x87 precision control to 53 bits (fldcw) would make the extended
     // stage's bound false: the stage checks the control word and leaves the query to
@@ -240,11 +255,12 @@ TEST_CASE("correctly rounded: the extended stage steps aside under another x87 p
 }
 #endif
 
-TEST_CASE("correctly rounded: the support test excludes a vertex only beyond both bounds", "[correct]")
+TEST_CASE("correctly rounded: the support test excludes a vertex only beyond both bounds",
+          "[correct]")
 {
-    // featuresAttainSupport: vertex i is certainly above the feature f when v_i - eps_i > v_f + eps_f.
-    // Feature (0, 0): v_f = 0, eps_f = 2^-1000 (the underflow term). Identity transform, n = (1, 0):
-    // v_i = x exactly, eps_i = 8u (1 + 2^-40) |x| + 2^-1000.
+    // featuresAttainSupport: vertex i is certainly above the feature f when v_i - eps_i > v_f +
+    // eps_f. Feature (0, 0): v_f = 0, eps_f = 2^-1000 (the underflow term). Identity transform, n =
+    // (1, 0): v_i = x exactly, eps_i = 8u (1 + 2^-40) |x| + 2^-1000.
     const gjk::Transform<double> identity{};
     const gjk::correct::ApproxVec n = {{1, 0, 0}, {0, 0, 0}};
     auto attains = [&](double x)
@@ -263,9 +279,11 @@ TEST_CASE("correctly rounded: exact ties round to even without the exact side", 
     // A point translated by 2^-53 or 3 2^-53 lies exactly at 1 + 2^-53 (a tie between 1 and
     // 1 + 2^-52: the even one is 1) or 1 + 3 2^-53 (between 1 + 2^-52 and 1 + 2^-51: the even one
     // is 1 + 2^-51), from a vertex and from an edge. No bound can decide a tie; the expansions do.
-    const std::vector<gjk::Vec2<double>> origin = {{0, 0}}, edge = {{-1, 0}, {1, 0}}, point = {{0, 1}};
+    const std::vector<gjk::Vec2<double>> origin = {{0, 0}}, edge = {{-1, 0}, {1, 0}},
+                                         point = {{0, 1}};
     for (const auto* a : {&origin, &edge})
-        for (const auto& [offset, expected] : {std::pair{0x1p-53, 1.0}, std::pair{3 * 0x1p-53, 1 + 0x1p-51}})
+        for (const auto& [offset, expected] :
+             {std::pair{0x1p-53, 1.0}, std::pair{3 * 0x1p-53, 1 + 0x1p-51}})
         {
             gjk::DistanceInput<double> in = inputOf(*a, point);
             in.transformB.p = {0, offset};
@@ -273,8 +291,9 @@ TEST_CASE("correctly rounded: exact ties round to even without the exact side", 
             INFO("from " << (a == &origin ? "a vertex" : "an edge") << ", offset " << offset);
             CHECK(out.path == gjk::CorrectPath::DoubleDouble);
             CHECK(sameBits(out.distance, expected));
-            const exact::Result truth = exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
-                                                        exact::shapeOf(in.proxyB, in.transformB, true));
+            const exact::Result truth =
+                exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
+                                exact::shapeOf(in.proxyB, in.transformB, true));
             CHECK(sameBits(out.distance, truth.distance));
         }
 }

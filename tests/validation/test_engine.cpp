@@ -1,12 +1,12 @@
-// The engine families (validation/src/inputs/engine.cpp): queries recorded from Box2D 2.4.1 worlds. They
-// are deterministic, the TOI families hold b2TimeOfImpact's own b2Distance calls (interposed:
+// The engine families (validation/src/inputs/engine.cpp): queries recorded from Box2D 2.4.1 worlds.
+// They are deterministic, the TOI families hold b2TimeOfImpact's own b2Distance calls (interposed:
 // useRadii = false, so radius 0), every case keeps the engine's float rotation (not a unit vector
 // in double) and is valid case-file input, and every family's make-up checks hold.
 #include "campaign/campaign.hpp"
 #include "campaign_support.hpp"
+#include "evaluate/variants.hpp"
 #include "inputs/engine.hpp"
 #include "inputs/families.hpp"
-#include "evaluate/variants.hpp"
 
 #include <catch2/catch.hpp>
 

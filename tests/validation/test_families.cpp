@@ -138,7 +138,8 @@ TEST_CASE("a make-up check fails on cases that do not have that make-up", "[fami
             CHECK(m.ok);
             ++skipped;
         }
-    CHECK(skipped == 2); // the two fractions of randomMakeup(); its three every-case checks are judged
+    CHECK(skipped ==
+          2); // the two fractions of randomMakeup(); its three every-case checks are judged
 }
 
 // --- The numerical-stability sub-families (scale and offset sweeps, short contact edges, near
@@ -434,9 +435,10 @@ TEST_CASE("range and scale: out-of-range inputs are rescaled and judged within t
     const CampaignConfig config = untimedConfig({"hard/range", "hard/extreme-scale"});
     const Campaign camp = runCampaign(config, campaignInputs(config));
     // Float variants see coordinates 1e19..1e30 and 1e-20..1e-30 (hard/range) and 1e-300..1e300
-    // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before the rescaled retry they
-    // were flagged outOfRange and not judged (hard/range: >= 40 per float variant); since then the
-    // query rescales itself by a power of two, and none may stay flagged or fail.
+    // where they fit in float (hard/extreme-scale); double ones 1e+-160 and 1e+-300. Before the
+    // rescaled retry they were flagged outOfRange and not judged (hard/range: >= 40 per float
+    // variant); since then the query rescales itself by a power of two, and none may stay flagged
+    // or fail.
     REQUIRE(camp.report["families"].size() == 2);
     for (const Json& fam : camp.report["families"])
     {

@@ -62,7 +62,8 @@ TEST_CASE("the error bound, term by term, as docs/error-bound.md writes it", "[j
 {
     // u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)) + sub_T, plus 16 u W for
     // duality-gap stopping. One metric at 1, the others 0: the bound is coefficient * u (u a power
-    // of two, so coefficient * u is exact; the subnormal is far below its last bit and rounds away).
+    // of two, so coefficient * u is exact; the subnormal is far below its last bit and rounds
+    // away).
     struct Term
     {
         const char* name;
@@ -70,14 +71,11 @@ TEST_CASE("the error bound, term by term, as docs/error-bound.md writes it", "[j
         double coefficient;
         double dualityGapExtra; // what DualityGap stopping adds for this metric
     };
-    const Term terms[] = {{"A", &CaseMetrics::maxA, 4, 0},
-                          {"B", &CaseMetrics::maxB, 43, 0},
-                          {"D", &CaseMetrics::translation, 10.2, 0},
-                          {"B~", &CaseMetrics::maxBMapped, 1.5, 0},
-                          {"W", &CaseMetrics::maxW, 5, 16},
-                          {"d", &CaseMetrics::exactDistance, 6.5, 0},
-                          {"rA", &CaseMetrics::radiusA, 3.5, 0},
-                          {"rB", &CaseMetrics::radiusB, 3.5, 0}};
+    const Term terms[] = {
+        {"A", &CaseMetrics::maxA, 4, 0},           {"B", &CaseMetrics::maxB, 43, 0},
+        {"D", &CaseMetrics::translation, 10.2, 0}, {"B~", &CaseMetrics::maxBMapped, 1.5, 0},
+        {"W", &CaseMetrics::maxW, 5, 16},          {"d", &CaseMetrics::exactDistance, 6.5, 0},
+        {"rA", &CaseMetrics::radiusA, 3.5, 0},     {"rB", &CaseMetrics::radiusB, 3.5, 0}};
     for (const char* name : {"double", "float", "double-duality-gap"})
     {
         const VariantInfo& v = *findVariant(name);
@@ -88,7 +86,8 @@ TEST_CASE("the error bound, term by term, as docs/error-bound.md writes it", "[j
             CaseMetrics m;
             m.unitRoundoff = u;
             m.*t.metric = 1;
-            const double extra = v.options.stopping == gjk::StoppingRule::DualityGap ? t.dualityGapExtra : 0;
+            const double extra =
+                v.options.stopping == gjk::StoppingRule::DualityGap ? t.dualityGapExtra : 0;
             CHECK(errorBound(v, m) == (t.coefficient + extra) * u);
         }
         // Every metric 0: only the type's smallest subnormal, the answer's own resolution.
@@ -115,8 +114,8 @@ TEST_CASE("an error of exactly the bound is within it: undecidable, not a failur
 {
     // Two coincident points: GJK answers 0 and every metric of the bound is 0, so the bound is the
     // smallest subnormal alone (u * 6.5 d underflows to 0 for d = 2^-1074). A truth of 2^-1074
-    // makes the error exactly the bound: within it ("<=", docs/error-bound.md), so the false overlap
-    // is undecidable, not a failure. One subnormal more and it is a failed false overlap.
+    // makes the error exactly the bound: within it ("<=", docs/error-bound.md), so the false
+    // overlap is undecidable, not a failure. One subnormal more and it is a failed false overlap.
     const VariantInfo* dbl = findVariant("double");
     const Case c = points(0, 0);
 
@@ -300,7 +299,8 @@ TEST_CASE("the witness gap: ||pB - pA|| against d, within the witness bound or i
     CHECK(answer(-1, {0, 0}, {5, 0}, truthOf(1, 1)).invalid == Invalid::NegativeDistance);
 }
 
-TEST_CASE("a witness point off its shape beyond the witness bound is invalid", "[judgement][invalid]")
+TEST_CASE("a witness point off its shape beyond the witness bound is invalid",
+          "[judgement][invalid]")
 {
     // A the point (0, 0), B the point (3, 0), the exact answer 3 with witnesses on the points.
     // A's witness moved up by 0.25 (the witness bound, 2^-2) is on the bound: valid; by 0.5:
@@ -342,9 +342,9 @@ TEST_CASE("the witness bound, term by term, as docs/error-bound.md writes it", "
         double CaseMetrics::*metric;
         double coefficient;
     };
-    const Term terms[] = {{&CaseMetrics::maxA, 15},         {&CaseMetrics::maxB, 15},
-                          {&CaseMetrics::translation, 10.2}, {&CaseMetrics::maxBMapped, 16.5},
-                          {&CaseMetrics::worldExtent, 12},   {&CaseMetrics::maxW, 26.5},
+    const Term terms[] = {{&CaseMetrics::maxA, 15},           {&CaseMetrics::maxB, 15},
+                          {&CaseMetrics::translation, 10.2},  {&CaseMetrics::maxBMapped, 16.5},
+                          {&CaseMetrics::worldExtent, 12},    {&CaseMetrics::maxW, 26.5},
                           {&CaseMetrics::exactDistance, 9.5}, {&CaseMetrics::radiusA, 18.5},
                           {&CaseMetrics::radiusB, 18.5}};
     for (const Term& t : terms)
@@ -369,7 +369,8 @@ TEST_CASE("containment witness points stay in both shapes on flat and needle tri
     // poly, in float). With Cramer's rule on plain cross products A's witness lay 2.7e-7 (8e6
     // times the witness bound) and, in float, ~300 times the bound outside B; with accurateCross
     // both are within the bound.
-    auto shape = [](std::vector<std::array<double, 2>> pts, double px, double py, double c, double s)
+    auto shape =
+        [](std::vector<std::array<double, 2>> pts, double px, double py, double c, double s)
     {
         ShapeIn sh;
         sh.points = std::move(pts);
@@ -381,55 +382,53 @@ TEST_CASE("containment witness points stay in both shapes on flat and needle tri
     };
     Case flat;
     flat.name = "search/72252";
-    flat.a = shape({{0.8686044812202454, 0.08791938424110413}, {-0.6163510084152222, 0.6183162331581116},
-                    {-0.6937233642904539, 0.5201058034695785}, {-0.7454050183296204, 0.45450514554977417},
-                    {-0.6388614177703857, -0.5950291156768799}, {-0.4588640332221985, -0.742729663848877},
-                    {0.06453361362218857, -0.8706543445587158}, {0.5129231810569763, -0.706479549407959},
+    flat.a = shape({{0.8686044812202454, 0.08791938424110413},
+                    {-0.6163510084152222, 0.6183162331581116},
+                    {-0.6937233642904539, 0.5201058034695785},
+                    {-0.7454050183296204, 0.45450514554977417},
+                    {-0.6388614177703857, -0.5950291156768799},
+                    {-0.4588640332221985, -0.742729663848877},
+                    {0.06453361362218857, -0.8706543445587158},
+                    {0.5129231810569763, -0.706479549407959},
                     {0.6879420876502991, -0.5375306606292725}},
                    5.586376190185547, -10.841957092285156, 0.9393212795257568, -0.3430386185646057);
-    flat.b = shape({{0.6617704033851624, 0.11496075242757797}, {-0.4936705231666565, 0.45546185970306396},
-                    {-0.6408209800720215, 0.20125748217105865}, {-0.5082963109016418, -0.4390796422958374},
-                    {-0.07896000891923904, -0.6670242547988892}, {0.477524995803833, -0.47236210107803345},
+    flat.b = shape({{0.6617704033851624, 0.11496075242757797},
+                    {-0.4936705231666565, 0.45546185970306396},
+                    {-0.6408209800720215, 0.20125748217105865},
+                    {-0.5082963109016418, -0.4390796422958374},
+                    {-0.07896000891923904, -0.6670242547988892},
+                    {0.477524995803833, -0.47236210107803345},
                     {0.6538886427879333, -0.15357643365859985}},
                    4.635489471885757, -9.63930208207774, -0.9983991384506226, 0.056560784578323364);
     Case needle;
     needle.name = "search/108683";
-    needle.a = shape({{274.2227783203125, 405.9635009765625}, {274.2227783203125, 405.9635009765625},
-                      {274.2227783203125, 405.9635009765625},
-                      {274.2227783203125, 405.9635009765625},
-                      {274.2227783203125, 405.9635009765625},
-                      {384.21697998046875, -302.19866943359375},
-                      {382.44244384765625, -304.2544250488281},
-                      {343.87408447265625, -348.9342041015625},
-                      {377.13580322265625, -305.16033935546875},
-                      {377.25823974609375, -304.9992370605469},
-                      {378.3247375488281, -303.5958557128906},
-                      {379.21417236328125, -302.425537109375},
-                      {366.6611022949219, -324.6916198730469},
-                      {366.6611022949219, -324.6916198730469},
-                      {384.21697998046875, -302.19866943359375},
-                      {398.2632751464844, -284.20562744140625},
-                      {405.3813171386719, -275.0823059082031},
-                      {274.2227783203125, 405.9635009765625},
-                      {414.7442321777344, -255.66603088378906},
-                      {405.3813171386719, -275.0823059082031},
-                      {467.17877197265625, -146.93026733398438},
-                      {377.13580322265625, -305.16033935546875},
-                      {459.7385559082031, -125.50267791748047},
-                      {274.2227783203125, 405.9635009765625}},
-                     -64.09922790527344, -655.9564819335938, 0.3758563697338104, -0.926677942276001);
-    needle.b = shape({{-281.18194580078125, -7.342854132730281e-06},
-                      {-120.78231048583984, -0.08126325905323029},
-                      {281.18206787109375, -0.28117579221725464},
-                      {281.18206787109375, -0.256115585565567},
-                      {281.18206787109375, -0.256115585565567},
-                      {281.18206787109375, -0.24581149220466614},
-                      {281.1817932128906, 0.17696113884449005},
-                      {281.181884765625, 0.2617097496986389},
-                      {281.1817626953125, 0.28330761194229126},
-                      {281.1817626953125, 0.28330761194229126},
-                      {281.1817626953125, 0.28330761194229126}},
-                     -223.92135620117188, -1031.0787353515625, 0.41824260354042053, 0.9083353281021118);
+    needle.a =
+        shape({{274.2227783203125, 405.9635009765625},    {274.2227783203125, 405.9635009765625},
+               {274.2227783203125, 405.9635009765625},    {274.2227783203125, 405.9635009765625},
+               {274.2227783203125, 405.9635009765625},    {384.21697998046875, -302.19866943359375},
+               {382.44244384765625, -304.2544250488281},  {343.87408447265625, -348.9342041015625},
+               {377.13580322265625, -305.16033935546875}, {377.25823974609375, -304.9992370605469},
+               {378.3247375488281, -303.5958557128906},   {379.21417236328125, -302.425537109375},
+               {366.6611022949219, -324.6916198730469},   {366.6611022949219, -324.6916198730469},
+               {384.21697998046875, -302.19866943359375}, {398.2632751464844, -284.20562744140625},
+               {405.3813171386719, -275.0823059082031},   {274.2227783203125, 405.9635009765625},
+               {414.7442321777344, -255.66603088378906},  {405.3813171386719, -275.0823059082031},
+               {467.17877197265625, -146.93026733398438}, {377.13580322265625, -305.16033935546875},
+               {459.7385559082031, -125.50267791748047},  {274.2227783203125, 405.9635009765625}},
+              -64.09922790527344, -655.9564819335938, 0.3758563697338104, -0.926677942276001);
+    needle.b =
+        shape({{-281.18194580078125, -7.342854132730281e-06},
+               {-120.78231048583984, -0.08126325905323029},
+               {281.18206787109375, -0.28117579221725464},
+               {281.18206787109375, -0.256115585565567},
+               {281.18206787109375, -0.256115585565567},
+               {281.18206787109375, -0.24581149220466614},
+               {281.1817932128906, 0.17696113884449005},
+               {281.181884765625, 0.2617097496986389},
+               {281.1817626953125, 0.28330761194229126},
+               {281.1817626953125, 0.28330761194229126},
+               {281.1817626953125, 0.28330761194229126}},
+              -223.92135620117188, -1031.0787353515625, 0.41824260354042053, 0.9083353281021118);
     for (const Case* c : {&flat, &needle})
         for (const char* name : {"double", "float", "double-batch", "float-batch"})
         {

@@ -124,7 +124,8 @@ TEST_CASE("zero failures give the 3/N upper bound on the failure rate", "[stats]
 {
     Stats s;
     s.cases = 20000;
-    CHECK(s.toJson()["failure_rate_upper95"] == 1.5e-4); // 3.0 / 20000, rounded once like the literal
+    CHECK(s.toJson()["failure_rate_upper95"] ==
+          1.5e-4); // 3.0 / 20000, rounded once like the literal
     CHECK(s.toJson()["pass"] == true);
 }
 
@@ -134,11 +135,24 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
     // (or dropped) shows: the merged value is the sum of that field alone.
     auto counters = [](Stats& s) -> std::vector<std::uint64_t*>
     {
-        return {&s.cases,        &s.failures,   &s.falseOverlap, &s.falseSeparation,
-                &s.undecidable,  &s.nonfinite,  &s.outOfRange,   &s.iterationLimit,
-                &s.beyondBound,  &s.skipped,    &s.notApplicable, &s.certified,
-                &s.contains,     &s.uncertified, &s.invalid,
-                &s.invalidReasons[0], &s.invalidReasons[1], &s.invalidReasons[2]};
+        return {&s.cases,
+                &s.failures,
+                &s.falseOverlap,
+                &s.falseSeparation,
+                &s.undecidable,
+                &s.nonfinite,
+                &s.outOfRange,
+                &s.iterationLimit,
+                &s.beyondBound,
+                &s.skipped,
+                &s.notApplicable,
+                &s.certified,
+                &s.contains,
+                &s.uncertified,
+                &s.invalid,
+                &s.invalidReasons[0],
+                &s.invalidReasons[1],
+                &s.invalidReasons[2]};
     };
     Stats a, b;
     const auto ca = counters(a), cb = counters(b);
@@ -283,9 +297,9 @@ TEST_CASE("every row of the Stats tables merges, survives the state and reaches 
     for (const CountField& f : kCountFields)
     {
         INFO(f.name);
-        const Json& at = f.section == Section::Interval ? j["interval"]
+        const Json& at = f.section == Section::Interval  ? j["interval"]
                          : f.section == Section::Correct ? j["correct"]
-                                                          : j;
+                                                         : j;
         CHECK(at[f.name] == 101 * k++);
     }
     for (const PathField& f : kPathFields)
@@ -315,13 +329,34 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
         interval.push_back(key);
     for (const auto& [key, _] : j["correct"].items())
         correct.push_back(key);
-    CHECK(keys == std::vector<std::string>{
-                      "cases", "failures", "pass", "false_overlap", "false_separation",
-                      "undecidable", "nonfinite", "out_of_range", "iteration_limit",
-                      "beyond_bound", "invalid", "invalid_reasons", "skipped", "not_applicable",
-                      "refused", "plugin_errors", "crashed", "hung", "failure_rate_upper95",
-                      "errors", "iterations", "interval", "correct", "stops", "ns_per_query",
-                      "ns_spread", "timing_passes", "ratio_to_baseline"});
+    CHECK(keys == std::vector<std::string>{"cases",
+                                           "failures",
+                                           "pass",
+                                           "false_overlap",
+                                           "false_separation",
+                                           "undecidable",
+                                           "nonfinite",
+                                           "out_of_range",
+                                           "iteration_limit",
+                                           "beyond_bound",
+                                           "invalid",
+                                           "invalid_reasons",
+                                           "skipped",
+                                           "not_applicable",
+                                           "refused",
+                                           "plugin_errors",
+                                           "crashed",
+                                           "hung",
+                                           "failure_rate_upper95",
+                                           "errors",
+                                           "iterations",
+                                           "interval",
+                                           "correct",
+                                           "stops",
+                                           "ns_per_query",
+                                           "ns_spread",
+                                           "timing_passes",
+                                           "ratio_to_baseline"});
     CHECK(errors == std::vector<std::string>{"abs", "rel", "ulps", "normalized", "bound_ratio",
                                              "witness", "witness_gap", "witness_ratio",
                                              "input_rounding"});
@@ -345,14 +380,41 @@ TEST_CASE("the shard state's keys keep their order", "[stats]")
     std::vector<std::string> keys;
     for (const auto& [key, _] : state.items())
         keys.push_back(key);
-    CHECK(keys == std::vector<std::string>{
-                      "cases", "failures", "false_overlap", "false_separation", "undecidable",
-                      "nonfinite", "out_of_range", "iteration_limit", "beyond_bound", "skipped",
-                      "not_applicable", "refused", "plugin_errors", "crashed", "hung",
-                      "certified", "contains", "uncertified", "has_interval",
-                      "has_input_rounding", "width_ulps", "abs", "rel", "ulps", "normalized",
-                      "bound_ratio", "witness", "witness_gap", "input_rounding", "iterations",
-                      "stops", "invalid", "invalid_reasons", "witness_ratio", "correct_paths"});
+    CHECK(keys == std::vector<std::string>{"cases",
+                                           "failures",
+                                           "false_overlap",
+                                           "false_separation",
+                                           "undecidable",
+                                           "nonfinite",
+                                           "out_of_range",
+                                           "iteration_limit",
+                                           "beyond_bound",
+                                           "skipped",
+                                           "not_applicable",
+                                           "refused",
+                                           "plugin_errors",
+                                           "crashed",
+                                           "hung",
+                                           "certified",
+                                           "contains",
+                                           "uncertified",
+                                           "has_interval",
+                                           "has_input_rounding",
+                                           "width_ulps",
+                                           "abs",
+                                           "rel",
+                                           "ulps",
+                                           "normalized",
+                                           "bound_ratio",
+                                           "witness",
+                                           "witness_gap",
+                                           "input_rounding",
+                                           "iterations",
+                                           "stops",
+                                           "invalid",
+                                           "invalid_reasons",
+                                           "witness_ratio",
+                                           "correct_paths"});
     s.pathDouble = 1;
     s.pathDoubleDouble = 2;
     s.pathExact = 3;

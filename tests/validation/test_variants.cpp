@@ -1,8 +1,8 @@
 // The variant table (judged and comparison variants, binary-search support, warm start), the
 // convex-order precondition, a reduced campaign over every variant, and `bench`.
-#include "timing/bench.hpp"
 #include "campaign/campaign.hpp"
 #include "inputs/geometry.hpp"
+#include "timing/bench.hpp"
 
 #ifdef GJK2D_HAVE_HTML
 #include <gjk_html/html.hpp>
@@ -264,8 +264,10 @@ TEST_CASE("bench: the variants' passes alternate", "[variants][bench]")
     tc.minPasses = tc.maxPasses = 3;
     tc.budgetSeconds = 1e9;
     tc.minPassSeconds = 1e-9; // one rep per pass
-    const std::vector<TimingResult> r = medianOfAlternatedPasses({loop('a', 10, 4), loop('b', 25, 2)}, tc);
-    CHECK(std::string(order.begin(), order.end()) == "ababab" "ab"); // calibration, then 3 rounds
+    const std::vector<TimingResult> r =
+        medianOfAlternatedPasses({loop('a', 10, 4), loop('b', 25, 2)}, tc);
+    CHECK(std::string(order.begin(), order.end()) == "ababab"
+                                                     "ab"); // calibration, then 3 rounds
     REQUIRE(r.size() == 2);
     CHECK(r[0].nsPerQuery == 10.0);
     CHECK(r[1].nsPerQuery == 25.0);
@@ -349,11 +351,12 @@ TEST_CASE("every variant of the table has its own colour on the report page", "[
 }
 #endif
 
-TEST_CASE("docs list every variant of the table once, with its type and judged flag", "[variants][docs]")
+TEST_CASE("docs list every variant of the table once, with its type and judged flag",
+          "[variants][docs]")
 {
-    // docs/validation.md, "Variants", lists the table by hand: `| names | type | judged | options |`,
-    // a row naming one variant or a double/float pair (type "both"). A variant added to the table,
-    // renamed or made a comparison one without the docs following fails here.
+    // docs/validation.md, "Variants", lists the table by hand: `| names | type | judged | options
+    // |`, a row naming one variant or a double/float pair (type "both"). A variant added to the
+    // table, renamed or made a comparison one without the docs following fails here.
     std::ifstream in(std::filesystem::path(GJK2D_SOURCE_DIR) / "docs" / "validation.md");
     REQUIRE(in);
     std::string line;

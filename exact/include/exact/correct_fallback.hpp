@@ -20,7 +20,8 @@ namespace exact
 {
 
 // The exact side's shape of a gjk shape and its transform (values converted exactly to double).
-template <class T> Shape shapeOf(const gjk::Polygon<T>& p, const gjk::Transform<T>& xf, bool useRadius)
+template <class T>
+Shape shapeOf(const gjk::Polygon<T>& p, const gjk::Transform<T>& xf, bool useRadius)
 {
     Shape s;
     s.points.reserve(std::size_t(p.count));
@@ -34,8 +35,8 @@ template <class T> Shape shapeOf(const gjk::Polygon<T>& p, const gjk::Transform<
     return s;
 }
 
-inline void completeCorrectlyRounded(const gjk::DistanceInput<double>& in, const gjk::Options& options,
-                                     gjk::DistanceOutput<double>& out)
+inline void completeCorrectlyRounded(const gjk::DistanceInput<double>& in,
+                                     const gjk::Options& options, gjk::DistanceOutput<double>& out)
 {
     if (out.path != gjk::CorrectPath::NeedsExact)
         return;

@@ -10,25 +10,35 @@
 #include <string>
 #include <vector>
 
-namespace exact {
+namespace exact
+{
 
-struct Point {
+struct Point
+{
     double x = 0, y = 0;
 };
 
-struct Shape {
-    std::vector<Point> points;  // any order, duplicates/collinear/interior points allowed; count >= 1
-    double radius = 0;          // >= 0
-    double px = 0, py = 0;      // translation
-    double c = 1, s = 0;        // rotation as the two doubles (cos, sin) the float side used, applied
-                                // exactly: x' = c*x - s*y + px, y' = s*x + c*y + py
-                                // (c, s need NOT satisfy c^2 + s^2 = 1 exactly)
+struct Shape
+{
+    std::vector<Point>
+        points;            // any order, duplicates/collinear/interior points allowed; count >= 1
+    double radius = 0;     // >= 0
+    double px = 0, py = 0; // translation
+    double c = 1, s = 0;   // rotation as the two doubles (cos, sin) the float side used, applied
+                           // exactly: x' = c*x - s*y + px, y' = s*x + c*y + py
+                           // (c, s need NOT satisfy c^2 + s^2 = 1 exactly)
 };
 
 // Three independent constructions of the Minkowski difference Z = hull(A) - hull(B) (the library's
 // Z = A - B); all give the same exact results (the tests check this with == on exact rationals).
 // Default is the fastest.
-enum class Route { HullOfDifferences, MinkowskiSum2, EdgeMerge, Default = EdgeMerge };
+enum class Route
+{
+    HullOfDifferences,
+    MinkowskiSum2,
+    EdgeMerge,
+    Default = EdgeMerge
+};
 
 // "hull-of-differences", "minkowski-sum-2", "edge-merge".
 const char* routeName(Route);
@@ -38,33 +48,42 @@ bool parseRoute(const std::string& name, Route& out);
 inline constexpr std::array<Route, 3> kAllRoutes = {Route::HullOfDifferences, Route::MinkowskiSum2,
                                                     Route::EdgeMerge};
 
-// An exact rational as decimal strings: "num/den" in lowest terms with den > 1, or the integer "num".
-struct ExactPoint {
+// An exact rational as decimal strings: "num/den" in lowest terms with den > 1, or the integer
+// "num".
+struct ExactPoint
+{
     std::string x, y;
 };
 
-struct Result {
-    bool overlap = false;                // exact: origin inside or on boundary of hull(A) - hull(B) (before radii)
-    std::string squaredNum, squaredDen;  // exact squared distance between the hulls (before radii), lowest terms, den > 0
-    double squared = 0;                  // that rational rounded to nearest double (may be +inf above DBL_MAX)
-    double distance = 0;                 // correctly rounded (to nearest) max(0, sqrt(squared) - rA - rB)
-    double lower = 0, upper = 0;         // enclosing doubles of that exact value, lower <= distance <= upper
-                                         // (finite unless the exact value exceeds DBL_MAX, then upper = +inf)
-    Point witnessA, witnessB;            // closest points, world frame, each coordinate correctly rounded to nearest.
-                                         // With radii: moved by the radius along the unit direction from the hull point
-                                         // of A to that of B (A forward by rA, B backward by rB). When the hulls touch
-                                         // or overlap (squared == 0): the hull points themselves, which then coincide:
-                                         // one common point of both hulls (see docs/exact.md for which one).
+struct Result
+{
+    bool overlap = false; // exact: origin inside or on boundary of hull(A) - hull(B) (before radii)
+    std::string squaredNum, squaredDen; // exact squared distance between the hulls (before radii),
+                                        // lowest terms, den > 0
+    double squared = 0;  // that rational rounded to nearest double (may be +inf above DBL_MAX)
+    double distance = 0; // correctly rounded (to nearest) max(0, sqrt(squared) - rA - rB)
+    double lower = 0,
+           upper = 0; // enclosing doubles of that exact value, lower <= distance <= upper
+                      // (finite unless the exact value exceeds DBL_MAX, then upper = +inf)
+    Point witnessA,
+        witnessB; // closest points, world frame, each coordinate correctly rounded to nearest.
+                  // With radii: moved by the radius along the unit direction from the hull point
+                  // of A to that of B (A forward by rA, B backward by rB). When the hulls touch
+                  // or overlap (squared == 0): the hull points themselves, which then coincide:
+                  // one common point of both hulls (see docs/exact.md for which one).
     bool hasExactWitnesses = false;
-    ExactPoint exactWitnessA, exactWitnessB;  // the hull (radius-free) closest points, exact, only when requested
+    ExactPoint exactWitnessA,
+        exactWitnessB; // the hull (radius-free) closest points, exact, only when requested
 };
 
-struct Options {
+struct Options
+{
     Route route = Route::Default;
     bool exactWitnesses = false;
 };
 
-// Throws std::invalid_argument for invalid input (no points, NaN or infinite values, negative radius).
+// Throws std::invalid_argument for invalid input (no points, NaN or infinite values, negative
+// radius).
 Result distance(const Shape& a, const Shape& b, const Options& options = {});
 
 // max(0, dist(p, hull(shape)) - shape.radius), correctly rounded to nearest double; p is in the
@@ -74,10 +93,12 @@ double pointToShapeDistance(const Shape& shape, Point p);
 // Independent brute force (plain GMP rationals, no hull construction): exact separating-axis test
 // over every pair direction, then the minimum exact squared point-to-segment distance over all
 // (point, point-pair segment) combinations. Fills overlap, squared*, distance, lower, upper and the
-// witnesses (when separated; the overlap witnesses are left at 0). Cost O((n + m)^3): small inputs only.
+// witnesses (when separated; the overlap witnesses are left at 0). Cost O((n + m)^3): small inputs
+// only.
 Result bruteForce(const Shape& a, const Shape& b);
 
-// Throws std::invalid_argument if the shape is invalid (what distance() checks); `name` prefixes the message.
+// Throws std::invalid_argument if the shape is invalid (what distance() checks); `name` prefixes
+// the message.
 void validateShape(const Shape& shape, const char* name = "shape");
 
-}  // namespace exact
+} // namespace exact

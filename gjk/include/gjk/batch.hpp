@@ -34,11 +34,16 @@ constexpr const char* batchIsaName(BatchIsa isa)
 {
     switch (isa)
     {
-    case BatchIsa::Scalar: return "scalar";
-    case BatchIsa::Sse2: return "sse2";
-    case BatchIsa::Avx2: return "avx2";
-    case BatchIsa::Avx512: return "avx512";
-    case BatchIsa::Best: return "best";
+    case BatchIsa::Scalar:
+        return "scalar";
+    case BatchIsa::Sse2:
+        return "sse2";
+    case BatchIsa::Avx2:
+        return "avx2";
+    case BatchIsa::Avx512:
+        return "avx512";
+    case BatchIsa::Best:
+        return "best";
     }
     return "?";
 }
@@ -66,10 +71,12 @@ struct BatchStats
 // pass each pair's cache from the previous step). The spans must have equal sizes. `isa`: Best, or
 // one this CPU runs (else the next narrower one that it runs). `stats`: filled when given.
 void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<double>> outputs, const Options& options = referenceOptions,
-                   BatchIsa isa = BatchIsa::Best, BatchStats* stats = nullptr);
+                   std::span<DistanceOutput<double>> outputs,
+                   const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
+                   BatchStats* stats = nullptr);
 void distanceBatch(std::span<const DistanceInput<float>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<float>> outputs, const Options& options = referenceOptions,
-                   BatchIsa isa = BatchIsa::Best, BatchStats* stats = nullptr);
+                   std::span<DistanceOutput<float>> outputs,
+                   const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
+                   BatchStats* stats = nullptr);
 
 } // namespace gjk

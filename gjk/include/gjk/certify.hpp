@@ -47,7 +47,10 @@ struct Bounded
     double e = 0;
 };
 
-inline Bounded exactly(double v) { return {v, 0}; }
+inline Bounded exactly(double v)
+{
+    return {v, 0};
+}
 inline Bounded operator+(Bounded a, Bounded b)
 {
     const double v = a.v + b.v;
@@ -77,12 +80,22 @@ inline Bounded mulExact(double a, double b)
 // and branches (this runs in the query's hot path). Infinities and NaN are returned unchanged.
 inline double up(double x)
 {
-    return std::abs(x) <= std::numeric_limits<double>::max() ? x + (std::abs(x) * 0x1p-52 + eta) : x;
+    return std::abs(x) <= std::numeric_limits<double>::max() ? x + (std::abs(x) * 0x1p-52 + eta)
+                                                             : x;
 }
-inline double down(double x) { return -up(-x); }
+inline double down(double x)
+{
+    return -up(-x);
+}
 // Upper and lower ends of the exact value.
-inline double hi(Bounded a) { return up(a.v + a.e * safety); }
-inline double lo(Bounded a) { return down(a.v - a.e * safety); }
+inline double hi(Bounded a)
+{
+    return up(a.v + a.e * safety);
+}
+inline double lo(Bounded a)
+{
+    return down(a.v - a.e * safety);
+}
 
 struct BoundedVec
 {
@@ -129,7 +142,8 @@ inline double upperNorm(const BoundedVec& p, Bounded w)
 // Upper bound of max_i n . (xf * points[i]) (or, with sign = -1, of -min_i) over a shape:
 // n . (Q x + p) = m . x + n . p with m = Q^T n, so the scan costs two products per vertex; the
 // rounding of m . x is bounded once from the largest |x| + |y| of the shape.
-template <class T> double supportUpper(const Transform<T>& xf, const Vec2<T>* pts, int count, Bounded nx, Bounded ny)
+template <class T>
+double supportUpper(const Transform<T>& xf, const Vec2<T>* pts, int count, Bounded nx, Bounded ny)
 {
     GJK_CERTIFY_ASSERT(nx.e == 0 && ny.e == 0);
     // nx, ny are exact (the computed normal's components), so are c and s.
@@ -196,7 +210,8 @@ template <class T> GJK_INLINE double lowerHullBound(const DistanceInput<T>& in, 
         const Bounded nx = exactly(double(normal.x)), ny = exactly(double(normal.y));
         const Bounded mnx = exactly(-double(normal.x)), mny = exactly(-double(normal.y));
         const double hA = supportUpper(in.transformA, in.proxyA.points, in.proxyA.count, nx, ny);
-        const double hBneg = supportUpper(in.transformB, in.proxyB.points, in.proxyB.count, mnx, mny);
+        const double hBneg =
+            supportUpper(in.transformB, in.proxyB.points, in.proxyB.count, mnx, mny);
         const double gap = down(-hBneg - hA);
         const double nn = up(std::sqrt(up(up(nx.v * nx.v) + up(ny.v * ny.v))));
         if (gap > 0)

@@ -72,7 +72,8 @@ namespace gjk::correct
 {
 
 // The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
-GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf, Vec2<double> v, double sign)
+GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf,
+                                      Vec2<double> v, double sign)
 {
     tx.addProduct(sign * xf.q.c, v.x);
     tx.addProduct(-sign * xf.q.s, v.y);
@@ -82,14 +83,14 @@ GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<doub
     ty.add(sign * xf.p.y);
 }
 
-
 // W = xfA * A[i] - xfB * B[j] from the same ten pieces as the scalar Terms (four exact products,
 // their trailing parts, two translations), both coordinates at once: one VecSum pass over the six
 // leading pieces, the rest (its five errors and the four trailing parts) summed in double. The
 // bound is exactSum's: n 2^-52 sum|rest| with n = 10 (recursive summation of nine values errs by
 // at most 8u sum|rest|, 2^-52 = 2u). False when a guard fails or the rest is not below 2^-40 of
 // the sum in both lanes (heavy cancellation): exactSum's further passes then decide.
-GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int i, int j, ApproxVec& W)
+GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int i, int j,
+                                            ApproxVec& W)
 {
     const Transform<double>&xa = in.transformA, &xb = in.transformB;
     const Vec2<double> a = in.proxyA.points[i], b = in.proxyB.points[j];
@@ -98,15 +99,18 @@ GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int
     const V2 f3 = pair(-xb.q.c, -xb.q.s), g3 = pair(b.x, b.x);
     const V2 f4 = pair(xb.q.s, -xb.q.c), g4 = pair(b.y, b.y);
     const V2 tA = pair(xa.p.x, xa.p.y), tB = pair(-xb.p.x, -xb.p.y);
-    const DD2 p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3), p4 = twoProduct(f4, g4);
-    const M2 exact = exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) & exactProduct(f3, g3, p3.hi) &
-                     exactProduct(f4, g4, p4.hi) & (abs2(tA) <= 0x1p900) & (abs2(tB) <= 0x1p900);
+    const DD2 p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3),
+              p4 = twoProduct(f4, g4);
+    const M2 exact = exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) &
+                     exactProduct(f3, g3, p3.hi) & exactProduct(f4, g4, p4.hi) &
+                     (abs2(tA) <= 0x1p900) & (abs2(tB) <= 0x1p900);
     const DD2 s1 = twoSum(p1.hi, p2.hi);
     const DD2 s2 = twoSum(s1.hi, tA);
     const DD2 s3 = twoSum(s2.hi, p3.hi);
     const DD2 s4 = twoSum(s3.hi, p4.hi);
     const DD2 s5 = twoSum(s4.hi, tB);
-    const V2 rest = (((s1.lo + s2.lo) + (s3.lo + s4.lo)) + (s5.lo + (p1.lo + p2.lo))) + (p3.lo + p4.lo);
+    const V2 rest =
+        (((s1.lo + s2.lo) + (s3.lo + s4.lo)) + (s5.lo + (p1.lo + p2.lo))) + (p3.lo + p4.lo);
     const V2 restAbs = (((abs2(s1.lo) + abs2(s2.lo)) + (abs2(s3.lo) + abs2(s4.lo))) +
                         (abs2(s5.lo) + (abs2(p1.lo) + abs2(p2.lo)))) +
                        (abs2(p3.lo) + abs2(p4.lo));
@@ -119,7 +123,8 @@ GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int
 }
 
 // W = xfA * A[i] - xfB * B[j], a point of Z.
-GJK_CORRECT_INLINE ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i, int j)
+GJK_CORRECT_INLINE ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i,
+                                            int j)
 {
     ApproxVec W;
     if (minkowskiPointLanes(in, i, j, W)) [[likely]]
@@ -131,7 +136,8 @@ GJK_CORRECT_INLINE ApproxVec minkowskiPoint(Context& cx, const DistanceInput<dou
 }
 
 // e = W(i2, j2) - W(i1, j1) from the local differences (the translations cancel exactly).
-GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1, int j1, int i2, int j2)
+GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1,
+                                           int j1, int i2, int j2)
 {
     Terms tx, ty;
     auto side = [&](const Transform<double>& xf, Vec2<double> p2, Vec2<double> p1, double sign)
@@ -155,7 +161,8 @@ GJK_CORRECT_INLINE int signOfDot(const ApproxVec& a, const ApproxVec& b)
     auto term = [](const Approx& p, const Approx& q)
     {
         const double dp = std::abs(p.lo) + p.err, dq = std::abs(q.lo) + q.err;
-        return 3 * 0x1p-53 * std::abs(p.hi * q.hi) + dp * std::abs(q.hi) + dq * std::abs(p.hi) + dp * dq;
+        return 3 * 0x1p-53 * std::abs(p.hi * q.hi) + dp * std::abs(q.hi) + dq * std::abs(p.hi) +
+               dp * dq;
     };
     const double bound = (term(a.x, b.x) + term(a.y, b.y)) * kSafe + 0x1p-1000;
     return g > bound ? 1 : (g < -bound ? -1 : 0);
@@ -169,8 +176,8 @@ GJK_CORRECT_INLINE int signOfDot(const ApproxVec& a, const ApproxVec& b)
 // for underflow. Returns the count (at most kMaxCandidates; more returns kMaxCandidates + 1). The
 // common case does not come here (featuresAttainSupport, above).
 inline constexpr int kMaxCandidates = 4;
-inline int supportCandidates(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
-                             double sign, int* out)
+inline int supportCandidates(const Polygon<double>& p, const Transform<double>& xf,
+                             const ApproxVec& n, double sign, int* out)
 {
     const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
     const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
@@ -192,7 +199,9 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
     const double extent = maxX + maxY; // >= max(|x| + |y|)
     if (!(std::abs(best) <= 0x1p900 && extent <= 0x1p900))
         return kMaxCandidates + 1; // overflow (or NaN): no certified candidates
-    const double eps = 8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent + 0x1p-1000;
+    const double eps =
+        8 * 0x1p-53 * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny)) * extent +
+        0x1p-1000;
     const double limit = best + 2 * eps * kSafe;
     int count = 0;
     for (int i = 0; i < p.count; ++i)
@@ -214,14 +223,16 @@ inline int supportCandidates(const Polygon<double>& p, const Transform<double>& 
 // the minimum: the same conclusion as supportCandidates's candidates all lying in {i1, i2}, for
 // the exact n too (eps covers |n - n.hi| when n's own bound is below kDirectionAccuracy of it:
 // refine's guards, below).
-inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<double>& xf, const ApproxVec& n,
-                                  double sign, int i1, int i2)
+inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<double>& xf,
+                                  const ApproxVec& n, double sign, int i1, int i2)
 {
     const double nx = n.x.hi, ny = n.y.hi, c = xf.q.c, s = xf.q.s;
     const double mx = sign * (c * nx + s * ny), my = sign * (c * ny - s * nx);
-    const double k = 8 * 0x1p-53 * kSafe * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny));
+    const double k =
+        8 * 0x1p-53 * kSafe * (std::abs(c) + std::abs(s)) * std::max(std::abs(nx), std::abs(ny));
     auto value = [&](int i) { return mx * p.points[i].x + my * p.points[i].y; };
-    auto eps = [&](int i) { return k * (std::abs(p.points[i].x) + std::abs(p.points[i].y)) + 0x1p-1000; };
+    auto eps = [&](int i)
+    { return k * (std::abs(p.points[i].x) + std::abs(p.points[i].y)) + 0x1p-1000; };
     const double limit = std::min(value(i1) + eps(i1), value(i2) + eps(i2));
     if (!(std::abs(limit) <= 0x1p900))
         return false; // overflow (or NaN)
@@ -237,12 +248,15 @@ inline bool featuresAttainSupport(const Polygon<double>& p, const Transform<doub
 // A plus the same of B (computed: at most five roundings low, which 5u against gamma_4's 4.0001u
 // covers), plus 2^-1068 for four products that may underflow. An orientation
 // o = Wi.x Wj.y - Wi.y Wj.x then errs by at most
-//   ex_i |Wj.y| + ey_j |Wi.x| + ex_i ey_j + ey_i |Wj.x| + ex_j |Wi.y| + ey_i ex_j    (the inputs' error)
-//   + 2u (1 + u) (|Wi.x Wj.y| + |Wi.y Wj.x|)                                       (o's own roundings)
+//   ex_i |Wj.y| + ey_j |Wi.x| + ex_i ey_j + ey_i |Wj.x| + ex_j |Wi.y| + ey_i ex_j    (the inputs'
+//   error)
+//   + 2u (1 + u) (|Wi.x Wj.y| + |Wi.y Wj.x|)                                       (o's own
+//   roundings)
 // taken with the safety factor and 2^-1000 for underflow. True: the three signs agree for certain
 // (the origin is strictly inside); false: not decided here (containsOriginCertified's running
 // bound, tighter, then tries).
-GJK_CORRECT_INLINE bool containsOriginFiltered(const DistanceInput<double>& in, const SimplexCache& cache)
+GJK_CORRECT_INLINE bool containsOriginFiltered(const DistanceInput<double>& in,
+                                               const SimplexCache& cache)
 {
     const Transform<double>&xa = in.transformA, &xb = in.transformB;
     const V2 ca = pair(xa.q.c, xa.q.s), sa = pair(-xa.q.s, xa.q.c), ta = pair(xa.p.x, xa.p.y);
@@ -250,7 +264,8 @@ GJK_CORRECT_INLINE bool containsOriginFiltered(const DistanceInput<double>& in, 
     V2 W[3], E[3];
     for (int k = 0; k < 3; ++k)
     {
-        const Vec2<double> a = in.proxyA.points[cache.indexA[k]], b = in.proxyB.points[cache.indexB[k]];
+        const Vec2<double> a = in.proxyA.points[cache.indexA[k]],
+                           b = in.proxyB.points[cache.indexB[k]];
         const V2 ax = pair(a.x, a.x), ay = pair(a.y, a.y), bx = pair(b.x, b.x), by = pair(b.y, b.y);
         const V2 pa1 = ca * ax, pa2 = sa * ay, pb1 = cb * bx, pb2 = sb * by;
         W[k] = ((pa1 + pa2) + ta) - ((pb1 + pb2) + tb);
@@ -263,11 +278,12 @@ GJK_CORRECT_INLINE bool containsOriginFiltered(const DistanceInput<double>& in, 
         const int l = (k + 1) % 3;
         const double p = W[k][0] * W[l][1], q = W[k][1] * W[l][0];
         const double o = p - q;
-        const double bound = (E[k][0] * std::abs(W[l][1]) + E[l][1] * std::abs(W[k][0]) + E[k][0] * E[l][1] +
-                              E[k][1] * std::abs(W[l][0]) + E[l][0] * std::abs(W[k][1]) + E[k][1] * E[l][0] +
-                              2 * 0x1p-53 * (1 + 0x1p-53) * (std::abs(p) + std::abs(q))) *
-                                 kSafe +
-                             0x1p-1000;
+        const double bound =
+            (E[k][0] * std::abs(W[l][1]) + E[l][1] * std::abs(W[k][0]) + E[k][0] * E[l][1] +
+             E[k][1] * std::abs(W[l][0]) + E[l][0] * std::abs(W[k][1]) + E[k][1] * E[l][0] +
+             2 * 0x1p-53 * (1 + 0x1p-53) * (std::abs(p) + std::abs(q))) *
+                kSafe +
+            0x1p-1000;
         positive += o > bound;
         negative += o < -bound;
     }
@@ -334,10 +350,10 @@ GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
 // exact side. Vertex: U*^2 = |W1|^2; edge: U* = |C| / |e| with C = cross(e, W1), compared as
 // C^2 against T'^2 |e|^2 (T' = T + rA + rB > 0).
 
-
 // The exact point W(i, j) of Z, both coordinates: the exact pieces of Terms (addWorldPoint), summed
 // into expansions.
-inline void exactPoint(Context& cx, const DistanceInput<double>& in, int i, int j, Expansion& x, Expansion& y)
+inline void exactPoint(Context& cx, const DistanceInput<double>& in, int i, int j, Expansion& x,
+                       Expansion& y)
 {
     Terms tx, ty;
     addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
@@ -356,8 +372,8 @@ inline void exactPoint(Context& cx, const DistanceInput<double>& in, int i, int 
 // sign(U* - (tHi + tLo + rA + rB)), U* the exact distance from the origin to the feature (the
 // vertex W(a1, b1), or the edge's line through W(a1, b1) and W(a2, b2)), for a positive target;
 // 2 when a guard fails.
-inline int exactSideOfTarget(const DistanceInput<double>& in, const SimplexCache& cache, double tHi, double tLo,
-                             double rA, double rB)
+inline int exactSideOfTarget(const DistanceInput<double>& in, const SimplexCache& cache, double tHi,
+                             double tLo, double rA, double rB)
 {
     Context cx;
     Expansion x1, y1, T;
@@ -398,8 +414,8 @@ inline int exactSideOfTarget(const DistanceInput<double>& in, const SimplexCache
 // The correctly rounded X* = U* - rA - rB > 0 when [xh.hi + xh.lo +- xh.err] straddles exactly
 // one midpoint between two positive doubles (normal, below 2^900): the exact side of that
 // midpoint decides, a tie goes to the even one (round half to even). Negative: not decided.
-inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCache& cache, const Approx& xh, double rA,
-                              double rB)
+inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCache& cache,
+                              const Approx& xh, double rA, double rB)
 {
     using certify::down;
     using certify::up;
@@ -472,7 +488,8 @@ GJK_CORRECT_INLINE bool extendedPrecisionOn()
 //   Edge: U = |C| / s rounded, C = num rounded, within ra = eC / |C|: U* / U lies within
 //   1 +- (ra + rb + 2u)(1 + 2^-8) for ra, rb <= 2^-10 (1 / (1 - x) <= 1 + x (1 + 2x)). Vertex:
 //   U = s, within rb. X = U - r rounds twice (r = rA + rB, then the difference).
-GJK_CORRECT_INLINE bool distanceExtended(const ApproxVec& v, const Approx* num, double rA, double rB, Ext& X, Ext& eX)
+GJK_CORRECT_INLINE bool distanceExtended(const ApproxVec& v, const Approx* num, double rA,
+                                         double rB, Ext& X, Ext& eX)
 {
     const Ext vx = Ext(v.x.hi) + v.x.lo, vy = Ext(v.y.hi) + v.y.lo;
     const Ext Ex = v.x.err + uExt * std::abs(vx), Ey = v.y.err + uExt * std::abs(vy);
@@ -505,7 +522,8 @@ GJK_CORRECT_INLINE double roundExtended(Ext X, Ext eX)
     if (!(m >= 0x1p-1000 && m <= 0x1p1000))
         return kUndecided;
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(m);
-    const Ext gapAbove = Ext(std::bit_cast<double>(bits + 1)) - m, gapBelow = Ext(m) - std::bit_cast<double>(bits - 1);
+    const Ext gapAbove = Ext(std::bit_cast<double>(bits + 1)) - m,
+              gapBelow = Ext(m) - std::bit_cast<double>(bits - 1);
     const Ext d = X - m;
     return d + eX < 0.5L * gapAbove && d - eX > -0.5L * gapBelow ? m : kUndecided;
 }
@@ -544,7 +562,10 @@ struct Features
     int attained = -1;   // supportAttained's answer once evaluated: 1 or 0 (-1: not yet)
 };
 
-GJK_CORRECT_INLINE ApproxVec valuesOf(const ApproxVec& v) { return {{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}}; }
+GJK_CORRECT_INLINE ApproxVec valuesOf(const ApproxVec& v)
+{
+    return {{v.x.hi, v.x.lo, 0}, {v.y.hi, v.y.lo, 0}};
+}
 
 // Writes a decided answer (a negative one is not decided) with its path; false when not written.
 // Plain `inline`, as supportAttained: the compiler keeps both out of line, as it did the lambdas
@@ -568,7 +589,8 @@ inline bool writeAnswer(DistanceOutput<double>& out, double answer, CorrectPath 
 
 // A triangle simplex (CorrectPath::Double): the hulls overlap for certain when the plain query
 // stopped on containment and the three orientation signs are certified in double.
-GJK_CORRECT_INLINE bool containmentCertified(const DistanceInput<double>& in, const SimplexCache& cache,
+GJK_CORRECT_INLINE bool containmentCertified(const DistanceInput<double>& in,
+                                             const SimplexCache& cache,
                                              const DistanceOutput<double>& out)
 {
     return out.stop == StopReason::Containment &&
@@ -585,7 +607,8 @@ GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in
     f.W2 = minkowskiPoint(cx, in, f.a2, f.b2);
     f.unum = cross(cx, f.W2, f.W1);
     f.e = {sub(f.W2.x, f.W1.x), sub(f.W2.y, f.W1.y)};
-    if (!(std::max(f.e.x.err, f.e.y.err) <= kEdgeAccuracy * std::max(std::abs(f.e.x.hi), std::abs(f.e.y.hi))))
+    if (!(std::max(f.e.x.err, f.e.y.err) <=
+          kEdgeAccuracy * std::max(std::abs(f.e.x.hi), std::abs(f.e.y.hi))))
         f.e = minkowskiEdge(cx, in, f.a1, f.b1, f.a2, f.b2);
     if (!cx.ok || signOfDot(f.W2, f.e) != 1 || signOfDot(f.W1, f.e) != -1)
         return false;
@@ -596,8 +619,8 @@ GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in
 
 // The final features of a one- or two-point simplex, their points of Z and direction n. False
 // when a guard fails or an edge's side is not decided (the caller then needs exact).
-GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in, const SimplexCache& cache,
-                                   Features& f)
+GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in,
+                                   const SimplexCache& cache, Features& f)
 {
     f.isEdge = cache.count == 2;
     f.a1 = cache.indexA[0], f.b1 = cache.indexB[0];
@@ -634,8 +657,8 @@ inline bool supportAttained(const DistanceInput<double>& in, Features& f)
 // CorrectPath::Extended: the square root, the quotient and the rounding in extended precision,
 // where the double-double ones are the longest chains of dependent operations. True when it
 // decided (the answer written).
-GJK_CORRECT_INLINE bool decideExtended(const DistanceInput<double>& in, Features& f, double rA, double rB,
-                                       DistanceOutput<double>& out)
+GJK_CORRECT_INLINE bool decideExtended(const DistanceInput<double>& in, Features& f, double rA,
+                                       double rB, DistanceOutput<double>& out)
 {
     if constexpr (kExtended)
     {
@@ -671,8 +694,9 @@ GJK_CORRECT_INLINE Approx upperBound(Context& cx, const Features& f, Approx& nor
 
 // The lowest of n_v.W over the candidate pairs' points W of Z, its bound widened to cover every
 // other value's lower end: the minimum of the exact values lies within it.
-GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<double>& in, const Features& f,
-                                             const int* candA, int ca, const int* candB, int cb)
+GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<double>& in,
+                                             const Features& f, const int* candA, int ca,
+                                             const int* candB, int cb)
 {
     Approx lowest;
     bool first = true;
@@ -685,9 +709,10 @@ GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<do
         for (int j = 0; j < cb; ++j)
         {
             const int ia = candA[i], jb = candB[j];
-            const ApproxVec W = (ia == f.a1 && jb == f.b1)                   ? f.W1
-                                : (f.isEdge && ia == f.a2 && jb == f.b2) ? f.W2
-                                                                         : minkowskiPoint(cx, in, ia, jb);
+            const ApproxVec W = (ia == f.a1 && jb == f.b1) ? f.W1
+                                : (f.isEdge && ia == f.a2 && jb == f.b2)
+                                    ? f.W2
+                                    : minkowskiPoint(cx, in, ia, jb);
             const Approx value = dot(cx, f.nv, W);
             his[count] = value.hi;
             los[count] = value.lo;
@@ -702,7 +727,8 @@ GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<do
         }
     for (int k = 0; k < count; ++k)
     {
-        const double reach = ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + kUnderflowMargin;
+        const double reach =
+            ((lowest.hi - his[k]) + (lowest.lo - los[k]) + errs[k]) * kSafe + kUnderflowMargin;
         lowest.err = std::max(lowest.err, reach);
     }
     return lowest;
@@ -727,8 +753,8 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
 // The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
 // cache the plain query returned: its index pairs are the final features. Out of line, so that
 // gjk::distance does not carry its code and stack frame into the default query.
-[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache, const Options& options,
-                                     DistanceOutput<double>& out)
+[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache,
+                                     const Options& options, DistanceOutput<double>& out)
 {
     out.path = CorrectPath::NeedsExact;
     const double rA = options.useRadii ? in.proxyA.radius : 0.0;
@@ -766,7 +792,8 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
     if (supportAttained(in, f))
     {
         const double answer = roundInterval(xh, xh);
-        writeAnswer(out, answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB), CorrectPath::DoubleDouble);
+        writeAnswer(out, answer >= 0 ? answer : roundAtMidpoint(in, cache, xh, rA, rB),
+                    CorrectPath::DoubleDouble);
         return;
     }
     Approx L;
@@ -780,8 +807,8 @@ namespace gjk
 {
 
 template <class T>
-void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache, const Options& options,
-                    DistanceOutput<T>& out)
+void correctlyRound(const DistanceInput<T>& input, const SimplexCache& cache,
+                    const Options& options, DistanceOutput<T>& out)
 {
     if constexpr (std::is_same_v<T, double>)
         correct::refine(input, cache, options, out);

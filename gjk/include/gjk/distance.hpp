@@ -57,17 +57,26 @@ template <class T> Vec2<T> closestPoint(const Simplex<T>& s)
 {
     switch (s.count)
     {
-    case 1: return s.v[0].w;
-    case 2: return s.v[0].a * s.v[0].w + s.v[1].a * s.v[1].w;
-    default: return Vec2<T>{};
+    case 1:
+        return s.v[0].w;
+    case 2:
+        return s.v[0].a * s.v[0].w + s.v[1].a * s.v[1].w;
+    default:
+        return Vec2<T>{};
     }
 }
 
 // Whether the origin lies strictly on the left of the edge w1 -> w1 + e12: the talk's sign test
 // for the edge search direction, and the canonical order of a cached edge (SimplexCache).
 // originSide > 0: on the left; < 0: on the right; 0: on the edge's line (rounded).
-template <class T> T originSide(Vec2<T> w1, Vec2<T> e12) { return cross(e12, -w1); }
-template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12) { return originSide(w1, e12) > T(0); }
+template <class T> T originSide(Vec2<T> w1, Vec2<T> e12)
+{
+    return cross(e12, -w1);
+}
+template <class T> bool originOnLeft(Vec2<T> w1, Vec2<T> e12)
+{
+    return originSide(w1, e12) > T(0);
+}
 
 // The direction from P towards Q = 0 in which to look for the next support point.
 // `base` is the edge's slot the sign test measures from: 0, but for the first iteration of a warm
@@ -91,7 +100,8 @@ GJK_INLINE Vec2<T> searchDirection(const Simplex<T>& s, SearchDirection rule, in
 
 // Closest points on A and B from the barycentric weights (talk section 4, "Closest point on
 // polygons"): the same weights applied to the simplex vertices' own points.
-template <class T> GJK_INLINE void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, Vec2<T>& pB)
+template <class T>
+GJK_INLINE void computeWitnessPoints(const Simplex<T>& s, Vec2<T>& pA, Vec2<T>& pB)
 {
     switch (s.count)
     {
@@ -118,13 +128,15 @@ template <class T> T simplexDistance(const Simplex<T>& s)
 {
     switch (s.count)
     {
-    case 1: return length(s.v[0].w);
+    case 1:
+        return length(s.v[0].w);
     case 2:
     {
         const Vec2<T> e12 = edgeOfSafeSize(s.v[1].w - s.v[0].w);
         return std::abs(cross(s.v[0].w, e12)) / length(e12);
     }
-    default: return T(0);
+    default:
+        return T(0);
     }
 }
 
@@ -145,7 +157,8 @@ GJK_INLINE bool cacheFits(const SimplexCache& cache, int countA, int countB)
 {
     bool fits = cache.count >= 1 && cache.count <= 3;
     for (int i = 0; fits && i < cache.count; ++i)
-        fits = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 && cache.indexB[i] < countB;
+        fits = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 &&
+               cache.indexB[i] < countB;
     return fits;
 }
 
@@ -163,8 +176,10 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
     if (cacheFits(cache, A.poly.count, B.poly.count))
     {
         edgeBase = cache.count >= 2 ? (cache.edgeBase & 1) : 0;
-        A.last = cache.searchA >= 0 && cache.searchA < A.poly.count ? cache.searchA : cache.indexA[0];
-        B.last = cache.searchB >= 0 && cache.searchB < B.poly.count ? cache.searchB : cache.indexB[0];
+        A.last =
+            cache.searchA >= 0 && cache.searchA < A.poly.count ? cache.searchA : cache.indexA[0];
+        B.last =
+            cache.searchB >= 0 && cache.searchB < B.poly.count ? cache.searchB : cache.indexB[0];
         simplex.count = cache.count;
         for (int i = 0; i < cache.count; ++i)
             simplex.v[i] = makeVertex<T>(A, B, cache.indexA[i], cache.indexB[i]);
@@ -173,30 +188,33 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
     {
         simplex.count = 1;
         const Vec2<T> d0 = B.xf.p - A.xf.p;
-        simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport<T>(A, B, d0) : makeVertex<T>(A, B, 0, 0);
+        simplex.v[0] = (d0.x != T(0) || d0.y != T(0)) ? findMinkowskiSupport<T>(A, B, d0)
+                                                      : makeVertex<T>(A, B, 0, 0);
     }
     return edgeBase;
 }
 
 // The loop's state besides the simplex (startLoop sets it up, runLoop updates it), from which
 // finishQuery makes the output and the cache. Shared by the query below and the SIMD batch
-// (gjk/batch.hpp), whose lanes run the loop and end here. (The simplex is passed by reference: copied into this struct, it cost the scalar
-// query 6-20 %, docs/speed.md, "Batches in SIMD lanes".)
+// (gjk/batch.hpp), whose lanes run the loop and end here. (The simplex is passed by reference:
+// copied into this struct, it cost the scalar query 6-20 %, docs/speed.md, "Batches in SIMD
+// lanes".)
 template <class T> struct QueryEnd
 {
     int edgeBase;
     int iteration;
-    T maxAbs; // largest support-point coordinate magnitude (the range check)
+    T maxAbs;              // largest support-point coordinate magnitude (the range check)
     std::int64_t saved[3]; // the simplex before the last solve (index pairs), and its size
     int savedCount;
-    bool culledRepeat; // the stopping support point was a vertex the last solve culled
-    int searchA, searchB; // where the last support searches started
+    bool culledRepeat;      // the stopping support point was a vertex the last solve culled
+    int searchA, searchB;   // where the last support searches started
     bool supportOutOfRange; // a support scan overflowed, or (rescaled) a point lost bits
 };
 
 // The cache keeps a final edge in canonical order (SimplexCache): reversed when the origin is
 // strictly on the right of it (flip), with edgeBase following the base vertex. `cache.count` and
-// the indices are set. Shared with the SIMD batch (gjk/src/batch.cpp), which ends lanes the same way.
+// the indices are set. Shared with the SIMD batch (gjk/src/batch.cpp), which ends lanes the same
+// way.
 GJK_INLINE void storeEdgeInCanonicalOrder(SimplexCache& cache, int edgeBase, bool flip)
 {
     cache.edgeBase = cache.count == 2 ? edgeBase ^ int(flip) : 0;
@@ -280,8 +298,9 @@ GJK_INLINE bool toWorldFrame(Answer<T>& a, const Transform<T>& world, int scale)
     bool frameOutOfRange = false;
     if (!isUnitRotation(frameSize2)) [[unlikely]]
     {
-        frameOutOfRange = !(frameSize2 >= Tolerances<T>::minCoordinate * Tolerances<T>::minCoordinate &&
-                            frameSize2 <= Tolerances<T>::maxCoordinate * Tolerances<T>::maxCoordinate);
+        frameOutOfRange =
+            !(frameSize2 >= Tolerances<T>::minCoordinate * Tolerances<T>::minCoordinate &&
+              frameSize2 <= Tolerances<T>::maxCoordinate * Tolerances<T>::maxCoordinate);
         const T size = std::sqrt(frameSize2);
         a.distance *= size;
         a.normal = {a.normal.x / size, a.normal.y / size};
@@ -319,7 +338,8 @@ template <class T> GJK_INLINE void applyRadii(Answer<T>& a, T rA, T rB)
 // solves exactly as this query did (docs/gjk.md, "Warm start"). Then where the last support
 // searches started.
 template <class T>
-GJK_INLINE void writeCache(SimplexCache& cache, const Simplex<T>& simplex, const QueryEnd<T>& end, bool flipEdge)
+GJK_INLINE void writeCache(SimplexCache& cache, const Simplex<T>& simplex, const QueryEnd<T>& end,
+                           bool flipEdge)
 {
     if (end.culledRepeat) [[unlikely]]
     {
@@ -352,24 +372,27 @@ GJK_INLINE void writeCache(SimplexCache& cache, const Simplex<T>& simplex, const
 // opposite sides), or a rotation (c, s) far from unit size (s = 3e307, c = 1e213, where std::max
 // would drop the NaN from maxAbs). Each value is tested on its own.
 template <class T>
-GJK_INLINE bool rangeExceeded(const QueryEnd<T>& end, bool frameOutOfRange, const DistanceOutput<T>& out)
+GJK_INLINE bool rangeExceeded(const QueryEnd<T>& end, bool frameOutOfRange,
+                              const DistanceOutput<T>& out)
 {
     constexpr T big = std::numeric_limits<T>::max();
-    const bool answerNotFinite = !(std::abs(out.distance) <= big) | !(std::abs(out.pointA.x) <= big) |
-                                 !(std::abs(out.pointA.y) <= big) | !(std::abs(out.pointB.x) <= big) |
-                                 !(std::abs(out.pointB.y) <= big) | !(std::abs(out.normal.x) <= big) |
-                                 !(std::abs(out.normal.y) <= big);
+    const bool answerNotFinite =
+        !(std::abs(out.distance) <= big) | !(std::abs(out.pointA.x) <= big) |
+        !(std::abs(out.pointA.y) <= big) | !(std::abs(out.pointB.x) <= big) |
+        !(std::abs(out.pointB.y) <= big) | !(std::abs(out.normal.x) <= big) |
+        !(std::abs(out.normal.y) <= big);
     return !(end.maxAbs <= Tolerances<T>::maxCoordinate) || frameOutOfRange ||
-           (end.maxAbs > T(0) && end.maxAbs < Tolerances<T>::minCoordinate) || end.supportOutOfRange ||
-           answerNotFinite;
+           (end.maxAbs > T(0) && end.maxAbs < Tolerances<T>::minCoordinate) ||
+           end.supportOutOfRange || answerNotFinite;
 }
 
 // The end of the query: the answer in world coordinates, radii, certified interval, the cache,
 // the range check and (out of range) the rescaled retry, then the correctly rounded refinement.
 // `stop`: why the loop stopped.
 template <class T, bool Scaled>
-GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexCache& cache, const Options& options,
-                                         Trace<T>* trace, int scale, const Transform<T>& world, StopReason stop,
+GJK_INLINE DistanceOutput<T> finishQuery(const DistanceInput<T>& input, SimplexCache& cache,
+                                         const Options& options, Trace<T>* trace, int scale,
+                                         const Transform<T>& world, StopReason stop,
                                          const Simplex<T>& simplex, const QueryEnd<T>& end)
 {
     Answer<T> a = readSimplex(simplex, end.edgeBase);
@@ -424,16 +447,22 @@ template <class T> GJK_INLINE void solveSimplex(Simplex<T>& simplex)
 {
     switch (simplex.count)
     {
-    case 1: break;
-    case 2: solve2(simplex); break;
-    case 3: solve3(simplex); break;
+    case 1:
+        break;
+    case 2:
+        solve2(simplex);
+        break;
+    case 3:
+        solve3(simplex);
+        break;
     }
 }
 
 // The loop's state before it runs: the start simplex from the cache (warm) or cold
 // (startSimplex), the largest coordinate so far, no saved simplex, the searches' starts.
 template <class T, class Shape>
-GJK_INLINE void startLoop(const SimplexCache& cache, Shape& A, Shape& B, Simplex<T>& simplex, QueryEnd<T>& end)
+GJK_INLINE void startLoop(const SimplexCache& cache, Shape& A, Shape& B, Simplex<T>& simplex,
+                          QueryEnd<T>& end)
 {
     // The slot of a final edge the distance and the edge's sign test are measured from: the
     // query's own first vertex (SimplexCache::edgeBase), 0 once the simplex has changed.
@@ -454,16 +483,18 @@ GJK_INLINE void startLoop(const SimplexCache& cache, Shape& A, Shape& B, Simplex
 // vertex (case 1) or cannot lower the distance (StoppingRule::DualityGap). Returns why it stopped;
 // `end` holds the rest of the final state (startLoop set it up).
 template <class T, class Shape>
-GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<T>* trace, int maxIterations,
-                              Simplex<T>& simplex, QueryEnd<T>& end)
+GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<T>* trace,
+                              int maxIterations, Simplex<T>& simplex, QueryEnd<T>& end)
 {
     for (;;)
     {
         // Remember the simplex vertices to detect a repeated support point (case 1). Index pairs
         // packed in one integer each; unused slots hold a pair no vertex can have. Three fixed
-        // comparisons instead of a loop over 1 to 3 vertices. Why: docs/speed.md, "Repeated-support check".
+        // comparisons instead of a loop over 1 to 3 vertices. Why: docs/speed.md, "Repeated-support
+        // check".
         for (int i = 0; i < 3; ++i)
-            end.saved[i] = i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
+            end.saved[i] =
+                i < simplex.count ? packIndices(simplex.v[i].indexA, simplex.v[i].indexB) : -1;
         end.savedCount = simplex.count;
         solveSimplex(simplex);
         if (simplex.count == 3) // case 2: containment, the origin is inside Z
@@ -473,7 +504,8 @@ GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<
             return StopReason::Containment;
         }
         const Vec2<T> d = searchDirection(simplex, options.direction, end.edgeBase);
-        const bool zeroDirection = d.x == T(0) && d.y == T(0); // case 3a: P = Q, vertex overlap (exact)
+        const bool zeroDirection =
+            d.x == T(0) && d.y == T(0); // case 3a: P = Q, vertex overlap (exact)
         if (zeroDirection || end.iteration == maxIterations)
         {
             if (trace)
@@ -498,7 +530,8 @@ GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<
         if ((key == end.saved[0]) | (key == end.saved[1]) | (key == end.saved[2]))
         {
             end.culledRepeat = key != packIndices(simplex.v[0].indexA, simplex.v[0].indexB) &&
-                               (simplex.count == 1 || key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
+                               (simplex.count == 1 ||
+                                key != packIndices(simplex.v[1].indexA, simplex.v[1].indexB));
             return StopReason::RepeatedSupport;
         }
         if (options.stopping == StoppingRule::DualityGap)
@@ -534,7 +567,8 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     QueryEnd<T> end;
     startLoop<T>(cache, A, B, simplex, end);
     const StopReason stop =
-        runLoop<T>(A, B, options, trace, iterationLimit(options, input.proxyA.count, input.proxyB.count), simplex, end);
+        runLoop<T>(A, B, options, trace,
+                   iterationLimit(options, input.proxyA.count, input.proxyB.count), simplex, end);
     end.supportOutOfRange = A.overflow || B.overflow || (Scaled && (A.inexact || B.inexact));
     return finishQuery<T, Scaled>(input, cache, options, trace, scale, world, stop, simplex, end);
 }
@@ -546,10 +580,11 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
 // products may have underflowed to 0.
 template <class T>
 [[gnu::noinline]] void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache,
-                                        const Options& options, Trace<T>* trace, DistanceOutput<T>& out,
-                                        bool onlyZeroSupports)
+                                        const Options& options, Trace<T>* trace,
+                                        DistanceOutput<T>& out, bool onlyZeroSupports)
 {
-    const int k = rescaleExponent(input.proxyA, input.transformA, input.proxyB, input.transformB, options.frame);
+    const int k = rescaleExponent(input.proxyA, input.transformA, input.proxyB, input.transformB,
+                                  options.frame);
     if (onlyZeroSupports && !(k > -exponentOf(Tolerances<T>::minCoordinate)))
         return;
     if (k != 0)

@@ -76,7 +76,10 @@ struct Approx
     double hi = 0, lo = 0, err = 0;
 };
 
-GJK_CORRECT_INLINE double mag(const Approx& a) { return std::abs(a.hi) * (1 + 0x1p-50); } // >= |hi + lo|
+GJK_CORRECT_INLINE double mag(const Approx& a)
+{
+    return std::abs(a.hi) * (1 + 0x1p-50);
+} // >= |hi + lo|
 
 // The evaluation context: `ok` turns false when a guard fails (the caller then needs exact).
 struct Context
@@ -85,9 +88,18 @@ struct Context
     void require(bool c) { ok = ok && c; }
 };
 
-GJK_CORRECT_INLINE Approx exactly(double v) { return {v, 0, 0}; }
-GJK_CORRECT_INLINE Approx negate(const Approx& a) { return {-a.hi, -a.lo, a.err}; }
-GJK_CORRECT_INLINE Approx absolute(const Approx& a) { return a.hi < 0 ? negate(a) : a; }
+GJK_CORRECT_INLINE Approx exactly(double v)
+{
+    return {v, 0, 0};
+}
+GJK_CORRECT_INLINE Approx negate(const Approx& a)
+{
+    return {-a.hi, -a.lo, a.err};
+}
+GJK_CORRECT_INLINE Approx absolute(const Approx& a)
+{
+    return a.hi < 0 ? negate(a) : a;
+}
 
 GJK_CORRECT_INLINE Approx add(const Approx& a, const Approx& b)
 {
@@ -97,7 +109,10 @@ GJK_CORRECT_INLINE Approx add(const Approx& a, const Approx& b)
     s = fastTwoSum(s.hi, s.lo + t.lo);
     return {s.hi, s.lo, (a.err + b.err + kRel * std::abs(s.hi)) * kSafe};
 }
-GJK_CORRECT_INLINE Approx sub(const Approx& a, const Approx& b) { return add(a, negate(b)); }
+GJK_CORRECT_INLINE Approx sub(const Approx& a, const Approx& b)
+{
+    return add(a, negate(b));
+}
 
 GJK_CORRECT_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
 {
@@ -105,7 +120,8 @@ GJK_CORRECT_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
     const DD p = twoProduct(a.hi, b.hi);
     const double t = a.hi * b.lo + a.lo * b.hi;
     const DD r = fastTwoSum(p.hi, p.lo + t);
-    const double e = mag(a) * b.err + mag(b) * a.err + a.err * b.err + kRel * std::abs(r.hi) + kTiny;
+    const double e =
+        mag(a) * b.err + mag(b) * a.err + a.err * b.err + kRel * std::abs(r.hi) + kTiny;
     return {r.hi, r.lo, e * kSafe};
 }
 
@@ -124,8 +140,8 @@ GJK_CORRECT_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
     const double delta = pi.hi + ((pi.lo - r.lo) + a.lo);
     const DD q = fastTwoSum(th, delta / b.hi);
     // |a/b - av/bv| <= (|a - av| + |av/bv| |b - bv|) / |b|
-    const double e = (a.err + std::abs(q.hi) * (1 + 0x1p-50) * b.err) / bLow + kRel * std::abs(q.hi) +
-                     kTiny / bLow;
+    const double e = (a.err + std::abs(q.hi) * (1 + 0x1p-50) * b.err) / bLow +
+                     kRel * std::abs(q.hi) + kTiny / bLow;
     return {q.hi, q.lo, e * kSafe};
 }
 
@@ -268,8 +284,14 @@ struct ApproxVec
 #if defined(__GNUC__) && !defined(GJK_NO_VECTOR_EXTENSIONS)
 typedef double V2 __attribute__((vector_size(16)));
 typedef std::int64_t M2 __attribute__((vector_size(16))); // comparison masks: -1 (true) or 0
-GJK_CORRECT_INLINE V2 abs2(V2 v) { return V2(M2(v) & M2{INT64_MAX, INT64_MAX}); }
-GJK_CORRECT_INLINE bool all2(M2 m) { return (m[0] & m[1]) != 0; }
+GJK_CORRECT_INLINE V2 abs2(V2 v)
+{
+    return V2(M2(v) & M2{INT64_MAX, INT64_MAX});
+}
+GJK_CORRECT_INLINE bool all2(M2 m)
+{
+    return (m[0] & m[1]) != 0;
+}
 #else
 struct M2
 {
@@ -283,18 +305,51 @@ struct V2
     double v[2];
     double operator[](int i) const { return v[i]; }
 };
-inline V2 operator+(V2 a, V2 b) { return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}}; }
-inline V2 operator-(V2 a, V2 b) { return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}}; }
-inline V2 operator*(V2 a, V2 b) { return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}}; }
-inline V2 operator*(double a, V2 b) { return {{a * b.v[0], a * b.v[1]}}; }
-inline M2 operator<=(V2 a, V2 b) { return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1]}}; }
-inline M2 operator<=(V2 a, double b) { return {{a.v[0] <= b, a.v[1] <= b}}; }
-inline M2 operator>=(V2 a, double b) { return {{a.v[0] >= b, a.v[1] >= b}}; }
-inline M2 operator==(V2 a, double b) { return {{a.v[0] == b, a.v[1] == b}}; }
-inline V2 abs2(V2 a) { return {{std::abs(a.v[0]), std::abs(a.v[1])}}; }
-inline bool all2(M2 m) { return m.v[0] && m.v[1]; }
+inline V2 operator+(V2 a, V2 b)
+{
+    return {{a.v[0] + b.v[0], a.v[1] + b.v[1]}};
+}
+inline V2 operator-(V2 a, V2 b)
+{
+    return {{a.v[0] - b.v[0], a.v[1] - b.v[1]}};
+}
+inline V2 operator*(V2 a, V2 b)
+{
+    return {{a.v[0] * b.v[0], a.v[1] * b.v[1]}};
+}
+inline V2 operator*(double a, V2 b)
+{
+    return {{a * b.v[0], a * b.v[1]}};
+}
+inline M2 operator<=(V2 a, V2 b)
+{
+    return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1]}};
+}
+inline M2 operator<=(V2 a, double b)
+{
+    return {{a.v[0] <= b, a.v[1] <= b}};
+}
+inline M2 operator>=(V2 a, double b)
+{
+    return {{a.v[0] >= b, a.v[1] >= b}};
+}
+inline M2 operator==(V2 a, double b)
+{
+    return {{a.v[0] == b, a.v[1] == b}};
+}
+inline V2 abs2(V2 a)
+{
+    return {{std::abs(a.v[0]), std::abs(a.v[1])}};
+}
+inline bool all2(M2 m)
+{
+    return m.v[0] && m.v[1];
+}
 #endif
-GJK_CORRECT_INLINE V2 pair(double x, double y) { return V2{x, y}; }
+GJK_CORRECT_INLINE V2 pair(double x, double y)
+{
+    return V2{x, y};
+}
 
 struct DD2
 {
@@ -319,7 +374,8 @@ GJK_CORRECT_INLINE DD2 twoProduct(V2 a, V2 b) // twoProduct above, lane by lane
 GJK_CORRECT_INLINE M2 exactProduct(V2 a, V2 b, V2 p)
 {
     const V2 aa = abs2(a), ab = abs2(b);
-    return ((aa <= 0x1p450) & (ab <= 0x1p450)) & ((abs2(p) >= 0x1p-960) | (aa == 0.0) | (ab == 0.0));
+    return ((aa <= 0x1p450) & (ab <= 0x1p450)) &
+           ((abs2(p) >= 0x1p-960) | (aa == 0.0) | (ab == 0.0));
 }
 
 GJK_CORRECT_INLINE DD2 fastTwoSum(V2 a, V2 b) // fastTwoSum above, lane by lane
@@ -328,8 +384,8 @@ GJK_CORRECT_INLINE DD2 fastTwoSum(V2 a, V2 b) // fastTwoSum above, lane by lane
     return {s, b - (s - a)};
 }
 // mul above, lane by lane: the products a0 b0 and a1 b1 at once.
-GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0, const Approx& a1, const Approx& b1,
-                         Approx& r0, Approx& r1)
+GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0, const Approx& a1,
+                                 const Approx& b1, Approx& r0, Approx& r1)
 {
     const V2 ah = pair(a0.hi, a1.hi), al = pair(a0.lo, a1.lo), ae = pair(a0.err, a1.err);
     const V2 bh = pair(b0.hi, b1.hi), bl = pair(b0.lo, b1.lo), be = pair(b0.err, b1.err);
@@ -338,7 +394,8 @@ GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0
     const V2 t = ah * bl + al * bh;
     const DD2 r = fastTwoSum(p.hi, p.lo + t);
     const V2 magA = (1 + 0x1p-50) * abs2(ah), magB = (1 + 0x1p-50) * abs2(bh); // mag() above
-    const V2 e = kSafe * ((((magA * be + magB * ae) + ae * be) + kRel * abs2(r.hi)) + pair(kTiny, kTiny));
+    const V2 e =
+        kSafe * ((((magA * be + magB * ae) + ae * be) + kRel * abs2(r.hi)) + pair(kTiny, kTiny));
     r0 = {r.hi[0], r.lo[0], e[0]};
     r1 = {r.hi[1], r.lo[1], e[1]};
 }
@@ -403,14 +460,18 @@ inline void growProduct(Context& cx, Expansion& e, double a, double b)
 }
 
 // out += sign a b for expansions a, b.
-inline void growProduct(Context& cx, Expansion& out, const Expansion& a, const Expansion& b, double sign)
+inline void growProduct(Context& cx, Expansion& out, const Expansion& a, const Expansion& b,
+                        double sign)
 {
     for (int i = 0; i < a.n && cx.ok; ++i)
         for (int j = 0; j < b.n && cx.ok; ++j)
             growProduct(cx, out, sign * a.t[i], b.t[j]);
 }
 
-inline int signOf(const Expansion& e) { return e.n == 0 ? 0 : (e.t[e.n - 1] > 0 ? 1 : -1); }
+inline int signOf(const Expansion& e)
+{
+    return e.n == 0 ? 0 : (e.t[e.n - 1] > 0 ? 1 : -1);
+}
 
 } // namespace gjk::correct
 

@@ -15,24 +15,54 @@ template <class T> struct Vec2
     T x{}, y{};
 };
 
-template <class T> constexpr Vec2<T> operator+(Vec2<T> a, Vec2<T> b) { return {a.x + b.x, a.y + b.y}; }
-template <class T> constexpr Vec2<T> operator-(Vec2<T> a, Vec2<T> b) { return {a.x - b.x, a.y - b.y}; }
-template <class T> constexpr Vec2<T> operator-(Vec2<T> a) { return {-a.x, -a.y}; }
-template <class T> constexpr Vec2<T> operator*(T s, Vec2<T> a) { return {s * a.x, s * a.y}; }
-template <class T> constexpr bool operator==(Vec2<T> a, Vec2<T> b) { return a.x == b.x && a.y == b.y; }
+template <class T> constexpr Vec2<T> operator+(Vec2<T> a, Vec2<T> b)
+{
+    return {a.x + b.x, a.y + b.y};
+}
+template <class T> constexpr Vec2<T> operator-(Vec2<T> a, Vec2<T> b)
+{
+    return {a.x - b.x, a.y - b.y};
+}
+template <class T> constexpr Vec2<T> operator-(Vec2<T> a)
+{
+    return {-a.x, -a.y};
+}
+template <class T> constexpr Vec2<T> operator*(T s, Vec2<T> a)
+{
+    return {s * a.x, s * a.y};
+}
+template <class T> constexpr bool operator==(Vec2<T> a, Vec2<T> b)
+{
+    return a.x == b.x && a.y == b.y;
+}
 
-template <class T> constexpr T dot(Vec2<T> a, Vec2<T> b) { return a.x * b.x + a.y * b.y; }
+template <class T> constexpr T dot(Vec2<T> a, Vec2<T> b)
+{
+    return a.x * b.x + a.y * b.y;
+}
 // The 2D cross product is the scalar z-component of the 3D one: twice the signed area of the
 // triangle (0, a, b), positive when b lies counter-clockwise of a.
-template <class T> constexpr T cross(Vec2<T> a, Vec2<T> b) { return a.x * b.y - a.y * b.x; }
+template <class T> constexpr T cross(Vec2<T> a, Vec2<T> b)
+{
+    return a.x * b.y - a.y * b.x;
+}
 // cross(v, z) and cross(z, v) with z the plane normal: the two perpendiculars of v. The talk's
 // "accurate search direction": dot(v, leftPerp(v)) = -x*y + y*x, which is exactly zero in floating
 // point because both products round identically (this needs -ffp-contract=off).
-template <class T> constexpr Vec2<T> leftPerp(Vec2<T> v) { return {-v.y, v.x}; }
-template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v) { return {v.y, -v.x}; }
+template <class T> constexpr Vec2<T> leftPerp(Vec2<T> v)
+{
+    return {-v.y, v.x};
+}
+template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v)
+{
+    return {v.y, -v.x};
+}
 // sqrt(x^2 + y^2) without std::hypot's scaling (slow): inside the query's documented range
 // (Tolerances<T>::maxCoordinate) the squares can neither overflow nor lose accuracy to underflow.
-template <class T> T length(Vec2<T> v) { return std::sqrt(v.x * v.x + v.y * v.y); }
+template <class T> T length(Vec2<T> v)
+{
+    return std::sqrt(v.x * v.x + v.y * v.y);
+}
 
 // Every tolerance of the library, per scalar type. No FLT_EPSILON in templated code.
 template <class T> struct Tolerances
@@ -51,17 +81,17 @@ template <class T> struct Tolerances
     // [minCoordinate, maxCoordinate] runs again rescaled, and is flagged DistanceOutput::outOfRange
     // only when that cannot help (distance.hpp, "Rescaling").
     static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
-    static inline const T minCoordinate =
-        std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
+    static inline const T minCoordinate = std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
     // A rotation whose computed squared size c^2 + s^2 is within this of 1 is used as a unit one:
     // A's frame inverts it by transposing it and skips the division by |qA|^2 and the final
-    // multiplication by |qA| (docs/gjk.md, "Transforms"). The computed size carries 2u, so the true |qA|^2 is then
-    // within 4u of 1, and the transpose within 4u of the inverse: docs/error-bound.md, term 1
-    // (6u instead of the division's 5u). Why not exactly 1: a double (cos t, sin t) pair has
-    // c^2 + s^2 != 1 in 22 % of random angles, and a test against exactly 1 made the branch
-    // unpredictable (gjk_bench's warm double query: 1.9 more mispredicted branches per query,
-    // docs/speed.md, "Transforms as given"). Within 2u, glibc's (cos t, sin t) is a unit rotation
-    // for all of 1e7 random angles, in double and in float, and a float pair seen in double
+    // multiplication by |qA| (docs/gjk.md, "Transforms"). The computed size carries 2u, so the true
+    // |qA|^2 is then within 4u of 1, and the transpose within 4u of the inverse:
+    // docs/error-bound.md, term 1 (6u instead of the division's 5u). Why not exactly 1: a double
+    // (cos t, sin t) pair has c^2 + s^2 != 1 in 22 % of random angles, and a test against exactly 1
+    // made the branch unpredictable (gjk_bench's warm double query: 1.9 more mispredicted branches
+    // per query, docs/speed.md, "Transforms as given"). Within 2u, glibc's (cos t, sin t) is a unit
+    // rotation for all of 1e7 random angles, in double and in float, and a float pair seen in
+    // double
     // (|c^2 + s^2 - 1| ~ 1e-8 .. 1e-7) for none of them.
     static constexpr T unitRotation = T(2) * unitRoundoff;
 };
@@ -71,8 +101,6 @@ template <class T> constexpr bool isUnitRotation(T n2)
 {
     return std::abs(n2 - T(1)) <= Tolerances<T>::unitRotation;
 }
-
-
 
 // A rotation stored as the two numbers the caller computed once, c = cos(angle), s = sin(angle).
 // They are used as given (never recomputed from an angle, never normalised), so the exact side can
@@ -87,7 +115,10 @@ template <class T> struct Rot
 };
 
 // |q|^2 = c^2 + s^2: 1 for a unit rotation.
-template <class T> constexpr T squaredSize(Rot<T> q) { return q.c * q.c + q.s * q.s; }
+template <class T> constexpr T squaredSize(Rot<T> q)
+{
+    return q.c * q.c + q.s * q.s;
+}
 
 template <class T> constexpr Vec2<T> rotate(Rot<T> q, Vec2<T> v)
 {
@@ -123,7 +154,8 @@ template <class T> constexpr Vec2<T> transformPoint(const Transform<T>& xf, Vec2
 // A's rotation of any size: both parts are divided by |qA|^2 = cA^2 + sA^2 (its true inverse is
 // qA^T / |qA|^2), skipped for a unit rotation (isUnitRotation). Each division adds one rounding,
 // and the computed |qA|^2 carries at most 2u: docs/error-bound.md, term 1.
-template <class T> constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T>& b)
+template <class T>
+constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T>& b)
 {
     Transform<T> r{invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
     const T n = squaredSize(a.q);

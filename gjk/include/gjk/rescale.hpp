@@ -39,14 +39,16 @@ template <class T> Vec2<T> scaleExactly(Vec2<T> v, int k, bool& inexact)
 // Exponent e with 2^e <= m < 2^(e+1) for finite m > 0; a very negative sentinel for 0 (or NaN).
 template <class T> int exponentOf(T m)
 {
-    return m > T(0) && m <= std::numeric_limits<T>::max() ? std::ilogb(m) : -4 * std::numeric_limits<T>::max_exponent;
+    return m > T(0) && m <= std::numeric_limits<T>::max()
+               ? std::ilogb(m)
+               : -4 * std::numeric_limits<T>::max_exponent;
 }
 
 // A support scan compares dot(d, p) over the shape's own (unscaled) points. On a rescaled query we
 // scale d instead of every point (only comparisons are made, so any positive factor of d gives the
 // same support point in exact arithmetic), choosing |d| ~ 2^e with e the points' scaling exponent
-// (the points are about 2^-e in size), clamped so that d stays normal: the products dot(d, p) of the largest points are then of
-// order 1, neither overflowing nor lost to underflow.
+// (the points are about 2^-e in size), clamped so that d stays normal: the products dot(d, p) of
+// the largest points are then of order 1, neither overflowing nor lost to underflow.
 template <class T> [[gnu::noinline]] Vec2<T> directionForScan(Vec2<T> d, int e)
 {
     constexpr int limit = std::numeric_limits<T>::max_exponent - std::numeric_limits<T>::digits;
@@ -69,8 +71,9 @@ template <class T> int rotationExponent(Rot<T> q)
 // points (times 2^e of their rotation, rotationExponent: the rotations themselves are normalised)
 // and the translations. Computed on exponents, so that sizes beyond the floating-point range
 // (1e300 * 1e300) cannot overflow. 0 when everything is zero.
-template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& xfA, const Polygon<T>& B,
-                                      const Transform<T>& xfB, Frame frame)
+template <class T>
+int rescaleExponent(const Polygon<T>& A, const Transform<T>& xfA, const Polygon<T>& B,
+                    const Transform<T>& xfB, Frame frame)
 {
     auto pointsExp = [](const Polygon<T>& p)
     {
@@ -91,7 +94,8 @@ template <class T> int rescaleExponent(const Polygon<T>& A, const Transform<T>& 
     }
     else
         e = std::max({pointsExp(A) + eA + 2, pointsExp(B) + eB + 2, vecExp(xfA.p), vecExp(xfB.p)});
-    return e < std::numeric_limits<T>::min_exponent - 2 * std::numeric_limits<T>::digits - 8 ? 0 : -e;
+    return e < std::numeric_limits<T>::min_exponent - 2 * std::numeric_limits<T>::digits - 8 ? 0
+                                                                                             : -e;
 }
 
 } // namespace gjk

@@ -41,7 +41,8 @@ template <class T> [[gnu::noinline]] Vec2<T> scaleUpEdge(Vec2<T> e)
 // compile-time constant (minCoordinate itself is computed with std::sqrt).
 template <class T> constexpr T minEdgeComponent()
 {
-    constexpr int e = (std::numeric_limits<T>::min_exponent - 1 + std::numeric_limits<T>::digits) / 2;
+    constexpr int e =
+        (std::numeric_limits<T>::min_exponent - 1 + std::numeric_limits<T>::digits) / 2;
     T v = T(1);
     for (int i = 0; i > e; --i)
         v /= T(2);
@@ -99,7 +100,8 @@ template <class T> void solve2(Simplex<T>& s)
 // subnormals). solve3's containment weights use it; gjk/src/batch_lanes.hpp has the same steps.
 template <class T> T accurateCross(Vec2<T> a, Vec2<T> b)
 {
-    constexpr T split = T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1); // 2^27 + 1, 2^12 + 1
+    constexpr T split =
+        T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1); // 2^27 + 1, 2^12 + 1
     auto twoProduct = [](T x, T y, T& lo)
     {
         const T p = x * y;
@@ -207,9 +209,9 @@ template <class T> GJK_INLINE void keepClosestEdge(Simplex<T>& s)
 //
 // Nine barycentric coordinates (numerators only):
 //   three segments as in solve2: (u12, v12), (u13, v13), (u23, v23),
-//   the triangle from signed areas: u123 = area(Q w2 w3), v123 = area(Q w3 w1), w123 = area(Q w1 w2),
-//   each multiplied by the sign of area(w1 w2 w3) so their signs are right whatever the winding:
-//   u123 = sgn(n) cross(w2, w3), v123 = sgn(n) cross(w3, w1), w123 = sgn(n) cross(w1, w2),
+//   the triangle from signed areas: u123 = area(Q w2 w3), v123 = area(Q w3 w1), w123 = area(Q w1
+//   w2), each multiplied by the sign of area(w1 w2 w3) so their signs are right whatever the
+//   winding: u123 = sgn(n) cross(w2, w3), v123 = sgn(n) cross(w3, w1), w123 = sgn(n) cross(w1, w2),
 //   n = cross(e12, e13).
 // Regions are tested in the talk's order, lowest dimension first: vertices, then edges, then the
 // interior. The area n is never divided by to choose a region: for a collinear (zero-area) triangle
@@ -268,7 +270,6 @@ template <class T> void solve3(Simplex<T>& s)
     // Rounding made the nine signs inconsistent (a nearly degenerate triangle): no region matched.
     keepClosestEdge(s);
 }
-
 
 } // namespace gjk
 

@@ -1,7 +1,7 @@
 // Support points (talk section 3 "Support point code", section 4 "Property 2") and transforms:
 // the support scans of one shape, a shape seen through a transform into the query's compute frame
-// (TransformedShape), the support point of the Minkowski difference, and the compute frame's set-up,
-// scaled (the rescaled retry, gjk/rescale.hpp) or not.
+// (TransformedShape), the support point of the Minkowski difference, and the compute frame's
+// set-up, scaled (the rescaled retry, gjk/rescale.hpp) or not.
 #pragma once
 
 #include "gjk/detail/macros.hpp"
@@ -96,7 +96,8 @@ template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
     if (slope(s) > T(0)) // forward: first j with slope(s + j) <= 0 or f(s + j) < f(s)
         best = wrap(s + firstPast([&](int j) { return slope(s + j) <= T(0) || f(s + j) < fs; }));
     else if (slope(s - 1) < T(0)) // backward: f(s - 1) > f(s), the mirror image
-        best = wrap(s - firstPast([&](int j) { return slope(s - j - 1) >= T(0) || f(s - j) < fs; }));
+        best =
+            wrap(s - firstPast([&](int j) { return slope(s - j - 1) >= T(0) || f(s - j) < fs; }));
 
     // Polish: climb to a strictly better neighbour (undoes rounding-blurred near-ties).
     T value = f(best);
@@ -150,7 +151,8 @@ template <class T, bool Scaled = false> struct TransformedShape
         last = findSupportFrom(poly, local, last);
         // The binary search evaluates a few points only: check the chosen point's own size.
         const Vec2<T> p = poly.points[last];
-        overflow = overflow || !(std::max(std::abs(p.x), std::abs(p.y)) <= Tolerances<T>::maxCoordinate);
+        overflow =
+            overflow || !(std::max(std::abs(p.x), std::abs(p.y)) <= Tolerances<T>::maxCoordinate);
         return last;
     }
     Vec2<T> vertex(int i)
@@ -191,9 +193,9 @@ GJK_INLINE SimplexVertex<T> findMinkowskiSupport(Shape& A, Shape& B, Vec2<T> d)
 // translations, multiplied by 2^scale. Returns the transform from the compute frame to world
 // coordinates (unscaled). A and B arrive made with their polygons only.
 template <class T>
-[[gnu::noinline]] Transform<T> setUpScaledShapes(const DistanceInput<T>& input, const Options& options,
-                                                 int scale, TransformedShape<T, true>& A,
-                                                 TransformedShape<T, true>& B)
+[[gnu::noinline]] Transform<T>
+setUpScaledShapes(const DistanceInput<T>& input, const Options& options, int scale,
+                  TransformedShape<T, true>& A, TransformedShape<T, true>& B)
 {
     Transform<T> xfA = input.transformA, xfB = input.transformB;
     // Rotations of any size, normalised: q = 2^e q^, the 2^e moved into the points' scaling.
@@ -229,8 +231,9 @@ template <class T>
 // shapes above. A and B arrive made with their polygons only. Returns the transform from the
 // compute frame to world coordinates.
 template <class T, bool Scaled>
-GJK_INLINE Transform<T> setUpShapes(const DistanceInput<T>& input, const Options& options, int scale,
-                                    TransformedShape<T, Scaled>& A, TransformedShape<T, Scaled>& B)
+GJK_INLINE Transform<T> setUpShapes(const DistanceInput<T>& input, const Options& options,
+                                    int scale, TransformedShape<T, Scaled>& A,
+                                    TransformedShape<T, Scaled>& B)
 {
     Transform<T> world;
     if constexpr (Scaled)

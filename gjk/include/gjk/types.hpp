@@ -40,8 +40,10 @@ constexpr const char* searchDirectionName(SearchDirection d)
 {
     switch (d)
     {
-    case SearchDirection::EdgePerpendicular: return "edge-perpendicular";
-    case SearchDirection::ClosestPoint: return "closest-point";
+    case SearchDirection::EdgePerpendicular:
+        return "edge-perpendicular";
+    case SearchDirection::ClosestPoint:
+        return "closest-point";
     }
     return "?";
 }
@@ -61,8 +63,10 @@ constexpr const char* stoppingRuleName(StoppingRule r)
 {
     switch (r)
     {
-    case StoppingRule::RepeatedSupport: return "repeated-support";
-    case StoppingRule::DualityGap: return "duality-gap";
+    case StoppingRule::RepeatedSupport:
+        return "repeated-support";
+    case StoppingRule::DualityGap:
+        return "duality-gap";
     }
     return "?";
 }
@@ -77,8 +81,10 @@ constexpr const char* frameName(Frame f)
 {
     switch (f)
     {
-    case Frame::LocalA: return "local-a";
-    case Frame::World: return "world";
+    case Frame::LocalA:
+        return "local-a";
+    case Frame::World:
+        return "world";
     }
     return "?";
 }
@@ -105,8 +111,10 @@ constexpr const char* supportStrategyName(SupportStrategy s)
 {
     switch (s)
     {
-    case SupportStrategy::Linear: return "linear";
-    case SupportStrategy::BinarySearch: return "binary-search";
+    case SupportStrategy::Linear:
+        return "linear";
+    case SupportStrategy::BinarySearch:
+        return "binary-search";
     }
     return "?";
 }
@@ -136,8 +144,12 @@ struct Options
 // The reference variant, with a stable name. The default Options{} is this variant.
 inline constexpr Options referenceOptions{};
 
-// The automatic iteration limit (Options::maxIterations = 0) for shapes of countA and countB points.
-constexpr int defaultMaxIterations(int countA, int countB) { return 32 + 2 * (countA + countB); }
+// The automatic iteration limit (Options::maxIterations = 0) for shapes of countA and countB
+// points.
+constexpr int defaultMaxIterations(int countA, int countB)
+{
+    return 32 + 2 * (countA + countB);
+}
 
 // The iteration limit a query with these options runs under.
 constexpr int iterationLimit(const Options& options, int countA, int countB)
@@ -159,11 +171,16 @@ constexpr const char* stopReasonName(StopReason r)
 {
     switch (r)
     {
-    case StopReason::RepeatedSupport: return "repeated-support";
-    case StopReason::Containment: return "containment";
-    case StopReason::ZeroDirection: return "zero-direction";
-    case StopReason::DualityGap: return "duality-gap";
-    case StopReason::IterationLimit: return "iteration-limit";
+    case StopReason::RepeatedSupport:
+        return "repeated-support";
+    case StopReason::Containment:
+        return "containment";
+    case StopReason::ZeroDirection:
+        return "zero-direction";
+    case StopReason::DualityGap:
+        return "duality-gap";
+    case StopReason::IterationLimit:
+        return "iteration-limit";
     }
     return "?";
 }
@@ -183,12 +200,18 @@ constexpr const char* correctPathName(CorrectPath p)
 {
     switch (p)
     {
-    case CorrectPath::Plain: return "plain";
-    case CorrectPath::Double: return "double";
-    case CorrectPath::Extended: return "extended";
-    case CorrectPath::DoubleDouble: return "double-double";
-    case CorrectPath::NeedsExact: return "needs-exact";
-    case CorrectPath::Exact: return "exact";
+    case CorrectPath::Plain:
+        return "plain";
+    case CorrectPath::Double:
+        return "double";
+    case CorrectPath::Extended:
+        return "extended";
+    case CorrectPath::DoubleDouble:
+        return "double-double";
+    case CorrectPath::NeedsExact:
+        return "needs-exact";
+    case CorrectPath::Exact:
+        return "exact";
     }
     return "?";
 }
@@ -203,12 +226,12 @@ static_assert(stopReasonName(StopReason(stopReasonCount - 1))[0] != '?' &&
 
 template <class T> struct SimplexVertex
 {
-    Vec2<T> wA;     // support point of A (compute frame)
-    Vec2<T> wB;     // support point of B (compute frame)
-    Vec2<T> w;      // wA - wB, a point of the Minkowski difference Z
-    T a;            // barycentric weight of this vertex in the closest point
-    int indexA;     // index of wA in A's points
-    int indexB;     // index of wB in B's points
+    Vec2<T> wA; // support point of A (compute frame)
+    Vec2<T> wB; // support point of B (compute frame)
+    Vec2<T> w;  // wA - wB, a point of the Minkowski difference Z
+    T a;        // barycentric weight of this vertex in the closest point
+    int indexA; // index of wA in A's points
+    int indexB; // index of wB in B's points
 };
 
 template <class T> struct Simplex
@@ -221,8 +244,8 @@ template <class T> struct Simplex
 // output cache back in for the next query between the same shapes.
 // A final edge is stored in canonical order, the origin on the left of Z's edge from slot 0 to
 // slot 1: a warm start's first search direction then always takes the same side of its sign test,
-// which the branch predictor learns (why: docs/speed.md, "Canonical cache order"). `edgeBase` is the
-// slot the distance was measured from (the query's own first vertex), so that a repeated query
+// which the branch predictor learns (why: docs/speed.md, "Canonical cache order"). `edgeBase` is
+// the slot the distance was measured from (the query's own first vertex), so that a repeated query
 // returns the very same bits as the cold one.
 struct SimplexCache
 {
@@ -253,18 +276,18 @@ template <class T> struct DistanceInput
 // and any finite rotation (c, s) but (0, 0), which maps a shape to one point (docs/gjk.md).
 template <class T> constexpr bool meetsInputContract(const DistanceInput<T>& in)
 {
-    return in.proxyA.count > 0 && in.proxyB.count > 0 && in.proxyA.radius >= T(0) && in.proxyB.radius >= T(0) &&
-           !(in.transformA.q.c == T(0) && in.transformA.q.s == T(0)) &&
+    return in.proxyA.count > 0 && in.proxyB.count > 0 && in.proxyA.radius >= T(0) &&
+           in.proxyB.radius >= T(0) && !(in.transformA.q.c == T(0) && in.transformA.q.s == T(0)) &&
            !(in.transformB.q.c == T(0) && in.transformB.q.s == T(0));
 }
 
 template <class T> struct DistanceOutput
 {
-    Vec2<T> pointA{};    // closest point on A (world), on the rounded surface when radii are used
-    Vec2<T> pointB{};    // closest point on B (world)
-    Vec2<T> normal{};    // unit, from pointA towards pointB when distance > 0; zero otherwise
-    T distance = T(0);   // >= 0
-    int iterations = 0;  // support points computed
+    Vec2<T> pointA{};   // closest point on A (world), on the rounded surface when radii are used
+    Vec2<T> pointB{};   // closest point on B (world)
+    Vec2<T> normal{};   // unit, from pointA towards pointB when distance > 0; zero otherwise
+    T distance = T(0);  // >= 0
+    int iterations = 0; // support points computed
     int simplexCount = 0;
     StopReason stop = StopReason::RepeatedSupport;
     // The query left its safe range and rescaling could not bring it back: a support point had a

@@ -24,10 +24,17 @@ std::string embedJson(const nlohmann::json& data)
         // the \u escape is equivalent.
         switch (c)
         {
-        case '<': out += "\\u003c"; break;
-        case '>': out += "\\u003e"; break;
-        case '&': out += "\\u0026"; break;
-        default: out += c;
+        case '<':
+            out += "\\u003c";
+            break;
+        case '>':
+            out += "\\u003e";
+            break;
+        case '&':
+            out += "\\u0026";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -43,11 +50,20 @@ std::string attribute(std::string_view text)
     for (char c : text)
         switch (c)
         {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     return out;
 }
@@ -79,7 +95,8 @@ std::string renderPage(std::string_view mode, std::string_view schema, const nlo
     {
         const std::size_t at = tpl.find(s.key, pos);
         if (at == std::string_view::npos)
-            throw std::logic_error("gjk_html: page template lacks placeholder " + std::string(s.key));
+            throw std::logic_error("gjk_html: page template lacks placeholder " +
+                                   std::string(s.key));
         out.append(tpl.substr(pos, at - pos));
         out.append(s.value);
         pos = at + s.key.size();
@@ -95,8 +112,14 @@ std::string renderReport(const nlohmann::json& report, std::string_view schema)
     return renderPage("report", schema, report);
 }
 
-std::string renderCase(const nlohmann::json& caseDetail) { return renderPage("case", "", caseDetail); }
+std::string renderCase(const nlohmann::json& caseDetail)
+{
+    return renderPage("case", "", caseDetail);
+}
 
-std::string_view styleSheet() { return assets::report_css(); }
+std::string_view styleSheet()
+{
+    return assets::report_css();
+}
 
 } // namespace gjk_html

@@ -20,102 +20,104 @@
 #include <stdint.h>
 
 #ifdef __cplusplus
-extern "C" {
+extern "C"
+{
 #endif
 
 #define GJK2D_PLUGIN_ABI_VERSION 1
 #define GJK2D_PLUGIN_ENTRY_POINT "gjk2d_plugin_describe"
 
-/* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
- * to that type and judges it against the exact truth of those rounded inputs. */
-enum gjk2d_scalar
-{
-    GJK2D_SCALAR_FLOAT = 0,
-    GJK2D_SCALAR_DOUBLE = 1
-};
+    /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
+     * to that type and judges it against the exact truth of those rounded inputs. */
+    enum gjk2d_scalar
+    {
+        GJK2D_SCALAR_FLOAT = 0,
+        GJK2D_SCALAR_DOUBLE = 1
+    };
 
-/* What the implementation accepts (bits of gjk2d_implementation.accepts). A case it does not
- * accept is counted as refused without calling it. */
-enum gjk2d_accepts
-{
-    GJK2D_ACCEPTS_RADIUS = 1u << 0,    /* shapes with radius > 0 (rounded polygons, capsules) */
-    GJK2D_ACCEPTS_WARM_START = 1u << 1 /* reads and updates `cache` (cache_bytes of it) */
-};
+    /* What the implementation accepts (bits of gjk2d_implementation.accepts). A case it does not
+     * accept is counted as refused without calling it. */
+    enum gjk2d_accepts
+    {
+        GJK2D_ACCEPTS_RADIUS = 1u << 0,    /* shapes with radius > 0 (rounded polygons, capsules) */
+        GJK2D_ACCEPTS_WARM_START = 1u << 1 /* reads and updates `cache` (cache_bytes of it) */
+    };
 
-/* The answer of one call. */
-enum gjk2d_status
-{
-    GJK2D_STATUS_OK = 0,      /* distance and witness points are set */
-    GJK2D_STATUS_REFUSED = 1, /* cannot take this case: counted as refused, not as a failure */
-    GJK2D_STATUS_ERROR = 2    /* tried and failed: counted as an error (a failure when judged) */
-};
+    /* The answer of one call. */
+    enum gjk2d_status
+    {
+        GJK2D_STATUS_OK = 0,      /* distance and witness points are set */
+        GJK2D_STATUS_REFUSED = 1, /* cannot take this case: counted as refused, not as a failure */
+        GJK2D_STATUS_ERROR = 2 /* tried and failed: counted as an error (a failure when judged) */
+    };
 
-/* A shape as the case gives it: `count` points (x0, y0, x1, y1, ...) in the shape's local frame,
- * a radius, and the transform to the world: world = R * local + position, with
- * R = [[c, -s], [s, c]] (rotation = {c, s}, given as the case's two numbers, not an angle). */
-typedef struct gjk2d_shape_f
-{
-    const float* points;
-    int32_t count;
-    float radius;
-    float position[2];
-    float rotation[2];
-} gjk2d_shape_f;
+    /* A shape as the case gives it: `count` points (x0, y0, x1, y1, ...) in the shape's local
+     * frame, a radius, and the transform to the world: world = R * local + position, with R = [[c,
+     * -s], [s, c]] (rotation = {c, s}, given as the case's two numbers, not an angle). */
+    typedef struct gjk2d_shape_f
+    {
+        const float* points;
+        int32_t count;
+        float radius;
+        float position[2];
+        float rotation[2];
+    } gjk2d_shape_f;
 
-typedef struct gjk2d_shape_d
-{
-    const double* points;
-    int32_t count;
-    double radius;
-    double position[2];
-    double rotation[2];
-} gjk2d_shape_d;
+    typedef struct gjk2d_shape_d
+    {
+        const double* points;
+        int32_t count;
+        double radius;
+        double position[2];
+        double rotation[2];
+    } gjk2d_shape_d;
 
-/* The result: the distance between the two shapes (radii included, 0 when they overlap), the
- * witness points on A and on B in world coordinates, and the iteration count (-1: not known). */
-typedef struct gjk2d_result_f
-{
-    float distance;
-    float point_a[2];
-    float point_b[2];
-    int32_t iterations;
-} gjk2d_result_f;
+    /* The result: the distance between the two shapes (radii included, 0 when they overlap), the
+     * witness points on A and on B in world coordinates, and the iteration count (-1: not known).
+     */
+    typedef struct gjk2d_result_f
+    {
+        float distance;
+        float point_a[2];
+        float point_b[2];
+        int32_t iterations;
+    } gjk2d_result_f;
 
-typedef struct gjk2d_result_d
-{
-    double distance;
-    double point_a[2];
-    double point_b[2];
-    int32_t iterations;
-} gjk2d_result_d;
+    typedef struct gjk2d_result_d
+    {
+        double distance;
+        double point_a[2];
+        double point_b[2];
+        int32_t iterations;
+    } gjk2d_result_d;
 
-/* `cache` points to cache_bytes bytes, zeroed for a cold start (NULL when cache_bytes is 0).
- * Returns a gjk2d_status. */
-typedef int32_t (*gjk2d_distance_f_fn)(const gjk2d_shape_f* a, const gjk2d_shape_f* b,
-                                        void* cache, gjk2d_result_f* out);
-typedef int32_t (*gjk2d_distance_d_fn)(const gjk2d_shape_d* a, const gjk2d_shape_d* b,
-                                        void* cache, gjk2d_result_d* out);
+    /* `cache` points to cache_bytes bytes, zeroed for a cold start (NULL when cache_bytes is 0).
+     * Returns a gjk2d_status. */
+    typedef int32_t (*gjk2d_distance_f_fn)(const gjk2d_shape_f* a, const gjk2d_shape_f* b,
+                                           void* cache, gjk2d_result_f* out);
+    typedef int32_t (*gjk2d_distance_d_fn)(const gjk2d_shape_d* a, const gjk2d_shape_d* b,
+                                           void* cache, gjk2d_result_d* out);
 
-typedef struct gjk2d_implementation
-{
-    const char* name;        /* the variant's name: [A-Za-z0-9._+-]{1,64}, unique in the run */
-    const char* description; /* one line for the report, may be NULL */
-    int32_t scalar;          /* a gjk2d_scalar */
-    uint32_t accepts;        /* gjk2d_accepts bits */
-    int32_t max_vertices;    /* largest point count of one shape it takes; 0: no limit */
-    int32_t cache_bytes;     /* size of its warm-start cache, 0..4096 */
-    gjk2d_distance_f_fn distance_f; /* set when scalar is GJK2D_SCALAR_FLOAT, else NULL */
-    gjk2d_distance_d_fn distance_d; /* set when scalar is GJK2D_SCALAR_DOUBLE, else NULL */
-} gjk2d_implementation;
+    typedef struct gjk2d_implementation
+    {
+        const char* name;        /* the variant's name: [A-Za-z0-9._+-]{1,64}, unique in the run */
+        const char* description; /* one line for the report, may be NULL */
+        int32_t scalar;          /* a gjk2d_scalar */
+        uint32_t accepts;        /* gjk2d_accepts bits */
+        int32_t max_vertices;    /* largest point count of one shape it takes; 0: no limit */
+        int32_t cache_bytes;     /* size of its warm-start cache, 0..4096 */
+        gjk2d_distance_f_fn distance_f; /* set when scalar is GJK2D_SCALAR_FLOAT, else NULL */
+        gjk2d_distance_d_fn distance_d; /* set when scalar is GJK2D_SCALAR_DOUBLE, else NULL */
+    } gjk2d_implementation;
 
-typedef struct gjk2d_plugin
-{
-    int32_t abi_version; /* GJK2D_PLUGIN_ABI_VERSION */
-    int32_t count;       /* implementations, 1..64 */
-    const gjk2d_implementation* implementations;
-} gjk2d_plugin;
+    typedef struct gjk2d_plugin
+    {
+        int32_t abi_version; /* GJK2D_PLUGIN_ABI_VERSION */
+        int32_t count;       /* implementations, 1..64 */
+        const gjk2d_implementation* implementations;
+    } gjk2d_plugin;
 
-typedef const gjk2d_plugin* (*gjk2d_plugin_describe_fn)(void);
+    typedef const gjk2d_plugin* (*gjk2d_plugin_describe_fn)(void);
 
 #if defined(_WIN32)
 #define GJK2D_PLUGIN_EXPORT __declspec(dllexport)

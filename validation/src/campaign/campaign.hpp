@@ -4,13 +4,13 @@
 
 #include "common/context.hpp"
 #include "common/output.hpp"
-#include "inputs/cases.hpp"
-#include "inputs/sources.hpp"
 #include "evaluate/evaluate.hpp"
+#include "evaluate/variants.hpp"
+#include "inputs/cases.hpp"
 #include "inputs/families.hpp"
+#include "inputs/sources.hpp"
 #include "report/pages.hpp"
 #include "statistics/stats.hpp"
-#include "evaluate/variants.hpp"
 
 #include <cstdint>
 #include <ostream>
@@ -49,7 +49,8 @@ struct CampaignConfig
     std::string checkpointDir;
     double checkpointSeconds = 60;
     bool resume = false;
-    double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
+    double pluginTimeoutSeconds =
+        kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
 
 // The default campaign of `gjk-validate run` without inputs.

@@ -38,8 +38,8 @@ ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Sha
 {
     const std::string path = checkpointFile(config).string();
     if (!std::filesystem::exists(path))
-        throw InputError(fmt::format("--resume: {}: no checkpoint to resume from",
-                                     shownPath(path)));
+        throw InputError(
+            fmt::format("--resume: {}: no checkpoint to resume from", shownPath(path)));
     const Json j = readJsonFile(path, "--resume");
     if (!j.is_object() || j.value("schema", "") != kCheckpointSchema)
         throw InputError(
@@ -52,8 +52,8 @@ ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Sha
     const Json& sh = j.at("state").at("shard");
     if (sh.at("index").get<std::size_t>() != shard.index ||
         sh.at("count").get<std::size_t>() != shard.count)
-        throw InputError(fmt::format("--resume: {}: the checkpoint is of another shard",
-                                     shownPath(path)));
+        throw InputError(
+            fmt::format("--resume: {}: the checkpoint is of another shard", shownPath(path)));
     mergeShard(state, j.at("state"), shard, ctx, std::size_t(std::max(0, config.worstPerFamily)));
     return {j.at("next").at(0).get<std::size_t>(), j.at("next").at(1).get<std::size_t>()};
 }

@@ -61,8 +61,11 @@ EvalContext evalContext(const CampaignConfig& config)
 FamilyResult emptyResult(const CampaignInput& input, const CampaignConfig& config,
                          const EvalContext& ctx)
 {
-    return {&input, std::vector<Stats>(ctx.variants.size()), MakeupFold(input.makeup),
-            WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))), {}};
+    return {&input,
+            std::vector<Stats>(ctx.variants.size()),
+            MakeupFold(input.makeup),
+            WorstKeeper(std::size_t(std::max(0, config.worstPerFamily))),
+            {}};
 }
 
 namespace
@@ -97,7 +100,8 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
                 });
     auto t1 = Clock::now();
     // Plugin variants, in child processes, between the parallel phases (no worker thread runs).
-    answerPluginVariants(chunk.cases.data(), e.prepared.data(), e.outcomes.data(), chunk.size(), ctx);
+    answerPluginVariants(chunk.cases.data(), e.prepared.data(), e.outcomes.data(), chunk.size(),
+                         ctx);
     parallelFor(chunk.size(), threads, progress,
                 [&](std::size_t i)
                 {
@@ -137,7 +141,8 @@ void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, Evalu
         {
             ++r.rejected;
             if (rejected.size() < kMaxRejectedListed)
-                rejected.push_back({input, chunk.first + i,
+                rejected.push_back({input,
+                                    chunk.first + i,
                                     {{"name", chunk.labels[i]},
                                      {"family", r.input->name},
                                      {"reason", o.rejected}}});
@@ -175,27 +180,26 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
     };
     auto t = Clock::now();
     std::size_t seen = 0; // cases up to the end of the last chunk passed on (for the progress)
-    r.input->stream(chunkCases,
-                    [&](CaseChunk& chunk)
-                    {
-                        state.seconds.inputs += elapsed(t, Clock::now());
-                        const std::size_t j = chunk.first / chunkCases;
-                        progress.add(chunk.first - seen); // the chunks left out before it
-                        seen = chunk.first + chunk.size();
-                        if (skip(j)) // a case file passes every chunk
-                            progress.add(chunk.size());
-                        else
-                        {
-                            EvaluatedChunk e =
-                                evaluateChunk(chunk, ctx, threads, progress, state.seconds);
-                            foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected,
-                                      perCase);
-                            if (plan.afterChunk)
-                                plan.afterChunk({inputIndex, j + 1});
-                        }
-                        t = Clock::now();
-                    },
-                    skip);
+    r.input->stream(
+        chunkCases,
+        [&](CaseChunk& chunk)
+        {
+            state.seconds.inputs += elapsed(t, Clock::now());
+            const std::size_t j = chunk.first / chunkCases;
+            progress.add(chunk.first - seen); // the chunks left out before it
+            seen = chunk.first + chunk.size();
+            if (skip(j)) // a case file passes every chunk
+                progress.add(chunk.size());
+            else
+            {
+                EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, state.seconds);
+                foldChunk(r, inputIndex, chunk, e, config, ctx, state.rejected, perCase);
+                if (plan.afterChunk)
+                    plan.afterChunk({inputIndex, j + 1});
+            }
+            t = Clock::now();
+        },
+        skip);
     progress.add(r.input->count - std::min(seen, r.input->count));
     state.seconds.inputs += elapsed(t, Clock::now());
     if (perCase && !*perCase)

@@ -1,7 +1,7 @@
 #include "campaign/search.hpp"
 
-#include "inputs/geometry.hpp"
 #include "common/parallel.hpp"
+#include "inputs/geometry.hpp"
 #include "inputs/rng.hpp"
 
 #include <fmt/format.h>
@@ -35,8 +35,8 @@ double secondsSince(Clock::time_point t0)
 // x moved by k ulps (k < 0: downwards).
 double ulps(double x, int k)
 {
-    const double dir = k > 0 ? std::numeric_limits<double>::infinity()
-                             : -std::numeric_limits<double>::infinity();
+    const double dir =
+        k > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
     for (int i = 0; i < std::abs(k); ++i)
         x = std::nextafter(x, dir);
     return x;
@@ -165,7 +165,8 @@ bool shiftGap(Case& c, const SearchCase& parent, Rng& rng)
     const double len = std::hypot(dx, dy);
     if (!(parent.distance > 0) || !(len > 0) || !std::isfinite(len))
         return false;
-    const double f = rng.integer(0, 15) == 0 ? 0.0 : rng.sign() * std::ldexp(1.0, -rng.integer(1, 50));
+    const double f =
+        rng.integer(0, 15) == 0 ? 0.0 : rng.sign() * std::ldexp(1.0, -rng.integer(1, 50));
     const double move = parent.distance * (1 - f);
     c.b.px -= dx / len * move;
     c.b.py -= dy / len * move;
@@ -209,8 +210,7 @@ bool vertexNearEdge(Case& c, const SearchCase&, Rng& rng)
     const auto p = s.points[std::size_t(i)], q = s.points[std::size_t((i + 1) % n)];
     const double t = rng.uniform(), off = rng.sign() * std::ldexp(1.0, -rng.integer(10, 60));
     const double ex = q[0] - p[0], ey = q[1] - p[1];
-    s.points.insert(s.points.begin() + i + 1,
-                    {p[0] + t * ex - off * ey, p[1] + t * ey + off * ex});
+    s.points.insert(s.points.begin() + i + 1, {p[0] + t * ex - off * ey, p[1] + t * ey + off * ex});
     return true;
 }
 
@@ -238,12 +238,18 @@ struct Mutation
 // The mutations and how often each is drawn (weights out of their sum). shift-gap reads the
 // parent's witnesses, so it is applied before the others of a step.
 constexpr Mutation kMutations[] = {
-    {"shift-gap", shiftGap, 4},          {"vertex-ulps", vertexUlps, 4},
-    {"vertex-step", vertexStep, 3},      {"shape-ulps", shapeUlps, 2},
-    {"shape-step", shapeStep, 2},        {"rotate-tiny", rotateTiny, 3},
-    {"scale-pow2", scalePow2, 1},        {"scale-factor", scaleFactor, 2},
-    {"duplicate-vertex", duplicateVertex, 1}, {"collapse-vertex", collapseVertex, 1},
-    {"vertex-near-edge", vertexNearEdge, 2},  {"swap", swapShapes, 1},
+    {"shift-gap", shiftGap, 4},
+    {"vertex-ulps", vertexUlps, 4},
+    {"vertex-step", vertexStep, 3},
+    {"shape-ulps", shapeUlps, 2},
+    {"shape-step", shapeStep, 2},
+    {"rotate-tiny", rotateTiny, 3},
+    {"scale-pow2", scalePow2, 1},
+    {"scale-factor", scaleFactor, 2},
+    {"duplicate-vertex", duplicateVertex, 1},
+    {"collapse-vertex", collapseVertex, 1},
+    {"vertex-near-edge", vertexNearEdge, 2},
+    {"swap", swapShapes, 1},
     {"float-round", floatRound, 1},
 };
 
@@ -369,7 +375,7 @@ class Search
                 generation();
         res_.seconds = secondsSince(t0_);
         res_.population = std::move(population_);
-        res_.exitCode = res_.failures.cases > 0 ? kExitFail
+        res_.exitCode = res_.failures.cases > 0  ? kExitFail
                         : res_.inputRejected > 0 ? kExitInput
                                                  : kExitPass;
         return std::move(res_);
@@ -378,8 +384,9 @@ class Search
   private:
     std::uint64_t remaining() const
     {
-        return cfg_.evaluations > 0 ? cfg_.evaluations - std::min(cfg_.evaluations, res_.evaluations)
-                                    : std::numeric_limits<std::uint64_t>::max();
+        return cfg_.evaluations > 0
+                   ? cfg_.evaluations - std::min(cfg_.evaluations, res_.evaluations)
+                   : std::numeric_limits<std::uint64_t>::max();
     }
 
     bool budgetSpent()
@@ -426,8 +433,8 @@ class Search
                 return;
             }
             std::vector<Candidate> batch;
-            for (std::size_t i = s; i < std::min(all.size(), s + chunk) && batch.size() < remaining();
-                 ++i)
+            for (std::size_t i = s;
+                 i < std::min(all.size(), s + chunk) && batch.size() < remaining(); ++i)
                 batch.push_back(std::move(all[i]));
             evaluateAll(batch);
             for (auto& c : batch)
@@ -459,7 +466,8 @@ class Search
     // evaluation index) and the population as it stands, evaluated in parallel, merged in order.
     void generation()
     {
-        const std::size_t n = std::size_t(std::min<std::uint64_t>(remaining(), std::uint64_t(cfg_.batch)));
+        const std::size_t n =
+            std::size_t(std::min<std::uint64_t>(remaining(), std::uint64_t(cfg_.batch)));
         std::vector<Candidate> batch(n);
         for (std::size_t j = 0; j < n; ++j)
             batch[j].sc = mutant(res_.evaluations + j);
@@ -483,10 +491,10 @@ class Search
         Rng rng(mix64(baseSeed_ + index));
         // Restart from a start case now and then (1 in 8), else a member, biased to the best.
         const bool restart = population_.empty() || rng.integer(0, 7) == 0;
-        const SearchCase& parent =
-            restart ? start_[std::size_t(rng.next() % start_.size())]
-                    : population_[std::size_t(double(population_.size()) * rng.uniform() *
-                                              rng.uniform())];
+        const SearchCase& parent = restart
+                                       ? start_[std::size_t(rng.next() % start_.size())]
+                                       : population_[std::size_t(double(population_.size()) *
+                                                                 rng.uniform() * rng.uniform())];
         const int count = 1 + (rng.uniform() < 0.5 ? 1 : 0) + (rng.uniform() < 0.25 ? 1 : 0);
         std::vector<std::size_t> ops;
         for (int i = 0; i < count; ++i)
@@ -502,8 +510,8 @@ class Search
             for (int attempt = 0; attempt < 8 && !kMutations[op].apply(child.c, parent, rng);
                  ++attempt)
                 op = drawMutation(rng);
-            child.lastMutation += (child.lastMutation.empty() ? "" : "+") +
-                                  std::string(kMutations[op].name);
+            child.lastMutation +=
+                (child.lastMutation.empty() ? "" : "+") + std::string(kMutations[op].name);
             ++child.mutations;
         }
         return child;
@@ -640,7 +648,8 @@ class Search
     void sortPopulation()
     {
         std::stable_sort(population_.begin(), population_.end(),
-                         [](const SearchCase& x, const SearchCase& y) { return x.score > y.score; });
+                         [](const SearchCase& x, const SearchCase& y)
+                         { return x.score > y.score; });
         const std::size_t keep = std::size_t(std::max(1, cfg_.population));
         const std::size_t perOrigin = std::max<std::size_t>(1, keep / 4);
         std::map<std::string, std::size_t> fromOrigin;

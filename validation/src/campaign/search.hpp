@@ -22,7 +22,7 @@ struct SearchConfig
     std::vector<std::string> families, caseFiles;
     std::uint64_t seed = 1;
     std::vector<const VariantInfo*> variants;
-    int threads = 0;             // 0: all cores (the result does not depend on it)
+    int threads = 0;               // 0: all cores (the result does not depend on it)
     std::uint64_t evaluations = 0; // budget: case evaluations (start cases included); 0 = none
     double seconds = 0;            // budget: wall time, checked between generations; 0 = none
     int population = 32;           // K: the best cases kept (at most K/4 from one start case)
@@ -50,7 +50,7 @@ struct SearchCase
 // What can go wrong per failing evaluation, counted per kind (one case may count in several).
 struct SearchFailures
 {
-    std::uint64_t cases = 0;                              // evaluations with a failing variant
+    std::uint64_t cases = 0; // evaluations with a failing variant
     std::uint64_t beyondBound = 0, nonfinite = 0, misclassified = 0, iterationLimit = 0,
                   interval = 0;
     std::uint64_t invalid = 0; // an answer outside its contract (negative, witness points)

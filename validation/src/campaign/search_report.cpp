@@ -150,9 +150,9 @@ std::string searchCaseFileText(const SearchConfig& config, const SearchResult& r
                     r.stoppedBy.empty() ? "the end of the start cases" : r.stoppedBy)};
     std::string best = "bound_ratio per variant, largest of a passing case / of any case:";
     for (std::size_t k = 0; k < config.variants.size(); ++k)
-        best += fmt::format(" {} {} / {} ({});", config.variants[k]->name,
-                            ratioText(r.bestPassing[k]), ratioText(r.best[k]),
-                            r.bestCase[k].empty() ? "-" : r.bestCase[k]);
+        best +=
+            fmt::format(" {} {} / {} ({});", config.variants[k]->name, ratioText(r.bestPassing[k]),
+                        ratioText(r.best[k]), r.bestCase[k].empty() ? "-" : r.bestCase[k]);
     comments.push_back(best);
     comments.push_back(fmt::format("{} failure(s) found; the cases: the final population ({}, "
                                    "best first), then the failing cases kept (at most {})",
@@ -170,8 +170,8 @@ std::string searchCaseFileText(const SearchConfig& config, const SearchResult& r
         comments.push_back(fmt::format(
             "{}: ratio {} ({}); ratios {}; from {} by {} mutation(s), last {}{}", m.c.name,
             ratioText(m.score), std::isnan(m.score) ? "-" : config.variants[m.bestVariant]->name,
-            ratios, m.origin,
-            m.mutations, m.lastMutation, m.failure.empty() ? "" : "; FAILS: " + m.failure));
+            ratios, m.origin, m.mutations, m.lastMutation,
+            m.failure.empty() ? "" : "; FAILS: " + m.failure));
         cases.push_back(m.c);
     };
     for (const auto& m : r.population)

@@ -29,8 +29,7 @@ Json campaignIdentity(const CampaignConfig& config)
                 {"git_revision", gitRevision()}};
 }
 
-Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard,
-                int threads)
+Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard, int threads)
 {
     Json families = Json::array();
     for (const auto& f : state.families)
@@ -66,8 +65,7 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
                 {"shard", {{"index", shard.index}, {"count", shard.count}}},
                 {"command", config.command},
                 {"threads", threads},
-                {"elapsed_s",
-                 {t.inputs, t.exact, t.gjk, t.witness, t.timing}},
+                {"elapsed_s", {t.inputs, t.exact, t.gjk, t.witness, t.timing}},
                 {"families", std::move(families)},
                 {"rejected", std::move(rejected)}};
 }
@@ -161,8 +159,8 @@ void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalCont
         }
     }
     for (const auto& r : j.at("rejected"))
-        state.rejected.push_back({r.at("input").get<std::size_t>(),
-                                  r.at("index").get<std::size_t>(), r.at("entry")});
+        state.rejected.push_back(
+            {r.at("input").get<std::size_t>(), r.at("index").get<std::size_t>(), r.at("entry")});
     const Json& e = j.at("elapsed_s");
     state.seconds.inputs += e[0].get<double>();
     state.seconds.exact += e[1].get<double>();
@@ -193,8 +191,8 @@ std::size_t checkShardSet(const std::vector<Json>& shards, const std::vector<std
         const std::string difference =
             identityDifference(shardIdentity(shards[i], names[i]), identity, shownPath(names[0]));
         if (!difference.empty())
-            throw InputError(fmt::format("{}: a shard of another campaign: {}",
-                                         shownPath(names[i]), difference));
+            throw InputError(fmt::format("{}: a shard of another campaign: {}", shownPath(names[i]),
+                                         difference));
         const Json& sh = shards[i].at("shard");
         const auto index = sh.at("index").get<std::size_t>();
         if (sh.at("count").get<std::size_t>() != count || index >= count)

@@ -68,7 +68,7 @@ struct CampaignState
 struct FoldPlan
 {
     Shard shard;
-    ChunkPosition resumeAt;                               // chunks before it are folded already
+    ChunkPosition resumeAt;                             // chunks before it are folded already
     std::function<void(ChunkPosition next)> afterChunk; // may be empty
 };
 
@@ -103,8 +103,7 @@ std::function<void(ChunkPosition next)> checkpointAfterChunk(const CampaignState
 // --- Shard states (shards.cpp) ----------------------------------------------------------------
 
 // What `run --shard` writes and `merge` (and a checkpoint) reads.
-Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard,
-                int threads);
+Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard, int threads);
 // What makes two shards parts of one campaign: everything that changes a case, its evaluation
 // or the report, plus the code's revision.
 Json campaignIdentity(const CampaignConfig& config);

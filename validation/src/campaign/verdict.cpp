@@ -118,11 +118,11 @@ Json variantsJson(const EvalContext& ctx)
         j["options"] = optionsJson(v->options);
         if (v->plugin) // the options name the bound it is compared with; the answer is the plugin's
         {
-            j["plugin"] = {{"path", v->plugin->path},
-                           {"accepts_radius", (v->plugin->impl.accepts & GJK2D_ACCEPTS_RADIUS) != 0},
-                           {"accepts_warm_start",
-                            (v->plugin->impl.accepts & GJK2D_ACCEPTS_WARM_START) != 0},
-                           {"max_vertices", v->plugin->impl.max_vertices}};
+            j["plugin"] = {
+                {"path", v->plugin->path},
+                {"accepts_radius", (v->plugin->impl.accepts & GJK2D_ACCEPTS_RADIUS) != 0},
+                {"accepts_warm_start", (v->plugin->impl.accepts & GJK2D_ACCEPTS_WARM_START) != 0},
+                {"max_vertices", v->plugin->impl.max_vertices}};
         }
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};

@@ -146,11 +146,12 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
                    "becomes a comparison variant (evaluated in a child process); repeatable, each "
                    "file once")
         ->allow_extra_args(false);
-    auto* judge = sub.add_option("--judge", o.judge,
-                                 "judge this plugin implementation like gjk2d's judged variants: a "
-                                 "case fails beyond the error bound of gjk2d's reference options in "
-                                 "its scalar type; repeatable")
-                      ->allow_extra_args(false);
+    auto* judge =
+        sub.add_option("--judge", o.judge,
+                       "judge this plugin implementation like gjk2d's judged variants: a "
+                       "case fails beyond the error bound of gjk2d's reference options in "
+                       "its scalar type; repeatable")
+            ->allow_extra_args(false);
     if (!judges) // parsed, to be refused with a line that says why (selectVariants)
         judge->group("");
     sub.add_option("--plugin-timeout", o.timeoutSeconds,
@@ -159,9 +160,9 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
     sub.add_flag("--no-default-plugins", o.noDefault,
                  shipped == ShippedPlugins::JoinDefaultList
                      ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
-                           "joins when --variants is left at its default"
-                         : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
-                           "--variants can name");
+                       "joins when --variants is left at its default"
+                     : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
+                       "--variants can name");
     o.judges = judges;
 }
 
@@ -246,9 +247,11 @@ void printPluginLogs(const std::vector<PluginLog>& logs, const fs::path& dir)
     for (const PluginLog& l : logs)
     {
         const std::string how =
-            l.capped ? fmt::format("at least {} bytes (the log's cap; the rest was dropped)", l.bytes)
-                     : fmt::format("{} bytes", l.bytes);
-        std::fprintf(stderr, "gjk-validate: plugin %s printed %s on its stdout and stderr: see %s\n",
+            l.capped
+                ? fmt::format("at least {} bytes (the log's cap; the rest was dropped)", l.bytes)
+                : fmt::format("{} bytes", l.bytes);
+        std::fprintf(stderr,
+                     "gjk-validate: plugin %s printed %s on its stdout and stderr: see %s\n",
                      l.plugin.c_str(), how.c_str(), (dir / l.file).c_str());
     }
 }

@@ -1,12 +1,12 @@
 // gjk-validate explain: one case in detail (inputs, each variant's result and trace, the exact
 // result, the errors), as text, CaseDetail JSON or the iteration viewer page.
+#include "report/explain.hpp"
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "evaluate/evaluate.hpp"
 #include "evaluate/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
-#include "report/explain.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -16,8 +16,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
-#include <vector>
 #include <unistd.h>
+#include <vector>
 
 #if defined(GJK2D_HAVE_HTML)
 #include "gjk_html/html.hpp"
@@ -141,11 +141,9 @@ FoundCase findCase(const Options& o, const std::string& exFile, std::uint64_t se
     FoundCase found =
         o.exFamily.empty() ? findInFile(o, exFile, names) : findInFamily(o, seed, names);
     if (!found.ok)
-        throw InputError(fmt::format("explain: no case named '{}' in {}; it has {}",
-                                     excerpt(o.exName),
-                                     o.exFamily.empty() ? shownPath(exFile)
-                                                        : "--family " + o.exFamily,
-                                     someNames(names)));
+        throw InputError(fmt::format(
+            "explain: no case named '{}' in {}; it has {}", excerpt(o.exName),
+            o.exFamily.empty() ? shownPath(exFile) : "--family " + o.exFamily, someNames(names)));
     if (!found.rejected.empty())
         throw InputError(
             fmt::format("explain: case '{}' is rejected: {}", excerpt(o.exName), found.rejected));

@@ -35,8 +35,7 @@ int dispatch(int argc, char** argv)
     app.set_help_all_flag("--help-all", "help for every subcommand");
     const Subcommand subcommands[] = {
         addRun(app, line),    addGenerate(app, line), addExplain(app, line), addBench(app, line),
-        addSearch(app, line), addList(app, line),     addCompare(app, line),
-        addMerge(app, line)};
+        addSearch(app, line), addList(app, line),     addCompare(app, line), addMerge(app, line)};
     try
     {
         app.parse(argc, argv);
@@ -44,7 +43,8 @@ int dispatch(int argc, char** argv)
     catch (const CLI::ParseError& e)
     {
         // --help and --version print their text; a usage error is one line on stderr, naming the
-        // option, as every other error (CLI11's own app.exit(e) adds a second "Run with --help" line).
+        // option, as every other error (CLI11's own app.exit(e) adds a second "Run with --help"
+        // line).
         if (e.get_exit_code() == 0)
             return app.exit(e) == 0 ? kExitPass : kExitInput;
         std::fprintf(stderr, "gjk-validate: error: %s (see --help)\n", e.what());

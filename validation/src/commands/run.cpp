@@ -181,19 +181,19 @@ std::string runRankShard(const RunOptions& o, const CampaignConfig& cfg, int ran
     {
         perCase.open(lines, std::ios::binary);
         if (!perCase)
-            throw OutputError(fmt::format("{}: cannot create the file: {}",
-                                          excerpt(lines.string()), std::strerror(errno)));
+            throw OutputError(fmt::format("{}: cannot create the file: {}", excerpt(lines.string()),
+                                          std::strerror(errno)));
     }
-    std::string state = runShard(cfg, campaignInputs(cfg),
-                                 Shard{std::size_t(rank), std::size_t(size)},
-                                 cfg.perCase ? &perCase : nullptr)
-                            .dump();
+    std::string state =
+        runShard(cfg, campaignInputs(cfg), Shard{std::size_t(rank), std::size_t(size)},
+                 cfg.perCase ? &perCase : nullptr)
+            .dump();
     if (cfg.perCase)
     {
         perCase.close();
         if (!perCase)
-            throw OutputError(fmt::format("{}: write failed: {}", excerpt(lines.string()),
-                                          std::strerror(errno)));
+            throw OutputError(
+                fmt::format("{}: write failed: {}", excerpt(lines.string()), std::strerror(errno)));
     }
     return state;
 }
@@ -396,9 +396,10 @@ void addPartOptions(CLI::App* run, RunOptions& o)
     run->add_flag("--resume", cfg.resume,
                   "start from --checkpoint DIR's state (the same command line otherwise); the "
                   "report is the uninterrupted run's, timing aside");
-    run->add_option("--shard", o.shard,
-                    "I/N: evaluate only shard I of N (chunks round robin) and write DIR/shard.json; "
-                    "`gjk-validate merge` makes the report of all N")
+    run->add_option(
+           "--shard", o.shard,
+           "I/N: evaluate only shard I of N (chunks round robin) and write DIR/shard.json; "
+           "`gjk-validate merge` makes the report of all N")
         ->type_name("I/N");
 }
 } // namespace

@@ -25,10 +25,10 @@ class InputError : public std::runtime_error
 
 // Exit codes of gjk-validate: the one home of their meanings. The --help footer and the table
 // in docs/validation.md are written from kExitCodeTable (a test compares the docs with it).
-inline constexpr int kExitPass = 0;     // every case within its variant's bound
-inline constexpr int kExitFail = 1;     // some case failed (error beyond bound, non-finite, limit)
-inline constexpr int kExitInput = 2;    // usage or input error (bad file, bad option, rejected case)
-inline constexpr int kExitSetup = 3;    // scripts/setup.sh only: missing Debian packages, not root
+inline constexpr int kExitPass = 0;  // every case within its variant's bound
+inline constexpr int kExitFail = 1;  // some case failed (error beyond bound, non-finite, limit)
+inline constexpr int kExitInput = 2; // usage or input error (bad file, bad option, rejected case)
+inline constexpr int kExitSetup = 3; // scripts/setup.sh only: missing Debian packages, not root
 inline constexpr int kExitInternal = 4; // a broken invariant of gjk2d itself (a bug, not the input)
 inline constexpr int kExitResources = 5; // out of memory, or writing the outputs failed
 
@@ -43,11 +43,12 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
                 "make-up check holds (run); no statistic regressed beyond its tolerance (compare); "
                 "success (other commands). Comparison variants' "
                 "failures are reported, never judged."},
-    {kExitFail, "some case failed for a judged variant (error beyond the bound, misclassification "
-                "beyond it, non-finite output, iteration limit, a certified interval missing the "
-                "truth), or a family make-up check failed; "
-                "a judged plugin (--judge) that crashed, hung or answered an error status on a case; "
-                "compare: a statistic of NEW got worse than OLD's beyond its tolerance."},
+    {kExitFail,
+     "some case failed for a judged variant (error beyond the bound, misclassification "
+     "beyond it, non-finite output, iteration limit, a certified interval missing the "
+     "truth), or a family make-up check failed; "
+     "a judged plugin (--judge) that crashed, hung or answered an error status on a case; "
+     "compare: a statistic of NEW got worse than OLD's beyond its tolerance."},
     {kExitInput, "usage or input error: a bad option or argument, an unreadable or invalid case "
                  "file, an unknown case name, an output path that cannot be used, a report compare "
                  "cannot read or two reports of different inputs, a run too large "
@@ -150,8 +151,8 @@ inline bool isValidUtf8(std::string_view s)
 // How a message quotes a user-provided string: at most about maxBytes bytes of it, valid UTF-8
 // and printable whatever the input. Control characters (C0, DEL, C1) and bytes that are not valid
 // UTF-8 become \xHH, a backslash becomes \\; when cut, "... (N bytes)" follows with the total
-// length. Never quote a user's string or JSON value any other way (hostile-input hardening: a 200 MB value was
-// echoed whole, a deep one crashed the dump).
+// length. Never quote a user's string or JSON value any other way (hostile-input hardening: a 200
+// MB value was echoed whole, a deep one crashed the dump).
 inline std::string excerpt(std::string_view s, std::size_t maxBytes = 60)
 {
     static constexpr char kHex[] = "0123456789ABCDEF";

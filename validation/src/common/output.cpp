@@ -99,8 +99,8 @@ bool isTemplateChar(char c) // mkdtemp's letters
 
 std::string stagingTemplate(const fs::path& dir)
 {
-    return (dir.parent_path() / fmt::format(".{}.tmp-{}-{}-XXXXXX", dir.filename().string(),
-                                            hostName(), ::getpid()))
+    return (dir.parent_path() /
+            fmt::format(".{}.tmp-{}-{}-XXXXXX", dir.filename().string(), hostName(), ::getpid()))
         .string();
 }
 

@@ -1,4 +1,5 @@
-// Outputs that appear whole or not at all (STYLE.md, "The runner"; hostile-input hardening: a failed write left a mix of two reports).
+// Outputs that appear whole or not at all (STYLE.md, "The runner"; hostile-input hardening: a
+// failed write left a mix of two reports).
 //   a file      is written to a temporary file beside it, flushed and fsync'ed, then renamed over
 //               it (writeFileAtomic);
 //   a directory is written into a temporary directory beside it, then swapped in with
@@ -16,12 +17,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <string>
-#include <vector>
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 namespace gjkval
 {
@@ -127,8 +128,8 @@ inline void checkOutputFile(const std::string& option, const std::string& path)
     std::error_code ec;
     const auto st = fs::status(path, ec);
     if (fs::is_directory(st))
-        throw InputError(fmt::format("{} {}: is a directory, expected a file", option,
-                                     excerpt(path)));
+        throw InputError(
+            fmt::format("{} {}: is a directory, expected a file", option, excerpt(path)));
     if (fs::exists(st) && !fs::is_regular_file(st))
         return;
     const fs::path parent = fs::absolute(fs::path(path)).parent_path();
@@ -151,8 +152,7 @@ inline void writeFileAtomic(const std::string& path, const std::string& text)
     {
         if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() ||
             std::fflush(stdout) != 0)
-            throw OutputError(fmt::format("standard output: write failed: {}",
-                                          errnoText(errno)));
+            throw OutputError(fmt::format("standard output: write failed: {}", errnoText(errno)));
         return;
     }
     std::error_code ec;
@@ -175,8 +175,8 @@ inline void writeFileAtomic(const std::string& path, const std::string& text)
         return;
     }
     const fs::path target = fs::absolute(fs::path(path));
-    std::string tmpl = (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX"))
-                           .string();
+    std::string tmpl =
+        (target.parent_path() / ("." + target.filename().string() + ".tmp-XXXXXX")).string();
     const int fd = ::mkstemp(tmpl.data());
     if (fd < 0)
         throw OutputError(fmt::format("{}: cannot create a temporary file beside it: {}",
@@ -296,9 +296,9 @@ class StagedDir
                                                   excerpt(dir_.string()), std::strerror(errno)));
                 // A file system without RENAME_EXCHANGE: two renames, a short window without DIR
                 // (never a mix of two reports).
-                std::string old = (dir_.parent_path() / ("." + dir_.filename().string() +
-                                                         ".old-XXXXXX"))
-                                      .string();
+                std::string old =
+                    (dir_.parent_path() / ("." + dir_.filename().string() + ".old-XXXXXX"))
+                        .string();
                 if (::mkdtemp(old.data()) == nullptr || std::rename(dir_.c_str(), old.c_str()) != 0)
                     throw OutputError(fmt::format("{}: cannot move the previous report aside: {}",
                                                   excerpt(dir_.string()), std::strerror(errno)));

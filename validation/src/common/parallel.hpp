@@ -1,6 +1,6 @@
 // Work on several threads whose outcome does not depend on their number: parallelFor stores each
-// index's result by index, and the callers reduce in index order. Shared by `run` (campaign/fold.cpp)
-// and `search` (search.cpp).
+// index's result by index, and the callers reduce in index order. Shared by `run`
+// (campaign/fold.cpp) and `search` (search.cpp).
 #pragma once
 
 #include <algorithm>

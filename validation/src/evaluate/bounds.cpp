@@ -20,8 +20,8 @@ struct BoundTerm
 };
 
 // The terms of u (...), in the order the sum runs (left to right, as the formula reads).
-template <std::size_t N> double sumTerms(const BoundTerm (&terms)[N], const CaseMetrics& m,
-                                         std::size_t count = N)
+template <std::size_t N>
+double sumTerms(const BoundTerm (&terms)[N], const CaseMetrics& m, std::size_t count = N)
 {
     double sum = 0;
     for (std::size_t i = 0; i < count; ++i)
@@ -37,14 +37,38 @@ template <std::size_t N> std::string termsText(const BoundTerm (&terms)[N])
     return s;
 }
 
-double metricA(const CaseMetrics& m) { return m.maxA; }
-double metricB(const CaseMetrics& m) { return m.maxB; }
-double metricD(const CaseMetrics& m) { return m.translation; }
-double metricBMapped(const CaseMetrics& m) { return m.maxBMapped; }
-double metricW(const CaseMetrics& m) { return m.maxW; }
-double metricM(const CaseMetrics& m) { return m.worldExtent; }
-double metricDistance(const CaseMetrics& m) { return m.exactDistance; }
-double metricRadii(const CaseMetrics& m) { return m.radiusA + m.radiusB; }
+double metricA(const CaseMetrics& m)
+{
+    return m.maxA;
+}
+double metricB(const CaseMetrics& m)
+{
+    return m.maxB;
+}
+double metricD(const CaseMetrics& m)
+{
+    return m.translation;
+}
+double metricBMapped(const CaseMetrics& m)
+{
+    return m.maxBMapped;
+}
+double metricW(const CaseMetrics& m)
+{
+    return m.maxW;
+}
+double metricM(const CaseMetrics& m)
+{
+    return m.worldExtent;
+}
+double metricDistance(const CaseMetrics& m)
+{
+    return m.exactDistance;
+}
+double metricRadii(const CaseMetrics& m)
+{
+    return m.radiusA + m.radiusB;
+}
 
 // The a-priori bound derived in docs/error-bound.md, to first order in u:
 //   |d_gjk - d| <= u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d + 3.5 (rA + rB)) + sub_T
@@ -57,8 +81,12 @@ double metricRadii(const CaseMetrics& m) { return m.radiusA + m.radiusB; }
 //   d + rA + rB                     subtracting the radii
 // The radii's term stays last: the duality-gap term joins the sum before it (errorBound).
 constexpr BoundTerm kErrorTerms[] = {
-    {4, "A", metricA},        {43, "B", metricB},   {10.2, "D", metricD},
-    {1.5, "B~", metricBMapped}, {5, "W", metricW}, {6.5, "d", metricDistance},
+    {4, "A", metricA},
+    {43, "B", metricB},
+    {10.2, "D", metricD},
+    {1.5, "B~", metricBMapped},
+    {5, "W", metricW},
+    {6.5, "d", metricDistance},
     {3.5, "(rA + rB)", metricRadii},
 };
 constexpr std::size_t kErrorTermCount = std::size(kErrorTerms);
@@ -69,8 +97,8 @@ constexpr double kDualityGapFactor =
     gjk::Tolerances<double>::dualityGap / gjk::Tolerances<double>::unitRoundoff;
 constexpr BoundTerm kDualityGapTerm = {kDualityGapFactor, "W", metricW};
 
-// The witness bound derived in docs/error-bound.md ("Witness points"), to first order in u, in world
-// lengths, for the reference options (every variant and plugin is held to it). Term by term:
+// The witness bound derived in docs/error-bound.md ("Witness points"), to first order in u, in
+// world lengths, for the reference options (every variant and plugin is held to it). Term by term:
 //   9 A + 15 B + 10.2 D + 10.5 B~ + 3 M + 6 (rA + rB)   each point off its shape: the weights' sum,
 //                         the combination, to world, B's mapped points (term 1), the radius offsets
 //   18 W                  a triangle's (containment) point off B: Cramer's residual with
@@ -80,8 +108,9 @@ constexpr BoundTerm kDualityGapTerm = {kDualityGapFactor, "W", metricW};
 //                         its shapes by at most the first line plus the gap
 // One number for every check: their sum.
 constexpr BoundTerm kWitnessTerms[] = {
-    {15, "A", metricA},        {15, "B", metricB},  {10.2, "D", metricD},
-    {16.5, "B~", metricBMapped}, {12, "M", metricM}, {26.5, "W", metricW},
+    {15, "A", metricA},         {15, "B", metricB},
+    {10.2, "D", metricD},       {16.5, "B~", metricBMapped},
+    {12, "M", metricM},         {26.5, "W", metricW},
     {9.5, "d", metricDistance}, {18.5, "(rA + rB)", metricRadii},
 };
 } // namespace
@@ -105,8 +134,8 @@ double errorBound(const VariantInfo& variant, const CaseMetrics& m)
 
 std::string boundFormula(const VariantInfo& variant)
 {
-    std::string f = "u (" + termsText(kErrorTerms) +
-                    ") + the type's smallest subnormal, A's local frame";
+    std::string f =
+        "u (" + termsText(kErrorTerms) + ") + the type's smallest subnormal, A's local frame";
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         f += fmt::format(" + {} u {}", kDualityGapTerm.coefficient, kDualityGapTerm.symbol);
     return f + " (docs/error-bound.md)";

@@ -24,7 +24,7 @@ struct CaseMetrics
     double maxB = 0;          // B  = max |b_j|, B's points in B's own frame
     double maxBMapped = 0;    // B~ = max |b~_j|, B's points mapped into the compute frame
     double translation = 0;   // D  = |pB - pA| (world translations)
-    double maxW = 0; // W  = max |a_i - b~_j| (exact over pairs when n*m <= 1e6, else A + B~)
+    double maxW = 0;        // W  = max |a_i - b~_j| (exact over pairs when n*m <= 1e6, else A + B~)
     double worldExtent = 0; // M = max |world coordinate| of A's and B's points, + max(rA, rB)
 };
 

@@ -8,8 +8,8 @@
 
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 
@@ -339,25 +339,30 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
     const gjk::DistanceInput<T> in = p.input<T>();
     gjk::SimplexCache batchCache, scalarCache;
     gjk::DistanceOutput<T> out;
-    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1), std::span<gjk::SimplexCache>(&batchCache, 1),
+    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
+                       std::span<gjk::SimplexCache>(&batchCache, 1),
                        std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
     const gjk::DistanceOutput<T> ref = gjk::distance(in, scalarCache, v.options);
     bool same = sameBits(out.distance, ref.distance) && sameBits(out.pointA.x, ref.pointA.x) &&
                 sameBits(out.pointA.y, ref.pointA.y) && sameBits(out.pointB.x, ref.pointB.x) &&
                 sameBits(out.pointB.y, ref.pointB.y) && sameBits(out.normal.x, ref.normal.x) &&
                 sameBits(out.normal.y, ref.normal.y) && out.iterations == ref.iterations &&
-                out.simplexCount == ref.simplexCount && out.stop == ref.stop && out.outOfRange == ref.outOfRange &&
-                out.rescaled == ref.rescaled && out.certified == ref.certified && sameBits(out.lower, ref.lower) &&
+                out.simplexCount == ref.simplexCount && out.stop == ref.stop &&
+                out.outOfRange == ref.outOfRange && out.rescaled == ref.rescaled &&
+                out.certified == ref.certified && sameBits(out.lower, ref.lower) &&
                 sameBits(out.upper, ref.upper) && batchCache.count == scalarCache.count &&
-                batchCache.edgeBase == scalarCache.edgeBase && batchCache.searchA == scalarCache.searchA &&
+                batchCache.edgeBase == scalarCache.edgeBase &&
+                batchCache.searchA == scalarCache.searchA &&
                 batchCache.searchB == scalarCache.searchB;
     for (int i = 0; i < 3; ++i)
-        same = same && batchCache.indexA[i] == scalarCache.indexA[i] && batchCache.indexB[i] == scalarCache.indexB[i];
+        same = same && batchCache.indexA[i] == scalarCache.indexA[i] &&
+               batchCache.indexB[i] == scalarCache.indexB[i];
     if (!same)
-        throw std::logic_error(fmt::format("variant {}: case '{}': gjk::distanceBatch ({}) differs from gjk::distance "
-                                           "(distance {} vs {}, {} vs {} iterations): gjk/batch.hpp promises the same bits",
-                                           v.name, c.name, gjk::batchIsaName(gjk::bestBatchIsa()),
-                                           double(out.distance), double(ref.distance), out.iterations, ref.iterations));
+        throw std::logic_error(fmt::format(
+            "variant {}: case '{}': gjk::distanceBatch ({}) differs from gjk::distance "
+            "(distance {} vs {}, {} vs {} iterations): gjk/batch.hpp promises the same bits",
+            v.name, c.name, gjk::batchIsaName(gjk::bestBatchIsa()), double(out.distance),
+            double(ref.distance), out.iterations, ref.iterations));
     return out;
 }
 } // namespace
@@ -426,14 +431,15 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
     v.witness = v.witnessRatio = kNaN;
     // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
     // certified interval that misses the truth always fails.
-    v.failed = (!v.outOfRange && (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit ||
-                                  v.beyondBound)) ||
+    v.failed = (!v.outOfRange &&
+                (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit || v.beyondBound)) ||
                (v.certified && !v.intervalContains);
     // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
     // case (out of range ones too: the exact completion answers them).
     if (zeroTolerance)
     {
-        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) != std::bit_cast<std::uint64_t>(truth.distance);
+        v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) !=
+                        std::bit_cast<std::uint64_t>(truth.distance);
         v.failed = v.failed || v.bitMismatch;
     }
 }
@@ -579,7 +585,8 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     for (std::size_t k = 0; k < nv; ++k)
     {
         VariantOutcome& v = out.variants[k];
-        if (v.skipped || v.nonfinite || (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
+        if (v.skipped || v.nonfinite ||
+            (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
             continue;
         const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
         // Variants often return the very same witness points (same scalar type): each distinct

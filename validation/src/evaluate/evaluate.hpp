@@ -4,8 +4,8 @@
 
 #include "evaluate/bounds.hpp"
 #include "evaluate/plugins.hpp"
-#include "inputs/cases.hpp"
 #include "evaluate/variants.hpp"
+#include "inputs/cases.hpp"
 
 #include "gjk/distance.hpp"
 
@@ -53,7 +53,8 @@ inline constexpr const char* kSkipNotConvexOrder =
 
 // exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
 // every variant inlines query() below, and only correctly rounded variants ever call it.
-[[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
+[[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in,
+                                       const gjk::Options& options,
                                        gjk::DistanceOutput<double>& out);
 
 // The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
@@ -69,7 +70,8 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
         gjk::distance(in, cache, v.options);
     gjk::DistanceOutput<T> out;
     if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1), std::span<gjk::SimplexCache>(&cache, 1),
+        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
+                           std::span<gjk::SimplexCache>(&cache, 1),
                            std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
     else
         out = gjk::distance(in, cache, v.options, trace);
@@ -133,7 +135,8 @@ struct VariantOutcome
     double truth = 0; // the exact distance this variant is judged against
     double R = 0;     // scale in the compute frame
     double bound = 0;
-    double witnessBound = 0; // each witness point's distance to its shape, and the gap, at most this
+    double witnessBound =
+        0; // each witness point's distance to its shape, and the gap, at most this
     // Errors; NaN = not applicable (rel and ulps when the truth is 0, witness before checking).
     double abs = 0, rel = 0, ulps = 0, normalized = 0, boundRatio = 0;
     double witness = 0, witnessGap = 0;
@@ -187,8 +190,8 @@ struct EvalContext
     exact::Options exactOptions;
     // The oracle, behind one adapter: exact::distance. Tests put a failing one here to check that a
     // broken invariant of the truth fails the run instead of rejecting the case.
-    exact::Result (*truth)(const exact::Shape&, const exact::Shape&, const exact::Options&) =
-        &exact::distance;
+    exact::Result (*truth)(const exact::Shape&, const exact::Shape&,
+                           const exact::Options&) = &exact::distance;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call
     bool needFloatTruth() const;
     bool hasPlugins() const;

@@ -6,8 +6,8 @@
 #include <fmt/format.h>
 
 #include <dlfcn.h>
-#include <poll.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <stdio_ext.h>
 #include <sys/resource.h>
@@ -354,12 +354,12 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
     std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
     void* c = im.cache_bytes > 0 ? cache.data() : nullptr;
     if (im.scalar == GJK2D_SCALAR_FLOAT)
-        return callIn<float, gjk2d_shape_f, gjk2d_result_f>(im.distance_f,
-                                                            shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf),
-                                                            shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf), c);
-    return callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d,
-                                                         shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
-                                                         shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
+        return callIn<float, gjk2d_shape_f, gjk2d_result_f>(
+            im.distance_f, shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf),
+            shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf), c);
+    return callIn<double, gjk2d_shape_d, gjk2d_result_d>(
+        im.distance_d, shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
+        shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
 }
 
 std::mutex g_messages; // crash and hang lines on stderr
@@ -420,7 +420,8 @@ std::vector<PluginLog> finishPluginLogs()
         return logs;
     for (const PluginImpl& p : registry().impls)
     {
-        if (std::any_of(logs.begin(), logs.end(), [&](const PluginLog& l) { return l.file == p.logName; }))
+        if (std::any_of(logs.begin(), logs.end(),
+                        [&](const PluginLog& l) { return l.file == p.logName; }))
             continue;
         const std::filesystem::path file = std::filesystem::path(dir) / p.logName;
         std::error_code ec;
@@ -434,8 +435,9 @@ std::vector<PluginLog> finishPluginLogs()
         if (log.capped)
             if (FILE* f = std::fopen(file.c_str(), "a"))
             {
-                std::fprintf(f, "\n[gjk-validate: this log is capped at %ju bytes of the plugin's "
-                                "output; the rest was dropped]\n",
+                std::fprintf(f,
+                             "\n[gjk-validate: this log is capped at %ju bytes of the plugin's "
+                             "output; the rest was dropped]\n",
                              std::uintmax_t(kPluginLogCapBytes));
                 std::fclose(f);
             }
@@ -448,12 +450,14 @@ PluginChild PluginChild::start(const PluginImpl* plugin, const std::function<voi
 {
     int fds[2];
     if (::pipe(fds) != 0)
-        throw std::runtime_error(fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
+        throw std::runtime_error(
+            fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
     std::fflush(stdout); // written once, by the parent, not again by the child's copy of the buffer
     std::fflush(stderr);
     const pid_t pid = ::fork();
     if (pid < 0)
-        throw std::runtime_error(fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
+        throw std::runtime_error(
+            fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
     if (pid == 0)
     {
         ::close(fds[0]);
@@ -566,8 +570,8 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
     while (next < tasks.size())
     {
         const std::size_t from = next;
-        PluginChild child = PluginChild::start(tasks[from].v->plugin, [&](int fd)
-                                               { answerInChild(tasks, from, fd); });
+        PluginChild child = PluginChild::start(tasks[from].v->plugin,
+                                               [&](int fd) { answerInChild(tasks, from, fd); });
         AnswerRecord rec{};
         std::size_t have = 0;
         for (;;)

@@ -97,7 +97,7 @@ void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds
 // (RLIMIT_FSIZE in the child: the rest is dropped); without one (bench, explain, search), to
 // gjk-validate's stderr, never its stdout. `run` sets its staged report directory.
 inline constexpr std::uintmax_t kPluginLogCapBytes = 1 << 20; // 1 MiB per plugin
-void setPluginLogDirectory(const std::string& dir); // "" for stderr
+void setPluginLogDirectory(const std::string& dir);           // "" for stderr
 struct PluginLog
 {
     std::string plugin; // PluginImpl::path

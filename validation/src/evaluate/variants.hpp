@@ -75,9 +75,9 @@ bool needsConvexOrder(const VariantInfo& v);
 inline constexpr int kLinearSupportMaxPoints = 16;
 
 const char* scalarName(Scalar s);
-double unitRoundoff(Scalar s); // u = eps / 2 of the variant's type
+double unitRoundoff(Scalar s);      // u = eps / 2 of the variant's type
 double smallestSubnormal(Scalar s); // denorm_min of the variant's type
-int scalarDigits(Scalar s);    // significand bits (24, 53)
+int scalarDigits(Scalar s);         // significand bits (24, 53)
 int scalarMinExponent(Scalar s);
 
 // {"direction": ..., "stopping": ..., "frame": ..., "support": ..., "certified": ...}

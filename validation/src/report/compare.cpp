@@ -6,7 +6,6 @@
 #include "report/report.hpp"
 #include "statistics/stats.hpp" // kCountFields
 
-
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -416,10 +415,10 @@ Json readReport(const std::string& path)
                              [&](int depth, Json::parse_event_t, Json&)
                              {
                                  if (depth > kMaxReportDepth)
-                                     throw InputError(fmt::format(
-                                         "compare: {}: not a {} report (JSON nested "
-                                         "more than {} deep)",
-                                         shown, kSchema, kMaxReportDepth));
+                                     throw InputError(
+                                         fmt::format("compare: {}: not a {} report (JSON nested "
+                                                     "more than {} deep)",
+                                                     shown, kSchema, kMaxReportDepth));
                                  return true;
                              });
     }
@@ -538,7 +537,8 @@ void compareFamilyVariants(const Json& of, const Json& nf, const std::string& na
     compareFamily(of, nf, name, os, ns, rows);
     for (const auto& [variant, oldStats] : of["variants"].items())
     {
-        const Json* newStats = nf["variants"].contains(variant) ? &nf["variants"][variant] : nullptr;
+        const Json* newStats =
+            nf["variants"].contains(variant) ? &nf["variants"][variant] : nullptr;
         if (newStats == nullptr)
         {
             if (has(newVariants, variant))
@@ -552,11 +552,11 @@ void compareFamilyVariants(const Json& of, const Json& nf, const std::string& na
         base.gates = base.judged || o.allVariants;
         const std::string where = fmt::format("families['{}'].variants", excerpt(name));
         if (!oldStats.is_object())
-            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.oldName,
-                                         where, excerpt(variant), typeName(oldStats)));
+            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.oldName, where,
+                                         excerpt(variant), typeName(oldStats)));
         if (!newStats->is_object())
-            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.newName,
-                                         where, excerpt(variant), typeName(*newStats)));
+            throw InputError(fmt::format("{}: {}['{}'] is {}, expected an object", o.newName, where,
+                                         excerpt(variant), typeName(*newStats)));
         compareStats(oldStats, *newStats, base, o, os, ns, rows);
     }
     for (const auto& [variant, _] : nf["variants"].items())

@@ -199,11 +199,20 @@ std::string compareHtml(const Comparison& c)
         for (char ch : v)
             switch (ch)
             {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            default: out += ch;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '&':
+                out += "&amp;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += ch;
             }
         return out;
     };
@@ -211,10 +220,14 @@ std::string compareHtml(const Comparison& c)
     {
         switch (r.change)
         {
-        case Change::Regressed: return r.fails() ? "regressed" : "worse";
-        case Change::Worse: return "worse";
-        case Change::Better: return "better";
-        default: return "other";
+        case Change::Regressed:
+            return r.fails() ? "regressed" : "worse";
+        case Change::Worse:
+            return "worse";
+        case Change::Better:
+            return "better";
+        default:
+            return "other";
         }
     };
     // The palette and the row classes are report.css's (the report page's), inlined.
@@ -228,15 +241,15 @@ std::string compareHtml(const Comparison& c)
         "compare</title>\n<style>\n{}\nbody{{padding:2em}}</style></head><body>\n"
         "<h1>gjk-validate compare</h1>\n<p class=\"result {}\">{}</p>\n"
         "<ul><li>{}</li><li>{}</li><li>{}</li></ul>\n<p>{}.</p>\n",
-        css, c.exitCode != kExitPass ? "fail" : "pass", esc(resultLine(c)),
-        esc(c.options.oldName), esc(c.options.newName), esc(optionsText(c.options)),
-        esc(summaryText(c)));
+        css, c.exitCode != kExitPass ? "fail" : "pass", esc(resultLine(c)), esc(c.options.oldName),
+        esc(c.options.newName), esc(optionsText(c.options)), esc(summaryText(c)));
     const auto shown = shownRows(c);
     if (shown.empty())
         s += "<p>Every statistic is the same.</p>\n";
     else
     {
-        s += "<table class=\"data compact\"><tr><th>family</th><th>variant</th><th>statistic</th><th>OLD</th>"
+        s += "<table class=\"data "
+             "compact\"><tr><th>family</th><th>variant</th><th>statistic</th><th>OLD</th>"
              "<th>NEW</th><th>limit</th><th>change</th></tr>\n";
         for (const CompareRow* r : shown)
             s += fmt::format("<tr class=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td class=\"num\">"

@@ -45,32 +45,28 @@ std::string shapeText(const char* k, const Json& sh)
 // An exact result: its distance interval, overlap, squared distance and witness points.
 std::string exactText(const char* label, const Json& e)
 {
-    return fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label,
-                       fmtFull(e["distance"]), fmtFull(e["lower"]), fmtFull(e["upper"]),
-                       e["overlap"].get<bool>()) +
+    return fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label, fmtFull(e["distance"]),
+                       fmtFull(e["lower"]), fmtFull(e["upper"]), e["overlap"].get<bool>()) +
            fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
-                       e["squared"].get<std::string>(), fmtPt(e["witnessA"]),
-                       fmtPt(e["witnessB"]));
+                       e["squared"].get<std::string>(), fmtPt(e["witnessA"]), fmtPt(e["witnessB"]));
 }
 
 // A variant's answer and its judgement: distance, witnesses, errors, validity, certified interval.
 std::string answerText(const std::string& name, const Json& v)
 {
-    std::string s =
-        fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
-                    v["type"].get<std::string>(), fmtFull(v["distance"]),
-                    v["iterations"].get<int>(), v["stop"].get<std::string>(),
-                    v["failed"].get<bool>() ? "  ** FAILED **" : "");
+    std::string s = fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
+                                v["type"].get<std::string>(), fmtFull(v["distance"]),
+                                v["iterations"].get<int>(), v["stop"].get<std::string>(),
+                                v["failed"].get<bool>() ? "  ** FAILED **" : "");
     s += fmt::format("     pointA {}  pointB {}  normal {}\n", fmtPt(v["pointA"]),
                      fmtPt(v["pointB"]), fmtPt(v["normal"]));
     const Json& e = v["errors"];
-    s += fmt::format(
-        "     errors: abs {}  rel {}  ulps {}  normalized {}  bound {} (ratio {})  "
-        "witness {}  witness gap {}  misclassified {}\n",
-        fmtNum(e["abs"]), fmtNum(e["rel"]), fmtNum(e["ulps"]), fmtNum(e["normalized"]),
-        fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
-        fmtNum(e["witness_gap"]),
-        v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
+    s += fmt::format("     errors: abs {}  rel {}  ulps {}  normalized {}  bound {} (ratio {})  "
+                     "witness {}  witness gap {}  misclassified {}\n",
+                     fmtNum(e["abs"]), fmtNum(e["rel"]), fmtNum(e["ulps"]), fmtNum(e["normalized"]),
+                     fmtNum(v["bound"]), fmtNum(e["bound_ratio"]), fmtNum(e["witness"]),
+                     fmtNum(e["witness_gap"]),
+                     v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
     // Older reports have no witness judgement.
     if (v.contains("invalid"))
         s += fmt::format("     witness bound {}  invalid answer: {}\n", fmtNum(v["witness_bound"]),

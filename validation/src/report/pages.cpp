@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 
 namespace
 {
-// Every file a report directory holds, besides the plugins' logs (plugin-*.log, evaluate/plugins.hpp);
-// writeReportPages replaces the directory as a whole.
+// Every file a report directory holds, besides the plugins' logs (plugin-*.log,
+// evaluate/plugins.hpp); writeReportPages replaces the directory as a whole.
 const char* const kReportFiles[] = {"report.json", "report.md",  "worst-cases.json",
                                     "cases.jsonl", "index.html", "shard.json"};
 } // namespace
@@ -74,7 +74,8 @@ std::string writeReportPages(const CampaignReport& result, StagedDir& out)
     out.write("report.md", renderMarkdown(result.report));
     out.write("worst-cases.json", caseFileText(result.worstComments, result.worstCases));
 #if defined(GJK2D_HAVE_HTML)
-    out.write("index.html", gjk_html::renderReport(nlohmann::json::parse(result.report.dump()), kReportSchema));
+    out.write("index.html",
+              gjk_html::renderReport(nlohmann::json::parse(result.report.dump()), kReportSchema));
     const std::string page = "index.html";
 #else
     const std::string page = "report.md";

@@ -96,7 +96,8 @@ std::string invalidCounts(const Json& st)
 
 namespace
 {
-// The result line and the run's context block: date, host, build, seed, elapsed, throughput, inputs.
+// The result line and the run's context block: date, host, build, seed, elapsed, throughput,
+// inputs.
 std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& judged)
 {
     const Json& c = r["context"];
@@ -180,8 +181,8 @@ std::string statsRow(const std::string& name, const Json& st, bool j)
         "{:.2f}/{} | {} | {} |\n",
         j ? name : name + " (comparison)", u(st["cases"]),
         u(st["failures"]) + (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
-        u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]),
-        u(st["nonfinite"]), invalidCounts(st), u(st["iteration_limit"]), u(st["out_of_range"]),
+        u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]), u(st["nonfinite"]),
+        invalidCounts(st), u(st["iteration_limit"]), u(st["out_of_range"]),
         u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") + pluginCounts(st),
         g(e["abs"]["max"]), g(e["abs"]["p99"]), g(e["normalized"]["max"]),
         g(e["normalized"]["p99"]), g(e["ulps"]["p99"]), g(e["witness"]["max"]),
@@ -209,11 +210,10 @@ std::string correctPathsLine(const std::string& name, const Json& st)
 // One family: verdict, reason, make-up checks, the table of variants and the correct paths' shares.
 std::string familyMarkdown(const Json& f, const std::map<std::string, bool>& judged)
 {
-    std::string s = fmt::format("\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
-                                f["pass"].get<bool>() ? "pass" : "**FAIL**", u(f["cases"]),
-                                f["rejected"].get<std::uint64_t>()
-                                    ? fmt::format(", {} rejected", u(f["rejected"]))
-                                    : "");
+    std::string s = fmt::format(
+        "\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
+        f["pass"].get<bool>() ? "pass" : "**FAIL**", u(f["cases"]),
+        f["rejected"].get<std::uint64_t>() ? fmt::format(", {} rejected", u(f["rejected"])) : "");
     s += mdEscape(f["reason"].get<std::string>()) + "\n\n";
     if (!f["makeup"].empty())
     {
@@ -349,14 +349,15 @@ std::string problemLine(const std::string& family, const std::string& name, cons
                         bool judgedVariant)
 {
     const std::uint64_t fails = count(st, "failures");
-    std::string what = fails == 0 ? "misclassified"
-                                   : (judgedVariant ? "FAIL" : "fails (not judged)");
+    std::string what =
+        fails == 0 ? "misclassified" : (judgedVariant ? "FAIL" : "fails (not judged)");
     std::string detail = fmt::format("{} failure(s)", fails);
     for (const auto& [key, label] :
-         {std::pair{"false_overlap", "false overlap"}, std::pair{"false_separation", "false separation"},
-          std::pair{"nonfinite", "non-finite"}, std::pair{"iteration_limit", "iteration limit"},
-          std::pair{"crashed", "crashed"}, std::pair{"hung", "hung"},
-          std::pair{"plugin_errors", "error status"}, std::pair{"refused", "refused"}})
+         {std::pair{"false_overlap", "false overlap"},
+          std::pair{"false_separation", "false separation"}, std::pair{"nonfinite", "non-finite"},
+          std::pair{"iteration_limit", "iteration limit"}, std::pair{"crashed", "crashed"},
+          std::pair{"hung", "hung"}, std::pair{"plugin_errors", "error status"},
+          std::pair{"refused", "refused"}})
         if (count(st, key) > 0)
             detail += fmt::format(", {} {}", count(st, key), label);
     if (count(st, "invalid") > 0)
@@ -384,7 +385,8 @@ std::string terminalSummary(const Json& r)
             ++pairs;
             if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
                 count(st, "false_separation") > 0)
-                problems += problemLine(f["name"].get<std::string>(), name, st, isJudged(judged, name));
+                problems +=
+                    problemLine(f["name"].get<std::string>(), name, st, isJudged(judged, name));
         }
         for (const auto& m : f["makeup"])
             if (!m["ok"].get<bool>())
@@ -395,9 +397,10 @@ std::string terminalSummary(const Json& r)
     for (const auto& v : r["variants"])
         judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
     const Json& c = r["context"];
-    s += fmt::format("{} cases ({} rejected), {} families, {} variants ({} judged, {} comparison)\n",
-                     u(c["cases_total"]), u(c["cases_rejected"]), r["families"].size(),
-                     r["variants"].size(), judgedCount, r["variants"].size() - judgedCount);
+    s +=
+        fmt::format("{} cases ({} rejected), {} families, {} variants ({} judged, {} comparison)\n",
+                    u(c["cases_total"]), u(c["cases_rejected"]), r["families"].size(),
+                    r["variants"].size(), judgedCount, r["variants"].size() - judgedCount);
     if (problems.empty())
         s += "no family x variant failed or answered overlap wrongly\n";
     else
@@ -444,8 +447,8 @@ std::string failureCauses(const Json& r)
     }
     std::string s = failures > 0 ? fmt::format("{} judged variant failure(s)", failures) : "";
     if (makeup > 0)
-        s += fmt::format("{}make-up checks of {} family(ies) failed", s.empty() ? "" : "; ",
-                         makeup);
+        s +=
+            fmt::format("{}make-up checks of {} family(ies) failed", s.empty() ? "" : "; ", makeup);
     return s.empty() ? "no judged variant failure and no failed make-up check in the report" : s;
 }
 } // namespace

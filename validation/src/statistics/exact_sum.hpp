@@ -23,7 +23,7 @@ class ExactSum
 {
   public:
     static constexpr int kLimbBits = 32;
-    static constexpr int kLsbExponent = -1074;       // the weight of bit 0 is 2^kLsbExponent
+    static constexpr int kLsbExponent = -1074;          // the weight of bit 0 is 2^kLsbExponent
     static constexpr int kLimbs = (2098 + 64) / 32 + 2; // the value's bits, the count's, spare
 
     // v >= 0 and finite: a broken invariant otherwise (the histograms filter their values).

@@ -77,7 +77,7 @@ struct Stats
     std::uint64_t failures = 0;
     std::uint64_t falseOverlap = 0, falseSeparation = 0, undecidable = 0;
     std::uint64_t nonfinite = 0, outOfRange = 0, iterationLimit = 0;
-    std::uint64_t beyondBound = 0;   // judged cases with |error| > bound
+    std::uint64_t beyondBound = 0; // judged cases with |error| > bound
     // Judged cases whose answer is not a valid answer (negative distance, witness points beyond the
     // witness bound), each also a failure; by reason (Invalid, common.hpp: [r - 1] for reason r).
     std::uint64_t invalid = 0;
@@ -96,7 +96,8 @@ struct Stats
     // (gjk::CorrectPath Double, Extended, DoubleDouble, Exact) and the answers not bit-identical
     // to the exact side's (each a failure).
     bool hasPaths = false;
-    std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0, bitMismatch = 0;
+    std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0,
+                  bitMismatch = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
     Hist witnessRatio{-20, 40}; // max(witness, witness_gap) / witness bound; > 1: invalid
@@ -171,8 +172,8 @@ struct HistField
 {
     const char* name;
     Hist Stats::*member;
-    Section section;          // Top or Since30: under the report's "errors"
-    bool Stats::*shownIf;     // the report writes it only when this flag is set; nullptr: always
+    Section section;      // Top or Since30: under the report's "errors"
+    bool Stats::*shownIf; // the report writes it only when this flag is set; nullptr: always
 };
 
 inline constexpr HistField kHistFields[] = {

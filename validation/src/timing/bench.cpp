@@ -91,8 +91,8 @@ struct VariantTimings
     std::vector<VariantCases> cases; // only the counts are used once timed
 };
 
-VariantTimings timeEveryVariant(const BenchConfig& config, const std::vector<PreparedCase>& prepared,
-                                const TimingConfig& tc)
+VariantTimings timeEveryVariant(const BenchConfig& config,
+                                const std::vector<PreparedCase>& prepared, const TimingConfig& tc)
 {
     VariantTimings t;
     t.results.resize(config.variants.size());
@@ -155,14 +155,15 @@ Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases&
         {"passes", tc.maxPasses},
         {"min_pass_s", tc.minPassSeconds},
         {"warm", config.warm},
-        {"note", "single thread; per variant the cases are copied into one contiguous array and "
-                 "each pass loops over all of them (repeated to last at least min_pass_s); the "
-                 "passes of gjk2d's variants are alternated (pass k of each before pass k + 1 of "
-                 "any); plugin variants are timed on their own. "
-                 "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
-                 "Warm: each query starts from the SimplexCache of a previous query of the same "
-                 "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
-                 "on all its cases at once (context.batch_isa: the instruction set of its lanes)."}};
+        {"note",
+         "single thread; per variant the cases are copied into one contiguous array and "
+         "each pass loops over all of them (repeated to last at least min_pass_s); the "
+         "passes of gjk2d's variants are alternated (pass k of each before pass k + 1 of "
+         "any); plugin variants are timed on their own. "
+         "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
+         "Warm: each query starts from the SimplexCache of a previous query of the same "
+         "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
+         "on all its cases at once (context.batch_isa: the instruction set of its lanes)."}};
     return context;
 }
 } // namespace
@@ -206,7 +207,8 @@ std::string benchTable(const Json& b)
 {
     const Json& c = b["context"];
     std::string s = fmt::format(
-        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries; *-batch variants: "
+        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries; *-batch "
+        "variants: "
         "gjk::distanceBatch on {}\n",
         c["cases_total"].get<std::uint64_t>(), c["cases_rejected"].get<std::uint64_t>(),
         c["timing"]["passes"].get<int>(), c["timing"]["min_pass_s"].get<double>(),

@@ -109,7 +109,8 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
 // A batch variant: each rep is one gjk::distanceBatch over all the cases (fresh caches, or copies
 // of the warm ones), as an engine's step or a campaign's chunk would call it.
 template <class T>
-double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps, std::vector<gjk::SimplexCache>& caches,
+double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps,
+                     std::vector<gjk::SimplexCache>& caches,
                      std::vector<gjk::DistanceOutput<T>>& outputs)
 {
     const auto t0 = Clock::now();
@@ -135,14 +136,17 @@ template <class T> struct LoopState
     TimingSet<T> set;
     std::vector<gjk::SimplexCache> caches;
     std::vector<gjk::DistanceOutput<T>> outputs;
-    LoopState(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm, bool batch)
-        : set(cases, o, warm), caches(batch ? set.inputs.size() : 0), outputs(batch ? set.inputs.size() : 0)
+    LoopState(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm,
+              bool batch)
+        : set(cases, o, warm), caches(batch ? set.inputs.size() : 0),
+          outputs(batch ? set.inputs.size() : 0)
     {
     }
 };
 
 template <class T>
-TimedLoop loopT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm, bool batch)
+TimedLoop loopT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o, bool warm,
+                bool batch)
 {
     TimedLoop loop;
     loop.cases = cases.size();
@@ -215,8 +219,8 @@ template <class T, class Shape> struct PluginTimingSet
 // function pointer, the result read. No copy of the inputs, no IPC: the child process that runs
 // it (timeContained) reports only the passes' times, after timing.
 template <class T, class Shape, class Result, class Fn>
-double timePassPlugin(const PluginTimingSet<T, Shape>& set, Fn fn, std::vector<unsigned char>& cache,
-                      int cacheBytes, int reps)
+double timePassPlugin(const PluginTimingSet<T, Shape>& set, Fn fn,
+                      std::vector<unsigned char>& cache, int cacheBytes, int reps)
 {
     void* c = cacheBytes > 0 ? cache.data() : nullptr;
     const std::size_t n = set.a.size();
@@ -253,7 +257,8 @@ TimedLoop pluginLoop(const std::vector<const PreparedCase*>& cases, const Varian
 {
     const gjk2d_implementation& im = v.plugin->impl;
     if (im.scalar == GJK2D_SCALAR_FLOAT)
-        return pluginLoopT<float, gjk2d_shape_f, gjk2d_result_f>(cases, im.distance_f, im.cache_bytes);
+        return pluginLoopT<float, gjk2d_shape_f, gjk2d_result_f>(cases, im.distance_f,
+                                                                 im.cache_bytes);
     return pluginLoopT<double, gjk2d_shape_d, gjk2d_result_d>(cases, im.distance_d, im.cache_bytes);
 }
 
@@ -282,7 +287,8 @@ int calibrate(const TimingConfig& cfg, const std::function<double(int)>& pass)
 }
 } // namespace
 
-TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v, const TimingConfig& cfg)
+TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                    const TimingConfig& cfg)
 {
     if (v.plugin)
         return pluginLoop(cases, v);
@@ -291,7 +297,8 @@ TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const Variant
                                      : loopT<double>(cases, v.options, warm, v.batch);
 }
 
-std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops, const TimingConfig& cfg)
+std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,
+                                                   const TimingConfig& cfg)
 {
     std::vector<int> reps(loops.size(), 0);
     std::vector<std::vector<double>> perQuery(loops.size());
@@ -303,7 +310,8 @@ std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>&
     for (int p = 0; p < cfg.maxPasses && (p < cfg.minPasses || elapsed() < cfg.budgetSeconds); ++p)
         for (std::size_t k = 0; k < loops.size(); ++k)
             if (loops[k].cases > 0)
-                perQuery[k].push_back(loops[k].pass(reps[k]) / (double(reps[k]) * double(loops[k].cases)));
+                perQuery[k].push_back(loops[k].pass(reps[k]) /
+                                      (double(reps[k]) * double(loops[k].cases)));
     std::vector<TimingResult> results;
     for (std::size_t k = 0; k < loops.size(); ++k)
     {
@@ -348,16 +356,17 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
     // The child sends '.' before each pass (the calibration's included), then 'R' and the result.
     // A pass lasts at most min_pass_s plus one loop over the cases: the limit allows a loop of
     // 50,000 cases (kTimingSampleCases) at 600 us a query, or one call that hangs.
-    PluginChild child = PluginChild::start(
-        v.plugin,
-        [&](int fd)
-        {
-            const auto tick = [fd] { writeToParent(fd, ".", 1); };
-            tick();
-            const TimingResult t = medianOfPasses(loop.cases, cfg, loop.pass, tick);
-            writeToParent(fd, "R", 1);
-            writeToParent(fd, &t, sizeof t);
-        });
+    PluginChild child =
+        PluginChild::start(v.plugin,
+                           [&](int fd)
+                           {
+                               const auto tick = [fd] { writeToParent(fd, ".", 1); };
+                               tick();
+                               const TimingResult t =
+                                   medianOfPasses(loop.cases, cfg, loop.pass, tick);
+                               writeToParent(fd, "R", 1);
+                               writeToParent(fd, &t, sizeof t);
+                           });
     const double limit = pluginTimeoutSeconds + 30 + 4 * cfg.minPassSeconds;
     char mark = 0;
     long n = 0;

@@ -54,12 +54,14 @@ struct TimedLoop
     bool warm = false;
     std::function<double(int)> pass;
 };
-TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v, const TimingConfig& cfg);
+TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                    const TimingConfig& cfg);
 
 // The passes of several loops alternated (`bench`): one calibration pass each, then pass k of
 // every loop before pass k + 1 of any, so that a drift of the machine's speed falls on all of
 // them alike and their ratios hold within one run. Stops as medianOfPasses() does.
-std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops, const TimingConfig& cfg);
+std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,
+                                                   const TimingConfig& cfg);
 
 // The pass loop of timeQueries(), for any timed loop: pass(reps) runs `reps` loops over the
 // `cases` queries and returns the nanoseconds taken. One calibration pass sets reps so that a pass

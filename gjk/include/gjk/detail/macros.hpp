@@ -8,7 +8,7 @@
 #include <cstdlib>
 #define GJK_ASSERT(c)                                                                              \
     ((c) ? (void)0                                                                                 \
-         : (std::fprintf(stderr, "%s:%d: GJK contract violated: %s\n", __FILE__, __LINE__, #c),     \
+         : (std::fprintf(stderr, "%s:%d: GJK contract violated: %s\n", __FILE__, __LINE__, #c),    \
             std::abort()))
 #else
 #define GJK_ASSERT(c) assert(c)
