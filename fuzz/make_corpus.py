@@ -133,17 +133,17 @@ def distance_seeds():
         with open(os.path.join(ROOT, "validation/cases", name)) as f:
             cases += [("cases-" + name[:-5] + "-" + c["name"].split("/")[-1], c)
                       for c in json.load(f)["cases"]]
-    cases.append(("issue12-defect2", json.loads(ROTATED_POINTS_NEAR_MAX)["cases"][0]))
-    cases.append(("issue12-defect7", json.loads(POINT_FAR_VERTEX)["cases"][0]))
-    # Defect 1: solve3's fallback with all three edge lengths overflowing. Identity rotations and
+    cases.append(("rotated-points-near-max", json.loads(ROTATED_POINTS_NEAR_MAX)["cases"][0]))
+    cases.append(("point-far-vertex", json.loads(POINT_FAR_VERTEX)["cases"][0]))
+    # solve3's fallback with all three edge lengths overflowing. Identity rotations and
     # coordinates near 1e265: an axis-aligned triangle around the origin and a point, and the
     # shapes of `gjk-validate generate --family hard/range --seed 1`'s case 10-gap-x1e+160 scaled
     # by 2^350 (about 2.3e105).
     big = 1e265
-    cases.append(("issue12-defect1-triangle-1e265",
+    cases.append(("overflowing-edges-triangle-1e265",
                   {"a": {"points": [[-big, -big], [big, -0.5 * big], [0.25 * big, big]]},
                    "b": {"points": [[3.0, 1.0]]}}))
-    cases.append(("issue12-defect1-squares-1e265",
+    cases.append(("overflowing-edges-squares-1e265",
                   {"a": {"points": [[big, big], [-big, big], [-big, -big], [big, -big]]},
                    "b": {"points": [[0.5 * big, 0.5 * big], [-0.75 * big, 0.5 * big],
                                     [0, -0.9 * big]], "transform": {"p": [1e250, -1e250]}}}))
@@ -162,7 +162,7 @@ def distance_seeds():
                                [9.314315278233425e+159, -5.7856763896079775e+159],
                                [1.0482245765313196e+160, -3.2176146604547495e+159]],
                     "transform": {"p": [5.652346655961531e+160, -2.4083775049934223e+160]}}}
-    cases.append(("issue12-defect1-hard-range-10-x2p350", scaled(hard10, 2.0 ** 350)))
+    cases.append(("overflowing-edges-hard-range-10-x2p350", scaled(hard10, 2.0 ** 350)))
 
     seeds = {}
     for name, case in cases:
