@@ -14,7 +14,7 @@
 // The steps below are forced inline in optimised builds (the speed measured in docs/gjk.md), and
 // only `inline` in checked builds (GJK2D_CHECKED: the sanitizer and fuzzing builds), where forcing
 // them nearly doubles the compile time of every translation unit that instantiates the query.
-// Spelled as GJK_INLINE (gjk/distance.hpp) is, so that this header needs no other gjk header.
+// Spelled as GJK_INLINE (gjk/detail/macros.hpp) is, so that this header needs no other gjk header.
 #if defined(GJK2D_CHECKED) || !defined(__GNUC__)
 #define GJK_CORRECT_INLINE inline
 #else

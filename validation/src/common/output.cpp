@@ -1,6 +1,6 @@
 // The staging directories of StagedDir (common/output.hpp): their names, and the removal of those
-// that earlier runs left behind when they died (issue 30: a run killed by SIGKILL left
-// .DIR.tmp-XXXXXX beside DIR for ever, even across --resume).
+// that earlier runs left behind when they died (a run killed by SIGKILL leaves .DIR.tmp-XXXXXX
+// beside DIR, which would otherwise stay for ever, even across --resume).
 #include "common/output.hpp"
 
 #include <algorithm>

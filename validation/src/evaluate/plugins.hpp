@@ -92,7 +92,7 @@ inline constexpr double kDefaultPluginTimeoutSeconds = 5;
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
 // What plugins print (their stdout and stderr in the child processes) is kept apart from
-// gjk-validate's own output (issue 30: a plugin printing on every call buried the summary):
+// gjk-validate's own output (a plugin printing on every call would bury the summary):
 // with a directory set, each plugin's goes to <dir>/<its logName>, at most kPluginLogCapBytes
 // (RLIMIT_FSIZE in the child: the rest is dropped); without one (bench, explain, search), to
 // gjk-validate's stderr, never its stdout. `run` sets its staged report directory.

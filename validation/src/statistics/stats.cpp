@@ -243,11 +243,11 @@ Json Stats::state() const
     j["iterations"] = iterations.state();
     j["stops"] = stops;
     for (const CountField& f : kCountFields)
-        if (f.section == Section::Since30)
+        if (f.section == Section::SinceInvalid)
             j[f.name] = this->*f.member;
     j["invalid_reasons"] = invalidReasons;
     for (const HistField& f : kHistFields)
-        if (f.section == Section::Since30)
+        if (f.section == Section::SinceInvalid)
             j[f.name] = (this->*f.member).state();
     if (hasPaths) // written only by correctly rounded variants (older states have none)
     {
@@ -262,19 +262,20 @@ Json Stats::state() const
 Stats Stats::fromState(const Json& j)
 {
     Stats s;
-    const bool since30 = j.contains("invalid"); // states before issue 30 have none
+    const bool sinceInvalid =
+        j.contains("invalid"); // states written before the invalid counts existed have none
     for (const CountField& f : kCountFields)
         if (f.section == Section::Top || f.section == Section::Interval ||
-            (f.section == Section::Since30 && since30))
+            (f.section == Section::SinceInvalid && sinceInvalid))
             s.*f.member = j.at(f.name).get<std::uint64_t>();
     for (const FlagField& f : kFlagFields)
         s.*f.member = j.at(f.name).get<bool>();
     for (const HistField& f : kHistFields)
-        if (f.section != Section::Since30 || since30)
+        if (f.section != Section::SinceInvalid || sinceInvalid)
             s.*f.member = Hist::fromState(j.at(f.name));
     s.iterations = IterHist::fromState(j.at("iterations"));
     copyExactly(s.stops, j.at("stops"), "stop reasons");
-    if (since30)
+    if (sinceInvalid)
         copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
     if (j.contains("correct_paths"))
     {
@@ -296,7 +297,7 @@ void writeCounts(const Stats& s, Json& j)
 {
     for (const CountField& f : kCountFields)
     {
-        if (f.section != Section::Top && f.section != Section::Since30)
+        if (f.section != Section::Top && f.section != Section::SinceInvalid)
             continue;
         j[f.name] = s.*f.member;
         if (f.member == &Stats::failures)
@@ -315,7 +316,7 @@ Json errorsJson(const Stats& s)
 {
     Json e;
     for (const HistField& f : kHistFields)
-        if ((f.section == Section::Top || f.section == Section::Since30) &&
+        if ((f.section == Section::Top || f.section == Section::SinceInvalid) &&
             (f.shownIf == nullptr || s.*f.shownIf))
             e[f.name] = (s.*f.member).toJson();
     return e;

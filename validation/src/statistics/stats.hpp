@@ -131,10 +131,11 @@ struct Stats
 // - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder).
 enum class Section : std::uint8_t
 {
-    Top,      // report: top level (a histogram: under "errors"); state: top level, in table order
-    Since30,  // as Top in the report; state: after "stops", absent from states before issue 30
-    Interval, // report: under "interval" (certified variants); state: top level
-    Correct,  // report: under "correct" (correctly rounded variants); state: in "correct_paths"
+    Top, // report: top level (a histogram: under "errors"); state: top level, in table order
+    SinceInvalid, // as Top in the report; state: after "stops", absent from states written before
+                  // it
+    Interval,     // report: under "interval" (certified variants); state: top level
+    Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
 };
 
 struct CountField
@@ -155,7 +156,7 @@ inline constexpr CountField kCountFields[] = {
     {"out_of_range", &Stats::outOfRange, Section::Top, true},
     {"iteration_limit", &Stats::iterationLimit, Section::Top, true},
     {"beyond_bound", &Stats::beyondBound, Section::Top, true},
-    {"invalid", &Stats::invalid, Section::Since30, true},
+    {"invalid", &Stats::invalid, Section::SinceInvalid, true},
     {"skipped", &Stats::skipped, Section::Top, true},
     {"not_applicable", &Stats::notApplicable, Section::Top, false},
     {"refused", &Stats::refused, Section::Top, false},
@@ -172,7 +173,7 @@ struct HistField
 {
     const char* name;
     Hist Stats::*member;
-    Section section;      // Top or Since30: under the report's "errors"
+    Section section;      // Top or SinceInvalid: under the report's "errors"
     bool Stats::*shownIf; // the report writes it only when this flag is set; nullptr: always
 };
 
@@ -184,7 +185,7 @@ inline constexpr HistField kHistFields[] = {
     {"bound_ratio", &Stats::boundRatio, Section::Top, nullptr},
     {"witness", &Stats::witness, Section::Top, nullptr},
     {"witness_gap", &Stats::witnessGap, Section::Top, nullptr},
-    {"witness_ratio", &Stats::witnessRatio, Section::Since30, nullptr},
+    {"witness_ratio", &Stats::witnessRatio, Section::SinceInvalid, nullptr},
     {"input_rounding", &Stats::inputRounding, Section::Top, &Stats::hasInputRounding},
     {"width_ulps", &Stats::widthUlps, Section::Interval, nullptr},
 };

@@ -21,9 +21,9 @@ struct BenchConfig
     std::vector<const VariantInfo*> variants;
     bool warm = false; // time warm-started queries for every variant
     int passes = 15;
-    // As run's passes (TimingConfig's default, one home): issue 30 found bench's 10x longer passes
-    // reading a plugin up to 1.6x slower than run on a loaded machine (a longer pass is more
-    // often preempted, and the median pass includes it).
+    // As run's passes (TimingConfig's default, one home): 10x longer passes read a plugin up to
+    // 1.6x slower than run on a loaded machine (a longer pass is more often preempted, and the
+    // median pass includes it).
     double minPassSeconds = TimingConfig{}.minPassSeconds;
     std::string command;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // bench --plugin-timeout

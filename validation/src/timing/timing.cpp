@@ -168,10 +168,10 @@ TimedLoop loopT(const std::vector<const PreparedCase*>& cases, const gjk::Option
 
 // A plugin variant's timed inputs: each case's two shapes in the ABI's struct (gjk2d/plugin.h), in
 // the implementation's scalar type, their points in one contiguous array: built once, before
-// timing, as TimingSet builds gjk2d's. Issue 30: the loop used to build the structs per call from
-// each case's own vectors, allocated chunk by chunk by the campaign's worker threads and scattered
-// over the heap; `run` then read the plugin 1.7x slower than `bench` (which prepares its cases in
-// one sequence), while `double` (timed from a TimingSet) agreed.
+// timing, as TimingSet builds gjk2d's. Built per call from each case's own vectors (allocated
+// chunk by chunk by the campaign's worker threads, scattered over the heap), `run` read the plugin
+// 1.7x slower than `bench` (which prepares its cases in one sequence), while `double` (timed from
+// a TimingSet) agreed.
 template <class T, class Shape> struct PluginTimingSet
 {
     std::vector<T> coords;
