@@ -71,8 +71,8 @@ const VariantInfo* findVariant(const std::string& name);
 // as not applicable (PreparedCase::binaryOk).
 bool needsConvexOrder(const VariantInfo& v);
 // The library uses the linear scan for shapes of at most this many points whatever the strategy
-// (gjk/distance.hpp, TransformedShape::binary): they always fit.
-inline constexpr int kLinearSupportMaxPoints = 16;
+// (gjk/types.hpp, usesBinarySearch): they always fit.
+inline constexpr int kLinearSupportMaxPoints = gjk::linearScanMaxCount;
 
 const char* scalarName(Scalar s);
 double unitRoundoff(Scalar s);      // u = eps / 2 of the variant's type

@@ -191,45 +191,50 @@ std::string compareMarkdown(const Comparison& c)
     return s;
 }
 
+// Text for HTML element content and attribute values.
+static std::string htmlEscape(const std::string& v)
+{
+    std::string out;
+    for (char ch : v)
+        switch (ch)
+        {
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += ch;
+        }
+    return out;
+}
+
+// A row's class in report.css: a failing regression, a change for the worse, for the better.
+static const char* rowClass(const CompareRow& r)
+{
+    switch (r.change)
+    {
+    case Change::Regressed:
+        return r.fails() ? "regressed" : "worse";
+    case Change::Worse:
+        return "worse";
+    case Change::Better:
+        return "better";
+    default:
+        return "other";
+    }
+}
+
 std::string compareHtml(const Comparison& c)
 {
-    auto esc = [](const std::string& v)
-    {
-        std::string out;
-        for (char ch : v)
-            switch (ch)
-            {
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '&':
-                out += "&amp;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += ch;
-            }
-        return out;
-    };
-    auto rowClass = [](const CompareRow& r)
-    {
-        switch (r.change)
-        {
-        case Change::Regressed:
-            return r.fails() ? "regressed" : "worse";
-        case Change::Worse:
-            return "worse";
-        case Change::Better:
-            return "better";
-        default:
-            return "other";
-        }
-    };
+    const auto esc = htmlEscape;
     // The palette and the row classes are report.css's (the report page's), inlined.
 #if defined(GJK2D_HAVE_HTML)
     const std::string_view css = gjk_html::styleSheet();

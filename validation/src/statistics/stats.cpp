@@ -376,8 +376,8 @@ Json Stats::toJson() const
 }
 
 // --- Folding one query ---------------------------------------------------------------------------
-// (Was campaign.cpp's accumulate. statistics/ may read evaluate/: it is the phase before it, as
-// worst.hpp already does; stats.hpp only names the outcome types.)
+// statistics/ reads evaluate/'s outcomes: it is the layer above it, as worst.hpp is; stats.hpp only
+// names the outcome types.
 
 namespace
 {
