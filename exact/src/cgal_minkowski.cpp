@@ -62,22 +62,12 @@ std::vector<std::size_t> hullIndices(const std::vector<P2>& pts)
     return out;
 }
 
-} // namespace
-
-ExactResult minkowskiSum2(const Shape& sa, const Shape& sb)
+// The vertices of Z = hull(A) - hull(B): CGAL's minkowski_sum_2 of hull(A) and -hull(B) when both
+// are polygons, the hull of the pairwise differences otherwise (a point or a segment).
+std::vector<P2> minkowskiVertices(const std::vector<P2>& as, const std::vector<P2>& bs,
+                                  const std::vector<std::size_t>& ha,
+                                  const std::vector<std::size_t>& hb)
 {
-    const std::vector<P2> a = transformAll(sa), b = transformAll(sb);
-    const int mag = magnitude(sb, magnitude(sa, INT_MIN / 4));
-    const bool rescale = mag > 200 || (mag < -200 && mag > INT_MIN / 8);
-    std::vector<P2> as = a, bs = b; // the points minkowski_sum_2 sees
-    if (rescale)
-    {
-        for (auto* v : {&as, &bs})
-            for (P2& p : *v)
-                p = P2(scaled(p.x(), -mag), scaled(p.y(), -mag));
-    }
-    const std::vector<std::size_t> ha = hullIndices(as), hb = hullIndices(bs);
-
     std::vector<P2> z;
     if (ha.size() >= 3 && hb.size() >= 3)
     {
@@ -104,6 +94,26 @@ ExactResult minkowskiSum2(const Shape& sa, const Shape& sb)
                 diff.push_back(as[i] - (bs[j] - CGAL::ORIGIN));
         CGAL::convex_hull_2(diff.begin(), diff.end(), std::back_inserter(z), K());
     }
+    return z;
+}
+
+} // namespace
+
+ExactResult minkowskiSum2(const Shape& sa, const Shape& sb)
+{
+    const std::vector<P2> a = transformAll(sa), b = transformAll(sb);
+    const int mag = magnitude(sb, magnitude(sa, INT_MIN / 4));
+    const bool rescale = mag > 200 || (mag < -200 && mag > INT_MIN / 8);
+    std::vector<P2> as = a, bs = b; // the points minkowski_sum_2 sees
+    if (rescale)
+    {
+        for (auto* v : {&as, &bs})
+            for (P2& p : *v)
+                p = P2(scaled(p.x(), -mag), scaled(p.y(), -mag));
+    }
+    const std::vector<std::size_t> ha = hullIndices(as), hb = hullIndices(bs);
+
+    std::vector<P2> z = minkowskiVertices(as, bs, ha, hb);
     startAtLargestXY(z, [](const P2& p) -> const P2& { return p; });
 
     // Provenance of a Z vertex v: the hull vertex q of B for which v + q is a hull vertex of A.

@@ -476,47 +476,62 @@ class Solver
         }
     }
 
-    // The one exact construction, in dyadic integers.
+    // The one exact construction, in dyadic integers, for each kind of closest feature.
     ExactResult build(const Feature& f)
+    {
+        if (f.kind == Feature::Vertex)
+            return buildAtVertex(f);
+        if (f.kind == Feature::Edge)
+            return buildOnEdge(f);
+        return buildInTriangle(f);
+    }
+
+    ExactResult buildAtVertex(const Feature& f)
     {
         ExactResult r;
         r.overlap = f.overlap;
-        if (f.kind == Feature::Vertex)
+        const E2& p = z(f.i);
+        r.z = toQ(p);
+        mpz_class n = p.x * p.x + p.y * p.y;
+        r.squared = toQ(n, 2 * p.e);
+        r.wa = toQ(A.exact(za[f.i]));
+        r.wb = toQ(B.exact(zb[f.i]));
+        return r;
+    }
+
+    ExactResult buildOnEdge(const Feature& f)
+    {
+        ExactResult r;
+        r.overlap = f.overlap;
+        const E2 &P = z(f.i), &Q = z(f.j);
+        const E2 D = sub(Q, P);
+        const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
+        const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
+        const mpz_class L = D.x * D.x + D.y * D.y;
+        const mpz_class C = px * qy - py * qx;
+        const mpz_class T = -(px * D.x + py * D.y); // t = T / L, closest point P + t (Q - P)
+        if (f.overlap)
         {
-            const E2& p = z(f.i);
-            r.z = toQ(p);
-            mpz_class n = p.x * p.x + p.y * p.y;
-            r.squared = toQ(n, 2 * p.e);
-            r.wa = toQ(A.exact(za[f.i]));
-            r.wb = toQ(B.exact(zb[f.i]));
-            return r;
+            r.squared = 0;
+            r.z = {0, 0};
         }
-        if (f.kind == Feature::Edge)
+        else
         {
-            const E2 &P = z(f.i), &Q = z(f.j);
-            const E2 D = sub(Q, P);
-            const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
-            const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
-            const mpz_class L = D.x * D.x + D.y * D.y;
-            const mpz_class C = px * qy - py * qx;
-            const mpz_class T = -(px * D.x + py * D.y); // t = T / L, closest point P + t (Q - P)
-            if (f.overlap)
-            {
-                r.squared = 0;
-                r.z = {0, 0};
-            }
-            else
-            {
-                r.squared = toQ(C * C, L, 2 * D.e, true);
-                r.z = {toQ(px * L + T * D.x, L, D.e), toQ(py * L + T * D.y, L, D.e)};
-            }
-            r.wa = along(A, za[f.i], za[f.j], T, L);
-            r.wb = along(B, zb[f.i], zb[f.j], T, L);
-            return r;
+            r.squared = toQ(C * C, L, 2 * D.e, true);
+            r.z = {toQ(px * L + T * D.x, L, D.e), toQ(py * L + T * D.y, L, D.e)};
         }
-        // Triangle (overlap): barycentric coordinates of O in (V0, V1, V2), with equal weights on
-        // the A and B points: sum l_t (a_t - b_t) = O, so sum l_t a_t = sum l_t b_t is in both
-        // hulls.
+        r.wa = along(A, za[f.i], za[f.j], T, L);
+        r.wb = along(B, zb[f.i], zb[f.j], T, L);
+        return r;
+    }
+
+    // Triangle (overlap): barycentric coordinates of O in (V0, V1, V2), with equal weights on
+    // the A and B points: sum l_t (a_t - b_t) = O, so sum l_t a_t = sum l_t b_t is in both
+    // hulls.
+    ExactResult buildInTriangle(const Feature& f)
+    {
+        ExactResult r;
+        r.overlap = f.overlap;
         const E2 &V0 = z(f.i), &V1 = z(f.j), &V2 = z(f.l);
         const long e = std::min({V0.e, V1.e, V2.e});
         E2 v[3];

@@ -67,63 +67,53 @@ struct Feature
     // triangle, i = 0).
 };
 
-template <class Pr> Feature locate(int k, Pr& pr)
+// The closest feature of a segment v_0 v_1 (k = 2): an end, or the inside of the edge.
+template <class Pr> Feature locateOnSegment(Pr& pr)
 {
     Feature f;
-    if (k == 1)
+    if (pr.dotSign(0, 1) <= 0)
     {
         f.kind = Feature::Vertex;
         f.i = 0;
         f.overlap = pr.isZero(0);
-        return f;
     }
-    if (k == 2)
+    else if (pr.dotSign(1, 0) <= 0)
     {
-        if (pr.dotSign(0, 1) <= 0)
-        {
-            f.kind = Feature::Vertex;
-            f.i = 0;
-            f.overlap = pr.isZero(0);
-        }
-        else if (pr.dotSign(1, 0) <= 0)
-        {
-            f.kind = Feature::Vertex;
-            f.i = 1;
-            f.overlap = pr.isZero(1);
-        }
-        else
-        {
-            f.kind = Feature::Edge;
-            f.i = 0;
-            f.j = 1;
-            f.overlap = pr.orientO(0, 1) == 0;
-        }
-        return f;
+        f.kind = Feature::Vertex;
+        f.i = 1;
+        f.overlap = pr.isZero(1);
     }
-    int firstOut = -1;
-    for (int e = 0; e < k; ++e)
+    else
     {
-        if (pr.orientO(e, e + 1 == k ? 0 : e + 1) < 0)
-        {
-            firstOut = e;
-            break;
-        }
-    }
-    if (firstOut < 0)
-    {
-        // O inside or on the boundary: find the fan triangle (v_0, v_t, v_{t+1}) holding it.
-        // orientO(0, t) >= 0 holds for t = 1 (an edge) and is kept as the loop invariant.
-        f.kind = Feature::Triangle;
-        f.overlap = true;
-        int t = 1;
-        while (t + 1 < k - 1 && pr.orientO(0, t + 1) > 0)
-            ++t;
+        f.kind = Feature::Edge;
         f.i = 0;
-        f.j = t;
-        f.l = t + 1;
-        return f;
+        f.j = 1;
+        f.overlap = pr.orientO(0, 1) == 0;
     }
-    // O outside: the closest point is inside a visible edge or a vertex next to one.
+    return f;
+}
+
+// O inside or on the boundary of a polygon (k >= 3): the fan triangle (v_0, v_t, v_{t+1}) holding
+// it. orientO(0, t) >= 0 holds for t = 1 (an edge) and is kept as the loop invariant.
+template <class Pr> Feature locateInside(int k, Pr& pr)
+{
+    Feature f;
+    f.kind = Feature::Triangle;
+    f.overlap = true;
+    int t = 1;
+    while (t + 1 < k - 1 && pr.orientO(0, t + 1) > 0)
+        ++t;
+    f.i = 0;
+    f.j = t;
+    f.l = t + 1;
+    return f;
+}
+
+// O outside a polygon (k >= 3), edge firstOut seeing it: the closest point is inside a visible
+// edge or a vertex next to one.
+template <class Pr> Feature locateOutside(int k, int firstOut, Pr& pr)
+{
+    Feature f;
     for (int n = 0; n < k; ++n)
     {
         const int e = (firstOut + n) % k;
@@ -156,6 +146,25 @@ template <class Pr> Feature locate(int k, Pr& pr)
         return f;
     }
     throw std::logic_error("exact: closest feature not found (polygon not convex?)");
+}
+
+// The feature of Z (k vertices in counter-clockwise order) closest to the origin O.
+template <class Pr> Feature locate(int k, Pr& pr)
+{
+    if (k == 1)
+    {
+        Feature f;
+        f.kind = Feature::Vertex;
+        f.i = 0;
+        f.overlap = pr.isZero(0);
+        return f;
+    }
+    if (k == 2)
+        return locateOnSegment(pr);
+    for (int e = 0; e < k; ++e)
+        if (pr.orientO(e, e + 1 == k ? 0 : e + 1) < 0)
+            return locateOutside(k, e, pr);
+    return locateInside(k, pr);
 }
 
 // Builds the exact result from a located feature, given for each of the feature's vertices (in the

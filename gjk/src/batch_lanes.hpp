@@ -222,7 +222,7 @@ bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
     auto sel = [](M m, V x, V y) { return L::sel(m, x, y); };
     auto seli = [](M m, M x, M y) { return L::sel(m, x, y); };
     auto splati = [](int x) { return L::splat(I(x)); };
-    // gjk::accurateCross (distance.hpp), lane by lane: the same steps, the same bits.
+    // gjk::accurateCross (simplex.hpp), lane by lane: the same steps, the same bits.
     auto accurateCross = [](V ax, V ay, V bx, V by)
     {
         const V split = L::splat(T((1 << ((std::numeric_limits<T>::digits + 1) / 2)) + 1));
@@ -333,7 +333,7 @@ bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
         const V ve = sel(is3, sel(r12, v12, sel(r13, v13, v23)), v12);
         const V inv = one / (ue + ve);
         const V ae0 = ue * inv, ae1 = ve * inv;
-        // The interior's weights as solve3 makes them (distance.hpp): Cramer's rule from w1 with
+        // The interior's weights as solve3 makes them (simplex.hpp): Cramer's rule from w1 with
         // accurateCross's steps, else (n zero or not finite) the areas'. Only when some lane is in
         // the interior (containment ends that lane's query): the other lanes never read them, and
         // the exact products' cost stays out of the common iteration.
