@@ -1,0 +1,185 @@
+#!/usr/bin/python3
+"""The GEOS adapter: an executable adapter (protocol version 1, docs/peers.md "## GEOS (shapely)")
+for GEOS's distance through shapely, run by Debian's /usr/bin/python3 (python3-shapely 1.8.5,
+GEOS 3.11.1 on Debian 12).
+
+What a Python user would write, and what it takes:
+- each shape is built in its local frame as shapely would be used: 1 point -> Point, 2 points ->
+  LineString, 3 or more -> MultiPoint(points).convex_hull (the case's points are a convex set but
+  may be out of order or degenerate; the hull is a Polygon, or a LineString / Point when they are
+  collinear / equal), then placed with shapely.affinity.affine_transform(g, [c, -s, s, c, px, py])
+  (world = R local + p, (c, s) as given, not renormalised);
+- the core distance is g_a.distance(g_b) (GEOS, double; 0 when a point of one is inside the other
+  polygon), the witness points shapely.ops.nearest_points(g_a, g_b);
+- radii: GEOS has no rounded shapes. With core distance d and radii rA, rB:
+  d > rA + rB: distance d - (rA + rB), each witness moved along the segment between them, by rA
+    (A's, toward B's) and rB (B's, toward A's): exact up to the rounding of that subtraction;
+  d <= rA + rB: the rounded shapes overlap or touch, distance 0, and both witness points are the
+    one point q = pA + rA / (rA + rB) (pB - pA) (q = pA when rA + rB = 0): |q - pA| = d rA/(rA + rB)
+    <= rA and |pB - q| = d rB/(rA + rB) <= rB, so q lies in both rounded shapes (the overlap answer
+    docs/validate-your-gjk.md asks for).
+- iterations: GEOS does not say (-1). No vertex limit (0): GEOS takes any number of points.
+It refuses only a shape without points (shapely cannot build one).
+"""
+import sys
+import time
+
+import shapely
+from shapely.affinity import affine_transform
+from shapely.geometry import LineString, MultiPoint, Point
+from shapely.ops import nearest_points
+
+try:  # shapely 1.8 (Debian 12)
+    from shapely.geos import geos_version
+except ImportError:  # shapely 2
+    geos_version = shapely.geos_version
+
+GEOS_VERSION = '.'.join(str(v) for v in geos_version)
+IMPL = f'geos-{GEOS_VERSION}'
+
+
+def say(line):
+    sys.stdout.write(line + '\n')
+    sys.stdout.flush()
+
+
+class RequestError(Exception):
+    pass
+
+
+def read_shape(t, i, letter):
+    """One shape "<r> <px> <py> <c> <s> <n> <x0> <y0> ..." after its letter at t[i]:
+    ((r, px, py, c, s, points), next index)."""
+    if i >= len(t) or t[i] != letter:
+        raise RequestError(f'expected "{letter}" at token {i}')
+
+    def num(k, what):
+        if k >= len(t):
+            raise RequestError(f'shape {letter}: missing {what}')
+        try:
+            return float(t[k])
+        except ValueError:
+            raise RequestError(f'shape {letter}: {what} "{t[k]}" is not a number') from None
+
+    r, px, py, c, s = (num(i + 1 + k, w) for k, w in enumerate(('radius', 'px', 'py', 'c', 's')))
+    n = num(i + 6, 'n')
+    if n != int(n) or n < 0:
+        raise RequestError(f'shape {letter}: n "{t[i + 6]}" is not a count')
+    n = int(n)
+    points = [(num(i + 7 + 2 * k, f'x{k}'), num(i + 8 + 2 * k, f'y{k}')) for k in range(n)]
+    return (r, px, py, c, s, points), i + 7 + 2 * n
+
+
+def read_case(t, i):
+    a, i = read_shape(t, i, 'A')
+    b, i = read_shape(t, i, 'B')
+    return (a, b), i
+
+
+def geometry(shape):
+    """The shape as a shapely geometry in world coordinates (the module docstring's rules)."""
+    r, px, py, c, s, points = shape
+    if len(points) == 1:
+        local = Point(points[0])
+    elif len(points) == 2:
+        local = LineString(points)
+    else:
+        local = MultiPoint(points).convex_hull
+    return affine_transform(local, [c, -s, s, c, px, py])
+
+
+def distance(case):
+    """(distance, ax, ay, bx, by): the work of one query, inside and outside the timed loop."""
+    a, b = case
+    ga, gb = geometry(a), geometry(b)
+    d = ga.distance(gb)
+    pa, pb = nearest_points(ga, gb)
+    ax, ay, bx, by = pa.x, pa.y, pb.x, pb.y
+    ra, rb = a[0], b[0]
+    if (ra == 0 and rb == 0) or d != d:  # no radii, or a NaN from NaN input: as GEOS gives it
+        return d, ax, ay, bx, by
+    if d > ra + rb:
+        ux, uy = (bx - ax) / d, (by - ay) / d
+        return d - (ra + rb), ax + ra * ux, ay + ra * uy, bx - rb * ux, by - rb * uy
+    w = ra / (ra + rb)
+    qx, qy = ax + w * (bx - ax), ay + w * (by - ay)
+    return 0.0, qx, qy, qx, qy
+
+
+def refusal(case):
+    if not case[0][5] or not case[1][5]:
+        return 'a shape without points'
+    return None
+
+
+def answer(t):
+    if len(t) < 2 or not t[1].isdigit():
+        print(f'gjk2d-geos: request without an id: "{" ".join(t)[:80]}"', file=sys.stderr)
+        return
+    rid = t[1]
+    try:
+        if len(t) < 3 or t[2] != IMPL:
+            return say(f'error {rid} unknown implementation "{t[2] if len(t) > 2 else ""}"')
+        if t[0] == 'distance':
+            case, i = read_case(t, 3)
+            if i != len(t):
+                raise RequestError(f'{len(t) - i} tokens after shape B')
+            why = refusal(case)
+            if why:
+                return say(f'refused {rid} {why}')
+            d, ax, ay, bx, by = distance(case)
+            return say(f'ok {rid} {d!r} {ax!r} {ay!r} {bx!r} {by!r} -1')
+        if t[0] == 'time':
+            try:
+                k_rounds, m = int(t[3]), int(t[4])
+            except (IndexError, ValueError):
+                raise RequestError('time: K and m must be positive integers') from None
+            if k_rounds < 1 or m < 1:
+                raise RequestError('time: K and m must be positive integers')
+            cases, i = [], 5
+            for k in range(m):
+                case, i = read_case(t, i)
+                why = refusal(case)
+                if why:
+                    return say(f'refused {rid} case {k + 1}: {why}')
+                cases.append(case)
+            if i != len(t):
+                raise RequestError(f'{len(t) - i} tokens after case {m}')
+            start = time.perf_counter_ns()
+            for _ in range(k_rounds):
+                for case in cases:
+                    distance(case)
+            total = time.perf_counter_ns() - start
+            return say(f'timed {rid} {total}')
+        return say(f'error {rid} unknown request "{t[0]}"')
+    except RequestError as e:
+        return say(f'error {rid} {e}')
+    except Exception as e:  # shapely/GEOS raised: the case is an error, the stream goes on
+        return say(f'error {rid} {type(e).__name__}: {" ".join(str(e).split())}')
+
+
+def main():
+    handshaken = False
+    while True:
+        line = sys.stdin.readline()  # one line as soon as it arrives (no read-ahead)
+        if not line:
+            return
+        t = line.split()
+        if not t:
+            continue
+        if not handshaken:
+            # We speak version 1 whatever the host asks: the host judges a mismatch (the protocol's rule).
+            if t[0] != 'gjk2d-adapter':
+                print(f'gjk2d-geos: expected the handshake, got "{line.strip()[:80]}"', file=sys.stderr)
+            say('gjk2d-adapter 1')
+            say(f'library GEOS {GEOS_VERSION} via shapely {shapely.__version__}')
+            say(f'implementation {IMPL} double radius 0 GEOS {GEOS_VERSION} distance and nearest_points '
+                f'via shapely {shapely.__version__} (Point, LineString, convex hull), radii subtracted')
+            say('ready')
+            handshaken = True
+            continue
+        answer(t)
+
+
+if __name__ == '__main__':
+    main()
