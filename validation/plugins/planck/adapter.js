@@ -27,6 +27,9 @@ const VERSION = JSON.parse(
 ).version;
 const IMPL = "planck-" + VERSION;
 
+// A request the adapter cannot read (its answer: "error <id> <message>").
+class RequestError extends Error {}
+
 function say(line) {
   process.stdout.write(line + "\n");
 }
@@ -43,11 +46,11 @@ function parseNumber(tok) {
 // One shape "<r> <px> <py> <c> <s> <n> <x0> <y0> ..." from tokens t at index i, after its letter.
 // Returns {shape, next} or throws a message naming the field.
 function readShape(t, i, letter) {
-  if (t[i] !== letter) throw new Error(`expected "${letter}" at token ${i}, got "${t[i]}"`);
+  if (t[i] !== letter) throw new RequestError(`expected "${letter}" at token ${i}, got "${t[i]}"`);
   const num = (k, what) => {
-    if (k >= t.length) throw new Error(`shape ${letter}: missing ${what}`);
+    if (k >= t.length) throw new RequestError(`shape ${letter}: missing ${what}`);
     const v = parseNumber(t[k]);
-    if (v === undefined) throw new Error(`shape ${letter}: ${what} "${t[k]}" is not a number`);
+    if (v === undefined) throw new RequestError(`shape ${letter}: ${what} "${t[k]}" is not a number`);
     return v;
   };
   const r = num(i + 1, "radius");
@@ -56,7 +59,7 @@ function readShape(t, i, letter) {
   const c = num(i + 4, "c");
   const s = num(i + 5, "s");
   const n = num(i + 6, "n");
-  if (!Number.isInteger(n) || n < 0) throw new Error(`shape ${letter}: n "${t[i + 6]}" is not a count`);
+  if (!Number.isInteger(n) || n < 0) throw new RequestError(`shape ${letter}: n "${t[i + 6]}" is not a count`);
   const vertices = new Array(n);
   for (let k = 0; k < n; ++k) {
     vertices[k] = { x: num(i + 7 + 2 * k, `x${k}`), y: num(i + 8 + 2 * k, `y${k}`) };
@@ -99,7 +102,7 @@ function answer(t) {
     if (t[2] !== IMPL) return say(`error ${id} unknown implementation "${t[2]}"`);
     if (t[0] === "distance") {
       const c = readCase(t, 3);
-      if (c.next !== t.length) throw new Error(`${t.length - c.next} tokens after shape B`);
+      if (c.next !== t.length) throw new RequestError(`${t.length - c.next} tokens after shape B`);
       const why = refusal(c);
       if (why) return say(`refused ${id} ${why}`);
       const o = distance(c.a, c.b);
@@ -109,7 +112,7 @@ function answer(t) {
       const K = Number(t[3]);
       const m = Number(t[4]);
       if (!Number.isInteger(K) || K < 1 || !Number.isInteger(m) || m < 1)
-        throw new Error(`time: K "${t[3]}" and m "${t[4]}" must be positive integers`);
+        throw new RequestError(`time: K "${t[3]}" and m "${t[4]}" must be positive integers`);
       const cases = [];
       let i = 5;
       for (let k = 0; k < m; ++k) {
@@ -119,7 +122,7 @@ function answer(t) {
         cases.push(c);
         i = c.next;
       }
-      if (i !== t.length) throw new Error(`${t.length - i} tokens after case ${m}`);
+      if (i !== t.length) throw new RequestError(`${t.length - i} tokens after case ${m}`);
       let sink = 0;
       const start = process.hrtime.bigint();
       for (let round = 0; round < K; ++round) {
@@ -131,7 +134,9 @@ function answer(t) {
     }
     return say(`error ${id} unknown request "${t[0]}"`);
   } catch (e) {
-    return say(`error ${id} ${String(e.message).replace(/\s+/g, " ")}`);
+    // planck threw (e.g. a TypeError on NaN input): the case is an error, the stream goes on.
+    const what = e instanceof RequestError ? e.message : `planck threw ${e.name}: ${e.message}`;
+    return say(`error ${id} ${String(what).replace(/\s+/g, " ")}`);
   }
 }
 
