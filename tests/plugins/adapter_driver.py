@@ -155,6 +155,20 @@ def in_both_squares(centre_a, centre_b):
     return check
 
 
+def facing_gap(xa, xb, tol):
+    # Unit squares centred at (100, 100) and (100 + 1 + gap, 100): (xa, y) and (xb, y), y in
+    # [99.5, 100.5], within tol.
+    def check(pa, pb):
+        if not (near(pa[0], xa, tol) and near(pb[0], xb, tol) and near(pa[1], pb[1], tol)
+                and 99.5 <= pa[1] <= 100.5):
+            return f'witness points {pa}, {pb}: expected ({xa}, y) and ({xb}, y), y in [99.5, 100.5] (tolerance {tol})'
+        return None
+    return check
+
+
+GAP = 101.0000000005 - 101.0  # 5.000000413701855e-10, exact (Sterbenz): the double's gap
+
+
 # Overlap answers differ by peer (docs/peers.md): planck 1.5.0 sets both witness points to
 # pointA - pointB (its finding); the GEOS adapter gives a point in both shapes.
 CASES = {
@@ -204,6 +218,15 @@ CASES = {
                               3.0, 1e-15,
                               {'planck': witnesses_at((1.2, 1.6), (3.0, 4.0), 1e-15),
                                'geos': witnesses_at((1.2, 1.6), (3.0, 4.0), 1e-15)}),
+    # Unit squares centred at (100, 100) and (101.0000000005, 100): apart by GAP = 5.0e-10 (the
+    # double 101.0000000005 minus 101, exact). planck 1.5.0 reports separations up to its
+    # EPSILON = 1e-9 as touching: distance 0, witness points pointA - pointB = (-GAP, 0) near the
+    # origin (its finding). GEOS gives GAP. Tolerance 1e-13: the coordinates near 100 carry
+    # rounding errors of an ulp of 100 (1.4e-14), a few of which reach the gap.
+    'gap-below-1e-9': (shape(SQUARE, p=(100.0, 100.0)), shape(SQUARE, p=(101.0000000005, 100.0)),
+                       {'planck': 0.0, 'geos': GAP}, 1e-13,
+                       {'planck': witnesses_at((-GAP, 0.0), (-GAP, 0.0), 1e-13),
+                        'geos': facing_gap(100.5, 100.5 + GAP, 1e-13)}),
     # A regular 1000-gon of circumradius 1 (vertex 0 at (1, 0), exact) and the point (3, 0): every
     # other vertex is inside the unit circle, so the closest point is (1, 0), distance 2. Checks
     # that the adapter takes 1000 points (its max_vertices is 0: no limit).
@@ -217,6 +240,8 @@ CASES = {
 
 def check_case(ad, peer, name, rid=1):
     a, b, want, tol, witness = CASES[name]
+    if isinstance(want, dict):  # the expected distance differs by peer (a documented finding)
+        want = want[peer]
     answer = ad.ask(f'distance {rid} {ad.variant} {fmt_case(a, b)}')
     d, pa, pb, iterations = parse_ok(answer, rid)
     if not near(d, want, tol):

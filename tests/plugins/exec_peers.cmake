@@ -14,6 +14,7 @@ set(_checks
     "rotated-square|a square turned by (c, s) = (0.6, 0.8) gives 4.3 at its corner (0.7, 0.1)"
     "rotated-segment|a segment turned by (c, s) = (0.6, 0.8) gives 5 and the foot"
     "unnormalised-rotation|(c, s) = (1.2, 1.6) is used as given, not renormalised"
+    "gap-below-1e-9|squares 5e-10 apart give the distance docs/peers.md names"
     "1000-points|a 1000-gon is taken (no vertex limit)"
     "bad-requests|a bad request gets error or refused for its id and the stream goes on"
     "nonfinite|nan and inf in a case get an answer for its id"

@@ -13,6 +13,9 @@
 // Finding: when the shapes overlap with their radii (core distance <= rA + rB), planck 1.5.0 sets
 // both witness points to pointA - pointB (a difference vector, not a point: Box2D's C++ takes the
 // midpoint 0.5 (pointA + pointB)). The adapter reports what planck returns, unchanged.
+// Finding: that branch is taken too when the core distance is at most planck's EPSILON, 1e-9
+// (src/common/Math.ts): shapes 5e-10 apart get distance 0 (a false overlap).
+// Finding: on NaN input getSupport returns -1 and planck throws a TypeError: answered "error".
 //
 // planck is found by require("planck") through NODE_PATH, which the generated wrapper
 // build/<preset>/validation/plugins/gjk2d-planck sets (CMakeLists.txt here).
