@@ -14,9 +14,12 @@ set -euo pipefail
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).
+# The peers (docs/peers.md): libfcl-dev (FCL 0.7), libbullet-dev (Bullet 3.24), python3-shapely
+# (GEOS through shapely, run by Debian's /usr/bin/python3); planck.js comes from the npm registry
+# (scripts/setup_npm.sh, below).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
-          openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
+          openmpi-bin libopenmpi-dev dpkg-dev pkgconf libfcl-dev libbullet-dev python3-shapely)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3 clang clang-format)
 fi
@@ -31,15 +34,18 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
-[[ ${#missing[@]} -eq 0 ]] && exit 0
-
-cmd="apt-get update && apt-get install -y --no-install-recommends ${missing[*]}"
-if [[ $(id -u) -ne 0 ]] || ! command -v apt-get >/dev/null; then
-  echo "setup: missing Debian packages: ${missing[*]}" >&2
-  echo "setup: run as root:  $cmd" >&2
-  exit 3
+if [[ ${#missing[@]} -gt 0 ]]; then
+  cmd="apt-get update && apt-get install -y --no-install-recommends ${missing[*]}"
+  if [[ $(id -u) -ne 0 ]] || ! command -v apt-get >/dev/null; then
+    echo "setup: missing Debian packages: ${missing[*]}" >&2
+    echo "setup: run as root:  $cmd" >&2
+    exit 3
+  fi
+  echo "setup: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-echo "setup: installing ${missing[*]}" >&2
-export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+
+# planck.js (a peer, docs/peers.md) from the npm registry, pinned by its lockfile, into build/npm/.
+exec "$(dirname "$0")/setup_npm.sh"
