@@ -4,7 +4,7 @@
 #   lib/libgjk2d_exact.a     its static library; links GMP and MPFR by name)
 #   include/gjk2d/plugin.h   the plugin ABI                      (gjk2d::plugin)
 #   bin/gjk-validate         the runner
-#   lib/gjk2d/plugins/       the shipped plugins (the Box2D 2.4.1 adapter), loaded by `run`
+#   lib/gjk2d/plugins/       the shipped plugins (the Box2D 2.4.1 adapter, the peers), loaded by `run`
 #   share/gjk2d/cases/       the default campaign's case files
 #   lib/cmake/gjk2d/         gjk2d-config.cmake, its version file and the exported targets
 #   lib/pkgconfig/gjk2d.pc   for pkg-config (cflags of the headers, libs of the exact side)
@@ -25,7 +25,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/gjk/include/ DESTINATION ${CMAKE_INSTALL
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/exact/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/validation/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS gjk-validate RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS gjk2d_box2d_plugin LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/gjk2d/plugins)
+# The shipped plugins: each plugin's CMakeLists.txt (validation/plugins/<folder>/) installs it.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/validation/cases/ DESTINATION ${CMAKE_INSTALL_DATADIR}/gjk2d/cases
         FILES_MATCHING PATTERN "*.json")
 

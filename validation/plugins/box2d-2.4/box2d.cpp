@@ -91,3 +91,9 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 {
     return &kPlugin;
 }
+
+// The library it wraps, for the report's context (the optional export of gjk2d/plugin.h).
+extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
+{
+    return "Box2D 2.4.1 (Debian libbox2d-dev)";
+}
