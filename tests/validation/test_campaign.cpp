@@ -428,6 +428,19 @@ TEST_CASE("case detail: trace and Minkowski difference in world coordinates", "[
     const std::string text = explainText(d);
     CHECK_THAT(text, Catch::Contains("variant double") && Catch::Contains("variant float") &&
                          Catch::Contains("exact: distance"));
+    // No provenance given: none shown.
+    CHECK_FALSE(d.contains("source"));
+    CHECK_FALSE(d.contains("comment"));
+    CHECK_THAT(text, !Catch::Contains("source:"));
+    // A case file's source and comment go into the detail and the text (a control character
+    // quoted as excerpt() does).
+    c.source = "https://example.org/issues/7";
+    c.comment = "reported 3.16,\nexpected 3";
+    const Json dp = caseDetail(c, "file:reported.json", ctx, o, "explain");
+    CHECK(dp["source"] == "https://example.org/issues/7");
+    CHECK(dp["comment"] == "reported 3.16,\nexpected 3");
+    CHECK_THAT(explainText(dp), Catch::Contains("  source: https://example.org/issues/7\n") &&
+                                    Catch::Contains("  comment: reported 3.16,\\x0Aexpected 3\n"));
 }
 
 TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")
