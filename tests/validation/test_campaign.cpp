@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 using namespace gjkval;
@@ -376,6 +377,55 @@ TEST_CASE("the talk's cases: float with the closest-point direction fails, the r
     CHECK(s["float-closest-point"]["failures"].get<int>() >= 1);
 }
 
+TEST_CASE("the reported cases: each names its report, the truth is the report's answer, gjk2d passes",
+          "[campaign]")
+{
+    const std::string file = std::string(GJK2D_SOURCE_DIR) + "/validation/cases/reported.json";
+    // The expected distance of each case as its report (or its maintainers) gave it, restated in
+    // the case's comment; 0 for every "overlapping" or "colliding" one. The circle's by hand:
+    // |(2.34812546, 40.4136238) - (2, 40)| - 0.5.
+    const std::map<std::string, double> expected{
+        {"fcl-508-box-box", 3},
+        {"libccd-25-stacked-cubes", 0},
+        {"opengjk-52-overlapping-prisms-far-from-origin", 0},
+        {"opengjk-3-flat-quad-triangle", 0},
+        {"cute-c2-160-large-integer-rectangles", 0},
+        {"gjk-c-pr5-near-identical-triangles", 0},
+        {"collision-rs-51-rectangle-with-itself", 0},
+        {"shapely-628-triangle-square", 1},
+        {"shapely-628-rectangle-inside", 0},
+        {"box2d-883-concentric-squares", 0},
+        {"jitter2-302-box-and-point", 0.5},
+        {"cute-c2-404-aabb-poly-shared-edge-line", 0},
+        {"cute-c2-252-circle-near-square-corner",
+         std::hypot(2.34812546 - 2, 40.4136238 - 40) - 0.5},
+        {"jsk-roseus-616-bullet-cubes-50", 99950},
+        {"jsk-roseus-616-bullet-cubes-10", 99990},
+    };
+    const CaseFile f = readCaseFile(file);
+    REQUIRE(f.entries.size() == expected.size());
+    EvalContext ctx;
+    ctx.variants = parseVariants("double");
+    for (const auto& e : f.entries)
+    {
+        INFO(e.label);
+        REQUIRE(e.rejected.empty());
+        CHECK(e.c.source.rfind("https://github.com/", 0) == 0);
+        CHECK(e.c.comment.find("Expected") != std::string::npos);
+        REQUIRE(expected.count(e.c.name) == 1);
+        const CaseOutcome o = evaluateCase(e.c, ctx);
+        CHECK(o.exact.distance == within(expected.at(e.c.name), 1e-12));
+    }
+    CampaignConfig c = smallConfig(1);
+    c.families = {};
+    c.caseFiles = {file};
+    c.variants = parseVariants("double,float");
+    const Run camp = run(c);
+    const Json& s = camp.report["families"][0]["variants"];
+    CHECK(s["double"]["failures"] == 0);
+    CHECK(s["float"]["failures"] == 0);
+}
+
 TEST_CASE("case detail: trace and Minkowski difference in world coordinates", "[campaign]")
 {
     Case c;
@@ -428,6 +478,19 @@ TEST_CASE("case detail: trace and Minkowski difference in world coordinates", "[
     const std::string text = explainText(d);
     CHECK_THAT(text, Catch::Contains("variant double") && Catch::Contains("variant float") &&
                          Catch::Contains("exact: distance"));
+    // No provenance given: none shown.
+    CHECK_FALSE(d.contains("source"));
+    CHECK_FALSE(d.contains("comment"));
+    CHECK_THAT(text, !Catch::Contains("source:"));
+    // A case file's source and comment go into the detail and the text (a control character
+    // quoted as excerpt() does).
+    c.source = "https://example.org/issues/7";
+    c.comment = "reported 3.16,\nexpected 3";
+    const Json dp = caseDetail(c, "file:reported.json", ctx, o, "explain");
+    CHECK(dp["source"] == "https://example.org/issues/7");
+    CHECK(dp["comment"] == "reported 3.16,\nexpected 3");
+    CHECK_THAT(explainText(dp), Catch::Contains("  source: https://example.org/issues/7\n") &&
+                                    Catch::Contains("  comment: reported 3.16,\\x0Aexpected 3\n"));
 }
 
 TEST_CASE("metrics: ulps, the bound, misclassification", "[campaign]")

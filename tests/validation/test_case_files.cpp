@@ -141,6 +141,50 @@ TEST_CASE("radius and transform are optional", "[cases]")
     CHECK(f.comments.empty());
 }
 
+TEST_CASE("a case's optional source and comment are read, written and type-checked", "[cases]")
+{
+    const CaseFile f = parseCaseFile(R"({"format": "gjk-cases/1", "cases": [
+        {"name": "both", "source": "https://example.org/issues/1", "comment": "expected 3",
+         "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}},
+        {"name": "none", "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}},
+        {"name": "bad-source", "source": 508, "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}},
+        {"name": "bad-comment", "comment": ["x"], "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}}
+    ]})",
+                                     "prov.json");
+    REQUIRE(f.entries.size() == 4);
+    REQUIRE(f.entries[0].rejected.empty());
+    CHECK(f.entries[0].c.source == "https://example.org/issues/1");
+    CHECK(f.entries[0].c.comment == "expected 3");
+    // A file without them (every file before they existed) is read as before.
+    REQUIRE(f.entries[1].rejected.empty());
+    CHECK(f.entries[1].c.source.empty());
+    CHECK(f.entries[1].c.comment.empty());
+    // A wrong type rejects the case, naming file, case and field.
+    CHECK(f.entries[2].label == "prov.json#2 (case 'bad-source')");
+    CHECK(f.entries[2].rejected == "source is a number, expected a string");
+    CHECK(f.entries[3].label == "prov.json#3 (case 'bad-comment')");
+    CHECK(f.entries[3].rejected == "comment is an array, expected a string");
+    // Longer than a file comment may be: rejected.
+    const std::string longText = std::string(kMaxCommentBytes + 1, 'x');
+    const CaseFile g = parseCaseFile(R"({"format": "gjk-cases/1", "cases": [{"name": "long", "comment": ")" +
+                                         longText +
+                                         R"(", "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}}]})",
+                                     "long.json");
+    REQUIRE(g.entries.size() == 1);
+    CHECK(g.entries[0].rejected == "comment is 65537 bytes long, more than 65536");
+    // Written only when present, and read back unchanged.
+    std::vector<Case> cases{f.entries[0].c, f.entries[1].c};
+    const std::string text = caseFileText({}, cases);
+    CHECK(text.find(R"("source":"https://example.org/issues/1")") != std::string::npos);
+    CHECK(caseToJson(f.entries[1].c).count("source") == 0);
+    CHECK(caseToJson(f.entries[1].c).count("comment") == 0);
+    const CaseFile back = parseCaseFile(text, "back.json");
+    REQUIRE(back.entries.size() == 2);
+    CHECK(back.entries[0].c.source == cases[0].source);
+    CHECK(back.entries[0].c.comment == cases[0].comment);
+    CHECK(back.entries[1].c.comment.empty());
+}
+
 TEST_CASE("an invalid JSON file is refused with file, line and column", "[cases]")
 {
     const std::string text =
@@ -291,6 +335,8 @@ void requireDumpable(const CaseFile& f)
     {
         REQUIRE_NOTHROW(Json(e.label).dump());
         REQUIRE_NOTHROW(Json(e.c.name).dump());
+        REQUIRE_NOTHROW(Json(e.c.source).dump());
+        REQUIRE_NOTHROW(Json(e.c.comment).dump());
         REQUIRE_NOTHROW(Json(e.rejected).dump());
     }
 }

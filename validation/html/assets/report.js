@@ -1557,6 +1557,11 @@
       ex.overlap === true ? h('span', {class: 'chip warn'}, 'shapes overlap') : null
     ];
     this.root.appendChild(h('div', {class: 'viewer-head'}, h('h3', {}, has(d.name) ? String(d.name) : 'case'), chips));
+    // A case file's provenance (optional `source` and `comment`), as text: never a link or markup.
+    if (has(d.source) || has(d.comment))
+      this.root.appendChild(h('p', {class: 'provenance small'},
+        has(d.source) ? ['source: ', h('code', {}, String(d.source)), has(d.comment) ? ' ' : null] : null,
+        has(d.comment) ? String(d.comment) : null));
     this.resultInfo = h('div', {class: 'result-info'});
     this.root.appendChild(this.resultInfo);
 

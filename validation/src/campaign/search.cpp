@@ -503,6 +503,10 @@ class Search
         SearchCase child;
         child.c = parent.c;
         child.c.name = fmt::format("search/{}", index);
+        // A mutant is not the reported case: its provenance is its start case and mutations
+        // (the output's comments), not the parent's source and comment.
+        child.c.source.clear();
+        child.c.comment.clear();
         child.origin = parent.origin;
         child.mutations = parent.mutations;
         for (std::size_t op : ops)

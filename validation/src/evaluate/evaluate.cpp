@@ -754,6 +754,10 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
 {
     Json j = perCaseJson(c, family, ctx, o);
     j["worst_by"] = worstBy;
+    if (!c.source.empty())
+        j["source"] = c.source;
+    if (!c.comment.empty())
+        j["comment"] = c.comment;
     j["a"] = shapeDetail(c.a);
     j["b"] = shapeDetail(c.b);
     Json mk = Json::array();

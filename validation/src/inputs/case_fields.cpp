@@ -139,6 +139,21 @@ ShapeIn readShape(const RJson& c, const char* key)
     return s;
 }
 
+// An optional provenance field ("source", "comment"): a string of at most kMaxCommentBytes, or
+// absent (empty). Printed by `explain` and kept in a case's detail, so bounded like a file comment.
+std::string readText(const RJson& c, const char* key)
+{
+    if (!c.contains(key))
+        return {};
+    const RJson& j = c[key];
+    if (!j.is_string())
+        fieldError(fmt::format("{} is {}, expected a string", key, typeName(j)));
+    const std::string& s = j.get_ref<const std::string&>();
+    if (s.size() > kMaxCommentBytes)
+        fieldError(fmt::format("{} is {} bytes long, more than {}", key, s.size(), kMaxCommentBytes));
+    return s;
+}
+
 bool isControl(std::string_view s)
 {
     for (std::size_t i = 0; i < s.size();)
@@ -187,6 +202,8 @@ CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std:
             fieldError(tooLarge);
         e.c.a = readShape(c, "a");
         e.c.b = readShape(c, "b");
+        e.c.source = readText(c, "source");
+        e.c.comment = readText(c, "comment");
     }
     catch (const FieldError& err)
     {

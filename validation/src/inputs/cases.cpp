@@ -39,6 +39,10 @@ Json caseToJson(const Case& c)
     j["name"] = c.name;
     j["a"] = shapeToJson(c.a);
     j["b"] = shapeToJson(c.b);
+    if (!c.source.empty())
+        j["source"] = c.source;
+    if (!c.comment.empty())
+        j["comment"] = c.comment;
     return j;
 }
 

@@ -33,6 +33,9 @@ struct Case
 {
     std::string name;
     ShapeIn a, b;
+    // Optional provenance (docs/validation.md, "Case files"): where the case comes from (a URL or
+    // a citation) and what it is. Empty when the file gives none; never read by an evaluation.
+    std::string source, comment;
 };
 
 // One entry of a case file in file order: a valid case, or a rejected one (reason non-empty).
@@ -59,7 +62,7 @@ inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 
 inline constexpr std::size_t kMaxJsonDepth = 64;             // a case file needs 6 levels
 inline constexpr std::size_t kMaxCasesPerFile = 1'000'000;   // entries of "cases"
 inline constexpr std::size_t kMaxComments = 10'000;          // entries of "comments"
-inline constexpr std::size_t kMaxCommentBytes = 64 << 10;    // one comment
+inline constexpr std::size_t kMaxCommentBytes = 64 << 10;    // one comment, a case's source or comment
 inline constexpr std::size_t kMaxCaseNameBytes = 256;        // one case name
 inline constexpr std::size_t kMaxShapePoints = 1'000'000;    // points of one shape
 inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of one case

@@ -121,6 +121,10 @@ std::string explainText(const Json& d)
 {
     std::string s = fmt::format("case {}  (family {})\n", d["name"].get<std::string>(),
                                 d["family"].get<std::string>());
+    // A case file's provenance fields (any string: printed as excerpt() quotes it, printable).
+    for (const char* k : {"source", "comment"})
+        if (d.contains(k))
+            s += fmt::format("  {}: {}\n", k, excerpt(d[k].get<std::string>(), 2000));
     for (const char* k : {"a", "b"})
         s += shapeText(k, d[k]);
     if (d.contains("rejected"))
