@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 namespace gjkval
@@ -131,6 +132,29 @@ Json variantsJson(const EvalContext& ctx)
     return out;
 }
 
+// The context's "plugins": every plugin file whose variants the campaign ran, in order, with its
+// kind, its library (name and version, as the plugin gives it) and every variant it gave.
+Json pluginsJson(const std::vector<const VariantInfo*>& variants)
+{
+    Json out = Json::array();
+    std::vector<std::string> seen;
+    for (const VariantInfo* v : variants)
+    {
+        if (!v->plugin || std::find(seen.begin(), seen.end(), v->plugin->path) != seen.end())
+            continue;
+        seen.push_back(v->plugin->path);
+        Json names = Json::array();
+        for (const VariantInfo* w : pluginVariants())
+            if (w->plugin->path == v->plugin->path)
+                names.push_back(w->name);
+        out.push_back({{"file", v->plugin->path},
+                       {"kind", v->plugin->kind},
+                       {"library", v->plugin->library},
+                       {"variants", std::move(names)}});
+    }
+    return out;
+}
+
 // worst-cases.json (every family's kept cases, names made unique) and the report's "worst" (each
 // family's worst case in detail).
 Json worstCases(const CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
@@ -184,6 +208,7 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
     Json context = contextJson(date, revision, config.command, config.seed, threads,
                                std::move(inputs), cases, rejected);
     context["exact_route"] = exact::routeName(config.route);
+    context["plugins"] = pluginsJson(config.variants);
     context["elapsed_s"] = {{"generate", t.inputs}, {"exact", t.exact},   {"gjk", t.gjk},
                             {"witness", t.witness}, {"timing", t.timing}, {"total", totalSeconds}};
     context["throughput"] = {
