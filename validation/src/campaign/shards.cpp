@@ -95,7 +95,7 @@ CampaignConfig configOf(const Json& identity, const CampaignConfig& base)
     {
         const std::string name = n.get<std::string>();
         const VariantInfo* v = findVariant(name);
-        if (!v) // a shipped peer's variant (run, run --peers): load every installed peer, look again
+        if (!v) // a shipped peer's variant (run, --peers): load every built peer, look again
             for (const auto& path : shippedPluginPaths(true))
                 loadPlugin(path);
         v = findVariant(name);

@@ -2,11 +2,11 @@
 // built from the folded (or merged) state.
 #include "campaign/state.hpp"
 
+#include "evaluate/peers.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <set>
 
 namespace gjkval
@@ -128,29 +128,6 @@ Json variantsJson(const EvalContext& ctx)
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};
         out.push_back(std::move(j));
-    }
-    return out;
-}
-
-// The context's "plugins": every plugin file whose variants the campaign ran, in order, with its
-// kind, its library (name and version, as the plugin gives it) and every variant it gave.
-Json pluginsJson(const std::vector<const VariantInfo*>& variants)
-{
-    Json out = Json::array();
-    std::vector<std::string> seen;
-    for (const VariantInfo* v : variants)
-    {
-        if (!v->plugin || std::find(seen.begin(), seen.end(), v->plugin->path) != seen.end())
-            continue;
-        seen.push_back(v->plugin->path);
-        Json names = Json::array();
-        for (const VariantInfo* w : pluginVariants())
-            if (w->plugin->path == v->plugin->path)
-                names.push_back(w->name);
-        out.push_back({{"file", v->plugin->path},
-                       {"kind", v->plugin->kind},
-                       {"library", v->plugin->library},
-                       {"variants", std::move(names)}});
     }
     return out;
 }

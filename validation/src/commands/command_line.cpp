@@ -183,8 +183,9 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
                                              o.paths[i], o.paths[j]));
         }
     if (o.peers && o.noDefault)
-        throw InputError("--peers loads every shipped peer, --no-default-plugins leaves them "
-                         "out: give one of them (a single peer: --no-default-plugins --plugin FILE)");
+        throw InputError(
+            "--peers loads every shipped peer, --no-default-plugins leaves them "
+            "out: give one of them (a single peer: --no-default-plugins --plugin FILE)");
     LoadedPlugins loaded;
     if (!o.noDefault)
         for (const auto& path : shippedPluginPaths(o.peers))

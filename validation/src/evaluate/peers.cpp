@@ -1,5 +1,8 @@
 #include "evaluate/peers.hpp"
 
+#include "evaluate/plugins.hpp"
+
+#include <algorithm>
 #include <filesystem>
 #include <system_error>
 
@@ -27,6 +30,27 @@ std::vector<std::string> shippedPluginPaths(bool peers)
             if (auto path = shippedPeerPath(peer); !path.empty())
                 found.push_back(std::move(path));
     return found;
+}
+
+Json pluginsJson(const std::vector<const VariantInfo*>& variants)
+{
+    Json out = Json::array();
+    std::vector<std::string> seen;
+    for (const VariantInfo* v : variants)
+    {
+        if (!v->plugin || std::find(seen.begin(), seen.end(), v->plugin->path) != seen.end())
+            continue;
+        seen.push_back(v->plugin->path);
+        Json names = Json::array();
+        for (const VariantInfo* w : pluginVariants())
+            if (w->plugin->path == v->plugin->path)
+                names.push_back(w->name);
+        out.push_back({{"file", v->plugin->path},
+                       {"kind", v->plugin->kind},
+                       {"library", v->plugin->library},
+                       {"variants", std::move(names)}});
+    }
+    return out;
 }
 
 } // namespace gjkval
