@@ -36,18 +36,20 @@ def fail(code, message):
     sys.exit(code)
 
 
-def run(cmd):
+def run(cmd, must=True):
+    """Runs a gjk-validate command; its exit code (1, a judged failure, still writes its output)."""
     print("+ " + shlex.join(cmd), file=sys.stderr)
     done = subprocess.run(cmd, stdout=subprocess.DEVNULL)
-    if done.returncode not in (0, 1):  # 1: a judged failure; the report is still written
+    if must and done.returncode not in (0, 1):
         fail(1, f"`{shlex.join(cmd)}` exited {done.returncode}")
+    return done.returncode
 
 
 def num(x):
     """A report number (non-finite ones are strings) as a float, None when absent."""
     if x is None:
         return None
-    return float(x) if not isinstance(x, str) else float(x.replace("inf", "Infinity"))
+    return float(x)  # also "inf", "-inf", "nan"
 
 
 def group_of(family):
@@ -94,8 +96,8 @@ def group_rows(report, variant):
     rows = []
     for name, sts in groups.items():
         s = lambda k: sum(st.get(k, 0) or 0 for st in sts)
-        rel = merge_hist([st["errors"].get("rel") for st in sts])
-        ratio = merge_hist([st["errors"].get("bound_ratio") for st in sts])
+        rel = merge_hist([st.get("errors", {}).get("rel") for st in sts])
+        ratio = merge_hist([st.get("errors", {}).get("bound_ratio") for st in sts])
         timed = [(st["cases"], num(st["ns_per_query"])) for st in sts
                  if st.get("ns_per_query") is not None]
         weight = sum(c for c, _ in timed)
@@ -277,12 +279,18 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
         family, case, ratio = w
         cmd = explain_command(gjk, report, family, case, files)
         js = work / f"explain-{v}.json"
-        run(cmd + ["--json", str(js)])
+        code = run(cmd + ["--json", str(js)], must=False)
+        shown = [shown_gjk] + [rel(x) for x in cmd[1:]] + ["--json", "case.json"]
+        if code not in (0, 1) or not js.is_file():
+            print(f"peers_doc.py: {v}'s worst case not drawn: explain exited {code}",
+                  file=sys.stderr)
+            out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
+                    f"`{shlex.join(shown)}` exited {code}."]
+            continue
         detail = json.loads(js.read_text())
         svg = svg_dir / f"{v}.svg"
         drawn = draw(detail, v, svg)
         ans = detail.get("variants", {}).get(v, {})
-        shown = [shown_gjk] + [rel(x) for x in cmd[1:]] + ["--json", "case.json"]
         out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
                 f"{g(num(exact_for(detail, v).get('distance')), '.17g')}, {v} "
                 f"{g(num(ans.get('distance')), '.17g')}. Command: `{shlex.join(shown)}`"]
