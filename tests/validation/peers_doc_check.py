@@ -2,8 +2,8 @@
 """CTest "docs: peers.md generator runs on a small campaign": scripts/peers_doc.py on a tiny
 campaign, into a temporary document seeded with hand-written text around the markers. Checks:
 the generated part has a table row for every variant of every plugin the report's context lists
-(and one per family group), an SVG per plugin variant, the title, and the hand-written text kept
-byte for byte. Writes only under a temporary directory."""
+(and one per family group), its largest and p99 errors those of the report (one family per group
+here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Writes only under a temporary directory."""
 import argparse
 import json
 import pathlib
@@ -53,6 +53,25 @@ def main():
                         errors.append(f"no table row for {v} in {group}")
                 if not (t / "peers" / f"{v}.svg").is_file():
                     errors.append(f"no drawing peers/{v}.svg")
+        # Each group here holds one family: the joined histograms' p99 and max must be that
+        # family's, as the runner computed them (Hist::percentile).
+        cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),
+                "largest error / gjk2d's bound": ("bound_ratio", "max"),
+                "p99 error / bound": ("bound_ratio", "p99")}
+        head = next(l for l in rows if l.startswith("| variant |"))
+        names = [c.strip() for c in head.strip("|").split("|")]
+        for fam in report["families"]:
+            group = fam["name"].split("/")[0]
+            for v, st in fam["variants"].items():
+                row = next((l for l in rows if l.startswith(f"| {v} | {group} | ")), None)
+                if row is None:
+                    continue
+                cells = [c.strip() for c in row.strip("|").split("|")]
+                for col, (hist, key) in cols.items():
+                    want = format(float(st["errors"][hist][key]), ".3g")
+                    got = cells[names.index(col)]
+                    if got != want:
+                        errors.append(f"{v} in {group}: {col} {got}, the report says {want}")
         for e in errors:
             print("FAIL: " + e)
         if errors:
