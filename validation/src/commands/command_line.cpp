@@ -208,7 +208,18 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
         throw InputError("--plugin-timeout: expected seconds in 0.01..3600");
     // Loaded first, so that --variants can name their implementations.
     const LoadedPlugins loaded = loadPlugins(o);
-    std::vector<const VariantInfo*> variants = parseVariants(list);
+    std::vector<const VariantInfo*> variants;
+    try
+    {
+        variants = parseVariants(list);
+    }
+    catch (const InputError& e) // a peer not in the default campaign is loaded by --peers only
+    {
+        if (o.peers || o.noDefault)
+            throw;
+        throw InputError(std::string(e.what()) + "; the variants of a shipped peer that is not in "
+                                                 "the default campaign need --peers (see `list`)");
+    }
     auto add = [&](const std::vector<const VariantInfo*>& vs)
     {
         for (const VariantInfo* v : vs)
