@@ -10,7 +10,8 @@ It runs `build/release/validation/gjk-validate run --peers` on the default campa
 its report.json and rewrites only the part of the document between the markers
 `<!-- peers_doc.py: begin -->` and `<!-- peers_doc.py: end -->` (created with the title when the
 document does not exist; the hand-written sections around it are kept). Each plugin variant's worst
-case is drawn to <doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case.
+case is drawn to <doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case
+(the folder's other .svg files are removed: it holds only this script's drawings).
 Only Python's standard library. Exit codes: 0 written, 1 a command failed, 2 bad usage.
 """
 import argparse
@@ -271,6 +272,8 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
            "the command under it."]
     files = [p["file"] for p in report["context"].get("plugins", [])]
     svg_dir.mkdir(parents=True, exist_ok=True)
+    for old in svg_dir.glob("*.svg"):  # the drawings of peers no longer in the report go too
+        old.unlink()
     for v in peers:
         w = worst_of(report, v)
         if w is None:
