@@ -545,7 +545,7 @@ def check_data_views(views, report):
     fails = []
     fams = {str(f.get('name')): f for f in report.get('families', []) if isinstance(f, dict)}
     cells = {(c['family'], c['variant']): c for c in views['cells']}
-    checked = {'grey': 0, 'tips': 0, 'invalid': 0, 'viewer': 0, 'plugin files': 0}
+    checked = {'grey': 0, 'tips': 0, 'invalid': 0, 'viewer': 0, 'plugin files': 0, 'context plugins': 0}
     for (fam, var), c in cells.items():
         st = (fams.get(fam, {}).get('variants') or {}).get(var)
         k = {key: count_of(st, key) for key in ('cases', 'refused', 'skipped', 'invalid')}
@@ -587,6 +587,11 @@ def check_data_views(views, report):
             checked['plugin files'] += 1
             if path not in views['variantsText']:
                 fails.append(f'the variants table does not name the plugin file {path!r} of {v.get("name")!r}')
+    for p in (report.get('context') or {}).get('plugins') or []:  # context.plugins (issue 32)
+        checked['context plugins'] += 1
+        for part in [p.get('file'), p.get('kind'), p.get('library')] + list(p.get('variants') or []):
+            if part and str(part) not in views['variantsText']:
+                fails.append(f'the context section does not show {part!r} of the plugin {p.get("file")!r}')
     total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
     if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
         fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')

@@ -391,3 +391,74 @@ TEST_CASE("cli the same plugin file given twice exits 2 naming it", "[cli]")
         CHECK(!fs::exists(d / "out"));
     }
 }
+
+// Issue 32: the shipped peers (validation/src/evaluate/peers.hpp, docs/peers.md).
+TEST_CASE("cli list shows every shipped peer, built or not", "[cli]")
+{
+    const Run r = runCli({"list"});
+    INFO(r.out + r.err);
+    REQUIRE(r.code == kExitPass);
+    // ISSUE 32's file names; only Box2D 2.4.1's adapter is in the default campaign so far.
+    for (const char* file :
+         {"gjk2d-box2d.so", "gjk2d-box2d3.so", "gjk2d-fcl.so", "gjk2d-bullet-float.so",
+          "gjk2d-bullet-double.so", "gjk2d-planck", "gjk2d-geos"})
+    {
+        INFO(file);
+        const auto lines = linesWith(r.out, std::string("  ") + file + " ");
+        REQUIRE(lines.size() == 1);
+        const fs::path built = fs::path(GJK_VALIDATE_EXE).parent_path() / "plugins" / file;
+        if (!fs::exists(built))
+            CHECK(contains(lines[0], "not built (needs "));
+        else
+            CHECK(contains(lines[0],
+                           std::string(file) == "gjk2d-box2d.so" ? " default " : " --peers "));
+    }
+}
+
+TEST_CASE("cli run --peers with --no-default-plugins exits 2 with one line", "[cli]")
+{
+    const fs::path d = freshDir("peers-no-default");
+    const Run r = runCli({"run", "--family", "random:10", "--peers", "--no-default-plugins",
+                          "--out", (d / "out").string()});
+    CHECK(r.code == kExitInput);
+    CHECK(linesWith(r.err, "").size() == 1);
+    CHECK(
+        contains(r.err, "--peers loads every shipped peer, --no-default-plugins leaves them out"));
+    CHECK(!fs::exists(d / "out"));
+}
+
+TEST_CASE("cli run --peers adds the peers to --variants, and the context lists the plugins",
+          "[cli]")
+{
+    const fs::path d = freshDir("peers-run");
+    const std::string real = fs::canonical(kShippedPlugin).string();
+    const Run with = runCli({"run", "--family", "random:10", "--variants", "double", "--peers",
+                             "--no-timing", "--out", (d / "with").string()});
+    INFO(with.err);
+    REQUIRE(with.code == kExitPass);
+    const auto r = Json::parse(slurp(d / "with" / "report.json"));
+    std::vector<std::string> names;
+    for (const auto& v : r["variants"])
+        names.push_back(v["name"].get<std::string>());
+    CHECK(std::count(names.begin(), names.end(), "double") == 1);
+    CHECK(std::count(names.begin(), names.end(), "box2d-2.4.1") == 1);
+    bool listed = false;
+    for (const auto& p : r["context"]["plugins"])
+        if (p["file"] == real)
+        {
+            listed = true;
+            CHECK(p["kind"] == "shared-library");
+            CHECK(p["variants"] == Json::array({"box2d-2.4.1"}));
+            CHECK(p.contains("library"));
+        }
+    CHECK(listed);
+    CHECK(contains(slurp(d / "with" / "report.md"), "| plugin | `" + real + "` (shared-library"));
+
+    // Without --peers, --variants double runs no plugin: the context lists none.
+    const Run without = runCli({"run", "--family", "random:10", "--variants", "double",
+                                "--no-timing", "--out", (d / "without").string()});
+    REQUIRE(without.code == kExitPass);
+    const auto w = Json::parse(slurp(d / "without" / "report.json"));
+    CHECK(w["variants"].size() == 1);
+    CHECK(w["context"]["plugins"] == Json::array());
+}

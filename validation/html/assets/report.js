@@ -527,13 +527,23 @@
     row('Cases', has(ctx.cases_total) || has(ctx.cases_rejected)
       ? fmtInt(ctx.cases_total) + ' total' + (has(ctx.cases_rejected) ? ', ' + fmtInt(ctx.cases_rejected) + ' rejected' : '') : null);
     row('Exact route', ctx.exact_route);
+    // Every plugin whose variants ran: its file, kind, library (name and version) and variants.
+    if (Array.isArray(ctx.plugins) && ctx.plugins.length) {
+      row('Plugins', h('ul', {class: 'plain'}, ctx.plugins.map(function (p) {
+        p = p && typeof p === 'object' ? p : {};
+        var names = Array.isArray(p.variants) ? p.variants.map(String) : [];
+        return h('li', {class: 'plugin-entry'}, h('code', {}, String(p.file)),
+          ' (' + [p.kind, p.library].filter(function (x) { return has(x) && x !== ''; }).join(', ') + '): ',
+          names.map(function (n, i) { return h('span', {}, i ? ', ' : '', variantDot(n), n); }));
+      })));
+    }
     row('Exit code', has(report.exit_code) ? String(report.exit_code) + (report.passed === true ? ' (passed)' : report.passed === false ? ' (failed)' : '') : null);
     if (ctx.elapsed_s && typeof ctx.elapsed_s === 'object') {
       row('Elapsed', Object.keys(ctx.elapsed_s).map(function (k) { return k + ' ' + fmt(ctx.elapsed_s[k]) + ' s'; }).join(', '));
     }
     // Fields this page does not know yet are still shown.
     var known = ['date', 'host', 'compiler', 'flags', 'build_type', 'git_revision', 'command', 'seed', 'threads', 'inputs',
-      'cases_total', 'cases_rejected', 'exact_route', 'elapsed_s'];
+      'cases_total', 'cases_rejected', 'exact_route', 'elapsed_s', 'plugins'];
     Object.keys(ctx).forEach(function (k) {
       if (known.indexOf(k) >= 0) return;
       var v = ctx[k];

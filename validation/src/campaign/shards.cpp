@@ -3,6 +3,7 @@
 #include "campaign/state.hpp"
 
 #include "common/output.hpp"
+#include "evaluate/peers.hpp"
 #include "evaluate/plugins.hpp"
 
 #include <fmt/format.h>
@@ -94,8 +95,8 @@ CampaignConfig configOf(const Json& identity, const CampaignConfig& base)
     {
         const std::string name = n.get<std::string>();
         const VariantInfo* v = findVariant(name);
-        if (!v) // a shipped plugin's variant (run loads them by default): load them and look again
-            for (const auto& path : shippedPluginPaths())
+        if (!v) // a shipped peer's variant (run, --peers): load every built peer, look again
+            for (const auto& path : shippedPluginPaths(true))
                 loadPlugin(path);
         v = findVariant(name);
         if (!v)

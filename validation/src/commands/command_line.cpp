@@ -2,6 +2,7 @@
 
 #include "campaign/campaign.hpp"
 #include "common/output.hpp"
+#include "evaluate/peers.hpp"
 #include "evaluate/plugins.hpp"
 #include "inputs/families.hpp"
 #include "report/pages.hpp"
@@ -159,10 +160,14 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
         ->capture_default_str();
     sub.add_flag("--no-default-plugins", o.noDefault,
                  shipped == ShippedPlugins::JoinDefaultList
-                     ? "leave out the shipped plugins (the Box2D 2.4.1 adapter), which run "
-                       "joins when --variants is left at its default"
-                     : "do not load the shipped plugins (the Box2D 2.4.1 adapter), which "
-                       "--variants can name");
+                     ? "leave out the shipped plugins of the default campaign (`gjk-validate "
+                       "list`), which run joins when --variants is left at its default"
+                     : "do not load the shipped plugins of the default campaign (`gjk-validate "
+                       "list`), which --variants can name");
+    sub.add_flag("--peers", o.peers,
+                 "also load every installed shipped peer (docs/peers.md; `gjk-validate list` "
+                 "says which are installed) and add their variants to the variants, whatever "
+                 "--variants says; not with --no-default-plugins");
     o.judges = judges;
 }
 
@@ -177,9 +182,13 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
                                              "file is loaded once",
                                              o.paths[i], o.paths[j]));
         }
+    if (o.peers && o.noDefault)
+        throw InputError(
+            "--peers loads every shipped peer, --no-default-plugins leaves them "
+            "out: give one of them (a single peer: --no-default-plugins --plugin FILE)");
     LoadedPlugins loaded;
     if (!o.noDefault)
-        for (const auto& path : shippedPluginPaths())
+        for (const auto& path : shippedPluginPaths(o.peers))
             for (const VariantInfo* v : loadPlugin(path))
                 loaded.shipped.push_back(v);
     for (const auto& path : o.paths)
@@ -199,14 +208,25 @@ std::vector<const VariantInfo*> selectVariants(const std::string& list, const Pl
         throw InputError("--plugin-timeout: expected seconds in 0.01..3600");
     // Loaded first, so that --variants can name their implementations.
     const LoadedPlugins loaded = loadPlugins(o);
-    std::vector<const VariantInfo*> variants = parseVariants(list);
+    std::vector<const VariantInfo*> variants;
+    try
+    {
+        variants = parseVariants(list);
+    }
+    catch (const InputError& e) // a peer not in the default campaign is loaded by --peers only
+    {
+        if (o.peers || o.noDefault)
+            throw;
+        throw InputError(std::string(e.what()) + "; the variants of a shipped peer that is not in "
+                                                 "the default campaign need --peers (see `list`)");
+    }
     auto add = [&](const std::vector<const VariantInfo*>& vs)
     {
         for (const VariantInfo* v : vs)
             if (std::find(variants.begin(), variants.end(), v) == variants.end())
                 variants.push_back(v);
     };
-    if (shipped == ShippedPlugins::JoinDefaultList && list == kDefaultVariants)
+    if (o.peers || (shipped == ShippedPlugins::JoinDefaultList && list == kDefaultVariants))
         add(loaded.shipped);
     add(loaded.given);
     for (const auto& name : o.judge)

@@ -1,5 +1,6 @@
 // gjk-validate list: the families and the variants, the plugins' among them.
 #include "commands/command_line.hpp"
+#include "evaluate/peers.hpp"
 #include "evaluate/plugins.hpp"
 #include "evaluate/variants.hpp"
 #include "inputs/families.hpp"
@@ -12,6 +13,23 @@ namespace gjkval
 {
 namespace
 {
+// Every shipped peer, installed or not: "default" (run loads it), "--peers" (only run --peers
+// does), or "not built" with what building it needs.
+void printShippedPeers()
+{
+    std::printf("shipped peers (docs/peers.md; run loads the default ones, run --peers every "
+                "built one; --peers lists their variants above):\n");
+    for (const ShippedPeer& peer : kShippedPeers)
+    {
+        const std::string path = shippedPeerPath(peer);
+        if (path.empty())
+            std::printf("  %-22s not built (needs %s)\n", peer.file, peer.needs);
+        else
+            std::printf("  %-22s %-9s %s\n", peer.file,
+                        peer.inDefaultCampaign ? "default" : "--peers", path.c_str());
+    }
+}
+
 int listCommand(const PluginOptions& plugins)
 {
     const LoadedPlugins loaded = loadPlugins(plugins); // before any output: a bad one exits 2
@@ -32,6 +50,7 @@ int listCommand(const PluginOptions& plugins)
             std::printf("  %-22s %-6s %-10s %s (%s%s)\n", v->name.c_str(), scalarName(v->scalar),
                         "comparison", v->description.c_str(),
                         group == &loaded.shipped ? "shipped, " : "", v->plugin->path.c_str());
+    printShippedPeers();
     flushStdout();
     return kExitPass;
 }
@@ -47,7 +66,10 @@ Subcommand addList(CLI::App& app, const CommandLine&)
                      "also list this plugin's implementations (gjk2d/plugin.h); repeatable")
         ->allow_extra_args(false);
     list->add_flag("--no-default-plugins", o->noDefault,
-                   "leave out the shipped plugins (the Box2D 2.4.1 adapter)");
+                   "leave out the shipped plugins of the default campaign");
+    list->add_flag("--peers", o->peers,
+                   "also load every built shipped peer and list its variants; not with "
+                   "--no-default-plugins");
     list->footer(exitCodesHelp());
     return {list, [o] { return listCommand(*o); }};
 }

@@ -58,7 +58,8 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
 {
     CampaignConfig cfg = o.config;
     cfg.seed = parseSeed(o.seed);
-    // The shipped plugins (Box2D 2.4.1) join the default variant list; an explicit one names them.
+    // The default campaign's shipped plugins join the default variant list (an explicit one names
+    // them); --peers adds every installed shipped peer.
     cfg.variants = selectVariants(o.variants, o.plugins, ShippedPlugins::JoinDefaultList);
     cfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     cfg.route = parseRouteOrThrow(o.route);

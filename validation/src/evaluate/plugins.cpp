@@ -209,7 +209,7 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
     reg.paths.push_back(canonical);
     for (int i = 0; i < d->count; ++i)
     {
-        reg.impls.push_back({canonical, logName, d->implementations[i]});
+        reg.impls.push_back({canonical, logName, d->implementations[i], "shared-library", ""});
         reg.variants.push_back(pluginVariant(path, reg.impls.back()));
         out.push_back(&reg.variants.back());
     }
@@ -246,25 +246,6 @@ void judgePluginVariant(const std::string& name)
     throw InputError(fmt::format("--judge {}: no loaded plugin has an implementation of that name "
                                  "(loaded: {})",
                                  name, known.empty() ? "none" : known));
-}
-
-std::vector<std::string> shippedPluginPaths()
-{
-    std::error_code ec;
-    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-    if (ec)
-        return {};
-    const auto dir = exe.parent_path();
-    for (const auto& candidate : {dir / "plugins", dir / ".." / GJK2D_INSTALL_PLUGIN_DIR})
-    {
-        std::vector<std::string> found;
-        for (const char* name : kShippedPlugins)
-            if (std::filesystem::is_regular_file(candidate / name, ec))
-                found.push_back((candidate / name).lexically_normal().string());
-        if (!found.empty())
-            return found;
-    }
-    return {};
 }
 
 const char* pluginStatusName(PluginStatus s)

@@ -25,6 +25,8 @@ struct PluginImpl
     std::string path;    // the shared library: absolute, symbolic links resolved (the report's)
     std::string logName; // its output's log in the report directory: "plugin-<file stem>.log"
     gjk2d_implementation impl{};
+    std::string kind = "shared-library"; // or "executable-adapter": set by the loader
+    std::string library; // its library's name and version as the plugin gives it, or ""
 };
 
 // Loads the plugin at `path` (dlopen) and registers one variant per implementation it describes,
@@ -40,12 +42,7 @@ const VariantInfo* findPluginVariant(const std::string& name); // null when none
 // InputError when no loaded plugin has an implementation of that name.
 void judgePluginVariant(const std::string& name);
 
-// The shipped plugins gjk-validate loads by default (the Box2D 2.4.1 adapter): next to the
-// program (<dir>/plugins/, the build tree) or <dir>/../<libdir>/gjk2d/plugins/ (an installed
-// prefix; libdir is GNUInstallDirs' CMAKE_INSTALL_LIBDIR, "lib" unless the prefix is /usr).
-// Empty when neither holds them.
-std::vector<std::string> shippedPluginPaths();
-inline constexpr const char* kShippedPlugins[] = {"gjk2d-box2d.so"};
+// The shipped plugins, and where gjk-validate finds them: evaluate/peers.hpp.
 
 // How a plugin variant answered one case.
 enum class PluginStatus

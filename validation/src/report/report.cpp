@@ -127,6 +127,18 @@ std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& ju
             t["exact_cases_per_s"].get<double>(), t["gjk_cases_per_s"].get<double>(),
             t["witness_cases_per_s"].get<double>(), g(t["gjk_ns_per_query_mean"], "{:.1f}"));
     }
+    if (c.contains("plugins")) // every plugin whose variants ran: file, kind, library, variants
+        for (const auto& p : c["plugins"])
+        {
+            std::string names;
+            for (const auto& n : p["variants"])
+                names += (names.empty() ? "" : ", ") + n.get<std::string>();
+            const std::string lib = p["library"].get<std::string>();
+            s += fmt::format("| plugin | `{}` ({}{}): {} |\n",
+                             mdEscape(p["file"].get<std::string>()),
+                             mdEscape(p["kind"].get<std::string>()),
+                             lib.empty() ? "" : ", " + mdEscape(lib), mdEscape(names));
+        }
     s += "\nInputs: ";
     for (const auto& in : c["inputs"])
         s += in.contains("family")

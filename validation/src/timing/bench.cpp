@@ -1,5 +1,7 @@
 #include "timing/bench.hpp"
 
+#include "evaluate/peers.hpp"
+
 #include <fmt/format.h>
 
 #include <chrono>
@@ -151,6 +153,7 @@ Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases&
 {
     Json context = contextJson(isoDateUtc(), gitRevision(), config.command, config.seed, 1,
                                std::move(cases.inputs), cases.total, cases.rejected);
+    context["plugins"] = pluginsJson(config.variants);
     context["timing"] = {
         {"passes", tc.maxPasses},
         {"min_pass_s", tc.minPassSeconds},

@@ -1,0 +1,380 @@
+#!/usr/bin/env python3
+"""Writes the generated part of docs/peers.md: how the shipped peers (and any plugin) did.
+
+    python3 scripts/peers_doc.py                  # after scripts/run.sh: runs the peers' campaign
+    python3 scripts/peers_doc.py --report DIR/report.json   # from a report of run --peers
+    python3 scripts/peers_doc.py --doc OUT.md -- --family hard:20   # a campaign of one's own
+
+It runs `build/release/validation/gjk-validate run --peers` on the default campaign's families
+(written out: random:200000, hard, engine and the default case files) into reports/peers/, reads
+its report.json and rewrites only the part of the document between the markers
+`<!-- peers_doc.py: begin -->` and `<!-- peers_doc.py: end -->` (created with the title when the
+document does not exist; the hand-written sections around it are kept). Each plugin variant's worst
+case is drawn to <doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case
+(the folder's other .svg files are removed: it holds only this script's drawings).
+Only Python's standard library. Exit codes: 0 written, 1 a command failed, 2 bad usage.
+"""
+import argparse
+import json
+import math
+import os
+import pathlib
+import shlex
+import subprocess
+import sys
+import tempfile
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+TITLE = "# How accurate are the distance queries people use?"
+BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
+DEFAULT_FAMILIES = ["--family", "random:200000", "--family", "hard", "--family", "engine",
+                    "--default-cases"]
+GJK2D_ROWS = ["double", "float"]  # gjk2d's reference variants, shown beside the peers
+
+
+def fail(code, message):
+    print(f"peers_doc.py: {message}", file=sys.stderr)
+    sys.exit(code)
+
+
+def run(cmd, must=True):
+    """Runs a gjk-validate command; its exit code (1, a judged failure, still writes its output)."""
+    print("+ " + shlex.join(cmd), file=sys.stderr)
+    done = subprocess.run(cmd, stdout=subprocess.DEVNULL)
+    if must and done.returncode not in (0, 1):
+        fail(1, f"`{shlex.join(cmd)}` exited {done.returncode}")
+    return done.returncode
+
+
+def num(x):
+    """A report number (non-finite ones are strings) as a float, None when absent."""
+    if x is None:
+        return None
+    return float(x)  # also "inf", "-inf", "nan"
+
+
+def group_of(family):
+    if family.startswith("file:"):
+        return "case files"
+    return family.split("/")[0]
+
+
+def merge_hist(hists):
+    """max and p99 of the families' histograms joined (the rule of Hist::percentile in
+    validation/src/statistics/stats.cpp: the upper edge of the bin holding the 99th percentile)."""
+    hists = [h for h in hists if h and h.get("count", 0) > 0]
+    if not hists:
+        return None, None
+    top = max(num(h["max"]) for h in hists)
+    shapes = {(h["log10_min"], h["bins_per_decade"], len(h.get("counts", []))) for h in hists}
+    if len(shapes) != 1:  # bins that do not line up: the largest of the families' p99
+        return top, max(num(h["p99"]) for h in hists)
+    count = sum(h["count"] for h in hists)
+    counts = [0] * max(len(h.get("counts", [])) for h in hists)
+    for h in hists:
+        for i, c in enumerate(h.get("counts", [])):
+            counts[i] += c
+    rank = max(1, (count * 990 + 999) // 1000)
+    cum = sum(h["zeros"] for h in hists)
+    if cum >= rank:
+        return top, 0.0
+    lo, per = hists[0]["log10_min"], hists[0]["bins_per_decade"]
+    for i, c in enumerate(counts):
+        cum += c
+        if cum >= rank:
+            return top, 10.0 ** (lo + (i + 1) / per)
+    return top, top
+
+
+def group_rows(report, variant):
+    """One row per family group: summed counts, joined error histograms, ns/query weighted by
+    cases."""
+    groups = {}
+    for fam in report["families"]:
+        st = fam["variants"].get(variant)
+        if st is not None:
+            groups.setdefault(group_of(fam["name"]), []).append(st)
+    rows = []
+    for name, sts in groups.items():
+        s = lambda k: sum(st.get(k, 0) or 0 for st in sts)
+        rel = merge_hist([st.get("errors", {}).get("rel") for st in sts])
+        ratio = merge_hist([st.get("errors", {}).get("bound_ratio") for st in sts])
+        timed = [(st["cases"], num(st["ns_per_query"])) for st in sts
+                 if st.get("ns_per_query") is not None]
+        weight = sum(c for c, _ in timed)
+        ns = sum(c * t for c, t in timed) / weight if weight > 0 else None
+        rows.append({"group": name, "cases": s("cases"), "refused": s("refused"),
+                     "false_overlap": s("false_overlap"),
+                     "false_separation": s("false_separation"), "nonfinite": s("nonfinite"),
+                     "invalid": s("invalid"),
+                     "incidents": s("plugin_errors") + s("crashed") + s("hung"),
+                     "rel": rel, "ratio": ratio, "ns": ns})
+    return rows
+
+
+def g(x, spec=".3g"):
+    return "-" if x is None else format(x, spec)
+
+
+def table(report, peers, command):
+    out = [f"Per peer and family group, from `{command}`. Rows of gjk2d's reference variants "
+           "(double, float) are there to compare with.", "",
+           "| variant | family group | cases | refused | false overlaps | false separations "
+           "| non-finite | invalid | errors, crashes, hangs | largest rel. error | p99 rel. error "
+           "| largest error / gjk2d's bound | p99 error / bound | ns/query |",
+           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
+    for v in names:
+        for r in group_rows(report, v):
+            out.append(f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
+                       f"{r['false_overlap']} | {r['false_separation']} | {r['nonfinite']} | "
+                       f"{r['invalid']} | {r['incidents']} | {g(r['rel'][0])} | {g(r['rel'][1])} | "
+                       f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |")
+    out += ["", "Columns (docs/report-schema.md, Stats): cases answered; refused by the "
+            "implementation (not in cases); false overlaps and separations against the exact "
+            "side; non-finite answers; invalid answers (negative distance, witness off its shape "
+            "or not as far apart as the distance); errors, crashes and hangs of the plugin; "
+            "rel. error = |d - d_exact| / d_exact (separated cases); error / bound = |d - "
+            "d_exact| over gjk2d's a-priori bound in the variant's precision (docs/error-bound.md; "
+            "over 1 is a failure for gjk2d); p99 values are histogram bin upper edges; ns/query: "
+            "the families' single-threaded timings, weighted by cases (- when not timed)."]
+    return out
+
+
+def worst_of(report, variant):
+    """(family, case, error/bound) of the variant's largest error relative to gjk2d's bound."""
+    best = None
+    for fam in report["families"]:
+        h = fam["variants"].get(variant, {}).get("errors", {}).get("bound_ratio")
+        if h and h.get("count", 0) > 0 and h.get("max_case"):
+            if best is None or num(h["max"]) > best[2]:
+                best = (fam["name"], h["max_case"], num(h["max"]))
+    return best
+
+
+def explain_command(gjk, report, family, case, plugin_files):
+    """`gjk-validate explain` of one case of the report, its plugins loaded as --plugin."""
+    cmd = [gjk, "explain"]
+    inputs = report["context"]["inputs"]
+    if family.startswith("file:"):
+        rest = family[len("file:"):]
+        files = [i["file"] for i in inputs if "file" in i and
+                 (i["file"] == rest or i["file"].endswith("/" + rest))]
+        cmd += [files[0] if files else rest, case]
+    else:
+        spec = next((i for i in inputs if i.get("family") == family), None)
+        seed = spec.get("seed", report["context"]["seed"]) if spec else report["context"]["seed"]
+        count = f":{spec['count']}" if spec and "count" in spec else ""
+        cmd += ["--family", family + count, "--seed", str(seed), case]
+    cmd += ["--variants", "double", "--no-default-plugins"]
+    for f in plugin_files:
+        cmd += ["--plugin", f]
+    return cmd
+
+
+def pts(xs):
+    out = []
+    for p in xs or []:
+        try:
+            x, y = num(p[0]), num(p[1])
+        except (TypeError, ValueError, IndexError):
+            continue
+        if math.isfinite(x) and math.isfinite(y):
+            out.append((x, y))
+    return out
+
+
+def exact_for(detail, variant):
+    """The exact answer a variant is judged against: of the float-rounded input for a float one
+    (docs/report-schema.md, CaseDetail)."""
+    ans = detail.get("variants", {}).get(variant, {})
+    if ans.get("type") == "float" and detail.get("exact_float_input"):
+        return detail["exact_float_input"]
+    return detail.get("exact", {})
+
+
+def svg_panel(detail, variant, box, ox, size, title):
+    """One square panel: both shapes (radius drawn as a round stroke), the exact witness points
+    (black) and the variant's (red), in the world window box = (cx, cy, half width)."""
+    cx, cy, hw = box
+    sc = size / (2 * hw)
+    tx = lambda p: (ox + (p[0] - cx) * sc + size / 2, size / 2 - (p[1] - cy) * sc + 20)
+    out = [f'<rect x="{ox}" y="20" width="{size}" height="{size}" fill="white" stroke="#999"/>',
+           f'<text x="{ox + 4}" y="14" font-size="11">{title}</text>',
+           f'<clipPath id="c{ox}"><rect x="{ox}" y="20" width="{size}" height="{size}"/></clipPath>',
+           f'<g clip-path="url(#c{ox})">']
+    for key, colour in (("a", "#4a90c2"), ("b", "#d98c2b")):
+        shape = detail.get(key, {})
+        w = [tx(p) for p in pts(shape.get("world"))]
+        r = (num(shape.get("radius")) or 0) * sc
+        if not w:
+            continue
+        d = "M" + " L".join(f"{x:.2f} {y:.2f}" for x, y in w) + " Z"
+        width = max(2 * r, 1.2)
+        out.append(f'<path d="{d}" fill="{colour}" fill-opacity="0.35" stroke="{colour}" '
+                   f'stroke-opacity="0.6" stroke-width="{width:.2f}" stroke-linejoin="round" '
+                   'stroke-linecap="round"/>')
+    ex = exact_for(detail, variant)
+    ans = detail.get("variants", {}).get(variant, {})
+    for (a, b, colour) in ((ex.get("witnessA"), ex.get("witnessB"), "black"),
+                           (ans.get("pointA"), ans.get("pointB"), "#d0021b")):
+        p = [tx(q) for q in pts([a, b])]
+        if len(p) == 2:
+            out.append(f'<line x1="{p[0][0]:.2f}" y1="{p[0][1]:.2f}" x2="{p[1][0]:.2f}" '
+                       f'y2="{p[1][1]:.2f}" stroke="{colour}" stroke-width="1.2"/>')
+        for x, y in p:
+            out.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="3" fill="{colour}"/>')
+    return out + ["</g>"]
+
+
+def draw(detail, variant, path):
+    """The case whole, and zoomed on the exact witness points so that the answer's error shows."""
+    world = pts(detail.get("a", {}).get("world")) + pts(detail.get("b", {}).get("world"))
+    if not world:
+        return False
+    xs, ys = [p[0] for p in world], [p[1] for p in world]
+    radius = max(num(detail[k].get("radius")) or 0 for k in ("a", "b"))
+    hw = max(max(xs) - min(xs), max(ys) - min(ys)) / 2 * 1.1 + radius or 1.0
+    whole = ((max(xs) + min(xs)) / 2, (max(ys) + min(ys)) / 2, hw)
+    ex = exact_for(detail, variant)
+    ans = detail.get("variants", {}).get(variant, {})
+    wit = pts([ex.get("witnessA"), ex.get("witnessB")])
+    got = pts([ans.get("pointA"), ans.get("pointB")])
+    c = wit[0] if wit else whole[:2]
+    spread = max([math.dist(c, p) for p in wit + got] + [0.0])
+    zoom = (c[0], c[1], max(spread * 1.5, hw * 1e-12, 1e-300))
+    size = 300
+    body = svg_panel(detail, variant, whole, 0, size, "whole case") + svg_panel(
+        detail, variant, zoom, size + 10, size, f"zoom: half width {zoom[2]:.3g}")
+    legend = (f'<text x="0" y="{size + 36}" font-size="11">blue: shape A, orange: shape B, black: '
+              f'exact witness points, red: {variant}\'s</text>')
+    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * size + 10}" '
+                    f'height="{size + 44}" font-family="sans-serif">\n' + "\n".join(body) +
+                    "\n" + legend + "\n</svg>\n")
+    return True
+
+
+def rel(arg):
+    """A path under the repository, relative to it (the commands shown run from its root)."""
+    p = pathlib.Path(arg)
+    if p.is_absolute():
+        try:
+            return str(p.resolve().relative_to(ROOT))
+        except ValueError:
+            pass
+    return arg
+
+
+def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
+    out = ["", "### The worst case of each peer", "",
+           "Each plugin variant's case with the largest error relative to gjk2d's bound (a "
+           "non-finite answer is in the non-finite column, not here), drawn by this script from "
+           "the command under it."]
+    files = [p["file"] for p in report["context"].get("plugins", [])]
+    svg_dir.mkdir(parents=True, exist_ok=True)
+    for old in svg_dir.glob("*.svg"):  # the drawings of peers no longer in the report go too
+        old.unlink()
+    for v in peers:
+        w = worst_of(report, v)
+        if w is None:
+            out += ["", f"**{v}**: no case with an error to draw."]
+            continue
+        family, case, ratio = w
+        cmd = explain_command(gjk, report, family, case, files)
+        js = work / f"explain-{v}.json"
+        code = run(cmd + ["--json", str(js)], must=False)
+        shown = [shown_gjk] + [rel(x) for x in cmd[1:]] + ["--json", "case.json"]
+        if code not in (0, 1) or not js.is_file():
+            print(f"peers_doc.py: {v}'s worst case not drawn: explain exited {code}",
+                  file=sys.stderr)
+            out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
+                    f"`{shlex.join(shown)}` exited {code}."]
+            continue
+        detail = json.loads(js.read_text())
+        svg = svg_dir / f"{v}.svg"
+        drawn = draw(detail, v, svg)
+        ans = detail.get("variants", {}).get(v, {})
+        out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
+                f"{g(num(exact_for(detail, v).get('distance')), '.17g')}, {v} "
+                f"{g(num(ans.get('distance')), '.17g')}. Command: `{shlex.join(shown)}`"]
+        if drawn:
+            out += ["", f"![{v} on {case}]({os.path.relpath(svg, doc.parent)})"]
+    return out
+
+
+def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
+    ctx = report["context"]
+    peers = [v["name"] for v in report["variants"] if "plugin" in v]
+    out = [BEGIN, "",
+           f"Generated by `{command}`; edit nothing between these markers. The campaign (its "
+           f"command is above the table): git {ctx.get('git_revision', '?')}, "
+           f"{ctx.get('date', '?')}, {ctx.get('cases_total', '?')} cases on "
+           f"{ctx.get('threads', '?')} threads of {ctx.get('host', '?')}.", "",
+           "Plugins loaded (the report's `context.plugins`):", ""]
+    for p in ctx.get("plugins", []):
+        lib = f", {p['library']}" if p.get("library") else ""
+        out.append(f"- `{os.path.basename(p['file'])}` ({p.get('kind', '?')}{lib}): "
+                   + ", ".join(p.get("variants", [])))
+    out += [""] + table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    out += worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work)
+    return "\n".join(out + ["", END]) + "\n"
+
+
+def ctx_args(ctx):
+    """The campaign's command line after `gjk-validate` (the report's context.command)."""
+    words = shlex.split(ctx.get("command", "run"))
+    return [rel(w) for w in (words[1:] if words and words[0].endswith("gjk-validate") else words)]
+
+
+def splice(doc, block):
+    text = doc.read_text() if doc.exists() else TITLE + "\n"
+    if not text.startswith(TITLE):
+        text = TITLE + "\n\n" + text
+    if BEGIN in text and END in text:
+        head, rest = text.split(BEGIN, 1)
+        return head + block.rstrip("\n") + rest.split(END, 1)[1]
+    first, _, rest = text.partition("\n")
+    return first + "\n\n" + block + ("\n" + rest.lstrip("\n") if rest.strip() else "")
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--report", help="read this report.json of `gjk-validate run --peers` "
+                    "instead of running the campaign")
+    ap.add_argument("--gjk-validate", default=str(ROOT / "build/release/validation/gjk-validate"))
+    ap.add_argument("--doc", default=str(ROOT / "docs/peers.md"))
+    ap.add_argument("--svg-dir", help="default: <doc's folder>/peers")
+    ap.add_argument("--out", default=str(ROOT / "reports/peers"),
+                    help="the campaign's report directory (replaced)")
+    ap.add_argument("run_args", nargs="*", help="after --: gjk-validate run's options instead of "
+                    "the default campaign's families")
+    a = ap.parse_args()
+    doc = pathlib.Path(a.doc).resolve()
+    svg_dir = pathlib.Path(a.svg_dir).resolve() if a.svg_dir else doc.parent / "peers"
+    gjk = a.gjk_validate
+    if not os.access(gjk, os.X_OK):
+        fail(2, f"{gjk}: not found or not executable (build it: scripts/run.sh)")
+    shown_gjk = ("build/release/validation/gjk-validate" if pathlib.Path(gjk).resolve() ==
+                 (ROOT / "build/release/validation/gjk-validate").resolve() else "gjk-validate")
+    out = pathlib.Path(a.out).resolve()
+    if a.report:
+        report_path = pathlib.Path(a.report)
+    else:
+        args = a.run_args or DEFAULT_FAMILIES
+        run([gjk, "run", "--peers", *args, "--out", str(out), "--no-progress"])
+        report_path = out / "report.json"
+    try:
+        report = json.loads(report_path.read_text())
+    except (OSError, ValueError) as e:
+        fail(2, f"{report_path}: cannot read the report: {e}")
+    me = "python3 scripts/peers_doc.py" + (" " + shlex.join(sys.argv[1:]) if sys.argv[1:] else "")
+    with tempfile.TemporaryDirectory(prefix="peers_doc.") as work:
+        block = generated(report, gjk, shown_gjk, me, doc, svg_dir, pathlib.Path(work))
+    doc.parent.mkdir(parents=True, exist_ok=True)
+    doc.write_text(splice(doc, block))
+    print(f"peers_doc.py: wrote {doc} and {svg_dir}/")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""CTest "docs: peers.md generator runs on a small campaign": scripts/peers_doc.py on a tiny
+campaign, into a temporary document seeded with hand-written text around the markers. Checks:
+the generated part has a table row for every variant of every plugin the report's context lists
+(and one per family group), its largest and p99 errors those of the report (one family per group
+here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Writes only under a temporary directory."""
+import argparse
+import json
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
+TITLE = "# How accurate are the distance queries people use?"
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--script", required=True)
+    a = ap.parse_args()
+    with tempfile.TemporaryDirectory(prefix="peers_doc_check.") as t:
+        t = pathlib.Path(t)
+        doc = t / "peers.md"
+        before = TITLE + "\n\nHand-written intro.\n\n"
+        after = "\n\n## box2d-2.4.1\n\nA hand-written section.\n"
+        doc.write_text(before + BEGIN + "\nstale\n" + END + after)
+        (t / "peers").mkdir()
+        (t / "peers" / "gone-peer.svg").write_text("<svg/>")  # a peer no longer in the report
+        # Two family groups (hard, random), no timing: seconds.
+        cmd = [sys.executable, a.script, "--gjk-validate", a.exe, "--doc", str(doc),
+               "--out", str(t / "run"), "--", "--family", "hard/near-parallel:20",
+               "--family", "random:40", "--no-timing"]
+        done = subprocess.run(cmd)
+        if done.returncode != 0:
+            print(f"FAIL: {cmd} exited {done.returncode}")
+            return 1
+        text = doc.read_text()
+        report = json.loads((t / "run" / "report.json").read_text())
+        plugins = report["context"]["plugins"]
+        errors = []
+        if not plugins:
+            errors.append("the report's context lists no plugin: the shipped Box2D 2.4.1 "
+                          "adapter should be loaded")
+        if not text.startswith(before + BEGIN) or not text.endswith(END + after):
+            errors.append("the text around the markers was not kept as it was")
+        if "stale" in text:
+            errors.append("the old generated part was not replaced")
+        if (t / "peers" / "gone-peer.svg").exists():
+            errors.append("the drawing of a peer no longer in the report was kept")
+        rows = [l for l in text.splitlines() if l.startswith("| ")]
+        for p in plugins:
+            for v in p["variants"]:
+                for group in ("hard", "random"):
+                    if not any(l.startswith(f"| {v} | {group} | ") for l in rows):
+                        errors.append(f"no table row for {v} in {group}")
+                if not (t / "peers" / f"{v}.svg").is_file():
+                    errors.append(f"no drawing peers/{v}.svg")
+        # Each group here holds one family: the joined histograms' p99 and max must be that
+        # family's, as the runner computed them (Hist::percentile).
+        cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),
+                "largest error / gjk2d's bound": ("bound_ratio", "max"),
+                "p99 error / bound": ("bound_ratio", "p99")}
+        head = next(l for l in rows if l.startswith("| variant |"))
+        names = [c.strip() for c in head.strip("|").split("|")]
+        for fam in report["families"]:
+            group = fam["name"].split("/")[0]
+            for v, st in fam["variants"].items():
+                row = next((l for l in rows if l.startswith(f"| {v} | {group} | ")), None)
+                if row is None:
+                    continue
+                cells = [c.strip() for c in row.strip("|").split("|")]
+                for col, (hist, key) in cols.items():
+                    want = format(float(st["errors"][hist][key]), ".3g")
+                    got = cells[names.index(col)]
+                    if got != want:
+                        errors.append(f"{v} in {group}: {col} {got}, the report says {want}")
+        for e in errors:
+            print("FAIL: " + e)
+        if errors:
+            print(text)
+        return 1 if errors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
