@@ -180,10 +180,10 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
     LoadedPlugins loaded;
     if (!o.noDefault)
         for (const auto& path : shippedPluginPaths())
-            for (const VariantInfo* v : loadPlugin(path))
+            for (const VariantInfo* v : loadPlugin(path, o.timeoutSeconds))
                 loaded.shipped.push_back(v);
     for (const auto& path : o.paths)
-        for (const VariantInfo* v : loadPlugin(path))
+        for (const VariantInfo* v : loadPlugin(path, o.timeoutSeconds))
             loaded.given.push_back(v);
     return loaded;
 }
