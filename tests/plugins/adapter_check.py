@@ -1,0 +1,143 @@
+#!/usr/bin/env python3
+"""Executable adapters (protocol 1, issue 32) in a campaign (tests/plugins/CMakeLists.txt).
+
+  adapter_check.py --exe E --kind K --adapter A --cases C --work W
+
+Runs `gjk-validate run` on C (adapters/adapter_cases.json: two unit squares at distances 1, 2, 3
+and 4, derived by hand there) with the variant double and the plugin A, into W/report, and checks:
+  good     report.json names A as an executable adapter with its library line; the adapter's
+           distances in cases.jsonl are 1, 2, 3, 4 (exact for these squares: the edges x = 1 and
+           x = 1 + d are parallel); no failure; it was timed (ns_per_query > 0, `time` requests);
+           `list` shows its variant; what it printed on stderr is in its log, not on gjk-validate's.
+  crash, hang, garbage
+           the third case (d3) costs one case, counted (crashed, hung, plugin_errors = 1), with one
+           stderr line naming A and the case; the other three are answered (1, 2, 4); exit code 0
+           (a comparison variant), 1 under --judge (docs/validate-your-gjk.md).
+  shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
+           as a shared library (variants[].plugin.kind), not started.
+Exit 0 when every check holds; else a message and exit 1.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("adapter_check: FAIL: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(cmd, expect=0):
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != expect:
+        fail("{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
+            " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]))
+    return p
+
+
+def campaign(a, extra=(), expect=0):
+    out = os.path.join(a.work, "report")
+    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double", "--no-default-plugins",
+           "--plugin", a.adapter, "--plugin-timeout", "2", "--per-case", "--passes", "3",
+           "--out", out, "--no-progress"] + list(extra)
+    p = run(cmd, expect)
+    report = json.load(open(os.path.join(out, "report.json")))
+    lines = [json.loads(l) for l in open(os.path.join(out, "cases.jsonl"))]
+    return p, report, lines, out
+
+
+def plugin_of(report, name):
+    for v in report["variants"]:
+        if v["name"] == name:
+            return v.get("plugin")
+    fail("no variant {} in report.json".format(name))
+
+
+def stats_of(report, name):
+    return report["families"][0]["variants"][name]
+
+
+def answers(lines, name):
+    return {l["name"]: l["variants"][name] for l in lines}
+
+
+def good(a):
+    p, report, lines, out = campaign(a)
+    pl = plugin_of(report, "toy-good")
+    if pl["kind"] != "executable" or not pl["library"].startswith("toy 1.0"):
+        fail("variants[].plugin: {}".format(pl))
+    got = {k: v.get("distance") for k, v in answers(lines, "toy-good").items()}
+    if got != {"adapters/d1": 1.0, "adapters/d2": 2.0, "adapters/d3": 3.0, "adapters/d4": 4.0}:
+        fail("the adapter's distances: {}".format(got))
+    st = stats_of(report, "toy-good")
+    if st["cases"] != 4 or st["failures"] != 0 or not (st["ns_per_query"] or 0) > 0:
+        fail("stats: {}".format(st))
+    if "toy-good" not in run([a.exe, "list", "--no-default-plugins", "--plugin", a.adapter]).stdout:
+        fail("`list` does not show toy-good")
+    if "toy adapter good: ready" in p.stderr:
+        fail("the adapter's stderr reached gjk-validate's during the run:\n" + p.stderr)
+    if "toy adapter good: ready" not in open(os.path.join(out, "plugin-good.log")).read():
+        fail("the adapter's stderr is not in plugin-good.log")
+    print("adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
+        st["ns_per_query"]))
+
+
+def contained(a):
+    name = "toy-" + a.kind
+    counter = {"crash": "crashed", "hang": "hung", "garbage": "plugin_errors"}[a.kind]
+    p, report, lines, _ = campaign(a)
+    st = stats_of(report, name)
+    if st[counter] != 1 or st["failures"] != 1 or st["cases"] != 4:
+        fail("expected one case counted as {}: {}".format(counter, st))
+    got = answers(lines, name)
+    if [got["adapters/d" + k].get("distance") for k in "124"] != [1.0, 2.0, 4.0]:
+        fail("the other cases' answers: {}".format(got))
+    status = {"crash": "crashed", "hang": "hung", "garbage": "error"}[a.kind]
+    if got["adapters/d3"].get("plugin_status") != status:
+        fail("d3: {}".format(got["adapters/d3"]))
+    if a.kind == "garbage" and not got["adapters/d3"]["plugin_detail"].startswith(
+            'malformed answer: "hello there'):
+        fail("d3's detail: {}".format(got["adapters/d3"]))
+    named = [l for l in p.stderr.splitlines() if "adapters/d3" in l]
+    if len(named) != 1 or os.path.realpath(a.adapter) not in named[0]:
+        fail("expected one stderr line naming the adapter and the case:\n" + p.stderr)
+    if report["exit_code"] != 0:
+        fail("a comparison adapter decided the exit code")
+    campaign(a, ["--judge", name, "--no-timing"], expect=1)
+    print("adapter_check: {}: d3 counted as {}, d1, d2, d4 answered; --judge exits 1".format(
+        a.kind, counter))
+
+
+def shared(a):
+    if not os.access(a.adapter, os.X_OK):
+        fail(a.adapter + " has no exec bit: the check would prove nothing")
+    listed = run([a.exe, "list", "--no-default-plugins", "--plugin", a.adapter]).stdout
+    if "test-good-but-quirky" not in listed:
+        fail("list does not show the shared library's variants:\n" + listed)
+    out = os.path.join(a.work, "report")
+    run([a.exe, "run", "--family", "random:5", "--variants", "double", "--no-default-plugins",
+         "--plugin", a.adapter, "--no-timing", "--out", out, "--no-progress"])
+    pl = plugin_of(json.load(open(os.path.join(out, "report.json"))), "test-good-but-quirky")
+    if pl["kind"] != "shared-library" or pl["library"] != "":
+        fail("variants[].plugin: {}".format(pl))
+    print("adapter_check: shared: an executable .so is loaded as a shared library")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "shared"])
+    ap.add_argument("--adapter", required=True)
+    ap.add_argument("--cases")
+    ap.add_argument("--work", required=True)
+    a = ap.parse_args()
+    shutil.rmtree(a.work, ignore_errors=True)
+    os.makedirs(a.work)
+    {"good": good, "shared": shared}.get(a.kind, contained)(a)
+
+
+if __name__ == "__main__":
+    main()
