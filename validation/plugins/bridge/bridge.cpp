@@ -28,7 +28,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -97,6 +96,43 @@ void handshake()
     say("ready");
 }
 
+// A request's tokens, read in place with strtod (no copy of a line that can be megabytes long).
+struct Reader
+{
+    const char* p;
+    void skip()
+    {
+        while (*p == ' ' || *p == '\r')
+            ++p;
+    }
+    bool word(std::string& w)
+    {
+        skip();
+        const char* q = p;
+        while (*p != '\0' && *p != ' ' && *p != '\r')
+            ++p;
+        w.assign(q, p);
+        return !w.empty();
+    }
+    bool number(double& x)
+    {
+        skip();
+        char* end = nullptr;
+        x = std::strtod(p, &end);
+        const bool ok = end != p && (*end == ' ' || *end == '\0' || *end == '\r');
+        p = end;
+        return ok;
+    }
+    bool integer(long& x)
+    {
+        double v = 0;
+        if (!number(v) || v != double(long(v)))
+            return false;
+        x = long(v);
+        return true;
+    }
+};
+
 // The cases' shapes in the implementation's scalar type, all their points in one contiguous
 // array (as the runner's timing set: scattered per-shape arrays timed a few % slower).
 template <class T, class Shape> struct Cases
@@ -105,19 +141,19 @@ template <class T, class Shape> struct Cases
     std::vector<std::size_t> at; // each shape's first coordinate in coords
     std::vector<Shape> a, b;
 
-    bool readShape(std::istringstream& in, char tag, std::vector<Shape>& to)
+    bool readShape(Reader& in, char tag, std::vector<Shape>& to)
     {
         std::string t;
         double r, px, py, c, s;
         long n = -1;
-        if (!(in >> t) || t.size() != 1 || t[0] != tag || !(in >> r >> px >> py >> c >> s >> n) ||
-            n < 0)
+        if (!in.word(t) || t.size() != 1 || t[0] != tag || !in.number(r) || !in.number(px) ||
+            !in.number(py) || !in.number(c) || !in.number(s) || !in.integer(n) || n < 0)
             return false;
         at.push_back(coords.size());
         for (long k = 0; k < 2 * n; ++k)
         {
             double v;
-            if (!(in >> v))
+            if (!in.number(v))
                 return false;
             coords.push_back(T(v)); // exact: a float implementation's case holds floats
         }
@@ -131,7 +167,7 @@ template <class T, class Shape> struct Cases
         to.push_back(sh);
         return true;
     }
-    bool read(std::istringstream& in, long m)
+    bool read(Reader& in, long m)
     {
         for (long k = 0; k < m; ++k)
             if (!readShape(in, 'A', a) || !readShape(in, 'B', b))
@@ -153,7 +189,7 @@ std::string num(double x)
 }
 
 template <class T, class Shape, class Result, class Fn>
-std::string distanceT(const std::string& id, Fn fn, int cacheBytes, std::istringstream& in)
+std::string distanceT(const std::string& id, Fn fn, int cacheBytes, Reader& in)
 {
     Cases<T, Shape> cs;
     if (!cs.read(in, 1))
@@ -175,7 +211,7 @@ volatile double g_sink = 0; // keeps the timed loop from being optimised away
 // The runner's loop (timing.cpp timePassPlugin), K rounds over the m cases; only it is timed.
 template <class T, class Shape, class Result, class Fn>
 std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m,
-                  std::istringstream& in)
+                  Reader& in)
 {
     Cases<T, Shape> cs;
     if (K < 1 || m < 1 || !cs.read(in, m))
@@ -201,9 +237,9 @@ std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m,
 
 std::string answer(const std::string& line)
 {
-    std::istringstream in(line);
+    Reader in{line.c_str()};
     std::string word, id, name;
-    if (!(in >> word >> id >> name))
+    if (!in.word(word) || !in.word(id) || !in.word(name))
         return "error " + (id.empty() ? std::string("0") : id) + " bad request";
     const gjk2d_implementation* im = findImpl(name);
     if (im == nullptr)
@@ -215,7 +251,7 @@ std::string answer(const std::string& line)
                  : distanceT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d,
                                                                     im->cache_bytes, in);
     long K = 0, m = 0;
-    if (word != "time" || !(in >> K >> m))
+    if (word != "time" || !in.integer(K) || !in.integer(m))
         return "error " + id + " unknown request " + word;
     return f ? timeT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f, im->cache_bytes, K,
                                                            m, in)
