@@ -13,6 +13,10 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            the third case (d3) costs one case, counted (crashed, hung, plugin_errors = 1), with one
            stderr line naming A and the case; the other three are answered (1, 2, 4); exit code 0
            (a comparison variant), 1 under --judge (docs/validate-your-gjk.md).
+  crash-once-more
+           crashes on d3, and its restart fails (it exits in the handshake): d3 and d4 are
+           counted as crashed, d4 with the restart's reason, one stderr line for d3 and one for
+           the failed start; d1, d2 answered.
   shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
            as a shared library (variants[].plugin.kind), not started.
 Exit 0 when every check holds; else a message and exit 1.
@@ -40,6 +44,9 @@ def run(cmd, expect=0):
 
 def campaign(a, extra=(), expect=0):
     out = os.path.join(a.work, "report")
+    for f in ["starts"]:  # crash-once-more's count of its starts
+        if os.path.exists(os.path.join(a.work, f)):
+            os.remove(os.path.join(a.work, f))
     cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double", "--no-default-plugins",
            "--plugin", a.adapter, "--plugin-timeout", "2", "--per-case", "--passes", "3",
            "--out", out, "--no-progress"] + list(extra)
@@ -111,6 +118,22 @@ def contained(a):
         a.kind, counter))
 
 
+def restart_fails(a):
+    p, report, lines, _ = campaign(a, ["--no-timing"])
+    st = stats_of(report, "toy-crash-once-more")
+    got = answers(lines, "toy-crash-once-more")
+    if st["crashed"] != 2 or [got["adapters/d" + k].get("distance") for k in "12"] != [1.0, 2.0]:
+        fail("expected d3 and d4 crashed, d1 and d2 answered: {} {}".format(st, got))
+    if "restart" not in got["adapters/d4"]["plugin_detail"] and \
+            "start for the cases failed" not in got["adapters/d4"]["plugin_detail"]:
+        fail("d4's detail: {}".format(got["adapters/d4"]))
+    lines = [l for l in p.stderr.splitlines()
+             if "executable adapter " + os.path.realpath(a.adapter) in l]
+    if len(lines) != 2 or "adapters/d3" not in lines[0] or "failed" not in lines[1]:
+        fail("expected a line for d3 and one for the failed start:\n" + p.stderr)
+    print("adapter_check: crash-once-more: d3 crashed, the restart failed, d4 crashed with it")
+
+
 def shared(a):
     if not os.access(a.adapter, os.X_OK):
         fail(a.adapter + " has no exec bit: the check would prove nothing")
@@ -129,14 +152,15 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "shared"])
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "shared"])
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--work", required=True)
     a = ap.parse_args()
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
-    {"good": good, "shared": shared}.get(a.kind, contained)(a)
+    os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
+    {"good": good, "shared": shared, "crash-once-more": restart_fails}.get(a.kind, contained)(a)
 
 
 if __name__ == "__main__":

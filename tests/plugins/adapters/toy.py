@@ -1,6 +1,7 @@
 """Test adapters of the executable-adapter protocol, version 1 (tests/plugins/CMakeLists.txt,
 docs/validate-your-gjk.md "Executable adapters (any language)"): good.py, crash.py, hang.py,
-garbage.py, version.py and bad-description.py each call main() with their behaviour.
+garbage.py, version.py, bad-description.py and crash-once-more.py each call main() with their
+behaviour.
 
 The distance is brute force, exact enough for the test's cases: the smallest distance between a
 vertex of one shape and an edge of the other (right for shapes that do not overlap; the tests'
@@ -65,7 +66,7 @@ def say(line):
 def answer(tok, behaviour):
     a, ra, _, i = world(tok, 3)
     b, rb, bx, _ = world(tok, i)
-    if bx == 4 and behaviour == "crash":
+    if bx == 4 and behaviour in ("crash", "crash-once-more"):
         os.kill(os.getpid(), signal.SIGSEGV)
     if bx == 4 and behaviour == "hang":
         time.sleep(3600)
@@ -89,9 +90,23 @@ def timed(tok):
     return "timed {} {}".format(tok[1], time.monotonic_ns() - t0)
 
 
+def start_number():
+    """This process's start, counted in $TOY_STATE_DIR/starts (1 for the first)."""
+    path = os.path.join(os.environ["TOY_STATE_DIR"], "starts")
+    n = int(open(path).read()) + 1 if os.path.exists(path) else 1
+    with open(path, "w") as f:
+        f.write(str(n))
+    return n
+
+
 def main(behaviour):
     if sys.stdin.readline().split() != ["gjk2d-adapter", "1"]:
         sys.exit(1)
+    # crash-once-more: crashes on d3 like crash, and its restart after that (its third start: the
+    # load's handshake, the first case, then the restart) exits in the handshake.
+    if behaviour == "crash-once-more" and start_number() >= 3:
+        print("toy adapter: this start fails on purpose", file=sys.stderr)
+        sys.exit(3)
     say("gjk2d-adapter 2" if behaviour == "version" else "gjk2d-adapter 1")
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = "quad" if behaviour == "bad-description" else "double"

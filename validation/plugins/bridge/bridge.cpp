@@ -1,7 +1,8 @@
 // gjk2d-adapter-bridge: an executable adapter (protocol version 1, docs/validate-your-gjk.md
 // "Executable adapters (any language)") that hosts a shared-library plugin (gjk2d/plugin.h).
 //
-//   gjk2d-adapter-bridge PLUGIN.so [SUFFIX]  (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so gjk2d-adapter-bridge)
+//   gjk2d-adapter-bridge PLUGIN.so [SUFFIX]  (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so
+//   gjk2d-adapter-bridge)
 //
 // SUFFIX, appended to every implementation's name, lets the bridged plugin run beside the
 // plugin itself (variant names are unique in a run): box2d-2.4.1 and box2d-2.4.1-bridge.
@@ -57,12 +58,14 @@ void openPlugin(const char* path)
     void* h = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (h == nullptr)
         die(std::string("cannot load ") + path + ": " + ::dlerror());
-    auto describe = reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(h, GJK2D_PLUGIN_ENTRY_POINT));
+    auto describe =
+        reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(h, GJK2D_PLUGIN_ENTRY_POINT));
     if (describe == nullptr || (g_plugin = describe()) == nullptr)
         die(std::string(path) + " does not describe a gjk2d plugin");
     if (g_plugin->abi_version != GJK2D_PLUGIN_ABI_VERSION)
         die(std::string(path) + ": plugin ABI version " + std::to_string(g_plugin->abi_version));
-    auto library = reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(h, GJK2D_PLUGIN_LIBRARY_ENTRY));
+    auto library =
+        reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(h, GJK2D_PLUGIN_LIBRARY_ENTRY));
     g_library = library && library() ? library() : std::string(path);
 }
 
@@ -210,8 +213,7 @@ volatile double g_sink = 0; // keeps the timed loop from being optimised away
 
 // The runner's loop (timing.cpp timePassPlugin), K rounds over the m cases; only it is timed.
 template <class T, class Shape, class Result, class Fn>
-std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m,
-                  Reader& in)
+std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m, Reader& in)
 {
     Cases<T, Shape> cs;
     if (K < 1 || m < 1 || !cs.read(in, m))
@@ -255,8 +257,8 @@ std::string answer(const std::string& line)
         return "error " + id + " unknown request " + word;
     return f ? timeT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f, im->cache_bytes, K,
                                                            m, in)
-             : timeT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d, im->cache_bytes,
-                                                            K, m, in);
+             : timeT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d, im->cache_bytes, K,
+                                                            m, in);
 }
 } // namespace
 

@@ -120,7 +120,8 @@ Json variantsJson(const EvalContext& ctx)
         {
             j["plugin"] = {
                 {"path", v->plugin->path},
-                {"kind", v->plugin->kind == PluginKind::Executable ? "executable" : "shared-library"},
+                {"kind",
+                 v->plugin->kind == PluginKind::Executable ? "executable" : "shared-library"},
                 {"library", v->plugin->library},
                 {"accepts_radius", (v->plugin->impl.accepts & GJK2D_ACCEPTS_RADIUS) != 0},
                 {"accepts_warm_start", (v->plugin->impl.accepts & GJK2D_ACCEPTS_WARM_START) != 0},

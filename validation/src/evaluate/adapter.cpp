@@ -131,7 +131,7 @@ struct AdapterFailure : std::runtime_error
 // In the child: stdin and stdout the pipes, stderr where the plugin's log is, signals as a fresh
 // program expects them; then the adapter itself (exit 127 when it cannot be executed).
 [[noreturn]] void execAdapter(const std::string& path, const PluginImpl* plugin, int in, int out,
-                             int err)
+                              int err)
 {
     firstOutputRoute(plugin);
     if (::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
@@ -144,7 +144,6 @@ struct AdapterFailure : std::runtime_error
         ::signal(sig, SIG_DFL);
     ::execl(path.c_str(), path.c_str(), static_cast<char*>(nullptr));
     ::_exit(127); // as a shell says "cannot execute": howEnded() adds the hint
-
 }
 
 // `err` >= 0: the adapter's stderr goes there rather than to the plugin's log.
@@ -152,14 +151,14 @@ Process startProcess(const std::string& path, const PluginImpl* plugin, int err 
 {
     int in[2], out[2];
     if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0)
-        throw std::runtime_error(fmt::format("adapter {}: pipe failed: {}", path,
-                                             std::strerror(errno)));
+        throw std::runtime_error(
+            fmt::format("adapter {}: pipe failed: {}", path, std::strerror(errno)));
     std::fflush(stdout);
     std::fflush(stderr);
     const pid_t pid = ::fork();
     if (pid < 0)
-        throw std::runtime_error(fmt::format("adapter {}: fork failed: {}", path,
-                                             std::strerror(errno)));
+        throw std::runtime_error(
+            fmt::format("adapter {}: fork failed: {}", path, std::strerror(errno)));
     if (pid == 0)
         execAdapter(path, plugin, in[0], out[1], err);
     ::close(in[0]);
@@ -296,33 +295,33 @@ AdapterImplementation implementationLine(const std::string& line,
 {
     const std::vector<std::string> t = tokens(line);
     if (t.size() < 5)
-        throw AdapterFailure(fmt::format("bad description: {} has fewer than 5 fields",
-                                         quoted80(line)));
+        throw AdapterFailure(
+            fmt::format("bad description: {} has fewer than 5 fields", quoted80(line)));
     AdapterImplementation im;
     im.name = t[1];
     if (!validName(im.name))
-        throw AdapterFailure(fmt::format(
-            "bad description: name '{}' is not 1 to 64 characters of [A-Za-z0-9._+-]",
-            im.name.substr(0, 80)));
+        throw AdapterFailure(
+            fmt::format("bad description: name '{}' is not 1 to 64 characters of [A-Za-z0-9._+-]",
+                        im.name.substr(0, 80)));
     for (const auto& b : before)
         if (b.name == im.name)
             throw AdapterFailure(
                 fmt::format("bad description: the name '{}' is taken (given twice)", im.name));
     if (t[2] != "float" && t[2] != "double")
         throw AdapterFailure(fmt::format(
-            "bad description: implementation {}: scalar '{}' is neither float nor double",
-            im.name, t[2].substr(0, 80)));
+            "bad description: implementation {}: scalar '{}' is neither float nor double", im.name,
+            t[2].substr(0, 80)));
     im.scalar = t[2] == "float" ? Scalar::Float : Scalar::Double;
     if (t[3] != "radius" && t[3] != "no-radius")
-        throw AdapterFailure(fmt::format(
-            "bad description: implementation {}: '{}' is neither radius nor no-radius", im.name,
-            t[3].substr(0, 80)));
+        throw AdapterFailure(
+            fmt::format("bad description: implementation {}: '{}' is neither radius nor no-radius",
+                        im.name, t[3].substr(0, 80)));
     im.radius = t[3] == "radius";
     long long maxVertices = 0;
     if (!parseInteger(t[4], 0, INT32_MAX, maxVertices))
         throw AdapterFailure(fmt::format(
-            "bad description: implementation {}: max_vertices '{}' is not an integer >= 0",
-            im.name, t[4].substr(0, 80)));
+            "bad description: implementation {}: max_vertices '{}' is not an integer >= 0", im.name,
+            t[4].substr(0, 80)));
     im.maxVertices = int(maxVertices);
     im.description = restAfter(line, 5);
     return im;
@@ -333,9 +332,9 @@ void versionLine(const std::string& line)
 {
     const std::vector<std::string> t = tokens(line);
     if (t.size() != 2 || t[0] != "gjk2d-adapter")
-        throw AdapterFailure(fmt::format(
-            "bad description: the first line is {}, expected 'gjk2d-adapter {}'", quoted80(line),
-            kAdapterProtocolVersion));
+        throw AdapterFailure(
+            fmt::format("bad description: the first line is {}, expected 'gjk2d-adapter {}'",
+                        quoted80(line), kAdapterProtocolVersion));
     if (t[1] != std::to_string(kAdapterProtocolVersion))
         throw AdapterFailure(fmt::format(
             "executable adapter speaks protocol version {}, this gjk-validate speaks {}",
@@ -351,8 +350,7 @@ void versionLine(const std::string& line)
         throw AdapterFailure(fmt::format("no 'ready' within {} s of the handshake", limit));
     }
     const std::string how = reap(p, kAdapterCloseSeconds);
-    throw AdapterFailure(fmt::format("executable adapter exited during the handshake ({})",
-                                     how));
+    throw AdapterFailure(fmt::format("executable adapter exited during the handshake ({})", how));
 }
 
 // The host's line and the adapter's description, to its `ready`, within `limit` seconds.
@@ -446,8 +444,9 @@ bool ensureRunning(Slot& s, const PluginImpl& plugin, double timeoutSeconds)
     {
         reap(s.proc, 0);
         s.failed = fmt::format("the adapter's start for the cases failed: {}", e.what());
-        std::fprintf(stderr, "gjk-validate: executable adapter %s: %s; its remaining cases are "
-                             "counted as crashed\n",
+        std::fprintf(stderr,
+                     "gjk-validate: executable adapter %s: %s; its remaining cases are "
+                     "counted as crashed\n",
                      plugin.path.c_str(), s.failed.c_str());
         return false;
     }

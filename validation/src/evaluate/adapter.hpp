@@ -31,8 +31,8 @@ struct AdapterImplementation
 {
     std::string name;
     Scalar scalar = Scalar::Double;
-    bool radius = false;  // `radius`: takes radius > 0
-    int maxVertices = 0;  // 0: no limit
+    bool radius = false; // `radius`: takes radius > 0
+    int maxVertices = 0; // 0: no limit
     std::string description;
     bool operator==(const AdapterImplementation&) const = default;
 };

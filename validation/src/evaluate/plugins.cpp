@@ -454,7 +454,6 @@ void firstOutputRoute(const PluginImpl* plugin)
         routePluginOutput(*plugin);
 }
 
-
 bool writeToParent(int fd, const void* data, std::size_t n)
 {
     return writeAllBytes(fd, data, n);
