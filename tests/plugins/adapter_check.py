@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Executable adapters (protocol 1, issue 32) in a campaign (tests/plugins/CMakeLists.txt).
 
-  adapter_check.py --exe E --kind K --adapter A --cases C --work W
+  adapter_check.py --exe E --kind K --adapter A [--cases C] [--so S] --work W
 
 Runs `gjk-validate run` on C (adapters/adapter_cases.json: two unit squares at distances 1, 2, 3
 and 4, derived by hand there) with the variant double and the plugin A, into W/report, and checks:
@@ -17,6 +17,11 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            crashes on d3, and its restart fails (it exits in the handshake): d3 and d4 are
            counted as crashed, d4 with the restart's reason, one stderr line for d3 and one for
            the failed start; d1, d2 answered.
+  bridge   A is gjk2d-adapter-bridge: a two-line script runs it with the shipped gjk2d-box2d.so
+           (--so) as box2d-2.4.1-bridge beside box2d-2.4.1 itself, on random and
+           rounded cases: every answer (distance, witness points, iterations, refusal) is the
+           same, bit for bit (the same function on the same inputs: the protocol's numbers
+           round-trip).
   shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
            as a shared library (variants[].plugin.kind), not started.
 Exit 0 when every check holds; else a message and exit 1.
@@ -134,6 +139,28 @@ def restart_fails(a):
     print("adapter_check: crash-once-more: d3 crashed, the restart failed, d4 crashed with it")
 
 
+def bridge(a):
+    wrapper = os.path.join(a.work, "box2d-bridge")
+    with open(wrapper, "w") as f:
+        f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
+    os.chmod(wrapper, 0o755)
+    out = os.path.join(a.work, "report")
+    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
+         "double,box2d-2.4.1,box2d-2.4.1-bridge", "--plugin", wrapper, "--per-case", "--no-timing",
+         "--out", out, "--no-progress"])
+    keys = ("distance", "pointA", "pointB", "iterations", "skipped")
+    n = 0
+    for l in open(os.path.join(out, "cases.jsonl")):
+        j = json.loads(l)
+        mine, theirs = (j["variants"][v] for v in ("box2d-2.4.1-bridge", "box2d-2.4.1"))
+        if [mine.get(k) for k in keys] != [theirs.get(k) for k in keys]:
+            fail("{}: the bridge answered {}, the shared library {}".format(j["name"], mine, theirs))
+        n += 1
+    if n != 340:
+        fail("expected 340 cases, got {}".format(n))
+    print("adapter_check: bridge: 340 cases, every answer the shared library's, bit for bit")
+
+
 def shared(a):
     if not os.access(a.adapter, os.X_OK):
         fail(a.adapter + " has no exec bit: the check would prove nothing")
@@ -152,15 +179,17 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "shared"])
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "bridge", "shared"])
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
+    ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
     ap.add_argument("--work", required=True)
     a = ap.parse_args()
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
-    {"good": good, "shared": shared, "crash-once-more": restart_fails}.get(a.kind, contained)(a)
+    {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge}.get(
+        a.kind, contained)(a)
 
 
 if __name__ == "__main__":
