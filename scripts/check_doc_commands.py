@@ -59,6 +59,8 @@ RULES = [
      "ci", None, "the flag matrix: the release build's `ctest -L flags` runs it"),
     (r"^scripts/bench\.sh\b", "long", None,
      "builds and runs every benchmark (minutes); speed.md's next commands run its parts"),
+    (r"^python3 scripts/adapter_timing_check\.py\b", "long", None,
+     "a timing comparison whose verdict depends on the machine's load"),
     (r"^scripts/mutate\.py( --fast)?\s*$|^scripts/mutate\.py --(rev|only)\b", "long", None,
      "the mutation run builds and tests every mutant (tens of minutes)"),
     (r"--seconds \d+", "shrink", ("--seconds \\d+", "--seconds 2"), "search runs 600 s"),

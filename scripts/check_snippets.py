@@ -7,6 +7,9 @@ An example marks a region with two comment lines (the region is dedented as a wh
     ...
     // [end snippet]
 
+(in a Python example, examples/adapter/*.py: `# [snippet: NAME]` ... `# [end snippet]`, shown in
+a ```python block).
+
 A doc shows it as a fenced block right after a marker line:
 
     <!-- snippet: one-query -->
@@ -32,8 +35,8 @@ DOCS = ROOT / "docs"
 # Docs whose every ```cpp block must come from an example.
 STRICT = ["docs/gjk.md", "docs/exact.md"]
 
-BEGIN = re.compile(r"^\s*// \[snippet: ([a-z0-9-]+)\]\s*$")
-END = re.compile(r"^\s*// \[end snippet\]\s*$")
+BEGIN = re.compile(r"^\s*(?://|#) \[snippet: ([a-z0-9-]+)\]\s*$")
+END = re.compile(r"^\s*(?://|#) \[end snippet\]\s*$")
 MARKER = re.compile(r"^<!-- snippet: ([a-z0-9-]+) -->\s*$")
 FENCE = re.compile(r"^```")
 
@@ -48,7 +51,8 @@ def read_examples():
     """name -> (file, lines); exits 2 on a malformed example."""
     snippets = {}
     errors = []
-    for path in sorted(EXAMPLES.rglob("*.cpp")):  # also examples/plugin/
+    # also examples/plugin/, and examples/adapter/'s Python
+    for path in sorted(EXAMPLES.rglob("*.cpp")) + sorted(EXAMPLES.rglob("*.py")):
         rel = path.relative_to(ROOT)
         name, start, body = None, 0, []
         for no, line in enumerate(path.read_text().splitlines(), 1):
@@ -63,7 +67,8 @@ def read_examples():
                 elif name in snippets:
                     errors.append(f"{rel}:{start}: snippet '{name}' also in {snippets[name][0]}")
                 else:
-                    snippets[name] = (rel, dedent(body))
+                    fence = "```python" if path.suffix == ".py" else "```cpp"
+                    snippets[name] = (rel, dedent(body), fence)
                 name = None
             elif name:
                 body.append(line.rstrip())
@@ -87,8 +92,9 @@ def check_doc(path, snippets, strict, fix, used):
         if m:
             name = m.group(1)
             out.append(line)
-            if i + 1 >= len(lines) or lines[i + 1] != "```cpp":
-                errors.append(f"{rel}:{i + 1}: snippet marker '{name}' not followed by a ```cpp fence")
+            fence = snippets[name][2] if name in snippets else "```cpp"
+            if i + 1 >= len(lines) or lines[i + 1] != fence:
+                errors.append(f"{rel}:{i + 1}: snippet marker '{name}' not followed by a {fence} fence")
                 i += 1
                 continue
             j = i + 2
@@ -111,7 +117,7 @@ def check_doc(path, snippets, strict, fix, used):
                         errors.append(f"{rel}:{i + 3}: block '{name}' differs from {snippets[name][0]}:")
                         errors.extend("    " + d for d in difflib.unified_diff(
                             body, new, str(rel), str(snippets[name][0]), lineterm="", n=1))
-            out.append("```cpp")
+            out.append(fence)
             out.extend(new if fix else body)
             out.append(lines[j])
             i = j + 1

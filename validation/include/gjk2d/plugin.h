@@ -27,6 +27,15 @@ extern "C"
 #define GJK2D_PLUGIN_ABI_VERSION 1
 #define GJK2D_PLUGIN_ENTRY_POINT "gjk2d_plugin_describe"
 
+/* Optional, since issue 32 (the ABI version is unchanged: a plugin without it loads as before):
+ *
+ *     const char* gjk2d_plugin_library(void);
+ *
+ * the name and version of the library the plugin wraps, one line that lives as long as the
+ * library, e.g. "Box2D 2.4.1 (Debian libbox2d-dev)". The report records it with the plugin's
+ * variants (variants[].plugin.library; "" when the plugin does not export it). */
+#define GJK2D_PLUGIN_LIBRARY_ENTRY "gjk2d_plugin_library"
+
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
      * to that type and judges it against the exact truth of those rounded inputs. */
     enum gjk2d_scalar
@@ -118,6 +127,7 @@ extern "C"
     } gjk2d_plugin;
 
     typedef const gjk2d_plugin* (*gjk2d_plugin_describe_fn)(void);
+    typedef const char* (*gjk2d_plugin_library_fn)(void); /* optional: GJK2D_PLUGIN_LIBRARY_ENTRY */
 
 #if defined(_WIN32)
 #define GJK2D_PLUGIN_EXPORT __declspec(dllexport)

@@ -143,9 +143,11 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
 {
     const bool judges = judging == Judging::Judges;
     sub.add_option("--plugin", o.paths,
-                   "a shared library implementing gjk2d/plugin.h: each implementation it describes "
-                   "becomes a comparison variant (evaluated in a child process); repeatable, each "
-                   "file once")
+                   "a shared library implementing gjk2d/plugin.h, or an executable adapter (any "
+                   "executable file speaking the gjk2d-adapter protocol 1 over its stdin and "
+                   "stdout: docs/validate-your-gjk.md, \"Executable adapters\"): each "
+                   "implementation it describes becomes a comparison variant (evaluated in a child "
+                   "process); repeatable, each file once")
         ->allow_extra_args(false);
     auto* judge =
         sub.add_option("--judge", o.judge,
@@ -189,10 +191,10 @@ LoadedPlugins loadPlugins(const PluginOptions& o)
     LoadedPlugins loaded;
     if (!o.noDefault)
         for (const auto& path : shippedPluginPaths(o.peers))
-            for (const VariantInfo* v : loadPlugin(path))
+            for (const VariantInfo* v : loadPlugin(path, o.timeoutSeconds))
                 loaded.shipped.push_back(v);
     for (const auto& path : o.paths)
-        for (const VariantInfo* v : loadPlugin(path))
+        for (const VariantInfo* v : loadPlugin(path, o.timeoutSeconds))
             loaded.given.push_back(v);
     return loaded;
 }

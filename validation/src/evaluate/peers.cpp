@@ -46,7 +46,7 @@ Json pluginsJson(const std::vector<const VariantInfo*>& variants)
             if (w->plugin->path == v->plugin->path)
                 names.push_back(w->name);
         out.push_back({{"file", v->plugin->path},
-                       {"kind", v->plugin->kind},
+                       {"kind", pluginKindName(v->plugin->kind)},
                        {"library", v->plugin->library},
                        {"variants", std::move(names)}});
     }

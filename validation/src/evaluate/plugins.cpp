@@ -1,6 +1,7 @@
 #include "evaluate/plugins.hpp"
 
 #include "common/output.hpp" // writeAllBytes
+#include "evaluate/adapter.hpp"
 #include "evaluate/evaluate.hpp"
 
 #include <fmt/format.h>
@@ -99,10 +100,18 @@ std::string pluginFile(const std::string& path)
     return std::filesystem::canonical(path).string();
 }
 
+// A shared library's description and its optional gjk2d_plugin_library() ("" without it).
+struct OpenedPlugin
+{
+    const gjk2d_plugin* description = nullptr;
+    std::string library;
+};
+
 // Opens the plugin and reads its description, of this ABI version and with 1 .. 64
-// implementations; InputError otherwise. The handle stays open for the whole run: the
+// implementations; InputError otherwise. A file dlopen cannot open but may execute (access
+// X_OK): an executable adapter, description null. The handle stays open for the whole run: the
 // description and the functions live in it.
-const gjk2d_plugin* openPlugin(const std::string& path)
+OpenedPlugin openPlugin(const std::string& path)
 {
     // A path without a slash would make dlopen search the library path, not this file.
     const std::string openPath = path.find('/') == std::string::npos ? "./" + path : path;
@@ -110,6 +119,8 @@ const gjk2d_plugin* openPlugin(const std::string& path)
     if (handle == nullptr)
     {
         const char* e = ::dlerror();
+        if (::access(openPath.c_str(), X_OK) == 0)
+            return {};
         throw InputError(
             fmt::format("plugin {}: cannot be loaded: {}", path, e ? e : "dlopen failed"));
     }
@@ -132,7 +143,10 @@ const gjk2d_plugin* openPlugin(const std::string& path)
         throw InputError(fmt::format("plugin {}: bad description: count {} is outside 1..64 or "
                                      "implementations is NULL",
                                      path, d->count));
-    return d;
+    const auto library =
+        reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(handle, GJK2D_PLUGIN_LIBRARY_ENTRY));
+    const char* text = library ? library() : nullptr;
+    return {d, text ? text : ""};
 }
 
 // Every implementation well described, under a name no variant and no other implementation has.
@@ -189,9 +203,57 @@ VariantInfo pluginVariant(const std::string& path, const PluginImpl& impl)
     v.plugin = &impl;
     return v;
 }
+
+// An executable adapter's implementations as PluginImpls: the handshake's fields in
+// gjk2d_implementation's (no functions, cold only), the strings owned by the PluginImpl.
+std::vector<PluginImpl> adapterImpls(const std::string& path, const std::string& canonical,
+                                     double handshakeSeconds)
+{
+    const AdapterDescription d = describeAdapter(path, canonical, handshakeSeconds);
+    std::vector<PluginImpl> impls;
+    for (std::size_t i = 0; i < d.implementations.size(); ++i)
+    {
+        const AdapterImplementation& a = d.implementations[i];
+        if (findVariant(a.name) != nullptr)
+            throw InputError(fmt::format(
+                "plugin {}: bad description of implementation {}: the name '{}' is already taken "
+                "(a gjk2d variant or another plugin's implementation)",
+                path, i, a.name));
+        PluginImpl p;
+        p.kind = PluginKind::Executable;
+        p.library = d.library;
+        p.name = a.name;
+        p.description = a.description;
+        p.impl.scalar = a.scalar == Scalar::Float ? GJK2D_SCALAR_FLOAT : GJK2D_SCALAR_DOUBLE;
+        p.impl.accepts = a.radius ? std::uint32_t(GJK2D_ACCEPTS_RADIUS) : 0u;
+        p.impl.max_vertices = a.maxVertices;
+        impls.push_back(std::move(p));
+    }
+    return impls;
+}
+
+// The implementations the file describes, of either kind (canonical path and log name unset).
+std::vector<PluginImpl> describePlugin(const std::string& path, const std::string& canonical,
+                                       double handshakeSeconds)
+{
+    const OpenedPlugin opened = openPlugin(path);
+    if (opened.description == nullptr)
+        return adapterImpls(path, canonical, handshakeSeconds);
+    const gjk2d_plugin& d = *opened.description;
+    checkImplementations(path, d);
+    std::vector<PluginImpl> impls;
+    for (int i = 0; i < d.count; ++i)
+    {
+        PluginImpl p;
+        p.impl = d.implementations[i];
+        p.library = opened.library;
+        impls.push_back(std::move(p));
+    }
+    return impls;
+}
 } // namespace
 
-std::vector<const VariantInfo*> loadPlugin(const std::string& path)
+std::vector<const VariantInfo*> loadPlugin(const std::string& path, double handshakeSeconds)
 {
     Registry& reg = registry();
     const std::string canonical = pluginFile(path);
@@ -203,14 +265,20 @@ std::vector<const VariantInfo*> loadPlugin(const std::string& path)
                 out.push_back(&reg.variants[k]);
         return out;
     }
-    const gjk2d_plugin* d = openPlugin(path);
-    checkImplementations(path, *d);
+    std::vector<PluginImpl> impls = describePlugin(path, canonical, handshakeSeconds);
     const std::string logName = logNameFor(reg, canonical);
     reg.paths.push_back(canonical);
-    for (int i = 0; i < d->count; ++i)
+    for (PluginImpl& p : impls)
     {
-        reg.impls.push_back({canonical, logName, d->implementations[i], "shared-library", ""});
-        reg.variants.push_back(pluginVariant(path, reg.impls.back()));
+        p.path = canonical;
+        p.logName = logName;
+        PluginImpl& stored = reg.impls.emplace_back(std::move(p));
+        if (stored.kind == PluginKind::Executable) // its strings, where they now live
+        {
+            stored.impl.name = stored.name.c_str();
+            stored.impl.description = stored.description.c_str();
+        }
+        reg.variants.push_back(pluginVariant(path, stored));
         out.push_back(&reg.variants.back());
     }
     return out;
@@ -246,6 +314,11 @@ void judgePluginVariant(const std::string& name)
     throw InputError(fmt::format("--judge {}: no loaded plugin has an implementation of that name "
                                  "(loaded: {})",
                                  name, known.empty() ? "none" : known));
+}
+
+const char* pluginKindName(PluginKind k)
+{
+    return k == PluginKind::Executable ? "executable-adapter" : "shared-library";
 }
 
 const char* pluginStatusName(PluginStatus s)
@@ -345,6 +418,8 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
 
 std::mutex g_messages; // crash and hang lines on stderr
 
+} // namespace
+
 // In a child: where its output goes until routePluginOutput() names a plugin's log.
 void firstOutputRoute(const PluginImpl* plugin)
 {
@@ -364,8 +439,6 @@ void firstOutputRoute(const PluginImpl* plugin)
     if (plugin)
         routePluginOutput(*plugin);
 }
-
-} // namespace
 
 bool writeToParent(int fd, const void* data, std::size_t n)
 {
@@ -395,6 +468,7 @@ void setPluginLogDirectory(const std::string& dir)
 
 std::vector<PluginLog> finishPluginLogs()
 {
+    closeAdapters(); // their output is all in their logs
     std::vector<PluginLog> logs;
     const std::string& dir = registry().logDir;
     if (dir.empty())
@@ -545,8 +619,12 @@ void recordLoss(const PluginTask& t, PluginStatus status, const std::string& how
 }
 } // namespace
 
-void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds)
+void answerContained(const std::vector<PluginTask>& all, double timeoutSeconds)
 {
+    std::vector<PluginTask> tasks, throughAdapters;
+    for (const PluginTask& t : all)
+        (t.v->plugin->kind == PluginKind::Executable ? throughAdapters : tasks).push_back(t);
+    answerThroughAdapters(throughAdapters, timeoutSeconds);
     std::size_t next = 0;
     while (next < tasks.size())
     {

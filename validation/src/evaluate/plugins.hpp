@@ -19,22 +19,47 @@ namespace gjkval
 
 struct PreparedCase;
 
+// The per-case time limit of a plugin call (`--plugin-timeout`): generous against a loaded
+// machine, since the Box2D adapter answers in under a microsecond; a hang costs this long.
+inline constexpr double kDefaultPluginTimeoutSeconds = 5;
+
+// The two kinds of plugin `--plugin FILE` takes, told apart by the file's content: a shared
+// library exporting gjk2d_plugin_describe (gjk2d/plugin.h), or an executable adapter spoken to
+// over pipes (evaluate/adapter.hpp, protocol version 1, docs/validate-your-gjk.md).
+enum class PluginKind
+{
+    SharedLibrary,
+    Executable,
+};
+// "shared-library" or "executable-adapter" (the report's context.plugins[].kind).
+const char* pluginKindName(PluginKind k);
+
 // One implementation of a loaded plugin.
 struct PluginImpl
 {
-    std::string path;    // the shared library: absolute, symbolic links resolved (the report's)
+    std::string path;    // the plugin file: absolute, symbolic links resolved (the report's)
     std::string logName; // its output's log in the report directory: "plugin-<file stem>.log"
+    // A shared library's: its description, functions included. An executable adapter's: name,
+    // description, scalar, accepts (GJK2D_ACCEPTS_RADIUS or 0) and max_vertices from its
+    // handshake (name and description point into the strings below), no functions.
     gjk2d_implementation impl{};
-    std::string kind = "shared-library"; // or "executable-adapter": set by the loader
-    std::string library; // its library's name and version as the plugin gives it, or ""
+    PluginKind kind = PluginKind::SharedLibrary;
+    // The library it wraps, name and version: the handshake's `library` line, or a shared
+    // library's optional gjk2d_plugin_library(); "" when it does not say.
+    std::string library;
+    std::string name, description; // an executable adapter's (impl.name, impl.description)
 };
 
-// Loads the plugin at `path` (dlopen) and registers one variant per implementation it describes,
-// comparison variants (judged = false). Throws InputError, one line naming the file: missing
-// file, not loadable, missing entry point, wrong ABI version, bad description, a name already
-// taken. Loading the same file again (a shipped plugin also given with --plugin) registers it
-// once; the command line refuses a --plugin given twice (selectVariants).
-std::vector<const VariantInfo*> loadPlugin(const std::string& path);
+// Loads the plugin at `path` and registers one variant per implementation it describes,
+// comparison variants (judged = false): a shared library (dlopen), or else an executable file,
+// started and asked for its description (the handshake, at most max(10 s, handshakeSeconds)).
+// Throws InputError, one line naming the file: missing file, not loadable, missing entry
+// point, wrong ABI or protocol version, bad description, a name already taken, an adapter that
+// exits or hangs in its handshake. Loading the same file again (a shipped plugin also given
+// with --plugin) registers it once; the command line refuses a --plugin given twice
+// (selectVariants).
+std::vector<const VariantInfo*> loadPlugin(const std::string& path,
+                                           double handshakeSeconds = kDefaultPluginTimeoutSeconds);
 // Every plugin variant registered so far, in load order.
 std::vector<const VariantInfo*> pluginVariants();
 const VariantInfo* findPluginVariant(const std::string& name); // null when none
@@ -78,14 +103,12 @@ struct PluginTask
     const std::string* caseName = nullptr; // for the message of a crash or a hang
 };
 
-// The per-case time limit of a plugin call (`--plugin-timeout`): generous against a loaded
-// machine, since the Box2D adapter answers in under a microsecond; a hang costs this long.
-inline constexpr double kDefaultPluginTimeoutSeconds = 5;
-
-// Runs the tasks in order in a forked child that streams one answer per task through a pipe.
-// When the child dies or does not answer within timeoutSeconds, that task is answered Crashed
-// or Hung (a line on stderr names the variant and the case) and a new child continues from the
-// next task. Never throws for what a plugin does; std::runtime_error when fork or pipe fail.
+// Runs the tasks in order: a shared library's in a forked child that streams one answer per task
+// through a pipe; an executable adapter's through its adapter process (answerThroughAdapters,
+// evaluate/adapter.hpp). When the child dies or does not answer within timeoutSeconds, that task
+// is answered Crashed or Hung (a line on stderr names the variant and the case) and a new child
+// continues from the next task. Never throws for what a plugin does; std::runtime_error when
+// fork or pipe fail.
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
 // What plugins print (their stdout and stderr in the child processes) is kept apart from
@@ -128,6 +151,9 @@ class PluginChild
 };
 // In a child: its stdout and stderr to `plugin`'s log from here on (stdio flushed first).
 void routePluginOutput(const PluginImpl& plugin);
+// In a fresh child: its output where setPluginLogDirectory() says, the log capped at
+// kPluginLogCapBytes (SIGXFSZ ignored, RLIMIT_FSIZE); `plugin` null: gjk-validate's stderr.
+void firstOutputRoute(const PluginImpl* plugin);
 // In a child: writes n bytes to the parent; false when the pipe is gone.
 bool writeToParent(int fd, const void* data, std::size_t n);
 

@@ -1,7 +1,10 @@
 #include "timing/timing.hpp"
 
+#include "evaluate/adapter.hpp"
 #include "evaluate/evaluate.hpp"
 #include "evaluate/plugins.hpp"
+
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
@@ -262,6 +265,14 @@ TimedLoop pluginLoop(const std::vector<const PreparedCase*>& cases, const Varian
     return pluginLoopT<double, gjk2d_shape_d, gjk2d_result_d>(cases, im.distance_d, im.cache_bytes);
 }
 
+// How long a plugin's pass (or an adapter's `time` request, a part of one) may take before it
+// counts as hung: a pass lasts at most min_pass_s plus one loop over the cases, and the limit
+// allows a loop of 50,000 cases (kTimingSampleCases) at 600 us a query, or one call that hangs.
+double passLimitSeconds(const TimingConfig& cfg, double pluginTimeoutSeconds)
+{
+    return pluginTimeoutSeconds + 30 + 4 * cfg.minPassSeconds;
+}
+
 // The median, min and max of a loop's per-query times (sorted in place).
 TimingResult summary(std::size_t cases, std::vector<double>& perQuery, int reps)
 {
@@ -345,6 +356,77 @@ TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
     return summary(cases, perQuery, reps);
 }
 
+namespace
+{
+// An executable adapter's timed sample: the cases' request text in chunks of at most
+// kAdapterTimeChunkCases, written once, before timing.
+// The chunk size: a pass sends every chunk as one `time` request with K = the pass's reps, so the
+// adapter repeats a chunk K times where a shared library's pass repeats the whole sample; with
+// the sample in one chunk up to this size, the two loops are the same (see
+// docs/validate-your-gjk.md for the bridge's timing against the shared library's). A chunk of
+// 2,048 cases of 8 points is a line of about 1.5 MB.
+constexpr std::size_t kAdapterTimeChunkCases = 2048;
+
+struct AdapterChunks
+{
+    std::vector<std::string> text; // each: its cases' "A ... B ..." joined by spaces
+    std::vector<std::size_t> cases;
+};
+
+AdapterChunks adapterChunks(const std::vector<const PreparedCase*>& cases, const VariantInfo& v)
+{
+    AdapterChunks c;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+    {
+        if (i % kAdapterTimeChunkCases == 0)
+        {
+            c.text.emplace_back();
+            c.cases.push_back(0);
+        }
+        c.text.back() += (c.cases.back() == 0 ? "" : " ") + adapterCaseText(v, *cases[i]);
+        ++c.cases.back();
+    }
+    return c;
+}
+
+struct AdapterLost // a `time` request without its answer: the variant gets no ns/query
+{
+};
+} // namespace
+
+TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                         const TimingConfig& cfg, double pluginTimeoutSeconds)
+{
+    TimingResult res;
+    res.cases = cases.size();
+    if (cases.empty())
+        return res;
+    const AdapterChunks chunks = adapterChunks(cases, v);
+    const double limit = passLimitSeconds(cfg, pluginTimeoutSeconds);
+    // A pass: every chunk's time, K = reps; only the adapter's own timed loops are summed.
+    const auto pass = [&](int reps)
+    {
+        double ns = 0;
+        for (std::size_t k = 0; k < chunks.text.size(); ++k)
+        {
+            const double t = adapterTimeNs(v, reps, chunks.cases[k], chunks.text[k], limit,
+                                           fmt::format("timing chunk {}", k));
+            if (t < 0)
+                throw AdapterLost{};
+            ns += t;
+        }
+        return ns;
+    };
+    try
+    {
+        return medianOfPasses(cases.size(), cfg, pass);
+    }
+    catch (const AdapterLost&)
+    {
+        return res;
+    }
+}
+
 TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                            const TimingConfig& cfg, double pluginTimeoutSeconds)
 {
@@ -354,8 +436,6 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
     if (loop.cases == 0)
         return res;
     // The child sends '.' before each pass (the calibration's included), then 'R' and the result.
-    // A pass lasts at most min_pass_s plus one loop over the cases: the limit allows a loop of
-    // 50,000 cases (kTimingSampleCases) at 600 us a query, or one call that hangs.
     PluginChild child =
         PluginChild::start(v.plugin,
                            [&](int fd)
@@ -367,7 +447,7 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
                                writeToParent(fd, "R", 1);
                                writeToParent(fd, &t, sizeof t);
                            });
-    const double limit = pluginTimeoutSeconds + 30 + 4 * cfg.minPassSeconds;
+    const double limit = passLimitSeconds(cfg, pluginTimeoutSeconds);
     char mark = 0;
     long n = 0;
     while ((n = child.read(&mark, 1, limit)) > 0 && mark == '.')
@@ -396,6 +476,8 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg, double pluginTimeoutSeconds)
 {
+    if (v.plugin && v.plugin->kind == PluginKind::Executable)
+        return timeAdapter(cases, v, cfg, pluginTimeoutSeconds);
     if (v.plugin)
         return timeContained(cases, v, cfg, pluginTimeoutSeconds);
     const TimedLoop loop = timedLoop(cases, v, cfg);

@@ -44,6 +44,14 @@ TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const Va
 TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                            const TimingConfig& cfg, double pluginTimeoutSeconds);
 
+// An executable adapter's timeQueries() (evaluate/adapter.hpp): each pass splits the cases into
+// chunks of m and sends one `time` request per chunk, K = the pass's reps; the pass's time is the
+// sum of the adapter's totals (the pipe is outside every timed region), per query
+// sum / (K * cases); calibration and passes as medianOfPasses(). A request without its answer
+// (crash, hang, error) gives nsPerQuery = -1 and a line on stderr.
+TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                         const TimingConfig& cfg, double pluginTimeoutSeconds);
+
 // A variant's timed loop over `cases`, prepared as timeQueries() does: pass(reps) runs `reps`
 // loops over the cases and returns the nanoseconds taken (empty `pass` when there are no cases).
 // The inputs are copied into contiguous arrays first, for gjk2d's variants and plugins alike, so

@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Executable adapters (protocol 1, issue 32) in a campaign (tests/plugins/CMakeLists.txt).
+
+  adapter_check.py --exe E --kind K --adapter A [--cases C] [--so S] --work W
+
+Runs `gjk-validate run` on C (adapters/adapter_cases.json: two unit squares at distances 1, 2, 3
+and 4, derived by hand there) with the variant double and the plugin A, into W/report, and checks:
+  good     report.json names A as an executable adapter with its library line; the adapter's
+           distances in cases.jsonl are 1, 2, 3, 4 (exact for these squares: the edges x = 1 and
+           x = 1 + d are parallel); no failure; it was timed (ns_per_query > 0, `time` requests);
+           `list` shows its variant; what it printed on stderr is in its log, not on gjk-validate's.
+  crash, hang, garbage
+           the third case (d3) costs one case, counted (crashed, hung, plugin_errors = 1), with one
+           stderr line naming A and the case; the other three are answered (1, 2, 4); exit code 0
+           (a comparison variant), 1 under --judge (docs/validate-your-gjk.md).
+  crash-once-more
+           crashes on d3, and its restart fails (it exits in the handshake): d3 and d4 are
+           counted as crashed, d4 with the restart's reason, one stderr line for d3 and one for
+           the failed start; d1, d2 answered.
+  bridge   A is gjk2d-adapter-bridge: a two-line script runs it with the shipped gjk2d-box2d.so
+           (--so) as box2d-2.4.1-bridge beside box2d-2.4.1 itself, on random and
+           rounded cases: every answer (distance, witness points, iterations, refusal) is the
+           same, bit for bit (the same function on the same inputs: the protocol's numbers
+           round-trip).
+  shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
+           as a shared library (variants[].plugin.kind), not started.
+Exit 0 when every check holds; else a message and exit 1.
+"""
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+
+
+def fail(msg):
+    print("adapter_check: FAIL: " + msg, file=sys.stderr)
+    sys.exit(1)
+
+
+def run(cmd, expect=0):
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != expect:
+        fail("{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
+            " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]))
+    return p
+
+
+def campaign(a, extra=(), expect=0):
+    out = os.path.join(a.work, "report")
+    for f in ["starts"]:  # crash-once-more's count of its starts
+        if os.path.exists(os.path.join(a.work, f)):
+            os.remove(os.path.join(a.work, f))
+    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double", "--no-default-plugins",
+           "--plugin", a.adapter, "--plugin-timeout", "2", "--per-case", "--passes", "3",
+           "--out", out, "--no-progress"] + list(extra)
+    p = run(cmd, expect)
+    report = json.load(open(os.path.join(out, "report.json")))
+    lines = [json.loads(l) for l in open(os.path.join(out, "cases.jsonl"))]
+    return p, report, lines, out
+
+
+def plugin_of(report, name):
+    """The context.plugins entry of the plugin that gave variant `name`."""
+    for p in report["context"]["plugins"]:
+        if name in p["variants"]:
+            return p
+    fail("no plugin gave variant {} in report.json's context.plugins".format(name))
+
+
+def stats_of(report, name):
+    return report["families"][0]["variants"][name]
+
+
+def answers(lines, name):
+    return {l["name"]: l["variants"][name] for l in lines}
+
+
+def good(a):
+    p, report, lines, out = campaign(a)
+    pl = plugin_of(report, "toy-good")
+    if pl["kind"] != "executable-adapter" or not pl["library"].startswith("toy 1.0"):
+        fail("context.plugins: {}".format(pl))
+    got = {k: v.get("distance") for k, v in answers(lines, "toy-good").items()}
+    if got != {"adapters/d1": 1.0, "adapters/d2": 2.0, "adapters/d3": 3.0, "adapters/d4": 4.0}:
+        fail("the adapter's distances: {}".format(got))
+    st = stats_of(report, "toy-good")
+    if st["cases"] != 4 or st["failures"] != 0 or not (st["ns_per_query"] or 0) > 0:
+        fail("stats: {}".format(st))
+    if "toy-good" not in run([a.exe, "list", "--no-default-plugins", "--plugin", a.adapter]).stdout:
+        fail("`list` does not show toy-good")
+    if "toy adapter good: ready" in p.stderr:
+        fail("the adapter's stderr reached gjk-validate's during the run:\n" + p.stderr)
+    if "toy adapter good: ready" not in open(os.path.join(out, "plugin-good.log")).read():
+        fail("the adapter's stderr is not in plugin-good.log")
+    print("adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
+        st["ns_per_query"]))
+
+
+def contained(a):
+    name = "toy-" + a.kind
+    counter = {"crash": "crashed", "hang": "hung", "garbage": "plugin_errors"}[a.kind]
+    p, report, lines, _ = campaign(a)
+    st = stats_of(report, name)
+    if st[counter] != 1 or st["failures"] != 1 or st["cases"] != 4:
+        fail("expected one case counted as {}: {}".format(counter, st))
+    got = answers(lines, name)
+    if [got["adapters/d" + k].get("distance") for k in "124"] != [1.0, 2.0, 4.0]:
+        fail("the other cases' answers: {}".format(got))
+    status = {"crash": "crashed", "hang": "hung", "garbage": "error"}[a.kind]
+    if got["adapters/d3"].get("plugin_status") != status:
+        fail("d3: {}".format(got["adapters/d3"]))
+    if a.kind == "garbage" and not got["adapters/d3"]["plugin_detail"].startswith(
+            'malformed answer: "hello there'):
+        fail("d3's detail: {}".format(got["adapters/d3"]))
+    named = [l for l in p.stderr.splitlines() if "adapters/d3" in l]
+    if len(named) != 1 or os.path.realpath(a.adapter) not in named[0]:
+        fail("expected one stderr line naming the adapter and the case:\n" + p.stderr)
+    if report["exit_code"] != 0:
+        fail("a comparison adapter decided the exit code")
+    campaign(a, ["--judge", name, "--no-timing"], expect=1)
+    print("adapter_check: {}: d3 counted as {}, d1, d2, d4 answered; --judge exits 1".format(
+        a.kind, counter))
+
+
+def restart_fails(a):
+    p, report, lines, _ = campaign(a, ["--no-timing"])
+    st = stats_of(report, "toy-crash-once-more")
+    got = answers(lines, "toy-crash-once-more")
+    if st["crashed"] != 2 or [got["adapters/d" + k].get("distance") for k in "12"] != [1.0, 2.0]:
+        fail("expected d3 and d4 crashed, d1 and d2 answered: {} {}".format(st, got))
+    if "restart" not in got["adapters/d4"]["plugin_detail"] and \
+            "start for the cases failed" not in got["adapters/d4"]["plugin_detail"]:
+        fail("d4's detail: {}".format(got["adapters/d4"]))
+    lines = [l for l in p.stderr.splitlines()
+             if "executable adapter " + os.path.realpath(a.adapter) in l]
+    if len(lines) != 2 or "adapters/d3" not in lines[0] or "failed" not in lines[1]:
+        fail("expected a line for d3 and one for the failed start:\n" + p.stderr)
+    print("adapter_check: crash-once-more: d3 crashed, the restart failed, d4 crashed with it")
+
+
+def bridge(a):
+    wrapper = os.path.join(a.work, "box2d-bridge")
+    with open(wrapper, "w") as f:
+        f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
+    os.chmod(wrapper, 0o755)
+    out = os.path.join(a.work, "report")
+    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
+         "double,box2d-2.4.1,box2d-2.4.1-bridge", "--plugin", wrapper, "--per-case", "--no-timing",
+         "--out", out, "--no-progress"])
+    keys = ("distance", "pointA", "pointB", "iterations", "skipped")
+    n = 0
+    for l in open(os.path.join(out, "cases.jsonl")):
+        j = json.loads(l)
+        mine, theirs = (j["variants"][v] for v in ("box2d-2.4.1-bridge", "box2d-2.4.1"))
+        if [mine.get(k) for k in keys] != [theirs.get(k) for k in keys]:
+            fail("{}: the bridge answered {}, the shared library {}".format(j["name"], mine, theirs))
+        n += 1
+    if n != 340:
+        fail("expected 340 cases, got {}".format(n))
+    print("adapter_check: bridge: 340 cases, every answer the shared library's, bit for bit")
+
+
+def shared(a):
+    if not os.access(a.adapter, os.X_OK):
+        fail(a.adapter + " has no exec bit: the check would prove nothing")
+    listed = run([a.exe, "list", "--no-default-plugins", "--plugin", a.adapter]).stdout
+    if "test-good-but-quirky" not in listed:
+        fail("list does not show the shared library's variants:\n" + listed)
+    out = os.path.join(a.work, "report")
+    run([a.exe, "run", "--family", "random:5", "--variants", "double", "--no-default-plugins",
+         "--plugin", a.adapter, "--no-timing", "--out", out, "--no-progress"])
+    pl = plugin_of(json.load(open(os.path.join(out, "report.json"))), "test-good-but-quirky")
+    if pl["kind"] != "shared-library" or pl["library"] != "":
+        fail("context.plugins: {}".format(pl))
+    print("adapter_check: shared: an executable .so is loaded as a shared library")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "bridge", "shared"])
+    ap.add_argument("--adapter", required=True)
+    ap.add_argument("--cases")
+    ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
+    ap.add_argument("--work", required=True)
+    a = ap.parse_args()
+    shutil.rmtree(a.work, ignore_errors=True)
+    os.makedirs(a.work)
+    os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
+    {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge}.get(
+        a.kind, contained)(a)
+
+
+if __name__ == "__main__":
+    main()

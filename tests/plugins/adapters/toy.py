@@ -1,0 +1,123 @@
+"""Test adapters of the executable-adapter protocol, version 1 (tests/plugins/CMakeLists.txt,
+docs/validate-your-gjk.md "Executable adapters (any language)"): good.py, crash.py, hang.py,
+garbage.py, version.py, bad-description.py and crash-once-more.py each call main() with their
+behaviour.
+
+The distance is brute force, exact enough for the test's cases: the smallest distance between a
+vertex of one shape and an edge of the other (right for shapes that do not overlap; the tests'
+cases are separated squares), less the radii. The misbehaving adapters answer like the good one
+but on the case whose shape B is at x = 4 (the third case of adapter_cases.json): crash exits by
+SIGSEGV, hang sleeps an hour, garbage answers a line that is no answer.
+"""
+import os
+import signal
+import sys
+import time
+
+
+def world(tok, i):
+    """The shape at tok[i] ('A' or 'B'): its world points and radius, and the index after it."""
+    r, px, py, c, s = (float(x) for x in tok[i + 1:i + 6])
+    n = int(tok[i + 6])
+    v = [float(x) for x in tok[i + 7:i + 7 + 2 * n]]
+    pts = [(c * v[2 * k] - s * v[2 * k + 1] + px, s * v[2 * k] + c * v[2 * k + 1] + py)
+           for k in range(n)]
+    return pts, r, px, i + 7 + 2 * n
+
+
+def closest_on_segment(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    dd = dx * dx + dy * dy
+    t = 0.0 if dd == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / dd))
+    return (a[0] + t * dx, a[1] + t * dy)
+
+
+def edges(pts):
+    return [(pts[k], pts[(k + 1) % len(pts)]) for k in range(len(pts))]
+
+
+def distance(a, ra, b, rb):
+    best = None
+    for p in a:  # a vertex of A against an edge of B, then the other way round
+        for e in edges(b):
+            q = closest_on_segment(p, *e)
+            d = ((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2) ** 0.5
+            if best is None or d < best[0]:
+                best = (d, p, q)
+    for q in b:
+        for e in edges(a):
+            p = closest_on_segment(q, *e)
+            d = ((p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2) ** 0.5
+            if d < best[0]:
+                best = (d, p, q)
+    d, p, q = best
+    if d == 0 or d <= ra + rb:
+        return 0.0, p, q
+    u = ((q[0] - p[0]) / d, (q[1] - p[1]) / d)
+    return (d - ra - rb, (p[0] + ra * u[0], p[1] + ra * u[1]),
+            (q[0] - rb * u[0], q[1] - rb * u[1]))
+
+
+def say(line):
+    sys.stdout.write(line + "\n")
+    sys.stdout.flush()
+
+
+def answer(tok, behaviour):
+    a, ra, _, i = world(tok, 3)
+    b, rb, bx, _ = world(tok, i)
+    if bx == 4 and behaviour in ("crash", "crash-once-more"):
+        os.kill(os.getpid(), signal.SIGSEGV)
+    if bx == 4 and behaviour == "hang":
+        time.sleep(3600)
+    if bx == 4 and behaviour == "garbage":
+        return "hello there " + tok[1]
+    d, p, q = distance(a, ra, b, rb)
+    return "ok {} {!r} {!r} {!r} {!r} {!r} -1".format(tok[1], d, p[0], p[1], q[0], q[1])
+
+
+def timed(tok):
+    k, m = int(tok[3]), int(tok[4])
+    cases, i = [], 5
+    for _ in range(m):
+        a, ra, _, i = world(tok, i)
+        b, rb, _, i = world(tok, i)
+        cases.append((a, ra, b, rb))
+    t0 = time.monotonic_ns()
+    for _ in range(k):
+        for c in cases:
+            distance(*c)
+    return "timed {} {}".format(tok[1], time.monotonic_ns() - t0)
+
+
+def start_number():
+    """This process's start, counted in $TOY_STATE_DIR/starts (1 for the first)."""
+    path = os.path.join(os.environ["TOY_STATE_DIR"], "starts")
+    n = int(open(path).read()) + 1 if os.path.exists(path) else 1
+    with open(path, "w") as f:
+        f.write(str(n))
+    return n
+
+
+def main(behaviour):
+    if sys.stdin.readline().split() != ["gjk2d-adapter", "1"]:
+        sys.exit(1)
+    # crash-once-more: crashes on d3 like crash, and its restart after that (its third start: the
+    # load's handshake, the first case, then the restart) exits in the handshake.
+    if behaviour == "crash-once-more" and start_number() >= 3:
+        print("toy adapter: this start fails on purpose", file=sys.stderr)
+        sys.exit(3)
+    say("gjk2d-adapter 2" if behaviour == "version" else "gjk2d-adapter 1")
+    say("library toy 1.0 (brute force, tests/plugins/adapters)")
+    scalar = "quad" if behaviour == "bad-description" else "double"
+    say("implementation toy-{} {} radius 0 vertex-edge brute force".format(behaviour, scalar))
+    say("ready")
+    print("toy adapter {}: ready".format(behaviour), file=sys.stderr)  # into the plugin's log
+    for line in sys.stdin:
+        tok = line.split()
+        if tok and tok[0] == "distance":
+            say(answer(tok, behaviour))
+        elif tok and tok[0] == "time":
+            say(timed(tok))
+        elif tok:
+            say("error {} unknown request".format(tok[1]))

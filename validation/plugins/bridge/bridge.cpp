@@ -1,0 +1,291 @@
+// gjk2d-adapter-bridge: an executable adapter (protocol version 1, docs/validate-your-gjk.md
+// "Executable adapters (any language)") that hosts a shared-library plugin (gjk2d/plugin.h).
+//
+//   gjk2d-adapter-bridge PLUGIN.so [SUFFIX]  (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so
+//   gjk2d-adapter-bridge)
+//
+// SUFFIX, appended to every implementation's name, lets the bridged plugin run beside the
+// plugin itself (variant names are unique in a run): box2d-2.4.1 and box2d-2.4.1-bridge.
+//
+// gjk-validate starts an executable adapter without arguments: a two-line script makes one of a
+// shared library,
+//
+//   #!/bin/sh
+//   exec /path/to/gjk2d-adapter-bridge /path/to/gjk2d-box2d.so
+//
+// It is the reference C++ adapter (C++17, only gjk2d/plugin.h and dlopen) and the check that a
+// timing through the protocol agrees with the shared library's own (docs/validate-your-gjk.md):
+// its `time` loop is the runner's (timing.cpp timePassPlugin): each case's shapes built before
+// the clock starts, per call the cache zeroed, one call, the result read. It takes what the
+// hosted plugin takes (radius, max_vertices), always cold (protocol 1 has no warm start), and
+// answers `refused` or `error` when the plugin's call says so. What the plugin prints on stdout
+// goes to stderr (the bridge's stdout carries the protocol only).
+#include <gjk2d/plugin.h>
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace
+{
+std::FILE* g_out = nullptr; // the protocol's stream: the original stdout
+
+void say(const std::string& line)
+{
+    std::fputs(line.c_str(), g_out);
+    std::fputc('\n', g_out);
+    std::fflush(g_out);
+}
+
+[[noreturn]] void die(const std::string& why)
+{
+    std::fprintf(stderr, "gjk2d-adapter-bridge: %s\n", why.c_str());
+    std::exit(1);
+}
+
+const gjk2d_plugin* g_plugin = nullptr;
+std::string g_library;
+std::string g_suffix; // appended to every implementation's name (the second argument)
+
+void openPlugin(const char* path)
+{
+    void* h = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (h == nullptr)
+        die(std::string("cannot load ") + path + ": " + ::dlerror());
+    auto describe =
+        reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(h, GJK2D_PLUGIN_ENTRY_POINT));
+    if (describe == nullptr || (g_plugin = describe()) == nullptr)
+        die(std::string(path) + " does not describe a gjk2d plugin");
+    if (g_plugin->abi_version != GJK2D_PLUGIN_ABI_VERSION)
+        die(std::string(path) + ": plugin ABI version " + std::to_string(g_plugin->abi_version));
+    auto library =
+        reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(h, GJK2D_PLUGIN_LIBRARY_ENTRY));
+    g_library = library && library() ? library() : std::string(path);
+}
+
+const gjk2d_implementation* findImpl(const std::string& name)
+{
+    for (int i = 0; i < g_plugin->count; ++i)
+        if (name == g_plugin->implementations[i].name + g_suffix)
+            return &g_plugin->implementations[i];
+    return nullptr;
+}
+
+void handshake()
+{
+    std::string line;
+    char buf[256];
+    if (std::fgets(buf, sizeof buf, stdin) == nullptr)
+        std::exit(0);
+    line = buf;
+    if (line.rfind("gjk2d-adapter 1", 0) != 0)
+        die("the host does not speak protocol 1: " + line);
+    say("gjk2d-adapter 1");
+    say("library " + g_library);
+    for (int i = 0; i < g_plugin->count; ++i)
+    {
+        const gjk2d_implementation& im = g_plugin->implementations[i];
+        say(std::string("implementation ") + im.name + g_suffix + " " +
+            (im.scalar == GJK2D_SCALAR_FLOAT ? "float" : "double") + " " +
+            ((im.accepts & GJK2D_ACCEPTS_RADIUS) ? "radius" : "no-radius") + " " +
+            std::to_string(im.max_vertices) + " " + (im.description ? im.description : ""));
+    }
+    say("ready");
+}
+
+// A request's tokens, read in place with strtod (no copy of a line that can be megabytes long).
+struct Reader
+{
+    const char* p;
+    void skip()
+    {
+        while (*p == ' ' || *p == '\r')
+            ++p;
+    }
+    bool word(std::string& w)
+    {
+        skip();
+        const char* q = p;
+        while (*p != '\0' && *p != ' ' && *p != '\r')
+            ++p;
+        w.assign(q, p);
+        return !w.empty();
+    }
+    bool number(double& x)
+    {
+        skip();
+        char* end = nullptr;
+        x = std::strtod(p, &end);
+        const bool ok = end != p && (*end == ' ' || *end == '\0' || *end == '\r');
+        p = end;
+        return ok;
+    }
+    bool integer(long& x)
+    {
+        double v = 0;
+        if (!number(v) || v != double(long(v)))
+            return false;
+        x = long(v);
+        return true;
+    }
+};
+
+// The cases' shapes in the implementation's scalar type, all their points in one contiguous
+// array (as the runner's timing set: scattered per-shape arrays timed a few % slower).
+template <class T, class Shape> struct Cases
+{
+    std::vector<T> coords;
+    std::vector<std::size_t> at; // each shape's first coordinate in coords
+    std::vector<Shape> a, b;
+
+    bool readShape(Reader& in, char tag, std::vector<Shape>& to)
+    {
+        std::string t;
+        double r, px, py, c, s;
+        long n = -1;
+        if (!in.word(t) || t.size() != 1 || t[0] != tag || !in.number(r) || !in.number(px) ||
+            !in.number(py) || !in.number(c) || !in.number(s) || !in.integer(n) || n < 0)
+            return false;
+        at.push_back(coords.size());
+        for (long k = 0; k < 2 * n; ++k)
+        {
+            double v;
+            if (!in.number(v))
+                return false;
+            coords.push_back(T(v)); // exact: a float implementation's case holds floats
+        }
+        Shape sh{};
+        sh.count = int32_t(n);
+        sh.radius = T(r);
+        sh.position[0] = T(px);
+        sh.position[1] = T(py);
+        sh.rotation[0] = T(c);
+        sh.rotation[1] = T(s);
+        to.push_back(sh);
+        return true;
+    }
+    bool read(Reader& in, long m)
+    {
+        for (long k = 0; k < m; ++k)
+            if (!readShape(in, 'A', a) || !readShape(in, 'B', b))
+                return false;
+        for (std::size_t k = 0; k < a.size(); ++k) // coords no longer grows: point into it
+        {
+            a[k].points = coords.data() + at[2 * k];
+            b[k].points = coords.data() + at[2 * k + 1];
+        }
+        return true;
+    }
+};
+
+std::string num(double x)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return buf;
+}
+
+template <class T, class Shape, class Result, class Fn>
+std::string distanceT(const std::string& id, Fn fn, int cacheBytes, Reader& in)
+{
+    Cases<T, Shape> cs;
+    if (!cs.read(in, 1))
+        return "error " + id + " bad request";
+    std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 1), 0);
+    Result o{};
+    o.iterations = -1;
+    const int32_t st = fn(&cs.a[0], &cs.b[0], cacheBytes > 0 ? cache.data() : nullptr, &o);
+    if (st == GJK2D_STATUS_REFUSED)
+        return "refused " + id + " the plugin refused the case";
+    if (st != GJK2D_STATUS_OK)
+        return "error " + id + " the plugin returned status " + std::to_string(st);
+    return "ok " + id + " " + num(o.distance) + " " + num(o.point_a[0]) + " " + num(o.point_a[1]) +
+           " " + num(o.point_b[0]) + " " + num(o.point_b[1]) + " " + std::to_string(o.iterations);
+}
+
+volatile double g_sink = 0; // keeps the timed loop from being optimised away
+
+// The runner's loop (timing.cpp timePassPlugin), K rounds over the m cases; only it is timed.
+template <class T, class Shape, class Result, class Fn>
+std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m, Reader& in)
+{
+    Cases<T, Shape> cs;
+    if (K < 1 || m < 1 || !cs.read(in, m))
+        return "error " + id + " bad request";
+    std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 1), 0);
+    void* c = cacheBytes > 0 ? cache.data() : nullptr;
+    const std::size_t n = cs.a.size();
+    const auto t0 = std::chrono::steady_clock::now();
+    double acc = 0;
+    for (long r = 0; r < K; ++r)
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            std::memset(cache.data(), 0, std::size_t(cacheBytes));
+            Result o{};
+            fn(&cs.a[i], &cs.b[i], c, &o);
+            acc += double(o.distance);
+        }
+    const auto t1 = std::chrono::steady_clock::now();
+    g_sink = g_sink + acc;
+    return "timed " + id + " " +
+           std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
+}
+
+std::string answer(const std::string& line)
+{
+    Reader in{line.c_str()};
+    std::string word, id, name;
+    if (!in.word(word) || !in.word(id) || !in.word(name))
+        return "error " + (id.empty() ? std::string("0") : id) + " bad request";
+    const gjk2d_implementation* im = findImpl(name);
+    if (im == nullptr)
+        return "error " + id + " no implementation " + name;
+    const bool f = im->scalar == GJK2D_SCALAR_FLOAT;
+    if (word == "distance")
+        return f ? distanceT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f,
+                                                                   im->cache_bytes, in)
+                 : distanceT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d,
+                                                                    im->cache_bytes, in);
+    long K = 0, m = 0;
+    if (word != "time" || !in.integer(K) || !in.integer(m))
+        return "error " + id + " unknown request " + word;
+    return f ? timeT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f, im->cache_bytes, K,
+                                                           m, in)
+             : timeT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d, im->cache_bytes, K,
+                                                            m, in);
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // The protocol on the original stdout; the plugin's own printing on stderr.
+    const int protocolFd = ::dup(STDOUT_FILENO);
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);
+    g_out = ::fdopen(protocolFd, "w");
+    const char* env = std::getenv("GJK2D_BRIDGE_PLUGIN");
+    const char* path = argc > 1 ? argv[1] : env;
+    if (path == nullptr || g_out == nullptr)
+        die("usage: gjk2d-adapter-bridge PLUGIN.so (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so)");
+    g_suffix = argc > 2 ? argv[2] : "";
+    openPlugin(path);
+    handshake();
+    std::string line;
+    for (int c; (c = std::getchar()) != EOF;)
+    {
+        if (c != '\n')
+        {
+            line.push_back(char(c));
+            continue;
+        }
+        if (!line.empty())
+            say(answer(line));
+        line.clear();
+    }
+    return 0;
+}

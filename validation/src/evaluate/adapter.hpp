@@ -1,0 +1,80 @@
+// Executable adapters: the host side of the gjk2d executable-adapter protocol, version 1
+// (docs/validate-your-gjk.md, "Executable adapters (any language)"). An adapter is any
+// executable file gjk-validate starts and talks to over its stdin and stdout, one line per
+// message: a handshake (its library and implementations), then `distance` and `time` requests,
+// one answer each. Contained like a shared-library plugin: a crash, a hang or a malformed answer
+// costs the case in flight, and the process is started again for the next one.
+#pragma once
+
+#include "evaluate/variants.hpp"
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace gjkval
+{
+
+struct PluginImpl;   // evaluate/plugins.hpp
+struct PluginTask;   // evaluate/plugins.hpp
+struct PreparedCase; // evaluate/evaluate.hpp
+
+inline constexpr int kAdapterProtocolVersion = 1;
+// The handshake may take max(kAdapterHandshakeSeconds, --plugin-timeout): an interpreter's start
+// (Node, Python importing shapely) takes a few hundred milliseconds on an idle machine.
+inline constexpr double kAdapterHandshakeSeconds = 10;
+// At the end, an adapter whose stdin was closed has this long to exit before SIGKILL.
+inline constexpr double kAdapterCloseSeconds = 2;
+
+// One `implementation` line of the handshake.
+struct AdapterImplementation
+{
+    std::string name;
+    Scalar scalar = Scalar::Double;
+    bool radius = false; // `radius`: takes radius > 0
+    int maxVertices = 0; // 0: no limit
+    std::string description;
+    bool operator==(const AdapterImplementation&) const = default;
+};
+
+// What the handshake says.
+struct AdapterDescription
+{
+    std::string library;
+    std::vector<AdapterImplementation> implementations;
+    bool operator==(const AdapterDescription&) const = default;
+};
+
+// Starts the adapter (its canonical path), reads its description and closes it. Throws
+// InputError, one line naming the file as given (`path`), for another protocol version, a bad
+// description, an adapter that exits or does not say `ready` within
+// max(kAdapterHandshakeSeconds, timeoutSeconds). The names are checked here for their form and
+// among themselves; against other variants by the caller.
+AdapterDescription describeAdapter(const std::string& path, const std::string& canonical,
+                                   double timeoutSeconds);
+
+// answerContained() for the tasks of executable adapters (every task's variant has
+// plugin->kind == PluginKind::Executable): one `distance` request each, through the adapter's
+// process (started at its first task, kept for the run). A crash (Crashed), no answer within
+// timeoutSeconds (Hung) or a malformed answer (Error, "malformed answer: ...") costs that task,
+// with one line on stderr naming the adapter and the case, and the process is started again for
+// the next task; when that start fails, every later task of the adapter is Crashed.
+void answerThroughAdapters(const std::vector<PluginTask>& tasks, double timeoutSeconds);
+
+// The "A ... B ..." part of a request for case p, in v's scalar type: each shape as radius,
+// position, rotation (c, s), point count and points, each number the shortest decimal that reads
+// back as the same double.
+std::string adapterCaseText(const VariantInfo& v, const PreparedCase& p);
+
+// One `time` request: v's implementation runs the m cases of casesText (adapterCaseText, joined
+// by spaces) K times in its own timed loop. The total in nanoseconds, or a negative number when
+// the adapter did not answer `timed` within timeoutSeconds (crash, hang, `error`, malformed): a
+// line on stderr says so, naming `what`, and the process is started again for the next request.
+double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
+                     double timeoutSeconds, const std::string& what);
+
+// Ends every adapter process: stdin closed, kAdapterCloseSeconds to exit, then SIGKILL. Called
+// when the plugins' work is done (finishPluginLogs) and, at the latest, at exit.
+void closeAdapters();
+
+} // namespace gjkval
