@@ -1,0 +1,122 @@
+// The Bullet 3.24 adapter (validation/plugins/bullet/bullet.cpp) on hand-derived cases, in float
+// (gjk2d-bullet-float.so) and double (gjk2d-bullet-double.so); docs/peers.md, "## Bullet". Unit
+// squares are [0, 1]^2 placed by their case's transform.
+//
+// Tolerance kPolygon<T> = 64 u S with S = 5, the largest coordinate, u the type's unit roundoff:
+// the adapter rounds the world points once (u S), Bullet's GJK projects onto an edge in a few
+// operations, and subtracts the margins. Largest error measured on these cases: float 1.7e-7
+// (the edge-nearest squares answer 3.5700002, 4.57 - 1 in float), 0.01 of kPolygon<float>;
+// double: none (every answer is the double nearest the hand-derived value).
+#include "peer_plugin.hpp"
+
+#include "within.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+#include <type_traits>
+
+namespace
+{
+
+template <class T> constexpr double kPolygon = 64 * (std::numeric_limits<T>::epsilon() / 2) * 5;
+
+template <class T> const peers::Plugin& bullet()
+{
+    if constexpr (std::is_same_v<T, float>)
+    {
+        static const peers::Plugin p(GJK2D_BULLET_FLOAT_PLUGIN, "bullet-3.24-float");
+        return p;
+    }
+    else
+    {
+        static const peers::Plugin p(GJK2D_BULLET_DOUBLE_PLUGIN, "bullet-3.24-double");
+        return p;
+    }
+}
+
+} // namespace
+
+TEMPLATE_TEST_CASE("the library names Bullet and its version, the scalar is the module's", "",
+                   float, double)
+{
+    CHECK(bullet<TestType>().library() == "Bullet " GJK2D_BULLET_VERSION " (Debian libbullet-dev)");
+    CHECK(bullet<TestType>().implementation().scalar ==
+          (std::is_same_v<TestType, float> ? GJK2D_SCALAR_FLOAT : GJK2D_SCALAR_DOUBLE));
+}
+
+// A = [0, 1]^2, B = [4, 5] x [0, 1]: the faces x = 1 and x = 4 face each other, distance 3.
+TEMPLATE_TEST_CASE("two unit squares 3 apart: distance 3 between x = 1 and x = 4", "", float,
+                   double)
+{
+    const double tol = kPolygon<TestType>;
+    const peers::Answer r = bullet<TestType>().distance(peers::unitSquare(), peers::unitSquare(4, 0));
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(3, tol));
+    CHECK(r.ax == within(1, tol));
+    CHECK(r.bx == within(4, tol));
+    CHECK(r.ay == within(r.by, tol));
+}
+
+// B = [4.57, 5.57] x [0.5, 1.5]: the faces x = 1 and x = 4.57 overlap in y on [0.5, 1], an edge
+// pair is nearest: 3.57 (where FCL's GST_LIBCCD answers a vertex pair, docs/peers.md).
+TEMPLATE_TEST_CASE("edge-nearest squares: the edge distance 3.57", "", float, double)
+{
+    const double tol = kPolygon<TestType>;
+    const peers::Answer r =
+        bullet<TestType>().distance(peers::unitSquare(), peers::unitSquare(4.57, 0.5));
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(3.57, tol));
+    CHECK(r.ax == within(1, tol));
+    CHECK((r.ay >= 0.5 - tol && r.ay <= 1 + tol));
+}
+
+// A = [0, 1]^2, B = [0.5, 1.5]^2 overlap in [0.5, 1]^2. Bullet's EPA answers a negative distance
+// (the penetration depth 0.5) and two points, each in both squares: the adapter reports distance
+// 0 with those points. They are apart (by 0.4 here, measured), which gjk-validate's witness-gap
+// check counts as invalid (docs/peers.md).
+TEMPLATE_TEST_CASE("overlapping squares: distance 0, Bullet's two points each in both squares", "",
+                   float, double)
+{
+    const double tol = kPolygon<TestType>;
+    const peers::Answer r =
+        bullet<TestType>().distance(peers::unitSquare(), peers::unitSquare(0.5, 0.5));
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == 0);
+    for (double v : {r.ax, r.ay, r.bx, r.by})
+        CHECK((v >= 0.5 - tol && v <= 1 + tol));
+}
+
+// Margins as radii: [3, 4] x [0, 1] with radius 0.25 and A with radius 0.25: 2 - 0.5 = 1.5, the
+// points on the rounded faces x = 3 - 0.25 and x = 1 + 0.25. A point at (3, 0.5) with radius 0.5
+// and A (no radius, margin 0, not Bullet's default 0.04): 2 - 0.5 = 1.5.
+TEMPLATE_TEST_CASE("radii are margins: distance minus both radii, points on the rounded faces", "",
+                   float, double)
+{
+    const double tol = kPolygon<TestType>;
+    peers::Shape a = peers::unitSquare(3, 0), b = peers::unitSquare();
+    a.radius = b.radius = 0.25;
+    const peers::Answer r = bullet<TestType>().distance(a, b);
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(1.5, tol));
+    CHECK(r.ax == within(2.75, tol));
+    CHECK(r.bx == within(1.25, tol));
+    const peers::Answer s =
+        bullet<TestType>().distance(peers::Shape{{0, 0}, 0.5, 3, 0.5}, peers::unitSquare());
+    REQUIRE(s.status == GJK2D_STATUS_OK);
+    CHECK(s.distance == within(1.5, tol));
+    CHECK(s.ax == within(2.5, tol));
+    CHECK(s.bx == within(1, tol));
+}
+
+// (c, s) = (2, 0) scales A's points by 2, A = [0, 2]^2; B = [5, 6] x [0, 1] is 3 away.
+TEMPLATE_TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2", "",
+                   float, double)
+{
+    const double tol = kPolygon<TestType>;
+    const peers::Answer r =
+        bullet<TestType>().distance(peers::unitSquare(0, 0, 2, 0), peers::unitSquare(5, 0));
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(3, tol));
+    CHECK(r.ax == within(2, tol));
+}
