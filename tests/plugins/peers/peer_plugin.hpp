@@ -16,7 +16,8 @@
 namespace peers
 {
 
-// A case's shape in double: points x0, y0, x1, y1, ..., radius, world = R * local + p, R from (c, s).
+// A case's shape in double: points x0, y0, x1, y1, ..., radius, world = R * local + p, R from (c,
+// s).
 struct Shape
 {
     std::vector<double> points;
@@ -35,14 +36,14 @@ struct Answer
 // The library's description and the named implementation; throws when either is missing.
 class Plugin
 {
-public:
+  public:
     Plugin(const std::string& path, const std::string& name)
     {
         handle_ = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!handle_)
             throw std::runtime_error("cannot load " + path + ": " + ::dlerror());
-        auto describe = reinterpret_cast<gjk2d_plugin_describe_fn>(
-            ::dlsym(handle_, GJK2D_PLUGIN_ENTRY_POINT));
+        auto describe =
+            reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(handle_, GJK2D_PLUGIN_ENTRY_POINT));
         if (!describe)
             throw std::runtime_error(path + " does not export " GJK2D_PLUGIN_ENTRY_POINT);
         const gjk2d_plugin* d = describe();
@@ -51,7 +52,8 @@ public:
                 impl_ = &d->implementations[i];
         if (!impl_)
             throw std::runtime_error(path + " has no implementation " + name);
-        auto library = reinterpret_cast<const char* (*)()>(::dlsym(handle_, "gjk2d_plugin_library"));
+        auto library =
+            reinterpret_cast<const char* (*)()>(::dlsym(handle_, "gjk2d_plugin_library"));
         library_ = library ? library() : "";
     }
     Plugin(const Plugin&) = delete;
@@ -69,16 +71,15 @@ public:
         return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d);
     }
 
-private:
+  private:
     template <class T, class S, class R, class Fn>
     static Answer call(const Shape& a, const Shape& b, Fn fn)
     {
         const std::vector<T> pa(a.points.begin(), a.points.end());
         const std::vector<T> pb(b.points.begin(), b.points.end());
-        const auto shape = [](const Shape& s, const std::vector<T>& p)
-        {
-            return S{p.data(), int32_t(p.size() / 2), T(s.radius), {T(s.px), T(s.py)},
-                     {T(s.c), T(s.s)}};
+        const auto shape = [](const Shape& s, const std::vector<T>& p) {
+            return S{
+                p.data(), int32_t(p.size() / 2), T(s.radius), {T(s.px), T(s.py)}, {T(s.c), T(s.s)}};
         };
         const S sa = shape(a, pa), sb = shape(b, pb);
         R r{};
