@@ -173,3 +173,51 @@ TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2"
         CHECK(r.ax == within(2, kPolygon));
     }
 }
+
+namespace
+{
+
+// Leaves `byte` in the stack below the caller, where the adapter's locals will be.
+[[gnu::noinline]] void dirtyStack(unsigned char byte)
+{
+    volatile unsigned char junk[1 << 16];
+    for (auto& b : junk)
+        b = byte;
+}
+
+} // namespace
+
+// hard/extreme-scale/48-gap-1e180 (gjk-validate generate --family hard/extreme-scale; exact
+// distance 1.46e172): GST_INDEP returns without writing its DistanceResult, min_distance stays at
+// its initial numeric max and the nearest points at whatever the memory held. The adapter presets
+// them to NaN: the same answer whatever the stack held before. (GST_LIBCCD aborts on this case.)
+TEST_CASE("GST_INDEP leaves a huge case unanswered: numeric max, NaN points, in every run")
+{
+    const peers::Shape a{{6.538098967619074e+179, 1.3121003390251404e+180, 6.55369169873577e+178,
+                          1.4645066040429783e+180, -1.1633465828879966e+179,
+                          1.4613490096669353e+180, -1.459739793133764e+180, 1.3503487370120538e+179,
+                          -8.936515379395379e+179, -1.1620936319901263e+180,
+                          1.1068483360807881e+180, -9.61229130690958e+179, 1.3675954503858125e+180,
+                          -5.279747767249214e+179},
+                         0,
+                         5.619056201924275e+179,
+                         2.2517228195368712e+180,
+                         -0.9572434440300882,
+                         -0.28928357862384013};
+    const peers::Shape b{{6.069908577423192e+179, 1.2153222550364547e+180, 5.92775197598156e+179,
+                          1.2223189641342053e+180, -1.3531436419967699e+180,
+                          1.2020136893299825e+179},
+                         0,
+                         1.6544460974350955e+180,
+                         3.2175387118142435e+180,
+                         0.9995611920213605,
+                         0.029621333610031296};
+    for (unsigned char byte : {0x00, 0x3f})
+    {
+        dirtyStack(byte);
+        const peers::Answer r = indep().distance(a, b);
+        REQUIRE(r.status == GJK2D_STATUS_OK);
+        CHECK(r.distance == std::numeric_limits<double>::max());
+        CHECK((std::isnan(r.ax) && std::isnan(r.ay) && std::isnan(r.bx) && std::isnan(r.by)));
+    }
+}

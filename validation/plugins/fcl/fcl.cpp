@@ -24,18 +24,29 @@
 //   2D one. Any other shape with radius > 0 is refused (GJK2D_STATUS_REFUSED): FCL has no
 //   rounded polytope, and approximating one would judge our approximation, not FCL.
 // - Overlap: unsigned distance (enable_signed_distance = false). FCL documents min_distance as
-//   "implementation defined negative value (mostly -1)" when the objects are in collision
-//   (DistanceResult::min_distance): a negative answer is FCL's "in collision", reported as
-//   distance 0, with the nearest points as FCL returns them. Signed distance is not used: with
-//   GST_INDEP it hits an assert compiled into Debian's libfcl on overlapping convexes.
+//   "implementation defined negative value" when the objects are in collision (DistanceResult;
+//   DistanceRequest::enable_signed_distance: "mostly -1"): a negative answer is FCL's "in
+//   collision", reported as distance 0, with the nearest points as FCL returns them. Signed
+//   distance is not used: with GST_INDEP it hits an assert compiled into Debian's libfcl
+//   (distance-inl.h:177) on overlapping convexes.
+// - Overlap points: FCL sets no nearest points in collision, both are the origin; reported as
+//   they are (so an overlapping case's witness points are off their shapes in the report).
+// - No answer: on some cases of huge coordinates FCL returns without touching its DistanceResult
+//   (min_distance stays at its initial numeric max, the nearest points at whatever the memory
+//   held). The adapter sets the points to NaN before the call, so such an answer is reported the
+//   same in every run: FCL's distance, NaN points (non-finite in the report).
 //
-// Findings (docs/peers.md, "## FCL"): GST_LIBCCD answers a vertex-to-vertex distance when the
-// nearest feature is an edge (FCL issue #508); GST_INDEP answers the edge distance.
+// Findings (docs/peers.md, "## FCL"; tests/plugins/peers/test_fcl.cpp): GST_LIBCCD answers a
+// vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
+// squares 3.57 apart); GST_INDEP answers the edge distance but calls shapes closer than its
+// distance_tolerance (1e-6) colliding; GST_LIBCCD aborts on an assertion (doSimplex2, "A is not in
+// region 1") on some cases of coordinates beyond 1e160.
 #include <gjk2d/plugin.h>
 
 #include <fcl/narrowphase/distance.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -142,7 +153,9 @@ int32_t fclDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, gjk2d_result
     request.enable_nearest_points = true;
     request.enable_signed_distance = false;
     request.gjk_solver_type = solver;
-    fcl::DistanceResult<double> result;
+    fcl::DistanceResult<double> result; // its nearest points start unwritten (Eigen)
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
     const double d =
         fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
     out->distance = d < 0 ? 0.0 : d; // negative: FCL's "in collision" (see the header comment)
