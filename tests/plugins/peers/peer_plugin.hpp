@@ -1,0 +1,107 @@
+// Calls one implementation of a shipped peer's shared library (gjk2d/plugin.h) as gjk-validate
+// does: dlopen, gjk2d_plugin_describe, the implementation's distance function on one case, in the
+// implementation's scalar type. For the tests of the FCL and Bullet adapters (docs/peers.md).
+#pragma once
+
+#include <gjk2d/plugin.h>
+
+#include <dlfcn.h>
+
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace peers
+{
+
+// A case's shape in double: points x0, y0, x1, y1, ..., radius, world = R * local + p, R from (c,
+// s).
+struct Shape
+{
+    std::vector<double> points;
+    double radius = 0;
+    double px = 0, py = 0;
+    double c = 1, s = 0;
+};
+
+struct Answer
+{
+    int32_t status = -1;
+    double distance = 0;
+    double ax = 0, ay = 0, bx = 0, by = 0; // witness points on A and on B (world)
+};
+
+// The library's description and the named implementation; throws when either is missing.
+class Plugin
+{
+  public:
+    Plugin(const std::string& path, const std::string& name)
+    {
+        handle_ = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle_)
+            throw std::runtime_error("cannot load " + path + ": " + ::dlerror());
+        auto describe =
+            reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(handle_, GJK2D_PLUGIN_ENTRY_POINT));
+        if (!describe)
+            throw std::runtime_error(path + " does not export " GJK2D_PLUGIN_ENTRY_POINT);
+        const gjk2d_plugin* d = describe();
+        for (int32_t i = 0; i < d->count; ++i)
+            if (name == d->implementations[i].name)
+                impl_ = &d->implementations[i];
+        if (!impl_)
+            throw std::runtime_error(path + " has no implementation " + name);
+        auto library =
+            reinterpret_cast<const char* (*)()>(::dlsym(handle_, "gjk2d_plugin_library"));
+        library_ = library ? library() : "";
+    }
+    Plugin(const Plugin&) = delete;
+    Plugin& operator=(const Plugin&) = delete;
+    ~Plugin() { ::dlclose(handle_); }
+
+    const gjk2d_implementation& implementation() const { return *impl_; }
+    const std::string& library() const { return library_; }
+
+    // The case in the implementation's scalar type (a float implementation gets it rounded).
+    Answer distance(const Shape& a, const Shape& b) const
+    {
+        if (impl_->scalar == GJK2D_SCALAR_FLOAT)
+            return call<float, gjk2d_shape_f, gjk2d_result_f>(a, b, impl_->distance_f);
+        return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d);
+    }
+
+  private:
+    template <class T, class S, class R, class Fn>
+    static Answer call(const Shape& a, const Shape& b, Fn fn)
+    {
+        const std::vector<T> pa(a.points.begin(), a.points.end());
+        const std::vector<T> pb(b.points.begin(), b.points.end());
+        const auto shape = [](const Shape& s, const std::vector<T>& p) {
+            return S{
+                p.data(), int32_t(p.size() / 2), T(s.radius), {T(s.px), T(s.py)}, {T(s.c), T(s.s)}};
+        };
+        const S sa = shape(a, pa), sb = shape(b, pb);
+        R r{};
+        Answer out;
+        out.status = fn(&sa, &sb, nullptr, &r);
+        out.distance = r.distance;
+        out.ax = r.point_a[0];
+        out.ay = r.point_a[1];
+        out.bx = r.point_b[0];
+        out.by = r.point_b[1];
+        return out;
+    }
+
+    void* handle_ = nullptr;
+    const gjk2d_implementation* impl_ = nullptr;
+    std::string library_;
+};
+
+// The unit square [0, 1]^2 placed at (px, py) with rotation (c, s).
+inline Shape unitSquare(double px = 0, double py = 0, double c = 1, double s = 0)
+{
+    return Shape{{0, 0, 1, 0, 1, 1, 0, 1}, 0, px, py, c, s};
+}
+
+} // namespace peers

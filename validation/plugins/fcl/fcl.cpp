@@ -1,0 +1,203 @@
+// The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h): fcl::distance between two prisms, with
+// both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD, FCL's default)
+// and "fcl-0.7-indep" (GST_INDEP). Built against Debian's libfcl-dev; docs/peers.md, "## FCL".
+//
+// The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
+// prism P x [-h, h] with h = kHalfHeight, the same for both shapes; the distance of two prisms is
+// the 2D distance of their polygons, and their nearest points can be taken at z = 0. The adapter
+// returns FCL's nearest points' x and y.
+// - Transforms: the adapter applies the case's transform to the points itself, world = R * local +
+//   p in double with R = [[c, -s], [s, c]] from the case's (c, s) as given, and hands FCL identity
+//   transforms. FCL's Transform3 is an Eigen Isometry and libccd turns its linear part into a
+//   quaternion, which drops the scale of a (c, s) that is not of unit length: handing FCL the
+//   case's transform would silently answer another case.
+// - Polygons: an fcl::Convex<double> of the prism's 2n vertices and no faces (throw_if_invalid =
+//   false). Both solvers' support functions read only the vertices (a linear scan; FCL walks
+//   faces only on a valid mesh of 32 or more vertices, and a face-less mesh is not valid), so the
+//   shape is the hull of the points, in any order, as the case means it; one or two points (a
+//   segment along z, a degenerate rectangle) need no special path.
+// - Radius: Convex has none. A one-point shape of radius r > 0 is an fcl::Sphere of radius r at
+//   the point, a two-point one an fcl::Capsule (FCL's capsule lies along its z axis: the adapter
+//   rotates z onto the segment's direction in the xy-plane; the unit direction is rounded, a
+//   relative error of about 1e-16 of the segment's length). No prism there: a ball and a
+//   capsule are the 2D point and segment swept by r in 3D, whose distance to a prism is again the
+//   2D one. Any other shape with radius > 0 is refused (GJK2D_STATUS_REFUSED): FCL has no
+//   rounded polytope, and approximating one would judge our approximation, not FCL.
+// - Overlap: unsigned distance (enable_signed_distance = false). FCL documents min_distance as
+//   "implementation defined negative value" when the objects are in collision (DistanceResult;
+//   DistanceRequest::enable_signed_distance: "mostly -1"): a negative answer is FCL's "in
+//   collision", reported as distance 0, with the nearest points as FCL returns them. Signed
+//   distance is not used: with GST_INDEP it hits an assert compiled into Debian's libfcl
+//   (distance-inl.h:177) on overlapping convexes.
+// - Overlap points: FCL sets no nearest points in collision, both are the origin; reported as
+//   they are (so an overlapping case's witness points are off their shapes in the report).
+// - No answer: on some cases of huge coordinates FCL returns without touching its DistanceResult
+//   (min_distance stays at its initial numeric max, the nearest points at whatever the memory
+//   held). The adapter sets the points to NaN before the call, so such an answer is reported the
+//   same in every run: FCL's distance, NaN points (non-finite in the report).
+//
+// Findings (docs/peers.md, "## FCL"; tests/plugins/peers/test_fcl.cpp): GST_LIBCCD answers a
+// vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
+// squares 3.57 apart); GST_INDEP answers the edge distance but calls shapes closer than its
+// distance_tolerance (1e-6) colliding; GST_LIBCCD aborts on an assertion (doSimplex2, "A is not in
+// region 1") on some cases of coordinates beyond 1e160.
+#include <gjk2d/plugin.h>
+
+#include <fcl/narrowphase/distance.h>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#ifndef GJK2D_FCL_VERSION
+#define GJK2D_FCL_VERSION "unknown"
+#endif
+
+namespace
+{
+
+using Vec3 = fcl::Vector3<double>;
+
+// The prisms' half height: 1, a fixed number rather than the shapes' scale. The distance and the
+// nearest points' x, y do not depend on it (docs/peers.md); it only has to be positive.
+constexpr double kHalfHeight = 1.0;
+
+// The shape's points in the world frame: world = R * local + p, the case's (c, s) as given.
+std::vector<Vec3> worldPoints(const gjk2d_shape_d& s)
+{
+    const double c = s.rotation[0], sn = s.rotation[1];
+    std::vector<Vec3> out;
+    out.reserve(std::size_t(s.count));
+    for (int32_t i = 0; i < s.count; ++i)
+    {
+        const double x = s.points[2 * i], y = s.points[2 * i + 1];
+        out.emplace_back(c * x - sn * y + s.position[0], sn * x + c * y + s.position[1], 0.0);
+    }
+    return out;
+}
+
+// A capsule of radius r around the segment p0 p1 (z = 0): FCL's Capsule lies along its own z axis,
+// centred on its origin; the rotation's third column is the segment's unit direction u, its second
+// the world z, its first their cross product (a right-handed frame).
+struct Placed
+{
+    std::shared_ptr<fcl::CollisionGeometry<double>> geometry;
+    fcl::Transform3<double> pose = fcl::Transform3<double>::Identity();
+};
+
+Placed capsule(const Vec3& p0, const Vec3& p1, double r)
+{
+    const Vec3 d = p1 - p0;
+    const double length = d.norm();
+    Placed out;
+    out.pose.translation() = 0.5 * (p0 + p1);
+    if (length == 0)
+    {
+        out.geometry = std::make_shared<fcl::Sphere<double>>(r);
+        return out;
+    }
+    const Vec3 u = d / length;
+    fcl::Matrix3<double> rot;
+    rot.col(0) = Vec3(-u.y(), u.x(), 0.0);
+    rot.col(1) = Vec3(0.0, 0.0, 1.0);
+    rot.col(2) = u;
+    out.pose.linear() = rot;
+    out.geometry = std::make_shared<fcl::Capsule<double>>(r, length);
+    return out;
+}
+
+// The prism P x [-h, h] as a face-less Convex (see the header comment).
+Placed prism(const std::vector<Vec3>& p)
+{
+    auto vertices = std::make_shared<std::vector<Vec3>>();
+    for (const Vec3& v : p)
+    {
+        vertices->emplace_back(v.x(), v.y(), -kHalfHeight);
+        vertices->emplace_back(v.x(), v.y(), kHalfHeight);
+    }
+    Placed out;
+    out.geometry = std::make_shared<fcl::Convex<double>>(
+        vertices, 0, std::make_shared<std::vector<int>>(), /*throw_if_invalid=*/false);
+    return out;
+}
+
+// The FCL geometry of one case shape; an empty geometry when FCL cannot take it (radius > 0 on
+// more than two points).
+Placed geometryOf(const gjk2d_shape_d& s)
+{
+    const std::vector<Vec3> p = worldPoints(s);
+    if (s.radius == 0)
+        return prism(p);
+    if (s.count == 1)
+    {
+        Placed out;
+        out.geometry = std::make_shared<fcl::Sphere<double>>(s.radius);
+        out.pose.translation() = p[0];
+        return out;
+    }
+    if (s.count == 2)
+        return capsule(p[0], p[1], s.radius);
+    return {};
+}
+
+int32_t fclDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, gjk2d_result_d* out,
+                    fcl::GJKSolverType solver)
+{
+    if (a->count < 1 || b->count < 1)
+        return GJK2D_STATUS_REFUSED;
+    const Placed ga = geometryOf(*a), gb = geometryOf(*b);
+    if (!ga.geometry || !gb.geometry)
+        return GJK2D_STATUS_REFUSED;
+    fcl::DistanceRequest<double> request;
+    request.enable_nearest_points = true;
+    request.enable_signed_distance = false;
+    request.gjk_solver_type = solver;
+    fcl::DistanceResult<double> result; // its nearest points start unwritten (Eigen)
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
+    const double d =
+        fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
+    out->distance = d < 0 ? 0.0 : d; // negative: FCL's "in collision" (see the header comment)
+    out->point_a[0] = result.nearest_points[0].x();
+    out->point_a[1] = result.nearest_points[0].y();
+    out->point_b[0] = result.nearest_points[1].x();
+    out->point_b[1] = result.nearest_points[1].y();
+    out->iterations = -1;
+    return GJK2D_STATUS_OK;
+}
+
+int32_t libccdDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
+{
+    return fclDistance(a, b, out, fcl::GST_LIBCCD);
+}
+
+int32_t indepDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
+{
+    return fclDistance(a, b, out, fcl::GST_INDEP);
+}
+
+const gjk2d_implementation kImplementations[] = {
+    {"fcl-0.7-libccd",
+     "FCL " GJK2D_FCL_VERSION " fcl::distance, GST_LIBCCD, prisms of Convex (Sphere, Capsule for "
+     "rounded points, segments)",
+     GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &libccdDistance},
+    {"fcl-0.7-indep",
+     "FCL " GJK2D_FCL_VERSION " fcl::distance, GST_INDEP, prisms of Convex (Sphere, Capsule for "
+     "rounded points, segments)",
+     GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &indepDistance},
+};
+
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations};
+
+} // namespace
+
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
+{
+    return &kPlugin;
+}
+
+extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
+{
+    return "FCL " GJK2D_FCL_VERSION " (Debian libfcl-dev)";
+}
