@@ -334,6 +334,34 @@ TEST_CASE("a witness point off its shape beyond the witness bound is invalid",
     CHECK(checked(c, answer(-3, {0, 1}, {3, 0}, truth)).invalid == Invalid::NegativeDistance);
 }
 
+TEST_CASE("an overlap answered with two points that each lie in both shapes is valid",
+          "[judgement][invalid]")
+{
+    // A the square [0, 2]^2, B the square [1, 3]^2: they overlap in [1, 2]^2 (exact 0).
+    // docs/validate-your-gjk.md: distance 0 and one point in both shapes, or two such points.
+    Case c;
+    c.name = "overlapping-squares";
+    c.a.points = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    c.b.points = {{1, 1}, {3, 1}, {3, 3}, {1, 3}};
+    const exact::Result truth = truthOf(0, 0, true);
+    // (1, 1) and (2, 2), a penetration pair as Bullet gives it: each in both shapes, 1.41 apart.
+    const VariantOutcome pair = answer(0, {2, 2}, {1, 1}, truth);
+    REQUIRE(pair.invalid == Invalid::WitnessGap); // ||pB - pA|| alone says no
+    const VariantOutcome judged = checked(c, pair);
+    CHECK(judged.invalid == Invalid::None);
+    CHECK(judged.witnessGap == 0); // each point's distance to the other shape
+    CHECK_FALSE(judged.failed);
+    // (0, 0) is in A but 1.41 from B: not a common point, the gap stands.
+    const VariantOutcome outside = checked(c, answer(0, {0, 0}, {1, 1}, truth));
+    CHECK(outside.invalid == Invalid::WitnessGap);
+    CHECK(outside.failed);
+    // (2.25, 2) is 0.25 from A (the witness bound): within it, valid; (2.5, 2) is not.
+    CHECK_FALSE(checked(c, answer(0, {2, 2}, {2.25, 2}, truth)).failed);
+    CHECK(checked(c, answer(0, {2, 2}, {2.5, 2}, truth)).failed);
+    // A positive distance never takes this way: points 1.41 apart for d = 0.5 stay a gap.
+    CHECK(checked(c, answer(0.5, {2, 2}, {1, 1}, truth)).invalid == Invalid::WitnessGap);
+}
+
 TEST_CASE("the witness bound, term by term, as docs/error-bound.md writes it", "[judgement][bound]")
 {
     // u (15 A + 15 B + 10.2 D + 16.5 B~ + 12 M + 26.5 W + 9.5 d + 18.5 (rA + rB)) + 2 sub_T.

@@ -560,6 +560,24 @@ class ExactShapes
 };
 
 // The witness verdict (judge() left the rest): off its shape comes before the gap.
+// An answer of overlap (distance 0) may give two points that each lie in both shapes instead of
+// one (docs/validate-your-gjk.md, "The whole answer is judged"): Bullet's penetration points, Box2D
+// v3's points on each outline. Either point proves the overlap. Then the witness gap is how far
+// the points are from the other shape, and within the witness bound the answer is valid: the
+// failure WitnessGap set from ||pB - pA|| is withdrawn (the other reasons stand).
+void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
+{
+    const double aInB = exact::pointToShapeDistance(shapes.b(isFloat), {v.pointA[0], v.pointA[1]});
+    const double bInA = exact::pointToShapeDistance(shapes.a(isFloat), {v.pointB[0], v.pointB[1]});
+    const double gap = std::max(aInB, bInA);
+    if (!(gap <= v.witnessBound))
+        return;
+    v.witnessGap = gap;
+    v.invalid = Invalid::None;
+    v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
+               (v.certified && !v.intervalContains) || v.bitMismatch;
+}
+
 void judgeWitnesses(VariantOutcome& v, double wa, double wb)
 {
     v.witness = std::max(wa, wb);
@@ -609,6 +627,8 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         witnessA[k] = wa;
         witnessB[k] = wb;
         done[k] = 1;
+        if (v.invalid == Invalid::WitnessGap && v.distance == 0)
+            acceptTwoCommonPoints(v, shapes, isFloat);
         judgeWitnesses(v, wa, wb);
     }
 }
