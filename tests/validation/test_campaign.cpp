@@ -377,8 +377,9 @@ TEST_CASE("the talk's cases: float with the closest-point direction fails, the r
     CHECK(s["float-closest-point"]["failures"].get<int>() >= 1);
 }
 
-TEST_CASE("the reported cases: each names its report, the truth is the report's answer, gjk2d passes",
-          "[campaign]")
+TEST_CASE(
+    "the reported cases: each names its report, the truth is the report's answer, gjk2d passes",
+    "[campaign]")
 {
     const std::string file = std::string(GJK2D_SOURCE_DIR) + "/validation/cases/reported.json";
     // The expected distance of each case as its report (or its maintainers) gave it, restated in

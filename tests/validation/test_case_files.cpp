@@ -166,10 +166,10 @@ TEST_CASE("a case's optional source and comment are read, written and type-check
     CHECK(f.entries[3].rejected == "comment is an array, expected a string");
     // Longer than a file comment may be: rejected.
     const std::string longText = std::string(kMaxCommentBytes + 1, 'x');
-    const CaseFile g = parseCaseFile(R"({"format": "gjk-cases/1", "cases": [{"name": "long", "comment": ")" +
-                                         longText +
-                                         R"(", "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}}]})",
-                                     "long.json");
+    const CaseFile g = parseCaseFile(
+        R"({"format": "gjk-cases/1", "cases": [{"name": "long", "comment": ")" + longText +
+            R"(", "a": {"points": [[0, 0]]}, "b": {"points": [[3, 0]]}}]})",
+        "long.json");
     REQUIRE(g.entries.size() == 1);
     CHECK(g.entries[0].rejected == "comment is 65537 bytes long, more than 65536");
     // Written only when present, and read back unchanged.

@@ -150,7 +150,8 @@ std::string readText(const RJson& c, const char* key)
         fieldError(fmt::format("{} is {}, expected a string", key, typeName(j)));
     const std::string& s = j.get_ref<const std::string&>();
     if (s.size() > kMaxCommentBytes)
-        fieldError(fmt::format("{} is {} bytes long, more than {}", key, s.size(), kMaxCommentBytes));
+        fieldError(
+            fmt::format("{} is {} bytes long, more than {}", key, s.size(), kMaxCommentBytes));
     return s;
 }
 

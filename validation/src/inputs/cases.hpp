@@ -59,12 +59,12 @@ inline constexpr const char* kCaseFormat = "gjk-cases/1";
 // is bounded by these, not by what the file claims. Files and JSON beyond them are refused, cases
 // beyond them are rejected.
 inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 MiB
-inline constexpr std::size_t kMaxJsonDepth = 64;             // a case file needs 6 levels
-inline constexpr std::size_t kMaxCasesPerFile = 1'000'000;   // entries of "cases"
-inline constexpr std::size_t kMaxComments = 10'000;          // entries of "comments"
-inline constexpr std::size_t kMaxCommentBytes = 64 << 10;    // one comment, a case's source or comment
-inline constexpr std::size_t kMaxCaseNameBytes = 256;        // one case name
-inline constexpr std::size_t kMaxShapePoints = 1'000'000;    // points of one shape
+inline constexpr std::size_t kMaxJsonDepth = 64;           // a case file needs 6 levels
+inline constexpr std::size_t kMaxCasesPerFile = 1'000'000; // entries of "cases"
+inline constexpr std::size_t kMaxComments = 10'000;        // entries of "comments"
+inline constexpr std::size_t kMaxCommentBytes = 64 << 10; // one comment, a case's source or comment
+inline constexpr std::size_t kMaxCaseNameBytes = 256;     // one case name
+inline constexpr std::size_t kMaxShapePoints = 1'000'000; // points of one shape
 inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of one case
 
 // Reads and checks a case file. A file that is unreadable, not a regular file or a pipe, larger
