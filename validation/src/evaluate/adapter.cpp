@@ -373,8 +373,8 @@ struct Pipeline
     Slot& s;
     const std::vector<const PluginTask*>& tasks; // one adapter's, in order
     double timeoutSeconds = 0;
-    std::size_t next = 0;         // the first task not sent
-    std::deque<Sent> inFlight;    // sent, unanswered, in order
+    std::size_t next = 0;      // the first task not sent
+    std::deque<Sent> inFlight; // sent, unanswered, in order
     std::size_t inFlightBytes = 0;
     std::string outgoing;         // request text the pipe has not taken yet
     bool stdinClosed = false;     // EPIPE: only the answers already written are left to read

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <chrono>
-#include <cstddef>
 #include <csignal>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -58,13 +58,13 @@ std::string reap(Process& p, double waitSeconds);
 // the end of gjk-validate); at its end a pending one is taken back and the mask restored.
 class SigpipeBlocked
 {
-public:
+  public:
     SigpipeBlocked();
     ~SigpipeBlocked();
     SigpipeBlocked(const SigpipeBlocked&) = delete;
     SigpipeBlocked& operator=(const SigpipeBlocked&) = delete;
 
-private:
+  private:
     sigset_t old_;
 };
 
