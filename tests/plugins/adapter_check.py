@@ -17,6 +17,16 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            crashes on d3, and its restart fails (it exits in the handshake): d3 and d4 are
            counted as crashed, d4 with the restart's reason, one stderr line for d3 and one for
            the failed start; d1, d2 answered.
+  pipeline A is pipeline.py (the good adapter, watching its stdin), on 2000 cases written into W
+           (pipeline_cases: squares at distances 0.5 + i/256, every 250th and 255th with a
+           2048-point A whose hull is the same unit square, so the same distance, derived as for
+           adapter_cases.json): every answer is its own case's distance (the host pairs the
+           pipelined answers with their cases in order); the adapter saw 64 requests held
+           unanswered at some point and never more, never a request sent while those before it
+           were 32 KiB or more, and at some point fewer than 64 (the byte bound binding). Then
+           crash.py, hang.py and garbage.py on the same cases: they misbehave on case 640
+           (B at x = 4) with up to 63 later requests in flight: that case alone is lost, every
+           other one answered right (the later ones were sent again to the next process).
   bridge   A is gjk2d-adapter-bridge: a two-line script runs it with the shipped gjk2d-box2d.so
            (--so) as box2d-2.4.1-bridge beside box2d-2.4.1 itself, on random and
            rounded cases: every answer (distance, witness points, iterations, refusal) is the
@@ -140,6 +150,63 @@ def restart_fails(a):
     print("adapter_check: crash-once-more: d3 crashed, the restart failed, d4 crashed with it")
 
 
+PIPELINE_CASES = 2000
+
+
+def pipeline_cases(path):
+    """The 2000 cases of the pipeline check, and their distances by name."""
+    square = [[0, 0], [1, 0], [1, 1], [0, 1]]
+    k = [j / 512 for j in range(512)]  # 512 points on each edge of the unit square, in order
+    dense = ([[x, 0] for x in k] + [[1, y] for y in k] + [[1 - x, 1] for x in k] +
+             [[0, 1 - y] for y in k])
+    cases, want = [], {}
+    for i in range(PIPELINE_CASES):
+        d = 0.5 + i / 256  # B's edge x = 1 + d faces A's edge x = 1: the distance is d, exactly
+        name = "pipeline/{:04d}".format(i)
+        a = dense if i % 250 in (125, 130) else square
+        cases.append({"name": name, "a": {"points": a},
+                      "b": {"points": square, "transform": {"p": [1 + d, 0.0], "q": [1.0, 0.0]}}})
+        want[name] = d
+    with open(path, "w") as f:
+        json.dump({"format": "gjk-cases/1", "cases": cases}, f)
+    return want
+
+
+def pipeline_window(a):
+    """The window the pipeline adapter saw: the host never exceeded it, and filled it."""
+    snaps = [tuple(map(int, l.split())) for l in open(os.path.join(a.work, "window"))]
+    if len(snaps) != 8 or max(n for n, _ in snaps) != 64 or min(n for n, _ in snaps) >= 64:
+        fail("expected 8 snapshots, one with 64 requests held, one with fewer: {}".format(snaps))
+    if any(before >= 32 * 1024 for _, before in snaps):
+        fail("a request was sent while 32 KiB or more were unanswered: {}".format(snaps))
+    return snaps
+
+
+def pipeline(a):
+    a.cases = os.path.join(a.work, "pipeline_cases.json")
+    want = pipeline_cases(a.cases)
+    here = os.path.dirname(a.adapter)
+    for kind in ["pipeline", "crash", "hang", "garbage"]:
+        a.adapter = os.path.join(here, kind + ".py")
+        p, report, lines, _ = campaign(a, ["--no-timing"])
+        got = answers(lines, "toy-" + kind)
+        status = {"crash": "crashed", "hang": "hung", "garbage": "error"}.get(kind)
+        named = [l for l in p.stderr.splitlines() if "case 'pipeline/" in l]
+        if status and (got["pipeline/0640"].get("plugin_status") != status or len(named) != 1 or
+                       "pipeline/0640" not in named[0]):
+            fail("{}: expected case 640 {} and one stderr line naming it: {}\n{}".format(
+                kind, status, got["pipeline/0640"], p.stderr))
+        lost = {n for n, v in got.items() if v.get("distance") != want[n]}
+        expect = set() if kind == "pipeline" else {"pipeline/0640"}
+        if len(got) != PIPELINE_CASES or lost != expect:
+            fail("{}: cases not answered with their distance: {} (expected {})".format(
+                kind, {n: got.get(n) for n in sorted(lost)[:5]}, expect))
+        if kind == "pipeline":
+            snaps = pipeline_window(a)
+    print("adapter_check: pipeline: 2000 answers in order, window {} (requests, bytes before the "
+          "last); crash, hang, garbage lose case 640 alone".format(snaps))
+
+
 def bridge(a):
     wrapper = os.path.join(a.work, "box2d-bridge")
     with open(wrapper, "w") as f:
@@ -180,7 +247,7 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "bridge", "shared"])
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared"])
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -189,7 +256,8 @@ def main():
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
-    {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge}.get(
+    {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
+     "pipeline": pipeline}.get(
         a.kind, contained)(a)
 
 

@@ -1,15 +1,17 @@
 """Test adapters of the executable-adapter protocol, version 1 (tests/plugins/CMakeLists.txt,
 docs/validate-your-gjk.md "Executable adapters (any language)"): good.py, crash.py, hang.py,
-garbage.py, version.py, bad-description.py and crash-once-more.py each call main() with their
-behaviour.
+garbage.py, version.py, bad-description.py, crash-once-more.py and pipeline.py each call main()
+with their behaviour.
 
 The distance is brute force, exact enough for the test's cases: the smallest distance between a
 vertex of one shape and an edge of the other (right for shapes that do not overlap; the tests'
 cases are separated squares), less the radii. The misbehaving adapters answer like the good one
 but on the case whose shape B is at x = 4 (the third case of adapter_cases.json): crash exits by
-SIGSEGV, hang sleeps an hour, garbage answers a line that is no answer.
+SIGSEGV, hang sleeps an hour, garbage answers a line that is no answer. pipeline answers like
+good but reads its stdin itself to see the requests the host sent ahead (serve_watching).
 """
 import os
+import select
 import signal
 import sys
 import time
@@ -99,6 +101,44 @@ def start_number():
     return n
 
 
+def wait_for_window(fd, buf):
+    """Reads what the host sends without answering: until 64 requests are held and 0.1 s pass
+    with nothing more (a 65th would come within it), or 0.3 s of quiet before that (a window
+    that the 32 KiB bound closed earlier). The host sends nothing more until an answer comes."""
+    while True:
+        quiet = 0.1 if buf.count(b"\n") >= 64 else 0.3
+        if not select.select([fd], [], [], quiet)[0]:
+            return buf
+        chunk = os.read(fd, 1 << 16)
+        if not chunk:
+            return buf
+        buf += chunk
+
+
+def serve_watching():
+    """pipeline: at its 1st, 101st, 501st, ... distance request (every 500th and 100 after it),
+    waits for the host's window to fill and appends to $TOY_STATE_DIR/window one line: the
+    requests held unanswered, and the bytes of all but the last of them (the host sends a
+    request while those are under 32 KiB)."""
+    fd, buf, seen = sys.stdin.fileno(), b"", 0
+    log = open(os.path.join(os.environ["TOY_STATE_DIR"], "window"), "a")
+    while True:
+        while b"\n" not in buf:
+            chunk = os.read(fd, 1 << 16)
+            if not chunk:
+                return
+            buf += chunk
+        if seen % 500 in (0, 100):
+            buf = wait_for_window(fd, buf)
+            held = [len(x) + 1 for x in buf.split(b"\n")[:-1]]
+            log.write("{} {}\n".format(len(held), sum(held[:-1])))
+            log.flush()
+        line, buf = buf.split(b"\n", 1)
+        seen += 1
+        tok = line.decode().split()
+        say(timed(tok) if tok[0] == "time" else answer(tok, "pipeline"))
+
+
 def main(behaviour):
     if sys.stdin.readline().split() != ["gjk2d-adapter", "1"]:
         sys.exit(1)
@@ -113,6 +153,8 @@ def main(behaviour):
     say("implementation toy-{} {} radius 0 vertex-edge brute force".format(behaviour, scalar))
     say("ready")
     print("toy adapter {}: ready".format(behaviour), file=sys.stderr)  # into the plugin's log
+    if behaviour == "pipeline":
+        return serve_watching()
     for line in sys.stdin:
         tok = line.split()
         if tok and tok[0] == "distance":

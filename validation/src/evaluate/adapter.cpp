@@ -1,46 +1,30 @@
 #include "evaluate/adapter.hpp"
 
+#include "evaluate/adapter_process.hpp"
 #include "evaluate/evaluate.hpp"
 #include "evaluate/plugins.hpp"
 
 #include <fmt/format.h>
 
-#include <fcntl.h>
 #include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 namespace gjkval
 {
 namespace
 {
-using Clock = std::chrono::steady_clock;
-
-Clock::time_point deadlineIn(double seconds)
-{
-    return Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>(std::min(seconds, 1e7)));
-}
-
-// Milliseconds left until `deadline` for poll(): 0 when it has passed.
-int msLeft(Clock::time_point deadline)
-{
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-    return int(std::clamp<long long>(left + 1, 0, INT_MAX));
-}
+using namespace adapterio;
 
 // ---- Text: tokens separated by one or more spaces, strict numbers ----
 
@@ -104,174 +88,6 @@ bool parseInteger(const std::string& t, long long lo, long long hi, long long& x
 std::string quoted80(const std::string& line)
 {
     return fmt::format("\"{}\"", line.substr(0, 80));
-}
-
-// ---- The process: stdin and stdout through pipes, stderr to the plugin's log ----
-
-enum class Io
-{
-    Ok,
-    Gone,    // the adapter closed its end (it exited, or is about to)
-    Timeout, // nothing within the limit
-};
-
-struct Process
-{
-    int pid = -1;
-    int toAdapter = -1, fromAdapter = -1;
-    std::string buffer; // read, not yet taken as lines
-};
-
-// A failed start or handshake: what went wrong, as the one line says it.
-struct AdapterFailure : std::runtime_error
-{
-    using std::runtime_error::runtime_error;
-};
-
-// In the child: stdin and stdout the pipes, stderr where the plugin's log is, signals as a fresh
-// program expects them; then the adapter itself (exit 127 when it cannot be executed).
-[[noreturn]] void execAdapter(const std::string& path, const PluginImpl* plugin, int in, int out,
-                              int err)
-{
-    firstOutputRoute(plugin);
-    if (::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
-        (err >= 0 && ::dup2(err, STDERR_FILENO) < 0))
-        ::_exit(127);
-    sigset_t none;
-    sigemptyset(&none);
-    ::sigprocmask(SIG_SETMASK, &none, nullptr);
-    for (const int sig : {SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGINT, SIGTERM})
-        ::signal(sig, SIG_DFL);
-    ::execl(path.c_str(), path.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127); // as a shell says "cannot execute": howEnded() adds the hint
-}
-
-// `err` >= 0: the adapter's stderr goes there rather than to the plugin's log.
-Process startProcess(const std::string& path, const PluginImpl* plugin, int err = -1)
-{
-    int in[2], out[2];
-    if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0)
-        throw std::runtime_error(
-            fmt::format("adapter {}: pipe failed: {}", path, std::strerror(errno)));
-    std::fflush(stdout);
-    std::fflush(stderr);
-    const pid_t pid = ::fork();
-    if (pid < 0)
-        throw std::runtime_error(
-            fmt::format("adapter {}: fork failed: {}", path, std::strerror(errno)));
-    if (pid == 0)
-        execAdapter(path, plugin, in[0], out[1], err);
-    ::close(in[0]);
-    ::close(out[1]);
-    ::fcntl(in[1], F_SETFL, ::fcntl(in[1], F_GETFL) | O_NONBLOCK); // a write never blocks
-    Process p;
-    p.pid = pid;
-    p.toAdapter = in[1];
-    p.fromAdapter = out[0];
-    return p;
-}
-
-// How the process ended, once it has: "exit code N", "signal N (name)".
-std::string howEnded(int status)
-{
-    if (WIFSIGNALED(status))
-        return fmt::format("signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)));
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return fmt::format("exit code {}{}", code,
-                       code == 127 ? ", also that of a file that cannot be executed: is its #! "
-                                     "interpreter installed?"
-                                   : "");
-}
-
-// Ends the process: its pipes closed, up to waitSeconds for it to exit, then SIGKILL. How it
-// ended ("exit code 0" for a clean exit).
-std::string reap(Process& p, double waitSeconds)
-{
-    if (p.pid < 0)
-        return {};
-    ::close(p.toAdapter);
-    ::close(p.fromAdapter);
-    const auto deadline = deadlineIn(waitSeconds);
-    int status = 0;
-    pid_t r = 0;
-    while ((r = ::waitpid(p.pid, &status, WNOHANG)) == 0 && Clock::now() < deadline)
-        ::usleep(2000);
-    if (r == 0)
-    {
-        ::kill(p.pid, SIGKILL);
-        while (::waitpid(p.pid, &status, 0) < 0 && errno == EINTR)
-        {
-        }
-    }
-    p = Process{};
-    return howEnded(status);
-}
-
-// Writes all of `text` by the deadline. SIGPIPE is blocked meanwhile (a gone adapter is EPIPE,
-// not the end of gjk-validate) and a pending one taken back.
-Io writeText(Process& p, const std::string& text, Clock::time_point deadline)
-{
-    sigset_t pipeSet, old;
-    sigemptyset(&pipeSet);
-    sigaddset(&pipeSet, SIGPIPE);
-    ::pthread_sigmask(SIG_BLOCK, &pipeSet, &old);
-    Io result = Io::Ok;
-    for (std::size_t done = 0; done < text.size() && result == Io::Ok;)
-    {
-        const ssize_t n = ::write(p.toAdapter, text.data() + done, text.size() - done);
-        if (n > 0)
-            done += std::size_t(n);
-        else if (n < 0 && errno == EPIPE)
-            result = Io::Gone;
-        else if (n < 0 && errno != EAGAIN && errno != EINTR)
-            result = Io::Gone;
-        else if (n < 0 && errno == EAGAIN)
-        {
-            pollfd pfd{p.toAdapter, POLLOUT, 0};
-            if (::poll(&pfd, 1, msLeft(deadline)) == 0)
-                result = Io::Timeout;
-        }
-    }
-    const timespec zero{0, 0};
-    while (::sigtimedwait(&pipeSet, nullptr, &zero) > 0)
-    {
-    }
-    ::pthread_sigmask(SIG_SETMASK, &old, nullptr);
-    return result;
-}
-
-// The next non-empty line (its "\n" and a "\r" before it removed), by the deadline. A line
-// longer than kMaxLine is cut there (it is no answer the host asks for: malformed).
-Io readLine(Process& p, std::string& line, Clock::time_point deadline)
-{
-    constexpr std::size_t kMaxLine = 1 << 20;
-    for (;;)
-    {
-        const std::size_t nl = p.buffer.find('\n');
-        if (nl != std::string::npos || p.buffer.size() >= kMaxLine)
-        {
-            line = p.buffer.substr(0, std::min(nl, kMaxLine));
-            p.buffer.erase(0, nl == std::string::npos ? kMaxLine : nl + 1);
-            if (!line.empty() && line.back() == '\r')
-                line.pop_back();
-            if (line.empty())
-                continue;
-            return Io::Ok;
-        }
-        pollfd pfd{p.fromAdapter, POLLIN, 0};
-        const int r = ::poll(&pfd, 1, msLeft(deadline));
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r == 0)
-            return Io::Timeout;
-        char buf[65536];
-        const ssize_t n = ::read(p.fromAdapter, buf, sizeof buf);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0)
-            return Io::Gone;
-        p.buffer.append(buf, std::size_t(n));
-    }
 }
 
 // ---- The handshake ----
@@ -535,34 +351,162 @@ void reportLoss(const PluginTask& t, const std::string& what)
                  t.caseName ? t.caseName->c_str() : "?", what.c_str());
 }
 
-// One task through its adapter's process.
-void answerOne(const PluginTask& t, double timeoutSeconds)
+// ---- The `distance` requests of one adapter, pipelined ----
+// Up to kAdapterWindowRequests requests are unanswered at a time; the answers come in order, so
+// the first unanswered request (the head) is the one the adapter is on. The host never waits on a
+// write: it polls the adapter's stdout (answers) and stdin (requests not yet taken) together.
+
+struct Sent
 {
-    Slot& s = pool().slots[t.v->plugin->path];
-    if (!ensureRunning(s, *t.v->plugin, timeoutSeconds))
+    std::size_t task = 0; // index into Pipeline::tasks
+    std::uint64_t id = 0;
+    std::size_t bytes = 0;
+    Clock::time_point at; // when it was handed to the pipe
+};
+
+struct Pipeline
+{
+    Pipeline(Slot& slot, const std::vector<const PluginTask*>& list, double seconds)
+        : s(slot), tasks(list), timeoutSeconds(seconds)
     {
-        t.out->status = PluginStatus::Crashed;
-        t.out->detail = s.failed;
+    }
+    Slot& s;
+    const std::vector<const PluginTask*>& tasks; // one adapter's, in order
+    double timeoutSeconds = 0;
+    std::size_t next = 0;      // the first task not sent
+    std::deque<Sent> inFlight; // sent, unanswered, in order
+    std::size_t inFlightBytes = 0;
+    std::string outgoing;         // request text the pipe has not taken yet
+    bool stdinClosed = false;     // EPIPE: only the answers already written are left to read
+    Clock::time_point lastAnswer; // or the process's start
+};
+
+// Requests join the window while fewer than kAdapterWindowRequests are unanswered and their text
+// is under kAdapterWindowBytes (one request always goes, however long).
+void fillWindow(Pipeline& q)
+{
+    while (q.next < q.tasks.size() && q.inFlight.size() < kAdapterWindowRequests &&
+           q.inFlightBytes < kAdapterWindowBytes)
+    {
+        const PluginTask& t = *q.tasks[q.next];
+        const std::uint64_t id = q.s.nextId++;
+        const std::size_t before = q.outgoing.size();
+        fmt::format_to(std::back_inserter(q.outgoing), "distance {} {} {}\n", id, t.v->name,
+                       adapterCaseText(*t.v, *t.p));
+        const std::size_t bytes = q.outgoing.size() - before;
+        q.inFlight.push_back({q.next++, id, bytes, Clock::now()});
+        q.inFlightBytes += bytes;
+    }
+}
+
+// Hands the pipe what it takes now.
+void writeOutgoing(Pipeline& q)
+{
+    while (!q.outgoing.empty() && !q.stdinClosed)
+    {
+        const long n = writeSome(q.s.proc, q.outgoing.data(), q.outgoing.size());
+        if (n < 0)
+            q.stdinClosed = true;
+        if (n <= 0)
+            return;
+        q.outgoing.erase(0, std::size_t(n));
+    }
+}
+
+// The head is lost (its status and detail given; the process already ended): one stderr line,
+// and every later request in flight goes again, to the next process.
+void loseHead(Pipeline& q, PluginStatus status, const std::string& detail, const char* more = "")
+{
+    const PluginTask& t = *q.tasks[q.inFlight.front().task];
+    *t.out = ExternalAnswer{};
+    t.out->status = status;
+    t.out->detail = detail;
+    reportLoss(t, detail + more);
+    q.next = q.inFlight.front().task + 1;
+    q.inFlight.clear();
+    q.inFlightBytes = 0;
+    q.outgoing.clear();
+}
+
+// The whole lines read so far, each the answer to the head; false when one is malformed (the
+// head is then an Error and the process is ended: the stream cannot be trusted).
+bool takeAnswers(Pipeline& q)
+{
+    std::string line;
+    while (!q.inFlight.empty() && takeLine(q.s.proc, line))
+    {
+        const Sent head = q.inFlight.front();
+        if (!distanceAnswer(line, head.id, *q.tasks[head.task]->out))
+        {
+            reap(q.s.proc, 0);
+            loseHead(q, PluginStatus::Error, "malformed answer: " + quoted80(line),
+                     ", the adapter is started again");
+            return false;
+        }
+        q.inFlight.pop_front();
+        q.inFlightBytes -= head.bytes;
+        q.lastAnswer = Clock::now();
+    }
+    return true;
+}
+
+// One wait on both pipes, and what came of it: answers taken, requests written, or the head lost
+// (Crashed when the adapter's stdout ends, Hung when the head's limit passes).
+void step(Pipeline& q)
+{
+    const Clock::time_point deadline =
+        std::max(q.lastAnswer, q.inFlight.front().at) + durationOf(q.timeoutSeconds);
+    const bool writing = !q.outgoing.empty() && !q.stdinClosed;
+    pollfd fds[2] = {{q.s.proc.fromAdapter, POLLIN, 0},
+                     {writing ? q.s.proc.toAdapter : -1, POLLOUT, 0}};
+    const int r = ::poll(fds, 2, msLeft(deadline));
+    if (r < 0 && errno != EINTR)
+        throw std::runtime_error(fmt::format("poll failed: {}", std::strerror(errno)));
+    if (r == 0 && Clock::now() >= deadline)
+    {
+        reap(q.s.proc, 0);
+        loseHead(q, PluginStatus::Hung,
+                 fmt::format("no answer within {} s, killed", q.timeoutSeconds));
         return;
     }
-    const std::uint64_t id = s.nextId++;
-    std::string request = fmt::format("distance {} {} ", id, t.v->name);
-    request += adapterCaseText(*t.v, *t.p) + "\n";
-    const Exchange e = exchange(s, request, timeoutSeconds);
-    if (e.io != Io::Ok)
-    {
-        t.out->status = e.io == Io::Timeout ? PluginStatus::Hung : PluginStatus::Crashed;
-        t.out->detail = e.how;
-        reportLoss(t, e.how);
+    if (r > 0 && fds[1].revents != 0)
+        writeOutgoing(q);
+    if (r <= 0 || fds[0].revents == 0)
         return;
-    }
-    if (!distanceAnswer(e.line, id, *t.out))
+    if (readSome(q.s.proc) == Io::Ok)
+        takeAnswers(q);
+    else
+        loseHead(q, PluginStatus::Crashed,
+                 "the adapter ended before answering (" + reap(q.s.proc, kAdapterCloseSeconds) +
+                     ")");
+}
+
+// One adapter's tasks, in order, through its process (started again after each loss).
+void answerPipelined(Slot& s, const std::vector<const PluginTask*>& tasks, double timeoutSeconds)
+{
+    Pipeline q(s, tasks, timeoutSeconds);
+    while (q.next < tasks.size() || !q.inFlight.empty())
     {
-        *t.out = ExternalAnswer{};
-        t.out->status = PluginStatus::Error;
-        t.out->detail = "malformed answer: " + quoted80(e.line);
-        reportLoss(t, t.out->detail + ", the adapter is started again");
-        reap(s.proc, 0); // the stream cannot be trusted
+        const bool starting = s.proc.pid < 0;
+        if (!ensureRunning(s, *tasks.front()->v->plugin, timeoutSeconds))
+        {
+            const std::size_t from = q.inFlight.empty() ? q.next : q.inFlight.front().task;
+            for (std::size_t i = from; i < tasks.size(); ++i)
+            {
+                *tasks[i]->out = ExternalAnswer{};
+                tasks[i]->out->status = PluginStatus::Crashed;
+                tasks[i]->out->detail = s.failed;
+            }
+            return;
+        }
+        if (starting)
+        {
+            q.lastAnswer = Clock::now();
+            q.stdinClosed = false;
+        }
+        fillWindow(q);
+        writeOutgoing(q);
+        step(q);
     }
 }
 
@@ -632,8 +576,18 @@ std::string adapterCaseText(const VariantInfo& v, const PreparedCase& p)
 
 void answerThroughAdapters(const std::vector<PluginTask>& tasks, double timeoutSeconds)
 {
+    std::vector<std::pair<std::string, std::vector<const PluginTask*>>> byAdapter; // first seen
     for (const PluginTask& t : tasks)
-        answerOne(t, timeoutSeconds);
+    {
+        auto it = std::find_if(byAdapter.begin(), byAdapter.end(),
+                               [&](const auto& a) { return a.first == t.v->plugin->path; });
+        if (it == byAdapter.end())
+            it = byAdapter.insert(byAdapter.end(), {t.v->plugin->path, {}});
+        it->second.push_back(&t);
+    }
+    const SigpipeBlocked quiet;
+    for (const auto& [path, list] : byAdapter)
+        answerPipelined(pool().slots[path], list, timeoutSeconds);
 }
 
 double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,

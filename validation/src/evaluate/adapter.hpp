@@ -25,6 +25,16 @@ inline constexpr int kAdapterProtocolVersion = 1;
 inline constexpr double kAdapterHandshakeSeconds = 10;
 // At the end, an adapter whose stdin was closed has this long to exit before SIGKILL.
 inline constexpr double kAdapterCloseSeconds = 2;
+// The `distance` requests are pipelined: a request is sent while fewer than
+// kAdapterWindowRequests are unanswered and their text is under kAdapterWindowBytes (one request
+// always goes). A round trip through the pipes costs tens to hundreds of microseconds (Node,
+// Python), a query of planck.js 1 or 2: waiting for each answer before the next request would
+// make the pipe the campaign's cost. The bounds keep what is unanswered well inside a Linux pipe's
+// 64 KiB buffer in both directions (64 answers of about 100 bytes), so an adapter that reads one
+// request, writes its answer and reads the next never waits on its writes, and bound what a loss
+// re-sends (the requests after the lost one, to the next process).
+inline constexpr std::size_t kAdapterWindowRequests = 64;
+inline constexpr std::size_t kAdapterWindowBytes = 32 * 1024;
 
 // One `implementation` line of the handshake.
 struct AdapterImplementation
@@ -55,10 +65,13 @@ AdapterDescription describeAdapter(const std::string& path, const std::string& c
 
 // answerContained() for the tasks of executable adapters (every task's variant has
 // plugin->kind == PluginKind::Executable): one `distance` request each, through the adapter's
-// process (started at its first task, kept for the run). A crash (Crashed), no answer within
-// timeoutSeconds (Hung) or a malformed answer (Error, "malformed answer: ...") costs that task,
-// with one line on stderr naming the adapter and the case, and the process is started again for
-// the next task; when that start fails, every later task of the adapter is Crashed.
+// process (started at its first task, kept for the run), pipelined (kAdapterWindowRequests). The
+// answers come in order, so the first unanswered request is the one the adapter is on: a crash
+// (Crashed), no answer within timeoutSeconds of the previous answer, or of that request's
+// sending if later (Hung), or a malformed answer (Error, "malformed answer: ...") costs that
+// task, with one line on stderr naming the adapter and the case; the process is started again
+// and the later tasks it was sent go again; when that start fails, every later task of the
+// adapter is Crashed.
 void answerThroughAdapters(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
 // The "A ... B ..." part of a request for case p, in v's scalar type: each shape as radius,
