@@ -19,15 +19,19 @@ struct ShippedPeer
     const char* needs;      // what building it needs: `list` says so when it is not built
 };
 
-// inDefaultCampaign keeps scripts/run.sh's campaign under about 60 s on 2 cores: measured ...
-// (not yet: Box2D 2.4.1's adapter stays in it as it was before issue 32; every other peer is off
-// until its cost on that campaign is measured, and flipped here with the figure and its command).
+// inDefaultCampaign: the peers that keep scripts/run.sh's campaign (`gjk-validate run`, 214,000
+// cases, timing on) under about 60 s on the 2-core development machine. Measured at 15ef9ad, one
+// run each, alternating, `time gjk-validate run [--plugin FILE]... --out DIR` (context.elapsed_s
+// total): Box2D 2.4.1 alone 37.9 s (the campaign as it was); adding Box2D v3 +7.5 s, Bullet's two
+// modules +5.8 s, FCL's two solvers +14.6 s, planck.js +18.5 s (12.6 s of it timing through the
+// pipe), GEOS +164 s (geos-3.11.1 answers in about 250 us, most of it shapely's Python layer). So
+// Box2D 2.4.1, Box2D v3 and Bullet join (about 51 s); FCL, planck.js and GEOS run under --peers.
 inline constexpr ShippedPeer kShippedPeers[] = {
     {"gjk2d-box2d.so", true, "Debian libbox2d-dev"},
-    {"gjk2d-box2d3.so", false, "a Box2D v3 source tree named by -DGJK2D_BOX2D3_SOURCE=..."},
+    {"gjk2d-box2d3.so", true, "a Box2D v3 source tree named by -DGJK2D_BOX2D3_SOURCE=..."},
     {"gjk2d-fcl.so", false, "Debian libfcl-dev"},
-    {"gjk2d-bullet-float.so", false, "Debian libbullet-dev"},
-    {"gjk2d-bullet-double.so", false, "Debian libbullet-dev"},
+    {"gjk2d-bullet-float.so", true, "Debian libbullet-dev"},
+    {"gjk2d-bullet-double.so", true, "Debian libbullet-dev"},
     {"gjk2d-planck", false, "node and npm, and planck installed by scripts/setup.sh"},
     {"gjk2d-geos", false, "Debian python3-shapely"},
 };

@@ -397,11 +397,13 @@ struct AdapterLost // a `time` request without its answer: the variant gets no n
 TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg, double pluginTimeoutSeconds)
 {
+    const std::vector<const PreparedCase*> sample(
+        cases.begin(), cases.begin() + std::ptrdiff_t(std::min(cases.size(), kAdapterTimingCases)));
     TimingResult res;
-    res.cases = cases.size();
-    if (cases.empty())
+    res.cases = sample.size();
+    if (sample.empty())
         return res;
-    const AdapterChunks chunks = adapterChunks(cases, v);
+    const AdapterChunks chunks = adapterChunks(sample, v);
     const double limit = passLimitSeconds(cfg, pluginTimeoutSeconds);
     // A pass: every chunk's time, K = reps; only the adapter's own timed loops are summed.
     const auto pass = [&](int reps)
@@ -419,7 +421,7 @@ TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const Va
     };
     try
     {
-        return medianOfPasses(cases.size(), cfg, pass);
+        return medianOfPasses(sample.size(), cfg, pass);
     }
     catch (const AdapterLost&)
     {
