@@ -739,7 +739,9 @@
       h('span', {class: 'muted small'}, 'worst error / bound per family; click a cell for the family\'s detail')));
     if (!fams.length || !names.length) { wrap.appendChild(h('p', {class: 'note'}, 'No families or variants: nothing to map.')); return wrap; }
     var nJudged = names.filter(isJudged).length, gap = nJudged && nJudged < names.length ? 8 : 0;
-    var cw = 24, ch = 16, labelW = 12 + Math.max.apply(null, fams.map(function (f) { return textWidth(f.name, 12); }).concat([60]));
+    // Columns 24 px wide up to 18 variants; narrower beyond (to 16 px), so that the grid of the
+    // default campaign's 22 variants (issue 32's peers) keeps the speed plot beside it.
+    var cw = Math.max(16, Math.min(24, Math.floor(432 / names.length))), ch = 16, labelW = 12 + Math.max.apply(null, fams.map(function (f) { return textWidth(f.name, 12); }).concat([60]));
     var headH = 14 + Math.max.apply(null, names.map(function (n) { return textWidth(n, 11.5); })) * Math.sin(Math.PI / 3);
     var x0 = labelW, y0 = headH, gridW = names.length * cw + gap, gridH = fams.length * ch;
     // The rotated names lean right: room for the last ones beyond the grid.
