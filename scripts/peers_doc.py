@@ -61,7 +61,13 @@ def group_of(family):
 
 def merge_hist(hists):
     """max and p99 of the families' histograms joined (the rule of Hist::percentile in
-    validation/src/statistics/stats.cpp: the upper edge of the bin holding the 99th percentile)."""
+    validation/src/statistics/stats.cpp: the upper edge of the bin holding the 99th percentile),
+    the p99 no larger than the max (the max is exact, the bin edge only bounds the p99)."""
+    top, p99 = merge_hist_edges(hists)
+    return top, p99 if p99 is None or top is None else min(p99, top)
+
+
+def merge_hist_edges(hists):
     hists = [h for h in hists if h and h.get("count", 0) > 0]
     if not hists:
         return None, None
@@ -136,7 +142,7 @@ def table(report, peers, command):
             "or not as far apart as the distance); errors, crashes and hangs of the plugin; "
             "rel. error = |d - d_exact| / d_exact (separated cases); error / bound = |d - "
             "d_exact| over gjk2d's a-priori bound in the variant's precision (docs/error-bound.md; "
-            "over 1 is a failure for gjk2d); p99 values are histogram bin upper edges; ns/query: "
+            "over 1 is a failure for gjk2d); p99 values are histogram bin upper edges, at most the largest; ns/query: "
             "the families' single-threaded timings, weighted by cases (- when not timed)."]
     return out
 
