@@ -104,4 +104,13 @@ inline Shape unitSquare(double px = 0, double py = 0, double c = 1, double s = 0
     return Shape{{0, 0, 1, 0, 1, 1, 0, 1}, 0, px, py, c, s};
 }
 
+// Leaves `byte` in the stack below the caller, where the adapter's locals will be (the tests of
+// answers that must not depend on memory left by earlier calls).
+[[gnu::noinline]] inline void dirtyStack(unsigned char byte)
+{
+    volatile unsigned char junk[1 << 16];
+    for (auto& b : junk)
+        b = byte;
+}
+
 } // namespace peers

@@ -164,19 +164,6 @@ TEMPLATE_TEST_CASE("random/192: float's default equal-vertex threshold stops 7.8
         CHECK(r.distance == within(0.015106398667830584, kPolygon<double>));
 }
 
-namespace
-{
-
-// Leaves `byte` in the stack below the caller, where the adapter's locals will be.
-[[gnu::noinline]] void dirtyStack(unsigned char byte)
-{
-    volatile unsigned char junk[1 << 16];
-    for (auto& b : junk)
-        b = byte;
-}
-
-} // namespace
-
 // hard/extreme-scale/217-random-1e40 (gjk-validate generate --family hard/extreme-scale): Bullet's
 // GJK takes a degenerate path there and reads btVoronoiSimplexSolver members its constructor leaves
 // unwritten (valgrind). The adapter builds the solver in zeroed storage, so the answer is the same
@@ -199,9 +186,9 @@ TEST_CASE("the answer does not depend on memory left by earlier calls (hard/extr
                          -3.741283687121122e+39,
                          -0.9882403457151441,
                          -0.15290853181170902};
-    dirtyStack(0xff); // every double a NaN
+    peers::dirtyStack(0xff); // every double a NaN
     const peers::Answer first = bullet<double>().distance(a, b);
-    dirtyStack(0x00);
+    peers::dirtyStack(0x00);
     const peers::Answer second = bullet<double>().distance(a, b);
     REQUIRE(first.status == second.status);
     // Field by field, bit for bit (NaN == NaN): the struct's padding after `status` is not part of

@@ -174,19 +174,6 @@ TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2"
     }
 }
 
-namespace
-{
-
-// Leaves `byte` in the stack below the caller, where the adapter's locals will be.
-[[gnu::noinline]] void dirtyStack(unsigned char byte)
-{
-    volatile unsigned char junk[1 << 16];
-    for (auto& b : junk)
-        b = byte;
-}
-
-} // namespace
-
 // hard/extreme-scale/48-gap-1e180 (gjk-validate generate --family hard/extreme-scale; exact
 // distance 1.46e172): GST_INDEP returns without writing its DistanceResult, min_distance stays at
 // its initial numeric max and the nearest points at whatever the memory held. The adapter presets
@@ -214,7 +201,7 @@ TEST_CASE("GST_INDEP leaves a huge case unanswered: numeric max, NaN points, in 
                          0.029621333610031296};
     for (unsigned char byte : {0x00, 0x3f})
     {
-        dirtyStack(byte);
+        peers::dirtyStack(byte);
         const peers::Answer r = indep().distance(a, b);
         REQUIRE(r.status == GJK2D_STATUS_OK);
         CHECK(r.distance == std::numeric_limits<double>::max());

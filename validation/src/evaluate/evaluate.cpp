@@ -413,6 +413,20 @@ void classifyAnswer(VariantOutcome& v, bool truthZero)
 }
 } // namespace
 
+namespace
+{
+// Whether a judged answer fails: the one rule, for judge() and for acceptTwoCommonPoints(). Cases
+// GJK flags out of range are not judged (docs/error-bound.md, assumptions); a certified interval
+// that misses the truth, or a correctly rounded distance that is not the exact side's, always
+// fails.
+bool failedAnswer(const VariantOutcome& v)
+{
+    return (!v.outOfRange &&
+            (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit || v.beyondBound)) ||
+           (v.certified && !v.intervalContains) || v.bitMismatch;
+}
+} // namespace
+
 void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
 {
     v.truth = truth.distance;
@@ -429,19 +443,12 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
     // that enclosure.
     v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
     v.witness = v.witnessRatio = kNaN;
-    // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a
-    // certified interval that misses the truth always fails.
-    v.failed = (!v.outOfRange &&
-                (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit || v.beyondBound)) ||
-               (v.certified && !v.intervalContains);
     // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
     // case (out of range ones too: the exact completion answers them).
     if (zeroTolerance)
-    {
         v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) !=
                         std::bit_cast<std::uint64_t>(truth.distance);
-        v.failed = v.failed || v.bitMismatch;
-    }
+    v.failed = failedAnswer(v);
 }
 
 void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
@@ -574,8 +581,7 @@ void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
         return;
     v.witnessGap = gap;
     v.invalid = Invalid::None;
-    v.failed = (!v.outOfRange && (v.nonfinite || v.iterationLimit || v.beyondBound)) ||
-               (v.certified && !v.intervalContains) || v.bitMismatch;
+    v.failed = failedAnswer(v);
 }
 
 void judgeWitnesses(VariantOutcome& v, double wa, double wb)
