@@ -105,16 +105,19 @@ template <class T> py::dict arraysOf(const std::vector<gjk::DistanceOutput<T>>& 
     Array<std::int32_t> iterations(n);
     Array<std::uint8_t> stop(n);
     Array<double> lower(n), upper(n);
+    T *dist = distance.mutable_data(), *a = pointA.mutable_data(), *b = pointB.mutable_data(),
+      *u = normal.mutable_data();
+    std::int32_t* it = iterations.mutable_data();
+    std::uint8_t* st = stop.mutable_data();
+    double *lo = lower.mutable_data(), *hi = upper.mutable_data();
     for (py::ssize_t i = 0; i < n; ++i)
     {
         const auto& o = out[std::size_t(i)];
-        distance.mutable_at(i) = o.distance;
-        pointA.mutable_at(i, 0) = o.pointA.x, pointA.mutable_at(i, 1) = o.pointA.y;
-        pointB.mutable_at(i, 0) = o.pointB.x, pointB.mutable_at(i, 1) = o.pointB.y;
-        normal.mutable_at(i, 0) = o.normal.x, normal.mutable_at(i, 1) = o.normal.y;
-        iterations.mutable_at(i) = o.iterations;
-        stop.mutable_at(i) = std::uint8_t(o.stop);
-        lower.mutable_at(i) = o.lower, upper.mutable_at(i) = o.upper;
+        dist[i] = o.distance, it[i] = o.iterations, st[i] = std::uint8_t(o.stop);
+        a[2 * i] = o.pointA.x, a[2 * i + 1] = o.pointA.y;
+        b[2 * i] = o.pointB.x, b[2 * i + 1] = o.pointB.y;
+        u[2 * i] = o.normal.x, u[2 * i + 1] = o.normal.y;
+        lo[i] = o.lower, hi[i] = o.upper;
     }
     py::dict d("distance"_a = distance, "point_a"_a = pointA, "point_b"_a = pointB,
                "normal"_a = normal, "iterations"_a = iterations, "stop"_a = stop);

@@ -112,7 +112,7 @@ py::list readCases(const std::string& path)
     for (auto& e : file.entries)
     {
         if (!e.rejected.empty())
-            throw gjkval::InputError(e.rejected);
+            throw gjkval::InputError(e.label + ": " + e.rejected); // as the report names it
         cases.push_back(std::move(e.c));
     }
     return caseList(cases);
