@@ -22,6 +22,8 @@ packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           openmpi-bin libopenmpi-dev dpkg-dev pkgconf libfcl-dev libbullet-dev python3-shapely)
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3 clang clang-format)
+  # The cross-platform check (CTest label cross, docs/gjk.md): cross g++ and qemu-user.
+  packages+=(g++-aarch64-linux-gnu g++-riscv64-linux-gnu g++-s390x-linux-gnu qemu-user)
 fi
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang-14 libclang-rt-14-dev)
