@@ -1,6 +1,9 @@
 // A consumer of gjk/distance.hpp built with the user's flags, not the project's: it hashes every
 // output bit of 40,000 queries so that builds with different compilers and flags can be compared
-// (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_matrix.sh).
+// (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_build.sh), and builds for other
+// platforms too (docs/gjk.md, "The same bits on every platform"; tests/consumer/cross_build.sh):
+// the hash reads every value in little-endian byte order (Hash), so a big-endian s390x prints the
+// x86-64 hashes.
 //
 // Only the library's own arithmetic may differ between builds. Every input is made from integers
 // by at most one floating-point operation (an int converted exactly, or one division of two exact
@@ -14,6 +17,8 @@
 // third; each pair queried cold and then warm from the cold query's cache after B moved. Hashed:
 // distance, witness points, normal, iterations, simplex count, stop reason, range flags, the cache,
 // the certified flag and interval. Output: one line per scalar type and field group, then "all".
+// Then 15,000 correctly rounded double queries (runCorrect), and with -DGJK_HASH_BATCH (and
+// gjk/src/batch.cpp linked) 15,000 batched queries per type (runBatch): one "all" line each.
 //
 // Besides the bits, every build checks what must hold whatever its bits (exit 1 otherwise): with
 // the certified interval [lower, upper] as the truth (it contains the exact distance d*), each
