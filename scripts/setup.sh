@@ -25,6 +25,8 @@ if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3 clang clang-format)
   # The Python package (python/, docs/python.md): built against Debian's /usr/bin/python3.
   packages+=(python3-dev pybind11-dev python3-numpy python3-pytest)
+  # The cross-platform check (CTest label cross, docs/gjk.md): cross g++ and qemu-user.
+  packages+=(g++-aarch64-linux-gnu g++-riscv64-linux-gnu g++-s390x-linux-gnu qemu-user)
 fi
 if [[ "${1:-}" == "--fuzz" ]]; then
   packages+=(clang-14 libclang-rt-14-dev)

@@ -1,6 +1,9 @@
 // A consumer of gjk/distance.hpp built with the user's flags, not the project's: it hashes every
 // output bit of 40,000 queries so that builds with different compilers and flags can be compared
-// (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_matrix.sh).
+// (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_build.sh), and builds for other
+// platforms too (docs/gjk.md, "The same bits on every platform"; tests/consumer/cross_build.sh):
+// the hash reads every value in little-endian byte order (Hash), so a big-endian s390x prints the
+// x86-64 hashes.
 //
 // Only the library's own arithmetic may differ between builds. Every input is made from integers
 // by at most one floating-point operation (an int converted exactly, or one division of two exact
@@ -14,6 +17,8 @@
 // third; each pair queried cold and then warm from the cold query's cache after B moved. Hashed:
 // distance, witness points, normal, iterations, simplex count, stop reason, range flags, the cache,
 // the certified flag and interval. Output: one line per scalar type and field group, then "all".
+// Then 15,000 correctly rounded double queries (runCorrect), and with -DGJK_HASH_BATCH (and
+// gjk/src/batch.cpp linked) 15,000 batched queries per type (runBatch): one "all" line each.
 //
 // Besides the bits, every build checks what must hold whatever its bits (exit 1 otherwise): with
 // the certified interval [lower, upper] as the truth (it contains the exact distance d*), each
@@ -23,29 +28,48 @@
 // `--against FILE` (another build's dump) each interval must intersect that build's: both contain
 // d*. This is how a build whose bits are not promised (Clang -ffp-contract=fast) is still tested.
 #include "gjk/distance.hpp"
+#ifdef GJK_HASH_BATCH
+#include "gjk/batch.hpp"
+#endif
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <random>
+#include <span>
 #include <string_view>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 namespace
 {
 
-struct Hash // FNV-1a, 64 bits
+// FNV-1a, 64 bits, over each value's bytes in little-endian order whatever the platform's order
+// (a big-endian s390x prints the x86-64 hash): a float or double as its IEEE bits, an integer or
+// bool as its two's-complement bytes. On a little-endian machine these are the bytes in memory,
+// so the hashes are those of the memcpy this replaced.
+struct Hash
 {
     std::uint64_t h = 0xcbf29ce484222325ull;
     template <class V> void add(const V& v)
     {
-        unsigned char bytes[sizeof(V)];
-        std::memcpy(bytes, &v, sizeof(V));
-        for (unsigned char b : bytes)
-            h = (h ^ b) * 0x100000001b3ull;
+        static_assert(std::is_arithmetic_v<V> && sizeof(V) <= 8);
+        std::uint64_t bits = 0;
+        if constexpr (std::is_same_v<V, float>)
+            bits = std::bit_cast<std::uint32_t>(v);
+        else if constexpr (std::is_same_v<V, double>)
+            bits = std::bit_cast<std::uint64_t>(v);
+        else
+        {
+            static_assert(std::is_integral_v<V>);
+            bits = std::uint64_t(v); // two's complement (C++20): the low bytes are v's
+        }
+        for (std::size_t i = 0; i < sizeof(V); ++i)
+            h = (h ^ ((bits >> (8 * i)) & 0xff)) * 0x100000001b3ull;
     }
 };
 
@@ -264,6 +288,205 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
     }
 }
 
+// --- The correctly rounded query (Options::correctlyRounded, gjk/correct.hpp), double only ------
+//
+// Its stages differ by platform: the extended stage runs where long double is the x87 80-bit
+// format (x86) and is skipped elsewhere (binary128 on aarch64, riscv64 and s390x), and what no
+// stage decides (CorrectPath::NeedsExact) needs exact arithmetic (GMP), not linked here. So each
+// query runs twice: with this platform's stages, and with the portable ones -- on x86 with the x87
+// precision control lowered to 53 bits, which makes the extended stage step aside
+// (correct::extendedPrecisionOn), elsewhere the same stages again. The portable run is the same
+// computation on every platform: its decided answers (with their path) are hashed, its undecided
+// ones counted. A decided answer is the correctly rounded one, so the two runs' answers must agree
+// wherever both decided (exit 1 otherwise); what only one run decided is printed to stderr. One
+// pair in 25 is two integer boxes in exact contact (box, below): no stage decides exact touching,
+// so the count of undecided queries is not 0 by construction.
+class PortableStages
+{
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+  public:
+    PortableStages()
+    {
+        __asm__ volatile("fnstcw %0" : "=m"(saved) : : "memory");
+        const unsigned short lowered = (saved & ~0x0300) | 0x0200; // precision control 53 bits
+        __asm__ volatile("fldcw %0" : : "m"(lowered) : "memory");
+    }
+    ~PortableStages()
+    {
+        __asm__ volatile("fldcw %0" : : "m"(saved) : "memory");
+    }
+    PortableStages(const PortableStages&) = delete;
+    PortableStages& operator=(const PortableStages&) = delete;
+
+  private:
+    unsigned short saved = 0;
+#endif
+};
+
+// An axis-aligned box [0, w] x [0, h] of integer sides 2 to 9, counter-clockwise from the origin.
+Shape<double> box(Source& src)
+{
+    const double w = double(src.between(2, 9));
+    const double h = double(src.between(2, 9));
+    return {{{0, 0}, {w, 0}, {w, h}, {0, h}}, 0};
+}
+
+void runCorrect(const char* name, std::uint64_t seed, int pairs)
+{
+    Source src(seed);
+    Hash h;
+    int queries = 0, decided = 0, disagree = 0, onlyHere = 0, onlyPortable = 0;
+    int paths[int(gjk::CorrectPath::Exact) + 1] = {}; // this platform's stages
+    for (int i = 0; i < pairs; ++i)
+    {
+        const bool touching = i % 25 == 24;
+        const Shape<double> a = touching ? box(src) : randomShape<double>(src);
+        const Shape<double> b = touching ? box(src) : randomShape<double>(src);
+        gjk::DistanceInput<double> in{{a.points.data(), int(a.points.size()), a.radius},
+                                      {b.points.data(), int(b.points.size()), b.radius},
+                                      randomTransform<double>(src, 2),
+                                      randomTransform<double>(src, 12)};
+        if (touching) // B's left edge on A's right edge, overlapping it by at least 1
+        {
+            const long long ha = (long long)a.points[2].y, hb = (long long)b.points[2].y;
+            in.transformA = {};
+            in.transformB = {};
+            const double dy = double(src.between(1 - hb, ha - 1));
+            in.transformB.p = {a.points[1].x, dy};
+        }
+        gjk::Options o;
+        o.correctlyRounded = true; // any plain options name the features: both directions
+        o.direction = i % 4 == 3 ? gjk::SearchDirection::ClosestPoint
+                                 : gjk::SearchDirection::EdgePerpendicular;
+        gjk::SimplexCache here, portable;
+        for (int pass = 0; pass < 3; ++pass) // cold, warm after B moved, warm repeat
+        {
+            if (pass == 1)
+                in.transformB.p = {
+                    in.transformB.p.x + src.ratio<double>(src.between(-64, 64), 1024),
+                    in.transformB.p.y + src.ratio<double>(src.between(-64, 64), 1024)};
+            const gjk::DistanceOutput<double> outHere = gjk::distance(in, here, o);
+            gjk::DistanceOutput<double> outPortable;
+            {
+                const PortableStages lowered;
+                outPortable = gjk::distance(in, portable, o);
+            }
+            ++queries;
+            ++paths[int(outHere.path)];
+            const bool decidedHere = outHere.path != gjk::CorrectPath::NeedsExact;
+            const bool decidedPortable = outPortable.path != gjk::CorrectPath::NeedsExact;
+            h.add(decidedPortable);
+            if (decidedPortable)
+                h.add(std::uint8_t(outPortable.path)), h.add(outPortable.distance);
+            decided += decidedPortable;
+            onlyHere += decidedHere && !decidedPortable;
+            onlyPortable += decidedPortable && !decidedHere;
+            disagree += decidedHere && decidedPortable &&
+                        std::bit_cast<std::uint64_t>(outHere.distance) !=
+                            std::bit_cast<std::uint64_t>(outPortable.distance);
+        }
+    }
+    std::printf("%s all      %016llx\n", name, (unsigned long long)h.h);
+    std::printf("%s queries %d decided %d undecided %d (portable stages)\n", name, queries, decided,
+                queries - decided);
+    using P = gjk::CorrectPath;
+    std::fprintf(stderr,
+                 "%s this platform's stages: Double %d, Extended %d, DoubleDouble %d, NeedsExact "
+                 "%d; decided only by them %d, only by the portable ones %d\n",
+                 name, paths[int(P::Double)], paths[int(P::Extended)], paths[int(P::DoubleDouble)],
+                 paths[int(P::NeedsExact)], onlyHere, onlyPortable);
+    if (disagree)
+    {
+        std::printf("%s BROKEN: %d decided answers differ between this platform's stages and the "
+                    "portable ones\n",
+                    name, disagree);
+        std::fflush(stdout);
+        std::exit(1);
+    }
+}
+
+#ifdef GJK_HASH_BATCH
+// --- The batch's portable fallback (gjk::distanceBatch, gjk/src/batch.cpp) ----------------------
+//
+// Built with -DGJK_HASH_BATCH and gjk/src/batch.cpp linked (tests/consumer/cross_build.sh; the
+// flag matrix builds the header-only program). The batch's SIMD lanes exist only with GCC on
+// x86-64 (GJK_BATCH_LANES); elsewhere, and with BatchIsa::Scalar anywhere, it is the portable loop
+// over gjk::distance. This runs the pairs with Scalar, hashed, and again with Best (the widest
+// lanes here, the same loop elsewhere), whose outputs and caches batch.hpp promises bit for bit
+// equal: its hash must be the same (exit 1 otherwise). Half the pairs with the reference options,
+// half certified (the lanes end those in the scalar finishQuery); cold, warm after B moved, and a
+// warm repeat.
+template <class T> void runBatch(const char* name, std::uint64_t seed, int pairs)
+{
+    Source src(seed);
+    std::vector<Shape<T>> shapes;
+    std::vector<gjk::Transform<T>> transforms;
+    std::vector<gjk::Vec2<T>> moves; // B's move before the second pass
+    for (int i = 0; i < pairs; ++i)
+    {
+        shapes.push_back(randomShape<T>(src));
+        shapes.push_back(randomShape<T>(src));
+        transforms.push_back(randomTransform<T>(src, 2));
+        transforms.push_back(randomTransform<T>(src, 12));
+        const T dx = src.ratio<T>(src.between(-64, 64), 1024);
+        const T dy = src.ratio<T>(src.between(-64, 64), 1024);
+        moves.push_back({dx, dy});
+    }
+    const std::size_t half = std::size_t(pairs) / 2;
+    gjk::Options certified;
+    certified.certify = true;
+    auto hashBatch = [&](gjk::BatchIsa isa, gjk::BatchIsa& ran)
+    {
+        std::vector<gjk::DistanceInput<T>> inputs;
+        for (int i = 0; i < pairs; ++i)
+        {
+            const Shape<T>&a = shapes[2 * i], &b = shapes[2 * i + 1];
+            inputs.push_back({{a.points.data(), int(a.points.size()), a.radius},
+                              {b.points.data(), int(b.points.size()), b.radius},
+                              transforms[2 * i],
+                              transforms[2 * i + 1]});
+        }
+        std::vector<gjk::SimplexCache> caches(inputs.size());
+        std::vector<gjk::DistanceOutput<T>> outputs(inputs.size());
+        Hashes h;
+        for (int pass = 0; pass < 3; ++pass) // cold, warm after B moved, warm repeat
+        {
+            for (std::size_t k = 0; pass == 1 && k < inputs.size(); ++k)
+                inputs[k].transformB.p = {inputs[k].transformB.p.x + moves[k].x,
+                                          inputs[k].transformB.p.y + moves[k].y};
+            for (const auto& [begin, end, options] :
+                 {std::tuple{std::size_t(0), half, gjk::referenceOptions},
+                  std::tuple{half, inputs.size(), certified}})
+            {
+                gjk::BatchStats stats;
+                gjk::distanceBatch(
+                    std::span<const gjk::DistanceInput<T>>(inputs.data() + begin, end - begin),
+                    std::span(caches.data() + begin, end - begin),
+                    std::span(outputs.data() + begin, end - begin), options, isa, &stats);
+                ran = stats.isa;
+            }
+            for (std::size_t k = 0; k < inputs.size(); ++k)
+                hashOutput(h, outputs[k], caches[k]);
+        }
+        return h.all.h;
+    };
+    gjk::BatchIsa portable = gjk::BatchIsa::Scalar, best = gjk::BatchIsa::Scalar;
+    const std::uint64_t hashPortable = hashBatch(gjk::BatchIsa::Scalar, portable);
+    const std::uint64_t hashBest = hashBatch(gjk::BatchIsa::Best, best);
+    std::printf("%s all      %016llx\n", name, (unsigned long long)hashPortable);
+    std::printf("%s queries %d\n", name, 3 * pairs);
+    std::fprintf(stderr, "%s ran %s (hashed) and %s\n", name, gjk::batchIsaName(portable),
+                 gjk::batchIsaName(best));
+    if (portable != gjk::BatchIsa::Scalar || hashBest != hashPortable)
+    {
+        std::printf("%s BROKEN: the batch with %s (%016llx) differs from the portable loop\n", name,
+                    gjk::batchIsaName(best), (unsigned long long)hashBest);
+        std::fflush(stdout);
+        std::exit(1);
+    }
+}
+#endif
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -282,6 +505,12 @@ int main(int argc, char** argv)
     // 10,000 pairs per type, each queried cold and warm: 20,000 queries per type, 40,000 in all.
     run<float>("float ", 20260601, 10000);
     run<double>("double", 20260602, 10000);
+    // 5,000 pairs, each queried cold, warm after a move and warm again, with both stage sets.
+    runCorrect("double-correct", 20260603, 5000);
+#ifdef GJK_HASH_BATCH
+    runBatch<float>("float-batch", 20260604, 5000);
+    runBatch<double>("double-batch", 20260605, 5000);
+#endif
     if (dumpFile && std::fclose(dumpFile) != 0)
     {
         std::printf("BROKEN: writing the interval dump failed\n");

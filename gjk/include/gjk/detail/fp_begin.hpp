@@ -46,7 +46,7 @@
 #endif
 #if defined(__FLT_EVAL_METHOD__) && __FLT_EVAL_METHOD__ != 0
 #error                                                                                             \
-    "gjk: FLT_EVAL_METHOD != 0 (x87 excess precision, e.g. -m32 -mfpmath=387) breaks the library's floating-point promises (docs/gjk.md, \"Compiler flags\"); use SSE2 (-mfpmath=sse) or define GJK2D_ALLOW_NON_IEEE_FLAGS"
+    "gjk: FLT_EVAL_METHOD != 0 (x87 excess precision, e.g. -m32 -mfpmath=387) breaks the library's floating-point promises (docs/gjk.md, \"Compiler flags\"); use SSE2 (-mfpmath=sse -msse2) or define GJK2D_ALLOW_NON_IEEE_FLAGS"
 #endif
 #endif
 
