@@ -60,4 +60,6 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # gjk2d_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION devel)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON) # dpkg-shlibdeps (dpkg-dev, scripts/setup.sh)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libgmp-dev, libmpfr-dev")
+# The Python package (python/, lib/python3/dist-packages/gjk2d) imports NumPy; C++ users need not.
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "python3-numpy")
 include(CPack)

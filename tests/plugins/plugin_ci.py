@@ -202,6 +202,15 @@ def box2d(a):
           "(max error/bound {})".format(rnd["errors"]["bound_ratio"]["max"]))
 
 
+def python_files(build):
+    """The Python package's files in the .deb, when the build has it (GJK2D_BUILD_PYTHON)."""
+    if not os.path.exists(os.path.join(build, "python", "gjk2d", "__init__.py")):
+        return []
+    return ["./usr/lib/python3/dist-packages/gjk2d/__init__.py"] + [
+        "./usr/lib/python3/dist-packages/gjk2d/" + os.path.basename(so)
+        for so in glob.glob(os.path.join(build, "python", "gjk2d", "_gjk2d*.so"))]
+
+
 def deb(a):
     fresh(a.work)
     run(["cpack", "-G", "DEB", "--config", os.path.join(a.build, "CPackConfig.cmake"), "-B", a.work],
@@ -220,7 +229,7 @@ def deb(a):
                  "./usr/include/gjk/distance.hpp", "./usr/include/exact/exact.hpp",
                  "./usr/lib/libgjk2d_exact.a", "./usr/lib/cmake/gjk2d/gjk2d-config.cmake",
                  "./usr/lib/pkgconfig/gjk2d.pc", "./usr/lib/gjk2d/plugins/gjk2d-box2d.so",
-                 "./usr/share/gjk2d/cases/talk.json"]:
+                 "./usr/share/gjk2d/cases/talk.json"] + python_files(a.build):
         if path not in files:
             fail("{} is not in the package:\n{}".format(path, files))
     print("plugin_ci: deb: {}\n{}".format(os.path.basename(debs[0]), fields.strip()))

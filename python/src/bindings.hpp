@@ -1,0 +1,15 @@
+// The extension _gjk2d (python/, docs/python.md): one bind function per source file, called by
+// module.cpp. The package gjk2d (python/gjk2d/__init__.py) re-exports what they define.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+namespace gjk2d_python
+{
+
+void bindDistance(pybind11::module_& m); // distance.cpp: distance, distance_batch, SimplexCache
+void bindExact(pybind11::module_& m);    // exact.cpp: exact_distance
+void bindCases(pybind11::module_& m);    // cases.cpp: families, generate, read_cases, write_cases
+void bindValidate(pybind11::module_& m); // validate.cpp: the in-process campaign
+
+} // namespace gjk2d_python
