@@ -9,6 +9,7 @@ import json
 import os
 import platform
 import re
+import shutil
 import sys
 import tempfile
 
@@ -103,20 +104,24 @@ def validate(fn, families=None, cases=None, out=None, *, name=None, batch=False,
         raise ValueError("batch: expected True or False")
     name = _variant_name(fn) if name is None else name
     dtype = numpy.dtype(dtype).name
-    if out is None:
-        out = os.path.join(tempfile.mkdtemp(prefix="gjk2d-validate-"), "report")
-    out = os.path.abspath(os.fspath(out))
     options = dict(default_plugins=default_plugins, default_cases=default_cases,
                    variants=variants, judge=judge, seed=seed, threads=threads, passes=passes,
                    worst=worst, chunk=chunk, exact_route=exact_route, timing=timing,
                    per_case=per_case, verbose=verbose, progress=progress)
-    args = _run_arguments(name, families, cases, out, options)
     if library is None:
         library = "Python {}, NumPy {}".format(platform.python_version(), numpy.__version__)
-    sys.stdout.flush()  # before the runner's summary, which C's stdout prints
-    sys.stderr.flush()
-    _gjk2d._validate(fn, name, batch, dtype, _source(fn), library, bool(accepts_radius),
-                     int(max_vertices), args)
+    made = tempfile.mkdtemp(prefix="gjk2d-validate-") if out is None else None
+    out = os.path.abspath(os.path.join(made, "report") if made else os.fspath(out))
+    try:
+        args = _run_arguments(name, families, cases, out, options)
+        sys.stdout.flush()  # before the runner's summary, which C's stdout prints
+        sys.stderr.flush()
+        _gjk2d._validate(fn, name, batch, dtype, _source(fn), library, bool(accepts_radius),
+                         int(max_vertices), args)
+    except BaseException:
+        if made:
+            shutil.rmtree(made, ignore_errors=True)
+        raise
     return load_report(out)
 
 
