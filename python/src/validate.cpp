@@ -16,6 +16,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -139,13 +140,22 @@ py::array_t<double> numbers(const py::object& value, const std::vector<py::ssize
     return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
 }
 
+// A point: two numbers (a tuple, a list, a (2,) array).
+std::array<double, 2> pointOf(const py::object& value, const char* name)
+{
+    if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) ||
+        py::len(value) != 2)
+        throw py::value_error(std::string(name) + ": expected two numbers, got " +
+                              text(py::repr(value)).substr(0, 80));
+    return {py::float_(value[py::int_(0)]), py::float_(value[py::int_(1)])};
+}
+
 void takeCase(const py::handle& r, ExternalAnswer& a)
 {
     const Fields f = fieldsOf(r, "the callable");
     a.distance = py::float_(f.distance);
-    const auto pa = numbers(f.pointA, {2}, "point_a"), pb = numbers(f.pointB, {2}, "point_b");
-    a.pointA = {pa.at(0), pa.at(1)};
-    a.pointB = {pb.at(0), pb.at(1)};
+    a.pointA = pointOf(f.pointA, "point_a");
+    a.pointB = pointOf(f.pointB, "point_b");
     a.iterations = f.iterations.is_none() ? -1 : f.iterations.cast<int>();
 }
 
@@ -228,7 +238,7 @@ void takeBatch(const py::handle& r, std::vector<ExternalAnswer>& out)
         a.distance = d.at(i);
         a.pointA = {pa.at(i, 0), pa.at(i, 1)};
         a.pointB = {pb.at(i, 0), pb.at(i, 1)};
-        a.iterations = it ? int(it.at(i)) : -1;
+        a.iterations = f.iterations.is_none() ? -1 : int(it.at(i));
     }
 }
 

@@ -155,6 +155,17 @@ def test_a_batch_callable_gives_the_per_case_report(tmp_path):
     assert sum(batches) == 700 + 10 * hard + 40 * 6  # every case once, by chunks of at most 500
     assert max(batches) == 500
 
+    def without_iterations(points, offsets_a, offsets_b, **poses):  # a tuple of three arrays
+        out = gjk2d.distance_batch(points, offsets_a, offsets_b, **poses)
+        return out["distance"], out["point_a"], out["point_b"]
+
+    tuples = gjk2d.validate(without_iterations, families=families, out=tmp_path / "tuples",
+                            name=NAME, batch=True, timing=False)
+    for ours, theirs in zip(tuples["families"], each["families"]):
+        assert ours["variants"][NAME]["errors"] == theirs["variants"][NAME]["errors"]
+        assert ours["variants"][NAME]["failures"] == 0
+        assert ours["variants"][NAME]["iterations"]["counts"] == []  # not said: not counted
+
 
 def test_the_report_is_one_gjk_validate_compare_accepts(tmp_path):
     good = gjk2d.validate(gjk2d.distance, families="random:300", out=tmp_path / "good",
