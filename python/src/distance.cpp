@@ -80,6 +80,19 @@ Result resultOf(const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& cache,
     return r;
 }
 
+// A warm cache indexes the shapes' points: one from other shapes may index beyond them, which the
+// query would read out of bounds.
+void checkCache(const gjk::SimplexCache& c, int countA, int countB)
+{
+    const auto in = [](int i, int n) { return 0 <= i && i < n; };
+    bool ok = 0 <= c.count && c.count <= 3 && (c.searchA == -1 || in(c.searchA, countA)) &&
+              (c.searchB == -1 || in(c.searchB, countB));
+    for (int i = 0; ok && i < c.count; ++i)
+        ok = in(c.indexA[i], countA) && in(c.indexB[i], countB);
+    if (!ok)
+        badArgument("cache", "indexes points beyond these shapes' (a cache of other shapes)");
+}
+
 struct QueryArgs
 {
     py::handle pointsA, pointsB;
@@ -98,6 +111,7 @@ template <class T> Result query(const QueryArgs& q)
     options.certify = q.certify;
     options.correctlyRounded = q.correctlyRounded;
     gjk::SimplexCache cache = q.cache.value_or(gjk::SimplexCache{});
+    checkCache(cache, in.proxyA.count, in.proxyB.count);
     py::gil_scoped_release release;
     gjk::DistanceOutput<T> out = gjk::distance(in, cache, options);
     if constexpr (std::is_same_v<T, double>)

@@ -86,6 +86,13 @@ def test_a_warm_query_gives_the_cold_bits_in_fewer_iterations():
     assert warm.iterations < cold.iterations
 
 
+def test_a_cache_of_other_shapes_is_refused():
+    big = gjk2d.distance(np.array([[0.0, 0], [1, 0], [1, 1], [0, 1]]), [[5.0, 5.0]])
+    assert max(big.cache.index_a) > 0
+    with pytest.raises(ValueError, match="^cache: "):
+        gjk2d.distance([[0.0, 0.0]], [[5.0, 5.0]], cache=big.cache)
+
+
 def test_dtype_chooses_the_scalar_type():
     a = np.array([[0.1, 0.2], [0.3, -0.7]])
     b = np.array([[1.1, 0.9]])
