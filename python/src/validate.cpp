@@ -277,6 +277,23 @@ struct Registration
     ~Registration() { gjkval::releaseInProcessVariant(name); }
 };
 
+// One campaign at a time in a process (the runner's registries and outputs are global): another
+// thread's validate, or fn calling validate, is refused. Read and written with the GIL held.
+bool g_running = false;
+struct Running
+{
+    Running()
+    {
+        if (g_running)
+            throw std::runtime_error(
+                "gjk2d.validate: another campaign runs in this process (one at a time)");
+        g_running = true;
+    }
+    ~Running() { g_running = false; }
+    Running(const Running&) = delete;
+    Running& operator=(const Running&) = delete;
+};
+
 // The runner's failures as Python exceptions, with its one-line messages: InputError is
 // gjk2d.InputError (a ValueError, python/src/cases.cpp registers it), an output that cannot be
 // written OSError, a broken invariant of gjk2d RuntimeError.
@@ -321,6 +338,7 @@ int validate(const py::object& fn, const std::string& name, bool batch, const st
 {
     if (dtype != "float32" && dtype != "float64")
         badArgument("dtype", "float32 or float64, got " + dtype);
+    const Running running;
     const bool isFloat = dtype == "float32";
     gjkval::InProcessVariant v;
     v.name = name;

@@ -200,6 +200,18 @@ def test_errors_are_the_command_lines_one_line_messages(tmp_path):
     assert not (tmp_path / "py").exists()
 
 
+def test_one_campaign_at_a_time(tmp_path):
+    def nested(points_a, points_b, **pose):
+        gjk2d.validate(gjk2d.distance, families="random:1", out=tmp_path / "inner", name="inner")
+
+    report = gjk2d.validate(nested, families="random:5", out=tmp_path / "r", name=NAME,
+                            timing=False)
+    worst = report["worst"][0]["variants"][NAME]
+    assert worst["plugin_detail"] == ("RuntimeError: gjk2d.validate: another campaign runs in "
+                                      "this process (one at a time)")
+    assert report["families"][0]["variants"][NAME]["plugin_errors"] == 5
+
+
 def test_keyboard_interrupt_ends_the_campaign_without_a_report(tmp_path):
     def interrupted(points_a, points_b, **pose):
         raise KeyboardInterrupt
