@@ -13,7 +13,7 @@ from ._gjk2d import (
     read_cases,
     write_cases,
 )
-from ._validate import load_report, validate
+from ._validate import Report, load_report, validate
 
 
 def case_args(case):
@@ -33,6 +33,7 @@ __all__ = [
     "STOP_REASONS",
     "DistanceResult",
     "InputError",
+    "Report",
     "SimplexCache",
     "case_args",
     "distance",

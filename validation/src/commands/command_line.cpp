@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 
 std::string CommandLine::text() const
 {
-    std::string s = "gjk-validate";
+    std::string s = program;
     for (int i = 1; i < argc; ++i)
     {
         std::string a = argv[i];

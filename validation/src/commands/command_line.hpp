@@ -43,8 +43,18 @@ struct CommandLine
 {
     int argc;
     char** argv;
+    // Who runs it: the program, or gjk2d.validate (python/src/validate.cpp) that runs `run` in
+    // the Python process with an argument vector of its own.
+    const char* program = "gjk-validate";
     std::string text() const; // "gjk-validate run --family random:100"
 };
+
+// What the program does, but for reporting the failures: checks the arguments (UTF-8), parses
+// them, runs the one subcommand they name and returns its exit code; --help and --version print
+// their text and return kExitPass. Every failure is thrown, for the caller to report with its
+// exit code (main.cpp, kExitCodeTable; gjk2d.validate turns them into Python exceptions): a
+// usage error as InputError ("... (see --help)"), and whatever the subcommand throws.
+int runCommandLine(const CommandLine& line);
 
 // A subcommand: its options registered on the app, and what it does once they are parsed.
 struct Subcommand

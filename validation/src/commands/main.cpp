@@ -7,11 +7,11 @@
 //   list      the families and variants
 //   compare   two reports: the statistics that got worse or better, exit 1 on a regression
 //   merge     the shards of a campaign (run --shard I/N) into its report
+// The parsing and the dispatch are the commands layer's (runCommandLine, commands/dispatch.cpp,
+// shared with the Python package's gjk2d.validate); main() reports every failure.
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "report/report.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <csignal>
 #include <cstdio>
@@ -19,43 +19,6 @@
 #include <stdexcept>
 
 using namespace gjkval;
-
-namespace
-{
-// Parses the command line and runs the one subcommand it names.
-int dispatch(int argc, char** argv)
-{
-    checkArgsUtf8(argc, argv);
-    const CommandLine line{argc, argv};
-    CLI::App app{"gjk-validate: checks the GJK distance library against an exact ground truth.\n"
-                 "Runs case families and case files through the GJK variants and the exact\n"
-                 "(CGAL/GMP) distance, and reports correctness, accuracy and speed."};
-    app.require_subcommand(1);
-    app.footer(exitCodesHelp());
-    app.set_help_all_flag("--help-all", "help for every subcommand");
-    const Subcommand subcommands[] = {
-        addRun(app, line),    addGenerate(app, line), addExplain(app, line), addBench(app, line),
-        addSearch(app, line), addList(app, line),     addCompare(app, line), addMerge(app, line)};
-    try
-    {
-        app.parse(argc, argv);
-    }
-    catch (const CLI::ParseError& e)
-    {
-        // --help and --version print their text; a usage error is one line on stderr, naming the
-        // option, as every other error (CLI11's own app.exit(e) adds a second "Run with --help"
-        // line).
-        if (e.get_exit_code() == 0)
-            return app.exit(e) == 0 ? kExitPass : kExitInput;
-        std::fprintf(stderr, "gjk-validate: error: %s (see --help)\n", e.what());
-        return kExitInput;
-    }
-    for (const auto& s : subcommands)
-        if (*s.app)
-            return s.run();
-    throw std::logic_error("no subcommand ran although CLI11 requires one");
-}
-} // namespace
 
 // Every failure ends here with its documented exit code (kExitCodeTable) and one line on stderr.
 int main(int argc, char** argv)
@@ -65,7 +28,7 @@ int main(int argc, char** argv)
     std::signal(SIGXFSZ, SIG_IGN);
     try
     {
-        return dispatch(argc, argv);
+        return runCommandLine({argc, argv});
     }
     catch (const InputError& e)
     {

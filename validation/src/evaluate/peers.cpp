@@ -38,13 +38,22 @@ Json pluginsJson(const std::vector<const VariantInfo*>& variants)
     std::vector<std::string> seen;
     for (const VariantInfo* v : variants)
     {
-        if (!v->plugin || std::find(seen.begin(), seen.end(), v->plugin->path) != seen.end())
+        if (!v->plugin)
+            continue;
+        const bool inProcess = v->plugin->kind == PluginKind::InProcess;
+        if (!inProcess && std::find(seen.begin(), seen.end(), v->plugin->path) != seen.end())
             continue;
         seen.push_back(v->plugin->path);
+        // A file's every implementation; an in-process variant is its own (its path is what its
+        // caller says, and an earlier campaign's variant of the same path may still be
+        // registered).
         Json names = Json::array();
-        for (const VariantInfo* w : pluginVariants())
-            if (w->plugin->path == v->plugin->path)
-                names.push_back(w->name);
+        if (inProcess)
+            names.push_back(v->name);
+        else
+            for (const VariantInfo* w : pluginVariants())
+                if (w->plugin->path == v->plugin->path)
+                    names.push_back(w->name);
         out.push_back({{"file", v->plugin->path},
                        {"kind", pluginKindName(v->plugin->kind)},
                        {"library", v->plugin->library},

@@ -48,7 +48,8 @@ std::vector<std::string> shippedPluginPaths(bool peers = false);
 struct VariantInfo;
 // A report's context.plugins (docs/report-schema.md): every plugin file whose variants are among
 // `variants`, in their order, with its kind, its library (name and version, as the plugin gives
-// it, or "") and every variant it gave.
+// it, or "") and every variant it gave; an in-process variant (evaluate/in_process.hpp) is an
+// entry of its own, its file what its caller says.
 Json pluginsJson(const std::vector<const VariantInfo*>& variants);
 
 } // namespace gjkval

@@ -3,6 +3,7 @@
 #include "common/output.hpp" // writeAllBytes
 #include "evaluate/adapter.hpp"
 #include "evaluate/evaluate.hpp"
+#include "evaluate/in_process.hpp"
 
 #include <fmt/format.h>
 
@@ -318,7 +319,90 @@ void judgePluginVariant(const std::string& name)
 
 const char* pluginKindName(PluginKind k)
 {
-    return k == PluginKind::Executable ? "executable-adapter" : "shared-library";
+    switch (k)
+    {
+    case PluginKind::SharedLibrary:
+        return "shared-library";
+    case PluginKind::Executable:
+        return "executable-adapter";
+    case PluginKind::InProcess:
+        return "in-process";
+    }
+    return "?";
+}
+
+namespace
+{
+// An in-process variant's registry entries: its implementation (no file, no functions; the
+// strings live in the PluginImpl) and its variant, a comparison variant as any plugin's.
+PluginImpl inProcessImpl(InProcessVariant&& v)
+{
+    PluginImpl p;
+    p.kind = PluginKind::InProcess;
+    p.path = std::move(v.source);
+    p.library = std::move(v.library);
+    p.name = std::move(v.name);
+    p.description = std::move(v.description);
+    p.impl.scalar = v.scalar == Scalar::Float ? GJK2D_SCALAR_FLOAT : GJK2D_SCALAR_DOUBLE;
+    p.impl.accepts = v.acceptsRadius ? std::uint32_t(GJK2D_ACCEPTS_RADIUS) : 0u;
+    p.impl.max_vertices = std::max(0, v.maxVertices);
+    p.calls = std::make_shared<InProcessCalls>(std::move(v.calls));
+    return p;
+}
+
+VariantInfo inProcessVariant(const PluginImpl& impl)
+{
+    VariantInfo v;
+    v.name = impl.name;
+    v.scalar = impl.impl.scalar == GJK2D_SCALAR_FLOAT ? Scalar::Float : Scalar::Double;
+    v.options = gjk::referenceOptions; // the bound it is compared with, as a plugin's
+    v.description = fmt::format("in-process {}{}{}", impl.path,
+                                impl.description.empty() ? "" : ": ", impl.description);
+    v.judged = false;
+    v.start = Start::Cold;
+    v.plugin = &impl;
+    return v;
+}
+} // namespace
+
+const VariantInfo* registerInProcessVariant(InProcessVariant v)
+{
+    if (!validName(v.name.c_str()))
+        throw InputError(fmt::format(
+            "in-process variant '{}': the name is not 1 to 64 characters of [A-Za-z0-9._+-]",
+            excerpt(v.name)));
+    if (bool(v.calls.perCase) == bool(v.calls.perBatch))
+        throw InputError(fmt::format(
+            "in-process variant '{}': give one callback, per case or per batch", v.name));
+    Registry& reg = registry();
+    std::size_t k = 0;
+    while (k < reg.variants.size() && reg.variants[k].name != v.name)
+        ++k;
+    if (k == reg.variants.size() ? findVariant(v.name) != nullptr
+                                 : reg.impls[k].kind != PluginKind::InProcess)
+        throw InputError(fmt::format("in-process variant '{}': the name is taken by {}", v.name,
+                                     k == reg.variants.size()
+                                         ? std::string("a gjk2d variant (see `gjk-validate list`)")
+                                         : "the plugin " + reg.impls[k].path));
+    PluginImpl impl = inProcessImpl(std::move(v));
+    if (k == reg.variants.size()) // a new one; else the same name registered again, in place
+    {
+        reg.impls.emplace_back();
+        reg.variants.emplace_back();
+    }
+    reg.impls[k] = std::move(impl);
+    reg.impls[k].impl.name = reg.impls[k].name.c_str();
+    reg.impls[k].impl.description = reg.impls[k].description.c_str();
+    reg.variants[k] = inProcessVariant(reg.impls[k]);
+    return &reg.variants[k];
+}
+
+void releaseInProcessVariant(const std::string& name)
+{
+    Registry& reg = registry();
+    for (std::size_t k = 0; k < reg.variants.size(); ++k)
+        if (reg.variants[k].name == name && reg.impls[k].kind == PluginKind::InProcess)
+            reg.impls[k].calls.reset();
 }
 
 const char* pluginStatusName(PluginStatus s)
@@ -475,6 +559,8 @@ std::vector<PluginLog> finishPluginLogs()
         return logs;
     for (const PluginImpl& p : registry().impls)
     {
+        if (p.kind == PluginKind::InProcess) // prints where the process does: no log
+            continue;
         if (std::any_of(logs.begin(), logs.end(),
                         [&](const PluginLog& l) { return l.file == p.logName; }))
             continue;
@@ -621,9 +707,13 @@ void recordLoss(const PluginTask& t, PluginStatus status, const std::string& how
 
 void answerContained(const std::vector<PluginTask>& all, double timeoutSeconds)
 {
-    std::vector<PluginTask> tasks, throughAdapters;
+    std::vector<PluginTask> tasks, throughAdapters, inProcess;
     for (const PluginTask& t : all)
-        (t.v->plugin->kind == PluginKind::Executable ? throughAdapters : tasks).push_back(t);
+        (t.v->plugin->kind == PluginKind::Executable  ? throughAdapters
+         : t.v->plugin->kind == PluginKind::InProcess ? inProcess
+                                                      : tasks)
+            .push_back(t);
+    answerInProcess(inProcess);
     answerThroughAdapters(throughAdapters, timeoutSeconds);
     std::size_t next = 0;
     while (next < tasks.size())

@@ -1,6 +1,8 @@
 // Distance routines that are not gjk2d's, loaded from shared libraries (gjk2d/plugin.h,
 // docs/validate-your-gjk.md): each implementation a plugin describes becomes a variant
 // (VariantInfo::plugin), evaluated in a child process so that a crash or a hang costs one case.
+// A third kind answers in this process, from a callback registered at run time
+// (evaluate/in_process.hpp: the Python package's gjk2d.validate).
 #pragma once
 
 #include "evaluate/variants.hpp"
@@ -11,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,19 +28,25 @@ inline constexpr double kDefaultPluginTimeoutSeconds = 5;
 
 // The two kinds of plugin `--plugin FILE` takes, told apart by the file's content: a shared
 // library exporting gjk2d_plugin_describe (gjk2d/plugin.h), or an executable adapter spoken to
-// over pipes (evaluate/adapter.hpp, protocol version 1, docs/validate-your-gjk.md).
+// over pipes (evaluate/adapter.hpp, protocol version 1, docs/validate-your-gjk.md); and the kind
+// no file gives, a callback of this process (registerInProcessVariant, evaluate/in_process.hpp).
 enum class PluginKind
 {
     SharedLibrary,
     Executable,
+    InProcess,
 };
-// "shared-library" or "executable-adapter" (the report's context.plugins[].kind).
+// "shared-library", "executable-adapter" or "in-process" (the report's context.plugins[].kind).
 const char* pluginKindName(PluginKind k);
 
 // One implementation of a loaded plugin.
+struct InProcessCalls; // evaluate/in_process.hpp
+
 struct PluginImpl
 {
-    std::string path;    // the plugin file: absolute, symbolic links resolved (the report's)
+    // The plugin file: absolute, symbolic links resolved (the report's). An in-process variant's:
+    // what its caller says it is ("python:module.function").
+    std::string path;
     std::string logName; // its output's log in the report directory: "plugin-<file stem>.log"
     // A shared library's: its description, functions included. An executable adapter's: name,
     // description, scalar, accepts (GJK2D_ACCEPTS_RADIUS or 0) and max_vertices from its
@@ -48,6 +57,8 @@ struct PluginImpl
     // library's optional gjk2d_plugin_library(); "" when it does not say.
     std::string library;
     std::string name, description; // an executable adapter's (impl.name, impl.description)
+    // An in-process variant's callbacks; null once released (releaseInProcessVariant).
+    std::shared_ptr<InProcessCalls> calls;
 };
 
 // Loads the plugin at `path` and registers one variant per implementation it describes,
@@ -105,7 +116,8 @@ struct PluginTask
 
 // Runs the tasks in order: a shared library's in a forked child that streams one answer per task
 // through a pipe; an executable adapter's through its adapter process (answerThroughAdapters,
-// evaluate/adapter.hpp). When the child dies or does not answer within timeoutSeconds, that task
+// evaluate/adapter.hpp); an in-process variant's in this thread, never forked (answerInProcess,
+// evaluate/in_process.hpp). When the child dies or does not answer within timeoutSeconds, that task
 // is answered Crashed or Hung (a line on stderr names the variant and the case) and a new child
 // continues from the next task. Never throws for what a plugin does; std::runtime_error when
 // fork or pipe fail.

@@ -2,6 +2,7 @@
 
 #include "evaluate/adapter.hpp"
 #include "evaluate/evaluate.hpp"
+#include "evaluate/in_process.hpp"
 #include "evaluate/plugins.hpp"
 
 #include <fmt/format.h>
@@ -429,6 +430,44 @@ TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const Va
     }
 }
 
+TimingResult timeInProcess(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                           const TimingConfig& cfg)
+{
+    const std::vector<const PreparedCase*> sample(
+        cases.begin(), cases.begin() + std::ptrdiff_t(std::min(cases.size(), kAdapterTimingCases)));
+    TimingResult res;
+    res.cases = sample.size();
+    const InProcessCalls* calls = v.plugin->calls.get();
+    if (sample.empty() || calls == nullptr)
+        return res;
+    std::vector<ExternalAnswer> out(sample.size());
+    const auto pass = [&](int reps)
+    {
+        const auto t0 = Clock::now();
+        for (int r = 0; r < reps; ++r)
+            if (calls->perBatch)
+                calls->perBatch(sample, out);
+            else
+                for (std::size_t i = 0; i < sample.size(); ++i)
+                    calls->perCase(*sample[i], out[i]);
+        const auto t1 = Clock::now();
+        g_timingSink = g_timingSink + out[0].distance;
+        return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    };
+    try
+    {
+        return medianOfPasses(sample.size(), cfg, pass);
+    }
+    catch (const std::exception& e)
+    {
+        std::fprintf(stderr,
+                     "gjk-validate: in-process variant '%s' raised while timed: %s; no "
+                     "ns/query\n",
+                     v.name.c_str(), e.what());
+        return res;
+    }
+}
+
 TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                            const TimingConfig& cfg, double pluginTimeoutSeconds)
 {
@@ -480,6 +519,8 @@ TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const Va
 {
     if (v.plugin && v.plugin->kind == PluginKind::Executable)
         return timeAdapter(cases, v, cfg, pluginTimeoutSeconds);
+    if (v.plugin && v.plugin->kind == PluginKind::InProcess)
+        return timeInProcess(cases, v, cfg);
     if (v.plugin)
         return timeContained(cases, v, cfg, pluginTimeoutSeconds);
     const TimedLoop loop = timedLoop(cases, v, cfg);

@@ -33,7 +33,8 @@ struct TimingResult
 // of `run` (per family) and `bench`. Cold queries (fresh SimplexCache), or warm ones when v.start
 // is Start::Warm or cfg.warm: the caches are prepared by a cold query of each case before timing,
 // and each timed query starts from a copy of its case's cache. A plugin variant (cold only) is
-// timed by the same loop and passes, in a child process (timeContained).
+// timed by the same loop and passes, in a child process (timeContained); an executable adapter's
+// and an in-process variant's by their own loops (timeAdapter, timeInProcess).
 TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg, double pluginTimeoutSeconds);
 
@@ -57,6 +58,17 @@ TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const 
 inline constexpr std::size_t kAdapterTimingCases = 2048;
 TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg, double pluginTimeoutSeconds);
+
+// An in-process variant's timeQueries() (evaluate/in_process.hpp): a plain timed loop in this
+// process, over the first kAdapterTimingCases of the sample (its callbacks are typically a Python
+// function's, tens of microseconds a query, as slow as an adapter's), calibrated and repeated as
+// medianOfPasses(). A per-case callback: one call per case, the loop's time over the cases; a
+// batch callback: one call with the whole sample per loop, its time over the cases. What the
+// callback's caller adds (the Python layer's conversions of each case) is in the time. A callback
+// that throws a std::exception gives nsPerQuery = -1 and a line on stderr; any other exception
+// propagates (it ends the campaign).
+TimingResult timeInProcess(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                           const TimingConfig& cfg);
 
 // A variant's timed loop over `cases`, prepared as timeQueries() does: pass(reps) runs `reps`
 // loops over the cases and returns the nanoseconds taken (empty `pass` when there are no cases).
