@@ -1,18 +1,18 @@
 """Every ```python block of docs/python.md runs, in document order, in one namespace (as a reader
-would paste them into one session), in a temporary directory; and every line of the form
+would paste them into one session), in a temporary directory, with python/examples on sys.path; and every line of the form
 `expression   # value` shows what the expression gives: the comment is the repr of its value, or
 of each element of a top-level tuple joined by spaces (`r.iterations, r.stop  # 2 'repeated-support'`).
-A block that must be run from the repository's root or needs a file names it in its prose; here
-the working directory is a fresh one, with the build's gjk-validate on PATH."""
+A ```text block (a signature) is not run. The working directory is a fresh one, with the build's
+gjk-validate on PATH."""
 
 import ast
 import os
 import pathlib
 import re
+import sys
 
-import pytest
-
-DOC = pathlib.Path(__file__).resolve().parents[2] / "docs" / "python.md"
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+DOC = ROOT / "docs" / "python.md"
 FENCE = re.compile(r"^```python\n(.*?)^```", re.S | re.M)
 
 
@@ -48,6 +48,7 @@ def test_every_block_runs_and_shows_what_it_says(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     monkeypatch.setenv("PATH", os.path.dirname(os.environ["GJK2D_VALIDATE"]) + os.pathsep +
                        os.environ.get("PATH", ""))
+    monkeypatch.syspath_prepend(str(ROOT / "python" / "examples"))  # the page's `import numpy_gjk`
     namespace = {"__name__": "__docs__"}
     checked = 0
     for i, source in enumerate(blocks()):
