@@ -226,6 +226,8 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     // Points of A and B~ in the compute frame: the world, or A's local frame through the true
     // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
     std::vector<gjk::Vec2<double>> pa, pb;
+    pa.reserve(a.points.size());
+    pb.reserve(b.points.size());
     const gjk::Transform<double> xa = xf(a), xb = xf(b);
     const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
     for (const auto& p : a.points)
@@ -236,15 +238,13 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     FrameScales s;
     double ia = 0, ib = 0;
     for (const auto& p : pa)
-    {
         ia = std::max({ia, std::abs(p.x), std::abs(p.y)});
-        s.A = std::max(s.A, std::hypot(p.x, p.y));
-    }
     for (const auto& p : pb)
-    {
         ib = std::max({ib, std::abs(p.x), std::abs(p.y)});
-        s.Bmapped = std::max(s.Bmapped, std::hypot(p.x, p.y));
-    }
+    // max |p| = max hypot(p - 0): x - 0 is x.
+    const std::vector<gjk::Vec2<double>> origin{{0, 0}};
+    s.A = largestDistance(pa, origin);
+    s.Bmapped = largestDistance(pb, origin);
     for (const auto& p : b.points)
         s.B = std::max(s.B, std::hypot(p[0], p[1]));
     if (double(pa.size()) * double(pb.size()) <= 1e6)
