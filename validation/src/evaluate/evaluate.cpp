@@ -549,8 +549,6 @@ class ExactShapes
 {
   public:
     explicit ExactShapes(const Case& c) : c_(c) {}
-    const exact::Shape& a(bool isFloat) { return get(isFloat).a; }
-    const exact::Shape& b(bool isFloat) { return get(isFloat).b; }
     // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else the
     // exact route's value; `exactCount` counts the points the exact route measured.
     double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
