@@ -1,7 +1,7 @@
 // The witness checks' floating-point filter (evaluate/witness_filter.hpp): where it answers, its
 // answer (0) is the exact route's (exact::pointToShapeDistance); where it cannot tell (a point on
-// the boundary, one just off it, the deciding ones of the witness bound) the exact route answers and
-// the fallback is counted. Expected values by hand, and from the exact side on the built-in
+// the boundary, one just off it, the deciding ones of the witness bound) the exact route answers
+// and the fallback is counted. Expected values by hand, and from the exact side on the built-in
 // families.
 #include "evaluate/evaluate.hpp"
 #include "evaluate/witness_filter.hpp"
@@ -34,20 +34,20 @@ bool decides(const exact::Shape& s, exact::Point p)
 TEST_CASE("witness filter: hand cases on the unit square", "[witness-filter]")
 {
     const exact::Shape sq = square(0, 0);
-    CHECK(decides(sq, {0.5, 0.5}));             // inside: distance 0
-    CHECK(decides(sq, {0.999, 0.001}));         // inside, 1e-3 from two edges
-    CHECK_FALSE(decides(sq, {2, 0.5}));         // outside: distance 1, the exact route's
-    CHECK_FALSE(decides(sq, {1, 0.25}));        // on the boundary: no strict certificate
-    CHECK_FALSE(decides(sq, {0, 0}));           // a vertex
+    CHECK(decides(sq, {0.5, 0.5}));               // inside: distance 0
+    CHECK(decides(sq, {0.999, 0.001}));           // inside, 1e-3 from two edges
+    CHECK_FALSE(decides(sq, {2, 0.5}));           // outside: distance 1, the exact route's
+    CHECK_FALSE(decides(sq, {1, 0.25}));          // on the boundary: no strict certificate
+    CHECK_FALSE(decides(sq, {0, 0}));             // a vertex
     CHECK_FALSE(decides(sq, {1 - 0x1p-53, 0.5})); // inside by 2^-53, below the bound (~3.4e-16)
     CHECK_FALSE(decides(sq, {1 + 0x1p-52, 0.5})); // outside by 2^-52: exact 2^-52, never 0
     CHECK(exact::pointToShapeDistance(sq, {1 + 0x1p-52, 0.5}) == 0x1p-52);
     // A rounded square (radius 1/2): within the radius of an edge is on the shape.
     const exact::Shape rounded = square(0, 0, 0.5);
-    CHECK(decides(rounded, {1.25, 0.5}));       // 1/4 from the edge x = 1
-    CHECK(decides(rounded, {1.3, 1.3}));        // 0.3 sqrt 2 = 0.42 from the corner
-    CHECK_FALSE(decides(rounded, {1.6, 0.5}));  // 0.6 from the edge: exact 0.1
-    CHECK_FALSE(decides(rounded, {1.5, 0.5}));  // exactly at the radius: left to the exact route
+    CHECK(decides(rounded, {1.25, 0.5}));      // 1/4 from the edge x = 1
+    CHECK(decides(rounded, {1.3, 1.3}));       // 0.3 sqrt 2 = 0.42 from the corner
+    CHECK_FALSE(decides(rounded, {1.6, 0.5})); // 0.6 from the edge: exact 0.1
+    CHECK_FALSE(decides(rounded, {1.5, 0.5})); // exactly at the radius: left to the exact route
     // A segment and a point: no triangle, only the radius can decide.
     exact::Shape seg;
     seg.points = {{0, 0}, {2, 0}};
@@ -72,8 +72,8 @@ TEST_CASE("witness filter: a rotated and translated shape", "[witness-filter]")
     sq.s = std::sin(0.7);
     sq.px = 1e6;
     sq.py = -3e5;
-    CHECK(decides(sq, {1e6, -3e5}));          // the centre
-    CHECK(decides(sq, {1e6 + 0.3, -3e5}));    // inside the inscribed disk (radius 1/2)
+    CHECK(decides(sq, {1e6, -3e5}));             // the centre
+    CHECK(decides(sq, {1e6 + 0.3, -3e5}));       // inside the inscribed disk (radius 1/2)
     CHECK_FALSE(decides(sq, {1e6 + 0.8, -3e5})); // outside the circumscribed disk (0.707)
     CHECK(exact::pointToShapeDistance(sq, {1e6 + 0.3, -3e5}) == 0);
     // Coordinates that overflow in the filter: the exact route answers.
@@ -86,8 +86,8 @@ TEST_CASE("witness filter: a rotated and translated shape", "[witness-filter]")
 TEST_CASE("witness filter: never 0 where the exact route is not, on every built-in family",
           "[witness-filter]")
 {
-    // Points on, near and off each shape: its own points, their midpoints, and both moved by tiny and
-    // larger offsets; where the filter decides, the exact route must give 0.
+    // Points on, near and off each shape: its own points, their midpoints, and both moved by tiny
+    // and larger offsets; where the filter decides, the exact route must give 0.
     std::size_t decided = 0, fallbacks = 0, checked = 0;
     std::vector<GeneratedFamily> families = generateFamilies("hard:8", 11);
     families.push_back(generateFamilies("random:300", 11)[0]);

@@ -86,7 +86,8 @@ double segmentDistanceAbove(exact::Point a, exact::Point b, exact::Point p, doub
 std::vector<exact::Point> roughHull(std::vector<exact::Point> pts)
 {
     std::sort(pts.begin(), pts.end(),
-              [](exact::Point a, exact::Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+              [](exact::Point a, exact::Point b)
+              { return a.x < b.x || (a.x == b.x && a.y < b.y); });
     if (pts.size() < 3)
     {
         if (pts.size() == 2 && pts[0].x == pts[1].x && pts[0].y == pts[1].y)
