@@ -258,6 +258,14 @@ TEST_CASE("statistics survive their state: what a shard or a checkpoint writes",
     old.erase("invalid");
     old.erase("invalid_reasons");
     CHECK(Stats::fromState(old).invalid == 0);
+    // A state written before the witness filter (no witness counts): read as none.
+    Json beforeFilter = state;
+    beforeFilter.erase("witness_points");
+    beforeFilter.erase("witness_exact");
+    CHECK(Stats::fromState(beforeFilter).witnessExact == 0);
+    Json counted = state;
+    counted["witness_exact"] = 7;
+    CHECK(Stats::fromState(counted).witnessExact == 7);
     Json wrongReasons = state;
     wrongReasons["invalid_reasons"] = std::vector<std::uint64_t>{1, 2};
     CHECK_THROWS(Stats::fromState(wrongReasons));
@@ -347,6 +355,8 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "plugin_errors",
                                            "crashed",
                                            "hung",
+                                           "witness_points",
+                                           "witness_exact",
                                            "failure_rate_upper95",
                                            "errors",
                                            "iterations",
@@ -414,7 +424,9 @@ TEST_CASE("the shard state's keys keep their order", "[stats]")
                                            "invalid",
                                            "invalid_reasons",
                                            "witness_ratio",
-                                           "correct_paths"});
+                                           "correct_paths",
+                                           "witness_points",
+                                           "witness_exact"});
     s.pathDouble = 1;
     s.pathDoubleDouble = 2;
     s.pathExact = 3;

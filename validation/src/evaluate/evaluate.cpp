@@ -1,4 +1,5 @@
 #include "evaluate/evaluate.hpp"
+#include "evaluate/witness_filter.hpp"
 
 #include "inputs/geometry.hpp"
 
@@ -542,27 +543,46 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
 
 namespace
 {
-// A case's shapes on the exact side, as given and rounded to float, converted when first needed.
+// A case's shapes on the exact side, as given and rounded to float, converted when first needed,
+// with the witness filter's view of each (witness_filter.hpp).
 class ExactShapes
 {
   public:
     explicit ExactShapes(const Case& c) : c_(c) {}
-    const exact::Shape& a(bool isFloat) { return get(isFloat).first; }
-    const exact::Shape& b(bool isFloat) { return get(isFloat).second; }
+    // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else the
+    // exact route's value; `exactCount` counts the points the exact route measured.
+    double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
+    {
+        Pair& s = get(isFloat);
+        const exact::Point q{p[0], p[1]};
+        if (certainlyOnShape(ofA ? s.fa : s.fb, q))
+            return 0;
+        ++exactCount;
+        return exact::pointToShapeDistance(ofA ? s.a : s.b, q);
+    }
 
   private:
-    const std::pair<exact::Shape, exact::Shape>& get(bool isFloat)
+    struct Pair
+    {
+        exact::Shape a, b;
+        FilterShape fa, fb;
+    };
+    Pair& get(bool isFloat)
     {
         const int t = isFloat ? 1 : 0;
         if (!have_[t])
         {
-            shapes_[t] = {toExact(c_.a, isFloat), toExact(c_.b, isFloat)};
+            Pair& s = shapes_[t];
+            s.a = toExact(c_.a, isFloat);
+            s.b = toExact(c_.b, isFloat);
+            s.fa = filterShape(s.a);
+            s.fb = filterShape(s.b);
             have_[t] = true;
         }
         return shapes_[t];
     }
     const Case& c_;
-    std::pair<exact::Shape, exact::Shape> shapes_[2];
+    Pair shapes_[2];
     bool have_[2] = {false, false};
 };
 
@@ -574,8 +594,9 @@ class ExactShapes
 // failure WitnessGap set from ||pB - pA|| is withdrawn (the other reasons stand).
 void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
 {
-    const double aInB = exact::pointToShapeDistance(shapes.b(isFloat), {v.pointA[0], v.pointA[1]});
-    const double bInA = exact::pointToShapeDistance(shapes.a(isFloat), {v.pointB[0], v.pointB[1]});
+    v.witnessPoints += 2;
+    const double aInB = shapes.distance(isFloat, false, v.pointA, v.witnessExact);
+    const double bInA = shapes.distance(isFloat, true, v.pointB, v.witnessExact);
     const double gap = std::max(aInB, bInA);
     if (!(gap <= v.witnessBound))
         return;
@@ -605,7 +626,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     ExactShapes shapes(c);
     const std::size_t nv = ctx.variants.size();
     std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
-    std::vector<char> done(nv, 0);
+    std::vector<char> done(nv, 0), exactA(nv, 0), exactB(nv, 0);
     for (std::size_t k = 0; k < nv; ++k)
     {
         VariantOutcome& v = out.variants[k];
@@ -614,7 +635,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
             continue;
         const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
         // Variants often return the very same witness points (same scalar type): each distinct
-        // point is measured once per case (the exact query dominates the campaign's time).
+        // point is measured once per case; a variant's counts include the points it shares.
         double wa = -1, wb = -1;
         for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
         {
@@ -622,14 +643,30 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
                 continue;
             const VariantOutcome& u = out.variants[j];
             if (wa < 0 && u.pointA == v.pointA)
+            {
                 wa = witnessA[j];
+                exactA[k] = exactA[j];
+            }
             if (wb < 0 && u.pointB == v.pointB)
+            {
                 wb = witnessB[j];
+                exactB[k] = exactB[j];
+            }
         }
+        int n = 0;
         if (wa < 0)
-            wa = exact::pointToShapeDistance(shapes.a(isFloat), {v.pointA[0], v.pointA[1]});
+        {
+            wa = shapes.distance(isFloat, true, v.pointA, n);
+            exactA[k] = char(n);
+        }
+        n = 0;
         if (wb < 0)
-            wb = exact::pointToShapeDistance(shapes.b(isFloat), {v.pointB[0], v.pointB[1]});
+        {
+            wb = shapes.distance(isFloat, false, v.pointB, n);
+            exactB[k] = char(n);
+        }
+        v.witnessPoints += 2;
+        v.witnessExact += exactA[k] + exactB[k];
         witnessA[k] = wa;
         witnessB[k] = wb;
         done[k] = 1;

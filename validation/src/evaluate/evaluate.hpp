@@ -156,6 +156,10 @@ struct VariantOutcome
     gjk::CorrectPath path = gjk::CorrectPath::Plain;
     bool bitMismatch = false;
     bool failed = false;
+    // Witness points whose distance to their shape was measured (phase 3), and of those the ones
+    // the floating-point filter could not decide (witness_filter.hpp): the exact route measured
+    // them. A point shared with another variant counts for each.
+    int witnessPoints = 0, witnessExact = 0;
     // Plugin variants: how the implementation answered (Ok, or Refused with skipped set, or
     // Error / Crashed / Hung: failed, no errors measured) and how it died.
     PluginStatus plugin = PluginStatus::NotRun;

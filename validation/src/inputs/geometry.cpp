@@ -187,11 +187,47 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
     return r;
 }
 
+namespace
+{
+// max over pairs of std::hypot(p - q), with std::hypot (a libm call, the judging phase's largest
+// cost) only on the pairs that can hold the maximum. In double, with u = 2^-53, for the rounded
+// differences dx, dy that std::hypot is given: fl(dx^2 + dy^2) is within a relative 3u of
+// dx^2 + dy^2 (two squares, a sum; no overflow or underflow: the largest in [2^-900, 2^900]), and
+// std::hypot within 1 ulp (2u) of sqrt(dx^2 + dy^2). NaN squares keep their hypot. A pair
+// whose rounded square is below (1 - 2^-40) times the largest rounded square M is shorter, exactly,
+// by a relative 2^-41 at least, so its hypot is below the longest pair's: the pairs left out cannot
+// change the maximum, which stays the same double. Elsewhere every pair's hypot is taken.
+double largestDistance(const std::vector<gjk::Vec2<double>>& pa,
+                       const std::vector<gjk::Vec2<double>>& pb)
+{
+    double m = 0;
+    for (const auto& p : pa)
+        for (const auto& q : pb)
+        {
+            const double dx = p.x - q.x, dy = p.y - q.y;
+            m = std::max(m, dx * dx + dy * dy);
+        }
+    const bool filtered = m >= 0x1p-900 && m <= 0x1p900;
+    const double keep = m * (1 - 0x1p-40);
+    double w = 0;
+    for (const auto& p : pa)
+        for (const auto& q : pb)
+        {
+            const double dx = p.x - q.x, dy = p.y - q.y;
+            if (!filtered || !(dx * dx + dy * dy < keep))
+                w = std::max(w, std::hypot(dx, dy));
+        }
+    return w;
+}
+} // namespace
+
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
 {
     // Points of A and B~ in the compute frame: the world, or A's local frame through the true
     // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
     std::vector<gjk::Vec2<double>> pa, pb;
+    pa.reserve(a.points.size());
+    pb.reserve(b.points.size());
     const gjk::Transform<double> xa = xf(a), xb = xf(b);
     const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
     for (const auto& p : a.points)
@@ -202,23 +238,17 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     FrameScales s;
     double ia = 0, ib = 0;
     for (const auto& p : pa)
-    {
         ia = std::max({ia, std::abs(p.x), std::abs(p.y)});
-        s.A = std::max(s.A, std::hypot(p.x, p.y));
-    }
     for (const auto& p : pb)
-    {
         ib = std::max({ib, std::abs(p.x), std::abs(p.y)});
-        s.Bmapped = std::max(s.Bmapped, std::hypot(p.x, p.y));
-    }
+    // max |p| = max hypot(p - 0): x - 0 is x.
+    const std::vector<gjk::Vec2<double>> origin{{0, 0}};
+    s.A = largestDistance(pa, origin);
+    s.Bmapped = largestDistance(pb, origin);
     for (const auto& p : b.points)
         s.B = std::max(s.B, std::hypot(p[0], p[1]));
     if (double(pa.size()) * double(pb.size()) <= 1e6)
-    {
-        for (const auto& p : pa)
-            for (const auto& q : pb)
-                s.W = std::max(s.W, std::hypot(p.x - q.x, p.y - q.y));
-    }
+        s.W = largestDistance(pa, pb);
     else
         s.W = s.A + s.Bmapped;
     // World lengths: A's frame measures in units of |qA| (1 for a unit rotation), and B's own

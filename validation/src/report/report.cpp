@@ -382,6 +382,24 @@ std::string problemLine(const std::string& family, const std::string& name, cons
     std::string fam = family.size() > 28 ? family.substr(0, 25) + "..." : family;
     return fmt::format("  {:<28} {:<21} {:<19} {}\n", fam, name, what, detail);
 }
+
+// The witness checks' exact fallbacks over every family and variant (nothing for a report written
+// before the witness filter).
+std::string witnessFallbackLine(const Json& r)
+{
+    std::uint64_t points = 0, exact = 0;
+    for (const auto& f : r["families"])
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            points += count(st, "witness_points");
+            exact += count(st, "witness_exact");
+        }
+    if (points == 0)
+        return {};
+    return fmt::format("witness points: {} measured, {} by the exact route ({:.2f} %), the rest "
+                       "decided by the floating-point filter\n",
+                       points, exact, 100.0 * double(exact) / double(points));
+}
 } // namespace
 
 std::string terminalSummary(const Json& r)
@@ -437,6 +455,7 @@ std::string terminalSummary(const Json& r)
         t["gjk_cases_per_s"].get<double>(), e["gjk"].get<double>(), r["variants"].size(),
         t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
         e["timing"].get<double>());
+    s += witnessFallbackLine(r);
     s += fmt::format("result: {}; comparison variants: {} failure(s), shown, not judged\n",
                      resultText(r), comparisonFailures(r, judged));
     return s;

@@ -256,6 +256,9 @@ Json Stats::state() const
             p.push_back(this->*m);
         j["correct_paths"] = std::move(p);
     }
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::SinceWitnessFilter)
+            j[f.name] = this->*f.member;
     return j;
 }
 
@@ -267,6 +270,8 @@ Stats Stats::fromState(const Json& j)
     for (const CountField& f : kCountFields)
         if (f.section == Section::Top || f.section == Section::Interval ||
             (f.section == Section::SinceInvalid && sinceInvalid))
+            s.*f.member = j.at(f.name).get<std::uint64_t>();
+        else if (f.section == Section::SinceWitnessFilter && j.contains(f.name))
             s.*f.member = j.at(f.name).get<std::uint64_t>();
     for (const FlagField& f : kFlagFields)
         s.*f.member = j.at(f.name).get<bool>();
@@ -297,7 +302,8 @@ void writeCounts(const Stats& s, Json& j)
 {
     for (const CountField& f : kCountFields)
     {
-        if (f.section != Section::Top && f.section != Section::SinceInvalid)
+        if (f.section != Section::Top && f.section != Section::SinceInvalid &&
+            f.section != Section::SinceWitnessFilter)
             continue;
         j[f.name] = s.*f.member;
         if (f.member == &Stats::failures)
@@ -446,6 +452,8 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
         hung += v.plugin == PluginStatus::Hung ? 1 : 0;
         return; // no answer to measure
     }
+    witnessPoints += std::uint64_t(v.witnessPoints);
+    witnessExact += std::uint64_t(v.witnessExact);
     outOfRange += v.outOfRange ? 1 : 0;
     nonfinite += v.nonfinite ? 1 : 0;
     iterationLimit += v.iterationLimit ? 1 : 0;

@@ -98,6 +98,10 @@ struct Stats
     bool hasPaths = false;
     std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0,
                   bitMismatch = 0;
+    // Witness points measured (two per checked answer, four when an overlap's two common points
+    // are checked), and of those the ones the floating-point filter left to the exact route
+    // (evaluate/witness_filter.hpp).
+    std::uint64_t witnessPoints = 0, witnessExact = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
     Hist witnessRatio{-20, 40}; // max(witness, witness_gap) / witness bound; > 1: invalid
@@ -136,6 +140,7 @@ enum class Section : std::uint8_t
                   // it
     Interval,     // report: under "interval" (certified variants); state: top level
     Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
+    SinceWitnessFilter, // as Top in the report; state: last, absent from states written before it
 };
 
 struct CountField
@@ -163,6 +168,8 @@ inline constexpr CountField kCountFields[] = {
     {"plugin_errors", &Stats::pluginErrors, Section::Top, false},
     {"crashed", &Stats::crashed, Section::Top, false},
     {"hung", &Stats::hung, Section::Top, false},
+    {"witness_points", &Stats::witnessPoints, Section::SinceWitnessFilter, false},
+    {"witness_exact", &Stats::witnessExact, Section::SinceWitnessFilter, false},
     {"certified", &Stats::certified, Section::Interval, false},
     {"contains", &Stats::contains, Section::Interval, false},
     {"uncertified", &Stats::uncertified, Section::Interval, false},
