@@ -67,10 +67,19 @@ V add(const V& x, const V& y)
     V r;
     double s, t;
     twoSum(x.h, y.h, s, t);
-    if (isExact(x) && isExact(y))
-    {
-        r.h = s, r.l = t; // s + t == x + y exactly
-        return r;
+    if (x.e == 0 && y.e == 0)
+    { // Exact inputs: keep the sum exact when it fits in two doubles (a transformed point of
+      // float input does; values that are exactly doubles then round without a fallback).
+        double u, v, s2, t2, a, ea, b, eb;
+        twoSum(x.l, y.l, u, v);
+        twoSum(s, u, s2, t2);
+        twoSum(t, v, a, ea);
+        twoSum(a, t2, b, eb);
+        if (ea == 0 && eb == 0)
+        { // x + y == s2 + b exactly
+            twoSum(s2, b, r.h, r.l);
+            return r;
+        }
     }
     t += x.l + y.l;
     twoSum(s, t, r.h, r.l);
@@ -89,6 +98,8 @@ V sub(const V& x, const V& y)
 V mul(const V& x, const V& y)
 {
     V r;
+    if ((x.h == 0 && isExact(x)) || (y.h == 0 && isExact(y)))
+        return r; // an exact zero factor (an edge of the other shape in along())
     const double p = x.h * y.h;
     double t = std::fma(x.h, y.h, -p);
     if (isExact(x) && isExact(y) && (p == 0 || std::fabs(p) >= 0x1p-960))
@@ -160,7 +171,7 @@ bool roundTo(const V& v, double& out, int* side = nullptr)
     if (!std::isfinite(h) || !std::isfinite(l) || !std::isfinite(v.e))
         return false;
     if (v.e == 0 && l == 0)
-    { // exactly the double h
+    { // exactly the double h (zero and subnormals included)
         out = h == 0 ? 0.0 : h;
         if (side)
             *side = 0;
@@ -169,6 +180,13 @@ bool roundTo(const V& v, double& out, int* side = nullptr)
     const double a = std::fabs(h);
     if (!(a >= 0x1p-1000 && a <= 0x1p1000))
         return false;
+    if (v.e == 0)
+    { // exactly h + l, and h = RN(h + l) by twoSum, ties to even as MPFR's MPFR_RNDN
+        out = h;
+        if (side)
+            *side = l > 0 ? 1 : l < 0 ? -1 : 0;
+        return true;
+    }
     const double up = std::nextafter(h, HUGE_VAL) - h, down = h - std::nextafter(h, -HUGE_VAL);
     const double slack = 0x1p-50 * (std::fabs(l) + v.e); // covers the roundings of l +- e
     if (!(l + v.e + slack < up / 2 && l - v.e - slack > -down / 2))

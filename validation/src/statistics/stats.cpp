@@ -209,6 +209,16 @@ void copyExactly(std::array<T, N>& to, const Json& j, const char* what)
 constexpr std::uint64_t Stats::*kStatePathOrder[] = {&Stats::pathDouble, &Stats::pathDoubleDouble,
                                                      &Stats::pathExact, &Stats::bitMismatch,
                                                      &Stats::pathExtended};
+
+// The Truth rows, under "truth" in the report and in the state alike.
+Json truthJson(const Stats& s)
+{
+    Json t = Json::object();
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Truth)
+            t[f.name] = s.*f.member;
+    return t;
+}
 } // namespace
 
 void Stats::merge(const Stats& o)
@@ -249,6 +259,7 @@ Json Stats::state() const
     for (const HistField& f : kHistFields)
         if (f.section == Section::SinceInvalid)
             j[f.name] = (this->*f.member).state();
+    j["truth"] = truthJson(*this);
     if (hasPaths) // written only by correctly rounded variants (older states have none)
     {
         Json p = Json::array();
@@ -277,6 +288,10 @@ Stats Stats::fromState(const Json& j)
     copyExactly(s.stops, j.at("stops"), "stop reasons");
     if (sinceInvalid)
         copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
+    if (j.contains("truth")) // states written before the truth's counts have none
+        for (const CountField& f : kCountFields)
+            if (f.section == Section::Truth)
+                s.*f.member = j.at("truth").at(f.name).get<std::uint64_t>();
     if (j.contains("correct_paths"))
     {
         const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
@@ -364,6 +379,7 @@ Json Stats::toJson() const
         j["interval"] = intervalJson(*this);
     if (hasPaths)
         j["correct"] = correctJson(*this);
+    j["truth"] = truthJson(*this);
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)
         st[gjk::stopReasonName(gjk::StopReason(i))] = stops[std::size_t(i)];
@@ -383,6 +399,18 @@ namespace
 {
 // A query judged against the truth (not out of range): misclassification, bound, validity and,
 // when the answer is finite, its errors.
+// One case's truth: how the exact side decided it (exact::Fallbacks).
+void addTruth(Stats& s, const exact::Fallbacks& f)
+{
+    s.truthGmp += f.gmp ? 1 : 0;
+    s.truthHull += f.hull > 0 ? 1 : 0;
+    s.truthMerge += f.merge > 0 ? 1 : 0;
+    s.truthFeature += f.feature > 0 ? 1 : 0;
+    s.truthSquared += f.squared ? 1 : 0;
+    s.truthDistance += f.distance ? 1 : 0;
+    s.truthWitness += f.witness ? 1 : 0;
+}
+
 void addJudged(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index)
 {
     s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
@@ -438,6 +466,7 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
         return;
     }
     ++cases;
+    addTruth(*this, vi.scalar == Scalar::Float ? o.exactFloat.fallbacks : o.exact.fallbacks);
     failures += v.failed ? 1 : 0;
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
     {

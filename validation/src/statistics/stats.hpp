@@ -98,6 +98,11 @@ struct Stats
     bool hasPaths = false;
     std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0,
                   bitMismatch = 0;
+    // The truth this variant is judged against (exact::Fallbacks, docs/exact.md "The filter"):
+    // cases whose rounded outputs came from the GMP route, and cases with at least one exact
+    // decision of each kind (predicates decided by exact integers; roundings the filter left open).
+    std::uint64_t truthGmp = 0, truthHull = 0, truthMerge = 0, truthFeature = 0, truthSquared = 0,
+                  truthDistance = 0, truthWitness = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
     Hist witnessRatio{-20, 40}; // max(witness, witness_gap) / witness bound; > 1: invalid
@@ -136,6 +141,7 @@ enum class Section : std::uint8_t
                   // it
     Interval,     // report: under "interval" (certified variants); state: top level
     Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
+    Truth,        // report and state: under "truth" (absent from states written before it)
 };
 
 struct CountField
@@ -167,6 +173,13 @@ inline constexpr CountField kCountFields[] = {
     {"contains", &Stats::contains, Section::Interval, false},
     {"uncertified", &Stats::uncertified, Section::Interval, false},
     {"bit_mismatches", &Stats::bitMismatch, Section::Correct, false},
+    {"gmp_route", &Stats::truthGmp, Section::Truth, false},
+    {"hull", &Stats::truthHull, Section::Truth, false},
+    {"merge", &Stats::truthMerge, Section::Truth, false},
+    {"feature", &Stats::truthFeature, Section::Truth, false},
+    {"squared", &Stats::truthSquared, Section::Truth, false},
+    {"distance", &Stats::truthDistance, Section::Truth, false},
+    {"witness", &Stats::truthWitness, Section::Truth, false},
 };
 
 struct HistField
