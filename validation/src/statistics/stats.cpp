@@ -259,7 +259,6 @@ Json Stats::state() const
     for (const HistField& f : kHistFields)
         if (f.section == Section::SinceInvalid)
             j[f.name] = (this->*f.member).state();
-    j["truth"] = truthJson(*this);
     if (hasPaths) // written only by correctly rounded variants (older states have none)
     {
         Json p = Json::array();
@@ -267,6 +266,7 @@ Json Stats::state() const
             p.push_back(this->*m);
         j["correct_paths"] = std::move(p);
     }
+    j["truth"] = truthJson(*this); // last: the keys before it keep their order
     return j;
 }
 
@@ -379,7 +379,6 @@ Json Stats::toJson() const
         j["interval"] = intervalJson(*this);
     if (hasPaths)
         j["correct"] = correctJson(*this);
-    j["truth"] = truthJson(*this);
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)
         st[gjk::stopReasonName(gjk::StopReason(i))] = stops[std::size_t(i)];
@@ -388,6 +387,7 @@ Json Stats::toJson() const
     j["ns_spread"] = nsPerQuery >= 0 ? Json::array({nsMin, nsMax}) : Json(nullptr);
     j["timing_passes"] = timingPasses;
     j["ratio_to_baseline"] = ratioToBaseline >= 0 ? Json(ratioToBaseline) : Json(nullptr);
+    j["truth"] = truthJson(*this); // last: the keys before it keep their order
     return j;
 }
 

@@ -141,7 +141,7 @@ enum class Section : std::uint8_t
                   // it
     Interval,     // report: under "interval" (certified variants); state: top level
     Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
-    Truth,        // report and state: under "truth" (absent from states written before it)
+    Truth, // report and state: under "truth", the last key (absent from states written before it)
 };
 
 struct CountField
