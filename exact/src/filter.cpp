@@ -39,6 +39,40 @@ void twoSum(double a, double b, double& s, double& t) // s + t == a + b exactly 
     t = (a - (s - bb)) + (b - bb);
 }
 
+// The exact sum of t[0..n) (n <= 8) as h + l, when it fits in two doubles: Shewchuk's
+// GROW-EXPANSION (twoSum is exact, so the components' sum is the sum) leaves nonoverlapping
+// components; at most two nonzero ones are added by twoSum, exactly. More: false (not decided here).
+bool exactSum(const double* t, int n, double& h, double& l)
+{
+    double q[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        double x = t[i];
+        for (int j = 0; j < m; ++j)
+        {
+            double s, err;
+            twoSum(q[j], x, s, err);
+            q[j] = err;
+            x = s;
+        }
+        q[m++] = x;
+    }
+    double big = 0, small = 0;
+    int nonzero = 0;
+    for (int j = 0; j < m; ++j)
+        if (q[j] != 0)
+        {
+            small = big;
+            big = q[j];
+            ++nonzero;
+        }
+    if (nonzero > 2 || !std::isfinite(big))
+        return false;
+    twoSum(big, small, h, l);
+    return true;
+}
+
 V exactly(double a)
 {
     return {a, 0, 0};
@@ -70,16 +104,9 @@ V add(const V& x, const V& y)
     if (x.e == 0 && y.e == 0)
     { // Exact inputs: keep the sum exact when it fits in two doubles (a transformed point of
       // float input does; values that are exactly doubles then round without a fallback).
-        double u, v, s2, t2, a, ea, b, eb;
-        twoSum(x.l, y.l, u, v);
-        twoSum(s, u, s2, t2);
-        twoSum(t, v, a, ea);
-        twoSum(a, t2, b, eb);
-        if (ea == 0 && eb == 0)
-        { // x + y == s2 + b exactly
-            twoSum(s2, b, r.h, r.l);
+        const double terms[4] = {x.h, x.l, y.h, y.l};
+        if (exactSum(terms, 4, r.h, r.l))
             return r;
-        }
     }
     t += x.l + y.l;
     twoSum(s, t, r.h, r.l);
@@ -109,6 +136,23 @@ V mul(const V& x, const V& y)
             r.e = kEta; // the product underflowed to zero
         return r;
     }
+    if (x.e == 0 && y.e == 0)
+    { // Exact inputs: the four partial products exactly (fma), their sum when it fits in two
+      // doubles and no partial product can have underflowed (each nonzero one >= 2^-960).
+        double terms[8];
+        const double a[2] = {x.h, x.l}, b[2] = {y.h, y.l};
+        bool fine = true;
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+            {
+                const double pp = a[i] * b[j];
+                fine = fine && (pp == 0 ? a[i] == 0 || b[j] == 0 : std::fabs(pp) >= 0x1p-960);
+                terms[4 * i + 2 * j] = pp;
+                terms[4 * i + 2 * j + 1] = std::fma(a[i], b[j], -pp);
+            }
+        if (fine && exactSum(terms, 8, r.h, r.l))
+            return r;
+    }
     t += x.h * y.l + x.l * y.h;
     twoSum(p, t, r.h, r.l);
     r.e = (kRel * std::fabs(p) + mag(x) * y.e + mag(y) * x.e + x.e * y.e + kEta) * kUp;
@@ -128,6 +172,8 @@ V div(const V& x, const V& y)
     const V xh{x.h, x.l, 0}, yh{y.h, y.l, 0};
     const double q1 = x.h / y.h;
     const V r = sub(xh, mul(exactly(q1), yh));
+    if (x.e == 0 && y.e == 0 && isExact(r) && r.h == 0)
+        return exactly(q1); // x = q1 y exactly (an axis-aligned unit direction, t = 1/2)
     const double q2 = r.h / y.h;
     V out;
     twoSum(q1, q2, out.h, out.l);
@@ -148,6 +194,8 @@ V sqrtV(const V& x)
         return {0, 0, NAN};
     const double s1 = std::sqrt(x.h);
     const V r = sub(V{x.h, x.l, 0}, mul(exactly(s1), exactly(s1)));
+    if (x.e == 0 && isExact(r) && r.h == 0)
+        return exactly(s1); // x = s1^2 exactly: a rational square root (axis-aligned distances)
     const double s2 = r.h / (2 * s1);
     V out;
     twoSum(s1, s2, out.h, out.l);
@@ -231,11 +279,12 @@ P2 along(const P2& a, const P2& b, const V& t)
     return {add(a.x, mul(t, d.x)), add(a.y, mul(t, d.y))};
 }
 
-// What finish() rounds, in double-double: the hull points wa, wb, z = wa - wb, and q = |z|^2.
+// What finish() rounds, in double-double: the hull points wa, wb, z = wa - wb, q = |z|^2 and
+// s = sqrt(q) (separated only).
 struct Construction
 {
     P2 wa, wb, z;
-    V q;
+    V q, s;
 };
 
 Construction construct(const Feature& f, const P2* a, const P2* b)
@@ -247,6 +296,8 @@ Construction construct(const Feature& f, const P2* a, const P2* b)
         c.wb = b[0];
         c.z = sub(a[0], b[0]);
         c.q = dot(c.z, c.z);
+        if (!f.overlap)
+            c.s = sqrtV(c.q);
         return c;
     }
     const P2 zs[3] = {sub(a[0], b[0]), sub(a[1], b[1]), f.kind == Feature::Triangle
@@ -262,8 +313,13 @@ Construction construct(const Feature& f, const P2* a, const P2* b)
         if (!f.overlap)
         {
             c.z = along(zs[0], zs[1], t);
-            const V C = cross(zs[0], zs[1]);
+            // C = P x Q = P x (Q - P): the same value, and exact more often (an axis-aligned
+            // edge). sqrt(q) = |C| / sqrt(L): exact when L is a square and C / sqrt(L) a double
+            // (a vertex at a double's distance from an axis-aligned edge: the engine families).
+            const V C = cross(zs[0], d);
             c.q = div(mul(C, C), L);
+            c.s = std::fabs(C.h) * (1 - 0x1p-50) > C.e ? div(C.h < 0 ? neg(C) : C, sqrtV(L))
+                                                       : sqrtV(c.q);
         }
         return c;
     }
@@ -294,8 +350,9 @@ bool roundDistance(const V& s, double rA, double rB, Result& r)
     const V d = sub(s, add(exactly(rA), exactly(rB)));
     double h, l;
     twoSum(d.h, d.l, h, l);
-    if (h < 0 && (std::fabs(l) + d.e) * kUp < -h * (1 - 0x1p-50))
-    { // sqrt(q) < rA + rB: clamped
+    const bool exactNonPositive = d.e == 0 && (h < 0 || (h == 0 && l <= 0));
+    if (exactNonPositive || (h < 0 && (std::fabs(l) + d.e) * kUp < -h * (1 - 0x1p-50)))
+    { // sqrt(q) <= rA + rB: clamped
         r.distance = r.lower = r.upper = 0;
         return true;
     }
@@ -331,7 +388,7 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
     r.fallbacks.squared = !roundTo(c.q, r.squared) || !(r.squared > 0);
     if (r.fallbacks.squared)
         return false;
-    const V s = sqrtV(c.q);
+    const V& s = c.s;
     r.fallbacks.distance = !roundDistance(s, A.radius, B.radius, r);
     if (r.fallbacks.distance)
         return false;
