@@ -133,7 +133,8 @@ struct Stats
 // - derived fields written beside a row: "pass" after failures, "invalid_reasons" after invalid,
 //   "misses" after contains (stats.cpp, toJson);
 // - the state writes the Interval histograms before the others (StatsState's order);
-// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder).
+// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder);
+// - the Truth rows are the last key, "truth", of the report and of the state (issue 34).
 enum class Section : std::uint8_t
 {
     Top, // report: top level (a histogram: under "errors"); state: top level, in table order
