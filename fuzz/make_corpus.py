@@ -6,6 +6,7 @@
 fuzz/corpus/fuzz_case_file/: the case files under validation/cases/ and tests/validation/data/,
 the reproducers of the hardening against hostile inputs (among them an overflowed certified
 interval and warm and cold answers that differed, below) and hand-made bad files.
+fuzz/corpus/fuzz_truth/: six pseudo-random inputs of fuzz_truth's layout, one per kind of points.
 fuzz/corpus/fuzz_distance/: every case of validation/cases/, those two reproducers and
 shapes near 1e265 (they once left the simplex uninitialised), encoded in fuzz_distance's byte layout (fuzz_distance.cpp,
 `decode`) for a few option sets. Inputs the fuzzer found (reproducers of fixed bugs) are added by hand as
@@ -174,6 +175,26 @@ def distance_seeds():
     return seeds
 
 
+def truth_seeds():
+    """fuzz_truth's byte layout (fuzz/fuzz_truth.cpp): per shape a head byte (count, transform
+    kind) and a kind byte (point kind, radius), then numbers (a selector byte and its bytes),
+    pseudo-random from a fixed seed: one seed per point kind and transform kind."""
+    import random
+    rng = random.Random(34)
+    kinds = {"free-identity": (0x03, 0x00), "free-rotated": (0x13, 0x04),
+             "collinear-quarter-turn": (0x0C, 0x01), "duplicates-any-transform": (0x1D, 0x06),
+             "tiny-edges": (0x05, 0x07), "free-raw-bits": (0x17, 0x00)}
+    seeds = {}
+    for name, (head, kind) in kinds.items():
+        out = bytearray()
+        for _ in range(2):
+            out += bytes([head, kind])
+            for _ in range(40):
+                out += bytes([rng.randrange(5)]) + bytes(rng.randrange(256) for _ in range(9))
+        seeds[name] = bytes(out[:500])
+    return seeds
+
+
 def write(target, seeds):
     folder = os.path.join(CORPUS, target)
     if os.path.isdir(folder):
@@ -189,3 +210,4 @@ def write(target, seeds):
 if __name__ == "__main__":
     write("fuzz_case_file", case_file_seeds())
     write("fuzz_distance", distance_seeds())
+    write("fuzz_truth", truth_seeds())

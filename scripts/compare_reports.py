@@ -5,7 +5,7 @@
 
 Compares report.json with what legitimately changes between runs removed (the same fields as
 stripVolatile() in validation/src/campaign/verdict.cpp: date, host, threads, timings, command,
-revision), and the cases of worst-cases.json (names and inputs; its comments quote the command).
+revision; and how the truth was decided: the context's and the Stats' "truth"), and the cases of worst-cases.json (names and inputs; its comments quote the command).
 Prints the first differences and exits 1 when there are any, 0 when the two are the same.
 """
 import json
@@ -13,17 +13,20 @@ import sys
 
 CONTEXT_VOLATILE = ["date", "host", "threads", "elapsed_s", "throughput", "command", "git_revision"]
 STATS_VOLATILE = ["ns_per_query", "ns_spread", "ratio_to_baseline", "timing_passes"]
+# How the truth was decided, not what it is (--truth filtered and exact give the same truths, bit
+# for bit; docs/exact.md, "The filter"): the context's "truth" and the Stats' "truth" counts.
+TRUTH_PATH = "truth"
 
 
 def stripped(report):
-    for k in CONTEXT_VOLATILE:
+    for k in CONTEXT_VOLATILE + [TRUTH_PATH]:
         report["context"].pop(k, None)
     for entry in report["context"]["inputs"]:  # the same files in another checkout
         if "file" in entry:
             entry["file"] = entry["file"].rsplit("/", 1)[-1]
     for family in report["families"]:
         for stats in family["variants"].values():
-            for k in STATS_VOLATILE:
+            for k in STATS_VOLATILE + [TRUTH_PATH]:
                 stats.pop(k, None)
     return report
 

@@ -2,7 +2,8 @@
 # Builds the libFuzzer targets (fuzz/, docs/fuzzing.md) with clang-14 under ASan + UBSan in
 # build/fuzz and runs each for SECONDS_PER_TARGET seconds (default 60), one after the other, one
 # process each, starting from a scratch copy of the committed corpus fuzz/corpus/<target>/.
-#   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (targets: fuzz_case_file fuzz_distance; default both)
+#   scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]   (targets: fuzz_case_file fuzz_distance
+#   fuzz_truth; default all)
 # Prints per target the inputs run (libFuzzer's stat::number_of_executed_units) and the seconds.
 # Exit codes: 0 no finding; 1 a finding (the input is saved under build/fuzz/findings/<target>/,
 # the log under build/fuzz/logs/); 2 bad argument; 3 missing packages (scripts/setup.sh).
@@ -11,14 +12,14 @@ cd "$(dirname "$0")/.."
 
 seconds="${1:-60}"
 targets=("${@:2}")
-[[ ${#targets[@]} -eq 0 ]] && targets=(fuzz_case_file fuzz_distance)
+[[ ${#targets[@]} -eq 0 ]] && targets=(fuzz_case_file fuzz_distance fuzz_truth)
 if ! [[ "$seconds" =~ ^[1-9][0-9]{0,6}$ ]]; then
   echo "usage: scripts/fuzz.sh [SECONDS_PER_TARGET [TARGET...]]  (a positive integer, default 60)" >&2
   exit 2
 fi
 for target in "${targets[@]}"; do
-  if [[ "$target" != fuzz_case_file && "$target" != fuzz_distance ]]; then
-    echo "scripts/fuzz.sh: unknown target '$target' (fuzz_case_file, fuzz_distance)" >&2
+  if [[ "$target" != fuzz_case_file && "$target" != fuzz_distance && "$target" != fuzz_truth ]]; then
+    echo "scripts/fuzz.sh: unknown target '$target' (fuzz_case_file, fuzz_distance, fuzz_truth)" >&2
     exit 2
   fi
 done
@@ -33,7 +34,8 @@ cmake --build build/fuzz -j 2 --target "${targets[@]}"
 
 # Longest input per target: a case file up to 8 KiB (the committed ones are below); a distance
 # query needs at most 2 + 2 * 418 bytes (20 points of raw doubles per shape).
-declare -A max_len=([fuzz_case_file]=8192 [fuzz_distance]=1024)
+# fuzz_truth: two shapes of up to 8 points, each number at most 9 bytes.
+declare -A max_len=([fuzz_case_file]=8192 [fuzz_distance]=1024 [fuzz_truth]=512)
 
 scratch=$(mktemp -d "${TMPDIR:-/tmp}/gjk2d-fuzz.XXXXXX")
 trap 'rm -rf "$scratch"' EXIT

@@ -8,6 +8,9 @@
 //     hull-of-differences (O(nm log nm)) stops at 256; minkowski-sum-2 stops at 1024.
 //   Small/<route>: the validation runner's workload: a fixed set of 1024 random pairs of 3-8 point
 //     shapes (random points, transforms, radii; about 15% overlapping), one case per iteration.
+//     Counter "gmp": the share of cases that took the GMP route. Small/edge-merge+gmp is the
+//     default route without its filter (Options::filter = false); Small/edge-merge-no-squared
+//     leaves the squared rational out (Options::squaredRational = false).
 #include <exact/exact.hpp>
 
 #include <benchmark/benchmark.h>
@@ -97,13 +100,15 @@ std::vector<std::pair<exact::Shape, exact::Shape>> smallCases()
 void small(benchmark::State& state, exact::Options o)
 {
     static const auto cases = smallCases();
-    std::size_t k = 0;
+    std::size_t k = 0, gmp = 0;
     for (auto _ : state)
     {
         const auto& c = cases[k++ % cases.size()];
         exact::Result r = exact::distance(c.first, c.second, o);
+        gmp += r.fallbacks.gmp;
         benchmark::DoNotOptimize(r.distance);
     }
+    state.counters["gmp"] = k ? double(gmp) / double(k) : 0.0; // share of cases on the GMP route
 }
 
 void bruteForceSmall(benchmark::State& state)
@@ -141,6 +146,14 @@ const int registered = []
     exact::Options witnesses;
     witnesses.exactWitnesses = true;
     benchmark::RegisterBenchmark("Small/edge-merge+exact-witnesses", small, witnesses)
+        ->Unit(benchmark::kMicrosecond);
+    exact::Options gmp; // the default route without its filter (--truth exact)
+    gmp.filter = false;
+    benchmark::RegisterBenchmark("Small/edge-merge+gmp", small, gmp)
+        ->Unit(benchmark::kMicrosecond);
+    exact::Options noSquared; // what the runner asks for without --per-case
+    noSquared.squaredRational = false;
+    benchmark::RegisterBenchmark("Small/edge-merge-no-squared", small, noSquared)
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Small/brute-force", bruteForceSmall)
         ->Unit(benchmark::kMicrosecond);

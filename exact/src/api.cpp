@@ -78,12 +78,13 @@ Result distance(const Shape& a, const Shape& b, const Options& options)
         e = detail::minkowskiSum2(a, b);
         break;
     case Route::EdgeMerge:
-        e = detail::edgeMerge(a, b);
-        break;
+        return detail::edgeMergeResult(a, b, options);
     default:
         throw std::invalid_argument("exact: unknown route");
     }
-    return detail::finish(e, a.radius, b.radius, options.exactWitnesses);
+    Result r = detail::finish(e, a.radius, b.radius, options.exactWitnesses);
+    r.fallbacks.gmp = true;
+    return r;
 }
 
 double pointToShapeDistance(const Shape& shape, Point p)
@@ -92,7 +93,9 @@ double pointToShapeDistance(const Shape& shape, Point p)
         throw std::invalid_argument("exact: non-finite query point");
     Shape q;
     q.points = {p};
-    return distance(q, shape).distance; // max(0, dist(p, hull) - 0 - radius)
+    Options o;
+    o.squaredRational = false; // only the distance is read
+    return distance(q, shape, o).distance; // max(0, dist(p, hull) - 0 - radius)
 }
 
 } // namespace exact

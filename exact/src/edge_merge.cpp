@@ -215,6 +215,7 @@ struct Side
     std::vector<I> x, y;
     std::vector<E2> ex;
     std::vector<char> have;
+    int exactDecisions = 0; // comparisons and orientations the intervals left to exact()
 
     void init(const Shape& s)
     {
@@ -254,6 +255,7 @@ struct Side
             return 1;
         if (x[i].is_point() && x[j].is_point())
             return 0; // equal points: exactly equal
+        ++exactDecisions;
         const E2 &a = exact(i), &b = exact(j);
         return cmpCoord(a.x, a.e, b.x, b.e);
     }
@@ -265,6 +267,7 @@ struct Side
             return 1;
         if (y[i].is_point() && y[j].is_point())
             return 0;
+        ++exactDecisions;
         const E2 &a = exact(i), &b = exact(j);
         return cmpCoord(a.y, a.e, b.y, b.e);
     }
@@ -283,6 +286,7 @@ struct Side
         const int s = sign((x[j] - x[i]) * (y[k] - y[i]) - (y[j] - y[i]) * (x[k] - x[i]));
         if (s != kUnsure)
             return s;
+        ++exactDecisions;
         const E2& p = exact(i);
         return crossSignE(sub(exact(j), p), sub(exact(k), p));
     }
@@ -332,20 +336,40 @@ class Solver
   public:
     Solver(const Shape& a, const Shape& b) : a_(a), b_(b) {}
 
-    ExactResult run()
+    ExactResult run() { return build(locateFeature()); }
+
+    // The filtered result (Options::filter): the rounded outputs in double-double where the bound
+    // decides them, with the exact squared distance from the feature; else build() and finish().
+    Result runFiltered(const Options& options)
     {
-        Feature f;
+        const Feature f = locateFeature();
+        Result r;
+        if (!options.exactWitnesses)
         {
-            I::Protector
-                protect; // round upward for the interval filters; restored at the end of scope
-            A.init(a_);
-            B.init(b_);
-            ha = A.hull();
-            hb = B.hull();
-            merge();
-            f = locate(static_cast<int>(za.size()), *this);
+            const int ids[3] = {f.i, f.j, f.l};
+            Point as[3], bs[3];
+            for (int t = 0; t < 3; ++t)
+            {
+                as[t] = a_.points[za[ids[t]]];
+                bs[t] = b_.points[zb[ids[t]]];
+            }
+            if (filteredFinish(f, a_, b_, as, bs, r))
+            {
+                if (options.squaredRational)
+                {
+                    const mpq_class q = squared(f);
+                    r.squaredNum = q.get_num().get_str();
+                    r.squaredDen = q.get_den().get_str();
+                }
+                r.fallbacks = counts(r.fallbacks);
+                return r;
+            }
         }
-        return build(f);
+        Fallbacks undecided = r.fallbacks;
+        r = finish(build(f), a_.radius, b_.radius, options.exactWitnesses);
+        r.fallbacks = counts(undecided);
+        r.fallbacks.gmp = true;
+        return r;
     }
 
     // ---- locate() interface: Z vertex k is A point za[k] minus B point zb[k].
@@ -354,6 +378,7 @@ class Solver
         const int s = sign(zx[i] * zy[j] - zy[i] * zx[j]);
         if (s != kUnsure)
             return s;
+        ++featureExact;
         return crossSignE(z(i), z(j));
     }
     int dotSign(int i, int j)
@@ -361,6 +386,7 @@ class Solver
         const int s = sign(zx[i] * (zx[j] - zx[i]) + zy[i] * (zy[j] - zy[i]));
         if (s != kUnsure)
             return -s;
+        ++featureExact;
         const E2& p = z(i);
         return -dotSignE(p, sub(z(j), p));
     }
@@ -371,6 +397,7 @@ class Solver
             return false;
         if (sx == 0 && sy == 0)
             return true;
+        ++featureExact;
         const E2& p = z(i);
         return sgn(p.x) == 0 && sgn(p.y) == 0;
     }
@@ -379,6 +406,44 @@ class Solver
     const Shape& a_;
     const Shape& b_;
     Side A, B;
+    int mergeExact = 0, featureExact = 0; // predicates the intervals left to exact integers
+
+    Feature locateFeature()
+    {
+        I::Protector protect; // round upward for the interval filters; restored at the end of scope
+        A.init(a_);
+        B.init(b_);
+        ha = A.hull();
+        hb = B.hull();
+        merge();
+        return locate(static_cast<int>(za.size()), *this);
+    }
+
+    Fallbacks counts(Fallbacks f) const
+    {
+        f.hull = A.exactDecisions + B.exactDecisions;
+        f.merge = mergeExact;
+        f.feature = featureExact;
+        return f;
+    }
+
+    // The exact squared distance of the located feature alone (what build() puts in `squared`).
+    mpq_class squared(const Feature& f)
+    {
+        if (f.overlap)
+            return 0;
+        if (f.kind == Feature::Vertex)
+        {
+            const E2& p = z(f.i);
+            return toQ(mpz_class(p.x * p.x + p.y * p.y), 2 * p.e);
+        }
+        const E2 &P = z(f.i), &Q = z(f.j);
+        const E2 D = sub(Q, P);
+        const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
+        const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
+        const mpz_class C = px * qy - py * qx;
+        return toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true);
+    }
     std::vector<int> ha, hb;
     std::vector<int> za, zb; // per Z vertex: index of the A point and of the B point
     std::vector<I> zx, zy;
@@ -410,6 +475,7 @@ class Solver
         int sc = sign(ux * wy - uy * wx);
         if (sux == kUnsure || suy == kUnsure || swx == kUnsure || swy == kUnsure || sc == kUnsure)
         {
+            ++mergeExact;
             const E2 u = sub(A.exact(i2), A.exact(i1));
             const E2 w = sub(B.exact(j1), B.exact(j2));
             sux = sgn(u.x);
@@ -581,6 +647,15 @@ class Solver
 ExactResult edgeMerge(const Shape& a, const Shape& b)
 {
     return Solver(a, b).run();
+}
+
+Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
+{
+    if (options.filter)
+        return Solver(a, b).runFiltered(options);
+    Result r = finish(edgeMerge(a, b), a.radius, b.radius, options.exactWitnesses);
+    r.fallbacks.gmp = true;
+    return r;
 }
 
 } // namespace exact::detail

@@ -199,9 +199,13 @@ void roundDistanceImpl(const mpq_class& q, double rA, double rB, const mpq_class
         double out;
         if (agree(v, out))
         {
-            value = out;
+            // The value is irrational, so the tight enclosure is two adjacent doubles: go on
+            // until the interval says which two (the filter, filter.cpp, gives the same ones).
             lower = mpfr_get_d(v.lo.v, MPFR_RNDD);
             upper = mpfr_get_d(v.hi.v, MPFR_RNDU);
+            if (std::isfinite(upper) && upper != std::nextafter(lower, HUGE_VAL))
+                continue;
+            value = out;
             if (lower < 0)
                 lower = 0;
             return;

@@ -41,6 +41,10 @@ std::string toString(const mpq_class& q); // "num" or "num/den"
 
 // The three routes. Inputs are validated by the caller.
 ExactResult edgeMerge(const Shape& a, const Shape& b);
+// Route EdgeMerge to the end: with options.filter, the rounded outputs from filteredFinish() where
+// it decides them and the exact squared distance from the located feature; otherwise (and when
+// it does not decide) edgeMerge() and finish(). Fills Result::fallbacks.
+Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options);
 ExactResult hullOfDifferences(const Shape& a, const Shape& b);
 ExactResult minkowskiSum2(const Shape& a, const Shape& b);
 
@@ -166,6 +170,14 @@ template <class Pr> Feature locate(int k, Pr& pr)
             return locateOutside(k, e, pr);
     return locateInside(k, pr);
 }
+
+// filter.cpp: the rounded fields of Result (overlap, squared, distance, lower, upper, witnesses;
+// not the squared rational's strings) for located feature f, whose 1 to 3 vertices (as construct()
+// below) are the differences of input points as[t] of A and bs[t] of B, computed in double-double
+// with an error bound. True when every rounding is decided; false otherwise, with
+// r.fallbacks.{squared, distance, witness} saying which was not.
+bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
+                    const Point* bs, Result& r);
 
 // Builds the exact result from a located feature, given for each of the feature's vertices (in the
 // order i, j, l; 1, 2 or 3 of them as the kind needs) the exact Z vertex zs[], and the hull points

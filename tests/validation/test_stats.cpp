@@ -307,6 +307,7 @@ TEST_CASE("every row of the Stats tables merges, survives the state and reaches 
         INFO(f.name);
         const Json& at = f.section == Section::Interval  ? j["interval"]
                          : f.section == Section::Correct ? j["correct"]
+                         : f.section == Section::Truth   ? j["truth"]
                                                          : j;
         CHECK(at[f.name] == 101 * k++);
     }
@@ -366,7 +367,13 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "ns_per_query",
                                            "ns_spread",
                                            "timing_passes",
-                                           "ratio_to_baseline"});
+                                           "ratio_to_baseline",
+                                           "truth"}); // issue 34: appended
+    std::vector<std::string> truth;
+    for (const auto& [key, _] : j["truth"].items())
+        truth.push_back(key);
+    CHECK(truth == std::vector<std::string>{"gmp_route", "hull", "merge", "feature", "squared",
+                                            "distance", "witness"});
     CHECK(errors == std::vector<std::string>{"abs", "rel", "ulps", "normalized", "bound_ratio",
                                              "witness", "witness_gap", "witness_ratio",
                                              "input_rounding"});
@@ -426,7 +433,8 @@ TEST_CASE("the shard state's keys keep their order", "[stats]")
                                            "witness_ratio",
                                            "correct_paths",
                                            "witness_points",
-                                           "witness_exact"});
+                                           "witness_exact",
+                                           "truth"}); // issue 34: appended
     s.pathDouble = 1;
     s.pathDoubleDouble = 2;
     s.pathExact = 3;

@@ -55,16 +55,35 @@ struct ExactPoint
     std::string x, y;
 };
 
+// How the default route (EdgeMerge) decided one case (docs/exact.md, "The filter"). Every
+// predicate is first evaluated in interval arithmetic; the counts say how many fell back to exact
+// integers. The rounded outputs are first computed in double-double with an error bound; each
+// flag says which rounding the bound could not decide, and then the case took the GMP
+// construction and MPFR rounding (`gmp`). The other routes and Options::filter = false set `gmp`
+// and nothing else.
+struct Fallbacks
+{
+    int hull = 0;    // hull comparisons and orientation signs decided exactly
+    int merge = 0;   // edge-angle comparisons of the Minkowski edge merge decided exactly
+    int feature = 0; // closest-feature and overlap predicates decided exactly
+    bool squared = false;  // the rounded squared distance was undecided
+    bool distance = false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
+    bool witness = false;  // a rounded witness coordinate was undecided
+    bool gmp = false;      // the rounded outputs came from the GMP/MPFR route
+};
+
 struct Result
 {
     bool overlap = false; // exact: origin inside or on boundary of hull(A) - hull(B) (before radii)
     std::string squaredNum, squaredDen; // exact squared distance between the hulls (before radii),
-                                        // lowest terms, den > 0
+                                        // lowest terms, den > 0 (empty only when not asked for:
+                                        // Options::squaredRational)
     double squared = 0;  // that rational rounded to nearest double (may be +inf above DBL_MAX)
     double distance = 0; // correctly rounded (to nearest) max(0, sqrt(squared) - rA - rB)
     double lower = 0,
            upper = 0; // enclosing doubles of that exact value, lower <= distance <= upper
-                      // (finite unless the exact value exceeds DBL_MAX, then upper = +inf)
+                      // (finite unless the exact value exceeds DBL_MAX, then upper = +inf);
+                      // tight: equal when the exact value is a double, else adjacent
     Point witnessA,
         witnessB; // closest points, world frame, each coordinate correctly rounded to nearest.
                   // With radii: moved by the radius along the unit direction from the hull point
@@ -74,12 +93,21 @@ struct Result
     bool hasExactWitnesses = false;
     ExactPoint exactWitnessA,
         exactWitnessB; // the hull (radius-free) closest points, exact, only when requested
+    Fallbacks fallbacks; // how the case was decided; not part of the truth
 };
 
 struct Options
 {
     Route route = Route::Default;
     bool exactWitnesses = false;
+    // EdgeMerge only: decide the rounded outputs in double-double with an error bound where it can
+    // (the same results bit for bit). false forces the GMP construction and MPFR rounding for
+    // every case (`--truth exact`), for checking.
+    bool filter = true;
+    // false: where the filter decided, leave squaredNum and squaredDen empty (the rational costs
+    // a gcd and two decimal conversions, as much as the rest of the filtered case). For callers
+    // that never read it (the runner without --per-case); the GMP route fills it regardless.
+    bool squaredRational = true;
 };
 
 // Throws std::invalid_argument for invalid input (no points, NaN or infinite values, negative

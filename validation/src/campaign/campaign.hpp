@@ -36,7 +36,8 @@ struct CampaignConfig
     std::vector<const VariantInfo*> variants;
     int threads = 0; // 0: all cores
     exact::Route route = exact::Route::Default;
-    bool progress = false; // progress bar on stderr
+    bool truthFilter = true; // --truth filtered (exact::Options::filter); false: --truth exact
+    bool progress = false;   // progress bar on stderr
     bool timing = true;
     int minPasses = 5, maxPasses = 15;
     double timingBudgetSeconds = 0.5; // per family and variant, once minPasses are done

@@ -54,6 +54,10 @@ EvalContext evalContext(const CampaignConfig& config)
     EvalContext ctx;
     ctx.variants = config.variants;
     ctx.exactOptions.route = config.route;
+    ctx.exactOptions.filter = config.truthFilter;
+    // The squared rational is read only by case details (perCaseJson), which ask for it when it
+    // was left out: cases.jsonl has every case's, so it is computed at once there.
+    ctx.exactOptions.squaredRational = config.perCase;
     ctx.pluginTimeoutSeconds = config.pluginTimeoutSeconds;
     return ctx;
 }

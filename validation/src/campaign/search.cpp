@@ -351,6 +351,7 @@ class Search
           baseSeed_(mix64(config.seed ^ hashString("gjk-validate search")))
     {
         ctx_.variants = config.variants;
+        ctx_.exactOptions.filter = config.truthFilter;
         res_.threads = resolveThreads(config.threads);
         res_.startBest.assign(nv_, kNaN);
         res_.best.assign(nv_, kNaN);

@@ -28,6 +28,7 @@ struct SearchConfig
     int population = 32;           // K: the best cases kept (at most K/4 from one start case)
     int batch = 64;                // candidates per generation (fixed: not the thread count)
     bool progress = false;         // a line on stderr per improvement
+    bool truthFilter = true;       // --truth (exact::Options::filter)
     std::string command;
 };
 

@@ -185,6 +185,7 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
     Json context = contextJson(date, revision, config.command, config.seed, threads,
                                std::move(inputs), cases, rejected);
     context["exact_route"] = exact::routeName(config.route);
+    context["truth"] = config.truthFilter ? "filtered" : "exact";
     context["plugins"] = pluginsJson(config.variants);
     context["elapsed_s"] = {{"generate", t.inputs}, {"exact", t.exact},   {"gjk", t.gjk},
                             {"witness", t.witness}, {"timing", t.timing}, {"total", totalSeconds}};

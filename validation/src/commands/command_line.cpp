@@ -49,6 +49,13 @@ exact::Route parseRouteOrThrow(const std::string& name)
     return r;
 }
 
+bool parseTruthOrThrow(const std::string& name)
+{
+    if (name == "filtered" || name == "exact")
+        return name == "filtered";
+    throw InputError(fmt::format("--truth {}: expected filtered or exact", excerpt(name)));
+}
+
 void checkArgsUtf8(int argc, char** argv)
 {
     for (int i = 1; i < argc; ++i)

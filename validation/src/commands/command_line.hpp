@@ -131,6 +131,12 @@ void checkArgsUtf8(int argc, char** argv);
 // A seed: decimal digits only, 0 .. 2^64 - 1 (no sign: strtoull would wrap "-1" to 2^64 - 1).
 std::uint64_t parseSeed(const std::string& text);
 exact::Route parseRouteOrThrow(const std::string& name);
+// --truth: "filtered" (the default route's filter where it decides, exact::Options::filter) is
+// true, "exact" (the GMP route for every case, for checking) false; InputError otherwise.
+bool parseTruthOrThrow(const std::string& name);
+inline constexpr const char* kTruthHelp =
+    "filtered (default: floating point with an error bound, GMP where it cannot decide) or exact "
+    "(GMP for every case, for checking; the same results)";
 void checkRange(const char* option, int value, int lo, int hi);
 void checkComments(const std::vector<std::string>& comments);
 // Case files: each readable, none given twice (also not under two paths).

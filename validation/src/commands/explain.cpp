@@ -44,6 +44,7 @@ namespace fs = std::filesystem;
 struct Options
 {
     std::vector<std::string> exPositional;
+    std::string exTruth = "filtered";
     std::string exName, exFamily, exJson, exHtml, exVariants = "all", exRoute = "default",
                                                   exSeed = "1";
     PluginOptions plugins;
@@ -79,6 +80,7 @@ EvalContext checkedContext(const Options& o, const std::string& exFile, CLI::App
     ctx.variants = selectVariants(o.exVariants, o.plugins, ShippedPlugins::OnlyNamed);
     ctx.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     ctx.exactOptions.route = parseRouteOrThrow(o.exRoute);
+    ctx.exactOptions.filter = parseTruthOrThrow(o.exTruth);
     if (!o.exFamily.empty())
         checkFamilies({o.exFamily}, false);
     else
@@ -188,6 +190,7 @@ Subcommand addExplain(CLI::App& app, const CommandLine& line)
     ex->add_option("--variants", o->exVariants, "variants to run")->capture_default_str();
     addPluginOptions(*ex, o->plugins, ShippedPlugins::OnlyNamed);
     ex->add_option("--exact-route", o->exRoute, "exact construction")->capture_default_str();
+    ex->add_option("--truth", o->exTruth, kTruthHelp)->capture_default_str();
     ex->add_option("--json", o->exJson,
                    "write the CaseDetail JSON (docs/report-schema.md) to this file");
     ex->add_option("--html", o->exHtml, "write the iteration viewer page to this file");

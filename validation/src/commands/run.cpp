@@ -34,7 +34,7 @@ struct RunOptions
     CampaignConfig config;
     std::vector<std::string> families, files;
     std::string variants = kDefaultVariants, outDir = "reports/latest/", route = "default",
-                seed = "1";
+                seed = "1", truth = "filtered";
     std::size_t chunkCases = kDefaultChunkCases;
     bool noProgress = false, noTiming = false, verbose = false, defaultCases = false;
     std::string shard; // "I/N"
@@ -63,6 +63,7 @@ CampaignConfig checkedConfig(RunOptions& o, const CommandLine& line)
     cfg.variants = selectVariants(o.variants, o.plugins, ShippedPlugins::JoinDefaultList);
     cfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     cfg.route = parseRouteOrThrow(o.route);
+    cfg.truthFilter = parseTruthOrThrow(o.truth);
     checkRange("--threads", cfg.threads, 0, kMaxThreads);
     checkRange("--passes", cfg.maxPasses, 1, kMaxPasses);
     checkRange("--worst", cfg.worstPerFamily, 0, kMaxWorst);
@@ -373,6 +374,7 @@ void addEvaluationOptions(CLI::App* run, RunOptions& o)
     run->add_option("--exact-route", o.route,
                     "exact construction: edge-merge, hull-of-differences, minkowski-sum-2")
         ->capture_default_str();
+    run->add_option("--truth", o.truth, kTruthHelp)->capture_default_str();
     run->add_option("--passes", cfg.maxPasses,
                     "maximum timed passes per family and variant, 1..1000 (at least 5 are run "
                     "unless fewer are asked)")

@@ -21,6 +21,7 @@ struct Options
     SearchConfig scfg;
     std::vector<std::string> searchFamilies, searchFiles;
     std::string searchVariants = "double,float", searchSeed = "1", searchOut, searchJson;
+    std::string searchTruth = "filtered";
     std::uint64_t searchEvaluations = 0;
     double searchSeconds = 0;
     bool searchVerbose = false, searchNoProgress = false;
@@ -29,6 +30,7 @@ struct Options
 int searchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.scfg.seed = parseSeed(o.searchSeed);
+    o.scfg.truthFilter = parseTruthOrThrow(o.searchTruth);
     o.scfg.variants = parseVariants(o.searchVariants);
     o.scfg.command = line.text();
     if (o.searchFamilies.empty() && o.searchFiles.empty())
@@ -94,6 +96,7 @@ Subcommand addSearch(CLI::App& app, const CommandLine& line)
                        "budget: case evaluations (start cases included), 1..1e9");
     search->add_option("--seconds", o->searchSeconds,
                        "budget: wall time in seconds, checked between generations, > 0");
+    search->add_option("--truth", o->searchTruth, kTruthHelp)->capture_default_str();
     search->add_option("--population", o->scfg.population, "best cases kept, 1..1000")
         ->capture_default_str();
     search->add_option("--out", o->searchOut,

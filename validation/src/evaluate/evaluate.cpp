@@ -786,6 +786,21 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
 
 } // namespace
 
+namespace
+{
+// The exact result of a case detail, with its squared rational: the campaign leaves it out where
+// the filter decided (exact::Options::squaredRational), so it is asked for here, for the few
+// cases whose details are written (the filter is deterministic: the same result, bit for bit).
+Json truthDetail(const Case& c, const EvalContext& ctx, const exact::Result& r, bool floatInput)
+{
+    if (!r.squaredNum.empty())
+        return exactDetail(r);
+    exact::Options o = ctx.exactOptions;
+    o.squaredRational = true;
+    return exactDetail(ctx.truth(toExact(c.a, floatInput), toExact(c.b, floatInput), o));
+}
+} // namespace
+
 // A cases.jsonl line, and what a CaseDetail starts from: name, family, and either the reason the
 // case was rejected or the exact results and each variant's result.
 Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
@@ -799,10 +814,10 @@ Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ct
         j["rejected"] = o.rejected;
         return j;
     }
-    j["exact"] = exactDetail(o.exact);
+    j["exact"] = truthDetail(c, ctx, o.exact, false);
     if (o.hasFloatTruth)
     {
-        j["exact_float_input"] = exactDetail(o.exactFloat);
+        j["exact_float_input"] = truthDetail(c, ctx, o.exactFloat, true);
         j["input_rounding"] = num(o.inputRounding);
     }
     Json vs = Json::object();

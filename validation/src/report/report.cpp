@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 
 namespace gjkval
 {
@@ -108,7 +109,7 @@ std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& ju
     s += "| | |\n|---|---|\n";
     for (const char* k :
          {"date", "host", "compiler", "flags", "build_type", "batch_isa", "git_revision", "command",
-          "seed", "threads", "cases_total", "cases_rejected", "exact_route"})
+          "seed", "threads", "cases_total", "cases_rejected", "exact_route", "truth"})
         if (c.contains(k))
             s += fmt::format("| {} | `{}` |\n", k, mdEscape(g(c[k], "{}")));
     if (c.contains("elapsed_s"))
@@ -219,8 +220,45 @@ std::string correctPathsLine(const std::string& name, const Json& st)
                        fmt::join(shares, ", "), u(st["correct"]["bit_mismatches"]));
 }
 
+// The truth's fallbacks (Stats' Truth rows, docs/exact.md "The filter") summed over `families`,
+// read from the first variant of each type: every variant of a type is judged against the same
+// truths (of the input as given, or rounded to float). Reports from before the rows have none.
+std::string truthLines(const Json& r, const std::vector<const Json*>& families)
+{
+    std::string s;
+    std::set<std::string> types;
+    for (const auto& v : r["variants"])
+    {
+        const std::string type = v["type"].get<std::string>(), name = v["name"].get<std::string>();
+        if (!types.insert(type).second)
+            continue;
+        std::map<std::string, std::uint64_t> sum;
+        std::uint64_t cases = 0;
+        for (const Json* f : families)
+        {
+            const Json& vs = (*f)["variants"];
+            if (!vs.contains(name) || !vs[name].contains("truth"))
+                continue;
+            cases += vs[name]["cases"].get<std::uint64_t>();
+            for (const auto& [k, n] : vs[name]["truth"].items())
+                sum[k] += n.get<std::uint64_t>();
+        }
+        if (cases == 0)
+            continue;
+        std::vector<std::string> parts;
+        for (const CountField& f : kCountFields)
+            if (f.section == Section::Truth && f.member != &Stats::truthGmp)
+                parts.push_back(fmt::format("{} {}", f.name, sum[f.name]));
+        s += fmt::format("truth of the {} input: GMP route on {} of {} cases ({:.3g} %); cases with "
+                         "an exact decision: {}\n",
+                         type, sum["gmp_route"], cases,
+                         100.0 * double(sum["gmp_route"]) / double(cases), fmt::join(parts, ", "));
+    }
+    return s;
+}
+
 // One family: verdict, reason, make-up checks, the table of variants and the correct paths' shares.
-std::string familyMarkdown(const Json& f, const std::map<std::string, bool>& judged)
+std::string familyMarkdown(const Json& r, const Json& f, const std::map<std::string, bool>& judged)
 {
     std::string s = fmt::format(
         "\n### {} — {} ({} cases{})\n\n", f["name"].get<std::string>(),
@@ -248,6 +286,9 @@ std::string familyMarkdown(const Json& f, const std::map<std::string, bool>& jud
     for (const auto& [name, st] : f["variants"].items())
         if (st.contains("correct"))
             s += correctPathsLine(name, st);
+    const std::string truth = truthLines(r, {&f});
+    if (!truth.empty())
+        s += "\n" + truth;
     return s;
 }
 
@@ -298,7 +339,7 @@ std::string renderMarkdown(const Json& r)
     std::string s = contextMarkdown(r, judged) + variantsMarkdown(r, judged);
     s += "\n## Families\n";
     for (const auto& f : r["families"])
-        s += familyMarkdown(f, judged);
+        s += familyMarkdown(r, f, judged);
     if (!r["rejected"].empty())
     {
         s += "\n## Rejected cases\n\n";
@@ -456,6 +497,10 @@ std::string terminalSummary(const Json& r)
         t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
         e["timing"].get<double>());
     s += witnessFallbackLine(r);
+    std::vector<const Json*> families;
+    for (const auto& f : r["families"])
+        families.push_back(&f);
+    s += truthLines(r, families);
     s += fmt::format("result: {}; comparison variants: {} failure(s), shown, not judged\n",
                      resultText(r), comparisonFailures(r, judged));
     return s;

@@ -209,6 +209,16 @@ void copyExactly(std::array<T, N>& to, const Json& j, const char* what)
 constexpr std::uint64_t Stats::*kStatePathOrder[] = {&Stats::pathDouble, &Stats::pathDoubleDouble,
                                                      &Stats::pathExact, &Stats::bitMismatch,
                                                      &Stats::pathExtended};
+
+// The Truth rows, under "truth" in the report and in the state alike.
+Json truthJson(const Stats& s)
+{
+    Json t = Json::object();
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Truth)
+            t[f.name] = s.*f.member;
+    return t;
+}
 } // namespace
 
 void Stats::merge(const Stats& o)
@@ -259,6 +269,7 @@ Json Stats::state() const
     for (const CountField& f : kCountFields)
         if (f.section == Section::SinceWitnessFilter)
             j[f.name] = this->*f.member;
+    j["truth"] = truthJson(*this); // last: the keys before it keep their order
     return j;
 }
 
@@ -282,6 +293,10 @@ Stats Stats::fromState(const Json& j)
     copyExactly(s.stops, j.at("stops"), "stop reasons");
     if (sinceInvalid)
         copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
+    if (j.contains("truth")) // states written before the truth's counts have none
+        for (const CountField& f : kCountFields)
+            if (f.section == Section::Truth)
+                s.*f.member = j.at("truth").at(f.name).get<std::uint64_t>();
     if (j.contains("correct_paths"))
     {
         const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
@@ -378,6 +393,7 @@ Json Stats::toJson() const
     j["ns_spread"] = nsPerQuery >= 0 ? Json::array({nsMin, nsMax}) : Json(nullptr);
     j["timing_passes"] = timingPasses;
     j["ratio_to_baseline"] = ratioToBaseline >= 0 ? Json(ratioToBaseline) : Json(nullptr);
+    j["truth"] = truthJson(*this); // last: the keys before it keep their order
     return j;
 }
 
@@ -389,6 +405,18 @@ namespace
 {
 // A query judged against the truth (not out of range): misclassification, bound, validity and,
 // when the answer is finite, its errors.
+// One case's truth: how the exact side decided it (exact::Fallbacks).
+void addTruth(Stats& s, const exact::Fallbacks& f)
+{
+    s.truthGmp += f.gmp ? 1 : 0;
+    s.truthHull += f.hull > 0 ? 1 : 0;
+    s.truthMerge += f.merge > 0 ? 1 : 0;
+    s.truthFeature += f.feature > 0 ? 1 : 0;
+    s.truthSquared += f.squared ? 1 : 0;
+    s.truthDistance += f.distance ? 1 : 0;
+    s.truthWitness += f.witness ? 1 : 0;
+}
+
 void addJudged(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index)
 {
     s.falseOverlap += v.mis == Misclass::FalseOverlap ? 1 : 0;
@@ -444,6 +472,7 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
         return;
     }
     ++cases;
+    addTruth(*this, vi.scalar == Scalar::Float ? o.exactFloat.fallbacks : o.exact.fallbacks);
     failures += v.failed ? 1 : 0;
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
     {

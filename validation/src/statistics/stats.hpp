@@ -102,6 +102,11 @@ struct Stats
     // are checked), and of those the ones the floating-point filter left to the exact route
     // (evaluate/witness_filter.hpp).
     std::uint64_t witnessPoints = 0, witnessExact = 0;
+    // The truth this variant is judged against (exact::Fallbacks, docs/exact.md "The filter"):
+    // cases whose rounded outputs came from the GMP route, and cases with at least one exact
+    // decision of each kind (predicates decided by exact integers; roundings the filter left open).
+    std::uint64_t truthGmp = 0, truthHull = 0, truthMerge = 0, truthFeature = 0, truthSquared = 0,
+                  truthDistance = 0, truthWitness = 0;
     Hist abs{-40, 40}, rel{-20, 40}, ulps{-20, 40}, normalized{-20, 40}, boundRatio{-20, 40};
     Hist witness{-40, 40}, witnessGap{-40, 40}, inputRounding{-40, 40};
     Hist witnessRatio{-20, 40}; // max(witness, witness_gap) / witness bound; > 1: invalid
@@ -132,7 +137,8 @@ struct Stats
 // - derived fields written beside a row: "pass" after failures, "invalid_reasons" after invalid,
 //   "misses" after contains (stats.cpp, toJson);
 // - the state writes the Interval histograms before the others (StatsState's order);
-// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder).
+// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder);
+// - the Truth rows are the last key, "truth", of the report and of the state (issue 34).
 enum class Section : std::uint8_t
 {
     Top, // report: top level (a histogram: under "errors"); state: top level, in table order
@@ -141,6 +147,7 @@ enum class Section : std::uint8_t
     Interval,     // report: under "interval" (certified variants); state: top level
     Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
     SinceWitnessFilter, // as Top in the report; state: last, absent from states written before it
+    Truth, // report and state: under "truth", the last key (absent from states written before it)
 };
 
 struct CountField
@@ -174,6 +181,13 @@ inline constexpr CountField kCountFields[] = {
     {"contains", &Stats::contains, Section::Interval, false},
     {"uncertified", &Stats::uncertified, Section::Interval, false},
     {"bit_mismatches", &Stats::bitMismatch, Section::Correct, false},
+    {"gmp_route", &Stats::truthGmp, Section::Truth, false},
+    {"hull", &Stats::truthHull, Section::Truth, false},
+    {"merge", &Stats::truthMerge, Section::Truth, false},
+    {"feature", &Stats::truthFeature, Section::Truth, false},
+    {"squared", &Stats::truthSquared, Section::Truth, false},
+    {"distance", &Stats::truthDistance, Section::Truth, false},
+    {"witness", &Stats::truthWitness, Section::Truth, false},
 };
 
 struct HistField

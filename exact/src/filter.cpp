@@ -1,0 +1,402 @@
+// The filter of route EdgeMerge (docs/exact.md, "The filter"): the rounded outputs of finish()
+// for a located closest feature, computed in double-double arithmetic with a rigorous bound on the
+// absolute error of every quantity. A rounding is accepted only when the whole error interval lies
+// strictly inside one double's rounding interval; then it is the correctly rounded value, the one
+// finish() computes with GMP and MPFR. Otherwise the caller takes the GMP route.
+//
+// Runs in round-to-nearest (the caller's interval filters have restored it). Every V below holds
+// an approximation h + l (h = RN(h + l), so |l| <= 2^-53 |h|) and a bound e >= |exact - (h + l)|.
+// Overflow makes some h, l or e infinite or NaN, which every decision below refuses.
+#include "internal.hpp"
+
+#include <cmath>
+
+namespace exact::detail
+{
+namespace
+{
+
+constexpr double kU = 0x1p-53; // unit roundoff of round-to-nearest
+// Relative error of one double-double operation's own rounding (at most 5 u^2 = 5 * 2^-106 for
+// add and mul below, derivations beside them): 2^-98 is a margin of 50.
+constexpr double kRel = 0x1p-98;
+// What underflow can lose in one multiplication: a few 2^-1074 (a product's rounding and its fma
+// error term); 2^-1000 is far above that and far below any value we round (see roundTo).
+constexpr double kEta = 0x1p-1000;
+// Each error bound is a short sum of nonnegative terms computed in round-to-nearest, so it is at
+// most a few u below its exact value: inflating by 2^-20 covers that.
+constexpr double kUp = 1 + 0x1p-20;
+
+struct V
+{
+    double h = 0, l = 0, e = 0;
+};
+
+void twoSum(double a, double b, double& s, double& t) // s + t == a + b exactly (Knuth)
+{
+    s = a + b;
+    const double bb = s - a;
+    t = (a - (s - bb)) + (b - bb);
+}
+
+// The exact sum of t[0..n) (n <= 8) as h + l, when it fits in two doubles: Shewchuk's
+// GROW-EXPANSION (twoSum is exact, so the components' sum is the sum) leaves nonoverlapping
+// components; at most two nonzero ones are added by twoSum, exactly. More: false (not decided here).
+bool exactSum(const double* t, int n, double& h, double& l)
+{
+    double q[8];
+    int m = 0;
+    for (int i = 0; i < n; ++i)
+    {
+        double x = t[i];
+        for (int j = 0; j < m; ++j)
+        {
+            double s, err;
+            twoSum(q[j], x, s, err);
+            q[j] = err;
+            x = s;
+        }
+        q[m++] = x;
+    }
+    double big = 0, small = 0;
+    int nonzero = 0;
+    for (int j = 0; j < m; ++j)
+        if (q[j] != 0)
+        {
+            small = big;
+            big = q[j];
+            ++nonzero;
+        }
+    if (nonzero > 2 || !std::isfinite(big))
+        return false;
+    twoSum(big, small, h, l);
+    return true;
+}
+
+V exactly(double a)
+{
+    return {a, 0, 0};
+}
+
+bool isExact(const V& v)
+{
+    return v.l == 0 && v.e == 0;
+}
+
+double mag(const V& v) // >= |h + l|
+{
+    return std::fabs(v.h) * (1 + 0x1p-50);
+}
+
+V neg(const V& v)
+{
+    return {-v.h, -v.l, v.e};
+}
+
+// x + y: twoSum of the leading parts, the trailing parts added in (two roundings, each at most
+// u (u |x.h| + u |y.h| + |twoSum error|) <= 3 u^2 (|x.h| + |y.h|)), renormalised exactly. Additions
+// are exact under underflow, so no kEta.
+V add(const V& x, const V& y)
+{
+    V r;
+    double s, t;
+    twoSum(x.h, y.h, s, t);
+    if (x.e == 0 && y.e == 0)
+    { // Exact inputs: keep the sum exact when it fits in two doubles (a transformed point of
+      // float input does; values that are exactly doubles then round without a fallback).
+        const double terms[4] = {x.h, x.l, y.h, y.l};
+        if (exactSum(terms, 4, r.h, r.l))
+            return r;
+    }
+    t += x.l + y.l;
+    twoSum(s, t, r.h, r.l);
+    r.e = ((x.e + y.e) + kRel * (std::fabs(x.h) + std::fabs(y.h))) * kUp;
+    return r;
+}
+
+V sub(const V& x, const V& y)
+{
+    return add(x, neg(y));
+}
+
+// x * y: p + t = x.h * y.h exactly by fma (unless underflow), the cross terms x.h*y.l + x.l*y.h
+// added with three roundings and x.l*y.l (<= u^2 |x.h y.h|) dropped: at most 5 u^2 |x.h y.h|.
+// The inputs' errors propagate as |X| e_y + |Y| e_x + e_x e_y.
+V mul(const V& x, const V& y)
+{
+    V r;
+    if ((x.h == 0 && isExact(x)) || (y.h == 0 && isExact(y)))
+        return r; // an exact zero factor (an edge of the other shape in along())
+    const double p = x.h * y.h;
+    double t = std::fma(x.h, y.h, -p);
+    if (isExact(x) && isExact(y) && (p == 0 || std::fabs(p) >= 0x1p-960))
+    { // p + t == x.h * y.h exactly: no underflow (|p| >= 2^-960 leaves t representable)
+        twoSum(p, t, r.h, r.l);
+        if (p == 0 && x.h != 0 && y.h != 0)
+            r.e = kEta; // the product underflowed to zero
+        return r;
+    }
+    if (x.e == 0 && y.e == 0)
+    { // Exact inputs: the four partial products exactly (fma), their sum when it fits in two
+      // doubles and no partial product can have underflowed (each nonzero one >= 2^-960).
+        double terms[8];
+        const double a[2] = {x.h, x.l}, b[2] = {y.h, y.l};
+        bool fine = true;
+        for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j)
+            {
+                const double pp = a[i] * b[j];
+                fine = fine && (pp == 0 ? a[i] == 0 || b[j] == 0 : std::fabs(pp) >= 0x1p-960);
+                terms[4 * i + 2 * j] = pp;
+                terms[4 * i + 2 * j + 1] = std::fma(a[i], b[j], -pp);
+            }
+        if (fine && exactSum(terms, 8, r.h, r.l))
+            return r;
+    }
+    t += x.h * y.l + x.l * y.h;
+    twoSum(p, t, r.h, r.l);
+    r.e = (kRel * std::fabs(p) + mag(x) * y.e + mag(y) * x.e + x.e * y.e + kEta) * kUp;
+    return r;
+}
+
+// x / y for y > 0 certainly (else NaN error, refused later). q1 = RN(X/Y); the residual
+// R = X - q1 Y in double-double (error r.e); q2 = RN(r.h / y.h). X/Y - (q1 + q2) = (R - q2 Y)/Y,
+// and |R - q2 Y| <= r.e + |r.l| + u |r.h| + |q2| |y.l| + ... <= r.e + 3 u |r.h| (1 + u), so the
+// division's own error is at most (r.e + 4 u |r.h|) / |Y|. The inputs' errors propagate as
+// (e_x + |X/Y| e_y) / (|Y| - e_y).
+V div(const V& x, const V& y)
+{
+    const double ylow = y.h * (1 - 0x1p-50) - y.e; // < |Y| and < |y*|
+    if (!(y.h > 0 && ylow > 0))
+        return {0, 0, NAN};
+    const V xh{x.h, x.l, 0}, yh{y.h, y.l, 0};
+    const double q1 = x.h / y.h;
+    const V r = sub(xh, mul(exactly(q1), yh));
+    if (x.e == 0 && y.e == 0 && isExact(r) && r.h == 0)
+        return exactly(q1); // x = q1 y exactly (an axis-aligned unit direction, t = 1/2)
+    const double q2 = r.h / y.h;
+    V out;
+    twoSum(q1, q2, out.h, out.l);
+    const double own = (r.e + 4 * kU * std::fabs(r.h) + kEta) / ylow;
+    const double prop = (x.e + mag(out) * y.e) / ylow;
+    out.e = (own + prop + kEta) * kUp;
+    return out;
+}
+
+// sqrt(x) for x > 0 certainly. s1 = RN(sqrt(x.h)), |sqrt(X) - s1| = |d| <= 2 u s1; R = X - s1^2
+// = d (2 s1 + d) in double-double; s2 = RN(r.h / (2 s1)). sqrt(X) - s1 - s2 = R/(2 s1 + d) - s2,
+// |R/(2 s1 + d) - R/(2 s1)| <= |R| u / (s1 (1 - u)) and |R/(2 s1) - s2| <= (r.e + |r.l|) / (2 s1)
+// + u |s2|. The input's error propagates as e_x / sqrt(X - e_x).
+V sqrtV(const V& x)
+{
+    const double low = x.h * (1 - 0x1p-50) - x.e;
+    if (!(x.h > 0 && low > 0))
+        return {0, 0, NAN};
+    const double s1 = std::sqrt(x.h);
+    const V r = sub(V{x.h, x.l, 0}, mul(exactly(s1), exactly(s1)));
+    if (x.e == 0 && isExact(r) && r.h == 0)
+        return exactly(s1); // x = s1^2 exactly: a rational square root (axis-aligned distances)
+    const double s2 = r.h / (2 * s1);
+    V out;
+    twoSum(s1, s2, out.h, out.l);
+    const double R = std::fabs(r.h) * (1 + 0x1p-50) + r.e;
+    const double own = (r.e + 2 * kU * std::fabs(r.h)) / (2 * s1) + kU * std::fabs(s2) +
+                       1.01 * kU * R / s1;
+    const double prop = x.e / (std::sqrt(low) * (1 - 0x1p-50));
+    out.e = (own + prop + kEta) * kUp;
+    return out;
+}
+
+// The correctly rounded (to nearest) double of the exact value, when the bound decides it: the
+// value lies in [h + l - e, h + l + e], which must sit strictly inside the rounding interval of
+// h, (h - gap below / 2, h + gap above / 2). Values below 2^-1000 or above 2^1000 are refused
+// (subnormal results and overflow are the GMP route's). `side` returns the sign of exact - h
+// (0: exactly h), or 2 when undecided.
+bool roundTo(const V& v, double& out, int* side = nullptr)
+{
+    double h, l;
+    twoSum(v.h, v.l, h, l);
+    if (!std::isfinite(h) || !std::isfinite(l) || !std::isfinite(v.e))
+        return false;
+    if (v.e == 0 && l == 0)
+    { // exactly the double h (zero and subnormals included)
+        out = h == 0 ? 0.0 : h;
+        if (side)
+            *side = 0;
+        return true;
+    }
+    const double a = std::fabs(h);
+    if (!(a >= 0x1p-1000 && a <= 0x1p1000))
+        return false;
+    if (v.e == 0)
+    { // exactly h + l, and h = RN(h + l) by twoSum, ties to even as MPFR's MPFR_RNDN
+        out = h;
+        if (side)
+            *side = l > 0 ? 1 : l < 0 ? -1 : 0;
+        return true;
+    }
+    const double up = std::nextafter(h, HUGE_VAL) - h, down = h - std::nextafter(h, -HUGE_VAL);
+    const double slack = 0x1p-50 * (std::fabs(l) + v.e); // covers the roundings of l +- e
+    if (!(l + v.e + slack < up / 2 && l - v.e - slack > -down / 2))
+        return false;
+    out = h;
+    if (side)
+        *side = l - v.e - slack > 0 ? 1 : l + v.e + slack < 0 ? -1 : 2;
+    return true;
+}
+
+struct P2
+{
+    V x, y;
+};
+
+P2 sub(const P2& a, const P2& b)
+{
+    return {sub(a.x, b.x), sub(a.y, b.y)};
+}
+
+// x' = c*x - s*y + px, y' = s*x + c*y + py of one input point.
+P2 transform(const Shape& t, const Point& p)
+{
+    const V c = exactly(t.c), s = exactly(t.s), x = exactly(p.x), y = exactly(p.y);
+    return {add(sub(mul(c, x), mul(s, y)), exactly(t.px)),
+            add(add(mul(s, x), mul(c, y)), exactly(t.py))};
+}
+
+V cross(const P2& a, const P2& b)
+{
+    return sub(mul(a.x, b.y), mul(a.y, b.x));
+}
+V dot(const P2& a, const P2& b)
+{
+    return add(mul(a.x, b.x), mul(a.y, b.y));
+}
+
+// a + t (b - a)
+P2 along(const P2& a, const P2& b, const V& t)
+{
+    const P2 d = sub(b, a);
+    return {add(a.x, mul(t, d.x)), add(a.y, mul(t, d.y))};
+}
+
+// What finish() rounds, in double-double: the hull points wa, wb, z = wa - wb, q = |z|^2 and
+// s = sqrt(q) (separated only).
+struct Construction
+{
+    P2 wa, wb, z;
+    V q, s;
+};
+
+Construction construct(const Feature& f, const P2* a, const P2* b)
+{
+    Construction c;
+    if (f.kind == Feature::Vertex)
+    {
+        c.wa = a[0];
+        c.wb = b[0];
+        c.z = sub(a[0], b[0]);
+        c.q = dot(c.z, c.z);
+        if (!f.overlap)
+            c.s = sqrtV(c.q);
+        return c;
+    }
+    const P2 zs[3] = {sub(a[0], b[0]), sub(a[1], b[1]), f.kind == Feature::Triangle
+                                                            ? sub(a[2], b[2])
+                                                            : P2{}};
+    if (f.kind == Feature::Edge)
+    {
+        const P2 d = sub(zs[1], zs[0]);
+        const V L = dot(d, d);
+        const V t = div(neg(dot(zs[0], d)), L);
+        c.wa = along(a[0], a[1], t);
+        c.wb = along(b[0], b[1], t);
+        if (!f.overlap)
+        {
+            c.z = along(zs[0], zs[1], t);
+            // C = P x Q = P x (Q - P): the same value, and exact more often (an axis-aligned
+            // edge). sqrt(q) = |C| / sqrt(L): exact when L is a square and C / sqrt(L) a double
+            // (a vertex at a double's distance from an axis-aligned edge: the engine families).
+            const V C = cross(zs[0], d);
+            c.q = div(mul(C, C), L);
+            c.s = std::fabs(C.h) * (1 - 0x1p-50) > C.e ? div(C.h < 0 ? neg(C) : C, sqrtV(L))
+                                                       : sqrtV(c.q);
+        }
+        return c;
+    }
+    const V l[3] = {cross(zs[1], zs[2]), cross(zs[2], zs[0]), cross(zs[0], zs[1])};
+    const V den = add(add(l[0], l[1]), l[2]);
+    V nx, ny;
+    for (int t = 0; t < 3; ++t)
+    {
+        nx = add(nx, mul(l[t], a[t].x));
+        ny = add(ny, mul(l[t], a[t].y));
+    }
+    c.wa = {div(nx, den), div(ny, den)};
+    c.wb = c.wa;
+    return c;
+}
+
+// Correctly rounded w + rho * z / s (rho a radius with its sign).
+bool roundShifted(const V& w, double rho, const V& zc, const V& s, double& out)
+{
+    if (rho == 0)
+        return roundTo(w, out);
+    return roundTo(add(w, mul(exactly(rho), div(zc, s))), out);
+}
+
+// Correctly rounded max(0, sqrt(q) - rA - rB) with its tight enclosure (finish.cpp).
+bool roundDistance(const V& s, double rA, double rB, Result& r)
+{
+    const V d = sub(s, add(exactly(rA), exactly(rB)));
+    double h, l;
+    twoSum(d.h, d.l, h, l);
+    const bool exactNonPositive = d.e == 0 && (h < 0 || (h == 0 && l <= 0));
+    if (exactNonPositive || (h < 0 && (std::fabs(l) + d.e) * kUp < -h * (1 - 0x1p-50)))
+    { // sqrt(q) <= rA + rB: clamped
+        r.distance = r.lower = r.upper = 0;
+        return true;
+    }
+    int side = 2;
+    if (!roundTo(d, r.distance, &side) || r.distance <= 0 || side == 2)
+        return false;
+    r.lower = side < 0 ? std::nextafter(r.distance, -HUGE_VAL) : r.distance;
+    r.upper = side > 0 ? std::nextafter(r.distance, HUGE_VAL) : r.distance;
+    return true;
+}
+
+} // namespace
+
+bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
+                    const Point* bs, Result& r)
+{
+    const int count = f.kind == Feature::Vertex ? 1 : f.kind == Feature::Edge ? 2 : 3;
+    P2 a[3], b[3];
+    for (int t = 0; t < count; ++t)
+    {
+        a[t] = transform(A, as[t]);
+        b[t] = transform(B, bs[t]);
+    }
+    const Construction c = construct(f, a, b);
+    r.overlap = f.overlap;
+    if (f.overlap)
+    { // squared == 0: the hull points themselves
+        r.squared = r.distance = r.lower = r.upper = 0;
+        r.fallbacks.witness = !(roundTo(c.wa.x, r.witnessA.x) && roundTo(c.wa.y, r.witnessA.y) &&
+                                roundTo(c.wb.x, r.witnessB.x) && roundTo(c.wb.y, r.witnessB.y));
+        return !r.fallbacks.witness;
+    }
+    r.fallbacks.squared = !roundTo(c.q, r.squared) || !(r.squared > 0);
+    if (r.fallbacks.squared)
+        return false;
+    const V& s = c.s;
+    r.fallbacks.distance = !roundDistance(s, A.radius, B.radius, r);
+    if (r.fallbacks.distance)
+        return false;
+    r.fallbacks.witness = !(roundShifted(c.wa.x, -A.radius, c.z.x, s, r.witnessA.x) &&
+                            roundShifted(c.wa.y, -A.radius, c.z.y, s, r.witnessA.y) &&
+                            roundShifted(c.wb.x, B.radius, c.z.x, s, r.witnessB.x) &&
+                            roundShifted(c.wb.y, B.radius, c.z.y, s, r.witnessB.y));
+    return !r.fallbacks.witness;
+}
+
+} // namespace exact::detail
