@@ -149,8 +149,7 @@ const int registered = []
         ->Unit(benchmark::kMicrosecond);
     exact::Options gmp; // the default route without its filter (--truth exact)
     gmp.filter = false;
-    benchmark::RegisterBenchmark("Small/edge-merge+gmp", small, gmp)
-        ->Unit(benchmark::kMicrosecond);
+    benchmark::RegisterBenchmark("Small/edge-merge+gmp", small, gmp)->Unit(benchmark::kMicrosecond);
     exact::Options noSquared; // what the runner asks for without --per-case
     noSquared.squaredRational = false;
     benchmark::RegisterBenchmark("Small/edge-merge-no-squared", small, noSquared)

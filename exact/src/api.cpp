@@ -94,7 +94,7 @@ double pointToShapeDistance(const Shape& shape, Point p)
     Shape q;
     q.points = {p};
     Options o;
-    o.squaredRational = false; // only the distance is read
+    o.squaredRational = false;             // only the distance is read
     return distance(q, shape, o).distance; // max(0, dist(p, hull) - 0 - radius)
 }
 

@@ -41,7 +41,8 @@ void twoSum(double a, double b, double& s, double& t) // s + t == a + b exactly 
 
 // The exact sum of t[0..n) (n <= 8) as h + l, when it fits in two doubles: Shewchuk's
 // GROW-EXPANSION (twoSum is exact, so the components' sum is the sum) leaves nonoverlapping
-// components; at most two nonzero ones are added by twoSum, exactly. More: false (not decided here).
+// components; at most two nonzero ones are added by twoSum, exactly. More: false (not decided
+// here).
 bool exactSum(const double* t, int n, double& h, double& l)
 {
     double q[8];
@@ -200,8 +201,8 @@ V sqrtV(const V& x)
     V out;
     twoSum(s1, s2, out.h, out.l);
     const double R = std::fabs(r.h) * (1 + 0x1p-50) + r.e;
-    const double own = (r.e + 2 * kU * std::fabs(r.h)) / (2 * s1) + kU * std::fabs(s2) +
-                       1.01 * kU * R / s1;
+    const double own =
+        (r.e + 2 * kU * std::fabs(r.h)) / (2 * s1) + kU * std::fabs(s2) + 1.01 * kU * R / s1;
     const double prop = x.e / (std::sqrt(low) * (1 - 0x1p-50));
     out.e = (own + prop + kEta) * kUp;
     return out;
@@ -300,9 +301,8 @@ Construction construct(const Feature& f, const P2* a, const P2* b)
             c.s = sqrtV(c.q);
         return c;
     }
-    const P2 zs[3] = {sub(a[0], b[0]), sub(a[1], b[1]), f.kind == Feature::Triangle
-                                                            ? sub(a[2], b[2])
-                                                            : P2{}};
+    const P2 zs[3] = {sub(a[0], b[0]), sub(a[1], b[1]),
+                      f.kind == Feature::Triangle ? sub(a[2], b[2]) : P2{}};
     if (f.kind == Feature::Edge)
     {
         const P2 d = sub(zs[1], zs[0]);

@@ -31,12 +31,11 @@ bool sameTruth(const exact::Shape& a, const exact::Shape& b, std::size_t& gmp)
     exactOnly.filter = false;
     const exact::Result f = exact::distance(a, b), e = exact::distance(a, b, exactOnly);
     gmp += f.fallbacks.gmp ? 1 : 0;
-    return f.overlap == e.overlap && f.squaredNum == e.squaredNum &&
-           f.squaredDen == e.squaredDen && bits(f.squared) == bits(e.squared) &&
-           bits(f.distance) == bits(e.distance) && bits(f.lower) == bits(e.lower) &&
-           bits(f.upper) == bits(e.upper) && bits(f.witnessA.x) == bits(e.witnessA.x) &&
-           bits(f.witnessA.y) == bits(e.witnessA.y) && bits(f.witnessB.x) == bits(e.witnessB.x) &&
-           bits(f.witnessB.y) == bits(e.witnessB.y);
+    return f.overlap == e.overlap && f.squaredNum == e.squaredNum && f.squaredDen == e.squaredDen &&
+           bits(f.squared) == bits(e.squared) && bits(f.distance) == bits(e.distance) &&
+           bits(f.lower) == bits(e.lower) && bits(f.upper) == bits(e.upper) &&
+           bits(f.witnessA.x) == bits(e.witnessA.x) && bits(f.witnessA.y) == bits(e.witnessA.y) &&
+           bits(f.witnessB.x) == bits(e.witnessB.x) && bits(f.witnessB.y) == bits(e.witnessB.y);
 }
 
 } // namespace

@@ -63,13 +63,14 @@ struct ExactPoint
 // and nothing else.
 struct Fallbacks
 {
-    int hull = 0;    // hull comparisons and orientation signs decided exactly
-    int merge = 0;   // edge-angle comparisons of the Minkowski edge merge decided exactly
-    int feature = 0; // closest-feature and overlap predicates decided exactly
-    bool squared = false;  // the rounded squared distance was undecided
-    bool distance = false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
-    bool witness = false;  // a rounded witness coordinate was undecided
-    bool gmp = false;      // the rounded outputs came from the GMP/MPFR route
+    int hull = 0;         // hull comparisons and orientation signs decided exactly
+    int merge = 0;        // edge-angle comparisons of the Minkowski edge merge decided exactly
+    int feature = 0;      // closest-feature and overlap predicates decided exactly
+    bool squared = false; // the rounded squared distance was undecided
+    bool distance =
+        false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
+    bool witness = false; // a rounded witness coordinate was undecided
+    bool gmp = false;     // the rounded outputs came from the GMP/MPFR route
 };
 
 struct Result
@@ -92,7 +93,7 @@ struct Result
                   // one common point of both hulls (see docs/exact.md for which one).
     bool hasExactWitnesses = false;
     ExactPoint exactWitnessA,
-        exactWitnessB; // the hull (radius-free) closest points, exact, only when requested
+        exactWitnessB;   // the hull (radius-free) closest points, exact, only when requested
     Fallbacks fallbacks; // how the case was decided; not part of the truth
 };
 

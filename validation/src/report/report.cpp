@@ -249,10 +249,11 @@ std::string truthLines(const Json& r, const std::vector<const Json*>& families)
         for (const CountField& f : kCountFields)
             if (f.section == Section::Truth && f.member != &Stats::truthGmp)
                 parts.push_back(fmt::format("{} {}", f.name, sum[f.name]));
-        s += fmt::format("truth of the {} input: GMP route on {} of {} cases ({:.3g} %); cases with "
-                         "an exact decision: {}\n",
-                         type, sum["gmp_route"], cases,
-                         100.0 * double(sum["gmp_route"]) / double(cases), fmt::join(parts, ", "));
+        s +=
+            fmt::format("truth of the {} input: GMP route on {} of {} cases ({:.3g} %); cases with "
+                        "an exact decision: {}\n",
+                        type, sum["gmp_route"], cases,
+                        100.0 * double(sum["gmp_route"]) / double(cases), fmt::join(parts, ", "));
     }
     return s;
 }
