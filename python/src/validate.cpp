@@ -68,12 +68,12 @@ template <class F> void guarded(F&& call)
     }
 }
 
-template <class T> py::array_t<T> pointsOf(const std::vector<gjk::Vec2<T>>& points)
+template <class T> py::array_t<T> pointsOf(const gjk::Polygon<T>& shape)
 {
-    py::array_t<T> a({py::ssize_t(points.size()), py::ssize_t(2)});
+    py::array_t<T> a({py::ssize_t(shape.count), py::ssize_t(2)});
     T* p = a.mutable_data();
-    for (std::size_t i = 0; i < points.size(); ++i)
-        p[2 * i] = points[i].x, p[2 * i + 1] = points[i].y;
+    for (int i = 0; i < shape.count; ++i)
+        p[2 * i] = shape.points[i].x, p[2 * i + 1] = shape.points[i].y;
     return a;
 }
 
@@ -88,20 +88,13 @@ template <class T> py::array_t<T> pairOf(T x, T y)
 // variant sees the case rounded to float, as gjk-validate's float variants do).
 template <class T> py::dict caseArguments(const PreparedCase& p)
 {
-    if constexpr (std::is_same_v<T, float>)
-        return py::dict("points_a"_a = pointsOf(p.af), "points_b"_a = pointsOf(p.bf),
-                        "radius_a"_a = py::float_(p.raf), "radius_b"_a = py::float_(p.rbf),
-                        "position_a"_a = pairOf(p.xaf.p.x, p.xaf.p.y),
-                        "rotation_a"_a = pairOf(p.xaf.q.c, p.xaf.q.s),
-                        "position_b"_a = pairOf(p.xbf.p.x, p.xbf.p.y),
-                        "rotation_b"_a = pairOf(p.xbf.q.c, p.xbf.q.s));
-    else
-        return py::dict("points_a"_a = pointsOf(p.ad), "points_b"_a = pointsOf(p.bd),
-                        "radius_a"_a = py::float_(p.rad), "radius_b"_a = py::float_(p.rbd),
-                        "position_a"_a = pairOf(p.xad.p.x, p.xad.p.y),
-                        "rotation_a"_a = pairOf(p.xad.q.c, p.xad.q.s),
-                        "position_b"_a = pairOf(p.xbd.p.x, p.xbd.p.y),
-                        "rotation_b"_a = pairOf(p.xbd.q.c, p.xbd.q.s));
+    const gjk::DistanceInput<T> in = p.input<T>(); // the scalar type's view: PreparedCase::input
+    const gjk::Transform<T>&xa = in.transformA, &xb = in.transformB;
+    return py::dict(
+        "points_a"_a = pointsOf(in.proxyA), "points_b"_a = pointsOf(in.proxyB),
+        "radius_a"_a = py::float_(in.proxyA.radius), "radius_b"_a = py::float_(in.proxyB.radius),
+        "position_a"_a = pairOf(xa.p.x, xa.p.y), "rotation_a"_a = pairOf(xa.q.c, xa.q.s),
+        "position_b"_a = pairOf(xb.p.x, xb.p.y), "rotation_b"_a = pairOf(xb.q.c, xb.q.s));
 }
 
 // The fields of an answer: a mapping's keys, an object's attributes (gjk2d.DistanceResult), or a
