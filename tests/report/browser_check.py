@@ -592,6 +592,27 @@ def check_data_views(views, report):
         for part in [p.get('file'), p.get('kind'), p.get('library')] + list(p.get('variants') or []):
             if part and str(part) not in views['variantsText']:
                 fails.append(f'the context section does not show {part!r} of the plugin {p.get("file")!r}')
+    # How the truths and witness distances were decided (issue 34), summed here from report.json.
+    types = {}
+    for v in report.get('variants') or []:
+        if isinstance(v, dict) and v.get('type') and v.get('name') and v['type'] not in types:
+            sts = [(f.get('variants') or {}).get(v['name']) for f in fams.values()]
+            sts = [st for st in sts if isinstance(st, dict) and isinstance(st.get('truth'), dict)]
+            cases = sum(count_of(st, 'cases') for st in sts)
+            if cases:
+                types[v['type']] = (cases, sum(count_of(st['truth'], 'gmp_route') for st in sts))
+    for t, (cases, gmp) in types.items():
+        checked['truth'] = checked.get('truth', 0) + 1
+        want = f"Truth of the {t} input" + f"GMP route on {gmp:,} of {plural(cases, 'case')}"
+        if want not in views['variantsText']:
+            fails.append(f'the context section does not say {want!r}')
+    points = sum(count_of(st, 'witness_points') for f in fams.values() for st in (f.get('variants') or {}).values())
+    wexact = sum(count_of(st, 'witness_exact') for f in fams.values() for st in (f.get('variants') or {}).values())
+    if points:
+        checked['witness'] = 1
+        want = f"Witness checks{points:,} points measured, {wexact:,} by the exact route"
+        if want not in views['variantsText']:
+            fails.append(f'the context section does not say {want!r}')
     total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
     if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
         fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')

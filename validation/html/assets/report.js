@@ -503,6 +503,42 @@
         h('a', {href: '#rejected'}, 'Rejected inputs')));
   }
 
+  // How the truths and the witness distances were decided (issue 34): the exact side's GMP route
+  // against its floating-point filter, summed over the families per input type (a float variant's
+  // truth is that of the input rounded to float), as the terminal summary gives them
+  // (validation/src/report/report.cpp, truthLines and witnessFallbackLine). Nothing for a report
+  // written before the counts.
+  function truthRows(report) {
+    var rows = [], types = {}, points = 0, exact = 0;
+    (Array.isArray(report.variants) ? report.variants : []).forEach(function (v) {
+      if (!v || !has(v.type) || !has(v.name) || types[v.type]) return;
+      var cases = 0, gmp = 0;
+      families(report).forEach(function (f) {
+        var st = familyVariants(f)[v.name];
+        if (!st || !st.truth || typeof st.truth !== 'object') return;
+        cases += isNum(st.cases) ? num(st.cases) : 0;
+        gmp += isNum(st.truth.gmp_route) ? num(st.truth.gmp_route) : 0;
+      });
+      if (cases > 0) types[v.type] = [cases, gmp];
+    });
+    Object.keys(types).forEach(function (t) {
+      var c = types[t];
+      rows.push(['Truth of the ' + t + ' input', 'GMP route on ' + fmtInt(c[1]) + ' of ' + plural(c[0], 'case') +
+        ' (' + fmt(100 * c[1] / c[0]) + ' %), the rest decided by the floating-point filter']);
+    });
+    families(report).forEach(function (f) {
+      var fv = familyVariants(f);
+      Object.keys(fv).forEach(function (n) {
+        points += isNum(fv[n].witness_points) ? num(fv[n].witness_points) : 0;
+        exact += isNum(fv[n].witness_exact) ? num(fv[n].witness_exact) : 0;
+      });
+    });
+    if (points > 0)
+      rows.push(['Witness checks', fmtInt(points) + ' points measured, ' + fmtInt(exact) + ' by the exact route (' +
+        fmt(100 * exact / points) + ' %)']);
+    return rows;
+  }
+
   function renderContext(report) {
     var ctx = report.context || {};
     var sec = section('context', 'Context');
@@ -538,6 +574,7 @@
       })));
     }
     row('Exit code', has(report.exit_code) ? String(report.exit_code) + (report.passed === true ? ' (passed)' : report.passed === false ? ' (failed)' : '') : null);
+    truthRows(report).forEach(function (r) { row(r[0], r[1]); });
     if (ctx.elapsed_s && typeof ctx.elapsed_s === 'object') {
       row('Elapsed', Object.keys(ctx.elapsed_s).map(function (k) { return k + ' ' + fmt(ctx.elapsed_s[k]) + ' s'; }).join(', '));
     }
