@@ -158,7 +158,9 @@ TEST_CASE("pointToShapeDistance in floating point equals the GMP route on hostil
                 }
     INFO("GMP route for " << all.gmp << " of " << all.points << " points, " << ordinary.gmp
                           << " of " << ordinary.points << " on random shapes");
-    // Measured at the change:
+    // Measured at the change: 850 of 28,911 points (2.9 %; mostly points far outside a 2^-498
+    // shape, whose products underflow, and values within the bound of a midpoint), 6 of 1,563 on
+    // the random shapes under an inexact rotation.
     CHECK(all.gmp * 4 < all.points);
     CHECK(ordinary.gmp * 20 < ordinary.points);
 }
@@ -233,6 +235,6 @@ TEMPLATE_TEST_CASE("pointToShapeDistance decides GJK's witness points", "[exact]
         filteredEqualsGmp(s[1], {double(out.pointB.x), double(out.pointB.y)}, t);
     }
     INFO("GMP route for " << t.gmp << " of " << t.points << " witness points");
-    // Measured at the change:
+    // Measured at the change: 0 of 3,000 witness points, float and double.
     CHECK(t.gmp * 100 < t.points);
 }
