@@ -366,6 +366,30 @@ bool roundDistance(const V& s, double rA, double rB, Result& r)
 }
 
 // ---------------------------------------------------------------- point to shape
+//
+// filteredPointDistance (docs/exact.md, "Point to shape"): max(0, dist(p, hull(B)) - r) for a
+// query point p, what exact::pointToShapeDistance measures for the runner's witness checks. A
+// witness point lies about u R from its shape (R the coordinates' magnitude), so its distance is
+// about u R: filteredFinish()'s double-double world points, each within about 2^-98 R (absolute),
+// leave that difference a relative error of about 2^-45, far from enough to round it correctly.
+// Here nothing is rounded until the value is formed:
+//  1. the coordinate differences z = p - w_i (six doubles a coordinate: p, the translation, two
+//     TwoProducts), the edge vector d = w_i - w_j (four TwoProducts), the cross product C = z x d,
+//     the squared lengths q = |z|^2 and L = |d|^2, and with a radius the numerators q - r^2 and
+//     C^2 - r^2 L are exact expansions (expansion.hpp);
+//  2. toV() turns each into a V within a relative few 2^-100 (its bound e derived there);
+//  3. the few V operations after that (sqrtV, add, mul, div: own errors at most a relative 2^-98
+//     each, plus the propagated bounds of their inputs, derived above, with no cancellation left:
+//     every operand is positive) leave the value within a relative 2^-95 or so; roundTo() accepts
+//     the rounding only when the whole interval lies inside one double's rounding interval, so a
+//     value within that of a midpoint goes to GMP (about 1 value in 2^42);
+//  4. the clamp max(0, .) is the exact sign of the numerator, and a distance that is a single
+//     coordinate difference (axis-aligned) stays exact to the end (axisDistance).
+// The result is then the correctly rounded value of the same exact real that finish() rounds with
+// MPFR (sqrt of the located feature's squared distance, minus 0 and r): the GMP route's bit for
+// bit. Refused (false: the GMP route): a product that could lose bits to underflow, overflow
+// (expansion.hpp), inputs that scaling to [1/2, 1) would cut, a scaled result outside roundTo()'s
+// [2^-1000, 2^1000] or a result below 2^-1022 once scaled back.
 
 // An expansion as a V, with h + l within a relative few 2^-100 of its value. The two largest
 // components would not do: nonoverlapping components may have few bits each (a top component
