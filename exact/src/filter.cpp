@@ -508,8 +508,8 @@ V edgeDistance(const Expansion& zx, const Expansion& zy, const Expansion& dx, co
     Expansion C;
     C.addProduct(zx, dy);
     C.addProduct(zy, dx, -1);
-    if (C.sign() == 0)
-        return {0, 0, NAN}; // on the edge's line: an overlap, which locate() would have said
+    if (!C.ok || C.sign() == 0)
+        return {0, 0, NAN}; // refused, or on the edge's line (an overlap, which locate() says)
     if (C.sign() < 0)
         C.negate();
     Expansion L;
@@ -553,6 +553,8 @@ bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Poin
     zy.add(-v[3]);
     zy.addProduct(-s, v[4]);
     zy.addProduct(-c, v[5]);
+    if (!zx.ok || !zy.ok) // a refused product leaves the expansion incomplete: its n means nothing
+        return false;
     bool clamped = false;
     V value;
     if (!edge)
@@ -568,6 +570,8 @@ bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Poin
         dy.addProduct(c, v[5]);
         dy.addProduct(-s, v[6]);
         dy.addProduct(-c, v[7]);
+        if (!dx.ok || !dy.ok)
+            return false;
         value = edgeDistance(zx, zy, dx, dy, r, clamped);
     }
     if (clamped)

@@ -194,6 +194,25 @@ TEST_CASE("pointToShapeDistance at exact vertices and on axis-aligned edges",
     CHECK(t.gmp * 2 < t.points);
 }
 
+TEST_CASE("pointToShapeDistance falls back where a product underflows", "[exact][filter][point]")
+{
+    // fuzz_truth's finding (crash-375a138d): a rotation of size 95 and subnormal x coordinates.
+    // c x_j underflows, so the edge vector's expansion is refused; the filter read its empty
+    // component list as "d.x = 0" (an axis-aligned edge) and answered 266.4 where the exact
+    // distance rounds to 259.3. Now a refused expansion sends the point to the GMP route.
+    Shape s;
+    s.points = {{0, 0},
+                {0x0.01d3ap-1022, 0x1.64p+6},
+                {0x0.03a74p-1022, 0x1.64p+7},
+                {0x0.057aep-1022, 0x1.0bp+8}};
+    s.c = 0x1.ffffffffffffcp-1, s.s = 0x1.7cp+6;
+    s.px = 0x1.0afffffffffffp+8, s.py = 0x1.0f0f0f0f0f0f1p+2;
+    s.radius = 0x1.321642c8590b2p-1;
+    Tally t;
+    filteredEqualsGmp(s, {0x0.057aep-1022, 0x1.0bp+8}, t);
+    CHECK(exact::pointToShapeDistance(s, {0x0.057aep-1022, 0x1.0bp+8}) == 0x1.03578a37b2946p+8);
+}
+
 TEMPLATE_TEST_CASE("pointToShapeDistance decides GJK's witness points", "[exact][filter][point]",
                    float, double)
 {
