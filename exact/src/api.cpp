@@ -87,15 +87,18 @@ Result distance(const Shape& a, const Shape& b, const Options& options)
     return r;
 }
 
-double pointToShapeDistance(const Shape& shape, Point p)
+double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute)
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw std::invalid_argument("exact: non-finite query point");
+    validateShape(shape, "shape B");
     Shape q;
     q.points = {p};
-    Options o;
-    o.squaredRational = false;             // only the distance is read
-    return distance(q, shape, o).distance; // max(0, dist(p, hull) - 0 - radius)
+    bool gmp = false;
+    const double d = detail::pointDistance(q, shape, gmp); // max(0, dist(p, hull) - radius)
+    if (gmpRoute)
+        *gmpRoute = gmp;
+    return d;
 }
 
 } // namespace exact

@@ -372,6 +372,16 @@ class Solver
         return r;
     }
 
+    // pointDistance(): a_ is the query point (one point, identity, no radius).
+    double runPoint(bool& gmp)
+    {
+        const Feature f = locateFeature();
+        const Point bs[2] = {b_.points[zb[f.i]], b_.points[zb[f.j]]};
+        double d = 0;
+        gmp = !filteredPointDistance(f, a_.points[0], b_, bs, d);
+        return gmp ? finish(build(f), a_.radius, b_.radius, false).distance : d;
+    }
+
     // ---- locate() interface: Z vertex k is A point za[k] minus B point zb[k].
     int orientO(int i, int j)
     {
@@ -647,6 +657,11 @@ class Solver
 ExactResult edgeMerge(const Shape& a, const Shape& b)
 {
     return Solver(a, b).run();
+}
+
+double pointDistance(const Shape& point, const Shape& shape, bool& gmp)
+{
+    return Solver(point, shape).runPoint(gmp);
 }
 
 Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)

@@ -7,6 +7,7 @@
 // Runs in round-to-nearest (the caller's interval filters have restored it). Every V below holds
 // an approximation h + l (h = RN(h + l), so |l| <= 2^-53 |h|) and a bound e >= |exact - (h + l)|.
 // Overflow makes some h, l or e infinite or NaN, which every decision below refuses.
+#include "expansion.hpp"
 #include "internal.hpp"
 
 #include <cmath>
@@ -364,7 +365,226 @@ bool roundDistance(const V& s, double rA, double rB, Result& r)
     return true;
 }
 
+// ---------------------------------------------------------------- point to shape
+//
+// filteredPointDistance (docs/exact.md, "Point to shape"): max(0, dist(p, hull(B)) - r) for a
+// query point p, what exact::pointToShapeDistance measures for the runner's witness checks. A
+// witness point lies about u R from its shape (R the coordinates' magnitude), so its distance is
+// about u R: filteredFinish()'s double-double world points, each within about 2^-98 R (absolute),
+// leave that difference a relative error of about 2^-45, far from enough to round it correctly.
+// Here nothing is rounded until the value is formed:
+//  1. the coordinate differences z = p - w_i (six doubles a coordinate: p, the translation, two
+//     TwoProducts), the edge vector d = w_i - w_j (four TwoProducts), the cross product C = z x d,
+//     the squared lengths q = |z|^2 and L = |d|^2, and with a radius the numerators q - r^2 and
+//     C^2 - r^2 L are exact expansions (expansion.hpp);
+//  2. toV() turns each into a V within a relative few 2^-100 (its bound e derived there);
+//  3. the few V operations after that (sqrtV, add, mul, div: own errors at most a relative 2^-98
+//     each, plus the propagated bounds of their inputs, derived above, with no cancellation left:
+//     every operand is positive) leave the value within a relative 2^-95 or so; roundTo() accepts
+//     the rounding only when the whole interval lies inside one double's rounding interval, so a
+//     value within that of a midpoint goes to GMP (about 1 value in 2^42);
+//  4. the clamp max(0, .) is the exact sign of the numerator, and a distance that is a single
+//     coordinate difference (axis-aligned) stays exact to the end (axisDistance).
+// The result is then the correctly rounded value of the same exact real that finish() rounds with
+// MPFR (sqrt of the located feature's squared distance, minus 0 and r): the GMP route's bit for
+// bit. Refused (false: the GMP route): a product that could lose bits to underflow, overflow
+// (expansion.hpp), inputs that scaling to [1/2, 1) would cut, a scaled result outside roundTo()'s
+// [2^-1000, 2^1000] or a result below 2^-1022 once scaled back.
+
+// An expansion as a V, with h + l within a relative few 2^-100 of its value. The two largest
+// components would not do: nonoverlapping components may have few bits each (a top component
+// 2^-58 may be followed by one just below it), so what they leave can be a relative 2^-53. Instead
+// h is the expansion's components summed in double (increasing magnitude: within a relative n u of
+// the value, n <= kMax), the exact remainder E - h is formed (one more exact add), l is its sum the
+// same way, and E - h - l is formed exactly too: its components' magnitudes summed bound the error
+// rigorously, and it is about (n u)^2 of the value. That bound is a sum of at most kMax = 64
+// nonnegative doubles in round-to-nearest, at most a relative 64 u < 2^-46 below its exact value:
+// 1 + 2^-40 covers that. Two components or fewer: exact (e = 0), which keeps sqrtV's and div's
+// exact shortcuts (axis-aligned edges, exact vertices).
+double estimate(const Expansion& x)
+{
+    double s = 0;
+    for (int i = 0; i < x.n; ++i)
+        s += x.c[i];
+    return s;
+}
+
+V toV(const Expansion& x)
+{
+    if (!x.ok)
+        return {0, 0, NAN};
+    V v;
+    if (x.n <= 2)
+    {
+        twoSum(x.n == 2 ? x.c[1] : x.n == 1 ? x.c[0] : 0.0, x.n == 2 ? x.c[0] : 0.0, v.h, v.l);
+        return v;
+    }
+    Expansion r = x;
+    const double h = estimate(r);
+    r.add(-h);
+    const double l = estimate(r);
+    r.add(-l);
+    if (!r.ok)
+        return {0, 0, NAN};
+    double rest = 0;
+    for (int i = 0; i < r.n; ++i)
+        rest += std::fabs(r.c[i]);
+    twoSum(h, l, v.h, v.l);
+    v.e = rest * (1 + 0x1p-40);
+    return v;
+}
+
+// Multiplies v[0..n) by 2^k, with k chosen so that the largest magnitude lands in [1/2, 1), when
+// no value loses a bit (one pushed into the subnormal range would: refused). The formulas below
+// are homogeneous in the scaled values (the rotation (c, s) is not scaled): the exact differences
+// and products then stay far from overflow, and products of values within 2^450 of the largest
+// stay above expansion.hpp's 2^-960 underflow limit. The result is scaled back by 2^-k, exactly
+// (a power of two; both roundings see the same significand while the result is a normal double).
+bool scaleToUnit(double* v, int n, int& k)
+{
+    double m = 0;
+    for (int i = 0; i < n; ++i)
+        m = std::fmax(m, std::fabs(v[i]));
+    k = 0;
+    if (m == 0)
+        return true;
+    int e;
+    std::frexp(m, &e); // m = f 2^e, f in [1/2, 1)
+    k = -e;
+    for (int i = 0; i < n; ++i)
+    {
+        const double s = std::ldexp(v[i], k);
+        if (std::ldexp(s, -k) != v[i])
+            return false;
+        v[i] = s;
+    }
+    return true;
+}
+
+// |a| - r exactly, for a distance that is one coordinate difference a (a point level with a vertex,
+// or off an axis-aligned edge: the engine families' boxes): an expansion of the exact value, so
+// values that are doubles or midpoints between two (where a bound would never decide) are decided
+// too, ties to even as MPFR's.
+V axisDistance(Expansion a, double r, bool& clamped)
+{
+    if (a.sign() < 0)
+        a.negate();
+    a.add(-r);
+    clamped = a.ok && a.sign() <= 0;
+    return toV(a);
+}
+
+// max(0, |z| - r) for the vertex z = (zx, zy) != 0, exact expansions of its coordinates. Without a
+// radius sqrt(q), q = |z|^2 exact. With one, sqrt(q) - r = (q - r^2) / (sqrt(q) + r): the
+// numerator exactly, its sign decides the clamp, and the quotient has no cancellation left (a
+// witness point on a rounded shape's arc is about u R from it, where sqrt(q) - r in
+// double-double would lose all of its digits). `clamped`: the exact value is <= 0.
+V vertexDistance(const Expansion& zx, const Expansion& zy, double r, bool& clamped)
+{
+    if (zx.n == 0 || zy.n == 0)
+        return axisDistance(zx.n == 0 ? zy : zx, r, clamped);
+    Expansion q;
+    q.addProduct(zx, zx);
+    q.addProduct(zy, zy);
+    if (r == 0)
+        return sqrtV(toV(q));
+    Expansion num = q;
+    num.addProduct(-r, r);
+    clamped = num.ok && num.sign() <= 0;
+    return div(toV(num), add(sqrtV(toV(q)), exactly(r)));
+}
+
+// The same for the inside of an edge: z the vertex z_i, d = z_j - z_i the edge vector, the
+// distance |C| / sqrt(L) with C = z x d and L = |d|^2 both exact. The cross product is where the
+// double-double construction of filteredFinish() fails a witness point: C is about |z| |d| u when
+// the point lies about u R off the edge, so an absolute error of 2^-98 |z| |d| in its factors is a
+// relative 2^-45 of C; exactly, C keeps all of its digits. With a radius: |C| / sqrt(L) - r =
+// (C^2 - r^2 L) / (sqrt(L) (|C| + r sqrt(L))), the numerator exactly (its sign decides the clamp).
+V edgeDistance(const Expansion& zx, const Expansion& zy, const Expansion& dx, const Expansion& dy,
+               double r, bool& clamped)
+{
+    if (dx.n == 0 || dy.n == 0) // |C| / sqrt(L) = |zx dy| / |dy| = |zx| (dx = 0), or |zy|
+        return axisDistance(dx.n == 0 ? zx : zy, r, clamped);
+    Expansion C;
+    C.addProduct(zx, dy);
+    C.addProduct(zy, dx, -1);
+    if (!C.ok || C.sign() == 0)
+        return {0, 0, NAN}; // refused, or on the edge's line (an overlap, which locate() says)
+    if (C.sign() < 0)
+        C.negate();
+    Expansion L;
+    L.addProduct(dx, dx);
+    L.addProduct(dy, dy);
+    const V sL = sqrtV(toV(L));
+    if (r == 0)
+        return div(toV(C), sL);
+    Expansion rr, num;
+    rr.addProduct(r, r);
+    num.addProduct(C, C);
+    num.addProduct(L, rr, -1);
+    clamped = num.ok && num.sign() <= 0;
+    return div(toV(num), mul(sL, add(toV(C), mul(exactly(r), sL))));
+}
+
 } // namespace
+
+bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Point* bs, double& out)
+{
+    if (f.overlap)
+    { // p in hull(B): max(0, 0 - radius)
+        out = 0;
+        return true;
+    }
+    const bool edge = f.kind == Feature::Edge;
+    // p, B's translation, the feature's one or two points of B, the radius: scaled together.
+    double v[9] = {
+        p.x, p.y, B.px, B.py, bs[0].x, bs[0].y, edge ? bs[1].x : 0, edge ? bs[1].y : 0, B.radius};
+    int k = 0;
+    if (!scaleToUnit(v, 9, k))
+        return false;
+    const double c = B.c, s = B.s, r = v[8];
+    // z = p - w_i, w_i = (c x - s y + px, s x + c y + py): six terms a coordinate, exactly.
+    Expansion zx, zy;
+    zx.add(v[0]);
+    zx.add(-v[2]);
+    zx.addProduct(-c, v[4]);
+    zx.addProduct(s, v[5]);
+    zy.add(v[1]);
+    zy.add(-v[3]);
+    zy.addProduct(-s, v[4]);
+    zy.addProduct(-c, v[5]);
+    if (!zx.ok || !zy.ok) // a refused product leaves the expansion incomplete: its n means nothing
+        return false;
+    bool clamped = false;
+    V value;
+    if (!edge)
+        value = vertexDistance(zx, zy, r, clamped);
+    else
+    { // d = z_j - z_i = w_i - w_j: the translation cancels, four products a coordinate
+        Expansion dx, dy;
+        dx.addProduct(c, v[4]);
+        dx.addProduct(-s, v[5]);
+        dx.addProduct(-c, v[6]);
+        dx.addProduct(s, v[7]);
+        dy.addProduct(s, v[4]);
+        dy.addProduct(c, v[5]);
+        dy.addProduct(-s, v[6]);
+        dy.addProduct(-c, v[7]);
+        if (!dx.ok || !dy.ok)
+            return false;
+        value = edgeDistance(zx, zy, dx, dy, r, clamped);
+    }
+    if (clamped)
+    {
+        out = 0;
+        return true;
+    }
+    double scaled;
+    if (!roundTo(value, scaled) || !(scaled > 0))
+        return false;
+    out = std::ldexp(scaled, -k);
+    return std::isfinite(out) && out >= 0x1p-1022;
+}
 
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
                     const Point* bs, Result& r)

@@ -179,6 +179,16 @@ template <class Pr> Feature locate(int k, Pr& pr)
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
                     const Point* bs, Result& r);
 
+// filter.cpp: max(0, dist(p, hull(B)) - B.radius), correctly rounded to nearest, for the located
+// feature f of Z = {p} - hull(B) (p in the world frame; bs: B's input points of the feature's Z
+// vertices i and j), from exact expansions of the world coordinates' differences. True when
+// decided (`out` then is the GMP route's distance bit for bit); false: take the GMP route.
+bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Point* bs, double& out);
+// edge_merge.cpp: pointToShapeDistance's computation, point a one-point shape with the identity
+// transform and no radius (validated): the located feature, then filteredPointDistance or, where
+// it does not decide, the GMP construction and MPFR rounding (`gmp` says which).
+double pointDistance(const Shape& point, const Shape& shape, bool& gmp);
+
 // Builds the exact result from a located feature, given for each of the feature's vertices (in the
 // order i, j, l; 1, 2 or 3 of them as the kind needs) the exact Z vertex zs[], and the hull points
 // as[] of A and bs[] of B with zs[t] = as[t] - bs[t]. Plain rationals: used by the CGAL routes.

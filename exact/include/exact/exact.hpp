@@ -116,8 +116,10 @@ struct Options
 Result distance(const Shape& a, const Shape& b, const Options& options = {});
 
 // max(0, dist(p, hull(shape)) - shape.radius), correctly rounded to nearest double; p is in the
-// world frame. Used for "witness point lies on its shape" errors.
-double pointToShapeDistance(const Shape& shape, Point p);
+// world frame. Used for "witness point lies on its shape" errors. Decided in floating point where
+// an error bound allows (docs/exact.md, "Point to shape"), else by the GMP route, with the same
+// result bit for bit; `gmpRoute`, when given, says whether the GMP route measured it.
+double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute = nullptr);
 
 // Independent brute force (plain GMP rationals, no hull construction): exact separating-axis test
 // over every pair direction, then the minimum exact squared point-to-segment distance over all

@@ -549,16 +549,19 @@ class ExactShapes
 {
   public:
     explicit ExactShapes(const Case& c) : c_(c) {}
-    // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else the
-    // exact route's value; `exactCount` counts the points the exact route measured.
+    // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else
+    // exact::pointToShapeDistance's value (decided in floating point or by its GMP route);
+    // `exactCount` counts the points the GMP route measured.
     double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
     {
         Pair& s = get(isFloat);
         const exact::Point q{p[0], p[1]};
         if (certainlyOnShape(ofA ? s.fa : s.fb, q))
             return 0;
-        ++exactCount;
-        return exact::pointToShapeDistance(ofA ? s.a : s.b, q);
+        bool gmp = false;
+        const double d = exact::pointToShapeDistance(ofA ? s.a : s.b, q, &gmp);
+        exactCount += gmp ? 1 : 0;
+        return d;
     }
 
   private:

@@ -425,8 +425,9 @@ std::string problemLine(const std::string& family, const std::string& name, cons
     return fmt::format("  {:<28} {:<21} {:<19} {}\n", fam, name, what, detail);
 }
 
-// The witness checks' exact fallbacks over every family and variant (nothing for a report written
-// before the witness filter).
+// The witness checks' GMP fallbacks over every family and variant (nothing for a report written
+// before the witness filter): the points neither the witness filter nor exact::
+// pointToShapeDistance's own floating-point filter decided.
 std::string witnessFallbackLine(const Json& r)
 {
     std::uint64_t points = 0, exact = 0;
@@ -438,8 +439,8 @@ std::string witnessFallbackLine(const Json& r)
         }
     if (points == 0)
         return {};
-    return fmt::format("witness points: {} measured, {} by the exact route ({:.2f} %), the rest "
-                       "decided by the floating-point filter\n",
+    return fmt::format("witness points: {} measured, {} by the GMP route ({:.2f} %), the rest "
+                       "decided in floating point\n",
                        points, exact, 100.0 * double(exact) / double(points));
 }
 } // namespace
