@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <type_traits>
 #include <utility>
@@ -849,6 +850,82 @@ TEMPLATE_TEST_CASE("warm start: the promise holds for every option, on long and 
     }
     CHECK(compared > 90000);
     CHECK(differing == 0);
+}
+
+TEMPLATE_TEST_CASE("the reference options run a constant copy of the query with the same bits",
+                   "[gjk][cache]", float, double)
+{
+    using T = TestType;
+    // distance() with referenceOptions and no trace runs a copy of the query in which every option
+    // is a constant (docs/speed.md, "The cold query on engine data"); with a trace it runs the
+    // general copy. Both must give the same bits, cold and warm, and the same cache. Random pairs
+    // with radii, their rotations rounded to float (in double never unit to 2u: the division
+    // path of a float engine's transforms) on every other pair, long edges on every third.
+    std::mt19937_64 rng(7);
+    auto sameBits = [](T a, T b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    auto same = [&](const DistanceOutput<T>& x, const DistanceOutput<T>& y)
+    {
+        return sameBits(x.distance, y.distance) && sameBits(x.pointA.x, y.pointA.x) &&
+               sameBits(x.pointA.y, y.pointA.y) && sameBits(x.pointB.x, y.pointB.x) &&
+               sameBits(x.pointB.y, y.pointB.y) && sameBits(x.normal.x, y.normal.x) &&
+               sameBits(x.normal.y, y.normal.y) && x.iterations == y.iterations &&
+               x.stop == y.stop && x.outOfRange == y.outOfRange && x.rescaled == y.rescaled;
+    };
+    auto sameCache = [](const SimplexCache& x, const SimplexCache& y)
+    {
+        bool same = x.count == y.count && x.edgeBase == y.edgeBase && x.searchA == y.searchA &&
+                    x.searchB == y.searchB;
+        for (int i = 0; same && i < x.count; ++i)
+            same = x.indexA[i] == y.indexA[i] && x.indexB[i] == y.indexB[i];
+        return same;
+    };
+    int differing = 0, nonUnit = 0;
+    for (int k = 0; k < 4000; ++k)
+    {
+        auto a = bench::converted<T>(bench::randomShape(rng));
+        auto b = bench::converted<T>(bench::randomShape(rng));
+        if (k % 3 == 1)
+            a.points[0] = T(std::ldexp(1.0, int(rng() % 40))) * a.points[0];
+        if (k % 2 == 0)
+        {
+            a.xf.q = {T(float(a.xf.q.c)), T(float(a.xf.q.s))};
+            b.xf.q = {T(float(b.xf.q.c)), T(float(b.xf.q.s))};
+        }
+        nonUnit += !isUnitRotation(squaredSize(a.xf.q));
+        const T rA = k % 4 == 0 ? T(0.25) : T(0), rB = k % 5 == 0 ? T(0.5) : T(0);
+        const DistanceInput<T> in{{a.points.data(), int(a.points.size()), rA},
+                                  {b.points.data(), int(b.points.size()), rB},
+                                  a.xf,
+                                  b.xf};
+        SimplexCache fastCache, generalCache;
+        Trace<T> trace;
+        const Options copy = referenceOptions; // another object, equal to it
+        const auto fast = distance(in, fastCache, copy);
+        const auto general = distance(in, generalCache, referenceOptions, &trace);
+        const auto fastWarm = distance(in, fastCache, copy);
+        const auto generalWarm = distance(in, generalCache, referenceOptions, &trace);
+        differing += !(same(fast, general) && same(fastWarm, generalWarm) &&
+                       sameCache(fastCache, generalCache));
+    }
+    if constexpr (std::is_same_v<T, double>)
+        CHECK(nonUnit > 1500); // the float rotations: about half of the 4,000 pairs
+    CHECK(differing == 0);
+}
+
+TEMPLATE_TEST_CASE("isZero: exactly the zero vectors, either sign", "[gjk][numerics]", float,
+                   double)
+{
+    using T = TestType;
+    using L = std::numeric_limits<T>;
+    CHECK(isZero(Vec2<T>{T(0), T(0)}));
+    CHECK(isZero(Vec2<T>{-T(0), T(0)}));
+    CHECK(isZero(Vec2<T>{T(0), -T(0)}));
+    CHECK(isZero(Vec2<T>{-T(0), -T(0)}));
+    CHECK_FALSE(isZero(Vec2<T>{L::denorm_min(), T(0)}));
+    CHECK_FALSE(isZero(Vec2<T>{-T(0), -L::denorm_min()}));
+    CHECK_FALSE(isZero(Vec2<T>{L::quiet_NaN(), T(0)}));
+    CHECK_FALSE(isZero(Vec2<T>{T(0), L::infinity()}));
+    CHECK_FALSE(isZero(Vec2<T>{T(1), T(0)}));
 }
 
 TEMPLATE_TEST_CASE("outputs carry no negative zero, cold or warm", "[gjk][cache]", float, double)

@@ -2,8 +2,13 @@
 // transforms, and the scalar traits that hold every tolerance. Header-only, no allocation, no I/O.
 #pragma once
 
+#include "gjk/detail/macros.hpp"
+
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <type_traits>
 
 #include "gjk/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
 
@@ -56,6 +61,15 @@ template <class T> constexpr Vec2<T> leftPerp(Vec2<T> v)
 template <class T> constexpr Vec2<T> rightPerp(Vec2<T> v)
 {
     return {v.y, -v.x};
+}
+// v == (0, 0) exactly (either zero's sign), as one integer test: a floating-point zero is the only
+// value whose bits are all zero but the sign bit, so the test is the bits of both components,
+// OR-ed, shifted left by one. `v.x == 0 && v.y == 0` compiled to two compares, flag moves and a
+// stored flag per GJK iteration (docs/speed.md, "The cold query on engine data").
+template <class T> GJK_INLINE bool isZero(Vec2<T> v)
+{
+    using U = std::conditional_t<sizeof(T) == 8, std::uint64_t, std::uint32_t>;
+    return U((std::bit_cast<U>(v.x) | std::bit_cast<U>(v.y)) << 1) == U(0);
 }
 // sqrt(x^2 + y^2) without std::hypot's scaling (slow): inside the query's documented range
 // (Tolerances<T>::maxCoordinate) the squares can neither overflow nor lose accuracy to underflow.
@@ -160,7 +174,14 @@ constexpr Transform<T> invMulTransforms(const Transform<T>& a, const Transform<T
     Transform<T> r{invRotate(a.q, b.p - a.p), invMulRot(a.q, b.q)};
     const T n = squaredSize(a.q);
     if (!isUnitRotation(n)) [[unlikely]]
-        r = {{r.p.x / n, r.p.y / n}, {r.q.c / n, r.q.s / n}};
+    {
+        // The four quotients from one array, so that GCC divides each value once (it had divided
+        // the packed and the scalar copies it kept of r separately: five divisions, eight lanes).
+        T v[4] = {r.p.x, r.p.y, r.q.c, r.q.s};
+        for (T& x : v)
+            x /= n;
+        r = {{v[0], v[1]}, {v[2], v[3]}};
+    }
     return r;
 }
 

@@ -24,11 +24,12 @@ namespace gjk
 // independent chain, free next to the comparisons) and is non-finite as soon as one of them
 // overflowed (a shape point times a direction: validation/cases/range-overflow.json, where the
 // simplex stayed in range while the shapes' points did not).
-template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d, bool& finite)
+// `sum` receives that sum (the query folds it into one check per query: TransformedShape).
+template <class T> GJK_INLINE int findSupportSum(const Polygon<T>& poly, Vec2<T> d, T& sum)
 {
     int index = 0;
     T maxValue = dot(d, poly.points[0]);
-    T sum = maxValue;
+    sum = maxValue;
     for (int i = 1; i < poly.count; ++i)
     {
         const T value = dot(d, poly.points[i]);
@@ -39,6 +40,12 @@ template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d, bool& fini
             maxValue = value;
         }
     }
+    return index;
+}
+template <class T> int findSupport(const Polygon<T>& poly, Vec2<T> d, bool& finite)
+{
+    T sum;
+    const int index = findSupportSum(poly, d, sum);
     finite = std::abs(sum) <= std::numeric_limits<T>::max();
     return index;
 }
@@ -129,7 +136,12 @@ template <class T, bool Scaled = false> struct TransformedShape
 
     bool binary = false;   // usesBinarySearch
     int last = 0;          // previous support index: where the galloping search starts
-    bool overflow = false; // a support scan's products overflowed (DistanceOutput::outOfRange)
+    bool overflow = false; // the binary search chose a point out of range (outOfRange)
+    // The linear scans' overflow check, folded into arithmetic: each scan adds sum - sum, which is
+    // +0 for a finite sum and NaN for an infinite or NaN one (NaN then stays: NaN + x is NaN), so
+    // scanCheck != 0 exactly when some scan's sum was not finite (findSupport's `finite`). One
+    // subtraction and one addition per scan, off the chain; tested once per query (overflowed).
+    T scanCheck = T(0);
 
     // Scaled: every point is multiplied by 2^scale, exact unless it underflows (then `inexact` is
     // set and the query stays flagged outOfRange).
@@ -143,9 +155,9 @@ template <class T, bool Scaled = false> struct TransformedShape
             local = directionForScan(local, scale);
         if (!binary)
         {
-            bool finite;
-            const int i = findSupport(poly, local, finite);
-            overflow = overflow || !finite;
+            T sum;
+            const int i = findSupportSum(poly, local, sum);
+            scanCheck += sum - sum;
             return i;
         }
         last = findSupportFrom(poly, local, last);
@@ -155,6 +167,8 @@ template <class T, bool Scaled = false> struct TransformedShape
             overflow || !(std::max(std::abs(p.x), std::abs(p.y)) <= Tolerances<T>::maxCoordinate);
         return last;
     }
+    // Whether a support search overflowed (DistanceOutput::outOfRange).
+    bool overflowed() const { return overflow || !(scanCheck == T(0)); }
     Vec2<T> vertex(int i)
     {
         if constexpr (Scaled)

@@ -139,6 +139,8 @@ struct Options
     // CorrectPath::NeedsExact asks the caller for the exact completion
     // (exact/include/exact/correct_fallback.hpp). double queries only.
     bool correctlyRounded = false;
+
+    bool operator==(const Options&) const = default;
 };
 
 // The reference variant, with a stable name. The default Options{} is this variant.
