@@ -6,7 +6,8 @@
 // A filtered design, as in exact geometric computation: the cheap stage decides when it can prove
 // its answer, and hands the rest on.
 //   1. The plain GJK query (any Options) names the final features: the index pairs of its simplex
-//      (SimplexCache).
+//      (SimplexCache). A triangle without containment (three points of Z on one line) is tried as
+//      its three edges in turn (refine).
 //   2. CorrectPath::Double: containment (a triangle simplex) whose three orientation signs are
 //      certified in double: first by a semi-static filter (containsOriginFiltered: one bound per
 //      coordinate from the inputs' magnitudes), then, where that cannot decide, by the running
