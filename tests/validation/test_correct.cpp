@@ -13,7 +13,9 @@
 
 #include <bit>
 #include <cstdint>
+#include <limits>
 #include <map>
+#include <vector>
 
 using namespace gjkval;
 
@@ -296,4 +298,73 @@ TEST_CASE("correctly rounded: exact ties round to even without the exact side", 
                                 exact::shapeOf(in.proxyB, in.transformB, true));
             CHECK(sameBits(out.distance, truth.distance));
         }
+}
+
+TEST_CASE("correctly rounded: a degenerate triangle is decided from its edges", "[correct]")
+{
+    // engine/bullets-toi/436-step216-edge-polygon (`generate --family engine:1000`): a long
+    // segment under a box whose bottom edge is parallel to it. The plain query ends on three
+    // points of Z on one line without containment; each edge's features are tried in turn
+    // (refine), and one decides without the exact side. Before issue 33: NeedsExact.
+    const double h = 0.33128368854522705;
+    const std::vector<gjk::Vec2<double>> a = {{-40, 0}, {40, 0}};
+    const std::vector<gjk::Vec2<double>> b = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+    gjk::DistanceInput<double> in = inputOf(a, b);
+    in.transformB.p = {-2.526411771774292, 0.34628245234489441};
+    gjk::SimplexCache cache;
+    const auto plain = gjk::distance(in, cache);
+    REQUIRE(cache.count == 3);
+    REQUIRE(plain.stop != gjk::StopReason::Containment);
+    const auto out = gjk::distance(in, kCorrect);
+    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
+    const exact::Result truth = exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
+                                                exact::shapeOf(in.proxyB, in.transformB, true));
+    CHECK(truth.distance > 0.01);
+    CHECK(sameBits(out.distance, truth.distance));
+}
+
+TEST_CASE("correctly rounded: float data take the float products, bit for bit", "[correct]")
+{
+    // minkowskiPointLanes skips the products' splits and guards when every factor is a float
+    // (isFloat2): floatProduct must return exactly twoProduct's pieces there (the trailing part
+    // +0), and exactProduct's guard must hold, so that W is bit for bit the general path's. Checked
+    // on the factors of the engine cases' points of Z and on floats at the ends of the range.
+    using namespace gjk::correct;
+    CHECK(all2(isFloat2(pair(0.1f, -3e38f))));
+    CHECK_FALSE(isFloat2(pair(0.1, 1))[0]);
+    CHECK_FALSE(isFloat2(pair(1, 1e39))[1]);
+    CHECK_FALSE(isFloat2(pair(1, std::numeric_limits<double>::infinity()))[1]);
+    CHECK_FALSE(isFloat2(pair(1, std::numeric_limits<double>::quiet_NaN()))[1]);
+    CHECK(low29BitsZero(pair(0.1f, 2), pair(-3, 1e-45f), pair(0, -0.0), pair(7, 1e30f)));
+    CHECK_FALSE(low29BitsZero(pair(0.1f, 2), pair(-3, 0.1), pair(0, 0), pair(7, 1)));
+    std::vector<double> factors = {0,     -0.0,   1e-45f, -1e-45f, 1.17549435e-38f,
+                                   3e38f, -3e38f, 0.1f,   1,       16777215};
+    for (const auto& f : generateFamilies("engine:20", 5))
+        for (const Case& c : f.cases)
+        {
+            const gjk::DistanceInput<double> in = prepare(c).input<double>();
+            for (const auto& xf : {in.transformA, in.transformB})
+                factors.insert(factors.end(), {xf.q.c, xf.q.s});
+            for (const auto& poly : {in.proxyA, in.proxyB})
+                for (int i = 0; i < poly.count; ++i)
+                    factors.insert(factors.end(), {poly.points[i].x, poly.points[i].y});
+        }
+    int products = 0;
+    for (std::size_t i = 0; i < factors.size(); ++i)
+        for (std::size_t j = i; j < factors.size(); j += 7)
+        {
+            const V2 a = pair(factors[i], -factors[i]), b = pair(factors[j], factors[j]);
+            if (!all2(isFloat2(a) & isFloat2(b)))
+                continue;
+            ++products;
+            const DD2 fast = floatProduct(a, b), general = twoProduct(a, b);
+            INFO(factors[i] << " * " << factors[j]);
+            for (int k = 0; k < 2; ++k)
+            {
+                CHECK(sameBits(fast.hi[k], general.hi[k]));
+                CHECK(sameBits(fast.lo[k], general.lo[k]));
+            }
+            CHECK(all2(exactProduct(a, b, general.hi)));
+        }
+    CHECK(products > 1000);
 }

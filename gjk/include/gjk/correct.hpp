@@ -6,7 +6,8 @@
 // A filtered design, as in exact geometric computation: the cheap stage decides when it can prove
 // its answer, and hands the rest on.
 //   1. The plain GJK query (any Options) names the final features: the index pairs of its simplex
-//      (SimplexCache).
+//      (SimplexCache). A triangle without containment (three points of Z on one line) is tried as
+//      its three edges in turn (refine).
 //   2. CorrectPath::Double: containment (a triangle simplex) whose three orientation signs are
 //      certified in double: first by a semi-static filter (containsOriginFiltered: one bound per
 //      coordinate from the inputs' magnitudes), then, where that cannot decide, by the running
@@ -88,7 +89,9 @@ GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<doub
 // leading pieces, the rest (its five errors and the four trailing parts) summed in double. The
 // bound is exactSum's: n 2^-52 sum|rest| with n = 10 (recursive summation of nine values errs by
 // at most 8u sum|rest|, 2^-52 = 2u). False when a guard fails or the rest is not below 2^-40 of
-// the sum in both lanes (heavy cancellation): exactSum's further passes then decide.
+// the sum in both lanes (heavy cancellation): exactSum's further passes then decide. Float data
+// (the four coordinates and both rotations floats, as float engines give) skip the products'
+// splits and guards (floatProduct): the pieces, and so W, are bit for bit the same.
 GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int i, int j,
                                             ApproxVec& W)
 {
@@ -99,11 +102,23 @@ GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int
     const V2 f3 = pair(-xb.q.c, -xb.q.s), g3 = pair(b.x, b.x);
     const V2 f4 = pair(xb.q.s, -xb.q.c), g4 = pair(b.y, b.y);
     const V2 tA = pair(xa.p.x, xa.p.y), tB = pair(-xb.p.x, -xb.p.y);
-    const DD2 p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3),
-              p4 = twoProduct(f4, g4);
-    const M2 exact = exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) &
-                     exactProduct(f3, g3, p3.hi) & exactProduct(f4, g4, p4.hi) &
-                     (abs2(tA) <= 0x1p900) & (abs2(tB) <= 0x1p900);
+    M2 exact = (abs2(tA) <= 0x1p900) & (abs2(tB) <= 0x1p900);
+    DD2 p1, p2, p3, p4;
+    const V2 va = pair(a.x, a.y), vb = pair(b.x, b.y);
+    if (low29BitsZero(va, vb, f1, f3) &&
+        all2(isFloat2(va) & isFloat2(vb) & isFloat2(f1) & isFloat2(f3)))
+    {
+        // Float data (a float engine's): every product exact as it is (floatProduct).
+        p1 = floatProduct(f1, g1), p2 = floatProduct(f2, g2), p3 = floatProduct(f3, g3),
+        p4 = floatProduct(f4, g4);
+    }
+    else
+    {
+        p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3),
+        p4 = twoProduct(f4, g4);
+        exact = exact & exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) &
+                exactProduct(f3, g3, p3.hi) & exactProduct(f4, g4, p4.hi);
+    }
     const DD2 s1 = twoSum(p1.hi, p2.hi);
     const DD2 s2 = twoSum(s1.hi, tA);
     const DD2 s3 = twoSum(s2.hi, p3.hi);
@@ -154,18 +169,24 @@ GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<doub
     return {exactSum(cx, tx), exactSum(cx, ty)};
 }
 
-// The sign of a.b, certified in double from the values' bounds (+1, -1, or 0: not decided).
-GJK_CORRECT_INLINE int signOfDot(const ApproxVec& a, const ApproxVec& b)
+// a2.e > 0 and a1.e < 0 for certain (the origin projects strictly inside the segment a1 a2 of
+// direction e), each sign certified in double from the values' bounds; both in two lanes.
+GJK_CORRECT_INLINE bool projectsInside(const ApproxVec& a2, const ApproxVec& a1, const ApproxVec& e)
 {
-    const double g = a.x.hi * b.x.hi + a.y.hi * b.y.hi;
-    auto term = [](const Approx& p, const Approx& q)
+    auto lanes = [](const Approx& p0, const Approx& p1, const Approx& q) -> ApproxVec2
     {
-        const double dp = std::abs(p.lo) + p.err, dq = std::abs(q.lo) + q.err;
-        return 3 * 0x1p-53 * std::abs(p.hi * q.hi) + dp * std::abs(q.hi) + dq * std::abs(p.hi) +
-               dp * dq;
+        return {pair(p0.hi, p1.hi), pair(p0.lo, p1.lo), pair(p0.err, p1.err),
+                pair(q.hi, q.hi),   pair(q.lo, q.lo),   pair(q.err, q.err)};
     };
-    const double bound = (term(a.x, b.x) + term(a.y, b.y)) * kSafe + 0x1p-1000;
-    return g > bound ? 1 : (g < -bound ? -1 : 0);
+    const ApproxVec2 x = lanes(a2.x, a1.x, e.x), y = lanes(a2.y, a1.y, e.y);
+    const V2 g = x.ph * x.qh + y.ph * y.qh;
+    auto term = [](const ApproxVec2& t)
+    {
+        const V2 dp = abs2(t.pl) + t.pe, dq = abs2(t.ql) + t.qe;
+        return (((3 * 0x1p-53) * abs2(t.ph * t.qh) + dp * abs2(t.qh)) + dq * abs2(t.ph)) + dp * dq;
+    };
+    const V2 bound = (term(x) + term(y)) * pair(kSafe, kSafe) + pair(0x1p-1000, 0x1p-1000);
+    return g[0] > bound[0] && g[1] < -bound[1];
 }
 
 // The vertices of a shape that can attain min (sign = +1) or max (sign = -1) of n.(Q x) over its
@@ -546,9 +567,9 @@ inline constexpr double kEdgeAccuracy = 0x1p-80;
 // 2^-60 (|c| + |s|) max|n| (|x| + |y|) such a direction error can move a vertex's value.
 inline constexpr double kDirectionAccuracy = 0x1p-60;
 // An absolute slack beside the relative kSafe in a candidate's reach (lowestSupportValue), as in
-// signOfDot and supportCandidates: it keeps the widened bound rigorous for values so small that a
-// relative margin vanishes (near underflow, multiples of 2^-1074), and lies far below any distance
-// the refinement decides (roundInterval and roundAtMidpoint answer only from 2^-900 on).
+// projectsInside and supportCandidates: it keeps the widened bound rigorous for values so small
+// that a relative margin vanishes (near underflow, multiples of 2^-1074), and lies far below any
+// distance the refinement decides (roundInterval and roundAtMidpoint answer only from 2^-900 on).
 inline constexpr double kUnderflowMargin = 0x1p-1000;
 
 // The features the plain query ended on, as points of Z in double-double with their bounds.
@@ -606,11 +627,11 @@ GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in
 {
     f.W2 = minkowskiPoint(cx, in, f.a2, f.b2);
     f.unum = cross(cx, f.W2, f.W1);
-    f.e = {sub(f.W2.x, f.W1.x), sub(f.W2.y, f.W1.y)};
+    addLanes(f.W2.x, negate(f.W1.x), f.W2.y, negate(f.W1.y), f.e.x, f.e.y); // W2 - W1
     if (!(std::max(f.e.x.err, f.e.y.err) <=
           kEdgeAccuracy * std::max(std::abs(f.e.x.hi), std::abs(f.e.y.hi))))
         f.e = minkowskiEdge(cx, in, f.a1, f.b1, f.a2, f.b2);
-    if (!cx.ok || signOfDot(f.W2, f.e) != 1 || signOfDot(f.W1, f.e) != -1)
+    if (!cx.ok || !projectsInside(f.W2, f.W1, f.e))
         return false;
     // n: the perpendicular of e towards Z (n.W1 > 0).
     f.n = f.unum.hi > 0 ? ApproxVec{negate(f.e.y), f.e.x} : ApproxVec{f.e.y, negate(f.e.x)};
@@ -753,6 +774,11 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
 // The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
 // cache the plain query returned: its index pairs are the final features. Out of line, so that
 // gjk::distance does not carry its code and stack frame into the default query.
+// A triangle on which the plain query did not stop for containment is a degenerate one: three
+// points of Z on one line (two parallel edges give it: engine/bullets-toi). Its three edges are
+// refined one after the other as the features (the bounds hold for any points of Z; a feature that
+// is not the closest leaves the interval undecided) until one decides. Before issue 33 such a
+// query went to the exact side: 5 of the 6,000 `engine:1000` cases, some 30 us of GMP each.
 [[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache,
                                      const Options& options, DistanceOutput<double>& out)
 {
@@ -765,6 +791,19 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
     const Approx r = {rs.hi, rs.lo, 0};
     if (cache.count == 3)
     {
+        if (out.stop != StopReason::Containment) [[unlikely]]
+        {
+            for (int k = 0; k < 3 && out.path == CorrectPath::NeedsExact; ++k)
+            {
+                const int i = k == 2 ? 1 : 0, j = k == 0 ? 1 : 2; // (0, 1), (0, 2), (1, 2)
+                SimplexCache edge;
+                edge.count = 2;
+                edge.indexA[0] = cache.indexA[i], edge.indexB[0] = cache.indexB[i];
+                edge.indexA[1] = cache.indexA[j], edge.indexB[1] = cache.indexB[j];
+                refine(in, edge, options, out);
+            }
+            return;
+        }
         if (!containmentCertified(in, cache, out))
             return;
         // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.

@@ -6,6 +6,7 @@
 // that fails turns a Context's `ok` false: the caller then needs exact arithmetic.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -369,6 +370,44 @@ GJK_CORRECT_INLINE DD2 twoProduct(V2 a, V2 b) // twoProduct above, lane by lane
     const V2 cb = split * b, bh = cb - (cb - b), bl = b - bh;
     return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
 }
+// Each lane a float value (finite, and a float's exact double): a product of two such values has
+// at most 48 significant bits and lies in [2^-298, 2^256] or is 0, so it is exact in double and
+// inside exactProduct's range. The test converts only values in float's range (a conversion out
+// of range is undefined).
+GJK_CORRECT_INLINE M2 isFloat2(V2 v)
+{
+    const M2 inRange = abs2(v) <= 3.4028234663852886e38; // FLT_MAX
+#if defined(__GNUC__) && !defined(GJK_NO_VECTOR_EXTENSIONS)
+    typedef float F2 __attribute__((vector_size(8)));
+    const V2 safe = V2(M2(v) & inRange);
+    return inRange & (__builtin_convertvector(__builtin_convertvector(safe, F2), V2) == v);
+#else
+    auto lane = [&](int k) { return inRange[k] && double(float(v[k])) == v[k]; };
+    return {{lane(0), lane(1)}};
+#endif
+}
+// The 29 lowest significand bits zero in every lane of the four (as in every float's value): the
+// cheap first test of float data, which fails at once on doubles' data.
+GJK_CORRECT_INLINE bool low29BitsZero(V2 a, V2 b, V2 c, V2 d)
+{
+    constexpr std::uint64_t low = (std::uint64_t(1) << 29) - 1;
+#if defined(__GNUC__) && !defined(GJK_NO_VECTOR_EXTENSIONS)
+    typedef std::uint64_t U2 __attribute__((vector_size(16)));
+    const U2 m = ((U2(a) | U2(b)) | (U2(c) | U2(d))) & low;
+    return (m[0] | m[1]) == 0;
+#else
+    std::uint64_t m = 0;
+    for (const V2& v : {a, b, c, d})
+        m |= std::bit_cast<std::uint64_t>(v[0]) | std::bit_cast<std::uint64_t>(v[1]);
+    return (m & low) == 0;
+#endif
+}
+// twoProduct for factors that are both floats (isFloat2): the product is exact, its trailing part
+// 0, exactly what twoProduct returns for it.
+GJK_CORRECT_INLINE DD2 floatProduct(V2 a, V2 b)
+{
+    return {a * b, pair(0.0, 0.0)};
+}
 // exactProduct's guard, lane by lane, with the factors' range tested at 2^450 (which also
 // keeps the product below 2^900): exact unless a factor is zero or |a b| >= 2^-960.
 GJK_CORRECT_INLINE M2 exactProduct(V2 a, V2 b, V2 p)
@@ -398,6 +437,24 @@ GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0
         kSafe * ((((magA * be + magB * ae) + ae * be) + kRel * abs2(r.hi)) + pair(kTiny, kTiny));
     r0 = {r.hi[0], r.lo[0], e[0]};
     r1 = {r.hi[1], r.lo[1], e[1]};
+}
+// Two products' factors p and q (each value hi + lo with its bound err) in two lanes.
+struct ApproxVec2
+{
+    V2 ph, pl, pe, qh, ql, qe;
+};
+// add above, lane by lane: a0 + b0 and a1 + b1 at once.
+GJK_CORRECT_INLINE void addLanes(const Approx& a0, const Approx& b0, const Approx& a1,
+                                 const Approx& b1, Approx& r0, Approx& r1)
+{
+    DD2 s = twoSum(pair(a0.hi, a1.hi), pair(b0.hi, b1.hi));
+    const DD2 t = twoSum(pair(a0.lo, a1.lo), pair(b0.lo, b1.lo));
+    s = fastTwoSum(s.hi, s.lo + t.hi);
+    s = fastTwoSum(s.hi, s.lo + t.lo);
+    const V2 e =
+        ((pair(a0.err, a1.err) + pair(b0.err, b1.err)) + kRel * abs2(s.hi)) * pair(kSafe, kSafe);
+    r0 = {s.hi[0], s.lo[0], e[0]};
+    r1 = {s.hi[1], s.lo[1], e[1]};
 }
 GJK_CORRECT_INLINE Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
 {
