@@ -433,6 +433,26 @@ void runLaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCac
     LaneBatch<T, W, State>(inputs, caches, outputs, options, run, stats)();
 }
 
+// Whether the lanes pay for this batch, chosen once from its shapes' point counts (BatchIsa::Best
+// only: an instruction set asked for by name runs as asked). Measured with `gjk-validate bench` on
+// 20,000 `random` pairs, on subsets of `random:100000` by shape size and on the 6,000 `engine`
+// pairs (docs/speed.md, "Against Box2D v3 in one command (issue 33)"): float lanes beat the scalar
+// loop everywhere (0.61x-0.85x); double lanes only where the shapes are small, as the engine's
+// boxes against edges and circles (mean 3.52 points per shape: 0.81x-0.86x), and lose from a mean
+// of 4 points (1.08x-1.13x; 5.5 on `random`: 1.01x-1.08x; 3.5, shapes of 3 and 4 points: 0.96x and
+// 1.03x, a tie). So double runs in lanes when the mean is at most 3.75 points per shape.
+constexpr double kDoubleLanesMaxMeanPoints = 3.75;
+
+template <class T> bool lanesPay(std::span<const DistanceInput<T>> inputs)
+{
+    if constexpr (std::is_same_v<T, float>)
+        return true;
+    double points = 0;
+    for (const DistanceInput<T>& in : inputs)
+        points += double(std::max(0, in.proxyA.count)) + double(std::max(0, in.proxyB.count));
+    return points <= kDoubleLanesMaxMeanPoints * 2 * double(inputs.size());
+}
+
 template <class T>
 void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
                        std::span<DistanceOutput<T>> outputs, const Options& options, BatchIsa isa,
@@ -440,7 +460,9 @@ void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<Simpl
 {
     GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
     const BatchIsa best = bestBatchIsa();
-    if (isa == BatchIsa::Best || std::uint8_t(isa) > std::uint8_t(best))
+    if (isa == BatchIsa::Best)
+        isa = lanesPay(inputs) ? best : BatchIsa::Scalar;
+    else if (std::uint8_t(isa) > std::uint8_t(best))
         isa = best;
     BatchStats st;
     st.isa = isa;

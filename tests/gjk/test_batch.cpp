@@ -287,3 +287,54 @@ TEST_CASE("batch lanes: the instruction sets", "[gjk][batch]")
                   BatchIsa::Best, &stats);
     CHECK(stats.queries == 0);
 }
+
+namespace
+{
+// The default batch (BatchIsa::Best) on `inputs`: every output and cache bit for bit
+// gjk::distance's, and the lanes' too (the widest instruction set asked for by name). Returns the
+// instruction set the default chose.
+template <class T> BatchIsa checkDefaultChoice(const std::vector<DistanceInput<T>>& inputs)
+{
+    std::vector<SimplexCache> caches(inputs.size()), laneCaches(inputs.size());
+    std::vector<DistanceOutput<T>> outputs(inputs.size()), laneOutputs(inputs.size());
+    BatchStats stats;
+    distanceBatch(std::span<const DistanceInput<T>>(inputs), caches, outputs, referenceOptions,
+                  BatchIsa::Best, &stats);
+    distanceBatch(std::span<const DistanceInput<T>>(inputs), laneCaches, laneOutputs,
+                  referenceOptions, bestBatchIsa());
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < inputs.size(); ++i)
+    {
+        SimplexCache cache;
+        const DistanceOutput<T> expected = distance(inputs[i], cache, referenceOptions);
+        const bool same = sameOutput(outputs[i], expected) && sameCache(caches[i], cache) &&
+                          sameOutput(laneOutputs[i], expected) && sameCache(laneCaches[i], cache);
+        mismatches += same ? 0 : 1;
+    }
+    CHECK(mismatches == 0);
+    return stats.isa;
+}
+} // namespace
+
+// The choice between lanes and the scalar loop, once per batch from its point counts
+// (gjk/src/batch.cpp, lanesPay): double pairs of 8 points (mean 8 > 3.75) run the scalar loop,
+// pairs of 3 and 4 points (mean 3.5 <= 3.75) the lanes; float always the lanes. Both paths give
+// gjk::distance's bits.
+TEMPLATE_TEST_CASE("batch lanes: the default chooses lanes or the scalar loop by point counts",
+                   "[gjk][batch]", float, double)
+{
+    using T = TestType;
+    std::mt19937_64 rng(3301);
+    Pairs<T> large, small;
+    for (int i = 0; i < 500; ++i)
+    {
+        large.add(shapeOf(rng, 8), shapeOf(rng, 8));
+        small.add(shapeOf(rng, 3), shapeOf(rng, 4));
+    }
+    large.bind();
+    small.bind();
+    const BatchIsa lanes = bestBatchIsa(); // Scalar where no lanes are compiled
+    CHECK(checkDefaultChoice<T>(small.inputs) == lanes);
+    CHECK(checkDefaultChoice<T>(large.inputs) ==
+          (std::is_same_v<T, double> ? BatchIsa::Scalar : lanes));
+}

@@ -27,7 +27,7 @@ enum class BatchIsa : std::uint8_t
     Sse2,   // 16-byte vectors (2 double or 4 float lanes): x86-64's baseline
     Avx2,   // 32-byte vectors (4 double or 8 float lanes)
     Avx512, // 64-byte vectors (8 double or 16 float lanes), AVX-512F
-    Best,   // the widest one this CPU has (the default)
+    Best,   // the default: the widest one this CPU has, or the scalar loop where lanes lose (below)
 };
 
 constexpr const char* batchIsaName(BatchIsa isa)
@@ -69,7 +69,11 @@ struct BatchStats
 
 // The batch: outputs[i] = distance(inputs[i], caches[i], options), caches[i] updated (warm batches:
 // pass each pair's cache from the previous step). The spans must have equal sizes. `isa`: Best, or
-// one this CPU runs (else the next narrower one that it runs). `stats`: filled when given.
+// one this CPU runs (else the next narrower one that it runs). Best chooses once per batch, from
+// its shapes' point counts, between the widest lanes and the scalar loop, whichever was faster on
+// such shapes: float always lanes, double lanes only when the mean is at most 3.75 points per
+// shape (gjk/src/batch.cpp, kDoubleLanesMaxMeanPoints; stats->isa says which ran). The bits are
+// the same either way. `stats`: filled when given.
 void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
                    std::span<DistanceOutput<double>> outputs,
                    const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,

@@ -36,6 +36,17 @@ extern "C"
  * variants (variants[].plugin.library; "" when the plugin does not export it). */
 #define GJK2D_PLUGIN_LIBRARY_ENTRY "gjk2d_plugin_library"
 
+/* Optional, since issue 33 (the ABI version is unchanged: a plugin without it loads as before):
+ *
+ *     const gjk2d_timing* gjk2d_plugin_timing(void);
+ *
+ * the plugin's own timing loop, for `gjk-validate bench --against` (docs/validate-your-gjk.md,
+ * "Timing loop"): the library timed the way its own benchmark would time it, over inputs it
+ * prepared once in its own types, rather than call by call through distance_f/distance_d. The
+ * runner calls prepare once, then pass once per timed pass (alternated with gjk2d's passes), then
+ * release, all in one child process; the table lives as long as the library. */
+#define GJK2D_PLUGIN_TIMING_ENTRY "gjk2d_plugin_timing"
+
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
      * to that type and judges it against the exact truth of those rounded inputs. */
     enum gjk2d_scalar
@@ -128,6 +139,26 @@ extern "C"
 
     typedef const gjk2d_plugin* (*gjk2d_plugin_describe_fn)(void);
     typedef const char* (*gjk2d_plugin_library_fn)(void); /* optional: GJK2D_PLUGIN_LIBRARY_ENTRY */
+
+    /* The optional timing loop (GJK2D_PLUGIN_TIMING_ENTRY). */
+    typedef struct gjk2d_timing
+    {
+        /* Prepares `count` cases for implementation `implementation` (its index in the
+         * description): a[i] and b[i] are gjk2d_shape_f when it is a float implementation, else
+         * gjk2d_shape_d, valid during this call only (copy what the loop needs). warm = 0: every
+         * timed query starts cold; warm = 1: each case's query starts from the cache its previous
+         * query of that case left (seeded by one query per case here, before any timing).
+         * Returns the prepared state, or NULL when it cannot (for example warm = 1 and no cache).
+         */
+        void* (*prepare)(int32_t implementation, const void* a, const void* b, int32_t count,
+                         int32_t warm);
+        /* One timed pass: `reps` loops over all the prepared cases, in order. Returns the
+         * nanoseconds they took on the plugin's own monotonic clock (nothing else timed), or a
+         * negative number on failure. */
+        double (*pass)(void* prepared, int32_t reps);
+        void (*release)(void* prepared);
+    } gjk2d_timing;
+    typedef const gjk2d_timing* (*gjk2d_plugin_timing_fn)(void); /* GJK2D_PLUGIN_TIMING_ENTRY */
 
 #if defined(_WIN32)
 #define GJK2D_PLUGIN_EXPORT __declspec(dllexport)

@@ -22,10 +22,16 @@
  * (by design, "this way the points move smoothly"), so the runner counts a witness gap: 2,440 of
  * the engine proximity families' cases. Its distances leave gjk2d's bound only at the ends of the
  * float range (hard/tiny-scale, hard/extreme-scale, hard/range). */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+
 #include <gjk2d/plugin.h>
 
 #include "box2d/collision.h"
 #include "box2d/math_functions.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
 
 static b2Transform transformOf(const gjk2d_shape_f* s)
 {
@@ -48,19 +54,32 @@ static b2ShapeProxy proxyOf(const gjk2d_shape_f* s)
     return b2MakeProxy(pts, s->count, s->radius);
 }
 
+static int refused(const gjk2d_shape_f* a, const gjk2d_shape_f* b)
+{
+    return a->count < 1 || b->count < 1 || a->count > B2_MAX_POLYGON_VERTICES ||
+           b->count > B2_MAX_POLYGON_VERTICES;
+}
+
+/* The query's input, as Box2D builds it: B in A's frame. */
+static b2DistanceInput inputOf(const gjk2d_shape_f* a, const gjk2d_shape_f* b)
+{
+    b2DistanceInput in;
+    memset(&in, 0, sizeof in);
+    in.proxyA = proxyOf(a);
+    in.proxyB = proxyOf(b);
+    in.transform = b2InvMulTransforms(transformOf(a), transformOf(b));
+    in.useRadii = true;
+    return in;
+}
+
 static int32_t box2d3Distance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cache,
                               gjk2d_result_f* out)
 {
     (void)cache; /* cache_bytes 0: every call is cold */
-    if (a->count < 1 || b->count < 1 || a->count > B2_MAX_POLYGON_VERTICES ||
-        b->count > B2_MAX_POLYGON_VERTICES)
+    if (refused(a, b))
         return GJK2D_STATUS_REFUSED;
-    b2Transform xfA = transformOf(a), xfB = transformOf(b);
-    b2DistanceInput in;
-    in.proxyA = proxyOf(a);
-    in.proxyB = proxyOf(b);
-    in.transform = b2InvMulTransforms(xfA, xfB);
-    in.useRadii = true;
+    b2Transform xfA = transformOf(a);
+    b2DistanceInput in = inputOf(a, b);
     b2SimplexCache simplexCache = {0};
     b2DistanceOutput o = b2ShapeDistance(&in, &simplexCache, NULL, 0);
     b2Vec2 wa = b2TransformPoint(xfA, o.pointA), wb = b2TransformPoint(xfA, o.pointB);
@@ -79,6 +98,94 @@ static const gjk2d_implementation kImplementations[] = {
      GJK2D_SCALAR_FLOAT, GJK2D_ACCEPTS_RADIUS, B2_MAX_POLYGON_VERTICES, 0, &box2d3Distance, NULL},
 };
 
+/* The timing loop (gjk2d/plugin.h, gjk2d_plugin_timing), as the anchors' harness_box2d.c times
+ * b2ShapeDistance: the b2DistanceInputs built once (above), then only the calls are timed; cold, a
+ * zeroed b2SimplexCache per query; warm, each case's own cache, seeded by one query and rewritten
+ * by every query after it (the harness's "reuses its own cache from the previous pass"). The
+ * outputs are summed as the harness sums them, so that no call can be optimised away. */
+typedef struct
+{
+    b2DistanceInput* inputs;
+    b2SimplexCache* caches; /* warm only */
+    int32_t count;
+    volatile double sink;
+} TimedCases;
+
+static void* timingPrepare(int32_t implementation, const void* a, const void* b, int32_t count,
+                           int32_t warm)
+{
+    const gjk2d_shape_f* sa = (const gjk2d_shape_f*)a;
+    const gjk2d_shape_f* sb = (const gjk2d_shape_f*)b;
+    if (implementation != 0 || count < 0)
+        return NULL;
+    TimedCases* t = (TimedCases*)calloc(1, sizeof *t);
+    if (t == NULL)
+        return NULL;
+    t->inputs = (b2DistanceInput*)calloc((size_t)count + 1, sizeof(b2DistanceInput));
+    t->caches = warm ? (b2SimplexCache*)calloc((size_t)count + 1, sizeof(b2SimplexCache)) : NULL;
+    if (t->inputs == NULL || (warm && t->caches == NULL))
+    {
+        free(t->inputs);
+        free(t->caches);
+        free(t);
+        return NULL;
+    }
+    for (int32_t i = 0; i < count; ++i)
+    {
+        if (refused(&sa[i], &sb[i])) /* the runner leaves such cases out (max_vertices) */
+            continue;
+        t->inputs[t->count] = inputOf(&sa[i], &sb[i]);
+        if (warm)
+            b2ShapeDistance(&t->inputs[t->count], &t->caches[t->count], NULL, 0);
+        t->count += 1;
+    }
+    return t;
+}
+
+static double nowNs(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec * 1e9 + (double)ts.tv_nsec;
+}
+
+static double timingPass(void* prepared, int32_t reps)
+{
+    TimedCases* t = (TimedCases*)prepared;
+    double sum = 0.0;
+    const double t0 = nowNs();
+    if (t->caches == NULL) /* the harness's pass_cold */
+        for (int32_t r = 0; r < reps; ++r)
+            for (int32_t i = 0; i < t->count; ++i)
+            {
+                b2SimplexCache cache = {0};
+                b2DistanceOutput o = b2ShapeDistance(&t->inputs[i], &cache, NULL, 0);
+                sum += o.distance + o.pointA.x + o.iterations;
+            }
+    else /* its pass_warm */
+        for (int32_t r = 0; r < reps; ++r)
+            for (int32_t i = 0; i < t->count; ++i)
+            {
+                b2DistanceOutput o = b2ShapeDistance(&t->inputs[i], &t->caches[i], NULL, 0);
+                sum += o.distance + o.pointA.x + o.iterations;
+            }
+    const double t1 = nowNs();
+    t->sink = t->sink + sum;
+    return t1 - t0;
+}
+
+static void timingRelease(void* prepared)
+{
+    TimedCases* t = (TimedCases*)prepared;
+    if (t == NULL)
+        return;
+    free(t->inputs);
+    free(t->caches);
+    free(t);
+}
+
+static const gjk2d_timing kTiming = {&timingPrepare, &timingPass, &timingRelease};
+
 static const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations};
 
 GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
@@ -90,4 +197,11 @@ GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return GJK2D_BOX2D3_LIBRARY;
+}
+
+/* Its own timing loop, for `gjk-validate bench --against box2d-v3` (the optional export of
+ * gjk2d/plugin.h). */
+GJK2D_PLUGIN_EXPORT const gjk2d_timing* gjk2d_plugin_timing(void)
+{
+    return &kTiming;
 }

@@ -3,8 +3,12 @@
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
+#include "evaluate/peers.hpp"
+#include "evaluate/plugins.hpp"
 #include "evaluate/variants.hpp"
 #include "report/report.hpp"
+
+#include <fmt/format.h>
 
 #include <cstdio>
 #include <memory>
@@ -17,14 +21,48 @@ struct Options
 {
     BenchConfig bcfg;
     std::vector<std::string> benchFamilies, benchFiles;
-    std::string benchVariants = "all", benchJson, benchSeed = "1";
+    std::string benchVariants = "all", benchJson, benchSeed = "1", against;
     PluginOptions plugins;
 };
+
+// --against NAME: a shipped peer's name for it (ShippedPeer::againstName), loaded here whatever
+// --no-default-plugins says, or a loaded plugin variant's name; its plugin must have its own
+// timing loop. InputError (exit 2) otherwise, naming what is missing.
+const VariantInfo* againstVariant(const std::string& name, double timeoutSeconds)
+{
+    for (const ShippedPeer& peer : kShippedPeers)
+        if (peer.againstName && name == peer.againstName)
+        {
+            const std::string path = shippedPeerPath(peer);
+            if (path.empty())
+                throw InputError(fmt::format("--against {}: its adapter {} is not built (it needs "
+                                             "{}; `gjk-validate list`)",
+                                             name, peer.file, peer.needs));
+            return loadPlugin(path, timeoutSeconds).front();
+        }
+    const VariantInfo* v = findPluginVariant(name);
+    if (v == nullptr)
+        throw InputError(fmt::format("--against {}: neither a shipped peer's name (box2d-v3) nor "
+                                     "a loaded plugin's implementation",
+                                     excerpt(name)));
+    if (v->plugin->timing == nullptr)
+        throw InputError(fmt::format("--against {}: its plugin {} has no timing loop of its own "
+                                     "(gjk2d_plugin_timing, gjk2d/plugin.h)",
+                                     name, v->plugin->path));
+    return v;
+}
 
 int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
 {
     o.bcfg.seed = parseSeed(o.benchSeed);
+    if (!o.against.empty() && sub.count("--variants") == 0)
+        o.benchVariants = kAgainstVariants;
     o.bcfg.variants = selectVariants(o.benchVariants, o.plugins, ShippedPlugins::OnlyNamed);
+    if (!o.against.empty())
+    {
+        o.bcfg.against = againstVariant(o.against, o.plugins.timeoutSeconds);
+        o.bcfg.againstName = o.against;
+    }
     o.bcfg.pluginTimeoutSeconds = o.plugins.timeoutSeconds;
     o.bcfg.command = line.text();
     if (o.benchFamilies.empty() && o.benchFiles.empty())
@@ -70,6 +108,13 @@ Subcommand addBench(CLI::App& app, const CommandLine& line)
     bench->add_flag("--warm", o->bcfg.warm,
                     "time warm-started queries: each starts from the SimplexCache of a previous "
                     "query of the same case");
+    bench->add_option("--against", o->against,
+                      "also time this peer by its adapter's own loop, cold and warm, its passes "
+                      "alternated with the variants', and give every variant's ratio to it: "
+                      "box2d-v3 (the shipped Box2D v3 adapter), or a loaded plugin's "
+                      "implementation whose plugin has a timing loop (gjk2d_plugin_timing); "
+                      "without --variants, the variants are " +
+                          std::string(kAgainstVariants));
     addPluginOptions(*bench, o->plugins, ShippedPlugins::OnlyNamed, Judging::RefusesJudge);
     bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
         ->capture_default_str();

@@ -17,6 +17,9 @@ struct ShippedPeer
     const char* file;       // its file name in the plugin directory
     bool inDefaultCampaign; // run joins its variants to the default variant list without --peers
     const char* needs;      // what building it needs: `list` says so when it is not built
+    // Its name for `bench --against NAME` (docs/speed.md): set for a peer whose adapter has its
+    // own timing loop (gjk2d_plugin_timing, gjk2d/plugin.h), else null.
+    const char* againstName = nullptr;
 };
 
 // inDefaultCampaign: the peers that keep scripts/run.sh's campaign (`gjk-validate run`, 214,000
@@ -28,7 +31,8 @@ struct ShippedPeer
 // Box2D 2.4.1, Box2D v3 and Bullet join (about 51 s); FCL, planck.js and GEOS run under --peers.
 inline constexpr ShippedPeer kShippedPeers[] = {
     {"gjk2d-box2d.so", true, "Debian libbox2d-dev"},
-    {"gjk2d-box2d3.so", true, "a Box2D v3 source tree named by -DGJK2D_BOX2D3_SOURCE=..."},
+    {"gjk2d-box2d3.so", true, "a Box2D v3 source tree named by -DGJK2D_BOX2D3_SOURCE=...",
+     "box2d-v3"},
     {"gjk2d-fcl.so", false, "Debian libfcl-dev"},
     {"gjk2d-bullet-float.so", true, "Debian libbullet-dev"},
     {"gjk2d-bullet-double.so", true, "Debian libbullet-dev"},

@@ -2,6 +2,7 @@
 
 #include "common/output.hpp" // writeAllBytes
 #include "evaluate/adapter.hpp"
+#include "evaluate/adapter_process.hpp" // SigpipeBlocked
 #include "evaluate/evaluate.hpp"
 #include "evaluate/in_process.hpp"
 
@@ -101,11 +102,13 @@ std::string pluginFile(const std::string& path)
     return std::filesystem::canonical(path).string();
 }
 
-// A shared library's description and its optional gjk2d_plugin_library() ("" without it).
+// A shared library's description, its optional gjk2d_plugin_library() ("" without it) and its
+// optional gjk2d_plugin_timing() (null without it).
 struct OpenedPlugin
 {
     const gjk2d_plugin* description = nullptr;
     std::string library;
+    const gjk2d_timing* timing = nullptr;
 };
 
 // Opens the plugin and reads its description, of this ABI version and with 1 .. 64
@@ -147,7 +150,13 @@ OpenedPlugin openPlugin(const std::string& path)
     const auto library =
         reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(handle, GJK2D_PLUGIN_LIBRARY_ENTRY));
     const char* text = library ? library() : nullptr;
-    return {d, text ? text : ""};
+    const auto timing =
+        reinterpret_cast<gjk2d_plugin_timing_fn>(::dlsym(handle, GJK2D_PLUGIN_TIMING_ENTRY));
+    const gjk2d_timing* loop = timing ? timing() : nullptr;
+    if (loop && (loop->prepare == nullptr || loop->pass == nullptr || loop->release == nullptr))
+        throw InputError(fmt::format("plugin {}: {}() returned a table with a NULL function", path,
+                                     GJK2D_PLUGIN_TIMING_ENTRY));
+    return {d, text ? text : "", loop};
 }
 
 // Every implementation well described, under a name no variant and no other implementation has.
@@ -248,6 +257,8 @@ std::vector<PluginImpl> describePlugin(const std::string& path, const std::strin
         PluginImpl p;
         p.impl = d.implementations[i];
         p.library = opened.library;
+        p.timing = opened.timing;
+        p.index = i;
         impls.push_back(std::move(p));
     }
     return impls;
@@ -589,8 +600,38 @@ std::vector<PluginLog> finishPluginLogs()
 
 PluginChild PluginChild::start(const PluginImpl* plugin, const std::function<void(int fd)>& work)
 {
-    int fds[2];
-    if (::pipe(fds) != 0)
+    return serveOrStart(plugin, false, [&](int out, int) { work(out); });
+}
+
+PluginChild PluginChild::serve(const PluginImpl* plugin,
+                               const std::function<void(int out, int in)>& work)
+{
+    return serveOrStart(plugin, true, work);
+}
+
+bool PluginChild::send(const void* data, std::size_t n) const
+{
+    const adapterio::SigpipeBlocked
+        blocked; // a child gone is EPIPE here, not the end of gjk-validate
+    return cmd_ >= 0 && writeAllBytes(cmd_, data, n);
+}
+
+namespace
+{
+// The parent's ends of the serving children's command pipes: every child forked later closes its
+// copies, or a child would never read the end of file of another's commands (and never exit).
+std::vector<int>& commandFds()
+{
+    static std::vector<int> fds;
+    return fds;
+}
+} // namespace
+
+PluginChild PluginChild::serveOrStart(const PluginImpl* plugin, bool commands,
+                                      const std::function<void(int out, int in)>& work)
+{
+    int fds[2], cmds[2] = {-1, -1};
+    if (::pipe(fds) != 0 || (commands && ::pipe(cmds) != 0))
         throw std::runtime_error(
             fmt::format("plugin child: pipe failed: {}", std::strerror(errno)));
     std::fflush(stdout); // written once, by the parent, not again by the child's copy of the buffer
@@ -602,13 +643,17 @@ PluginChild PluginChild::start(const PluginImpl* plugin, const std::function<voi
     if (pid == 0)
     {
         ::close(fds[0]);
+        if (commands)
+            ::close(cmds[1]);
+        for (const int fd : commandFds())
+            ::close(fd);
         // A plugin's crash ends the child at once, by its signal: the program's own handlers (a
         // sanitizer's, which symbolizes a report first and would count as a hang) are not the
         // plugin's.
         for (const int sig : {SIGPIPE, SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT})
             ::signal(sig, SIG_DFL);
         firstOutputRoute(plugin);
-        work(fds[1]);
+        work(fds[1], cmds[0]);
         std::fflush(stdout); // what the plugin printed last, into its log
         std::fflush(stderr);
         ::_exit(0);
@@ -617,11 +662,25 @@ PluginChild PluginChild::start(const PluginImpl* plugin, const std::function<voi
     PluginChild c;
     c.pid_ = pid;
     c.fd_ = fds[0];
+    if (commands)
+    {
+        ::close(cmds[0]);
+        ::fcntl(cmds[1], F_SETFD, FD_CLOEXEC);
+        c.cmd_ = cmds[1];
+        commandFds().push_back(c.cmd_);
+    }
     return c;
 }
 
 std::string PluginChild::finish()
 {
+    if (cmd_ >= 0)
+    {
+        auto& open = commandFds();
+        open.erase(std::remove(open.begin(), open.end(), cmd_), open.end());
+        ::close(cmd_); // the child reads end of file
+    }
+    cmd_ = -1;
     ::close(fd_);
     int status = 0;
     while (::waitpid(pid_t(pid_), &status, 0) < 0 && errno == EINTR)

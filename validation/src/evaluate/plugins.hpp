@@ -57,6 +57,10 @@ struct PluginImpl
     // library's optional gjk2d_plugin_library(); "" when it does not say.
     std::string library;
     std::string name, description; // an executable adapter's (impl.name, impl.description)
+    // A shared library's optional timing loop (gjk2d_plugin_timing, gjk2d/plugin.h; null without
+    // it) and the implementation's index in its description, which the loop is given.
+    const gjk2d_timing* timing = nullptr;
+    int index = 0;
     // An in-process variant's callbacks; null once released (releaseInProcessVariant).
     std::shared_ptr<InProcessCalls> calls;
 };
@@ -151,6 +155,12 @@ class PluginChild
   public:
     // `plugin`: whose log the child's output goes to first (null: none yet).
     static PluginChild start(const PluginImpl* plugin, const std::function<void(int fd)>& work);
+    // The same with a second pipe, from the parent to the child: `work` reads the parent's
+    // commands from `in` (end of file once the parent calls finish() or dies) and answers on `out`.
+    static PluginChild serve(const PluginImpl* plugin,
+                             const std::function<void(int out, int in)>& work);
+    // Writes n bytes to the child's `in` (serve() only); false when the pipe is gone.
+    bool send(const void* data, std::size_t n) const;
     // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1
     // timeout.
     long read(void* buf, std::size_t n, double timeoutSeconds) const;
@@ -159,7 +169,9 @@ class PluginChild
     void kill(); // SIGKILL, then finish()
 
   private:
-    int pid_ = -1, fd_ = -1;
+    static PluginChild serveOrStart(const PluginImpl* plugin, bool commands,
+                                    const std::function<void(int out, int in)>& work);
+    int pid_ = -1, fd_ = -1, cmd_ = -1;
 };
 // In a child: its stdout and stderr to `plugin`'s log from here on (stdio flushed first).
 void routePluginOutput(const PluginImpl& plugin);

@@ -90,7 +90,9 @@ VariantCases casesOf(const VariantInfo& v, const std::vector<PreparedCase>& prep
 struct VariantTimings
 {
     std::vector<TimingResult> results;
-    std::vector<VariantCases> cases; // only the counts are used once timed
+    std::vector<VariantCases> cases;       // only the counts are used once timed
+    TimingResult againstCold, againstWarm; // --against: its own loop, cold and warm
+    VariantCases againstCases;
 };
 
 VariantTimings timeEveryVariant(const BenchConfig& config,
@@ -112,13 +114,61 @@ VariantTimings timeEveryVariant(const BenchConfig& config,
             loopOf.push_back(k);
         }
     }
+    if (config.against) // its own loop, cold and warm, alternated with gjk2d's
+    {
+        t.againstCases = casesOf(*config.against, prepared);
+        for (const bool warm : {false, true})
+            loops.push_back(ownTimingLoop(t.againstCases.cases, *config.against, warm, tc,
+                                          config.pluginTimeoutSeconds));
+    }
     const std::vector<TimingResult> alternated = medianOfAlternatedPasses(loops, tc);
-    for (std::size_t l = 0; l < loops.size(); ++l)
+    for (std::size_t l = 0; l < loopOf.size(); ++l)
         t.results[loopOf[l]] = alternated[l];
+    if (config.against)
+    {
+        t.againstCold = alternated[loopOf.size()];
+        t.againstWarm = alternated[loopOf.size() + 1];
+    }
     return t;
 }
 
-// The bench report's "variants": each one's timing, its ratio to `base` when there is one.
+Json nsJson(double x)
+{
+    return x > 0 ? Json(x) : Json(nullptr);
+}
+
+// x / of, or null when either is missing.
+Json ratioJson(double x, double of)
+{
+    return x > 0 && of > 0 ? Json(x / of) : Json(nullptr);
+}
+
+// The bench report's "against": the peer's own loop, cold and warm (null without --against).
+Json againstJson(const BenchConfig& config, const VariantTimings& timings)
+{
+    if (!config.against)
+        return nullptr;
+    auto timing = [](const TimingResult& t)
+    {
+        return Json{{"ns_per_query", nsJson(t.nsPerQuery)},
+                    {"ns_min", nsJson(t.nsMin)},
+                    {"ns_max", nsJson(t.nsMax)},
+                    {"passes", t.passes},
+                    {"reps_per_pass", t.repsPerPass}};
+    };
+    const VariantInfo& v = *config.against;
+    return {{"name", config.againstName},
+            {"variant", v.name},
+            {"type", scalarName(v.scalar)},
+            {"library", v.plugin->library},
+            {"cases", timings.againstCases.cases.size()},
+            {"skipped", timings.againstCases.skipped},
+            {"cold", timing(timings.againstCold)},
+            {"warm", timing(timings.againstWarm)}};
+}
+
+// The bench report's "variants": each one's timing, its ratio to `base` when there is one, and
+// with --against its ratio to the peer's own loop started alike (cold to cold, warm to warm).
 Json variantsJson(const BenchConfig& config, const VariantTimings& timings,
                   const TimingResult* base)
 {
@@ -127,7 +177,7 @@ Json variantsJson(const BenchConfig& config, const VariantTimings& timings,
     {
         const VariantInfo& v = *config.variants[k];
         const TimingResult& t = timings.results[k];
-        auto ns = [](double x) { return x > 0 ? Json(x) : Json(nullptr); };
+        const auto ns = nsJson;
         Json j;
         j["type"] = scalarName(v.scalar);
         j["warm"] = t.warm;
@@ -143,6 +193,9 @@ Json variantsJson(const BenchConfig& config, const VariantTimings& timings,
         j["reps_per_pass"] = t.repsPerPass;
         j["ratio_to_double"] =
             base && t.nsPerQuery > 0 ? Json(t.nsPerQuery / base->nsPerQuery) : Json(nullptr);
+        if (config.against)
+            j["ratio_to_against"] = ratioJson(
+                t.nsPerQuery, (t.warm ? timings.againstWarm : timings.againstCold).nsPerQuery);
         vars[v.name] = std::move(j);
     }
     return vars;
@@ -166,7 +219,10 @@ Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases&
          "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
          "Warm: each query starts from the SimplexCache of a previous query of the same "
          "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
-         "on all its cases at once (context.batch_isa: the instruction set of its lanes)."}};
+         "on all its cases at once (context.batch_isa: the instruction set of its lanes). "
+         "--against: the peer's own loop (gjk2d_plugin_timing) over inputs it prepared once, "
+         "cold (a zeroed cache per query) and warm (each case's cache from its previous "
+         "query), in a child process, its passes alternated with gjk2d's."}};
     return context;
 }
 } // namespace
@@ -201,6 +257,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     j["context"] = std::move(context);
     j["baseline_variant"] = base ? Json(kBaselineVariant) : Json(nullptr);
     j["variants"] = variantsJson(config, timings, base);
+    j["against"] = againstJson(config, timings);
     j["rejected"] = std::move(cases.rejectedList);
     j["exit_code"] = out.exitCode;
     return out;
@@ -217,14 +274,33 @@ std::string benchTable(const Json& b)
         c["timing"]["passes"].get<int>(), c["timing"]["min_pass_s"].get<double>(),
         c["timing"]["warm"].get<bool>() ? "warm-started" : "cold (warm for *-warm variants)",
         c.contains("batch_isa") ? c["batch_isa"].get<std::string>() : std::string("?"));
-    s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}\n", "variant", "type",
+    const Json& against = b.contains("against") ? b["against"] : Json(nullptr);
+    const std::string vs = against.is_null() ? "" : "x " + against["name"].get<std::string>();
+    const auto row = [&](const std::string& name, const std::string& type, bool warm,
+                         const Json& cases, const Json& skipped, const Json& t, const Json& ratio,
+                         const Json& ratioAgainst)
+    {
+        s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}", name, type,
+                         warm ? "warm" : "cold", cases.get<std::uint64_t>(),
+                         skipped.get<std::uint64_t>(), g(t["ns_per_query"], "{:.1f}"),
+                         g(t["ns_min"], "{:.1f}"), g(t["ns_max"], "{:.1f}"), g(ratio, "{:.2f}"));
+        s += vs.empty() ? "\n" : fmt::format(" {:>{}}\n", g(ratioAgainst, "{:.2f}"), vs.size());
+    };
+    s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}", "variant", "type",
                      "start", "cases", "skipped", "ns/query", "min", "max", "x double");
+    s += vs.empty() ? "\n" : " " + vs + "\n";
     for (const auto& [name, v] : b["variants"].items())
-        s += fmt::format("{:<22} {:<6} {:<5} {:>7} {:>7} {:>10} {:>9} {:>9} {:>8}\n", name,
-                         v["type"].get<std::string>(), v["warm"].get<bool>() ? "warm" : "cold",
-                         v["cases"].get<std::uint64_t>(), v["skipped"].get<std::uint64_t>(),
-                         g(v["ns_per_query"], "{:.1f}"), g(v["ns_min"], "{:.1f}"),
-                         g(v["ns_max"], "{:.1f}"), g(v["ratio_to_double"], "{:.2f}"));
+        row(name, v["type"].get<std::string>(), v["warm"].get<bool>(), v["cases"], v["skipped"], v,
+            v["ratio_to_double"], v.contains("ratio_to_against") ? v["ratio_to_against"] : Json());
+    if (!against.is_null()) // the peer's own loop: its rows, named as --against named it
+        for (const bool warm : {false, true})
+            row(against["name"].get<std::string>(), against["type"].get<std::string>(), warm,
+                against["cases"], against["skipped"], against[warm ? "warm" : "cold"], Json(),
+                Json(1.0));
+    if (!against.is_null())
+        s += fmt::format("{}: {}'s own timing loop ({})\n", against["name"].get<std::string>(),
+                         against["variant"].get<std::string>(),
+                         against["library"].get<std::string>());
     s += fmt::format("total {:.1f} s\n", c["elapsed_s"]["total"].get<double>());
     return s;
 }

@@ -27,7 +27,16 @@ struct BenchConfig
     double minPassSeconds = TimingConfig{}.minPassSeconds;
     std::string command;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // bench --plugin-timeout
+    // bench --against NAME: a plugin variant timed by its plugin's own loop, cold and warm
+    // (ownTimingLoop), its passes alternated with gjk2d's; every variant's ratio to it.
+    const VariantInfo* against = nullptr;
+    std::string againstName; // as given: "box2d-v3"
 };
+
+// The variants `bench --against` times when --variants is not given: the columns of the
+// comparison table of issue 33 (docs/speed.md, "Against Box2D v3 in one command").
+inline constexpr const char* kAgainstVariants =
+    "double,float,double-warm,float-warm,double-correct,float-batch,double-batch";
 
 struct BenchResult
 {

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +16,8 @@
 #include <functional>
 #include <memory>
 #include <type_traits>
+
+#include <unistd.h>
 
 namespace gjkval
 {
@@ -266,6 +269,114 @@ TimedLoop pluginLoop(const std::vector<const PreparedCase*>& cases, const Varian
     return pluginLoopT<double, gjk2d_shape_d, gjk2d_result_d>(cases, im.distance_d, im.cache_bytes);
 }
 
+// Reads n bytes from fd, waiting as long as it takes: false at end of file or on an error.
+bool readAllBytes(int fd, void* data, std::size_t n)
+{
+    auto* p = static_cast<char*>(data);
+    while (n > 0)
+    {
+        const ssize_t got = ::read(fd, p, n);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got <= 0)
+            return false;
+        p += got;
+        n -= std::size_t(got);
+    }
+    return true;
+}
+
+// The child's side of ownTimingLoop(): prepare once, then one pass per command (the reps, an
+// int32; end of file ends it), each pass's nanoseconds sent back; a failed prepare() sends -1.
+void serveOwnTiming(const gjk2d_timing& t, int index, const void* a, const void* b,
+                    std::size_t count, bool warm, int out, int in)
+{
+    void* prepared = t.prepare(index, a, b, std::int32_t(count), warm ? 1 : 0);
+    double ns = prepared ? 0.0 : -1.0;
+    writeToParent(out, &ns, sizeof ns);
+    std::int32_t reps = 0;
+    while (prepared && readAllBytes(in, &reps, sizeof reps) && reps > 0)
+    {
+        ns = t.pass(prepared, reps);
+        if (!writeToParent(out, &ns, sizeof ns))
+            break;
+    }
+    if (prepared)
+        t.release(prepared);
+}
+
+// The parent's side: the child, and whether it is lost (then every pass answers -1).
+struct OwnTimingChild
+{
+    PluginChild child;
+    std::string variant;
+    double limitSeconds = 0;
+    bool lost = false;
+
+    double receive(const char* what)
+    {
+        double ns = -1;
+        std::size_t have = 0;
+        long n = 1;
+        while (have < sizeof ns && (n = child.read(reinterpret_cast<char*>(&ns) + have,
+                                                   sizeof ns - have, limitSeconds)) > 0)
+            have += std::size_t(n);
+        if (have == sizeof ns && ns >= 0)
+            return ns;
+        if (n < 0)
+            child.kill();
+        else
+            child.finish();
+        lost = true;
+        std::fprintf(stderr,
+                     "gjk-validate: plugin variant '%s': its timing loop %s %s; no "
+                     "ns/query\n",
+                     variant.c_str(),
+                     have == sizeof ns ? "failed"
+                     : n < 0           ? "hung"
+                                       : "crashed",
+                     what);
+        return -1;
+    }
+    double pass(int reps)
+    {
+        if (lost)
+            return -1;
+        const std::int32_t r = reps;
+        child.send(&r, sizeof r); // when it fails, the child is gone: receive() says so
+        return receive("in a pass");
+    }
+    ~OwnTimingChild()
+    {
+        if (!lost)
+            child.finish(); // end of file on its commands: it releases and exits
+    }
+};
+
+template <class T, class Shape>
+TimedLoop ownLoopT(const std::vector<const PreparedCase*>& cases, const VariantInfo& v, bool warm,
+                   double limitSeconds)
+{
+    TimedLoop loop;
+    loop.cases = cases.size();
+    loop.warm = warm;
+    if (cases.empty())
+        return loop;
+    const PluginTimingSet<T, Shape> set(cases); // before the fork: the child only prepares
+    const PluginImpl& im = *v.plugin;
+    auto own = std::make_shared<OwnTimingChild>();
+    own->variant = v.name;
+    own->limitSeconds = limitSeconds;
+    own->child = PluginChild::serve(&im,
+                                    [&](int out, int in) {
+                                        serveOwnTiming(*im.timing, im.index, set.a.data(),
+                                                       set.b.data(), set.a.size(), warm, out, in);
+                                    });
+    own->receive("in prepare()");
+    loop.pass = [own](int reps) { return own->pass(reps); };
+    return loop;
+}
+
 // How long a plugin's pass (or an adapter's `time` request, a part of one) may take before it
 // counts as hung: a pass lasts at most min_pass_s plus one loop over the cases, and the limit
 // allows a loop of 50,000 cases (kTimingSampleCases) at 600 us a query, or one call that hangs.
@@ -294,7 +405,10 @@ TimingResult summary(std::size_t cases, std::vector<double>& perQuery, int reps)
 // One calibration pass: the reps that make a pass last cfg.minPassSeconds.
 int calibrate(const TimingConfig& cfg, const std::function<double(int)>& pass)
 {
-    const double first = std::max(1.0, pass(1)); // warm-up and calibration
+    const double once = pass(1);
+    if (once < 0) // a plugin's own loop that failed (ownTimingLoop)
+        return 0;
+    const double first = std::max(1.0, once); // warm-up and calibration
     return std::clamp(int(std::ceil(cfg.minPassSeconds * 1e9 / first)), 1, 100000);
 }
 } // namespace
@@ -309,10 +423,19 @@ TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const Variant
                                      : loopT<double>(cases, v.options, warm, v.batch);
 }
 
+TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                        bool warm, const TimingConfig& cfg, double pluginTimeoutSeconds)
+{
+    const double limit = passLimitSeconds(cfg, pluginTimeoutSeconds);
+    if (v.plugin->impl.scalar == GJK2D_SCALAR_FLOAT)
+        return ownLoopT<float, gjk2d_shape_f>(cases, v, warm, limit);
+    return ownLoopT<double, gjk2d_shape_d>(cases, v, warm, limit);
+}
+
 std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,
                                                    const TimingConfig& cfg)
 {
-    std::vector<int> reps(loops.size(), 0);
+    std::vector<int> reps(loops.size(), 0); // 0: no cases, or lost (a negative time)
     std::vector<std::vector<double>> perQuery(loops.size());
     for (std::size_t k = 0; k < loops.size(); ++k)
         if (loops[k].cases > 0)
@@ -321,12 +444,19 @@ std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>&
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
     for (int p = 0; p < cfg.maxPasses && (p < cfg.minPasses || elapsed() < cfg.budgetSeconds); ++p)
         for (std::size_t k = 0; k < loops.size(); ++k)
-            if (loops[k].cases > 0)
-                perQuery[k].push_back(loops[k].pass(reps[k]) /
-                                      (double(reps[k]) * double(loops[k].cases)));
+            if (reps[k] > 0)
+            {
+                const double ns = loops[k].pass(reps[k]);
+                if (ns < 0)
+                    reps[k] = 0;
+                else
+                    perQuery[k].push_back(ns / (double(reps[k]) * double(loops[k].cases)));
+            }
     std::vector<TimingResult> results;
     for (std::size_t k = 0; k < loops.size(); ++k)
     {
+        if (reps[k] == 0)
+            perQuery[k].clear();
         results.push_back(summary(loops[k].cases, perQuery[k], reps[k]));
         results.back().warm = loops[k].warm;
     }
@@ -344,6 +474,12 @@ TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
         return res;
     }
     const int reps = calibrate(cfg, pass);
+    if (reps == 0)
+    {
+        TimingResult res;
+        res.cases = cases;
+        return res;
+    }
     std::vector<double> perQuery;
     const auto start = Clock::now();
     auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };

@@ -83,9 +83,20 @@ struct TimedLoop
 TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                     const TimingConfig& cfg);
 
+// A plugin's own timing loop (gjk2d_plugin_timing, gjk2d/plugin.h; v.plugin->timing set) over
+// `cases`, cold or warm, as a TimedLoop to alternate with gjk2d's (`bench --against`): the cases'
+// shapes built into the ABI's structs here, then handed once to the plugin's prepare() in a child
+// process (PluginChild::serve), which runs one pass() per pass(reps) of the loop and sends back
+// only its nanoseconds (the plugin's clock, its loop alone: the pipe is outside it). A crash, a
+// failed prepare() or pass(), or no answer within pluginTimeoutSeconds + 30 s (+ the pass's
+// expected length) makes pass() return -1 from then on, with a line on stderr.
+TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                        bool warm, const TimingConfig& cfg, double pluginTimeoutSeconds);
+
 // The passes of several loops alternated (`bench`): one calibration pass each, then pass k of
 // every loop before pass k + 1 of any, so that a drift of the machine's speed falls on all of
-// them alike and their ratios hold within one run. Stops as medianOfPasses() does.
+// them alike and their ratios hold within one run. Stops as medianOfPasses() does. A loop whose
+// pass returns a negative time is dropped from then on (its result: nsPerQuery = -1).
 std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,
                                                    const TimingConfig& cfg);
 
