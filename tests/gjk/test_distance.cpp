@@ -887,9 +887,16 @@ TEMPLATE_TEST_CASE("the reference options run a constant copy of the query with 
         if (k % 3 == 1)
             a.points[0] = T(std::ldexp(1.0, int(rng() % 40))) * a.points[0];
         if (k % 2 == 0)
-        {
-            a.xf.q = {T(float(a.xf.q.c)), T(float(a.xf.q.s))};
-            b.xf.q = {T(float(b.xf.q.c)), T(float(b.xf.q.s))};
+        { // Rounded through a volatile float: GCC 12 at -O2/-O3 without -ffp-contract=off (the flag
+          // matrix's gcc-O3) dropped the plain T(float(x)) here, and nonUnit was 0 (docs/gjk.md,
+          // "Compiler flags": the SLP vectorizer and the headers' optimize pragma).
+            auto rounded = [](T x)
+            {
+                volatile float f = float(x);
+                return T(f);
+            };
+            a.xf.q = {rounded(a.xf.q.c), rounded(a.xf.q.s)};
+            b.xf.q = {rounded(b.xf.q.c), rounded(b.xf.q.s)};
         }
         nonUnit += !isUnitRotation(squaredSize(a.xf.q));
         const T rA = k % 4 == 0 ? T(0.25) : T(0), rB = k % 5 == 0 ? T(0.5) : T(0);

@@ -300,12 +300,15 @@ TEST_CASE("correctly rounded: exact ties round to even without the exact side", 
         }
 }
 
-TEST_CASE("correctly rounded: a degenerate triangle is decided from its edges", "[correct]")
+TEST_CASE("correctly rounded: a degenerate triangle goes to the exact completion", "[correct]")
 {
     // engine/bullets-toi/436-step216-edge-polygon (`generate --family engine:1000`): a long
     // segment under a box whose bottom edge is parallel to it. The plain query ends on three
-    // points of Z on one line without containment; each edge's features are tried in turn
-    // (refine), and one decides without the exact side. Before issue 33: NeedsExact.
+    // points of Z on one line without containment. Refining the triangle's three edges decides it
+    // in double-double (tried at issue 33), but then the answer's witness points are the plain
+    // query's instead of the exact side's: a larger witness error on 34 cases of the default
+    // campaign, which issue 33's rule (no answer's error may grow) forbids. So it stays with the
+    // exact completion (docs/speed.md, "double-correct at 1.5x").
     const double h = 0.33128368854522705;
     const std::vector<gjk::Vec2<double>> a = {{-40, 0}, {40, 0}};
     const std::vector<gjk::Vec2<double>> b = {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
@@ -316,11 +319,7 @@ TEST_CASE("correctly rounded: a degenerate triangle is decided from its edges", 
     REQUIRE(cache.count == 3);
     REQUIRE(plain.stop != gjk::StopReason::Containment);
     const auto out = gjk::distance(in, kCorrect);
-    CHECK(out.path == gjk::CorrectPath::DoubleDouble);
-    const exact::Result truth = exact::distance(exact::shapeOf(in.proxyA, in.transformA, true),
-                                                exact::shapeOf(in.proxyB, in.transformB, true));
-    CHECK(truth.distance > 0.01);
-    CHECK(sameBits(out.distance, truth.distance));
+    CHECK(out.path == gjk::CorrectPath::NeedsExact);
 }
 
 TEST_CASE("correctly rounded: float data take the float products, bit for bit", "[correct]")

@@ -774,11 +774,6 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
 // The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
 // cache the plain query returned: its index pairs are the final features. Out of line, so that
 // gjk::distance does not carry its code and stack frame into the default query.
-// A triangle on which the plain query did not stop for containment is a degenerate one: three
-// points of Z on one line (two parallel edges give it: engine/bullets-toi). Its three edges are
-// refined one after the other as the features (the bounds hold for any points of Z; a feature that
-// is not the closest leaves the interval undecided) until one decides. Before issue 33 such a
-// query went to the exact side: 5 of the 6,000 `engine:1000` cases, some 30 us of GMP each.
 [[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache,
                                      const Options& options, DistanceOutput<double>& out)
 {
@@ -791,19 +786,6 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
     const Approx r = {rs.hi, rs.lo, 0};
     if (cache.count == 3)
     {
-        if (out.stop != StopReason::Containment) [[unlikely]]
-        {
-            for (int k = 0; k < 3 && out.path == CorrectPath::NeedsExact; ++k)
-            {
-                const int i = k == 2 ? 1 : 0, j = k == 0 ? 1 : 2; // (0, 1), (0, 2), (1, 2)
-                SimplexCache edge;
-                edge.count = 2;
-                edge.indexA[0] = cache.indexA[i], edge.indexB[0] = cache.indexB[i];
-                edge.indexA[1] = cache.indexA[j], edge.indexB[1] = cache.indexB[j];
-                refine(in, edge, options, out);
-            }
-            return;
-        }
         if (!containmentCertified(in, cache, out))
             return;
         // The hulls overlap: the exact distance is max(0, 0 - rA - rB) = 0.
