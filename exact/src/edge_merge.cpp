@@ -15,6 +15,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -654,6 +655,123 @@ class Solver
 
 } // namespace
 
+// What PreparedShape keeps: the shape, and Z = {p} - hull(shape) as Solver's merge() builds it for
+// a one-point A, less the point: hull vertex indices from the lowest (then leftmost) one,
+// counterclockwise (merge()'s order, so the same Z vertex numbers), with their interval world
+// coordinates (Side::init()'s intervals).
+struct PreparedData
+{
+    Shape shape;
+    DecShape dec;
+    std::vector<int> z;
+    std::vector<I> x, y;
+};
+
+namespace
+{
+// Side::init()'s intervals of a one-point identity shape {p}, built the same way (the same
+// operations, so the same bits).
+void pointIntervals(Point p, I& x, I& y)
+{
+    const I c(1.0), sn(0.0), px(0.0), py(0.0);
+    const I px_(p.x), py_(p.y);
+    x = c * px_ - sn * py_ + px;
+    y = sn * px_ + c * py_ + py;
+}
+
+// Solver's locate() interface for Z = {p} - hull(B) from prepared data: the same interval
+// predicates (Z vertex intervals p - w_k as merge() forms them), and the same exact fallbacks, on
+// exact values made only when an interval leaves a sign undecided.
+class PointLocator
+{
+  public:
+    PointLocator(const PreparedData& d, Point p) : d_(d), p_(p) { pointIntervals(p, px_, py_); }
+
+    I zx(int k) const { return px_ - d_.x[k]; }
+    I zy(int k) const { return py_ - d_.y[k]; }
+
+    int orientO(int i, int j)
+    {
+        const int s = sign(zx(i) * zy(j) - zy(i) * zx(j));
+        if (s != kUnsure)
+            return s;
+        return crossSignE(z(i), z(j));
+    }
+    int dotSign(int i, int j)
+    {
+        const I xi = zx(i), yi = zy(i);
+        const int s = sign(xi * (zx(j) - xi) + yi * (zy(j) - yi));
+        if (s != kUnsure)
+            return -s;
+        const E2& q = z(i);
+        return -dotSignE(q, sub(z(j), q));
+    }
+    bool isZero(int i)
+    {
+        const int sx = sign(zx(i)), sy = sign(zy(i));
+        if ((sx != 0 && sx != kUnsure) || (sy != 0 && sy != kUnsure))
+            return false;
+        if (sx == 0 && sy == 0)
+            return true;
+        const E2& q = z(i);
+        return sgn(q.x) == 0 && sgn(q.y) == 0;
+    }
+
+  private:
+    // The exact Z vertices, allocated on the first undecided predicate only.
+    struct Exact
+    {
+        E2 p;
+        std::vector<E2> z;
+        std::vector<char> have;
+    };
+    const PreparedData& d_;
+    Point p_;
+    I px_, py_;
+    std::unique_ptr<Exact> exact_;
+
+    const E2& z(int k)
+    {
+        if (!exact_)
+        {
+            exact_ = std::make_unique<Exact>();
+            const Dec one = decompose(1.0), zero = decompose(0.0);
+            exact_->p = transformExact({one, zero, zero, zero}, p_);
+            exact_->z.resize(d_.z.size());
+            exact_->have.assign(d_.z.size(), 0);
+        }
+        if (!exact_->have[k])
+        {
+            exact_->z[k] = sub(exact_->p, transformExact(d_.dec, d_.shape.points[d_.z[k]]));
+            exact_->have[k] = 1;
+        }
+        return exact_->z[k];
+    }
+};
+} // namespace
+
+double preparedPointDistance(const PreparedData& d, Point p, bool& gmp)
+{
+    Feature f;
+    {
+        I::Protector protect; // round upward for the interval predicates only
+        PointLocator loc(d, p);
+        f = locate(static_cast<int>(d.z.size()), loc);
+    }
+    const Point bs[2] = {d.shape.points[d.z[f.i]], d.shape.points[d.z[f.j]]};
+    double out = 0;
+    if (filteredPointDistance(f, p, d.shape, bs, out))
+    {
+        gmp = false;
+        return out;
+    }
+    // The GMP route, rare: Solver::runPoint() from the start (the same feature, the same undecided
+    // filter, then the construction).
+    Shape q;
+    q.points = {p};
+    return pointDistance(q, d.shape, gmp);
+}
+
 ExactResult edgeMerge(const Shape& a, const Shape& b)
 {
     return Solver(a, b).run();
@@ -674,3 +792,52 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
 }
 
 } // namespace exact::detail
+
+namespace exact
+{
+
+PreparedShape::PreparedShape(const Shape& shape) : data_(std::make_unique<detail::PreparedData>())
+{
+    validateShape(shape, "shape");
+    detail::PreparedData& d = *data_;
+    d.shape = shape;
+    detail::Side side;
+    {
+        detail::I::Protector protect; // as Solver::locateFeature()
+        side.init(d.shape);
+        const std::vector<int> h = side.hull();
+        // merge()'s start on B: the lowest (then leftmost) hull vertex, the first one found.
+        const int n = static_cast<int>(h.size());
+        int sb = 0;
+        for (int t = 1; t < n; ++t)
+            if (side.cmpYX(h[t], h[sb]) < 0)
+                sb = t;
+        d.z.resize(n);
+        for (int t = 0; t < n; ++t)
+            d.z[t] = h[(sb + t) % n];
+    }
+    d.dec = side.dec;
+    d.x.resize(d.z.size());
+    d.y.resize(d.z.size());
+    for (std::size_t t = 0; t < d.z.size(); ++t)
+    {
+        d.x[t] = side.x[d.z[t]];
+        d.y[t] = side.y[d.z[t]];
+    }
+}
+
+PreparedShape::PreparedShape(PreparedShape&&) noexcept = default;
+PreparedShape& PreparedShape::operator=(PreparedShape&&) noexcept = default;
+PreparedShape::~PreparedShape() = default;
+
+const Shape& PreparedShape::shape() const
+{
+    return data_->shape;
+}
+
+int PreparedShape::hullSize() const
+{
+    return static_cast<int>(data_->z.size());
+}
+
+} // namespace exact
