@@ -91,8 +91,7 @@ double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute)
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw std::invalid_argument("exact: non-finite query point");
-    validateShape(shape, "shape B");
-    return pointToShapeDistance(PreparedShape(shape), p, gmpRoute);
+    return pointToShapeDistance(PreparedShape(shape, "shape B"), p, gmpRoute);
 }
 
 double pointToShapeDistance(const PreparedShape& shape, Point p, bool* gmpRoute)

@@ -796,9 +796,10 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
 namespace exact
 {
 
-PreparedShape::PreparedShape(const Shape& shape) : data_(std::make_unique<detail::PreparedData>())
+PreparedShape::PreparedShape(const Shape& shape, const char* name)
+    : data_(std::make_unique<detail::PreparedData>())
 {
-    validateShape(shape, "shape");
+    validateShape(shape, name);
     detail::PreparedData& d = *data_;
     d.shape = shape;
     detail::Side side;

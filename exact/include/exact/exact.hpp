@@ -129,12 +129,13 @@ struct PreparedData;
 
 // A shape prepared once for many pointToShapeDistance() calls (docs/exact.md, "Point to shape"):
 // a copy of the shape, its hull as the default route finds it, and the interval enclosures of the
-// hull's world points. The constructor validates like validateShape() (std::invalid_argument).
+// hull's world points. The constructor validates like validateShape(shape, name)
+// (std::invalid_argument; pointToShapeDistance(Shape, ...) names it "shape B").
 // A const PreparedShape may be used by several threads at once.
 class PreparedShape
 {
   public:
-    explicit PreparedShape(const Shape& shape);
+    explicit PreparedShape(const Shape& shape, const char* name = "shape");
     PreparedShape(PreparedShape&&) noexcept;
     PreparedShape& operator=(PreparedShape&&) noexcept;
     ~PreparedShape();
