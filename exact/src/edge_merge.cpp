@@ -657,14 +657,14 @@ class Solver
 
 // What PreparedShape keeps: the shape, and Z = {p} - hull(shape) as Solver's merge() builds it for
 // a one-point A, less the point: hull vertex indices from the lowest (then leftmost) one,
-// counterclockwise (merge()'s order, so the same Z vertex numbers), with their interval world
-// coordinates (Side::init()'s intervals).
+// counterclockwise (merge()'s order, so the same Z vertex numbers), and every point's interval
+// world coordinates (Side::init()'s, moved from it).
 struct PreparedData
 {
     Shape shape;
     DecShape dec;
     std::vector<int> z;
-    std::vector<I> x, y;
+    std::vector<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
 };
 
 namespace
@@ -687,8 +687,8 @@ class PointLocator
   public:
     PointLocator(const PreparedData& d, Point p) : d_(d), p_(p) { pointIntervals(p, px_, py_); }
 
-    I zx(int k) const { return px_ - d_.x[k]; }
-    I zy(int k) const { return py_ - d_.y[k]; }
+    I zx(int k) const { return px_ - d_.x[d_.z[k]]; }
+    I zy(int k) const { return py_ - d_.y[d_.z[k]]; }
 
     int orientO(int i, int j)
     {
@@ -806,25 +806,19 @@ PreparedShape::PreparedShape(const Shape& shape, const char* name)
     {
         detail::I::Protector protect; // as Solver::locateFeature()
         side.init(d.shape);
-        const std::vector<int> h = side.hull();
+        std::vector<int> h = side.hull();
         // merge()'s start on B: the lowest (then leftmost) hull vertex, the first one found.
         const int n = static_cast<int>(h.size());
         int sb = 0;
         for (int t = 1; t < n; ++t)
             if (side.cmpYX(h[t], h[sb]) < 0)
                 sb = t;
-        d.z.resize(n);
-        for (int t = 0; t < n; ++t)
-            d.z[t] = h[(sb + t) % n];
+        std::rotate(h.begin(), h.begin() + sb, h.end());
+        d.z = std::move(h);
     }
     d.dec = side.dec;
-    d.x.resize(d.z.size());
-    d.y.resize(d.z.size());
-    for (std::size_t t = 0; t < d.z.size(); ++t)
-    {
-        d.x[t] = side.x[d.z[t]];
-        d.y[t] = side.y[d.z[t]];
-    }
+    d.x = std::move(side.x); // every point's intervals, read through z
+    d.y = std::move(side.y);
 }
 
 PreparedShape::PreparedShape(PreparedShape&&) noexcept = default;
