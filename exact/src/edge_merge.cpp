@@ -7,6 +7,9 @@
 // no gcd. Each predicate is first evaluated in interval arithmetic (CGAL::Interval_nt, directed
 // rounding, sound under overflow and underflow); only when the interval contains 0 does it fall
 // back to the exact dyadic integers, which are computed lazily per input point.
+//
+// Also exact::PreparedShape (at the end): one shape's hull and intervals, kept for many
+// point-to-shape distances (preparedPointDistance), with the decisions of the one-point route.
 #include "internal.hpp"
 
 #include <CGAL/Interval_nt.h>

@@ -184,7 +184,8 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
 // vertices i and j), from exact expansions of the world coordinates' differences. True when
 // decided (`out` then is the GMP route's distance bit for bit); false: take the GMP route.
 bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Point* bs, double& out);
-// edge_merge.cpp: pointToShapeDistance's computation, point a one-point shape with the identity
+// edge_merge.cpp: pointToShapeDistance's computation before PreparedShape (now its GMP route's
+// fallback and the tests' reference), point a one-point shape with the identity
 // transform and no radius (validated): the located feature, then filteredPointDistance or, where
 // it does not decide, the GMP construction and MPFR rounding (`gmp` says which).
 double pointDistance(const Shape& point, const Shape& shape, bool& gmp);
