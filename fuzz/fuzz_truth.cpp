@@ -2,8 +2,9 @@
 // (exact::Options::filter = false) on hostile inputs: extreme scales, collinear and duplicate
 // points, tiny edges, exact and inexact rotations, radii. Both results must agree bit for bit,
 // the squared rational included (docs/fuzzing.md, "fuzz_truth"); a difference aborts. Then the
-// point-to-shape distance (exact::pointToShapeDistance, decided in floating point where its bound
-// allows) against the GMP route on the truth's witness points and the shapes' points.
+// point-to-shape distance (exact::pointToShapeDistance, one-shot and on a PreparedShape, decided
+// in floating point where its bound allows) against the GMP route on the truth's witness points
+// and the shapes' points.
 //
 // Layout (`decode`): per shape, byte 0: count (1 + b % 8) and transform kind (b / 8 % 4:
 // identity, quarter turn, (cos, sin) of a number, any finite (c, s)); byte 1: point kind (b % 4:
@@ -157,15 +158,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     // the truth's witness points (on or within a rounding of each rounded surface: what the
     // runner's witness checks measure) and a point of each shape, against both shapes.
     const exact::Point probes[] = {f.witnessA, f.witnessB, a.points[0], b.points.back()};
+    // The one-shot call and a prepared shape (exact::PreparedShape, made once per shape) alike.
     for (const exact::Shape* s : {&a, &b})
+    {
+        const exact::PreparedShape prepared(*s);
         for (const exact::Point& p : probes)
         {
             if (!std::isfinite(p.x) || !std::isfinite(p.y))
                 continue;
             exact::Shape q;
             q.points = {p};
-            if (!same(exact::pointToShapeDistance(*s, p), exact::distance(q, *s, gmp).distance))
+            const double d = exact::distance(q, *s, gmp).distance;
+            if (!same(exact::pointToShapeDistance(*s, p), d) ||
+                !same(exact::pointToShapeDistance(prepared, p), d))
                 std::abort();
         }
+    }
     return 0;
 }

@@ -91,11 +91,15 @@ double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute)
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
         throw std::invalid_argument("exact: non-finite query point");
-    validateShape(shape, "shape B");
-    Shape q;
-    q.points = {p};
+    return pointToShapeDistance(PreparedShape(shape, "shape B"), p, gmpRoute);
+}
+
+double pointToShapeDistance(const PreparedShape& shape, Point p, bool* gmpRoute)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw std::invalid_argument("exact: non-finite query point");
     bool gmp = false;
-    const double d = detail::pointDistance(q, shape, gmp); // max(0, dist(p, hull) - radius)
+    const double d = detail::preparedPointDistance(shape.data(), p, gmp);
     if (gmpRoute)
         *gmpRoute = gmp;
     return d;

@@ -7,6 +7,9 @@
 // no gcd. Each predicate is first evaluated in interval arithmetic (CGAL::Interval_nt, directed
 // rounding, sound under overflow and underflow); only when the interval contains 0 does it fall
 // back to the exact dyadic integers, which are computed lazily per input point.
+//
+// Also exact::PreparedShape (at the end): one shape's hull and intervals, kept for many
+// point-to-shape distances (preparedPointDistance), with the decisions of the one-point route.
 #include "internal.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -15,6 +18,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -654,6 +658,123 @@ class Solver
 
 } // namespace
 
+// What PreparedShape keeps: the shape, and Z = {p} - hull(shape) as Solver's merge() builds it for
+// a one-point A, less the point: hull vertex indices from the lowest (then leftmost) one,
+// counterclockwise (merge()'s order, so the same Z vertex numbers), and every point's interval
+// world coordinates (Side::init()'s, moved from it).
+struct PreparedData
+{
+    Shape shape;
+    DecShape dec;
+    std::vector<int> z;
+    std::vector<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
+};
+
+namespace
+{
+// Side::init()'s intervals of a one-point identity shape {p}, built the same way (the same
+// operations, so the same bits).
+void pointIntervals(Point p, I& x, I& y)
+{
+    const I c(1.0), sn(0.0), px(0.0), py(0.0);
+    const I px_(p.x), py_(p.y);
+    x = c * px_ - sn * py_ + px;
+    y = sn * px_ + c * py_ + py;
+}
+
+// Solver's locate() interface for Z = {p} - hull(B) from prepared data: the same interval
+// predicates (Z vertex intervals p - w_k as merge() forms them), and the same exact fallbacks, on
+// exact values made only when an interval leaves a sign undecided.
+class PointLocator
+{
+  public:
+    PointLocator(const PreparedData& d, Point p) : d_(d), p_(p) { pointIntervals(p, px_, py_); }
+
+    I zx(int k) const { return px_ - d_.x[d_.z[k]]; }
+    I zy(int k) const { return py_ - d_.y[d_.z[k]]; }
+
+    int orientO(int i, int j)
+    {
+        const int s = sign(zx(i) * zy(j) - zy(i) * zx(j));
+        if (s != kUnsure)
+            return s;
+        return crossSignE(z(i), z(j));
+    }
+    int dotSign(int i, int j)
+    {
+        const I xi = zx(i), yi = zy(i);
+        const int s = sign(xi * (zx(j) - xi) + yi * (zy(j) - yi));
+        if (s != kUnsure)
+            return -s;
+        const E2& q = z(i);
+        return -dotSignE(q, sub(z(j), q));
+    }
+    bool isZero(int i)
+    {
+        const int sx = sign(zx(i)), sy = sign(zy(i));
+        if ((sx != 0 && sx != kUnsure) || (sy != 0 && sy != kUnsure))
+            return false;
+        if (sx == 0 && sy == 0)
+            return true;
+        const E2& q = z(i);
+        return sgn(q.x) == 0 && sgn(q.y) == 0;
+    }
+
+  private:
+    // The exact Z vertices, allocated on the first undecided predicate only.
+    struct Exact
+    {
+        E2 p;
+        std::vector<E2> z;
+        std::vector<char> have;
+    };
+    const PreparedData& d_;
+    Point p_;
+    I px_, py_;
+    std::unique_ptr<Exact> exact_;
+
+    const E2& z(int k)
+    {
+        if (!exact_)
+        {
+            exact_ = std::make_unique<Exact>();
+            const Dec one = decompose(1.0), zero = decompose(0.0);
+            exact_->p = transformExact({one, zero, zero, zero}, p_);
+            exact_->z.resize(d_.z.size());
+            exact_->have.assign(d_.z.size(), 0);
+        }
+        if (!exact_->have[k])
+        {
+            exact_->z[k] = sub(exact_->p, transformExact(d_.dec, d_.shape.points[d_.z[k]]));
+            exact_->have[k] = 1;
+        }
+        return exact_->z[k];
+    }
+};
+} // namespace
+
+double preparedPointDistance(const PreparedData& d, Point p, bool& gmp)
+{
+    Feature f;
+    {
+        I::Protector protect; // round upward for the interval predicates only
+        PointLocator loc(d, p);
+        f = locate(static_cast<int>(d.z.size()), loc);
+    }
+    const Point bs[2] = {d.shape.points[d.z[f.i]], d.shape.points[d.z[f.j]]};
+    double out = 0;
+    if (filteredPointDistance(f, p, d.shape, bs, out))
+    {
+        gmp = false;
+        return out;
+    }
+    // The GMP route, rare: Solver::runPoint() from the start (the same feature, the same undecided
+    // filter, then the construction).
+    Shape q;
+    q.points = {p};
+    return pointDistance(q, d.shape, gmp);
+}
+
 ExactResult edgeMerge(const Shape& a, const Shape& b)
 {
     return Solver(a, b).run();
@@ -674,3 +795,47 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
 }
 
 } // namespace exact::detail
+
+namespace exact
+{
+
+PreparedShape::PreparedShape(const Shape& shape, const char* name)
+    : data_(std::make_unique<detail::PreparedData>())
+{
+    validateShape(shape, name);
+    detail::PreparedData& d = *data_;
+    d.shape = shape;
+    detail::Side side;
+    {
+        detail::I::Protector protect; // as Solver::locateFeature()
+        side.init(d.shape);
+        std::vector<int> h = side.hull();
+        // merge()'s start on B: the lowest (then leftmost) hull vertex, the first one found.
+        const int n = static_cast<int>(h.size());
+        int sb = 0;
+        for (int t = 1; t < n; ++t)
+            if (side.cmpYX(h[t], h[sb]) < 0)
+                sb = t;
+        std::rotate(h.begin(), h.begin() + sb, h.end());
+        d.z = std::move(h);
+    }
+    d.dec = side.dec;
+    d.x = std::move(side.x); // every point's intervals, read through z
+    d.y = std::move(side.y);
+}
+
+PreparedShape::PreparedShape(PreparedShape&&) noexcept = default;
+PreparedShape& PreparedShape::operator=(PreparedShape&&) noexcept = default;
+PreparedShape::~PreparedShape() = default;
+
+const Shape& PreparedShape::shape() const
+{
+    return data_->shape;
+}
+
+int PreparedShape::hullSize() const
+{
+    return static_cast<int>(data_->z.size());
+}
+
+} // namespace exact

@@ -184,10 +184,15 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
 // vertices i and j), from exact expansions of the world coordinates' differences. True when
 // decided (`out` then is the GMP route's distance bit for bit); false: take the GMP route.
 bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Point* bs, double& out);
-// edge_merge.cpp: pointToShapeDistance's computation, point a one-point shape with the identity
+// edge_merge.cpp: pointToShapeDistance's computation before PreparedShape (now its GMP route's
+// fallback and the tests' reference), point a one-point shape with the identity
 // transform and no radius (validated): the located feature, then filteredPointDistance or, where
 // it does not decide, the GMP construction and MPFR rounding (`gmp` says which).
 double pointDistance(const Shape& point, const Shape& shape, bool& gmp);
+// edge_merge.cpp: pointDistance(), bit for bit and with the same `gmp`, for a prepared shape
+// (exact::PreparedShape): p located against the prepared hull with the same predicates; where
+// filteredPointDistance does not decide, pointDistance() itself (the GMP route).
+double preparedPointDistance(const PreparedData& shape, Point p, bool& gmp);
 
 // Builds the exact result from a located feature, given for each of the feature's vertices (in the
 // order i, j, l; 1, 2 or 3 of them as the kind needs) the exact Z vertex zs[], and the hull points

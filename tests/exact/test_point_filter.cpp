@@ -3,9 +3,12 @@
 // on hostile points: exactly at world vertices, one ulp around them, on edges (midpoints rounded),
 // far from the origin, at extreme scales, under inexact and non-unit rotations, with radii, on
 // collinear and duplicate points; and on GJK's own witness points, the points the runner measures.
-// Each test also asserts that the filter decides a share of the points itself, so that a filter
-// that always falls back (only slower) fails it.
+// Each point also goes through a PreparedShape, the one-shot call and the route before prepared
+// shapes, with the same bits and the same route. Each test also asserts that the filter decides a
+// share of the points itself, so that a filter that always falls back (only slower) fails it.
 #include "support.hpp"
+
+#include "../../exact/src/internal.hpp" // detail::pointDistance, the route before PreparedShape
 
 #include <gjk/distance.hpp>
 
@@ -15,6 +18,8 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 using exact::Options;
@@ -34,22 +39,37 @@ struct Tally
     int points = 0, gmp = 0;
 };
 
-// The filtered distance against the GMP route (a one-point shape, Options::filter = false).
-void filteredEqualsGmp(const Shape& s, Point p, Tally& t)
+// The prepared-shape route (exact::PreparedShape, reused across a shape's points) against the
+// one-shot call, the route before prepared shapes (detail::pointDistance: hull and merge of the
+// one-point shape per call) and the GMP route (a one-point shape, Options::filter = false): the
+// same bits, and the same decision whether the GMP route measured the point.
+void filteredEqualsGmp(const exact::PreparedShape& ps, Point p, Tally& t)
 {
-    bool gmp = true;
-    const double f = exact::pointToShapeDistance(s, p, &gmp);
+    const Shape& s = ps.shape();
+    bool gmp = true, gmpOneShot = true, gmpSolver = true;
+    const double f = exact::pointToShapeDistance(ps, p, &gmp);
+    const double one = exact::pointToShapeDistance(s, p, &gmpOneShot);
     Shape q;
     q.points = {p};
+    const double solver = exact::detail::pointDistance(q, s, gmpSolver);
     Options o;
     o.filter = false;
     const exact::Result e = exact::distance(q, s, o);
     INFO("point (" << p.x << ", " << p.y << "), radius " << s.radius << ", c " << s.c << ", s "
-                   << s.s);
+                   << s.s << ", hull " << ps.hullSize());
     CHECK(e.fallbacks.gmp);
     CHECK(bits(f) == bits(e.distance));
+    CHECK(bits(one) == bits(e.distance));
+    CHECK(bits(solver) == bits(e.distance));
+    CHECK(gmp == gmpSolver);
+    CHECK(gmpOneShot == gmpSolver);
     ++t.points;
     t.gmp += gmp ? 1 : 0;
+}
+
+void filteredEqualsGmp(const Shape& s, Point p, Tally& t)
+{
+    filteredEqualsGmp(exact::PreparedShape(s), p, t);
 }
 
 // The world point of local p, rounded as a caller would compute it (within a few u R of the
@@ -145,9 +165,10 @@ TEST_CASE("pointToShapeDistance in floating point equals the GMP route on hostil
                     const Shape s = hostileShape(rng, kind, e, rotation, k % 2 == 1);
                     INFO("kind " << kind << " scale 2^" << e << " rotation " << rotation
                                  << " shape " << k);
+                    const exact::PreparedShape prepared(s);
                     Tally t;
                     for (const Point& p : hostilePoints(s))
-                        filteredEqualsGmp(s, p, t);
+                        filteredEqualsGmp(prepared, p, t);
                     all.points += t.points;
                     all.gmp += t.gmp;
                     if (kind == 0 && rotation == 2)
@@ -256,4 +277,62 @@ TEMPLATE_TEST_CASE("pointToShapeDistance decides GJK's witness points", "[exact]
     INFO("GMP route for " << t.gmp << " of " << t.points << " witness points");
     // Measured at the change: 0 of 3,000 witness points, float and double.
     CHECK(t.gmp * 100 < t.points);
+}
+
+TEST_CASE("PreparedShape on degenerate shapes equals the one-shot and GMP routes",
+          "[exact][filter][point]")
+{
+    // Hulls of 1 and 2 vertices (one point, duplicates, a segment, exactly collinear points,
+    // a zero rotation), with and without radius, under a non-unit rotation and at extreme scales;
+    // the hostile points of each, all through one PreparedShape.
+    struct Case
+    {
+        std::vector<Point> points;
+        int hull;
+    };
+    const Case cases[] = {{{{0.5, -0.25}}, 1},
+                          {{{1, 2}, {1, 2}, {1, 2}}, 1},
+                          {{{-1, 0.5}, {2, 1.5}}, 2},
+                          {{{0, 0}, {1, 1}, {3, 3}, {2, 2}, {1, 1}}, 2},
+                          {{{0, 0}, {0, 3}, {0, 1}}, 2},
+                          {{{0, 0}, {1, 0}, {0.5, 0.5}, {0, 1}, {0, 1}, {0.25, 0.25}}, 3}};
+    Tally t;
+    for (const Case& c : cases)
+        for (int e : {-498, 0, 498})
+            for (int rotation = 0; rotation < 3; ++rotation)
+                for (double r : {0.0, 0.375})
+                {
+                    Shape s;
+                    for (const Point& p : c.points)
+                        s.points.push_back({std::ldexp(p.x, e), std::ldexp(p.y, e)});
+                    s.radius = std::ldexp(r, e);
+                    s.px = std::ldexp(0.75, e), s.py = std::ldexp(-1.5, e);
+                    if (rotation == 1)
+                        s.c = 1.3 * 0.6, s.s = 0.7 * 0.8 + 0.01; // not a unit rotation
+                    else if (rotation == 2)
+                        s.c = 0, s.s = 0; // every point maps to the translation: a one-point hull
+                    exact::PreparedShape prepared(s);
+                    const exact::PreparedShape moved(std::move(prepared));
+                    INFO("points " << c.points.size() << " scale 2^" << e << " rotation "
+                                   << rotation << " radius " << r);
+                    CHECK(moved.hullSize() == (rotation == 2 ? 1 : c.hull));
+                    for (const Point& p : hostilePoints(s))
+                        filteredEqualsGmp(moved, p, t);
+                }
+    INFO("GMP route for " << t.gmp << " of " << t.points << " points");
+    CHECK(t.gmp * 4 < t.points);
+}
+
+TEST_CASE("PreparedShape rejects invalid shapes and points", "[exact][point]")
+{
+    Shape empty;
+    CHECK_THROWS_AS(exact::PreparedShape(empty), std::invalid_argument);
+    Shape s;
+    s.points = {{0, 0}, {1, 0}};
+    s.radius = -1;
+    CHECK_THROWS_AS(exact::PreparedShape(s), std::invalid_argument);
+    s.radius = 0;
+    const exact::PreparedShape ps(s);
+    CHECK_THROWS_AS(exact::pointToShapeDistance(ps, {NAN, 0}), std::invalid_argument);
+    CHECK(exact::pointToShapeDistance(ps, {0.5, 2}) == 2.0);
 }

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -120,6 +121,37 @@ Result distance(const Shape& a, const Shape& b, const Options& options = {});
 // an error bound allows (docs/exact.md, "Point to shape"), else by the GMP route, with the same
 // result bit for bit; `gmpRoute`, when given, says whether the GMP route measured it.
 double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute = nullptr);
+
+namespace detail
+{
+struct PreparedData;
+}
+
+// A shape prepared once for many pointToShapeDistance() calls (docs/exact.md, "Point to shape"):
+// a copy of the shape, its hull as the default route finds it, and the interval enclosures of the
+// hull's world points. The constructor validates like validateShape(shape, name)
+// (std::invalid_argument; pointToShapeDistance(Shape, ...) names it "shape B").
+// A const PreparedShape may be used by several threads at once.
+class PreparedShape
+{
+  public:
+    explicit PreparedShape(const Shape& shape, const char* name = "shape");
+    PreparedShape(PreparedShape&&) noexcept;
+    PreparedShape& operator=(PreparedShape&&) noexcept;
+    ~PreparedShape();
+
+    const Shape& shape() const;
+    int hullSize() const; // vertices of the hull: 1 (a point), 2 (a segment) or more
+    const detail::PreparedData& data() const { return *data_; }
+
+  private:
+    std::unique_ptr<detail::PreparedData> data_;
+};
+
+// pointToShapeDistance(prepared.shape(), p, gmpRoute), bit for bit and with the same route, at
+// the cost of locating p against the prepared hull (no hull, merge or allocation per point unless
+// the exact fallbacks or the GMP route are needed).
+double pointToShapeDistance(const PreparedShape& shape, Point p, bool* gmpRoute = nullptr);
 
 // Independent brute force (plain GMP rationals, no hull construction): exact separating-axis test
 // over every pair direction, then the minimum exact squared point-to-segment distance over all

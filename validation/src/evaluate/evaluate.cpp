@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 
 namespace gjkval
@@ -558,8 +559,11 @@ class ExactShapes
         const exact::Point q{p[0], p[1]};
         if (certainlyOnShape(ofA ? s.fa : s.fb, q))
             return 0;
+        std::optional<exact::PreparedShape>& prepared = ofA ? s.pa : s.pb;
+        if (!prepared) // prepared once, for the points the filter leaves
+            prepared.emplace(ofA ? s.a : s.b, "shape B"); // pointToShapeDistance's name
         bool gmp = false;
-        const double d = exact::pointToShapeDistance(ofA ? s.a : s.b, q, &gmp);
+        const double d = exact::pointToShapeDistance(*prepared, q, &gmp);
         exactCount += gmp ? 1 : 0;
         return d;
     }
@@ -569,6 +573,7 @@ class ExactShapes
     {
         exact::Shape a, b;
         FilterShape fa, fb;
+        std::optional<exact::PreparedShape> pa, pb;
     };
     Pair& get(bool isFloat)
     {
