@@ -341,7 +341,8 @@ TEST_CASE("correctly rounded: float data take the float products, bit for bit", 
     for (const auto& f : generateFamilies("engine:20", 5))
         for (const Case& c : f.cases)
         {
-            const gjk::DistanceInput<double> in = prepare(c).input<double>();
+            const PreparedCase prepared = prepare(c); // the input points into its vectors
+            const gjk::DistanceInput<double> in = prepared.input<double>();
             for (const auto& xf : {in.transformA, in.transformB})
                 factors.insert(factors.end(), {xf.q.c, xf.q.s});
             for (const auto& poly : {in.proxyA, in.proxyB})
