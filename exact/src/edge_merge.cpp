@@ -693,12 +693,15 @@ class PointLocator
     I zx(int k) const { return px_ - d_.x[d_.z[k]]; }
     I zy(int k) const { return py_ - d_.y[d_.z[k]]; }
 
+    // Where an interval leaves a sign undecided: the exact sign by expansions (zSignExact, in
+    // round-to-nearest), then, where those refuse, GMP.
     int orientO(int i, int j)
     {
         const int s = sign(zx(i) * zy(j) - zy(i) * zx(j));
         if (s != kUnsure)
             return s;
-        return crossSignE(z(i), z(j));
+        const int e = expansionSign(ZPredicate::Cross, i, j);
+        return e != kZUnsure ? e : crossSignE(z(i), z(j));
     }
     int dotSign(int i, int j)
     {
@@ -706,6 +709,9 @@ class PointLocator
         const int s = sign(xi * (zx(j) - xi) + yi * (zy(j) - yi));
         if (s != kUnsure)
             return -s;
+        const int e = expansionSign(ZPredicate::Dot, i, j);
+        if (e != kZUnsure)
+            return -e;
         const E2& q = z(i);
         return -dotSignE(q, sub(z(j), q));
     }
@@ -716,6 +722,9 @@ class PointLocator
             return false;
         if (sx == 0 && sy == 0)
             return true;
+        const int e = expansionSign(ZPredicate::IsZero, i, i);
+        if (e != kZUnsure)
+            return e == 0;
         const E2& q = z(i);
         return sgn(q.x) == 0 && sgn(q.y) == 0;
     }
@@ -732,6 +741,13 @@ class PointLocator
     Point p_;
     I px_, py_;
     std::unique_ptr<Exact> exact_;
+
+    int expansionSign(ZPredicate kind, int i, int j) const
+    {
+        CGAL::Protect_FPU_rounding<true> nearest(CGAL_FE_TONEAREST); // expansions need it
+        const std::vector<Point>& b = d_.shape.points;
+        return zSignExact(kind, p_, d_.shape, b[d_.z[i]], b[d_.z[j]]);
+    }
 
     const E2& z(int k)
     {

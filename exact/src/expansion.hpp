@@ -77,6 +77,44 @@ struct Expansion
                 addProduct(sign * x.c[i], y.c[j]);
     }
 
+    // The same value in as few components as COMPRESS gives (Shewchuk, section 2.8, figure 15;
+    // his Theorem 23: the result is nonoverlapping, largest last, no zeros). Each step is
+    // Dekker's FastTwoSum, exact for |a| >= |b|, which the order of the components guarantees.
+    // A product of expansions costs the product of their lengths in TwoProducts, so the sums
+    // of a few terms here are compressed before they are multiplied.
+    void compress()
+    {
+        if (n < 2 || !ok)
+            return;
+        double g[kMax];
+        double q = c[n - 1];
+        int bottom = n - 1;
+        for (int i = n - 2; i >= 0; --i)
+        {
+            const double s = q + c[i];
+            const double small = c[i] - (s - q);
+            if (small != 0)
+            {
+                g[bottom--] = s;
+                q = small;
+            }
+            else
+                q = s;
+        }
+        g[bottom] = q;
+        int top = 0;
+        for (int i = bottom + 1; i < n; ++i)
+        {
+            const double s = g[i] + q;
+            const double small = q - (s - g[i]);
+            if (small != 0)
+                c[top++] = small;
+            q = s;
+        }
+        c[top++] = q;
+        n = top;
+    }
+
     void negate()
     {
         for (int i = 0; i < n; ++i)

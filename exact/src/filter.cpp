@@ -512,9 +512,11 @@ V edgeDistance(const Expansion& zx, const Expansion& zy, const Expansion& dx, co
         return {0, 0, NAN}; // refused, or on the edge's line (an overlap, which locate() says)
     if (C.sign() < 0)
         C.negate();
+    C.compress();
     Expansion L;
     L.addProduct(dx, dx);
     L.addProduct(dy, dy);
+    L.compress();
     const V sL = sqrtV(toV(L));
     if (r == 0)
         return div(toV(C), sL);
@@ -555,6 +557,8 @@ bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Poin
     zy.addProduct(-c, v[5]);
     if (!zx.ok || !zy.ok) // a refused product leaves the expansion incomplete: its n means nothing
         return false;
+    zx.compress();
+    zy.compress();
     bool clamped = false;
     V value;
     if (!edge)
@@ -572,6 +576,8 @@ bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Poin
         dy.addProduct(-c, v[7]);
         if (!dx.ok || !dy.ok)
             return false;
+        dx.compress();
+        dy.compress();
         value = edgeDistance(zx, zy, dx, dy, r, clamped);
     }
     if (clamped)
@@ -584,6 +590,85 @@ bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Poin
         return false;
     out = std::ldexp(scaled, -k);
     return std::isfinite(out) && out >= 0x1p-1022;
+}
+
+// ---------------------------------------------------------------- exact predicate signs
+//
+// zSignExact (internal.hpp): the sign of PointLocator's predicates on Z = {p} - hull(B) where its
+// intervals leave it undecided (a witness point on or within about u R of B's boundary, where the
+// predicate's exact value is about u R^2 and no filter of double or double-double width decides).
+// Z vertex k = p - w_k, w_k = (c x - s y + px, s x + c y + py) for B's point k, so each coordinate
+// is an exact six-term expansion (filteredPointDistance's z), the cross z_i x z_j and the dot
+// z_i . (z_j - z_i) exact expansions of their products, whose sign is that of the largest
+// component. Both are homogeneous of degree 2 in (p, B's translation, B's points) with (c, s)
+// fixed, so scaling those by a power of two together (scaleToUnit, exact or refused) keeps the
+// sign and keeps every product above expansion.hpp's underflow limit. Refused (kZUnsure): the
+// caller's GMP route, whose sign this equals wherever it answers.
+namespace
+{
+void zVertex(Point p, double tx, double ty, double c, double s, Point b, Expansion& zx,
+             Expansion& zy)
+{
+    zx.add(p.x);
+    zx.add(-tx);
+    zx.addProduct(-c, b.x);
+    zx.addProduct(s, b.y);
+    zy.add(p.y);
+    zy.add(-ty);
+    zy.addProduct(-s, b.x);
+    zy.addProduct(-c, b.y);
+    zx.compress();
+    zy.compress();
+}
+
+// The sign of a V when its error bound decides it (|h + l| >= |h| (1 - 2^-50) > e), else kZUnsure.
+int decidedSign(const V& v)
+{
+    if (!(std::fabs(v.h) * (1 - 0x1p-50) > v.e))
+        return v.h == 0 && v.l == 0 && v.e == 0 ? 0 : kZUnsure;
+    return v.h > 0 ? 1 : -1;
+}
+} // namespace
+
+int zSignExact(ZPredicate kind, Point p, const Shape& B, Point bi, Point bj)
+{
+    double v[8] = {p.x, p.y, B.px, B.py, bi.x, bi.y, bj.x, bj.y};
+    int k = 0;
+    if (!scaleToUnit(v, 8, k))
+        return kZUnsure;
+    const Point ps{v[0], v[1]};
+    Expansion xi, yi;
+    zVertex(ps, v[2], v[3], B.c, B.s, {v[4], v[5]}, xi, yi);
+    if (kind == ZPredicate::IsZero)
+        return !xi.ok || !yi.ok ? kZUnsure : (xi.n == 0 && yi.n == 0 ? 0 : 1);
+    Expansion xj, yj;
+    zVertex(ps, v[2], v[3], B.c, B.s, {v[6], v[7]}, xj, yj);
+    // First the products of the coordinates' double-double values with an error bound (the V
+    // operations above): the sign of a value about u R^2 is decided at once, as their bound is
+    // about 2^-98 R^2; only a value closer to 0 than that takes the exact products.
+    {
+        const V Xi = toV(xi), Yi = toV(yi), Xj = toV(xj), Yj = toV(yj);
+        const V approx = kind == ZPredicate::Cross
+                             ? sub(mul(Xi, Yj), mul(Yi, Xj))
+                             : add(mul(Xi, sub(Xj, Xi)), mul(Yi, sub(Yj, Yi)));
+        const int sgn = decidedSign(approx);
+        if (sgn != kZUnsure && sgn != 0)
+            return sgn;
+    }
+    Expansion r;
+    if (kind == ZPredicate::Cross) // z_i x z_j
+    {
+        r.addProduct(xi, yj);
+        r.addProduct(yi, xj, -1);
+    }
+    else // z_i . (z_j - z_i) = z_i . z_j - |z_i|^2
+    {
+        r.addProduct(xi, xj);
+        r.addProduct(yi, yj);
+        r.addProduct(xi, xi, -1);
+        r.addProduct(yi, yi, -1);
+    }
+    return r.ok ? r.sign() : kZUnsure;
 }
 
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,

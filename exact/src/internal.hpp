@@ -184,6 +184,19 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
 // vertices i and j), from exact expansions of the world coordinates' differences. True when
 // decided (`out` then is the GMP route's distance bit for bit); false: take the GMP route.
 bool filteredPointDistance(const Feature& f, Point p, const Shape& B, const Point* bs, double& out);
+// filter.cpp: the exact sign, by floating-point expansions, of one of PointLocator's predicates on
+// Z = {p} - hull(B) (p in the world frame, Z vertex k = p - w_k for B's input point b_k):
+// Cross: sign(z_i x z_j); Dot: sign(z_i . (z_j - z_i)); IsZero: 0 when z_i == 0, else 1 (bj
+// unused). kZUnsure where an expansion cannot be exact (overflow, underflow, scaling): take the GMP
+// route.
+enum class ZPredicate
+{
+    Cross,
+    Dot,
+    IsZero
+};
+constexpr int kZUnsure = 2;
+int zSignExact(ZPredicate kind, Point p, const Shape& B, Point bi, Point bj);
 // edge_merge.cpp: pointToShapeDistance's computation before PreparedShape (now its GMP route's
 // fallback and the tests' reference), point a one-point shape with the identity
 // transform and no radius (validated): the located feature, then filteredPointDistance or, where

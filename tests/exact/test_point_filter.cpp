@@ -336,3 +336,63 @@ TEST_CASE("PreparedShape rejects invalid shapes and points", "[exact][point]")
     CHECK_THROWS_AS(exact::pointToShapeDistance(ps, {NAN, 0}), std::invalid_argument);
     CHECK(exact::pointToShapeDistance(ps, {0.5, 2}) == 2.0);
 }
+
+namespace
+{
+// The Z vertex p - w_k of a shape's point b_k as exact rationals, independently of filter.cpp:
+// w_k = (c x - s y + px, s x + c y + py) with every double taken exactly.
+std::pair<mpq_class, mpq_class> zExact(Point p, const Shape& s, Point b)
+{
+    const mpq_class c(s.c), sn(s.s), bx(b.x), by(b.y);
+    return {mpq_class(p.x) - (c * bx - sn * by + mpq_class(s.px)),
+            mpq_class(p.y) - (sn * bx + c * by + mpq_class(s.py))};
+}
+} // namespace
+
+TEST_CASE("zSignExact: the predicates' exact signs by expansions equal the rationals' signs",
+          "[exact][filter][point]")
+{
+    using exact::detail::kZUnsure;
+    using exact::detail::ZPredicate;
+    std::mt19937_64 rng(4343);
+    const int scales[] = {-498, -60, 0, 60, 498};
+    int decided = 0, asked = 0, zeros = 0;
+    for (int kind = 0; kind < 4; ++kind)
+        for (int e : scales)
+            for (int rotation = 0; rotation < 4; ++rotation)
+            {
+                const Shape s = hostileShape(rng, kind, e, rotation, false);
+                for (const Point& p : hostilePoints(s))
+                    for (const Point& bi : s.points)
+                        for (const Point& bj : s.points)
+                        {
+                            const auto [xi, yi] = zExact(p, s, bi);
+                            const auto [xj, yj] = zExact(p, s, bj);
+                            const int cross = sgn(xi * yj - yi * xj);
+                            const int dot = sgn(xi * (xj - xi) + yi * (yj - yi));
+                            const int zero = (sgn(xi) == 0 && sgn(yi) == 0) ? 0 : 1;
+                            INFO("kind " << kind << " scale 2^" << e << " rotation " << rotation
+                                         << " p (" << p.x << ", " << p.y << ")");
+                            const int got[3] = {
+                                exact::detail::zSignExact(ZPredicate::Cross, p, s, bi, bj),
+                                exact::detail::zSignExact(ZPredicate::Dot, p, s, bi, bj),
+                                exact::detail::zSignExact(ZPredicate::IsZero, p, s, bi, bj)};
+                            const int want[3] = {cross, dot, zero};
+                            for (int t = 0; t < 3; ++t)
+                            {
+                                ++asked;
+                                if (got[t] == kZUnsure)
+                                    continue;
+                                ++decided;
+                                CHECK(got[t] == want[t]);
+                            }
+                            zeros += (cross == 0) + (dot == 0) + (zero == 0);
+                        }
+            }
+    INFO(decided << " of " << asked << " signs decided, " << zeros << " of them exactly 0");
+    // Measured at the change: 469,667 of 479,724 decided (the rest refused: a product of expansion
+    // components below expansion.hpp's 2^-960, or a coordinate scaling would cut), 83,503 exact
+    // zeros, the case a bound alone never decides.
+    CHECK(decided * 20 > asked * 19);
+    CHECK(zeros > 1000);
+}
