@@ -87,6 +87,13 @@ Result distance(const Shape& a, const Shape& b, const Options& options)
     return r;
 }
 
+Result distance(const PreparedShape& a, const PreparedShape& b, const Options& options)
+{
+    if (options.route == Route::EdgeMerge)
+        return detail::edgeMergeResult(a.data(), b.data(), options); // validated when prepared
+    return distance(a.shape(), b.shape(), options);
+}
+
 double pointToShapeDistance(const Shape& shape, Point p, bool* gmpRoute)
 {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))

@@ -216,7 +216,9 @@ struct Side
 {
     const Shape* shape = nullptr;
     DecShape dec;
-    std::vector<I> x, y;
+    std::vector<I> ownX, ownY; // init()'s intervals; from a prepared shape, x and y point there
+    const I* x = nullptr;
+    const I* y = nullptr;
     std::vector<E2> ex;
     std::vector<char> have;
     int exactDecisions = 0; // comparisons and orientations the intervals left to exact()
@@ -226,22 +228,25 @@ struct Side
         shape = &s;
         dec = {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};
         const std::size_t n = s.points.size();
-        x.resize(n);
-        y.resize(n);
+        ownX.resize(n);
+        ownY.resize(n);
         const I c(s.c), sn(s.s), px(s.px), py(s.py);
         for (std::size_t i = 0; i < n; ++i)
         {
             const I px_(s.points[i].x), py_(s.points[i].y);
-            x[i] = c * px_ - sn * py_ + px;
-            y[i] = sn * px_ + c * py_ + py;
+            ownX[i] = c * px_ - sn * py_ + px;
+            ownY[i] = sn * px_ + c * py_ + py;
         }
+        x = ownX.data();
+        y = ownY.data();
     }
+    void init(const PreparedData& d); // the prepared shape's intervals and hull counts
     const E2& exact(int i)
     {
         if (ex.empty())
         { // exact values are rarely needed for more than a few points: allocate late
-            ex.resize(x.size());
-            have.assign(x.size(), 0);
+            ex.resize(shape->points.size());
+            have.assign(shape->points.size(), 0);
         }
         if (!have[i])
         {
@@ -335,10 +340,44 @@ int half(int sy, int sx)
     return (sy < 0 || (sy == 0 && sx < 0)) ? 0 : 1;
 }
 
+} // namespace
+
+// What PreparedShape keeps: the shape; its hull as Side::hull() gives it, with the exact decisions
+// that took (Solver's side, from prepared data: the same hull and the same counts); Z = {p} -
+// hull(shape) as Solver's merge() builds it for a one-point A, less the point: hull vertex indices
+// from the lowest (then leftmost) one, counterclockwise (merge()'s order, so the same Z vertex
+// numbers); and every point's interval world coordinates (Side::init()'s, moved from it).
+struct PreparedData
+{
+    Shape shape;
+    DecShape dec;
+    std::vector<int> hull;
+    int hullExact = 0;
+    std::vector<int> z;
+    std::vector<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
+};
+
+namespace
+{
+
+void Side::init(const PreparedData& d)
+{
+    shape = &d.shape;
+    dec = d.dec;
+    x = d.x.data();
+    y = d.y.data();
+    exactDecisions = d.hullExact;
+}
+
 class Solver
 {
   public:
     Solver(const Shape& a, const Shape& b) : a_(a), b_(b) {}
+    // From prepared shapes (exact::PreparedShape): their hulls and intervals, not made again.
+    Solver(const PreparedData& a, const PreparedData& b)
+        : a_(a.shape), b_(b.shape), preparedA_(&a), preparedB_(&b)
+    {
+    }
 
     ExactResult run() { return build(locateFeature()); }
 
@@ -419,16 +458,28 @@ class Solver
   private:
     const Shape& a_;
     const Shape& b_;
+    const PreparedData* preparedA_ = nullptr;
+    const PreparedData* preparedB_ = nullptr;
     Side A, B;
     int mergeExact = 0, featureExact = 0; // predicates the intervals left to exact integers
 
     Feature locateFeature()
     {
         I::Protector protect; // round upward for the interval filters; restored at the end of scope
-        A.init(a_);
-        B.init(b_);
-        ha = A.hull();
-        hb = B.hull();
+        if (preparedA_ && preparedB_)
+        { // the same intervals, hulls and hull counts as below, made by PreparedShape
+            A.init(*preparedA_);
+            B.init(*preparedB_);
+            ha = preparedA_->hull;
+            hb = preparedB_->hull;
+        }
+        else
+        {
+            A.init(a_);
+            B.init(b_);
+            ha = A.hull();
+            hb = B.hull();
+        }
         merge();
         return locate(static_cast<int>(za.size()), *this);
     }
@@ -658,18 +709,6 @@ class Solver
 
 } // namespace
 
-// What PreparedShape keeps: the shape, and Z = {p} - hull(shape) as Solver's merge() builds it for
-// a one-point A, less the point: hull vertex indices from the lowest (then leftmost) one,
-// counterclockwise (merge()'s order, so the same Z vertex numbers), and every point's interval
-// world coordinates (Side::init()'s, moved from it).
-struct PreparedData
-{
-    Shape shape;
-    DecShape dec;
-    std::vector<int> z;
-    std::vector<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
-};
-
 namespace
 {
 // Side::init()'s intervals of a one-point identity shape {p}, built the same way (the same
@@ -810,6 +849,16 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
     return r;
 }
 
+Result edgeMergeResult(const PreparedData& a, const PreparedData& b, const Options& options)
+{
+    Solver solver(a, b);
+    if (options.filter)
+        return solver.runFiltered(options);
+    Result r = finish(solver.run(), a.shape.radius, b.shape.radius, options.exactWitnesses);
+    r.fallbacks.gmp = true;
+    return r;
+}
+
 } // namespace exact::detail
 
 namespace exact
@@ -826,6 +875,8 @@ PreparedShape::PreparedShape(const Shape& shape, const char* name)
         detail::I::Protector protect; // as Solver::locateFeature()
         side.init(d.shape);
         std::vector<int> h = side.hull();
+        d.hull = h;
+        d.hullExact = side.exactDecisions;
         // merge()'s start on B: the lowest (then leftmost) hull vertex, the first one found.
         const int n = static_cast<int>(h.size());
         int sb = 0;
@@ -836,8 +887,8 @@ PreparedShape::PreparedShape(const Shape& shape, const char* name)
         d.z = std::move(h);
     }
     d.dec = side.dec;
-    d.x = std::move(side.x); // every point's intervals, read through z
-    d.y = std::move(side.y);
+    d.x = std::move(side.ownX); // every point's intervals, read through z
+    d.y = std::move(side.ownY);
 }
 
 PreparedShape::PreparedShape(PreparedShape&&) noexcept = default;

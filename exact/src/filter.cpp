@@ -621,10 +621,43 @@ void zVertex(Point p, double tx, double ty, double c, double s, Point b, Expansi
     zy.compress();
 }
 
+// z = p - w for one point b of B (scaled values), each coordinate as a V without expansions: the
+// six terms (p, the translation, the two products as p + e by fma) summed by cascaded twoSum,
+// whose errors q are exact and summed in double (Ogita, Rump and Oishi's Sum2): h + l is the
+// cascade's sum plus that double sum, within gamma_5 sum|q| <= 6 u sum|q| of the exact value
+// (recursive summation of five q), inflated by kUp for the bound's own rounding. A product below
+// the subnormal range's reach leaves its fma error term inexact by at most 2^-1075: 2^-1070 a
+// coordinate covers both products' (the values are scaled to [1/2, 1), so that is far below any
+// decided value).
+V zFastCoordinate(const double (&t)[6])
+{
+    double sum = t[0], low = 0, spread = 0;
+    for (int i = 1; i < 6; ++i)
+    {
+        double q;
+        twoSum(sum, t[i], sum, q);
+        low += q;
+        spread += std::fabs(q);
+    }
+    V v;
+    twoSum(sum, low, v.h, v.l);
+    v.e = (6 * kU * spread + 0x1p-1070) * kUp;
+    return v;
+}
+
+void zFast(Point p, double tx, double ty, double c, double s, Point b, V& x, V& y)
+{
+    const double cx = c * b.x, sy = s * b.y, sx = s * b.x, cy = c * b.y;
+    const double tX[6] = {p.x, -tx, -cx, -std::fma(c, b.x, -cx), sy, std::fma(s, b.y, -sy)};
+    const double tY[6] = {p.y, -ty, -sx, -std::fma(s, b.x, -sx), -cy, -std::fma(c, b.y, -cy)};
+    x = zFastCoordinate(tX);
+    y = zFastCoordinate(tY);
+}
+
 // The sign of a V when its error bound decides it (|h + l| >= |h| (1 - 2^-50) > e), else kZUnsure.
 int decidedSign(const V& v)
 {
-    if (!(std::fabs(v.h) * (1 - 0x1p-50) > v.e))
+    if (!std::isfinite(v.h) || !(std::fabs(v.h) * (1 - 0x1p-50) > v.e))
         return v.h == 0 && v.l == 0 && v.e == 0 ? 0 : kZUnsure;
     return v.h > 0 ? 1 : -1;
 }
@@ -637,24 +670,34 @@ int zSignExact(ZPredicate kind, Point p, const Shape& B, Point bi, Point bj)
     if (!scaleToUnit(v, 8, k))
         return kZUnsure;
     const Point ps{v[0], v[1]};
+    // First in double-double with an error bound (zFast, then the V operations above): the sign of
+    // a value about u R^2 is decided at once, as the bound is about 2^-98 R^2; only a value closer
+    // to 0 than that (or exactly 0) takes the exact expansions.
+    {
+        V Xi, Yi, Xj, Yj;
+        zFast(ps, v[2], v[3], B.c, B.s, {v[4], v[5]}, Xi, Yi);
+        int sgn;
+        if (kind == ZPredicate::IsZero)
+        { // a coordinate certainly nonzero
+            const int sx = decidedSign(Xi), sy = decidedSign(Yi);
+            sgn = (sx == 1 || sx == -1 || sy == 1 || sy == -1) ? 1 : kZUnsure;
+        }
+        else
+        {
+            zFast(ps, v[2], v[3], B.c, B.s, {v[6], v[7]}, Xj, Yj);
+            sgn = decidedSign(kind == ZPredicate::Cross
+                                  ? sub(mul(Xi, Yj), mul(Yi, Xj))
+                                  : add(mul(Xi, sub(Xj, Xi)), mul(Yi, sub(Yj, Yi))));
+        }
+        if (sgn != kZUnsure && sgn != 0)
+            return sgn;
+    }
     Expansion xi, yi;
     zVertex(ps, v[2], v[3], B.c, B.s, {v[4], v[5]}, xi, yi);
     if (kind == ZPredicate::IsZero)
         return !xi.ok || !yi.ok ? kZUnsure : (xi.n == 0 && yi.n == 0 ? 0 : 1);
     Expansion xj, yj;
     zVertex(ps, v[2], v[3], B.c, B.s, {v[6], v[7]}, xj, yj);
-    // First the products of the coordinates' double-double values with an error bound (the V
-    // operations above): the sign of a value about u R^2 is decided at once, as their bound is
-    // about 2^-98 R^2; only a value closer to 0 than that takes the exact products.
-    {
-        const V Xi = toV(xi), Yi = toV(yi), Xj = toV(xj), Yj = toV(yj);
-        const V approx = kind == ZPredicate::Cross
-                             ? sub(mul(Xi, Yj), mul(Yi, Xj))
-                             : add(mul(Xi, sub(Xj, Xi)), mul(Yi, sub(Yj, Yi)));
-        const int sgn = decidedSign(approx);
-        if (sgn != kZUnsure && sgn != 0)
-            return sgn;
-    }
     Expansion r;
     if (kind == ZPredicate::Cross) // z_i x z_j
     {

@@ -45,6 +45,9 @@ ExactResult edgeMerge(const Shape& a, const Shape& b);
 // it decides them and the exact squared distance from the located feature; otherwise (and when
 // it does not decide) edgeMerge() and finish(). Fills Result::fallbacks.
 Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options);
+// The same from prepared shapes (exact::PreparedShape): their hulls, not made again; the same
+// result, fallback counts included.
+Result edgeMergeResult(const PreparedData& a, const PreparedData& b, const Options& options);
 ExactResult hullOfDifferences(const Shape& a, const Shape& b);
 ExactResult minkowskiSum2(const Shape& a, const Shape& b);
 

@@ -546,7 +546,7 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
 
     SECTION("invalid input: the case is rejected")
     {
-        ctx.truth = [](const exact::Shape&, const exact::Shape&,
+        ctx.truth = [](const exact::PreparedShape&, const exact::PreparedShape&,
                        const exact::Options&) -> exact::Result
         { throw std::invalid_argument("exact: shape A has no points"); };
         CaseOutcome o;
@@ -555,7 +555,7 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
     }
     SECTION("a broken invariant of the truth propagates")
     {
-        ctx.truth = [](const exact::Shape&, const exact::Shape&,
+        ctx.truth = [](const exact::PreparedShape&, const exact::PreparedShape&,
                        const exact::Options&) -> exact::Result
         { throw std::logic_error("exact: rounding did not converge"); };
         CaseOutcome o;
@@ -566,7 +566,8 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
     {
         static int calls;
         calls = 0;
-        ctx.truth = [](const exact::Shape& a, const exact::Shape& b, const exact::Options& opt)
+        ctx.truth = [](const exact::PreparedShape& a, const exact::PreparedShape& b,
+                       const exact::Options& opt)
         {
             if (++calls == 2) // the second call is the float-rounded input's truth
                 throw std::logic_error("exact: rounding did not converge");

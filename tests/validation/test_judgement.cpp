@@ -21,7 +21,8 @@ const double kDenormMin = std::numeric_limits<double>::denorm_min(); // 2^-1074
 
 // The truth every evaluateCase of a test returns (set before the call).
 exact::Result gTruth;
-exact::Result fixedTruth(const exact::Shape&, const exact::Shape&, const exact::Options&)
+exact::Result fixedTruth(const exact::PreparedShape&, const exact::PreparedShape&,
+                         const exact::Options&)
 {
     return gTruth;
 }

@@ -148,6 +148,11 @@ class PreparedShape
     std::unique_ptr<detail::PreparedData> data_;
 };
 
+// distance(a.shape(), b.shape(), options), bit for bit, fallback counts included; route EdgeMerge
+// takes the prepared hulls instead of making them again (the runner prepares a case's shapes once
+// for its truth and its witness checks). The shapes were validated when prepared.
+Result distance(const PreparedShape& a, const PreparedShape& b, const Options& options = {});
+
 // pointToShapeDistance(prepared.shape(), p, gmpRoute), bit for bit and with the same route, at
 // the cost of locating p against the prepared hull (no hull, merge or allocation per point unless
 // the exact fallbacks or the GMP route are needed).

@@ -243,24 +243,40 @@ bool EvalContext::needFloatTruth() const
 // else it throws (std::logic_error: a broken invariant of the truth, CGAL's own failed assertions)
 // is a bug of ours and propagates, failing the whole run loudly (gjk-validate: internal error, exit
 // code 4), never a "rejected" case.
+namespace
+{
+// The case's shapes on the exact side for one input type, prepared (validated: std::invalid_argument
+// names "shape A" or "shape B", as exact::distance does).
+void prepareShapes(const Case& c, bool isFloat, TruthShapes& s)
+{
+    const int t = isFloat ? 1 : 0;
+    s.a[t].emplace(toExact(c.a, isFloat), "shape A");
+    s.b[t].emplace(toExact(c.b, isFloat), "shape B");
+}
+} // namespace
+
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
+    auto shapes = std::make_shared<TruthShapes>();
     try
     {
-        out.exact = ctx.truth(toExact(c.a), toExact(c.b), ctx.exactOptions);
+        prepareShapes(c, false, *shapes);
+        out.exact = ctx.truth(*shapes->a[0], *shapes->b[0], ctx.exactOptions);
     }
     catch (const std::invalid_argument& e)
     {
         out.rejected = fmt::format("exact: {}", e.what());
         return;
     }
+    out.shapes = shapes;
     // The float variants' truth: the same case with every number rounded to float. Cases whose
     // numbers do not fit in float skip the float variants, with their reason
     // (kSkipNotRepresentable); once they fit, the exact side has no reason to refuse them, so
     // nothing is caught here.
     if (ctx.needFloatTruth() && representableInFloat(c))
     {
-        out.exactFloat = ctx.truth(toExact(c.a, true), toExact(c.b, true), ctx.exactOptions);
+        prepareShapes(c, true, *shapes);
+        out.exactFloat = ctx.truth(*shapes->a[1], *shapes->b[1], ctx.exactOptions);
         out.hasFloatTruth = true;
         out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
     }
@@ -544,12 +560,13 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
 
 namespace
 {
-// A case's shapes on the exact side, as given and rounded to float, converted when first needed,
-// with the witness filter's view of each (witness_filter.hpp).
+// A case's shapes on the exact side, as given and rounded to float: computeTruth's prepared shapes
+// (TruthShapes), or prepared here when a caller gave none; with the witness filter's view of each
+// (witness_filter.hpp), made when first needed.
 class ExactShapes
 {
   public:
-    explicit ExactShapes(const Case& c) : c_(c) {}
+    ExactShapes(const Case& c, const TruthShapes* truth) : c_(c), truth_(truth) {}
     // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else
     // exact::pointToShapeDistance's value (decided in floating point or by its GMP route);
     // `exactCount` counts the points the GMP route measured.
@@ -559,11 +576,8 @@ class ExactShapes
         const exact::Point q{p[0], p[1]};
         if (certainlyOnShape(ofA ? s.fa : s.fb, q))
             return 0;
-        std::optional<exact::PreparedShape>& prepared = ofA ? s.pa : s.pb;
-        if (!prepared) // prepared once, for the points the filter leaves
-            prepared.emplace(ofA ? s.a : s.b, "shape B"); // pointToShapeDistance's name
         bool gmp = false;
-        const double d = exact::pointToShapeDistance(*prepared, q, &gmp);
+        const double d = exact::pointToShapeDistance(ofA ? *s.pa : *s.pb, q, &gmp);
         exactCount += gmp ? 1 : 0;
         return d;
     }
@@ -571,9 +585,8 @@ class ExactShapes
   private:
     struct Pair
     {
-        exact::Shape a, b;
+        const exact::PreparedShape *pa = nullptr, *pb = nullptr;
         FilterShape fa, fb;
-        std::optional<exact::PreparedShape> pa, pb;
     };
     Pair& get(bool isFloat)
     {
@@ -581,15 +594,27 @@ class ExactShapes
         if (!have_[t])
         {
             Pair& s = shapes_[t];
-            s.a = toExact(c_.a, isFloat);
-            s.b = toExact(c_.b, isFloat);
-            s.fa = filterShape(s.a);
-            s.fb = filterShape(s.b);
+            if (truth_ && truth_->a[t] && truth_->b[t])
+            {
+                s.pa = &*truth_->a[t];
+                s.pb = &*truth_->b[t];
+            }
+            else
+            {
+                own_.a[t].emplace(toExact(c_.a, isFloat), "shape A");
+                own_.b[t].emplace(toExact(c_.b, isFloat), "shape B");
+                s.pa = &*own_.a[t];
+                s.pb = &*own_.b[t];
+            }
+            s.fa = filterShape(s.pa->shape());
+            s.fb = filterShape(s.pb->shape());
             have_[t] = true;
         }
         return shapes_[t];
     }
     const Case& c_;
+    const TruthShapes* truth_;
+    TruthShapes own_;
     Pair shapes_[2];
     bool have_[2] = {false, false};
 };
@@ -631,7 +656,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     if (!out.rejected.empty())
         return;
-    ExactShapes shapes(c);
+    ExactShapes shapes(c, out.shapes.get());
     const std::size_t nv = ctx.variants.size();
     std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
     std::vector<char> done(nv, 0), exactA(nv, 0), exactB(nv, 0);
@@ -682,6 +707,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
             acceptTwoCommonPoints(v, shapes, isFloat);
         judgeWitnesses(v, wa, wb);
     }
+    out.shapes.reset(); // the chunk's hulls are not kept past this phase
 }
 
 void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseOutcome* out,
@@ -805,7 +831,9 @@ Json truthDetail(const Case& c, const EvalContext& ctx, const exact::Result& r, 
         return exactDetail(r);
     exact::Options o = ctx.exactOptions;
     o.squaredRational = true;
-    return exactDetail(ctx.truth(toExact(c.a, floatInput), toExact(c.b, floatInput), o));
+    const exact::PreparedShape a(toExact(c.a, floatInput), "shape A");
+    const exact::PreparedShape b(toExact(c.b, floatInput), "shape B");
+    return exactDetail(ctx.truth(a, b, o));
 }
 } // namespace
 

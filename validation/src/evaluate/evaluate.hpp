@@ -13,6 +13,8 @@
 
 #include <array>
 #include <cmath>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -166,9 +168,19 @@ struct VariantOutcome
     std::string pluginDetail;
 };
 
+// A case's shapes on the exact side, prepared once (hull and interval world points) by
+// computeTruth for its truths and kept for the witness checks, which read the same hulls: index 0
+// the input, 1 the input rounded to float (when the float truth was computed).
+struct TruthShapes
+{
+    std::optional<exact::PreparedShape> a[2], b[2];
+};
+
 struct CaseOutcome
 {
     std::string rejected; // non-empty: not evaluated
+    // computeTruth's prepared shapes, released by checkWitnesses once it has read them.
+    std::shared_ptr<const TruthShapes> shapes;
     exact::Result exact;
     bool hasFloatTruth = false;
     exact::Result exactFloat; // exact truth of the float-rounded input
@@ -194,7 +206,7 @@ struct EvalContext
     exact::Options exactOptions;
     // The oracle, behind one adapter: exact::distance. Tests put a failing one here to check that a
     // broken invariant of the truth fails the run instead of rejecting the case.
-    exact::Result (*truth)(const exact::Shape&, const exact::Shape&,
+    exact::Result (*truth)(const exact::PreparedShape&, const exact::PreparedShape&,
                            const exact::Options&) = &exact::distance;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call
     bool needFloatTruth() const;
