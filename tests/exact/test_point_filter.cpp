@@ -427,8 +427,8 @@ TEST_CASE("distance of prepared shapes equals distance of the shapes, fallback c
                             const exact::Result want = exact::distance(a, b, o);
                             const exact::Result got = exact::distance(pa, pb, o);
                             INFO("kind " << kind << " scale 2^" << e << " rotation " << rotation
-                                         << " shape " << k << " route "
-                                         << exact::routeName(route) << " filter " << filter);
+                                         << " shape " << k << " route " << exact::routeName(route)
+                                         << " filter " << filter);
                             CHECK(got.overlap == want.overlap);
                             CHECK(got.squaredNum == want.squaredNum);
                             CHECK(got.squaredDen == want.squaredDen);

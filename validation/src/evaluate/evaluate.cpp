@@ -245,8 +245,8 @@ bool EvalContext::needFloatTruth() const
 // code 4), never a "rejected" case.
 namespace
 {
-// The case's shapes on the exact side for one input type, prepared (validated: std::invalid_argument
-// names "shape A" or "shape B", as exact::distance does).
+// The case's shapes on the exact side for one input type, prepared (validated:
+// std::invalid_argument names "shape A" or "shape B", as exact::distance does).
 void prepareShapes(const Case& c, bool isFloat, TruthShapes& s)
 {
     const int t = isFloat ? 1 : 0;
