@@ -1,10 +1,11 @@
 // libFuzzer target: the default route's filter (exact/src/filter.cpp) against the GMP route
 // (exact::Options::filter = false) on hostile inputs: extreme scales, collinear and duplicate
 // points, tiny edges, exact and inexact rotations, radii. Both results must agree bit for bit,
-// the squared rational included (docs/fuzzing.md, "fuzz_truth"); a difference aborts. Then the
-// point-to-shape distance (exact::pointToShapeDistance, one-shot and on a PreparedShape, decided
-// in floating point where its bound allows) against the GMP route on the truth's witness points
-// and the shapes' points.
+// the squared rational included (docs/fuzzing.md, "fuzz_truth"); a difference aborts. So must the
+// same truth of the shapes prepared (exact::PreparedShape, the runner's path), counts included.
+// Then the point-to-shape distance (exact::pointToShapeDistance, one-shot and on a PreparedShape,
+// decided in floating point where its bound allows) against the GMP route on the truth's witness
+// points and the shapes' points.
 //
 // Layout (`decode`): per shape, byte 0: count (1 + b % 8) and transform kind (b / 8 % 4:
 // identity, quarter turn, (cos, sin) of a number, any finite (c, s)); byte 1: point kind (b % 4:
@@ -154,6 +155,22 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                     same(f.witnessB.y, e.witnessB.y) && e.fallbacks.gmp;
     if (!ok)
         std::abort();
+    // The runner's truth: the same call on prepared shapes (the hulls made once), bit for bit,
+    // fallback counts included.
+    {
+        const exact::PreparedShape pa(a), pb(b);
+        const exact::Result p = exact::distance(pa, pb);
+        const bool same_ =
+            p.overlap == f.overlap && p.squaredNum == f.squaredNum &&
+            p.squaredDen == f.squaredDen && same(p.squared, f.squared) &&
+            same(p.distance, f.distance) && same(p.lower, f.lower) && same(p.upper, f.upper) &&
+            same(p.witnessA.x, f.witnessA.x) && same(p.witnessA.y, f.witnessA.y) &&
+            same(p.witnessB.x, f.witnessB.x) && same(p.witnessB.y, f.witnessB.y) &&
+            p.fallbacks.hull == f.fallbacks.hull && p.fallbacks.merge == f.fallbacks.merge &&
+            p.fallbacks.feature == f.fallbacks.feature && p.fallbacks.gmp == f.fallbacks.gmp;
+        if (!same_)
+            std::abort();
+    }
     // exact::pointToShapeDistance's own filter (filteredPointDistance) against its GMP route, on
     // the truth's witness points (on or within a rounding of each rounded surface: what the
     // runner's witness checks measure) and a point of each shape, against both shapes.
