@@ -470,15 +470,17 @@ class Solver
         { // the same intervals, hulls and hull counts as below, made by PreparedShape
             A.init(*preparedA_);
             B.init(*preparedB_);
-            ha = preparedA_->hull;
-            hb = preparedB_->hull;
+            ha = &preparedA_->hull;
+            hb = &preparedB_->hull;
         }
         else
         {
             A.init(a_);
             B.init(b_);
-            ha = A.hull();
-            hb = B.hull();
+            ownHa = A.hull();
+            ownHb = B.hull();
+            ha = &ownHa;
+            hb = &ownHb;
         }
         merge();
         return locate(static_cast<int>(za.size()), *this);
@@ -509,7 +511,9 @@ class Solver
         const mpz_class C = px * qy - py * qx;
         return toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true);
     }
-    std::vector<int> ha, hb;
+    std::vector<int> ownHa, ownHb;              // the hulls made here, without prepared shapes
+    const std::vector<int>* ha = nullptr;       // A's hull: ownHa or the prepared one
+    const std::vector<int>* hb = nullptr;
     std::vector<int> za, zb; // per Z vertex: index of the A point and of the B point
     std::vector<I> zx, zy;
     std::vector<E2> zex;
@@ -561,6 +565,8 @@ class Solver
     // "Witnesses").
     void merge()
     {
+        const std::vector<int>& ha = *this->ha;
+        const std::vector<int>& hb = *this->hb;
         const int na = static_cast<int>(ha.size()), nb = static_cast<int>(hb.size());
         // Highest-rightmost vertex of -B is the lowest-leftmost vertex of B.
         int sa = 0, sb = 0;
@@ -865,11 +871,16 @@ namespace exact
 {
 
 PreparedShape::PreparedShape(const Shape& shape, const char* name)
+    : PreparedShape(Shape(shape), name)
+{
+}
+
+PreparedShape::PreparedShape(Shape&& shape, const char* name)
     : data_(std::make_unique<detail::PreparedData>())
 {
     validateShape(shape, name);
     detail::PreparedData& d = *data_;
-    d.shape = shape;
+    d.shape = std::move(shape);
     detail::Side side;
     {
         detail::I::Protector protect; // as Solver::locateFeature()

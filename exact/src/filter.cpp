@@ -451,6 +451,19 @@ bool scaleToUnit(double* v, int n, int& k)
     int e;
     std::frexp(m, &e); // m = f 2^e, f in [1/2, 1)
     k = -e;
+    if (k >= -1000 && k <= 1000)
+    { // 2^k and 2^-k are normal doubles: a product by either is exact unless it leaves the normal
+      // range, and multiplying back tells (the same test as ldexp's below, without a call each)
+        const double up = std::ldexp(1.0, k), down = std::ldexp(1.0, -k);
+        for (int i = 0; i < n; ++i)
+        {
+            const double s = v[i] * up;
+            if (s * down != v[i])
+                return false;
+            v[i] = s;
+        }
+        return true;
+    }
     for (int i = 0; i < n; ++i)
     {
         const double s = std::ldexp(v[i], k);

@@ -136,6 +136,7 @@ class PreparedShape
 {
   public:
     explicit PreparedShape(const Shape& shape, const char* name = "shape");
+    explicit PreparedShape(Shape&& shape, const char* name = "shape"); // the shape moved in
     PreparedShape(PreparedShape&&) noexcept;
     PreparedShape& operator=(PreparedShape&&) noexcept;
     ~PreparedShape();
