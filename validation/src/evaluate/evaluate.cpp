@@ -141,6 +141,10 @@ const char* misclassName(Misclass m)
 PreparedCase prepare(const Case& c)
 {
     PreparedCase p;
+    p.ad.reserve(c.a.points.size());
+    p.af.reserve(c.a.points.size());
+    p.bd.reserve(c.b.points.size());
+    p.bf.reserve(c.b.points.size());
     for (const auto& q : c.a.points)
     {
         p.ad.push_back({q[0], q[1]});
@@ -658,8 +662,12 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         return;
     ExactShapes shapes(c, out.shapes.get());
     const std::size_t nv = ctx.variants.size();
-    std::vector<double> witnessA(nv, 0), witnessB(nv, 0);
-    std::vector<char> done(nv, 0), exactA(nv, 0), exactB(nv, 0);
+    struct Measured // a variant's two points' distances, and whether the GMP route measured each
+    {
+        double a = 0, b = 0;
+        char done = 0, exactA = 0, exactB = 0;
+    };
+    std::vector<Measured> m(nv);
     for (std::size_t k = 0; k < nv; ++k)
     {
         VariantOutcome& v = out.variants[k];
@@ -670,39 +678,40 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         // Variants often return the very same witness points (same scalar type): each distinct
         // point is measured once per case; a variant's counts include the points it shares.
         double wa = -1, wb = -1;
+        Measured& mk = m[k];
         for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
         {
-            if (done[j] == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
+            if (m[j].done == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
                 continue;
             const VariantOutcome& u = out.variants[j];
             if (wa < 0 && u.pointA == v.pointA)
             {
-                wa = witnessA[j];
-                exactA[k] = exactA[j];
+                wa = m[j].a;
+                mk.exactA = m[j].exactA;
             }
             if (wb < 0 && u.pointB == v.pointB)
             {
-                wb = witnessB[j];
-                exactB[k] = exactB[j];
+                wb = m[j].b;
+                mk.exactB = m[j].exactB;
             }
         }
         int n = 0;
         if (wa < 0)
         {
             wa = shapes.distance(isFloat, true, v.pointA, n);
-            exactA[k] = char(n);
+            mk.exactA = char(n);
         }
         n = 0;
         if (wb < 0)
         {
             wb = shapes.distance(isFloat, false, v.pointB, n);
-            exactB[k] = char(n);
+            mk.exactB = char(n);
         }
         v.witnessPoints += 2;
-        v.witnessExact += exactA[k] + exactB[k];
-        witnessA[k] = wa;
-        witnessB[k] = wb;
-        done[k] = 1;
+        v.witnessExact += mk.exactA + mk.exactB;
+        mk.a = wa;
+        mk.b = wb;
+        mk.done = 1;
         if (v.invalid == Invalid::WitnessGap && v.distance == 0)
             acceptTwoCommonPoints(v, shapes, isFloat);
         judgeWitnesses(v, wa, wb);

@@ -101,7 +101,10 @@ static_assert(sizeof(ShapeIn) == sizeof(exact::Shape) &&
 
 exact::Shape toExact(const ShapeIn& in, bool roundToFloat)
 {
-    const ShapeIn s = roundToFloat ? roundedToFloat(in) : in;
+    ShapeIn rounded;
+    if (roundToFloat)
+        rounded = roundedToFloat(in);
+    const ShapeIn& s = roundToFloat ? rounded : in; // no copy of the input as given
     exact::Shape e;
     e.points.reserve(s.points.size());
     for (const auto& p : s.points)

@@ -22,6 +22,7 @@ ShapeIn polygonOnCircle(Rng& r, int n, double radius)
         a = r.range(0, 2 * kPi);
     std::sort(angles.begin(), angles.end());
     ShapeIn s;
+    s.points.reserve(angles.size());
     for (double a : angles)
         s.points.push_back({radius * std::cos(a), radius * std::sin(a)});
     return s;
