@@ -511,8 +511,8 @@ class Solver
         const mpz_class C = px * qy - py * qx;
         return toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true);
     }
-    std::vector<int> ownHa, ownHb;              // the hulls made here, without prepared shapes
-    const std::vector<int>* ha = nullptr;       // A's hull: ownHa or the prepared one
+    std::vector<int> ownHa, ownHb;        // the hulls made here, without prepared shapes
+    const std::vector<int>* ha = nullptr; // A's hull: ownHa or the prepared one
     const std::vector<int>* hb = nullptr;
     std::vector<int> za, zb; // per Z vertex: index of the A point and of the B point
     std::vector<I> zx, zy;
