@@ -1,5 +1,4 @@
 #include "evaluate/evaluate.hpp"
-#include "evaluate/witness_filter.hpp"
 
 #include "inputs/geometry.hpp"
 
@@ -565,21 +564,18 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
 namespace
 {
 // A case's shapes on the exact side, as given and rounded to float: computeTruth's prepared shapes
-// (TruthShapes), or prepared here when a caller gave none; with the witness filter's view of each
-// (witness_filter.hpp), made when first needed.
+// (TruthShapes), or prepared here when a caller gave none.
 class ExactShapes
 {
   public:
     ExactShapes(const Case& c, const TruthShapes* truth) : c_(c), truth_(truth) {}
-    // max(0, dist(p, shape) - radius), correctly rounded: 0 where the filter proves it, else
-    // exact::pointToShapeDistance's value (decided in floating point or by its GMP route);
-    // `exactCount` counts the points the GMP route measured.
+    // max(0, dist(p, shape) - radius), correctly rounded: exact::pointToShapeDistance's value
+    // (decided in floating point or by its GMP route); `exactCount` counts the points the GMP
+    // route measured.
     double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
     {
         Pair& s = get(isFloat);
         const exact::Point q{p[0], p[1]};
-        if (certainlyOnShape(ofA ? s.fa : s.fb, q))
-            return 0;
         bool gmp = false;
         const double d = exact::pointToShapeDistance(ofA ? *s.pa : *s.pb, q, &gmp);
         exactCount += gmp ? 1 : 0;
@@ -590,7 +586,6 @@ class ExactShapes
     struct Pair
     {
         const exact::PreparedShape *pa = nullptr, *pb = nullptr;
-        FilterShape fa, fb;
     };
     Pair& get(bool isFloat)
     {
@@ -610,8 +605,6 @@ class ExactShapes
                 s.pa = &*own_.a[t];
                 s.pb = &*own_.b[t];
             }
-            s.fa = filterShape(s.pa->shape());
-            s.fb = filterShape(s.pb->shape());
             have_[t] = true;
         }
         return shapes_[t];

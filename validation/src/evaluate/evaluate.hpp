@@ -159,8 +159,8 @@ struct VariantOutcome
     bool bitMismatch = false;
     bool failed = false;
     // Witness points whose distance to their shape was measured (phase 3), and of those the ones
-    // the GMP route measured (neither witness_filter.hpp nor exact::pointToShapeDistance's
-    // floating-point filter decided them). A point shared with another variant counts for each.
+    // the GMP route measured (exact::pointToShapeDistance's floating-point filter did not decide
+    // them). A point shared with another variant counts for each.
     int witnessPoints = 0, witnessExact = 0;
     // Plugin variants: how the implementation answered (Ok, or Refused with skipped set, or
     // Error / Crashed / Hung: failed, no errors measured) and how it died.

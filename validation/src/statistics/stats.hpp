@@ -99,8 +99,8 @@ struct Stats
     std::uint64_t pathDouble = 0, pathExtended = 0, pathDoubleDouble = 0, pathExact = 0,
                   bitMismatch = 0;
     // Witness points measured (two per checked answer, four when an overlap's two common points
-    // are checked), and of those the ones the GMP route measured: neither the witness filter
-    // (evaluate/witness_filter.hpp) nor exact::pointToShapeDistance's own filter decided them.
+    // are checked), and of those the ones the GMP route measured: exact::pointToShapeDistance's
+    // floating-point filter did not decide them.
     std::uint64_t witnessPoints = 0, witnessExact = 0;
     // The truth this variant is judged against (exact::Fallbacks, docs/exact.md "The filter"):
     // cases whose rounded outputs came from the GMP route, and cases with at least one exact
