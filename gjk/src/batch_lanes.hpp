@@ -17,7 +17,8 @@
 // A lane leaves the lanes (LaneState::stop = kHandBack, the scalar query then runs it from its
 // start) on the scalar loop's rare paths, which are not mirrored here:
 // - an edge shorter than minEdgeComponent (edgeOfSafeSize would scale it), a zero edge included;
-// - solve3 with inconsistent signs (its closest-edge fallback);
+// - solve3 with inconsistent signs (its closest-edge fallback), or an interior whose Cramer weights
+//   put the origin outside (keepTriangle's closest-edge fallback);
 // - a support scan whose running sum is not finite (the scalar query's overflow flag: the padding
 //   points of a lane, below, could raise it where the scalar scan does not).
 // A lane whose end is not finishQuery's common path sets LaneState::scalarEnd, and the scalar side
@@ -347,6 +348,12 @@ bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
                              (nr >= L::splat(-std::numeric_limits<T>::max()));
             V bq = accurateCross(e13x, e13y, wx[0], wy[0]) / nr,
               cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
+            // keepTriangle's "origin outside after all": the scalar query keeps the closest edge
+            // and goes on, a path not mirrored here.
+            const V u4 = L::splat(T(4) * (std::numeric_limits<T>::epsilon() / 2));
+            const V u16 = L::splat(T(16) * (std::numeric_limits<T>::epsilon() / 2));
+            handBack |=
+                is3 & r123 & cramer & ((bq < -u4) | (cq < -u4) | (((one - bq) - cq) < -u16));
             bq = sel(bq > zero, bq, zero);
             cq = sel(cq > zero, cq, zero);
             V arq = (one - bq) - cq;

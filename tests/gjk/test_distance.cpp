@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -1454,4 +1455,70 @@ TEST_CASE("the duality-gap rule stops early on near-parallel edges (why it is no
     CHECK(std::abs(early.distance - exact) > 1e-10);
     CHECK(reference.stop == StopReason::RepeatedSupport);
     CHECK(std::abs(reference.distance - exact) < 1e-15);
+}
+
+TEMPLATE_TEST_CASE("containment in a nearly flat triangle: the witness point stays on both shapes",
+                   "[gjk][witness]", float, double)
+{
+    using T = TestType;
+    // random/719667 (validation/cases/flat-containment.json, from random:1e7): in float the final
+    // triangle is nearly flat and Cramer's weight b = -8.2e-5 put the origin outside it; clamping b
+    // to 0 left the witness point 1.7e-4 outside B (the runner's witness bound: 1.7e-5). Expected:
+    // the point within 64 u W of B (W the largest |a - b| of the world points, about 4.4; the
+    // triangle's 18 u W of docs/error-bound.md, the region signs' 4 u W and the edge solve's 10 u W
+    // it can take instead, with margin), its distance to B's world polygon computed by hand in long
+    // double (B's points are in counterclockwise order: polygonOnCircle sorts their angles).
+    Scene<T> s;
+    s.a = {{T(-0.91407016601983937), T(0.8248778430157141)},
+           {T(-1.1997976862763406), T(0.27646561506222384)},
+           {T(-1.2268274869914273), T(0.10412512409641035)},
+           {T(0.87303229369515067), T(-0.86819487355730107)}};
+    s.xfA = {{T(-0.78679566251373423), T(-2.878320289535286)},
+             {T(0.99975447004871598), T(-0.022158511177675339)}};
+    s.b = {{T(0.33459661958265141), T(1.9286847479828964)},
+           {T(-0.21594350387893962), T(1.945545722431234)},
+           {T(-0.53129540276324683), T(1.884012990916099)},
+           {T(-0.75855485235930997), T(1.8045426819280643)},
+           {T(-1.5405722704617064), T(1.2076493010897031)},
+           {T(-1.9438332551017763), T(-0.23085066882818139)},
+           {T(1.7038493751148636), T(-0.96367892052211801)},
+           {T(1.9042586536735007), T(-0.4534079122022161)}};
+    s.xfB = {{T(0.47729867323811526), T(-1.5052805701094487)},
+             {T(-0.1373840206619048), T(0.99051785994335773)}};
+    const auto out = query(s);
+    REQUIRE(out.stop == StopReason::Containment);
+    CHECK(out.distance == T(0));
+    using L = long double;
+    std::vector<std::array<L, 2>> wb;
+    for (const auto& p : s.b)
+    {
+        const L c = s.xfB.q.c, sn = s.xfB.q.s;
+        wb.push_back(
+            {c * L(p.x) - sn * L(p.y) + L(s.xfB.p.x), sn * L(p.x) + c * L(p.y) + L(s.xfB.p.y)});
+    }
+    L W = 0;
+    for (const auto& p : s.a)
+    {
+        const L c = s.xfA.q.c, sn = s.xfA.q.s;
+        const L ax = c * L(p.x) - sn * L(p.y) + L(s.xfA.p.x);
+        const L ay = sn * L(p.x) + c * L(p.y) + L(s.xfA.p.y);
+        for (const auto& q : wb)
+            W = std::max(W, std::hypot(ax - q[0], ay - q[1]));
+    }
+    const L px = out.pointB.x, py = out.pointB.y;
+    bool inside = true;
+    L off = std::numeric_limits<L>::max();
+    for (std::size_t i = 0; i < wb.size(); ++i)
+    {
+        const auto& p0 = wb[i];
+        const auto& p1 = wb[(i + 1) % wb.size()];
+        const L ex = p1[0] - p0[0], ey = p1[1] - p0[1], qx = px - p0[0], qy = py - p0[1];
+        inside = inside && ex * qy - ey * qx >= 0;
+        const L t = std::clamp((ex * qx + ey * qy) / (ex * ex + ey * ey), L(0), L(1));
+        off = std::min(off, std::hypot(qx - t * ex, qy - t * ey));
+    }
+    const L bound = 64 * L(std::numeric_limits<T>::epsilon() / 2) * W;
+    INFO("witness point " << out.pointB.x << ", " << out.pointB.y << ": " << (inside ? 0 : off)
+                          << " from B, bound " << bound);
+    CHECK((inside || off <= bound));
 }

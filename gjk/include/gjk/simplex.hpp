@@ -144,6 +144,31 @@ template <class T> GJK_INLINE void keepEdge(Simplex<T>& s, int i, int j, T ui, T
 // 1.2e-14), 3.1 outside in hard/mixed-scale/60, and Cramer's rule with plain cross products still
 // left 2.7e-7 on a flat triangle. If n vanishes or is not finite, the areas' weights. Each weight
 // clamped at 0, then divided by their sum.
+// Origin outside after all: solve3 chose this region from plain products, which a nearly flat
+// triangle can leave wrong. b and c are within 7u of their own size, so a negative one says, with
+// the right sign, that the origin is outside the edge opposite its vertex; a1 = 1 - b - c is within
+// 9u (absolute), so below -16u it says the same of edge w2w3. Clamping such a weight to 0 and
+// renormalising moved the point sum a_k w_k along the triangle's flat direction, up to 67 times the
+// witness bound from the origin in float (validation/cases/flat-containment.json: 20 of 1e7 random
+// cases, b or a1 from -2e-5 to -3e-4; docs/error-bound.md "Witness points"). The region's decision
+// stands (containment, distance 0: the origin is within rounding of the triangle), but the weights
+// become the closest edge's (keepClosestEdge's solve2 on each edge), the third vertex's 0: the
+// point is then the origin's projection on that edge, as far from the origin as the origin is from
+// the triangle.
+template <class T> GJK_INLINE void keepClosestEdge(Simplex<T>& s);
+template <class T> GJK_INLINE void closestEdgeWeights(Simplex<T>& s)
+{
+    Simplex<T> e = s;
+    keepClosestEdge(e);
+    for (int k = 0; k < 3; ++k)
+    {
+        s.v[k].a = T(0);
+        for (int j = 0; j < e.count; ++j)
+            if (e.v[j].indexA == s.v[k].indexA && e.v[j].indexB == s.v[k].indexB)
+                s.v[k].a = e.v[j].a;
+    }
+    s.count = 3;
+}
 template <class T> GJK_INLINE void keepTriangle(Simplex<T>& s, T u123, T v123, T w123)
 {
     const Vec2<T> w1 = s.v[0].w;
@@ -154,6 +179,9 @@ template <class T> GJK_INLINE void keepTriangle(Simplex<T>& s, T u123, T v123, T
     if ((n > T(0) || n < T(0)) && std::abs(n) <= std::numeric_limits<T>::max())
     {
         T b = accurateCross(d13, w1) / n, c = accurateCross(w1, d12) / n;
+        constexpr T u = std::numeric_limits<T>::epsilon() / 2;
+        if (b < -4 * u || c < -4 * u || (T(1) - b) - c < -16 * u)
+            return closestEdgeWeights(s); // origin outside after all
         b = b > T(0) ? b : T(0);
         c = c > T(0) ? c : T(0);
         T a1 = (T(1) - b) - c;
