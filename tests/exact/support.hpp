@@ -8,6 +8,7 @@
 
 #include <cfloat>
 #include <cmath>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -190,6 +191,31 @@ inline Shape shape(std::vector<Point> pts, double radius = 0)
     s.points = std::move(pts);
     s.radius = radius;
     return s;
+}
+
+// The fields of the truth (overlap, the squared rational and double, the distance, its enclosure,
+// the witnesses) in which r and s differ, bit for bit; empty when they are the same result.
+inline std::vector<std::string> differentFields(const exact::Result& r, const exact::Result& s)
+{
+    auto same = [](double x, double y) { return std::memcmp(&x, &y, sizeof x) == 0; };
+    std::vector<std::string> out;
+    auto field = [&out](bool equal, const char* name)
+    {
+        if (!equal)
+            out.push_back(name);
+    };
+    field(r.overlap == s.overlap, "overlap");
+    field(r.squaredNum == s.squaredNum, "squaredNum");
+    field(r.squaredDen == s.squaredDen, "squaredDen");
+    field(same(r.squared, s.squared), "squared");
+    field(same(r.distance, s.distance), "distance");
+    field(same(r.lower, s.lower), "lower");
+    field(same(r.upper, s.upper), "upper");
+    field(same(r.witnessA.x, s.witnessA.x), "witnessA.x");
+    field(same(r.witnessA.y, s.witnessA.y), "witnessA.y");
+    field(same(r.witnessB.x, s.witnessB.x), "witnessB.x");
+    field(same(r.witnessB.y, s.witnessB.y), "witnessB.y");
+    return out;
 }
 
 } // namespace exact_test
