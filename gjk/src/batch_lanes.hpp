@@ -350,8 +350,8 @@ bool runLanes(LaneState<T, W>& s, T minEdge, T minCoordinate, T maxCoordinate)
               cq = accurateCross(wx[0], wy[0], e12x, e12y) / nr;
             // keepTriangle's "origin outside after all": the scalar query keeps the closest edge
             // and goes on, a path not mirrored here.
-            const V u4 = L::splat(T(4) * (std::numeric_limits<T>::epsilon() / 2));
-            const V u16 = L::splat(T(16) * (std::numeric_limits<T>::epsilon() / 2));
+            const V u4 = L::splat(gjk::kOutsideWeightBC<T>);
+            const V u16 = L::splat(gjk::kOutsideWeightA1<T>);
             handBack |=
                 is3 & r123 & cramer & ((bq < -u4) | (cq < -u4) | (((one - bq) - cq) < -u16));
             bq = sel(bq > zero, bq, zero);

@@ -1,34 +1,21 @@
 # Resume (docs/validation.md, "Resume"), in one test: ARGS ('|'-separated) run with the test hook
-# GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=3 exits 4 leaving CHECKPOINT, then ARGS with --resume exits
-# 0, writes REPORT and removes the checkpoint. One script, not two tests sharing a fixture: the two
-# runs see the same directory with nothing in between (the fixture pair failed once in a parallel
-# ctest run with "no checkpoint to resume from", cause not found).
-string(REPLACE "|" ";" args "${ARGS}")
+# GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=3 exits 4 leaving CHECKPOINT_DIR/checkpoint.json, then ARGS
+# with --resume exits 0 with a last line "report:", writes REPORT and removes the checkpoint. Each
+# run is checked by expect_exit.cmake (EXPECT_SCRIPT). One script, not two tests sharing a fixture:
+# the two runs see the same directory with nothing in between (the fixture pair failed in parallel
+# ctest runs with "no checkpoint to resume from", cause not found).
 file(REMOVE_RECURSE "${CHECKPOINT_DIR}")
-file(REMOVE "${REPORT}")
+function(expect_run expect args)
+  execute_process(COMMAND ${CMAKE_COMMAND} -DEXE=${EXE} -DEXPECT=${expect} "-DARGS=${args}" ${ARGN}
+                          -P ${EXPECT_SCRIPT} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${out}${err}")
+  endif()
+endfunction()
 set(ENV{GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS} 3)
-execute_process(COMMAND "${EXE}" ${args} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT rc STREQUAL "4")
-  message(FATAL_ERROR "stopped run: exit code ${rc}, expected 4\nstdout:\n${out}\nstderr:\n${err}")
-endif()
-if(NOT EXISTS "${CHECKPOINT_DIR}/checkpoint.json")
-  message(FATAL_ERROR "stopped run: ${CHECKPOINT_DIR}/checkpoint.json was not written")
-endif()
+expect_run(4 "${ARGS}" -DEXPECT_FILE=${CHECKPOINT_DIR}/checkpoint.json)
 unset(ENV{GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS})
-execute_process(COMMAND "${EXE}" ${args} --resume RESULT_VARIABLE rc OUTPUT_VARIABLE out
-                ERROR_VARIABLE err)
-if(NOT rc STREQUAL "0")
-  message(FATAL_ERROR "resumed run: exit code ${rc}, expected 0\nstdout:\n${out}\nstderr:\n${err}")
-endif()
-string(STRIP "${out}" stripped)
-string(REGEX REPLACE ".*\n" "" last "${stripped}")
-string(FIND "${last}" "report:" at)
-if(NOT at EQUAL 0)
-  message(FATAL_ERROR "resumed run: last stdout line '${last}' does not start with 'report:'")
-endif()
-if(NOT EXISTS "${REPORT}")
-  message(FATAL_ERROR "resumed run: ${REPORT} was not written")
-endif()
+expect_run(0 "${ARGS}|--resume" -DEXPECT_LAST_LINE=report: -DEXPECT_FILE=${REPORT})
 if(EXISTS "${CHECKPOINT_DIR}/checkpoint.json")
   message(FATAL_ERROR "resumed run: the finished campaign left its checkpoint")
 endif()

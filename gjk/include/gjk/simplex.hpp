@@ -155,6 +155,12 @@ template <class T> GJK_INLINE void keepEdge(Simplex<T>& s, int i, int j, T ui, T
 // become the closest edge's (keepClosestEdge's solve2 on each edge), the third vertex's 0: the
 // point is then the origin's projection on that edge, as far from the origin as the origin is from
 // the triangle.
+// The thresholds (below them the origin is certainly outside), for the scalar query and the batch
+// lanes (gjk/src/batch_lanes.hpp) alike.
+template <class T>
+inline constexpr T kOutsideWeightBC = 4 * (std::numeric_limits<T>::epsilon() / 2);
+template <class T>
+inline constexpr T kOutsideWeightA1 = 16 * (std::numeric_limits<T>::epsilon() / 2);
 template <class T> GJK_INLINE void keepClosestEdge(Simplex<T>& s);
 template <class T> GJK_INLINE void closestEdgeWeights(Simplex<T>& s)
 {
@@ -179,8 +185,8 @@ template <class T> GJK_INLINE void keepTriangle(Simplex<T>& s, T u123, T v123, T
     if ((n > T(0) || n < T(0)) && std::abs(n) <= std::numeric_limits<T>::max())
     {
         T b = accurateCross(d13, w1) / n, c = accurateCross(w1, d12) / n;
-        constexpr T u = std::numeric_limits<T>::epsilon() / 2;
-        if (b < -4 * u || c < -4 * u || (T(1) - b) - c < -16 * u)
+        if (b < -kOutsideWeightBC<T> || c < -kOutsideWeightBC<T> ||
+            (T(1) - b) - c < -kOutsideWeightA1<T>)
             return closestEdgeWeights(s); // origin outside after all
         b = b > T(0) ? b : T(0);
         c = c > T(0) ? c : T(0);
