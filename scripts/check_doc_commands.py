@@ -8,7 +8,7 @@ What counts as a command:
   - every inline `code` span that starts with `gjk-validate <subcommand>` followed by options.
 A command with a placeholder (<...>, [...], A|B, or a name such as FILE, CASE or N) is a
 synopsis: its options must exist in that subcommand's --help, nothing is run. A command that a doc
-repeats runs once.
+repeats runs once; so does a `gjk-validate run` that differs from one above only in --threads.
 
 Where commands run:
   - In one scratch directory that links every top-level entry of the repository, with
@@ -27,8 +27,9 @@ Where commands run:
 
 Some commands are not run as written; RULES below lists each with its reason:
   - "ci": CI itself runs it (the README's test command, scripts/fuzz.sh, the flag matrix);
-  - "shrink": a long run (minutes to hours) runs with a smaller budget; the rest of the command
-    is as written, so every option and path is still checked;
+  - "shrink": a long run (minutes to hours) runs with a smaller budget (every matching shrink
+    rule applies); the rest of the command is as written, so every option and path is still
+    checked;
   - "long": not run (a campaign of its own, e.g. the full mutation run); its options are checked.
 --full runs the "shrink" commands as written (hours), for a person on a quiet machine.
 
@@ -69,6 +70,10 @@ RULES = [
      (r"GJK2D_TRUTH_RANDOM_COUNT=\d+", "GJK2D_TRUTH_RANDOM_COUNT=20000"), "1e6 cases both ways"),
     (r"--seconds \d+", "shrink", ("--seconds \\d+", "--seconds 2"), "search runs 600 s"),
     (r"random:\d{6,}", "shrink", (r"random:\d{6,}", "random:3000"), "1e5 to 1e7 cases"),
+    (r"random:\d{5}\b.*--per-case", "shrink", (r"random:\d{5}\b", "random:3000"),
+     "every variant's answer of 1e4 to 1e5 cases written to cases.jsonl"),
+    (r"gjk-validate run --peers\b(?!.*--no-timing)(?!.*--passes)", "shrink", (r"$", " --passes 2"),
+     "the peers' timing phase: 15 passes of eight peers, 80 of the run's 90 s"),
     (r"python/examples/numpy_gjk\.py --out \S+$", "shrink",
      (r"$", " --random 300 --hard 10 --engine 30 --passes 1"),
      "docs/python.md's worked example: two campaigns of a GJK in NumPy, 40 s"),
@@ -152,14 +157,16 @@ def disposition(command, full):
             if kind in ("ci", "long") and re.search(pattern, command):
                 return kind, command, reason
         return "synopsis", command, "has a placeholder: options checked"
+    shrunk, reasons = command, []  # every shrink rule that matches applies, in RULES' order
     for pattern, kind, replacement, reason in RULES:
-        if re.search(pattern, command):
-            if kind == "shrink":
-                if full:
-                    return "run", command, reason
-                return "shrink", re.sub(replacement[0], replacement[1], command), reason
-            return kind, command, reason
-    return "run", command, ""
+        if re.search(pattern, shrunk):
+            if kind != "shrink":
+                return kind, command, reason
+            shrunk = re.sub(replacement[0], replacement[1], shrunk)
+            reasons.append(reason)
+    if not reasons:
+        return "run", command, ""
+    return ("run", command, reasons[0]) if full else ("shrink", shrunk, "; ".join(reasons))
 
 
 def help_options(exe, cache={}):
@@ -268,6 +275,8 @@ def main():
                 kind, reason = "ci", "changes to the repository root: checked in build/release only"
             key = re.sub(r"^build/release/validation/gjk-validate\b", "gjk-validate", shown)
             key = re.sub(r"^scripts/run\.sh\b", "gjk-validate run", key)  # set-up, build, then this
+            if key.startswith("gjk-validate run "):  # its report is the same on any thread count
+                key = re.sub(r" --threads \d+\b", "", key)
             if kind in ("run", "shrink") and key in done:
                 kind, reason = "repeat", "ran above"
             counts[kind] += 1

@@ -19,7 +19,7 @@ cmake --preset sanitize -DGJK2D_BUILD_VALIDATION=ON >/dev/null
 cmake --build --preset sanitize -j "$jobs"
 # Labels flags and cross build with their own compilers and flags, release-only repeats a release
 # comparison (tests/plugins/CMakeLists.txt): each runs once, above.
-ctest --preset sanitize -j "$jobs" -LE "flags|release-only|cross"
+ctest --preset sanitize -j "$jobs" -LE "flags|release-only|cross|browser"
 
 # The libFuzzer targets under ASan + UBSan, 30 s each (docs/fuzzing.md).
 scripts/fuzz.sh 30
