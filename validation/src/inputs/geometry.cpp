@@ -189,6 +189,8 @@ std::vector<P2> minkowskiDifference(const std::vector<P2>& a, const std::vector<
 
 namespace
 {
+using V2 = gjk::Vec2<double>;
+
 // max over pairs of std::hypot(p - q), with std::hypot (a libm call, the judging phase's largest
 // cost) only on the pairs that can hold the maximum. In double, with u = 2^-53, for the rounded
 // differences dx, dy that std::hypot is given: fl(dx^2 + dy^2) is within a relative 3u of
@@ -197,44 +199,57 @@ namespace
 // whose rounded square is below (1 - 2^-40) times the largest rounded square M is shorter, exactly,
 // by a relative 2^-41 at least, so its hypot is below the longest pair's: the pairs left out cannot
 // change the maximum, which stays the same double. Elsewhere every pair's hypot is taken.
-double largestDistance(const std::vector<gjk::Vec2<double>>& pa,
-                       const std::vector<gjk::Vec2<double>>& pb)
+// `squares` keeps the first pass's rounded squares for the second (scratch, na * nb of them).
+double largestDistance(const V2* pa, std::size_t na, const V2* pb, std::size_t nb,
+                       std::vector<double>& squares)
 {
+    squares.resize(na * nb);
     double m = 0;
-    for (const auto& p : pa)
-        for (const auto& q : pb)
+    for (std::size_t i = 0; i < na; ++i)
+        for (std::size_t j = 0; j < nb; ++j)
         {
-            const double dx = p.x - q.x, dy = p.y - q.y;
-            m = std::max(m, dx * dx + dy * dy);
+            const double dx = pa[i].x - pb[j].x, dy = pa[i].y - pb[j].y;
+            const double q = dx * dx + dy * dy;
+            squares[i * nb + j] = q;
+            m = std::max(m, q);
         }
     const bool filtered = m >= 0x1p-900 && m <= 0x1p900;
     const double keep = m * (1 - 0x1p-40);
     double w = 0;
-    for (const auto& p : pa)
-        for (const auto& q : pb)
-        {
-            const double dx = p.x - q.x, dy = p.y - q.y;
-            if (!filtered || !(dx * dx + dy * dy < keep))
-                w = std::max(w, std::hypot(dx, dy));
-        }
+    for (std::size_t i = 0; i < na; ++i)
+        for (std::size_t j = 0; j < nb; ++j)
+            if (!filtered || !(squares[i * nb + j] < keep))
+                w = std::max(w, std::hypot(pa[i].x - pb[j].x, pa[i].y - pb[j].y));
     return w;
 }
+
+// frameScales' working space, kept per thread: it runs once per case and scalar type on every
+// worker, and its vectors were three allocations a call.
+struct ScaleScratch
+{
+    std::vector<V2> a, b, bOwn;
+    std::vector<double> squares;
+};
 } // namespace
 
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
 {
     // Points of A and B~ in the compute frame: the world, or A's local frame through the true
     // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
-    std::vector<gjk::Vec2<double>> pa, pb;
-    pa.reserve(a.points.size());
-    pb.reserve(b.points.size());
+    thread_local ScaleScratch scratch;
+    std::vector<V2>&pa = scratch.a, &pb = scratch.b, &bOwn = scratch.bOwn;
+    pa.clear();
+    pb.clear();
+    bOwn.clear();
     const gjk::Transform<double> xa = xf(a), xb = xf(b);
     const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
     for (const auto& p : a.points)
-        pa.push_back(worldFrame ? gjk::transformPoint(xa, gjk::Vec2<double>{p[0], p[1]})
-                                : gjk::Vec2<double>{p[0], p[1]});
+        pa.push_back(worldFrame ? gjk::transformPoint(xa, V2{p[0], p[1]}) : V2{p[0], p[1]});
     for (const auto& p : b.points)
-        pb.push_back(gjk::transformPoint(rel, gjk::Vec2<double>{p[0], p[1]}));
+    {
+        pb.push_back(gjk::transformPoint(rel, V2{p[0], p[1]}));
+        bOwn.push_back(V2{p[0], p[1]});
+    }
     FrameScales s;
     double ia = 0, ib = 0;
     for (const auto& p : pa)
@@ -242,13 +257,12 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     for (const auto& p : pb)
         ib = std::max({ib, std::abs(p.x), std::abs(p.y)});
     // max |p| = max hypot(p - 0): x - 0 is x.
-    const std::vector<gjk::Vec2<double>> origin{{0, 0}};
-    s.A = largestDistance(pa, origin);
-    s.Bmapped = largestDistance(pb, origin);
-    for (const auto& p : b.points)
-        s.B = std::max(s.B, std::hypot(p[0], p[1]));
+    const V2 origin{0, 0};
+    s.A = largestDistance(pa.data(), pa.size(), &origin, 1, scratch.squares);
+    s.Bmapped = largestDistance(pb.data(), pb.size(), &origin, 1, scratch.squares);
+    s.B = largestDistance(bOwn.data(), bOwn.size(), &origin, 1, scratch.squares);
     if (double(pa.size()) * double(pb.size()) <= 1e6)
-        s.W = largestDistance(pa, pb);
+        s.W = largestDistance(pa.data(), pa.size(), pb.data(), pb.size(), scratch.squares);
     else
         s.W = s.A + s.Bmapped;
     // World lengths: A's frame measures in units of |qA| (1 for a unit rotation), and B's own
@@ -263,7 +277,7 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     for (const ShapeIn* sh : {&a, &b})
         for (const auto& p : sh->points)
         {
-            const auto w = gjk::transformPoint(xf(*sh), gjk::Vec2<double>{p[0], p[1]});
+            const auto w = gjk::transformPoint(xf(*sh), V2{p[0], p[1]});
             s.M = std::max({s.M, std::abs(w.x), std::abs(w.y)});
         }
     s.M += std::max(a.radius, b.radius);
