@@ -27,6 +27,20 @@ using Clock = std::chrono::steady_clock;
 
 volatile double g_timingSink = 0; // keeps the timed loops from being optimised away
 
+// What a timed loop keeps of an answer: every number of it, summed as a tree (short dependency
+// chains), so that the query is timed as a caller gets it. With only the distance kept, the
+// compiler, which inlines gjk::distance here, would be free to drop the witness points and the
+// normal; GCC 12 did not (the same ns on `random`: docs/speed.md, "Timed loops keep the whole
+// answer"), and now no compiler may. A plugin's call is never inlined: its answer is whole.
+template <class T> double kept(const gjk::DistanceOutput<T>& o)
+{
+    const double points =
+        (double(o.pointA.x) + double(o.pointA.y)) + (double(o.pointB.x) + double(o.pointB.y));
+    const double rest =
+        (double(o.normal.x) + double(o.normal.y)) + (double(o.distance) + double(o.iterations));
+    return points + rest;
+}
+
 // The timed inputs in one scalar type, stored contiguously (points and inputs in case order) so
 // that the timing measures GJK rather than scattered memory; with the warm-start caches.
 template <class T> struct TimingSet
@@ -78,7 +92,7 @@ double timePassCorrect(const TimingSet<double>& set, const gjk::Options& o, int 
             gjk::DistanceOutput<double> out = gjk::distance(set.inputs[i], cache, o);
             if (out.path == gjk::CorrectPath::NeedsExact) [[unlikely]]
                 completeExactly(set.inputs[i], o, out);
-            acc += out.distance;
+            acc += kept(out);
         }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
@@ -96,7 +110,7 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
             for (std::size_t i = 0; i < n; ++i)
             {
                 gjk::SimplexCache cache; // cold, as in the accuracy run
-                acc += double(gjk::distance(set.inputs[i], cache, o).distance);
+                acc += kept(gjk::distance(set.inputs[i], cache, o));
             }
     }
     else
@@ -105,7 +119,7 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
             for (std::size_t i = 0; i < n; ++i)
             {
                 gjk::SimplexCache cache = set.caches[i]; // warm: from the case's previous query
-                acc += double(gjk::distance(set.inputs[i], cache, o).distance);
+                acc += kept(gjk::distance(set.inputs[i], cache, o));
             }
     }
     const auto t1 = Clock::now();
@@ -130,7 +144,7 @@ double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps,
             std::copy(set.caches.begin(), set.caches.end(), caches.begin());
         gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(set.inputs), caches, outputs, o);
         for (const auto& out : outputs)
-            acc += double(out.distance);
+            acc += kept(out);
     }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
