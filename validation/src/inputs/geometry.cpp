@@ -223,8 +223,9 @@ double largestDistance(const V2* pa, std::size_t na, const V2* pb, std::size_t n
     return w;
 }
 
-// frameScales' working space, kept per thread: it runs once per case and scalar type on every
-// worker, and its vectors were three allocations a call.
+// frameScales' working space, kept per thread (a campaign's worker threads live for one chunk), so
+// that a call allocates nothing once its thread has seen a case as large. `squares` holds at most
+// the 1e6 pairs frameScales scans (8 MB), until the thread ends.
 struct ScaleScratch
 {
     std::vector<V2> a, b, bOwn;
