@@ -13,6 +13,7 @@
 #include "internal.hpp"
 
 #include <CGAL/Interval_nt.h>
+#include <boost/container/small_vector.hpp>
 
 #include <algorithm>
 #include <climits>
@@ -28,6 +29,13 @@ namespace
 {
 
 using I = CGAL::Interval_nt<false>; // needs the FPU in round-upward mode: see the Protector below
+
+// Per-point and per-vertex arrays stored inline up to a shape of kInline points (Box2D's polygons
+// have at most 8; the random family 3 to 8), on the heap beyond: a truth then allocates nothing
+// here on the common path (docs/speed.md, "Allocations of the truth", issue 34).
+constexpr std::size_t kInline = 16;
+template <class T> using PointArray = boost::container::small_vector<T, kInline>;
+template <class T> using VertexArray = boost::container::small_vector<T, 2 * kInline>; // Z, chains
 
 // ---------------------------------------------------------------- exact dyadic integers
 
@@ -216,7 +224,7 @@ struct Side
 {
     const Shape* shape = nullptr;
     DecShape dec;
-    std::vector<I> ownX, ownY; // init()'s intervals; from a prepared shape, x and y point there
+    PointArray<I> ownX, ownY; // init()'s intervals; from a prepared shape, x and y point there
     const I* x = nullptr;
     const I* y = nullptr;
     std::vector<E2> ex;
@@ -302,19 +310,20 @@ struct Side
 
     // Convex hull, counterclockwise, no repeated or collinear vertices, starting at the
     // lexicographically smallest point; a single point or a segment's two ends when degenerate.
-    std::vector<int> hull()
+    PointArray<int> hull()
     {
         const int n = static_cast<int>(shape->points.size());
-        std::vector<int> idx(n);
+        PointArray<int> idx(n);
         std::iota(idx.begin(), idx.end(), 0);
         std::sort(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) < 0; });
         idx.erase(
             std::unique(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) == 0; }),
             idx.end());
         const int m = static_cast<int>(idx.size());
-        if (m <= 2)
-            return idx;
-        std::vector<int> h(2 * m);
+        if (m <=
+            2) // copied, not moved: GCC 12 misreads the inline buffer's move (-Wstringop-overread)
+            return PointArray<int>(idx.begin(), idx.end());
+        VertexArray<int> h(2 * m);
         int k = 0;
         for (int i = 0; i < m; ++i)
         {
@@ -328,8 +337,7 @@ struct Side
                 --k;
             h[k++] = idx[i];
         }
-        h.resize(k - 1);
-        return h;
+        return PointArray<int>(h.begin(), h.begin() + (k - 1));
     }
 };
 
@@ -351,10 +359,10 @@ struct PreparedData
 {
     Shape shape;
     DecShape dec;
-    std::vector<int> hull;
+    PointArray<int> hull;
     int hullExact = 0;
-    std::vector<int> z;
-    std::vector<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
+    PointArray<int> z;
+    PointArray<I> x, y; // by point index: Z vertex k is p - (x, y)[z[k]]
 };
 
 namespace
@@ -511,11 +519,11 @@ class Solver
         const mpz_class C = px * qy - py * qx;
         return toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true);
     }
-    std::vector<int> ownHa, ownHb;        // the hulls made here, without prepared shapes
-    const std::vector<int>* ha = nullptr; // A's hull: ownHa or the prepared one
-    const std::vector<int>* hb = nullptr;
-    std::vector<int> za, zb; // per Z vertex: index of the A point and of the B point
-    std::vector<I> zx, zy;
+    PointArray<int> ownHa, ownHb;        // the hulls made here, without prepared shapes
+    const PointArray<int>* ha = nullptr; // A's hull: ownHa or the prepared one
+    const PointArray<int>* hb = nullptr;
+    VertexArray<int> za, zb; // per Z vertex: index of the A point and of the B point
+    VertexArray<I> zx, zy;
     std::vector<E2> zex;
     std::vector<char> zhave;
 
@@ -565,8 +573,8 @@ class Solver
     // "Witnesses").
     void merge()
     {
-        const std::vector<int>& ha = *this->ha;
-        const std::vector<int>& hb = *this->hb;
+        const PointArray<int>& ha = *this->ha;
+        const PointArray<int>& hb = *this->hb;
         const int na = static_cast<int>(ha.size()), nb = static_cast<int>(hb.size());
         // Highest-rightmost vertex of -B is the lowest-leftmost vertex of B.
         int sa = 0, sb = 0;
@@ -885,7 +893,7 @@ PreparedShape::PreparedShape(Shape&& shape, const char* name)
     {
         detail::I::Protector protect; // as Solver::locateFeature()
         side.init(d.shape);
-        std::vector<int> h = side.hull();
+        detail::PointArray<int> h = side.hull();
         d.hull = h;
         d.hullExact = side.exactDecisions;
         // merge()'s start on B: the lowest (then leftmost) hull vertex, the first one found.

@@ -257,12 +257,108 @@ P2 sub(const P2& a, const P2& b)
     return {sub(a.x, b.x), sub(a.y, b.y)};
 }
 
-// x' = c*x - s*y + px, y' = s*x + c*y + py of one input point.
-P2 transform(const Shape& t, const Point& p)
+// x' = c*x - s*y + px, y' = s*x + c*y + py of one input point, through the V operations: the
+// general route, for products that may underflow.
+P2 transformByOperations(const Shape& t, const Point& p)
 {
     const V c = exactly(t.c), s = exactly(t.s), x = exactly(p.x), y = exactly(p.y);
     return {add(sub(mul(c, x), mul(s, y)), exactly(t.px)),
             add(add(mul(s, x), mul(c, y)), exactly(t.py))};
+}
+
+// Shewchuk's Grow-Expansion: x added to the expansion g[0..m) (nonoverlapping components of
+// increasing magnitude, zeros anywhere among them), exactly.
+void grow(double* g, int& m, double x)
+{
+    for (int j = 0; j < m; ++j)
+    {
+        double sum, err;
+        twoSum(g[j], x, sum, err);
+        g[j] = err;
+        x = sum;
+    }
+    g[m++] = x;
+}
+
+// The value of the expansion g[0..m) (m <= 5) as a V. At most two nonzero components: h + l
+// exactly, e = 0 (exactSum()'s test). Else h + l = big + RN(small + rest) by twoSum, for the two
+// largest nonzero components big and small and rest = RN(sum of the others) (at most three, so
+// two roundings): the error is at most u |w| for w = RN(small + rest), plus 2 u (1 + u) times the
+// others' magnitudes, so e = u (|w| + 3 sum|others|), inflated by kUp for its own rounding. That is
+// about u^2 |value|. False when the value is not finite.
+bool valueOf(const double* g, int m, V& out)
+{
+    double big = 0, small = 0, third = 0, rest = 0, restAbs = 0;
+    int nonzero = 0;
+    for (int j = 0; j < m; ++j)
+        if (g[j] != 0)
+        {
+            rest += third;
+            restAbs += std::fabs(third);
+            third = small;
+            small = big;
+            big = g[j];
+            ++nonzero;
+        }
+    if (!std::isfinite(big))
+        return false;
+    if (nonzero <= 2)
+    {
+        twoSum(big, small, out.h, out.l);
+        out.e = 0;
+        return true;
+    }
+    rest += third;
+    restAbs += std::fabs(third);
+    const double w = small + rest;
+    twoSum(big, w, out.h, out.l);
+    out.e = kU * (std::fabs(w) + 3 * restAbs) * kUp;
+    return true;
+}
+
+// a*b + c*d + e for doubles, in the steps transformByOperations() takes, so exactly where it is
+// exact: the products split exactly by fma (a*b = p + t when the product cannot have underflowed:
+// p == 0 with a zero factor, or |p| >= 2^-960, mul()'s test), their four parts summed as one
+// expansion; when that fits in two doubles (add()'s exact route), renormalised and e added as a
+// second expansion, else e added to the first. Where the sum is not exact its bound is about u^2
+// of it, inside the 2^-98 relative bound of the operations this replaces. Issue 34: one
+// coordinate in about a third of their instructions. False when a product may have underflowed
+// or a value is not finite: the caller takes transformByOperations().
+bool productSum(double a, double b, double c, double d, double e, V& out)
+{
+    const double p1 = a * b, p2 = c * d;
+    const auto fine = [](double p, double x, double y)
+    { return p == 0 ? x == 0 || y == 0 : std::fabs(p) >= 0x1p-960; };
+    if (!fine(p1, a, b) || !fine(p2, c, d))
+        return false;
+    double g[5];
+    int m = 0;
+    grow(g, m, p1);
+    grow(g, m, std::fma(a, b, -p1));
+    grow(g, m, p2);
+    grow(g, m, std::fma(c, d, -p2));
+    V products;
+    if (!valueOf(g, m, products))
+        return false;
+    if (products.e == 0)
+    { // add()'s exactSum({h, l, e, 0}): the zero's pass renormalises, as there
+        m = 0;
+        grow(g, m, products.h);
+        grow(g, m, products.l);
+        grow(g, m, e);
+        grow(g, m, 0);
+    }
+    else
+        grow(g, m, e);
+    return valueOf(g, m, out);
+}
+
+P2 transform(const Shape& t, const Point& p)
+{
+    P2 r;
+    if (productSum(t.c, p.x, -t.s, p.y, t.px, r.x) && productSum(t.s, p.x, t.c, p.y, t.py, r.y))
+        return r;
+    return transformByOperations(t, p);
 }
 
 V cross(const P2& a, const P2& b)

@@ -54,11 +54,13 @@ TEST_CASE("the filtered truth equals the GMP route on every built-in family and 
     const char* count = std::getenv("GJK2D_TRUTH_RANDOM_COUNT");
     const std::string random = "random:" + std::string(count ? count : "20000");
     const auto inputs = collectInputs({random, "hard", "engine"}, files, 1);
-    std::size_t checked = 0, gmp = 0;
+    std::size_t checked = 0, gmp = 0, engineTruths = 0, engineGmp = 0;
     for (const FamilyData& f : inputs)
     {
         INFO("input " << f.name);
         std::size_t mismatches = 0;
+        const bool engine = f.name.rfind("engine/", 0) == 0;
+        const std::size_t gmpBefore = gmp, checkedBefore = checked;
         for (std::size_t i = 0; i < f.cases.size(); ++i)
         {
             if (!f.rejected[i].empty())
@@ -78,11 +80,25 @@ TEST_CASE("the filtered truth equals the GMP route on every built-in family and 
             }
             mismatches += sameTruth(a, b, gmp) ? 0 : 1;
             if (representableInFloat(c))
+            {
                 mismatches += sameTruth(toExact(c.a, true), toExact(c.b, true), gmp) ? 0 : 1;
+                engineTruths += engine ? 1 : 0;
+            }
             ++checked;
         }
         CHECK(mismatches == 0);
+        if (engine)
+        {
+            engineTruths += checked - checkedBefore;
+            engineGmp += gmp - gmpBefore;
+        }
     }
+    // Float engines' data keep the filter exact where it can be (a transformed point of float
+    // input is exactly a sum of two doubles, so exactly representable distances round without
+    // GMP): 1,116 of the engine families' 24,000 truths take GMP (4.65 %, at issue 34's sixth
+    // step). A transform that lost that exactness sent 2,752 (11.5 %) there; the ceiling is 5 %.
+    CHECK(engineTruths == 24000);
+    CHECK(engineGmp * 20 <= engineTruths);
     CHECK(checked > 30000); // 34,137 with random:20000
     WARN("truths compared: " << checked << " cases; filtered ones on the GMP route: " << gmp);
 }

@@ -296,8 +296,7 @@ Exchange exchange(Slot& s, const std::string& request, double timeoutSeconds)
 // ---- Requests and answers ----
 
 template <class T>
-void appendShape(std::string& out, const std::vector<gjk::Vec2<T>>& pts, T radius,
-                 const gjk::Transform<T>& xf)
+void appendShape(std::string& out, const CasePoints<T>& pts, T radius, const gjk::Transform<T>& xf)
 {
     fmt::format_to(std::back_inserter(out), "{} {} {} {} {} {}", double(radius), double(xf.p.x),
                    double(xf.p.y), double(xf.q.c), double(xf.q.s), pts.size());

@@ -11,6 +11,8 @@
 
 #include <exact/exact.hpp>
 
+#include <boost/container/small_vector.hpp>
+
 #include <array>
 #include <cmath>
 #include <memory>
@@ -21,11 +23,15 @@
 namespace gjkval
 {
 
+// A shape's points, inline up to 8 (Box2D's polygon limit; the random family's 3 to 8): preparing
+// a case allocates nothing on the common path (docs/speed.md, "Allocations of a case", issue 34).
+template <class T> using CasePoints = boost::container::small_vector<gjk::Vec2<T>, 8>;
+
 // A case's inputs converted once to both scalar types (the timing loop reuses them).
 struct PreparedCase
 {
-    std::vector<gjk::Vec2<double>> ad, bd;
-    std::vector<gjk::Vec2<float>> af, bf;
+    CasePoints<double> ad, bd;
+    CasePoints<float> af, bf;
     gjk::Transform<double> xad, xbd;
     gjk::Transform<float> xaf, xbf;
     double rad = 0, rbd = 0;

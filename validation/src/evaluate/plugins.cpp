@@ -455,7 +455,7 @@ static_assert(sizeof(gjk::Vec2<float>) == 2 * sizeof(float) &&
               "the plugin ABI reads Vec2 arrays as x0, y0, x1, y1, ...");
 
 template <class T, class Shape>
-Shape shapeOf(const std::vector<gjk::Vec2<T>>& pts, T radius, const gjk::Transform<T>& xf)
+Shape shapeOf(const CasePoints<T>& pts, T radius, const gjk::Transform<T>& xf)
 {
     Shape s;
     s.points = reinterpret_cast<const T*>(pts.data());

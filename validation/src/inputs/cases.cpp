@@ -99,21 +99,19 @@ static_assert(sizeof(ShapeIn) == sizeof(exact::Shape) &&
                   sizeof(ShapeIn::points) == sizeof(exact::Shape::points),
               "ShapeIn and exact::Shape must keep the same fields (cases.hpp)");
 
-exact::Shape toExact(const ShapeIn& in, bool roundToFloat)
+exact::Shape toExact(const ShapeIn& in, bool toFloat)
 {
-    ShapeIn rounded;
-    if (roundToFloat)
-        rounded = roundedToFloat(in);
-    const ShapeIn& s = roundToFloat ? rounded : in; // no copy of the input as given
+    // roundedToFloat(in) when asked, field by field, without a rounded copy of the points.
+    const auto r = [toFloat](double v) { return toFloat ? roundToFloat(v) : v; };
     exact::Shape e;
-    e.points.reserve(s.points.size());
-    for (const auto& p : s.points)
-        e.points.push_back({p[0], p[1]});
-    e.radius = s.radius;
-    e.px = s.px;
-    e.py = s.py;
-    e.c = s.c;
-    e.s = s.s;
+    e.points.reserve(in.points.size());
+    for (const auto& p : in.points)
+        e.points.push_back({r(p[0]), r(p[1])});
+    e.radius = r(in.radius);
+    e.px = r(in.px);
+    e.py = r(in.py);
+    e.c = r(in.c);
+    e.s = r(in.s);
     return e;
 }
 

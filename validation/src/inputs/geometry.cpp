@@ -16,13 +16,6 @@ double cross3(const P2& o, const P2& a, const P2& b)
 {
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
-double maxAbs(const std::vector<P2>& pts)
-{
-    double m = 0;
-    for (const auto& p : pts)
-        m = std::max({m, std::abs(p[0]), std::abs(p[1])});
-    return m;
-}
 // Sign of the orientation of (a, b, c): Shewchuk's filter in double (ccwerrboundA, plus a margin
 // for underflow), exact rationals when it cannot decide.
 int orientSign(const P2& a, const P2& b, const P2& c)
@@ -287,7 +280,14 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
 
 double maxAbsWorldCoordinate(const Case& c)
 {
-    return std::max(maxAbs(worldPoints(c.a)), maxAbs(worldPoints(c.b)));
+    double m = 0; // maxAbs over both shapes' worldPoints, without making them
+    for (const ShapeIn* s : {&c.a, &c.b})
+        for (const auto& p : s->points)
+        {
+            const P2 w = applyTransform(*s, p);
+            m = std::max({m, std::abs(w[0]), std::abs(w[1])});
+        }
+    return m;
 }
 
 double maxAbsTranslation(const Case& c)

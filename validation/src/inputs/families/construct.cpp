@@ -17,14 +17,18 @@ ShapeIn poly(std::vector<P2> pts, double radius)
 
 ShapeIn polygonOnCircle(Rng& r, int n, double radius)
 {
-    std::vector<double> angles(static_cast<std::size_t>(n));
-    for (auto& a : angles)
-        a = r.range(0, 2 * kPi);
-    std::sort(angles.begin(), angles.end());
+    // The sorted angles are kept in the points' first coordinates: one allocation, not two.
     ShapeIn s;
-    s.points.reserve(angles.size());
-    for (double a : angles)
-        s.points.push_back({radius * std::cos(a), radius * std::sin(a)});
+    s.points.resize(static_cast<std::size_t>(n));
+    for (auto& q : s.points)
+        q[0] = r.range(0, 2 * kPi);
+    std::sort(s.points.begin(), s.points.end(),
+              [](const auto& p, const auto& q) { return p[0] < q[0]; });
+    for (auto& q : s.points)
+    {
+        const double a = q[0];
+        q = {radius * std::cos(a), radius * std::sin(a)};
+    }
     return s;
 }
 
