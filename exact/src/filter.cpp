@@ -331,10 +331,11 @@ bool productSum(double a, double b, double c, double d, double e, V& out)
     { return p == 0 ? x == 0 || y == 0 : std::fabs(p) >= 0x1p-960; };
     if (!fine(p1, a, b) || !fine(p2, c, d))
         return false;
-    double g[5];
-    int m = 0;
-    grow(g, m, p1);
-    grow(g, m, std::fma(a, b, -p1));
+    // A pair (x, y) with x = RN(x + y) is already the expansion that growing x by y would give
+    // (twoSum(x, y) returns it unchanged; a zero's sign aside, which valueOf() ignores): the fma
+    // product (p1, t1), and below the renormalised (h, l).
+    double g[5] = {std::fma(a, b, -p1), p1};
+    int m = 2;
     grow(g, m, p2);
     grow(g, m, std::fma(c, d, -p2));
     V products;
@@ -342,9 +343,9 @@ bool productSum(double a, double b, double c, double d, double e, V& out)
         return false;
     if (products.e == 0)
     { // add()'s exactSum({h, l, e, 0}): the zero's pass renormalises, as there
-        m = 0;
-        grow(g, m, products.h);
-        grow(g, m, products.l);
+        g[0] = products.l;
+        g[1] = products.h;
+        m = 2;
         grow(g, m, e);
         grow(g, m, 0);
     }

@@ -1,8 +1,12 @@
 #include "inputs/sources.hpp"
 
+#include "common/parallel.hpp"
+
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <iterator>
 #include <memory>
 #include <set>
 
@@ -11,6 +15,28 @@ namespace gjkval
 namespace
 {
 namespace fs = std::filesystem;
+
+// plan.cases(begin, end), in blocks on up to `threads` threads (parallel.hpp: each block's cases
+// stored by position, so the same cases in the same order on any number).
+std::vector<Case> makeCases(const FamilyPlan& plan, std::size_t begin, std::size_t end, int threads)
+{
+    constexpr std::size_t kBlock = 256;
+    if (threads <= 1 || end - begin <= kBlock)
+        return plan.cases(begin, end);
+    std::vector<std::vector<Case>> blocks((end - begin + kBlock - 1) / kBlock);
+    Progress none = Progress::silent();
+    parallelFor(blocks.size(), threads, none,
+                [&](std::size_t b)
+                {
+                    const std::size_t from = begin + b * kBlock;
+                    blocks[b] = plan.cases(from, std::min(end, from + kBlock));
+                });
+    std::vector<Case> cases;
+    cases.reserve(end - begin);
+    for (auto& block : blocks)
+        std::move(block.begin(), block.end(), std::back_inserter(cases));
+    return cases;
+}
 
 CampaignInput familyInput(FamilyPlan plan, std::uint64_t campaignSeed)
 {
@@ -24,7 +50,7 @@ CampaignInput familyInput(FamilyPlan plan, std::uint64_t campaignSeed)
     in.makeup = std::move(plan.makeup);
     in.stream = [plan = std::move(plan)](std::size_t chunkCases,
                                          const std::function<void(CaseChunk&)>& consume,
-                                         const CampaignInput::SkipChunk& skip)
+                                         const CampaignInput::SkipChunk& skip, int threads)
     {
         for (std::size_t first = 0; first < plan.count; first += chunkCases)
         {
@@ -32,7 +58,7 @@ CampaignInput familyInput(FamilyPlan plan, std::uint64_t campaignSeed)
                 continue; // each case is made from its index alone: nothing to keep in step
             CaseChunk chunk;
             chunk.first = first;
-            chunk.cases = plan.cases(first, std::min(plan.count, first + chunkCases));
+            chunk.cases = makeCases(plan, first, std::min(plan.count, first + chunkCases), threads);
             for (const auto& c : chunk.cases)
                 chunk.labels.push_back(c.name);
             chunk.rejected.assign(chunk.cases.size(), {});
@@ -90,7 +116,7 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
     in.input = {{"file", path}, {"count", summary.entries}};
     in.stream = [path, whole](std::size_t chunkCases,
                               const std::function<void(CaseChunk&)>& consume,
-                              const CampaignInput::SkipChunk&) // the entries are read in order
+                              const CampaignInput::SkipChunk&, int) // read in order, on one thread
     {
         chunked(
             [&](const std::function<void(CaseEntry &&)>& each)
@@ -148,17 +174,18 @@ std::vector<FamilyData> collectInputs(const std::vector<std::string>& familySpec
     for (auto& in : inputsOf(familySpecs, caseFiles, seed, true))
     {
         FamilyData f{in.name, in.reason, in.source, in.input, {}, {}, {}, in.makeup, in.seed};
-        in.stream(std::max<std::size_t>(1, in.count),
-                  [&](CaseChunk& chunk)
-                  {
-                      for (std::size_t i = 0; i < chunk.size(); ++i)
-                      {
-                          f.cases.push_back(std::move(chunk.cases[i]));
-                          f.labels.push_back(std::move(chunk.labels[i]));
-                          f.rejected.push_back(std::move(chunk.rejected[i]));
-                      }
-                  },
-                  {});
+        in.stream(
+            std::max<std::size_t>(1, in.count),
+            [&](CaseChunk& chunk)
+            {
+                for (std::size_t i = 0; i < chunk.size(); ++i)
+                {
+                    f.cases.push_back(std::move(chunk.cases[i]));
+                    f.labels.push_back(std::move(chunk.labels[i]));
+                    f.rejected.push_back(std::move(chunk.rejected[i]));
+                }
+            },
+            {}, 1);
         out.push_back(std::move(f));
     }
     return out;

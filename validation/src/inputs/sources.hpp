@@ -37,10 +37,12 @@ struct CampaignInput
     std::size_t count = 0;
     // Calls consume(chunk) for every chunk of at most chunkCases cases, in case order. Chunk j
     // (cases j*chunkCases ..) may be left out, neither made nor passed on, when skip(j) is true
-    // (a shard's, a resumed run's): generated families do so, case files pass every chunk.
+    // (a shard's, a resumed run's): generated families do so, case files pass every chunk. A
+    // generated family makes each chunk's cases on up to `threads` threads (each case is made
+    // from its index alone: the same cases on any number); a case file is read on one.
     using SkipChunk = std::function<bool(std::size_t chunk)>;
     std::function<void(std::size_t chunkCases, const std::function<void(CaseChunk&)>& consume,
-                       const SkipChunk& skip)>
+                       const SkipChunk& skip, int threads)>
         stream;
 };
 
