@@ -32,8 +32,10 @@ using I = CGAL::Interval_nt<false>; // needs the FPU in round-upward mode: see t
 
 // Per-point and per-vertex arrays stored inline up to a shape of kInline points (Box2D's polygons
 // have at most 8; the random family 3 to 8), on the heap beyond: a truth then allocates nothing
-// here on the common path (docs/speed.md, "Allocations of the truth", issue 34).
-constexpr std::size_t kInline = 16;
+// here on the common path (docs/speed.md, "Allocations, transforms and the fold", issue 34). 16
+// made the exact phase 12 % slower than 8 in wall time, for fewer instructions: a prepared shape
+// twice the memory.
+constexpr std::size_t kInline = 8;
 template <class T> using PointArray = boost::container::small_vector<T, kInline>;
 template <class T> using VertexArray = boost::container::small_vector<T, 2 * kInline>; // Z, chains
 

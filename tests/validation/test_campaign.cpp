@@ -186,6 +186,32 @@ TEST_CASE("the report does not depend on the chunk size nor the thread count", "
     }
 }
 
+TEST_CASE("an error of the fold stops the run, on one thread and beside the evaluation",
+          "[campaign]")
+{
+    // cases.jsonl's stream fails: the fold that writes to it throws, on the caller's thread with
+    // one thread, on the fold's own thread (fold.cpp, ChunkFolder) with more, where the next
+    // chunk's submission or the end of the run rethrows it. Chunks of 7 cases: many folds.
+    for (int threads : {1, 2, 3})
+    {
+        INFO("threads " << threads);
+        CampaignConfig c = smallConfig(threads);
+        c.timing = false;
+        c.chunkCases = 7;
+        std::ostringstream lines;
+        lines.setstate(std::ios::badbit);
+        try
+        {
+            runCampaign(c, campaignInputs(c), &lines);
+            FAIL("no OutputError");
+        }
+        catch (const OutputError& e)
+        {
+            CHECK(std::string(e.what()).find("cases.jsonl: write failed") == 0);
+        }
+    }
+}
+
 TEST_CASE("merging the shards of a campaign gives the one-process report", "[campaign][shard]")
 {
     // Families cut mid-chunk, a case file with rejected cases, 2 worst cases per family (ties
