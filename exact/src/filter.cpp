@@ -40,6 +40,20 @@ void twoSum(double a, double b, double& s, double& t) // s + t == a + b exactly 
     t = (a - (s - bb)) + (b - bb);
 }
 
+// Shewchuk's Grow-Expansion: x added to the expansion g[0..m) (nonoverlapping components of
+// increasing magnitude, zeros anywhere among them), exactly.
+void grow(double* g, int& m, double x)
+{
+    for (int j = 0; j < m; ++j)
+    {
+        double sum, err;
+        twoSum(g[j], x, sum, err);
+        g[j] = err;
+        x = sum;
+    }
+    g[m++] = x;
+}
+
 // The exact sum of t[0..n) (n <= 8) as h + l, when it fits in two doubles: Shewchuk's
 // GROW-EXPANSION (twoSum is exact, so the components' sum is the sum) leaves nonoverlapping
 // components; at most two nonzero ones are added by twoSum, exactly. More: false (not decided
@@ -49,17 +63,7 @@ bool exactSum(const double* t, int n, double& h, double& l)
     double q[8];
     int m = 0;
     for (int i = 0; i < n; ++i)
-    {
-        double x = t[i];
-        for (int j = 0; j < m; ++j)
-        {
-            double s, err;
-            twoSum(q[j], x, s, err);
-            q[j] = err;
-            x = s;
-        }
-        q[m++] = x;
-    }
+        grow(q, m, t[i]);
     double big = 0, small = 0;
     int nonzero = 0;
     for (int j = 0; j < m; ++j)
@@ -264,20 +268,6 @@ P2 transformByOperations(const Shape& t, const Point& p)
     const V c = exactly(t.c), s = exactly(t.s), x = exactly(p.x), y = exactly(p.y);
     return {add(sub(mul(c, x), mul(s, y)), exactly(t.px)),
             add(add(mul(s, x), mul(c, y)), exactly(t.py))};
-}
-
-// Shewchuk's Grow-Expansion: x added to the expansion g[0..m) (nonoverlapping components of
-// increasing magnitude, zeros anywhere among them), exactly.
-void grow(double* g, int& m, double x)
-{
-    for (int j = 0; j < m; ++j)
-    {
-        double sum, err;
-        twoSum(g[j], x, sum, err);
-        g[j] = err;
-        x = sum;
-    }
-    g[m++] = x;
 }
 
 // The value of the expansion g[0..m) (m <= 5) as a V. At most two nonzero components: h + l
