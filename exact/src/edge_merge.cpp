@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <memory>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace exact::detail
@@ -38,6 +39,19 @@ using I = CGAL::Interval_nt<false>; // needs the FPU in round-upward mode: see t
 constexpr std::size_t kInline = 8;
 template <class T> using PointArray = boost::container::small_vector<T, kInline>;
 template <class T> using VertexArray = boost::container::small_vector<T, 2 * kInline>; // Z, chains
+
+// The interval of the product of two doubles, [RD(a b), RU(a b)], in the round-upward mode the
+// Protector sets: CGAL's product of the point intervals I(a) and I(b), whose bounds are these same
+// correctly rounded doubles, without its general case (issue 34: fewer instructions a shape). The
+// operands go through CGAL's own IA_opacify and IA_up, as in CGAL_IA_MUL: without them the
+// compiler, which assumes round-to-nearest, may fold -((-a) b) into a b. A zero's sign may differ
+// from CGAL's, which no comparison sees.
+I product(double a, double b)
+{
+    const double up = CGAL::IA_up(CGAL::IA_opacify(a) * CGAL::IA_opacify(b));
+    const double down = -CGAL::IA_up(CGAL::IA_opacify(-a) * CGAL::IA_opacify(b));
+    return I(down, up);
+}
 
 // ---------------------------------------------------------------- exact dyadic integers
 
@@ -119,6 +133,14 @@ struct DecShape
 {
     Dec c, s, px, py;
 };
+
+// A shape's transform as dyadic integers: made only where an exact value is needed (a predicate
+// the intervals left undecided, a construction), not with every shape (four frexp/ldexp pairs a
+// shape, 2 % of a `random` case's instructions before, issue 34).
+DecShape decShapeOf(const Shape& s)
+{
+    return {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};
+}
 
 // x' = c*x - s*y + px, y' = s*x + c*y + py, exactly.
 E2 transformExact(const DecShape& t, const Point& p)
@@ -225,7 +247,7 @@ int sign(const I& v)
 struct Side
 {
     const Shape* shape = nullptr;
-    DecShape dec;
+    std::optional<DecShape> dec; // on the first exact value
     PointArray<I> ownX, ownY; // init()'s intervals; from a prepared shape, x and y point there
     const I* x = nullptr;
     const I* y = nullptr;
@@ -236,16 +258,15 @@ struct Side
     void init(const Shape& s)
     {
         shape = &s;
-        dec = {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};
         const std::size_t n = s.points.size();
         ownX.resize(n);
         ownY.resize(n);
-        const I c(s.c), sn(s.s), px(s.px), py(s.py);
+        const I px(s.px), py(s.py);
         for (std::size_t i = 0; i < n; ++i)
         {
-            const I px_(s.points[i].x), py_(s.points[i].y);
-            ownX[i] = c * px_ - sn * py_ + px;
-            ownY[i] = sn * px_ + c * py_ + py;
+            const double x = s.points[i].x, y = s.points[i].y;
+            ownX[i] = product(s.c, x) - product(s.s, y) + px;
+            ownY[i] = product(s.s, x) + product(s.c, y) + py;
         }
         x = ownX.data();
         y = ownY.data();
@@ -260,7 +281,9 @@ struct Side
         }
         if (!have[i])
         {
-            ex[i] = transformExact(dec, shape->points[i]);
+            if (!dec)
+                dec = decShapeOf(*shape);
+            ex[i] = transformExact(*dec, shape->points[i]);
             have[i] = 1;
         }
         return ex[i];
@@ -360,7 +383,6 @@ int half(int sy, int sx)
 struct PreparedData
 {
     Shape shape;
-    DecShape dec;
     PointArray<int> hull;
     int hullExact = 0;
     PointArray<int> z;
@@ -373,7 +395,6 @@ namespace
 void Side::init(const PreparedData& d)
 {
     shape = &d.shape;
-    dec = d.dec;
     x = d.x.data();
     y = d.y.data();
     exactDecisions = d.hullExact;
@@ -788,6 +809,7 @@ class PointLocator
     // The exact Z vertices, allocated on the first undecided predicate only.
     struct Exact
     {
+        DecShape dec; // the shape's transform (decShapeOf)
         E2 p;
         std::vector<E2> z;
         std::vector<char> have;
@@ -809,6 +831,7 @@ class PointLocator
         if (!exact_)
         {
             exact_ = std::make_unique<Exact>();
+            exact_->dec = decShapeOf(d_.shape);
             const Dec one = decompose(1.0), zero = decompose(0.0);
             exact_->p = transformExact({one, zero, zero, zero}, p_);
             exact_->z.resize(d_.z.size());
@@ -816,7 +839,7 @@ class PointLocator
         }
         if (!exact_->have[k])
         {
-            exact_->z[k] = sub(exact_->p, transformExact(d_.dec, d_.shape.points[d_.z[k]]));
+            exact_->z[k] = sub(exact_->p, transformExact(exact_->dec, d_.shape.points[d_.z[k]]));
             exact_->have[k] = 1;
         }
         return exact_->z[k];
@@ -907,7 +930,6 @@ PreparedShape::PreparedShape(Shape&& shape, const char* name)
         std::rotate(h.begin(), h.begin() + sb, h.end());
         d.z = std::move(h);
     }
-    d.dec = side.dec;
     d.x = std::move(side.ownX); // every point's intervals, read through z
     d.y = std::move(side.ownY);
 }
