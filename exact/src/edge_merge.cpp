@@ -248,7 +248,7 @@ struct Side
 {
     const Shape* shape = nullptr;
     std::optional<DecShape> dec; // on the first exact value
-    PointArray<I> ownX, ownY; // init()'s intervals; from a prepared shape, x and y point there
+    PointArray<I> ownX, ownY;    // init()'s intervals; from a prepared shape, x and y point there
     const I* x = nullptr;
     const I* y = nullptr;
     std::vector<E2> ex;
