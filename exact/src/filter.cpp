@@ -10,7 +10,9 @@
 #include "expansion.hpp"
 #include "internal.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace exact::detail
 {
@@ -241,7 +243,12 @@ bool roundTo(const V& v, double& out, int* side = nullptr)
             *side = l > 0 ? 1 : l < 0 ? -1 : 0;
         return true;
     }
-    const double up = std::nextafter(h, HUGE_VAL) - h, down = h - std::nextafter(h, -HUGE_VAL);
+    // The gaps to h's neighbours, std::nextafter's without its calls (issue 34: 1 % of a case's
+    // instructions): |h| is a normal double here, so its neighbours are its bit patterns +- 1.
+    const std::uint64_t bits = std::bit_cast<std::uint64_t>(a);
+    const double away = std::bit_cast<double>(bits + 1) - a,
+                 toward = a - std::bit_cast<double>(bits - 1);
+    const double up = h > 0 ? away : toward, down = h > 0 ? toward : away;
     const double slack = 0x1p-50 * (std::fabs(l) + v.e); // covers the roundings of l +- e
     if (!(l + v.e + slack < up / 2 && l - v.e - slack > -down / 2))
         return false;
