@@ -136,7 +136,7 @@ struct DecShape
 
 // A shape's transform as dyadic integers: made only where an exact value is needed (a predicate
 // the intervals left undecided, a construction), not with every shape (four frexp/ldexp pairs a
-// shape, 2 % of a `random` case's instructions before, issue 34).
+// shape; issue 34).
 DecShape decShapeOf(const Shape& s)
 {
     return {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};

@@ -178,7 +178,7 @@ void foldChunk(FamilyResult& r, std::size_t input, const CaseChunk& chunk, Evalu
 // it) on a thread of its own while the stream makes the next chunk and the campaign's threads
 // evaluate it. The fold and the stream are the campaign's serial part: before, a core idled
 // through them, 24 % of a 2-thread `run --family random:300000 --variants double,float` (docs/
-// speed.md, "The fold beside the next chunk"). One fold at a time and in chunk order, so the
+// speed.md, "Allocations, transforms and the fold"). One fold at a time and in chunk order, so the
 // result is the sequential fold's, bit for bit. With one thread (`--threads 1`) each fold runs at
 // once on the caller's thread, as before: a run asked to use one core uses one.
 class ChunkFolder
@@ -187,8 +187,9 @@ class ChunkFolder
     explicit ChunkFolder(bool beside) : beside_(beside) {}
     ChunkFolder(const ChunkFolder&) = delete;
     ChunkFolder& operator=(const ChunkFolder&) = delete;
-    ~ChunkFolder() // unwinding from another error: the running fold ends first (it holds
-                   // references)
+    // Unwinding from another error: the running fold ends first (it holds references); its own
+    // error, if any, is dropped for the first one.
+    ~ChunkFolder()
     {
         if (pending_.valid())
             pending_.wait();
