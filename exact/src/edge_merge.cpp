@@ -345,8 +345,8 @@ struct Side
             std::unique(idx.begin(), idx.end(), [this](int a, int b) { return cmpXY(a, b) == 0; }),
             idx.end());
         const int m = static_cast<int>(idx.size());
-        if (m <=
-            2) // copied, not moved: GCC 12 misreads the inline buffer's move (-Wstringop-overread)
+        // Copied, not moved: GCC 12 misreads the inline buffer's move (-Wstringop-overread).
+        if (m <= 2)
             return PointArray<int>(idx.begin(), idx.end());
         VertexArray<int> h(2 * m);
         int k = 0;

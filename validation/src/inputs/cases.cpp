@@ -80,39 +80,40 @@ double roundToFloat(double v)
     return double(float(v));
 }
 
-ShapeIn roundedToFloat(const ShapeIn& s)
-{
-    const auto r = roundToFloat;
-    ShapeIn o = s;
-    for (auto& p : o.points)
-        p = {r(p[0]), r(p[1])};
-    o.radius = r(s.radius);
-    o.px = r(s.px);
-    o.py = r(s.py);
-    o.c = r(s.c);
-    o.s = r(s.s);
-    return o;
-}
-
 // A field added to one of the two shapes and not to the other changes one size.
 static_assert(sizeof(ShapeIn) == sizeof(exact::Shape) &&
                   sizeof(ShapeIn::points) == sizeof(exact::Shape::points),
               "ShapeIn and exact::Shape must keep the same fields (cases.hpp)");
 
+namespace
+{
+// Every number of `in` through f, into a shape of the same fields (ShapeIn or exact::Shape): the
+// one list of a shape's fields that roundedToFloat and toExact read.
+template <class Out, class F> Out mapNumbers(const ShapeIn& in, F f)
+{
+    Out o;
+    o.points.reserve(in.points.size());
+    for (const auto& p : in.points)
+        o.points.push_back({f(p[0]), f(p[1])});
+    o.radius = f(in.radius);
+    o.px = f(in.px);
+    o.py = f(in.py);
+    o.c = f(in.c);
+    o.s = f(in.s);
+    return o;
+}
+} // namespace
+
+ShapeIn roundedToFloat(const ShapeIn& s)
+{
+    return mapNumbers<ShapeIn>(s, roundToFloat);
+}
+
+// roundedToFloat(in) when asked, without a rounded copy of the points.
 exact::Shape toExact(const ShapeIn& in, bool toFloat)
 {
-    // roundedToFloat(in) when asked, field by field, without a rounded copy of the points.
-    const auto r = [toFloat](double v) { return toFloat ? roundToFloat(v) : v; };
-    exact::Shape e;
-    e.points.reserve(in.points.size());
-    for (const auto& p : in.points)
-        e.points.push_back({r(p[0]), r(p[1])});
-    e.radius = r(in.radius);
-    e.px = r(in.px);
-    e.py = r(in.py);
-    e.c = r(in.c);
-    e.s = r(in.s);
-    return e;
+    return toFloat ? mapNumbers<exact::Shape>(in, roundToFloat)
+                   : mapNumbers<exact::Shape>(in, [](double v) { return v; });
 }
 
 bool representableInFloat(const Case& c)

@@ -268,20 +268,19 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     s.B *= std::hypot(b.c, b.s);
     s.R = unit * (ia + ib) + a.radius + b.radius;
     s.D = std::hypot(b.px - a.px, b.py - a.py);
-    for (const ShapeIn* sh : {&a, &b})
-        for (const auto& p : sh->points)
-        {
-            const auto w = gjk::transformPoint(xf(*sh), V2{p[0], p[1]});
-            s.M = std::max({s.M, std::abs(w.x), std::abs(w.y)});
-        }
-    s.M += std::max(a.radius, b.radius);
+    s.M = maxAbsWorldCoordinate(a, b) + std::max(a.radius, b.radius);
     return s;
 }
 
 double maxAbsWorldCoordinate(const Case& c)
 {
-    double m = 0; // maxAbs over both shapes' worldPoints, without making them
-    for (const ShapeIn* s : {&c.a, &c.b})
+    return maxAbsWorldCoordinate(c.a, c.b);
+}
+
+double maxAbsWorldCoordinate(const ShapeIn& a, const ShapeIn& b)
+{
+    double m = 0; // over both shapes' worldPoints, without making them
+    for (const ShapeIn* s : {&a, &b})
         for (const auto& p : s->points)
         {
             const P2 w = applyTransform(*s, p);

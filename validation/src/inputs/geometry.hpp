@@ -43,6 +43,7 @@ struct FrameScales
 };
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame);
 double maxAbsWorldCoordinate(const Case& c);
+double maxAbsWorldCoordinate(const ShapeIn& a, const ShapeIn& b);
 double maxAbsTranslation(const Case& c);
 // Diameter / minimum width of the hull of the local points (inf for segments and points);
 // computed for at most 64 hull vertices, else 0.
