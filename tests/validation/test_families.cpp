@@ -6,6 +6,8 @@
 #include "campaign_support.hpp"
 #include "inputs/geometry.hpp"
 
+#include "gjk/math.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -454,4 +456,57 @@ TEST_CASE("range and scale: out-of-range inputs are rescaled and judged within t
         }
     }
     CHECK(camp.exitCode == kExitPass);
+}
+
+TEST_CASE("frame scales: each length is the largest std::hypot over its definition's pairs",
+          "[families][geometry]")
+{
+    // The reference takes std::hypot of every point and pair (frameScales takes it only where a
+    // rounded square can hold the maximum: geometry.cpp's derivation). The same doubles: on
+    // `random` every shape's points lie on a circle (near-ties of their norms), `hard` has
+    // coordinates near 1e-300 and 1e300 (where frameScales takes every pair) and shapes of
+    // thousands of points.
+    using V = gjk::Vec2<double>;
+    auto largest = [](const std::vector<V>& p, const std::vector<V>& q)
+    {
+        double m = 0;
+        for (const V& a : p)
+            for (const V& b : q)
+                m = std::max(m, std::hypot(a.x - b.x, a.y - b.y));
+        return m;
+    };
+    auto xfOf = [](const ShapeIn& s) { return gjk::Transform<double>{{s.px, s.py}, {s.c, s.s}}; };
+    const std::vector<V> origin{{0, 0}};
+    int compared = 0;
+    std::vector<GeneratedFamily> families = generateFamilies("random:300", 11);
+    for (GeneratedFamily& f : generateFamilies("hard", 11))
+        families.push_back(std::move(f));
+    for (const GeneratedFamily& f : families)
+        for (const Case& c : f.cases)
+            for (const bool world : {false, true})
+            {
+                const auto xa = xfOf(c.a), xb = xfOf(c.b);
+                const auto rel = world ? xb : gjk::invMulTransforms(xa, xb);
+                std::vector<V> pa, pb, own;
+                for (const auto& p : c.a.points)
+                    pa.push_back(world ? gjk::transformPoint(xa, V{p[0], p[1]}) : V{p[0], p[1]});
+                for (const auto& p : c.b.points)
+                {
+                    own.push_back(V{p[0], p[1]});
+                    pb.push_back(gjk::transformPoint(rel, own.back()));
+                }
+                const double unit = world ? 1 : std::hypot(c.a.c, c.a.s);
+                const FrameScales s = frameScales(c.a, c.b, world);
+                INFO(c.name << (world ? " world" : " A's frame"));
+                CHECK(s.A == largest(pa, origin) * unit);
+                CHECK(s.Bmapped == largest(pb, origin) * unit);
+                CHECK(s.B == largest(own, origin) * std::hypot(c.b.c, c.b.s));
+                // Beyond 1e6 pairs, the bound |a| + |b~| (the triangle inequality) instead.
+                const double pairs = double(pa.size()) * double(pb.size());
+                CHECK(s.W ==
+                      (pairs <= 1e6 ? largest(pa, pb) : largest(pa, origin) + largest(pb, origin)) *
+                          unit);
+                ++compared;
+            }
+    CHECK(compared > 600);
 }

@@ -184,46 +184,75 @@ namespace
 {
 using V2 = gjk::Vec2<double>;
 
-// max over pairs of std::hypot(p - q), with std::hypot (a libm call, the judging phase's largest
-// cost) only on the pairs that can hold the maximum. In double, with u = 2^-53, for the rounded
-// differences dx, dy that std::hypot is given: fl(dx^2 + dy^2) is within a relative 3u of
-// dx^2 + dy^2 (two squares, a sum; no overflow or underflow: the largest in [2^-900, 2^900]), and
-// std::hypot within 1 ulp (2u) of sqrt(dx^2 + dy^2). NaN squares keep their hypot. A pair
-// whose rounded square is below (1 - 2^-40) times the largest rounded square M is shorter, exactly,
-// by a relative 2^-41 at least, so its hypot is below the longest pair's: the pairs left out cannot
-// change the maximum, which stays the same double. Elsewhere every pair's hypot is taken.
-// `squares` keeps the first pass's rounded squares for the second (scratch, na * nb of them).
-double largestDistance(const V2* pa, std::size_t na, const V2* pb, std::size_t nb,
-                       std::vector<double>& squares)
+// Largest distances without std::hypot (a libm call, the judging phase's largest cost) on every
+// pair: max over pairs of std::hypot(p - q) equals the max over the pairs whose rounded square
+// can hold it. In double, with u = 2^-53, for the rounded differences dx, dy that std::hypot is
+// given: fl(dx^2 + dy^2) is within a relative 3u of dx^2 + dy^2 (two squares, a sum; no overflow
+// or underflow: the largest in [2^-900, 2^900]), and std::hypot within 1 ulp (2u) of
+// sqrt(dx^2 + dy^2). NaN squares keep their hypot. A pair whose rounded square is below
+// (1 - 2^-40) times the largest rounded square M is shorter, exactly, by a relative 2^-41 at
+// least, so its hypot is below the longest pair's: the pairs left out cannot change the maximum,
+// which stays the same double. Elsewhere every pair's hypot is taken. The squares are formed
+// again in the second pass (the same expression, so the same doubles) rather than stored.
+struct LargestSquare
 {
-    squares.resize(na * nb);
-    double m = 0;
+    double m = 0; // the largest rounded square (NaN squares left out, as std::max leaves them)
+    void add(double q) { m = std::max(m, q); }
+    // Whether a pair whose rounded square is q can hold the maximum.
+    bool candidate(double q) const
+    {
+        const bool filtered = m >= 0x1p-900 && m <= 0x1p900;
+        return !filtered || !(q < m * (1 - 0x1p-40));
+    }
+};
+
+double square(double dx, double dy)
+{
+    return dx * dx + dy * dy;
+}
+
+// max |p| over the points (|p| = std::hypot(p - 0), and p - 0 is p).
+double largestNorm(const V2* p, std::size_t n)
+{
+    LargestSquare l;
+    for (std::size_t i = 0; i < n; ++i)
+        l.add(square(p[i].x, p[i].y));
+    double w = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (l.candidate(square(p[i].x, p[i].y)))
+            w = std::max(w, std::hypot(p[i].x, p[i].y));
+    return w;
+}
+
+// max |a_i - b_j| over every pair.
+double largestDistance(const V2* pa, std::size_t na, const V2* pb, std::size_t nb)
+{
+    LargestSquare l;
     for (std::size_t i = 0; i < na; ++i)
         for (std::size_t j = 0; j < nb; ++j)
-        {
-            const double dx = pa[i].x - pb[j].x, dy = pa[i].y - pb[j].y;
-            const double q = dx * dx + dy * dy;
-            squares[i * nb + j] = q;
-            m = std::max(m, q);
-        }
-    const bool filtered = m >= 0x1p-900 && m <= 0x1p900;
-    const double keep = m * (1 - 0x1p-40);
+            l.add(square(pa[i].x - pb[j].x, pa[i].y - pb[j].y));
     double w = 0;
     for (std::size_t i = 0; i < na; ++i)
         for (std::size_t j = 0; j < nb; ++j)
-            if (!filtered || !(squares[i * nb + j] < keep))
+            if (l.candidate(square(pa[i].x - pb[j].x, pa[i].y - pb[j].y)))
                 w = std::max(w, std::hypot(pa[i].x - pb[j].x, pa[i].y - pb[j].y));
     return w;
 }
 
-// frameScales' working space, kept per thread (a campaign's worker threads live for one chunk), so
-// that a call allocates nothing once its thread has seen a case as large. `squares` holds at most
-// the 1e6 pairs frameScales scans (8 MB), until the thread ends.
+// frameScales' working space, kept per thread and never shrunk, so that a call allocates
+// nothing once its thread has seen shapes as large.
 struct ScaleScratch
 {
     std::vector<V2> a, b, bOwn;
-    std::vector<double> squares;
 };
+
+// The first n elements of v, grown when needed (never value-initialised again).
+V2* atLeast(std::vector<V2>& v, std::size_t n)
+{
+    if (v.size() < n)
+        v.resize(n);
+    return v.data();
+}
 } // namespace
 
 FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
@@ -231,32 +260,30 @@ FrameScales frameScales(const ShapeIn& a, const ShapeIn& b, bool worldFrame)
     // Points of A and B~ in the compute frame: the world, or A's local frame through the true
     // inverse of A's transform (gjk::invMulTransforms divides by |qA|^2).
     thread_local ScaleScratch scratch;
-    std::vector<V2>&pa = scratch.a, &pb = scratch.b, &bOwn = scratch.bOwn;
-    pa.clear();
-    pb.clear();
-    bOwn.clear();
+    const std::size_t na = a.points.size(), nb = b.points.size();
+    V2 *pa = atLeast(scratch.a, na), *pb = atLeast(scratch.b, nb),
+       *bOwn = atLeast(scratch.bOwn, nb);
     const gjk::Transform<double> xa = xf(a), xb = xf(b);
     const gjk::Transform<double> rel = worldFrame ? xb : gjk::invMulTransforms(xa, xb);
-    for (const auto& p : a.points)
-        pa.push_back(worldFrame ? gjk::transformPoint(xa, V2{p[0], p[1]}) : V2{p[0], p[1]});
-    for (const auto& p : b.points)
+    double ia = 0, ib = 0;
+    for (std::size_t i = 0; i < na; ++i)
     {
-        pb.push_back(gjk::transformPoint(rel, V2{p[0], p[1]}));
-        bOwn.push_back(V2{p[0], p[1]});
+        const V2 p{a.points[i][0], a.points[i][1]};
+        pa[i] = worldFrame ? gjk::transformPoint(xa, p) : p;
+        ia = std::max({ia, std::abs(pa[i].x), std::abs(pa[i].y)});
+    }
+    for (std::size_t i = 0; i < nb; ++i)
+    {
+        bOwn[i] = V2{b.points[i][0], b.points[i][1]};
+        pb[i] = gjk::transformPoint(rel, bOwn[i]);
+        ib = std::max({ib, std::abs(pb[i].x), std::abs(pb[i].y)});
     }
     FrameScales s;
-    double ia = 0, ib = 0;
-    for (const auto& p : pa)
-        ia = std::max({ia, std::abs(p.x), std::abs(p.y)});
-    for (const auto& p : pb)
-        ib = std::max({ib, std::abs(p.x), std::abs(p.y)});
-    // max |p| = max hypot(p - 0): x - 0 is x.
-    const V2 origin{0, 0};
-    s.A = largestDistance(pa.data(), pa.size(), &origin, 1, scratch.squares);
-    s.Bmapped = largestDistance(pb.data(), pb.size(), &origin, 1, scratch.squares);
-    s.B = largestDistance(bOwn.data(), bOwn.size(), &origin, 1, scratch.squares);
-    if (double(pa.size()) * double(pb.size()) <= 1e6)
-        s.W = largestDistance(pa.data(), pa.size(), pb.data(), pb.size(), scratch.squares);
+    s.A = largestNorm(pa, na);
+    s.Bmapped = largestNorm(pb, nb);
+    s.B = largestNorm(bOwn, nb);
+    if (double(na) * double(nb) <= 1e6)
+        s.W = largestDistance(pa, na, pb, nb);
     else
         s.W = s.A + s.Bmapped;
     // World lengths: A's frame measures in units of |qA| (1 for a unit rotation), and B's own
@@ -281,11 +308,14 @@ double maxAbsWorldCoordinate(const ShapeIn& a, const ShapeIn& b)
 {
     double m = 0; // over both shapes' worldPoints, without making them
     for (const ShapeIn* s : {&a, &b})
+    {
+        const gjk::Transform<double> x = xf(*s);
         for (const auto& p : s->points)
         {
-            const P2 w = applyTransform(*s, p);
-            m = std::max({m, std::abs(w[0]), std::abs(w[1])});
+            const V2 w = gjk::transformPoint(x, V2{p[0], p[1]});
+            m = std::max({m, std::abs(w.x), std::abs(w.y)});
         }
+    }
     return m;
 }
 
