@@ -118,12 +118,13 @@ struct PluginTask
     const std::string* caseName = nullptr; // for the message of a crash or a hang
 };
 
-// Runs the tasks in order: a shared library's in a forked child that streams one answer per task
-// through a pipe; an executable adapter's through its adapter process (answerThroughAdapters,
-// evaluate/adapter.hpp); an in-process variant's in this thread, never forked (answerInProcess,
-// evaluate/in_process.hpp). When the child dies or does not answer within timeoutSeconds, that task
-// is answered Crashed or Hung (a line on stderr names the variant and the case) and a new child
-// continues from the next task. Never throws for what a plugin does; std::runtime_error when
+// Runs the tasks in order: a shared library's in a forked child that streams its answers through
+// a pipe, in blocks of up to 64; an executable adapter's through its adapter process
+// (answerThroughAdapters, evaluate/adapter.hpp); an in-process variant's in this thread, never
+// forked (answerInProcess, evaluate/in_process.hpp). When the child dies or does not answer within
+// timeoutSeconds, a new child answers the next 64 tasks one by one, and the task that child
+// loses is answered Crashed or Hung (a line on stderr names the variant and the case); another
+// child continues from the next task. Never throws for what a plugin does; std::runtime_error when
 // fork or pipe fail.
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
