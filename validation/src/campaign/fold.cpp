@@ -60,6 +60,8 @@ EvalContext evalContext(const CampaignConfig& config)
     // was left out: cases.jsonl has every case's, so it is computed at once there.
     ctx.exactOptions.squaredRational = config.perCase;
     ctx.pluginTimeoutSeconds = config.pluginTimeoutSeconds;
+    if (ctx.hasPlugins()) // one child a thread, forked on the first chunk, for every chunk
+        ctx.pluginServers = std::make_shared<PluginServers>(resolveThreads(config.threads));
     return ctx;
 }
 

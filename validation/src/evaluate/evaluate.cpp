@@ -735,7 +735,10 @@ void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseO
                 tasks.push_back({&vi, &prepared[i], &o.external[k], &cases[i].name});
         }
     }
-    answerContained(tasks, ctx.pluginTimeoutSeconds);
+    if (ctx.pluginServers)
+        answerContained(tasks, ctx.pluginTimeoutSeconds, *ctx.pluginServers);
+    else
+        answerContained(tasks, ctx.pluginTimeoutSeconds);
 }
 
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx)

@@ -216,6 +216,9 @@ struct EvalContext
     exact::Result (*truth)(const exact::PreparedShape&, const exact::PreparedShape&,
                            const exact::Options&) = &exact::distance;
     double pluginTimeoutSeconds = kDefaultPluginTimeoutSeconds; // per plugin call
+    // The children that answer shared-library plugins for a campaign, kept from chunk to chunk
+    // (used between parallel phases only); null: children for each call only.
+    std::shared_ptr<PluginServers> pluginServers;
     bool needFloatTruth() const;
     bool hasPlugins() const;
 };

@@ -118,14 +118,39 @@ struct PluginTask
     const std::string* caseName = nullptr; // for the message of a crash or a hang
 };
 
-// Runs the tasks in order: a shared library's in a forked child that streams its answers through
-// a pipe, in blocks of up to 64; an executable adapter's through its adapter process
-// (answerThroughAdapters, evaluate/adapter.hpp); an in-process variant's in this thread, never
-// forked (answerInProcess, evaluate/in_process.hpp). When the child dies or does not answer within
-// timeoutSeconds, a new child answers the next 64 tasks one by one, and the task that child
-// loses is answered Crashed or Hung (a line on stderr names the variant and the case); another
-// child continues from the next task. Never throws for what a plugin does; std::runtime_error when
-// fork or pipe fail.
+// The child processes that answer shared-library plugins' tasks (answerContained): up to `count`
+// of them, forked when first needed and kept for later calls, each answering a slice of a call's
+// tasks; they end with this object. Forked again when the registry has changed since (a plugin
+// loaded, another log directory): a child knows what its parent knew when it was forked.
+class PluginServers
+{
+  public:
+    explicit PluginServers(int count);
+    ~PluginServers();
+    PluginServers(const PluginServers&) = delete;
+    PluginServers& operator=(const PluginServers&) = delete;
+    void answer(const std::vector<PluginTask>& tasks, double timeoutSeconds);
+
+  private:
+    struct Server;
+    bool matchesRegistry() const;
+    bool exchange(std::size_t k, double timeoutSeconds);
+    int count_;
+    std::vector<std::unique_ptr<Server>> servers_;
+    std::size_t variantsAtFork_ = 0;
+    std::string logDirAtFork_;
+};
+
+// Runs the tasks: a shared library's in `servers`' children, which take the tasks through a pipe
+// and stream their answers back in blocks of up to 64; an executable adapter's through its
+// adapter process (answerThroughAdapters, evaluate/adapter.hpp); an in-process variant's in this
+// thread, never forked (answerInProcess, evaluate/in_process.hpp). When a child dies or does not
+// answer within timeoutSeconds, a new one answers the next 64 tasks one by one, and the task that
+// one loses is answered Crashed or Hung (a line on stderr names the variant and the case); the
+// others are answered. Never throws for what a plugin does; std::runtime_error when fork, pipe or
+// poll fail. Without `servers`: children for this call only.
+void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds,
+                     PluginServers& servers);
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);
 
 // What plugins print (their stdout and stderr in the child processes) is kept apart from
@@ -165,6 +190,8 @@ class PluginChild
     // Reads up to n bytes, waiting at most timeoutSeconds: >0 bytes read, 0 end of file, -1
     // timeout.
     long read(void* buf, std::size_t n, double timeoutSeconds) const;
+    int answerFd() const { return fd_; }   // what the child writes
+    int commandFd() const { return cmd_; } // serve(): what it reads
     // How the child ended, after its pipe closed: "" for a clean exit 0.
     std::string finish();
     void kill(); // SIGKILL, then finish()
