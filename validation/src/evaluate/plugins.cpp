@@ -1018,6 +1018,8 @@ struct PluginServers::Server
     void lost(PluginStatus status, const std::string& how)
     {
         running = false;
+        if (!busy()) // gone after its last answer: the next call starts another
+            return;
         if (next >= aloneUntil)
             aloneUntil = next + kBlockRecords;
         else
