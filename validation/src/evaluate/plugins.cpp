@@ -979,22 +979,25 @@ struct PluginServers::Server
             ++sent;
         }
     }
-    // What the command pipe takes now; false when the child is gone (its answers' end of file
+    // What the command pipe takes now (nothing when the child is gone: its answers' end of file
     // tells how).
-    bool write()
+    void write()
     {
         const ssize_t n = ::write(child.commandFd(), out.data() + written, out.size() - written);
         if (n > 0)
             written += std::size_t(n);
-        return n >= 0 || errno == EAGAIN || errno == EINTR;
     }
-    // The answers the pipe holds: false at its end of file (the child died or exited).
+    // The answers poll() said the pipe holds: false at its end of file (the child died or
+    // exited) or on a read error.
     bool read()
     {
         char buf[kBlockRecords * sizeof(AnswerRecord)];
-        const long got = child.read(buf, sizeof buf, 0);
+        ssize_t got;
+        do
+            got = ::read(child.answerFd(), buf, sizeof buf);
+        while (got < 0 && errno == EINTR);
         if (got <= 0)
-            return got < 0; // -1: nothing yet (poll said otherwise: a spurious wake-up)
+            return false;
         in.insert(in.end(), buf, buf + got);
         const std::size_t whole = in.size() / sizeof(AnswerRecord);
         for (std::size_t k = 0; k < whole; ++k)
@@ -1110,7 +1113,7 @@ bool PluginServers::exchange(std::size_t k, double timeoutSeconds)
                                [&](const pollfd& p) { return p.fd == fd && p.revents != 0; });
         };
         if (ready(sv->child.commandFd()))
-            sv->write(); // a child gone: its answers' end of file says how
+            sv->write();
         if (ready(sv->child.answerFd()))
         {
             if (!sv->read())
