@@ -212,7 +212,8 @@ Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases&
         {"min_pass_s", tc.minPassSeconds},
         {"warm", config.warm},
         {"note",
-         "single thread; per variant the cases are copied into one contiguous array and "
+         "single thread, pinned to one CPU (cpu; null: not pinned) with the children "
+         "it forks; per variant the cases are copied into one contiguous array and "
          "each pass loops over all of them (repeated to last at least min_pass_s); the "
          "passes of gjk2d's variants are alternated (pass k of each before pass k + 1 of "
          "any); plugin variants are timed on their own. "
@@ -238,7 +239,13 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     tc.budgetSeconds = std::numeric_limits<double>::infinity();
     tc.minPassSeconds = config.minPassSeconds;
     tc.warm = config.warm;
-    const VariantTimings timings = timeEveryVariant(config, cases.prepared, tc);
+    int cpu = -1;
+    VariantTimings timings;
+    {
+        const PinnedToOneCpu pin;
+        cpu = pin.cpu();
+        timings = timeEveryVariant(config, cases.prepared, tc);
+    }
     const auto tTimed = Clock::now();
 
     const TimingResult* base = nullptr;
@@ -249,6 +256,7 @@ BenchResult runBench(const BenchConfig& config, const std::vector<FamilyData>& i
     BenchResult out;
     out.exitCode = cases.rejected > 0 ? kExitInput : kExitPass;
     Json context = benchContext(config, tc, cases);
+    context["timing"]["cpu"] = cpu >= 0 ? Json(cpu) : Json(nullptr);
     context["elapsed_s"] = {{"prepare", seconds(tStart, tPrepared)},
                             {"timing", seconds(tPrepared, tTimed)},
                             {"total", seconds(tStart, Clock::now())}};
@@ -267,10 +275,13 @@ std::string benchTable(const Json& b)
 {
     const Json& c = b["context"];
     std::string s = fmt::format(
-        "{} cases ({} rejected), single thread, {} passes of >= {:g} s, {} queries; *-batch "
+        "{} cases ({} rejected), single thread{}, {} passes of >= {:g} s, {} queries; *-batch "
         "variants: "
         "gjk::distanceBatch on {}\n",
         c["cases_total"].get<std::uint64_t>(), c["cases_rejected"].get<std::uint64_t>(),
+        c["timing"].value("cpu", Json()).is_number()
+            ? fmt::format(" on CPU {}", c["timing"]["cpu"].get<int>())
+            : std::string(),
         c["timing"]["passes"].get<int>(), c["timing"]["min_pass_s"].get<double>(),
         c["timing"]["warm"].get<bool>() ? "warm-started" : "cold (warm for *-warm variants)",
         c.contains("batch_isa") ? c["batch_isa"].get<std::string>() : std::string("?"));

@@ -17,6 +17,7 @@
 #include <memory>
 #include <type_traits>
 
+#include <sched.h>
 #include <unistd.h>
 
 namespace gjkval
@@ -444,6 +445,30 @@ TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const Var
     if (v.plugin->impl.scalar == GJK2D_SCALAR_FLOAT)
         return ownLoopT<float, gjk2d_shape_f>(cases, v, warm, limit);
     return ownLoopT<double, gjk2d_shape_d>(cases, v, warm, limit);
+}
+
+PinnedToOneCpu::PinnedToOneCpu()
+{
+    cpu_set_t before;
+    CPU_ZERO(&before);
+    const int cpu = ::sched_getcpu();
+    if (cpu < 0 || cpu >= CPU_SETSIZE || ::sched_getaffinity(0, sizeof before, &before) != 0)
+        return;
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    CPU_SET(cpu, &one);
+    if (::sched_setaffinity(0, sizeof one, &one) != 0)
+        return;
+    cpu_ = cpu;
+    const auto* bytes = reinterpret_cast<const unsigned char*>(&before);
+    previous_.assign(bytes, bytes + sizeof before);
+}
+
+PinnedToOneCpu::~PinnedToOneCpu()
+{
+    if (cpu_ >= 0)
+        ::sched_setaffinity(0, previous_.size(),
+                            reinterpret_cast<const cpu_set_t*>(previous_.data()));
 }
 
 std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,

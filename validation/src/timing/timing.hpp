@@ -93,6 +93,27 @@ TimedLoop timedLoop(const std::vector<const PreparedCase*>& cases, const Variant
 TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                         bool warm, const TimingConfig& cfg, double pluginTimeoutSeconds);
 
+// `bench`'s timing on the one CPU it runs on when made, with every child forked meanwhile (a
+// peer's own loop, a plugin's server: they inherit the mask), the previous mask back when it ends.
+// Unpinned, the process sleeps while a peer's child runs its pass and wakes on either core: on this
+// project's 2-core machine gjk2d's cold `double` passes then split into two groups (medians 130 ns
+// against fastest passes of 112 on 20,000 random cases), and a pinned run gives 115 to 117
+// (docs/speed.md, "Agreement with harness_box2d time"). cpu() is -1 where pinning failed (then
+// nothing changed).
+class PinnedToOneCpu
+{
+  public:
+    PinnedToOneCpu();
+    ~PinnedToOneCpu();
+    PinnedToOneCpu(const PinnedToOneCpu&) = delete;
+    PinnedToOneCpu& operator=(const PinnedToOneCpu&) = delete;
+    int cpu() const { return cpu_; }
+
+  private:
+    int cpu_ = -1;
+    std::vector<unsigned char> previous_; // the previous cpu_set_t, as bytes
+};
+
 // The passes of several loops alternated (`bench`): one calibration pass each, then pass k of
 // every loop before pass k + 1 of any, so that a drift of the machine's speed falls on all of
 // them alike and their ratios hold within one run. Stops as medianOfPasses() does. A loop whose
