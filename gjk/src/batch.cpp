@@ -453,6 +453,20 @@ template <class T> bool lanesPay(std::span<const DistanceInput<T>> inputs)
     return points <= kDoubleLanesMaxMeanPoints * 2 * double(inputs.size());
 }
 
+} // namespace
+
+BatchIsa bestBatchIsaFor(std::span<const DistanceInput<double>> inputs)
+{
+    return lanesPay(inputs) ? bestBatchIsa() : BatchIsa::Scalar;
+}
+
+BatchIsa bestBatchIsaFor(std::span<const DistanceInput<float>> inputs)
+{
+    return lanesPay(inputs) ? bestBatchIsa() : BatchIsa::Scalar;
+}
+
+namespace
+{
 template <class T>
 void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
                        std::span<DistanceOutput<T>> outputs, const Options& options, BatchIsa isa,
@@ -461,7 +475,7 @@ void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<Simpl
     GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
     const BatchIsa best = bestBatchIsa();
     if (isa == BatchIsa::Best)
-        isa = lanesPay(inputs) ? best : BatchIsa::Scalar;
+        isa = bestBatchIsaFor(inputs);
     else if (std::uint8_t(isa) > std::uint8_t(best))
         isa = best;
     BatchStats st;

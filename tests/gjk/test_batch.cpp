@@ -334,7 +334,13 @@ TEMPLATE_TEST_CASE("batch lanes: the default chooses lanes or the scalar loop by
     large.bind();
     small.bind();
     const BatchIsa lanes = bestBatchIsa(); // Scalar where no lanes are compiled
+    const BatchIsa largeIsa = std::is_same_v<T, double> ? BatchIsa::Scalar : lanes;
     CHECK(checkDefaultChoice<T>(small.inputs) == lanes);
-    CHECK(checkDefaultChoice<T>(large.inputs) ==
-          (std::is_same_v<T, double> ? BatchIsa::Scalar : lanes));
+    CHECK(checkDefaultChoice<T>(large.inputs) == largeIsa);
+    // bestBatchIsaFor() tells the same choice beforehand, also for one pair of each kind (the
+    // every-start variants ask it for one case's input).
+    CHECK(bestBatchIsaFor(std::span<const DistanceInput<T>>(small.inputs)) == lanes);
+    CHECK(bestBatchIsaFor(std::span<const DistanceInput<T>>(large.inputs)) == largeIsa);
+    CHECK(bestBatchIsaFor(std::span<const DistanceInput<T>>(small.inputs.data(), 1)) == lanes);
+    CHECK(bestBatchIsaFor(std::span<const DistanceInput<T>>(large.inputs.data(), 1)) == largeIsa);
 }

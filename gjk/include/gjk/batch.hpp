@@ -52,6 +52,12 @@ constexpr const char* batchIsaName(BatchIsa isa)
 BatchIsa bestBatchIsa();
 bool batchIsaSupported(BatchIsa isa);
 
+// What BatchIsa::Best runs for these inputs: bestBatchIsa(), or Scalar where the lanes lose on
+// shapes of these sizes (gjk/src/batch.cpp, lanesPay). A caller with a loop of its own can keep
+// it where the batch would run the same loop.
+BatchIsa bestBatchIsaFor(std::span<const DistanceInput<double>> inputs);
+BatchIsa bestBatchIsaFor(std::span<const DistanceInput<float>> inputs);
+
 // What a batch did, for measuring lane utilisation (docs/speed.md, "Batches in SIMD lanes").
 struct BatchStats
 {

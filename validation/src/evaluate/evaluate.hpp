@@ -92,7 +92,19 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
 }
 
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
-// from `truth` (a non-finite answer is the farthest) returned.
+// from `truth` (a non-finite answer is the farthest) returned; ties keep the earlier start. Where
+// SIMD lanes pay on the case's shapes (gjk::bestBatchIsaFor: always for float, for double on small
+// shapes), the starts after the cold one are answered as one gjk::distanceBatch, the same input in
+// every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp); elsewhere
+// by the scalar query one start after the other, which is what the batch would run, less its
+// copies. The default campaign: float-every-start's queries 0.65 to 0.52 s (docs/speed.md).
+template <class T> struct StartBatch
+{
+    std::vector<gjk::DistanceInput<T>> inputs;
+    std::vector<gjk::SimplexCache> caches;
+    std::vector<gjk::DistanceOutput<T>> outputs;
+};
+
 template <class T>
 gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, double truth)
 {
@@ -100,10 +112,22 @@ gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, d
     const int nA = in.proxyA.count, nB = in.proxyB.count;
     gjk::DistanceOutput<T> worst = query<T>(p, v); // the cold start
     double worstError = std::abs(double(worst.distance) - truth);
-    auto consider = [&](const gjk::SimplexCache& start)
+    thread_local StartBatch<T> b; // reused: no allocation once a thread has seen as many starts
+    const bool lanes = gjk::bestBatchIsaFor(std::span<const gjk::DistanceInput<T>>(&in, 1)) !=
+                       gjk::BatchIsa::Scalar;
+    b.caches.clear();
+    const int strideA = (nA + 11) / 12, strideB = (nB + 11) / 12;
+    for (int i = 0; i < nA; i += strideA)
+        for (int j = 0; j < nB; j += strideB)
+            b.caches.push_back({1, {i, 0, 0}, {j, 0, 0}});
+    // Edges and triangles of index pairs that are rarely adjacent on Z: whatever GJK makes of them,
+    // every cached vertex is a point of Z, so the answer must still be right.
+    b.caches.push_back({2, {0, nA / 2, 0}, {0, nB / 2, 0}});
+    b.caches.push_back({2, {0, nA - 1, 0}, {nB - 1, 0, 0}});
+    b.caches.push_back({3, {0, nA / 3, (2 * nA) / 3}, {0, nB / 3, (2 * nB) / 3}});
+    b.caches.push_back({3, {0, 0, nA - 1}, {0, nB - 1, 0}});
+    auto consider = [&](const gjk::DistanceOutput<T>& o)
     {
-        gjk::SimplexCache cache = start;
-        const gjk::DistanceOutput<T> o = gjk::distance(in, cache, v.options);
         const double e = std::abs(double(o.distance) - truth);
         if (!(e <= worstError)) // NaN counts as worst
         {
@@ -111,16 +135,19 @@ gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, d
             worstError = e;
         }
     };
-    const int strideA = (nA + 11) / 12, strideB = (nB + 11) / 12;
-    for (int i = 0; i < nA; i += strideA)
-        for (int j = 0; j < nB; j += strideB)
-            consider({1, {i, 0, 0}, {j, 0, 0}});
-    // Edges and triangles of index pairs that are rarely adjacent on Z: whatever GJK makes of them,
-    // every cached vertex is a point of Z, so the answer must still be right.
-    consider({2, {0, nA / 2, 0}, {0, nB / 2, 0}});
-    consider({2, {0, nA - 1, 0}, {nB - 1, 0, 0}});
-    consider({3, {0, nA / 3, (2 * nA) / 3}, {0, nB / 3, (2 * nB) / 3}});
-    consider({3, {0, 0, nA - 1}, {0, nB - 1, 0}});
+    if (!lanes)
+    {
+        for (gjk::SimplexCache& cache : b.caches)
+            consider(gjk::distance(in, cache, v.options));
+        return worst;
+    }
+    b.inputs.assign(b.caches.size(), in);
+    b.outputs.resize(b.caches.size());
+    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(b.inputs),
+                       std::span<gjk::SimplexCache>(b.caches),
+                       std::span<gjk::DistanceOutput<T>>(b.outputs), v.options);
+    for (const gjk::DistanceOutput<T>& o : b.outputs)
+        consider(o);
     return worst;
 }
 
