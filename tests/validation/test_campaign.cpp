@@ -144,6 +144,47 @@ TEST_CASE("a small campaign passes and its report follows the schema", "[campaig
     CHECK(Json::parse(in) == r);
 }
 
+namespace
+{
+// Whether a and b have the same type at every node (== compares numbers across their types).
+bool sameTypes(const nlohmann::json& a, const nlohmann::json& b)
+{
+    if (a.type() != b.type() || a.size() != b.size())
+        return false;
+    if (a.is_object())
+        for (auto it = a.begin(); it != a.end(); ++it)
+            if (!b.contains(it.key()) || !sameTypes(it.value(), b.at(it.key())))
+                return false;
+    if (a.is_array())
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (!sameTypes(a[i], b[i]))
+                return false;
+    return true;
+}
+} // namespace
+
+// What the HTML renderer is given is what it was given before: the report dumped and parsed into
+// nlohmann::json (non-finite doubles null, nonnegative integers unsigned, keys sorted).
+TEST_CASE("the HTML renderer's input is the report's dump, parsed", "[campaign][html]")
+{
+    Json r = run(smallConfig(1)).report;
+    r["z"] = Json::object({{"nan", NAN},
+                           {"inf", -INFINITY},
+                           {"neg", -3},
+                           {"pos", 7},
+                           {"big", std::uint64_t(1) << 63},
+                           {"zero", -0.0},
+                           {"null", nullptr},
+                           {"list", Json::array({1.5, false, "text", Json::array()})}});
+    const nlohmann::json expected = nlohmann::json::parse(r.dump());
+    const nlohmann::json got = forHtmlRenderer(r);
+    CHECK(got == expected);
+    CHECK(got.dump() == expected.dump());
+    CHECK(sameTypes(got, expected));
+    CHECK(got["z"]["nan"].is_null());
+    CHECK(got["z"]["pos"].is_number_unsigned());
+}
+
 TEST_CASE("the report does not depend on the number of threads", "[campaign]")
 {
     const Run one = run(smallConfig(1));

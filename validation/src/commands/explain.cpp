@@ -7,6 +7,7 @@
 #include "evaluate/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
+#include "report/pages.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -166,7 +167,7 @@ int explainCommand(Options& o, const CommandLine&, CLI::App& sub)
         writeFileAtomic(o.exJson, detail.dump(1) + "\n");
 #if defined(GJK2D_HAVE_HTML)
     if (!o.exHtml.empty())
-        writeFileAtomic(o.exHtml, gjk_html::renderCase(nlohmann::json::parse(detail.dump())));
+        writeFileAtomic(o.exHtml, gjk_html::renderCase(forHtmlRenderer(detail)));
 #endif
     flushStdout();
     return outcome.rejected.empty() ? kExitPass : kExitInput;

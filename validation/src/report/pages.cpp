@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
 #include <iterator>
+#include <stdexcept>
 #include <unistd.h>
 
 #if defined(GJK2D_HAVE_HTML)
@@ -26,6 +29,48 @@ namespace
 const char* const kReportFiles[] = {"report.json", "report.md",  "worst-cases.json",
                                     "cases.jsonl", "index.html", "shard.json"};
 } // namespace
+
+nlohmann::json forHtmlRenderer(const Json& j)
+{
+    switch (j.type())
+    {
+    case Json::value_t::object:
+    {
+        nlohmann::json o = nlohmann::json::object();
+        for (const auto& [key, value] : j.items())
+            o.emplace(key, forHtmlRenderer(value));
+        return o;
+    }
+    case Json::value_t::array:
+    {
+        nlohmann::json a = nlohmann::json::array();
+        a.get_ref<nlohmann::json::array_t&>().reserve(j.size());
+        for (const Json& value : j)
+            a.push_back(forHtmlRenderer(value));
+        return a;
+    }
+    case Json::value_t::string:
+        return j.get_ref<const std::string&>();
+    case Json::value_t::boolean:
+        return j.get<bool>();
+    case Json::value_t::number_integer:
+    {
+        const auto v = j.get<std::int64_t>();
+        return v >= 0 ? nlohmann::json(std::uint64_t(v)) : nlohmann::json(v);
+    }
+    case Json::value_t::number_unsigned:
+        return j.get<std::uint64_t>();
+    case Json::value_t::number_float:
+    {
+        const double v = j.get<double>();
+        return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+    }
+    case Json::value_t::null:
+        return nullptr;
+    default: // binary or discarded: the report never holds one
+        throw std::logic_error("report.json holds a value the HTML report cannot take");
+    }
+}
 
 void checkReportDir(const std::string& outDir)
 {
@@ -74,8 +119,7 @@ std::string writeReportPages(const CampaignReport& result, StagedDir& out)
     out.write("report.md", renderMarkdown(result.report));
     out.write("worst-cases.json", caseFileText(result.worstComments, result.worstCases));
 #if defined(GJK2D_HAVE_HTML)
-    out.write("index.html",
-              gjk_html::renderReport(nlohmann::json::parse(result.report.dump()), kReportSchema));
+    out.write("index.html", gjk_html::renderReport(forHtmlRenderer(result.report), kReportSchema));
     const std::string page = "index.html";
 #else
     const std::string page = "report.md";
