@@ -7,6 +7,7 @@
 #include "evaluate/variants.hpp"
 #include "inputs/cases.hpp"
 
+#include "gjk/batch.hpp"
 #include "gjk/distance.hpp"
 
 #include <exact/exact.hpp>
@@ -97,7 +98,7 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
 // shapes), the starts after the cold one are answered as one gjk::distanceBatch, the same input in
 // every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp); elsewhere
 // by the scalar query one start after the other, which is what the batch would run, less its
-// copies. The default campaign: float-every-start's queries 0.65 to 0.52 s (docs/speed.md).
+// copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
 template <class T> struct StartBatch
 {
     std::vector<gjk::DistanceInput<T>> inputs;

@@ -17,7 +17,6 @@
 #include <memory>
 #include <type_traits>
 
-#include <sched.h>
 #include <unistd.h>
 
 namespace gjkval
@@ -449,26 +448,21 @@ TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const Var
 
 PinnedToOneCpu::PinnedToOneCpu()
 {
-    cpu_set_t before;
-    CPU_ZERO(&before);
+    CPU_ZERO(&previous_);
     const int cpu = ::sched_getcpu();
-    if (cpu < 0 || cpu >= CPU_SETSIZE || ::sched_getaffinity(0, sizeof before, &before) != 0)
+    if (cpu < 0 || cpu >= CPU_SETSIZE || ::sched_getaffinity(0, sizeof previous_, &previous_) != 0)
         return;
     cpu_set_t one;
     CPU_ZERO(&one);
     CPU_SET(cpu, &one);
-    if (::sched_setaffinity(0, sizeof one, &one) != 0)
-        return;
-    cpu_ = cpu;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(&before);
-    previous_.assign(bytes, bytes + sizeof before);
+    if (::sched_setaffinity(0, sizeof one, &one) == 0)
+        cpu_ = cpu;
 }
 
 PinnedToOneCpu::~PinnedToOneCpu()
 {
     if (cpu_ >= 0)
-        ::sched_setaffinity(0, previous_.size(),
-                            reinterpret_cast<const cpu_set_t*>(previous_.data()));
+        ::sched_setaffinity(0, sizeof previous_, &previous_);
 }
 
 std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>& loops,

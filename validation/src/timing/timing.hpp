@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include <sched.h>
+
 namespace gjkval
 {
 
@@ -95,11 +97,9 @@ TimedLoop ownTimingLoop(const std::vector<const PreparedCase*>& cases, const Var
 
 // `bench`'s timing on the one CPU it runs on when made, with every child forked meanwhile (a
 // peer's own loop, a plugin's server: they inherit the mask), the previous mask back when it ends.
-// Unpinned, the process sleeps while a peer's child runs its pass and wakes on either core: on this
-// project's 2-core machine gjk2d's cold `double` passes then split into two groups (medians 130 ns
-// against fastest passes of 112 on 20,000 random cases), and a pinned run gives 115 to 117
-// (docs/speed.md, "Agreement with harness_box2d time"). cpu() is -1 where pinning failed (then
-// nothing changed).
+// Unpinned, the process sleeps while a peer's child runs its pass and wakes on either core, and
+// its own passes split into a fast and a slow group (the figures: docs/speed.md, "Against Box2D v3
+// on a quiet machine"). cpu() is -1 where pinning failed (then nothing changed).
 class PinnedToOneCpu
 {
   public:
@@ -111,7 +111,7 @@ class PinnedToOneCpu
 
   private:
     int cpu_ = -1;
-    std::vector<unsigned char> previous_; // the previous cpu_set_t, as bytes
+    cpu_set_t previous_; // the mask before, valid when cpu_ >= 0
 };
 
 // The passes of several loops alternated (`bench`): one calibration pass each, then pass k of
