@@ -25,6 +25,13 @@ Where commands run:
     `scripts/run.sh ARGS` without `--out` runs with `--out SCRATCH/reports/latest` added, so that
     its report lands where the next commands read `reports/latest/` and not in the repository.
 
+A command that needs an optional part of the build (OPTIONAL below: the Box2D v3 adapter, built
+only from Box2D v3 sources the user supplies) must say so beside it, with the part's phrase ("needs
+the Box2D v3 sources") in its `# ...` comment (a block's command) or in its paragraph (an inline
+span); an unmarked one is an error. Where the part is built the command runs; where it is not, it
+is skipped, and each skip is printed first, as a line `skipped: DOC:LINE: REASON: COMMAND`
+(scripts/test.sh's summary collects these lines: docs/testing.md, "Skips").
+
 Some commands are not run as written; RULES below lists each with its reason:
   - "ci": CI itself runs it (the README's test command, scripts/fuzz.sh, the flag matrix);
   - "shrink": a long run (minutes to hours) runs with a smaller budget (every matching shrink
@@ -82,6 +89,15 @@ RULES = [
      "each Google Benchmark program runs for minutes"),
 ]
 
+# The optional parts a documented command may need: (name, pattern on the command, the phrase that
+# marks it in the doc, the file of the build that is there when the part is built, how to get it).
+# A user's clone has no Box2D v3 sources (they are in no Debian package): README.md, "Box2D v3".
+OPTIONAL = [
+    ("box2d-v3", r"--against box2d-v3\b|gjk2d-box2d3\.so", "needs the Box2D v3 sources",
+     "validation/plugins/gjk2d-box2d3.so",
+     "name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE (README.md, \"Box2D v3\")"),
+]
+
 SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare", "merge"]
 # A placeholder: <...>, [...], A|B, "...", or one of the upper-case names the docs use for one.
 PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\.\.\.|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
@@ -94,7 +110,8 @@ LINK = re.compile(r"\]\(([^)#\s]+)(#[^)]*)?\)")
 
 
 def fenced_commands(path):
-    """[(line, command, expected exit)] of the sh and console blocks of one doc."""
+    """[(line, command, expected exit, its marks)] of the sh and console blocks of one doc; the
+    marks are the text of the command's `# ...` comment."""
     out = []
     lang, pending, start = None, "", 0
     for no, line in enumerate(path.read_text().splitlines(), 1):
@@ -104,7 +121,7 @@ def fenced_commands(path):
             continue
         if lang == "console":
             if line.startswith("$ "):
-                out.append((no, line[2:].strip(), 0))
+                out.append((no, line[2:].strip(), 0, ""))
             continue
         if lang != "sh":
             continue
@@ -116,22 +133,25 @@ def fenced_commands(path):
             continue
         text, pending = pending, ""
         expect = re.search(r"#\s*exits (\d+)", text)
+        comment = re.search(r"(^|\s)#(.*)$", text)
         command = re.sub(r"(^|\s)#.*$", "", text).strip()
         if command:
-            out.append((start, re.sub(r"\s+", " ", command), int(expect.group(1)) if expect else 0))
+            out.append((start, re.sub(r"\s+", " ", command), int(expect.group(1)) if expect else 0,
+                        comment.group(2) if comment else ""))
     return out
 
 
 def inline_commands(path):
-    """[(line, span, 0)] of the inline `gjk-validate SUB ...` spans that have options (also
-    `build/release/validation/gjk-validate ...`); a span may wrap across the lines of a paragraph."""
+    """[(line, span, 0, its paragraph)] of the inline `gjk-validate SUB ...` spans that have options
+    (also `build/release/validation/gjk-validate ...`); a span may wrap across the lines of a
+    paragraph, whose text is the span's marks."""
     out, fenced, para, start = [], False, [], 0
 
     def flush():
         for span in re.findall(r"`([^`]+)`", " ".join(para)):
             words = re.sub(r"^build/release/validation/", "", span.strip()).split()
             if len(words) > 2 and words[0] == "gjk-validate" and words[1] in SUBCOMMANDS:
-                out.append((start, re.sub(r"\s+", " ", span.strip()), 0))
+                out.append((start, re.sub(r"\s+", " ", span.strip()), 0, " ".join(para)))
 
     for no, line in enumerate(path.read_text().splitlines(), 1):
         if FENCE.match(line):
@@ -244,6 +264,53 @@ def check_presets(build, errors):
                       f"{real[-1:]} ({flags})")
 
 
+def lacking_part(rel, no, command, marks, build, errors):
+    """Why `command` is skipped: an optional part (OPTIONAL) it needs that this build lacks, or
+    None. One it needs that its doc does not mark is an error, built or not."""
+    reason = None
+    for name, pattern, phrase, built, how in OPTIONAL:
+        if not re.search(pattern, command):
+            continue
+        if phrase.lower() not in re.sub(r"\s+", " ", marks).lower():
+            errors.append(f"{rel}:{no}: `{command}` needs an optional part ({name}): say "
+                          f"\"{phrase}\" beside it (its # comment, or its paragraph)")
+        if not (build / built).exists():
+            reason = f"{phrase}, not given to this build: {how}"
+    return reason
+
+
+def plan(args, build, exe, errors, counts):
+    """[(doc, line, kind, command as run, reason, expected exit)] of every documented command, in
+    document order: what is done with each (disposition, a repeat, a lacking optional part), its
+    options checked against its subcommand's --help."""
+    in_release = build == (ROOT / "build" / "release").resolve()
+    out, done = [], set()
+    for path in DOCS:
+        rel = str(path.relative_to(ROOT))
+        if args.only and rel not in args.only:
+            continue
+        for no, command, expect, marks in sorted(fenced_commands(path) + inline_commands(path)):
+            kind, shown, reason = disposition(command, args.full)
+            if runs_in_root(command) and not in_release and kind in ("run", "shrink"):
+                kind, reason = "ci", "changes to the repository root: checked in build/release only"
+            key = re.sub(r"^build/release/validation/gjk-validate\b", "gjk-validate", shown)
+            key = re.sub(r"^scripts/run\.sh\b", "gjk-validate run", key)  # set-up, build, then this
+            if key.startswith("gjk-validate run "):  # its report is the same on any thread count
+                key = re.sub(r" --threads \d+\b", "", key)
+            lacking = lacking_part(rel, no, command, marks, build, errors)
+            if kind in ("run", "shrink") and lacking:
+                kind, reason = "skipped", lacking
+            elif kind in ("run", "shrink") and key in done:
+                kind, reason = "repeat", "ran above"
+            elif kind in ("run", "shrink"):
+                done.add(key)
+            counts[kind] += 1
+            for o in unknown_options(command, exe):
+                errors.append(f"{rel}:{no}: {command}: {o} is not an option of that subcommand")
+            out.append((rel, no, kind, shown, reason, expect))
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", required=True, help="the build under test (build/release)")
@@ -256,54 +323,42 @@ def main():
     if not exe.exists():
         print(f"check_doc_commands: no {exe}: build gjk-validate first", file=sys.stderr)
         return 2
-    in_release = build == (ROOT / "build" / "release").resolve()
     # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/validation.md, "MPI").
     env = dict(os.environ, PATH=f"{build / 'validation'}:{os.environ['PATH']}",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    errors, counts = [], {"run": 0, "shrink": 0, "ci": 0, "long": 0, "synopsis": 0, "repeat": 0}
+    errors = []
+    counts = {"run": 0, "shrink": 0, "ci": 0, "long": 0, "synopsis": 0, "repeat": 0, "skipped": 0}
     latest_before = repository_latest()
     check_links(errors)
     check_presets(build, errors)
-    work, done = None, set()
-    for path in DOCS:
-        rel = str(path.relative_to(ROOT))
-        if args.only and rel not in args.only:
-            continue
-        for no, command, expect in sorted(fenced_commands(path) + inline_commands(path)):
-            kind, shown, reason = disposition(command, args.full)
-            if runs_in_root(command) and not in_release and kind in ("run", "shrink"):
-                kind, reason = "ci", "changes to the repository root: checked in build/release only"
-            key = re.sub(r"^build/release/validation/gjk-validate\b", "gjk-validate", shown)
-            key = re.sub(r"^scripts/run\.sh\b", "gjk-validate run", key)  # set-up, build, then this
-            if key.startswith("gjk-validate run "):  # its report is the same on any thread count
-                key = re.sub(r" --threads \d+\b", "", key)
-            if kind in ("run", "shrink") and key in done:
-                kind, reason = "repeat", "ran above"
-            counts[kind] += 1
-            for o in unknown_options(command, exe):
-                errors.append(f"{rel}:{no}: {command}: {o} is not an option of that subcommand")
-            if args.list or kind not in ("run", "shrink"):
+    commands = plan(args, build, exe, errors, counts)
+    # The skips first: CTest keeps only the head of a passing test's output (1,024 bytes).
+    for rel, no, kind, shown, reason, _ in commands:
+        if kind == "skipped":
+            print(f"skipped: {rel}:{no}: {reason}: {shown}", flush=True)
+    work = None
+    for rel, no, kind, shown, reason, expect in commands:
+        if args.list or kind not in ("run", "shrink"):
+            if kind != "skipped":
                 print(f"{rel}:{no}: {kind}{' (' + reason + ')' if reason else ''}: {shown}")
-            if args.list or kind not in ("run", "shrink"):
-                continue
-            done.add(key)
-            if work is None:
-                work = scratch_dir(build)
-            cwd = ROOT if runs_in_root(command) else work
-            if re.match(r"^scripts/run\.sh\b", shown) and "--out" not in shown.split():
-                shown += " --out " + shlex.quote(str(work / "reports" / "latest"))
-            t0 = time.monotonic()
-            r = subprocess.run(["bash", "-c", shown], cwd=cwd, env=env, capture_output=True,
-                               text=True)
-            took = time.monotonic() - t0
-            status = "ok" if r.returncode == expect else "FAILED"
-            print(f"{rel}:{no}: {status} in {took:.1f} s (exit {r.returncode}): {shown}", flush=True)
-            if r.returncode != expect:
-                tail = "\n".join((r.stdout + r.stderr).strip().splitlines()[-8:])
-                errors.append(f"{rel}:{no}: `{shown}` exited {r.returncode}, expected {expect}:\n"
-                              f"{tail}")
+            continue
+        if work is None:
+            work = scratch_dir(build)
+        cwd = ROOT if runs_in_root(shown) else work
+        if re.match(r"^scripts/run\.sh\b", shown) and "--out" not in shown.split():
+            shown += " --out " + shlex.quote(str(work / "reports" / "latest"))
+        t0 = time.monotonic()
+        r = subprocess.run(["bash", "-c", shown], cwd=cwd, env=env, capture_output=True, text=True)
+        took = time.monotonic() - t0
+        status = "ok" if r.returncode == expect else "FAILED"
+        print(f"{rel}:{no}: {status} in {took:.1f} s (exit {r.returncode}): {shown}", flush=True)
+        if r.returncode != expect:
+            tail = "\n".join((r.stdout + r.stderr).strip().splitlines()[-8:])
+            errors.append(f"{rel}:{no}: `{shown}` exited {r.returncode}, expected {expect}:\n"
+                          f"{tail}")
     print("commands: {run} run as written, {shrink} shrunk, {ci} run by CI elsewhere, {long} not "
-          "run (long), {synopsis} synopses option-checked, {repeat} repeats".format(**counts))
+          "run (long), {synopsis} synopses option-checked, {repeat} repeats, {skipped} skipped "
+          "(an optional part not built)".format(**counts))
     if repository_latest() != latest_before:
         errors.append("a documented command replaced the repository's reports/latest/ (a "
                       "person's default campaign): commands must write in the scratch directory")

@@ -19,10 +19,13 @@ import json
 import math
 import os
 import pathlib
+import re
 import shlex
 import subprocess
 import sys
 import tempfile
+
+from check_doc_commands import OPTIONAL  # the optional parts a documented command may need
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TITLE = "# How accurate are the distance queries people use?"
@@ -271,12 +274,28 @@ def rel(arg):
     return arg
 
 
+def plugins_for(plugins, variant):
+    """The plugin files of the command that explains `variant`'s worst case, and what the command
+    needs that a user's clone lacks (" (needs ...)", or ""): every plugin the README's first command
+    builds, and an optional one (check_doc_commands.OPTIONAL: the Box2D v3 adapter) only in its own
+    variant's command, marked so that the docs test skips it where the part is not built."""
+    files, needs = [], ""
+    for p in plugins:
+        optional = [o for o in OPTIONAL if re.search(o[1], "--plugin " + p["file"])]
+        if not optional:
+            files.append(p["file"])
+        elif variant in p.get("variants", []):
+            files.append(p["file"])
+            needs = f" ({optional[0][2]})"
+    return files, needs
+
+
 def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
     out = ["", "### The worst case of each peer", "",
            "Each plugin variant's case with the largest error relative to gjk2d's bound (a "
            "non-finite answer is in the non-finite column, not here), drawn by this script from "
            "the command under it."]
-    files = [p["file"] for p in report["context"].get("plugins", [])]
+    plugins = report["context"].get("plugins", [])
     svg_dir.mkdir(parents=True, exist_ok=True)
     for old in svg_dir.glob("*.svg"):  # the drawings of peers no longer in the report go too
         old.unlink()
@@ -286,6 +305,7 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
             out += ["", f"**{v}**: no case with an error to draw."]
             continue
         family, case, ratio = w
+        files, needs = plugins_for(plugins, v)
         cmd = explain_command(gjk, report, family, case, files)
         js = work / f"explain-{v}.json"
         code = run(cmd + ["--json", str(js)], must=False)
@@ -293,14 +313,14 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
         if code not in (0, 1) or not js.is_file():
             print(f"peers_doc.py: {v}'s worst case not drawn: explain exited {code}",
                   file=sys.stderr)
-            out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
+            out += ["", f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
                     f"`{shlex.join(shown)}` exited {code}."]
             continue
         detail = json.loads(js.read_text())
         svg = svg_dir / f"{v}.svg"
         drawn = draw(detail, v, svg)
         ans = detail.get("variants", {}).get(v, {})
-        out += ["", f"**{v}**: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
+        out += ["", f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
                 f"{g(num(exact_for(detail, v).get('distance')), '.17g')}, {v} "
                 f"{g(num(ans.get('distance')), '.17g')}. Command: `{shlex.join(shown)}`"]
         if drawn:

@@ -3,16 +3,48 @@
 campaign, into a temporary document seeded with hand-written text around the markers. Checks:
 the generated part has a table row for every variant of every plugin the report's context lists
 (and one per family group), its largest and p99 errors those of the report (one family per group
-here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Writes only under a temporary directory."""
+here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Each
+worst case's command loads every plugin the README's first command builds, and an optional one
+(the Box2D v3 adapter, check_doc_commands.OPTIONAL) only in its own variant's paragraph, which says
+what it needs. Writes only under a temporary directory."""
 import argparse
 import json
 import pathlib
+import re
 import subprocess
 import sys
 import tempfile
 
 BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
 TITLE = "# How accurate are the distance queries people use?"
+
+
+def worst_case_commands(text, plugins, script):
+    """The errors of the worst cases' commands: which plugins each loads, and its mark."""
+    sys.path.insert(0, str(pathlib.Path(script).parent))
+    from check_doc_commands import OPTIONAL
+    errors, seen = [], 0
+    for p in plugins:
+        optional = [o for o in OPTIONAL if re.search(o[1], p["file"])]
+        for v in p["variants"]:
+            para = next((l for l in text.splitlines() if l.startswith(f"**{v}**")), None)
+            if para is None or "Command: `" not in para:
+                continue  # a variant with no case to draw has no command
+            seen += 1
+            for q in plugins:
+                loads = f"--plugin {q['file']}" in para or re.search(
+                    r"--plugin \S*" + re.escape(pathlib.Path(q["file"]).name) + r"\b", para)
+                other = [o for o in OPTIONAL if re.search(o[1], q["file"])]
+                if bool(loads) != (not other or q is p):
+                    errors.append(f"{v}'s worst case command {'loads' if loads else 'lacks'} "
+                                  f"{q['file']}")
+            if optional and f"**{v}** ({optional[0][2]})" not in para:
+                errors.append(f"{v}'s worst case needs {optional[0][0]} and does not say so")
+            if not optional and "(needs" in para.split("Command:")[0]:
+                errors.append(f"{v}'s worst case says it needs an optional part")
+    if seen == 0:
+        errors.append("no worst case with a command: nothing checked")
+    return errors
 
 
 def main():
@@ -57,6 +89,7 @@ def main():
                         errors.append(f"no table row for {v} in {group}")
                 if not (t / "peers" / f"{v}.svg").is_file():
                     errors.append(f"no drawing peers/{v}.svg")
+        errors += worst_case_commands(text, plugins, a.script)
         # Each group here holds one family: the joined histograms' p99 and max must be that
         # family's, as the runner computed them (Hist::percentile).
         cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),

@@ -31,8 +31,8 @@ struct ShippedPeer
 // Box2D 2.4.1, Box2D v3 and Bullet join (about 51 s); FCL, planck.js and GEOS run under --peers.
 inline constexpr ShippedPeer kShippedPeers[] = {
     {"gjk2d-box2d.so", true, "Debian libbox2d-dev"},
-    {"gjk2d-box2d3.so", true, "a Box2D v3 source tree named by -DGJK2D_BOX2D3_SOURCE=...",
-     "box2d-v3"},
+    {"gjk2d-box2d3.so", true,
+     "a Box2D v3 source tree named by GJK2D_BOX2D3_SOURCE (README.md, \"Box2D v3\")", "box2d-v3"},
     {"gjk2d-fcl.so", false, "Debian libfcl-dev"},
     {"gjk2d-bullet-float.so", true, "Debian libbullet-dev"},
     {"gjk2d-bullet-double.so", true, "Debian libbullet-dev"},
