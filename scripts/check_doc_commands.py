@@ -332,7 +332,8 @@ def main():
     check_links(errors)
     check_presets(build, errors)
     commands = plan(args, build, exe, errors, counts)
-    # The skips first: CTest keeps only the head of a passing test's output (1,024 bytes).
+    # The skips first: CTest keeps only the head of a passing test's output (1,024 bytes) unless
+    # told otherwise (scripts/test.sh does: --test-output-size-passed).
     for rel, no, kind, shown, reason, _ in commands:
         if kind == "skipped":
             print(f"skipped: {rel}:{no}: {reason}: {shown}", flush=True)

@@ -6,7 +6,8 @@ Two kinds of skip are counted (docs/testing.md, "Skips"):
     start with `skipped: `, else the last line it printed;
   - a part of a passing test that it could not run: each line of its output that starts with
     `skipped: ` (the docs test prints one for each documented command whose optional part is not
-    built, before anything else, since CTest keeps only the head of a passing test's output).
+    built, before anything else: CTest keeps only the head of a passing test's output unless
+    --test-output-size-passed says otherwise, as scripts/test.sh does).
 
 Usage: scripts/skipped_tests.py STAGE JUNIT.xml. It prints the skips with their reasons, then the
 stage's count as one line, `STAGE: N passed, N failed, N skipped`; exit 0, or 2 when the file is
@@ -32,7 +33,8 @@ def summary(stage, root):
             parts += [f"- {case.get('name')}: {r}" for r in reasons(output)]
     failed = sum(1 for case in root.iter("testcase") if case.find("failure") is not None)
     passed = sum(1 for _ in root.iter("testcase")) - failed - len(tests)
-    head = f"skips ({stage}): {len(tests)} tests skipped, {len(parts)} parts of passing tests skipped"
+    head = (f"skips ({stage}): {len(tests)} {'test' if len(tests) == 1 else 'tests'} skipped, "
+            f"{len(parts)} {'part' if len(parts) == 1 else 'parts'} of passing tests skipped")
     return [head] + tests + parts + [f"{stage}: {passed} passed, {failed} failed, {len(tests)} skipped"]
 
 

@@ -30,7 +30,7 @@ Chromium missing
 </system-out></testcase>
 </testsuite>
 """
-SUMMARY = """skips (release): 2 tests skipped, 1 parts of passing tests skipped
+SUMMARY = """skips (release): 2 tests skipped, 1 part of passing tests skipped
 - v3: no sources
 - chromium: Chromium missing
 - docs: README.md:9: needs X: gjk-validate y
