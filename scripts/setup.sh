@@ -15,12 +15,20 @@ set -euo pipefail
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).
-# The peers (docs/peers.md): libfcl-dev (FCL 0.7), libbullet-dev (Bullet 3.24), python3-shapely
-# (GEOS through shapely, run by Debian's /usr/bin/python3); planck.js comes from the npm registry
-# (scripts/setup_npm.sh, below).
+# The peers (docs/peers.md): each folder of validation/plugins/ names its Debian packages in its
+# peer.txt (`package` lines: FCL, Bullet, GEOS through shapely); planck.js comes from the npm
+# registry (scripts/setup_npm.sh, below).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
-          openmpi-bin libopenmpi-dev dpkg-dev pkgconf libfcl-dev libbullet-dev python3-shapely)
+          openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
+for peer in "$(dirname "$0")"/../validation/plugins/*/peer.txt; do
+  while read -r word rest; do
+    if [[ "$word" == package ]]; then
+      read -r -a named <<<"$rest"
+      packages+=("${named[@]}")
+    fi
+  done <"$peer"
+done
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3 clang clang-format)
   # The Python package (python/, docs/python.md): built against Debian's /usr/bin/python3.

@@ -1,6 +1,6 @@
 // gjk2d.validate's C++ side (docs/python.md, "Validating your own GJK from Python"): a Python
-// callable registered as an in-process variant (validation/src/evaluate/in_process.hpp), then
-// `gjk-validate run` in this process, through the very entry point the program uses
+// callable registered as an in-process variant (validation/src/implementations/in_process.hpp),
+// then `gjk-validate run` in this process, through the very entry point the program uses
 // (runCommandLine), with the argument vector python/gjk2d/_validate.py builds from validate()'s
 // keywords. Truth, judgement, statistics, timing and report are the runner's, not a copy.
 // The campaign runs with the GIL released; each call of the callable takes it back. Nothing forks:
@@ -11,7 +11,7 @@
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "evaluate/evaluate.hpp"
-#include "evaluate/in_process.hpp"
+#include "implementations/in_process.hpp"
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>

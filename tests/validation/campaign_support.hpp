@@ -2,7 +2,7 @@
 #pragma once
 
 #include "campaign/campaign.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/families.hpp"
 #include "statistics/makeup.hpp"
 

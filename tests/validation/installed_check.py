@@ -92,7 +92,7 @@ def main():
                 fail("no family file:{} in the report: {}".format(os.path.basename(f), families))
         plugins = sorted({v["plugin"]["path"] for v in report["variants"] if "plugin" in v})
         names = sorted(os.path.basename(p) for p in plugins)
-        # The default campaign's peers (validation/src/evaluate/peers.hpp), each from the prefix;
+        # The default campaign's peers (validation/src/implementations/peers.hpp), each from the prefix;
         # Box2D v3 is there when the build found a Box2D v3 tree (GJK2D_BOX2D3_SOURCE).
         default_peers = {"gjk2d-box2d.so", "gjk2d-bullet-float.so", "gjk2d-bullet-double.so"}
         if not default_peers <= set(names) or not set(names) <= default_peers | {"gjk2d-box2d3.so"} or \

@@ -3,7 +3,7 @@
 // cases where plain double is furthest off (near touching, mixed and extreme scales, a vertex at
 // 3.6e18), and the header-only stages decide most of them without the exact fallback.
 #include "evaluate/evaluate.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
 

@@ -4,7 +4,7 @@
 // in double) and is valid case-file input, and every family's make-up checks hold.
 #include "campaign/campaign.hpp"
 #include "campaign_support.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/engine.hpp"
 #include "inputs/families.hpp"
 

@@ -1,8 +1,8 @@
-// In-process variants (evaluate/in_process.hpp): answered by a callback in the campaign's own
-// process, judged, counted and timed as any plugin's variant. The Python package's gjk2d.validate
-// stands on them; python/tests/test_validate.py checks the Python side.
+// In-process variants (implementations/in_process.hpp): answered by a callback in the campaign's
+// own process, judged, counted and timed as any plugin's variant. The Python package's
+// gjk2d.validate stands on them; python/tests/test_validate.py checks the Python side.
 #include "campaign/campaign.hpp"
-#include "evaluate/in_process.hpp"
+#include "implementations/in_process.hpp"
 
 #include <catch2/catch.hpp>
 

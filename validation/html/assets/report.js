@@ -132,7 +132,7 @@
 
   // Each variant of a page is drawn with a colour and a marker shape, and no two variants of the page
   // share both. This is the rule's one home (docs/report.md, "Variant colours and markers"):
-  //  - gjk2d's built-in variants (validation/src/evaluate/variants.cpp) keep their fixed colours,
+  //  - gjk2d's built-in variants (validation/src/implementations/variants.cpp) keep their fixed colours,
   //    in hue pairs (the double variant dark, its float twin light), and the circle: the same on
   //    every page whatever else it lists;
   //  - every other name (a plugin, an external implementation) gets a slot of EXTRA_VARIANT_COLORS x

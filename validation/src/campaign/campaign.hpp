@@ -5,7 +5,7 @@
 #include "common/context.hpp"
 #include "common/output.hpp"
 #include "evaluate/evaluate.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
 #include "inputs/sources.hpp"

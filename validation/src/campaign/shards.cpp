@@ -3,8 +3,8 @@
 #include "campaign/state.hpp"
 
 #include "common/output.hpp"
-#include "evaluate/peers.hpp"
-#include "evaluate/plugins.hpp"
+#include "implementations/peers.hpp"
+#include "implementations/plugins.hpp"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // built from the folded (or merged) state.
 #include "campaign/state.hpp"
 
-#include "evaluate/peers.hpp"
+#include "implementations/peers.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>

@@ -2,10 +2,13 @@
 #include "timing/bench.hpp"
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
+#include "commands/plugin_options.hpp"
 #include "common/output.hpp"
-#include "evaluate/peers.hpp"
-#include "evaluate/plugins.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/peers.hpp"
+#include "implementations/plugins.hpp"
+#include "implementations/variants.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -30,7 +33,7 @@ struct Options
 // timing loop. InputError (exit 2) otherwise, naming what is missing.
 const VariantInfo* againstVariant(const std::string& name, double timeoutSeconds)
 {
-    for (const ShippedPeer& peer : kShippedPeers)
+    for (const ShippedPeer& peer : shippedPeers())
         if (peer.againstName && name == peer.againstName)
         {
             const std::string path = shippedPeerPath(peer);

@@ -17,8 +17,6 @@
 namespace gjkval
 {
 
-struct VariantInfo;
-
 // Ranges of the numeric options (docs/validation.md).
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxPasses = 1000;
@@ -71,60 +69,6 @@ Subcommand addList(CLI::App& app, const CommandLine& line);
 Subcommand addCompare(CLI::App& app, const CommandLine& line);
 Subcommand addMerge(CLI::App& app, const CommandLine& line);
 
-// run's and merge's last step: the report into `out` (committed, with the plugins' logs), then
-// the terminal summary (with every family x variant when `verbose`) and the page's path.
-struct Campaign;
-struct CampaignReport;
-class StagedDir;
-void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool verbose);
-// One line on stderr per plugin that printed: how much, and its log in `dir`.
-struct PluginLog;
-void printPluginLogs(const std::vector<PluginLog>& logs, const std::filesystem::path& dir);
-// merge's and mpirun's DIR/cases.jsonl: the shards' files (files[s] is shard s's) joined in case
-// order (joinPerCase). InputError naming a file that cannot be opened, followed by `hint`.
-void writeJoinedPerCase(const Campaign& camp, std::size_t chunkCases,
-                        const std::vector<std::string>& files, StagedDir& out,
-                        const std::string& hint = {});
-
-// --plugin PATH (repeatable), --judge NAME, --plugin-timeout SECONDS, --no-default-plugins
-// (docs/validate-your-gjk.md), --peers (docs/peers.md).
-// Whether the shipped plugins' variants join the command's default variant list (run), or are
-// loaded only for --variants to name them.
-enum class ShippedPlugins
-{
-    JoinDefaultList,
-    OnlyNamed
-};
-// Whether the command judges variants (--judge); bench does not, and refuses it (exit 2).
-enum class Judging
-{
-    Judges,
-    RefusesJudge
-};
-struct PluginOptions
-{
-    std::vector<std::string> paths, judge;
-    double timeoutSeconds = 5; // kDefaultPluginTimeoutSeconds
-    bool noDefault = false;
-    bool peers = false; // --peers: every installed shipped peer, its variants added
-    bool judges = true;
-};
-void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped,
-                      Judging judging = Judging::Judges);
-// The shipped plugins (unless --no-default-plugins; those of the default campaign, every installed
-// one with --peers) and the --plugin ones, loaded: InputError (exit 2) naming the file when one
-// cannot be used or a --plugin file is given twice, or with both --peers and --no-default-plugins.
-struct LoadedPlugins
-{
-    std::vector<const VariantInfo*> shipped, given;
-};
-LoadedPlugins loadPlugins(const PluginOptions& o);
-// --variants LIST with the plugins: loadPlugins(), so that LIST can name their implementations;
-// then LIST's variants, the shipped plugins' when they join the default list and LIST is the
-// default or --peers is given, and every --plugin one; then --judge.
-std::vector<const VariantInfo*> selectVariants(const std::string& list, const PluginOptions& o,
-                                               ShippedPlugins shipped);
-
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.
 void checkArgsUtf8(int argc, char** argv);
@@ -145,14 +89,5 @@ void checkCaseFiles(const std::vector<std::string>& files);
 // exceeds the machine's physical memory. streamed: the command holds only the engine families'
 // cases (run); else every case (generate, bench, search, explain).
 void checkFamilies(const std::vector<std::string>& specs, bool streamed);
-// Test-only: GJK2D_VALIDATE_TEST_FAULT=logic_error|bad_alloc|unknown makes the program throw that
-// once its arguments are checked, so that tests reach the top-level handlers (exit codes 4, 5).
-void testFault();
-// When path is not empty: writes text() there whole (or leaves the file as it was) and prints
-// "label: path".
-void writeOutput(const char* label, const std::string& path,
-                 const std::function<std::string()>& text);
-// The last check of a command: what it printed reached standard output.
-void flushStdout();
 
 } // namespace gjkval

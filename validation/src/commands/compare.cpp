@@ -2,6 +2,8 @@
 // better, exit 1 when one regressed beyond its tolerance (report/compare.hpp states the rule).
 #include "report/compare.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
 #include "common/output.hpp"
 #include "report/report.hpp"
 

@@ -2,9 +2,12 @@
 // result, the errors), as text, CaseDetail JSON or the iteration viewer page.
 #include "report/explain.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
+#include "commands/plugin_options.hpp"
 #include "common/output.hpp"
 #include "evaluate/evaluate.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
 #include "report/pages.hpp"

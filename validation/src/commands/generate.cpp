@@ -1,6 +1,7 @@
 // gjk-validate generate: a family's cases written to a gjk-cases/1 file.
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
 #include "common/output.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"

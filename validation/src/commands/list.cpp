@@ -1,8 +1,10 @@
 // gjk-validate list: the families and the variants, the plugins' among them.
 #include "commands/command_line.hpp"
-#include "evaluate/peers.hpp"
-#include "evaluate/plugins.hpp"
-#include "evaluate/variants.hpp"
+#include "commands/outputs.hpp"
+#include "commands/plugin_options.hpp"
+#include "implementations/peers.hpp"
+#include "implementations/plugins.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/families.hpp"
 #include "report/report.hpp"
 
@@ -19,7 +21,7 @@ void printShippedPeers()
 {
     std::printf("shipped peers (docs/peers.md; run loads the default ones, run --peers every "
                 "built one; --peers lists their variants above):\n");
-    for (const ShippedPeer& peer : kShippedPeers)
+    for (const ShippedPeer& peer : shippedPeers())
     {
         const std::string path = shippedPeerPath(peer);
         if (path.empty())

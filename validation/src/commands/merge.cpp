@@ -2,6 +2,8 @@
 // campaign's report, the same as the one-process run's, timing fields aside.
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
 #include "common/output.hpp"
 #include "inputs/cases.hpp"
 #include "report/report.hpp"

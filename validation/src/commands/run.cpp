@@ -1,9 +1,12 @@
 // gjk-validate run: a campaign, from the command line to the report directory.
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
+#include "commands/plugin_options.hpp"
 #include "common/output.hpp"
-#include "evaluate/plugins.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/plugins.hpp"
+#include "implementations/variants.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>

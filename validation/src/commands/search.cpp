@@ -2,8 +2,10 @@
 #include "campaign/search.hpp"
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
+#include "commands/fault.hpp"
+#include "commands/outputs.hpp"
 #include "common/output.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>

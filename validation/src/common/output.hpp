@@ -36,7 +36,7 @@ class OutputError : public std::runtime_error
 
 // Writes all n bytes to fd, through short writes and EINTR. False when a write fails, with errno
 // set (ENOSPC for a write that wrote nothing). Throws nothing and allocates nothing: a forked child
-// (evaluate/plugins.cpp) calls it before _exit.
+// (implementations/plugins.cpp) calls it before _exit.
 inline bool writeAllBytes(int fd, const void* data, std::size_t n) noexcept
 {
     const char* p = static_cast<const char*>(data);

@@ -3,7 +3,7 @@
 // the bound for every report, test and exit code.
 #pragma once
 
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 
 #include <string>
 

@@ -1,8 +1,9 @@
+// One case through the pipeline's middle: its exact truths (phase 1), every variant's answer
+// (phase 2: gjk2d's queries here, the plugins' through the implementations layer), each answer's
+// judgement against the truth, and the witness points' distances to their shapes (phase 3).
 #include "evaluate/evaluate.hpp"
 
 #include "inputs/geometry.hpp"
-
-#include <exact/correct_fallback.hpp>
 
 #include <fmt/format.h>
 
@@ -41,85 +42,6 @@ template <class T> void fillOutput(const gjk::DistanceOutput<T>& o, VariantOutco
     v.path = o.path;
 }
 
-Json exactJson(const exact::Result& r)
-{
-    Json j;
-    j["distance"] = num(r.distance);
-    j["squared"] = r.squaredNum + "/" + r.squaredDen;
-    j["overlap"] = r.overlap;
-    return j;
-}
-
-Json shapeDetail(const ShapeIn& s)
-{
-    Json j;
-    Json pts = Json::array();
-    for (const auto& p : s.points)
-        pts.push_back(pt(p[0], p[1]));
-    j["points"] = std::move(pts);
-    j["radius"] = num(s.radius);
-    j["transform"] = {{"p", pt(s.px, s.py)}, {"q", pt(s.c, s.s)}};
-    Json w = Json::array();
-    for (const auto& p : worldPoints(s))
-        w.push_back(pt(p[0], p[1]));
-    j["world"] = std::move(w);
-    return j;
-}
-
-template <class T> Json traceJson(const gjk::Trace<T>& tr)
-{
-    const gjk::Transform<double> f{{double(tr.frame.p.x), double(tr.frame.p.y)},
-                                   {double(tr.frame.q.c), double(tr.frame.q.s)}};
-    // A rescaled query's trace is in the scaled compute frame (Trace::scaleExponent).
-    const int e = -tr.scaleExponent;
-    auto point = [&f, e](gjk::Vec2<T> v)
-    {
-        const auto w = gjk::transformPoint(
-            f, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
-        return pt(w.x, w.y);
-    };
-    auto vec = [&f, e](gjk::Vec2<T> v)
-    {
-        const auto w = gjk::rotate(
-            f.q, gjk::Vec2<double>{std::ldexp(double(v.x), e), std::ldexp(double(v.y), e)});
-        return pt(w.x, w.y);
-    };
-    auto vertex = [&](const gjk::SimplexVertex<T>& sv, bool withWeight)
-    {
-        Json j;
-        j["w"] = vec(sv.w);
-        j["wA"] = point(sv.wA);
-        j["wB"] = point(sv.wB);
-        if (withWeight)
-            j["a"] = num(double(sv.a));
-        j["iA"] = sv.indexA;
-        j["iB"] = sv.indexB;
-        return j;
-    };
-    Json steps = Json::array();
-    for (const auto& s : tr.steps)
-    {
-        Json j;
-        Json simplex = Json::array();
-        for (int i = 0; i < s.simplex.count; ++i)
-            simplex.push_back(vertex(s.simplex.v[i], true));
-        j["simplex"] = std::move(simplex);
-        j["closest"] = vec(s.closest);
-        j["direction"] = vec(s.direction);
-        j["support"] = s.hasSupport ? vertex(s.support, false) : Json(nullptr);
-        steps.push_back(std::move(j));
-    }
-    return steps;
-}
-
-template <class T> Json tracedRun(const Case& c, const VariantInfo& v, gjk::DistanceOutput<T>& out)
-{
-    const PreparedCase p = prepare(c);
-    gjk::Trace<T> tr;
-    out = query<T>(p, v, &tr);
-    return traceJson(tr);
-}
-
 } // namespace
 
 const char* misclassName(Misclass m)
@@ -135,47 +57,6 @@ const char* misclassName(Misclass m)
     default:
         return nullptr;
     }
-}
-
-PreparedCase prepare(const Case& c)
-{
-    PreparedCase p;
-    p.ad.reserve(c.a.points.size());
-    p.af.reserve(c.a.points.size());
-    p.bd.reserve(c.b.points.size());
-    p.bf.reserve(c.b.points.size());
-    for (const auto& q : c.a.points)
-    {
-        p.ad.push_back({q[0], q[1]});
-        p.af.push_back({float(q[0]), float(q[1])});
-    }
-    for (const auto& q : c.b.points)
-    {
-        p.bd.push_back({q[0], q[1]});
-        p.bf.push_back({float(q[0]), float(q[1])});
-    }
-    p.xad = {{c.a.px, c.a.py}, {c.a.c, c.a.s}};
-    p.xbd = {{c.b.px, c.b.py}, {c.b.c, c.b.s}};
-    p.xaf = {{float(c.a.px), float(c.a.py)}, {float(c.a.c), float(c.a.s)}};
-    p.xbf = {{float(c.b.px), float(c.b.py)}, {float(c.b.c), float(c.b.s)}};
-    p.rad = c.a.radius;
-    p.rbd = c.b.radius;
-    p.raf = float(c.a.radius);
-    p.rbf = float(c.b.radius);
-    p.floatOk = representableInFloat(c);
-    auto convex = [](const auto& pts)
-    {
-        if (int(pts.size()) <= kLinearSupportMaxPoints)
-            return true;
-        std::vector<P2> q;
-        q.reserve(pts.size());
-        for (const auto& v : pts)
-            q.push_back({double(v.x), double(v.y)});
-        return inConvexOrder(q);
-    };
-    p.binaryOk[0] = convex(p.ad) && convex(p.bd);
-    p.binaryOk[1] = p.floatOk && convex(p.af) && convex(p.bf);
-    return p;
 }
 
 const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput)
@@ -434,19 +315,12 @@ void classifyAnswer(VariantOutcome& v, bool truthZero)
 }
 } // namespace
 
-namespace
-{
-// Whether a judged answer fails: the one rule, for judge() and for acceptTwoCommonPoints(). Cases
-// GJK flags out of range are not judged (docs/error-bound.md, assumptions); a certified interval
-// that misses the truth, or a correctly rounded distance that is not the exact side's, always
-// fails.
 bool failedAnswer(const VariantOutcome& v)
 {
     return (!v.outOfRange &&
             (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit || v.beyondBound)) ||
            (v.certified && !v.intervalContains) || v.bitMismatch;
 }
-} // namespace
 
 void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
 {
@@ -470,12 +344,6 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
         v.bitMismatch = std::bit_cast<std::uint64_t>(v.distance) !=
                         std::bit_cast<std::uint64_t>(truth.distance);
     v.failed = failedAnswer(v);
-}
-
-void completeExactly(const gjk::DistanceInput<double>& in, const gjk::Options& options,
-                     gjk::DistanceOutput<double>& out)
-{
-    exact::completeCorrectlyRounded(in, options, out);
 }
 
 namespace
@@ -561,157 +429,6 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
     }
 }
 
-namespace
-{
-// A case's shapes on the exact side, as given and rounded to float: computeTruth's prepared shapes
-// (TruthShapes), or prepared here when a caller gave none.
-class ExactShapes
-{
-  public:
-    ExactShapes(const Case& c, const TruthShapes* truth) : c_(c), truth_(truth) {}
-    // max(0, dist(p, shape) - radius), correctly rounded: exact::pointToShapeDistance's value
-    // (decided in floating point or by its GMP route); `exactCount` counts the points the GMP
-    // route measured.
-    double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
-    {
-        Pair& s = get(isFloat);
-        const exact::Point q{p[0], p[1]};
-        bool gmp = false;
-        const double d = exact::pointToShapeDistance(ofA ? *s.pa : *s.pb, q, &gmp);
-        exactCount += gmp ? 1 : 0;
-        return d;
-    }
-
-  private:
-    struct Pair
-    {
-        const exact::PreparedShape *pa = nullptr, *pb = nullptr;
-    };
-    Pair& get(bool isFloat)
-    {
-        const int t = isFloat ? 1 : 0;
-        if (!have_[t])
-        {
-            Pair& s = shapes_[t];
-            if (truth_ && truth_->a[t] && truth_->b[t])
-            {
-                s.pa = &*truth_->a[t];
-                s.pb = &*truth_->b[t];
-            }
-            else
-            {
-                own_.a[t].emplace(toExact(c_.a, isFloat), "shape A");
-                own_.b[t].emplace(toExact(c_.b, isFloat), "shape B");
-                s.pa = &*own_.a[t];
-                s.pb = &*own_.b[t];
-            }
-            have_[t] = true;
-        }
-        return shapes_[t];
-    }
-    const Case& c_;
-    const TruthShapes* truth_;
-    TruthShapes own_;
-    Pair shapes_[2];
-    bool have_[2] = {false, false};
-};
-
-// The witness verdict (judge() left the rest): off its shape comes before the gap.
-// An answer of overlap (distance 0) may give two points that each lie in both shapes instead of
-// one (docs/validate-your-gjk.md, "The whole answer is judged"): Bullet's penetration points, Box2D
-// v3's points on each outline. Either point proves the overlap. Then the witness gap is how far
-// the points are from the other shape, and within the witness bound the answer is valid: the
-// failure WitnessGap set from ||pB - pA|| is withdrawn (the other reasons stand).
-void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
-{
-    v.witnessPoints += 2;
-    const double aInB = shapes.distance(isFloat, false, v.pointA, v.witnessExact);
-    const double bInA = shapes.distance(isFloat, true, v.pointB, v.witnessExact);
-    const double gap = std::max(aInB, bInA);
-    if (!(gap <= v.witnessBound))
-        return;
-    v.witnessGap = gap;
-    v.invalid = Invalid::None;
-    v.failed = failedAnswer(v);
-}
-
-void judgeWitnesses(VariantOutcome& v, double wa, double wb)
-{
-    v.witness = std::max(wa, wb);
-    const double worst = std::max(v.witness, v.witnessGap);
-    v.witnessRatio = worst == 0 ? 0 : (v.witnessBound > 0 ? worst / v.witnessBound : kInf);
-    if (!v.outOfRange && (v.invalid == Invalid::None || v.invalid == Invalid::WitnessGap) &&
-        !(v.witness <= v.witnessBound))
-    {
-        v.invalid = Invalid::WitnessOffShape;
-        v.failed = true;
-    }
-}
-} // namespace
-
-void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
-{
-    if (!out.rejected.empty())
-        return;
-    ExactShapes shapes(c, out.shapes.get());
-    const std::size_t nv = ctx.variants.size();
-    struct Measured // a variant's two points' distances, and whether the GMP route measured each
-    {
-        double a = 0, b = 0;
-        char done = 0, exactA = 0, exactB = 0;
-    };
-    std::vector<Measured> m(nv);
-    for (std::size_t k = 0; k < nv; ++k)
-    {
-        VariantOutcome& v = out.variants[k];
-        if (v.skipped || v.nonfinite ||
-            (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
-            continue;
-        const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
-        // Variants often return the very same witness points (same scalar type): each distinct
-        // point is measured once per case; a variant's counts include the points it shares.
-        double wa = -1, wb = -1;
-        Measured& mk = m[k];
-        for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
-        {
-            if (m[j].done == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
-                continue;
-            const VariantOutcome& u = out.variants[j];
-            if (wa < 0 && u.pointA == v.pointA)
-            {
-                wa = m[j].a;
-                mk.exactA = m[j].exactA;
-            }
-            if (wb < 0 && u.pointB == v.pointB)
-            {
-                wb = m[j].b;
-                mk.exactB = m[j].exactB;
-            }
-        }
-        int n = 0;
-        if (wa < 0)
-        {
-            wa = shapes.distance(isFloat, true, v.pointA, n);
-            mk.exactA = char(n);
-        }
-        n = 0;
-        if (wb < 0)
-        {
-            wb = shapes.distance(isFloat, false, v.pointB, n);
-            mk.exactB = char(n);
-        }
-        v.witnessPoints += 2;
-        v.witnessExact += mk.exactA + mk.exactB;
-        mk.a = wa;
-        mk.b = wb;
-        mk.done = 1;
-        if (v.invalid == Invalid::WitnessGap && v.distance == 0)
-            acceptTwoCommonPoints(v, shapes, isFloat);
-        judgeWitnesses(v, wa, wb);
-    }
-    out.shapes.reset(); // the chunk's hulls are not kept past this phase
-}
-
 void answerPluginVariants(const Case* cases, const PreparedCase* prepared, CaseOutcome* out,
                           std::size_t n, const EvalContext& ctx)
 {
@@ -750,159 +467,6 @@ CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx)
     runVariants(c, p, ctx, o);
     checkWitnesses(c, ctx, o);
     return o;
-}
-
-namespace
-{
-// The exact result as the case JSON gives it (CaseDetail and cases.jsonl alike).
-Json exactDetail(const exact::Result& r)
-{
-    Json e = exactJson(r);
-    e["witnessA"] = pt(r.witnessA.x, r.witnessA.y);
-    e["witnessB"] = pt(r.witnessB.x, r.witnessB.y);
-    e["lower"] = num(r.lower);
-    e["upper"] = num(r.upper);
-    return e;
-}
-
-// One variant's result on a case, as the case JSON gives it (CaseDetail adds the trace).
-Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
-{
-    Json vj;
-    vj["type"] = scalarName(vi.scalar);
-    if (v.skipped)
-    {
-        vj["skipped"] = v.plugin == PluginStatus::Refused ? kSkipRefused
-                        : v.notApplicable                 ? kSkipNotConvexOrder
-                                                          : kSkipNotRepresentable;
-        return vj;
-    }
-    if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
-    {
-        vj["plugin_status"] = pluginStatusName(v.plugin);
-        vj["plugin_detail"] = v.pluginDetail;
-        vj["failed"] = v.failed;
-        return vj;
-    }
-    vj["distance"] = num(v.distance);
-    vj["pointA"] = pt(v.pointA[0], v.pointA[1]);
-    vj["pointB"] = pt(v.pointB[0], v.pointB[1]);
-    vj["normal"] = pt(v.normal[0], v.normal[1]);
-    vj["iterations"] = v.iterations;
-    vj["stop"] = vi.plugin ? "plugin" : gjk::stopReasonName(v.stop); // a plugin gives no reason
-    vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
-    vj["R"] = num(v.R);
-    vj["bound"] = num(v.bound);
-    vj["witness_bound"] = num(v.witnessBound);
-    vj["errors"] = {{"abs", num(v.abs)},
-                    {"rel", optNum(v.rel)},
-                    {"ulps", optNum(v.ulps)},
-                    {"normalized", num(v.normalized)},
-                    {"bound_ratio", num(v.boundRatio)},
-                    {"witness", optNum(v.witness)},
-                    {"witness_gap", num(v.witnessGap)},
-                    {"witness_ratio", optNum(v.witnessRatio)}};
-    const char* mis = misclassName(v.mis);
-    vj["misclassified"] = mis ? Json(mis) : Json(nullptr);
-    const char* invalid = invalidName(v.invalid);
-    vj["invalid"] = invalid ? Json(invalid) : Json(nullptr);
-    vj["out_of_range"] = v.outOfRange;
-    if (vi.options.correctlyRounded)
-    {
-        vj["path"] = gjk::correctPathName(v.path);
-        vj["bit_mismatch"] = v.bitMismatch;
-    }
-    if (vi.options.certify)
-    {
-        vj["certified"] = v.certified;
-        vj["lower"] = num(v.lower);
-        vj["upper"] = num(v.upper);
-        vj["interval_contains"] = v.intervalContains;
-    }
-    vj["failed"] = v.failed;
-    return vj;
-}
-
-} // namespace
-
-namespace
-{
-// The exact result of a case detail, with its squared rational: the campaign leaves it out where
-// the filter decided (exact::Options::squaredRational), so it is asked for here, for the few
-// cases whose details are written (the filter is deterministic: the same result, bit for bit).
-Json truthDetail(const Case& c, const EvalContext& ctx, const exact::Result& r, bool floatInput)
-{
-    if (!r.squaredNum.empty())
-        return exactDetail(r);
-    exact::Options o = ctx.exactOptions;
-    o.squaredRational = true;
-    const exact::PreparedShape a(toExact(c.a, floatInput), "shape A");
-    const exact::PreparedShape b(toExact(c.b, floatInput), "shape B");
-    return exactDetail(ctx.truth(a, b, o));
-}
-} // namespace
-
-// A cases.jsonl line, and what a CaseDetail starts from: name, family, and either the reason the
-// case was rejected or the exact results and each variant's result.
-Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ctx,
-                 const CaseOutcome& o)
-{
-    Json j;
-    j["name"] = c.name;
-    j["family"] = family;
-    if (!o.rejected.empty())
-    {
-        j["rejected"] = o.rejected;
-        return j;
-    }
-    j["exact"] = truthDetail(c, ctx, o.exact, false);
-    if (o.hasFloatTruth)
-    {
-        j["exact_float_input"] = truthDetail(c, ctx, o.exactFloat, true);
-        j["input_rounding"] = num(o.inputRounding);
-    }
-    Json vs = Json::object();
-    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
-        vs[ctx.variants[k]->name] = variantResultJson(*ctx.variants[k], o.variants[k]);
-    j["variants"] = std::move(vs);
-    return j;
-}
-
-Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx,
-                const CaseOutcome& o, const std::string& worstBy)
-{
-    Json j = perCaseJson(c, family, ctx, o);
-    j["worst_by"] = worstBy;
-    if (!c.source.empty())
-        j["source"] = c.source;
-    if (!c.comment.empty())
-        j["comment"] = c.comment;
-    j["a"] = shapeDetail(c.a);
-    j["b"] = shapeDetail(c.b);
-    Json mk = Json::array();
-    for (const auto& p : minkowskiDifference(worldPoints(c.a), worldPoints(c.b)))
-        mk.push_back(pt(p[0], p[1]));
-    j["minkowski"] = std::move(mk);
-    if (!o.rejected.empty())
-        return j;
-    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
-    {
-        const VariantInfo& vi = *ctx.variants[k];
-        if (o.variants[k].skipped || vi.plugin) // a plugin gives no trace
-            continue;
-        Json& vj = j["variants"][vi.name];
-        if (vi.scalar == Scalar::Float)
-        {
-            gjk::DistanceOutput<float> out;
-            vj["trace"] = tracedRun<float>(c, vi, out);
-        }
-        else
-        {
-            gjk::DistanceOutput<double> out;
-            vj["trace"] = tracedRun<double>(c, vi, out);
-        }
-    }
-    return j;
 }
 
 } // namespace gjkval

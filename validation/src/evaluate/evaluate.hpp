@@ -3,16 +3,15 @@
 #pragma once
 
 #include "evaluate/bounds.hpp"
-#include "evaluate/plugins.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/plugins.hpp"
+#include "implementations/prepared.hpp"
+#include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 
 #include "gjk/batch.hpp"
 #include "gjk/distance.hpp"
 
 #include <exact/exact.hpp>
-
-#include <boost/container/small_vector.hpp>
 
 #include <array>
 #include <cmath>
@@ -24,35 +23,6 @@
 namespace gjkval
 {
 
-// A shape's points, inline up to 8 (Box2D's polygon limit; the random family's 3 to 8): preparing
-// a case allocates nothing on the common path (docs/speed.md, "Allocations, transforms and the
-// fold", issue 34).
-template <class T> using CasePoints = boost::container::small_vector<gjk::Vec2<T>, 8>;
-
-// A case's inputs converted once to both scalar types (the timing loop reuses them).
-struct PreparedCase
-{
-    CasePoints<double> ad, bd;
-    CasePoints<float> af, bf;
-    gjk::Transform<double> xad, xbd;
-    gjk::Transform<float> xaf, xbf;
-    double rad = 0, rbd = 0;
-    float raf = 0, rbf = 0;
-    bool floatOk = true; // every input finite after rounding to float
-    // Both shapes' points in convex order (or at most kLinearSupportMaxPoints of them), as double
-    // [0] and as float-rounded [1]: the precondition of SupportStrategy::BinarySearch.
-    bool binaryOk[2] = {true, true};
-
-    template <class T> gjk::DistanceInput<T> input() const
-    {
-        if constexpr (std::is_same_v<T, float>)
-            return {{af.data(), int(af.size()), raf}, {bf.data(), int(bf.size()), rbf}, xaf, xbf};
-        else
-            return {{ad.data(), int(ad.size()), rad}, {bd.data(), int(bd.size()), rbd}, xad, xbd};
-    }
-};
-PreparedCase prepare(const Case& c);
-
 // Why a variant does not run on a case (skipped, not a failure), or null. floatInput: the case's
 // float-rounded input is usable (finite, with an exact truth when one is needed).
 const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput);
@@ -60,37 +30,6 @@ inline constexpr const char* kSkipNotRepresentable = "input not representable in
 inline constexpr const char* kSkipRefused = "refused by the implementation (plugin)";
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
-
-// exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
-// every variant inlines query() below, and only correctly rounded variants ever call it.
-[[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in,
-                                       const gjk::Options& options,
-                                       gjk::DistanceOutput<double>& out);
-
-// The variant's GJK query as both the accuracy run and the timing loop make it: cold (fresh
-// cache), or for warm variants (Start::Warm) a cold query whose cache starts the one
-// returned (and traced).
-template <class T>
-gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
-                             gjk::Trace<T>* trace = nullptr)
-{
-    gjk::SimplexCache cache;
-    const gjk::DistanceInput<T> in = p.input<T>();
-    if (v.start == Start::Warm)
-        gjk::distance(in, cache, v.options);
-    gjk::DistanceOutput<T> out;
-    if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
-                           std::span<gjk::SimplexCache>(&cache, 1),
-                           std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
-    else
-        out = gjk::distance(in, cache, v.options, trace);
-    // A correctly rounded variant: its undecided queries completed exactly, as a user would.
-    if constexpr (std::is_same_v<T, double>)
-        if (out.path == gjk::CorrectPath::NeedsExact) [[unlikely]]
-            completeExactly(in, v.options, out);
-    return out;
-}
 
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
 // from `truth` (a non-finite answer is the farthest) returned; ties keep the earlier start. Where
@@ -256,6 +195,11 @@ struct EvalContext
 // witness points' distances to their shapes come in phase 3), whether its certified interval holds
 // the truth, and whether it failed (docs/validation.md, "Failures"). runVariants calls it.
 void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance);
+// Whether a judged answer fails: the one rule, for judge() and for the witness verdict (phase 3).
+// Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a certified
+// interval that misses the truth, or a correctly rounded distance that is not the exact side's,
+// always fails.
+bool failedAnswer(const VariantOutcome& v);
 
 // Phase 1: the exact truths. The truth's std::invalid_argument rejects the case (bad input);
 // any other exception (a broken invariant of ours) propagates and fails the run.

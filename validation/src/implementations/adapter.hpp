@@ -6,7 +6,7 @@
 // costs the case in flight, and the process is started again for the next one.
 #pragma once
 
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 
 #include <cstddef>
 #include <string>
@@ -15,8 +15,8 @@
 namespace gjkval
 {
 
-struct PluginImpl;   // evaluate/plugins.hpp
-struct PluginTask;   // evaluate/plugins.hpp
+struct PluginImpl;   // implementations/plugins.hpp
+struct PluginTask;   // implementations/plugins.hpp
 struct PreparedCase; // evaluate/evaluate.hpp
 
 inline constexpr int kAdapterProtocolVersion = 1;

@@ -1,6 +1,8 @@
-#include "evaluate/adapter_process.hpp"
+// An executable adapter's process: started with pipes to its stdin and stdout, read with a time
+// limit, ended and reaped; how it died, said in one line.
+#include "implementations/adapter_process.hpp"
 
-#include "evaluate/plugins.hpp"
+#include "implementations/plugins.hpp"
 
 #include <fmt/format.h>
 

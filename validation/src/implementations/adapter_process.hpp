@@ -1,6 +1,6 @@
-// The process of an executable adapter (evaluate/adapter.hpp): started with its stdin and stdout
-// through pipes and its stderr to the plugin's log, lines read and written with deadlines, ended.
-// Used by evaluate/adapter.cpp only; no protocol here, only bytes and lines.
+// The process of an executable adapter (implementations/adapter.hpp): started with its stdin and
+// stdout through pipes and its stderr to the plugin's log, lines read and written with deadlines,
+// ended. Used by implementations/adapter.cpp only; no protocol here, only bytes and lines.
 #pragma once
 
 #include <chrono>
@@ -11,7 +11,7 @@
 
 namespace gjkval
 {
-struct PluginImpl; // evaluate/plugins.hpp
+struct PluginImpl; // implementations/plugins.hpp
 }
 
 namespace gjkval::adapterio

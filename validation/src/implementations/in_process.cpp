@@ -1,4 +1,6 @@
-#include "evaluate/in_process.hpp"
+// Implementations that answer in this process from a registered callback (the Python package's
+// gjk2d.validate): called in this thread, every exception counted against its case.
+#include "implementations/in_process.hpp"
 
 #include <fmt/format.h>
 

@@ -1,14 +1,14 @@
 // Variants whose answers come from a callback of this very process, registered at run time: the
 // Python package's gjk2d.validate (python/src/validate.cpp, docs/python.md). The third kind of
 // plugin (PluginKind::InProcess), judged and reported as the other two are, with one difference:
-// it is never forked. A shared library's plugin answers in a forked child (evaluate/plugins.cpp),
-// so that a crash costs one case; a callback into a threaded runtime (JAX, a BLAS, the Python
-// interpreter itself) would deadlock in a child that has only the forking thread. So a crash of
-// the callback ends the process, a hang hangs it, and what it prints goes where the process's
-// output goes (no plugin-*.log).
+// it is never forked. A shared library's plugin answers in a forked child
+// (implementations/plugins.cpp), so that a crash costs one case; a callback into a threaded runtime
+// (JAX, a BLAS, the Python interpreter itself) would deadlock in a child that has only the forking
+// thread. So a crash of the callback ends the process, a hang hangs it, and what it prints goes
+// where the process's output goes (no plugin-*.log).
 #pragma once
 
-#include "evaluate/plugins.hpp"
+#include "implementations/plugins.hpp"
 
 #include <functional>
 #include <string>
@@ -48,9 +48,9 @@ struct InProcessVariant
     InProcessCalls calls;
 };
 
-// Registers the variant in the plugin registry (evaluate/plugins.cpp): a comparison variant, cold,
-// held to gjk2d's reference bound in its scalar type as any plugin's; `run --variants` names it,
-// `run --judge NAME` judges it. The same name again (a second campaign in one process) replaces
+// Registers the variant in the plugin registry (implementations/plugins.cpp): a comparison variant,
+// cold, held to gjk2d's reference bound in its scalar type as any plugin's; `run --variants` names
+// it, `run --judge NAME` judges it. The same name again (a second campaign in one process) replaces
 // the earlier registration in place, callbacks and judgement included (judged again only by a
 // new --judge). Throws InputError, one line: an invalid name, no callback or both, a name that a
 // gjk2d variant or a loaded plugin's implementation has.

@@ -1,6 +1,8 @@
-#include "evaluate/peers.hpp"
+// The shipped peers (implementations/peers.hpp): where gjk-validate finds their files, and the
+// report's context.plugins.
+#include "implementations/peers.hpp"
 
-#include "evaluate/plugins.hpp"
+#include "implementations/plugins.hpp"
 
 #include <algorithm>
 #include <filesystem>
@@ -8,6 +10,18 @@
 
 namespace gjkval
 {
+
+namespace
+{
+constexpr ShippedPeer kShippedPeers[] = {
+#include "shipped_peers.inc"
+};
+} // namespace
+
+std::span<const ShippedPeer> shippedPeers()
+{
+    return kShippedPeers;
+}
 
 std::string shippedPeerPath(const ShippedPeer& peer)
 {

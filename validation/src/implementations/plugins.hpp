@@ -2,10 +2,10 @@
 // docs/validate-your-gjk.md): each implementation a plugin describes becomes a variant
 // (VariantInfo::plugin), evaluated in a child process so that a crash or a hang costs one case.
 // A third kind answers in this process, from a callback registered at run time
-// (evaluate/in_process.hpp: the Python package's gjk2d.validate).
+// (implementations/in_process.hpp: the Python package's gjk2d.validate).
 #pragma once
 
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 
 #include <gjk2d/plugin.h>
 
@@ -28,8 +28,9 @@ inline constexpr double kDefaultPluginTimeoutSeconds = 5;
 
 // The two kinds of plugin `--plugin FILE` takes, told apart by the file's content: a shared
 // library exporting gjk2d_plugin_describe (gjk2d/plugin.h), or an executable adapter spoken to
-// over pipes (evaluate/adapter.hpp, protocol version 1, docs/validate-your-gjk.md); and the kind
-// no file gives, a callback of this process (registerInProcessVariant, evaluate/in_process.hpp).
+// over pipes (implementations/adapter.hpp, protocol version 1, docs/validate-your-gjk.md); and the
+// kind no file gives, a callback of this process (registerInProcessVariant,
+// implementations/in_process.hpp).
 enum class PluginKind
 {
     SharedLibrary,
@@ -40,7 +41,7 @@ enum class PluginKind
 const char* pluginKindName(PluginKind k);
 
 // One implementation of a loaded plugin.
-struct InProcessCalls; // evaluate/in_process.hpp
+struct InProcessCalls; // implementations/in_process.hpp
 
 struct PluginImpl
 {
@@ -82,7 +83,7 @@ const VariantInfo* findPluginVariant(const std::string& name); // null when none
 // InputError when no loaded plugin has an implementation of that name.
 void judgePluginVariant(const std::string& name);
 
-// The shipped plugins, and where gjk-validate finds them: evaluate/peers.hpp.
+// The shipped plugins, and where gjk-validate finds them: implementations/peers.hpp.
 
 // How a plugin variant answered one case.
 enum class PluginStatus
@@ -143,12 +144,12 @@ class PluginServers
 
 // Runs the tasks: a shared library's in `servers`' children, which take the tasks through a pipe
 // and stream their answers back in blocks of up to 64; an executable adapter's through its
-// adapter process (answerThroughAdapters, evaluate/adapter.hpp); an in-process variant's in this
-// thread, never forked (answerInProcess, evaluate/in_process.hpp). When a child dies or does not
-// answer within timeoutSeconds, a new one answers the next 64 tasks one by one, and the task that
-// one loses is answered Crashed or Hung (a line on stderr names the variant and the case); the
-// others are answered. Never throws for what a plugin does; std::runtime_error when fork, pipe or
-// poll fail. Without `servers`: children for this call only.
+// adapter process (answerThroughAdapters, implementations/adapter.hpp); an in-process variant's in
+// this thread, never forked (answerInProcess, implementations/in_process.hpp). When a child dies or
+// does not answer within timeoutSeconds, a new one answers the next 64 tasks one by one, and the
+// task that one loses is answered Crashed or Hung (a line on stderr names the variant and the
+// case); the others are answered. Never throws for what a plugin does; std::runtime_error when
+// fork, pipe or poll fail. Without `servers`: children for this call only.
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds,
                      PluginServers& servers);
 void answerContained(const std::vector<PluginTask>& tasks, double timeoutSeconds);

@@ -1,6 +1,8 @@
-#include "evaluate/variants.hpp"
+// gjk2d's variants: the table from a stable name to a scalar type and gjk::Options, their
+// parsing from the command line, and the scalar types' constants.
+#include "implementations/variants.hpp"
 
-#include "evaluate/plugins.hpp"
+#include "implementations/plugins.hpp"
 
 #include <fmt/format.h>
 

@@ -33,7 +33,7 @@ enum class Start
     EveryStart,
 };
 
-struct PluginImpl; // evaluate/plugins.hpp
+struct PluginImpl; // implementations/plugins.hpp
 
 struct VariantInfo
 {
@@ -47,8 +47,9 @@ struct VariantInfo
     // shown per family, never judged.
     bool judged = true;
     Start start = Start::Cold;
-    // Set for a plugin's implementation (evaluate/plugins.hpp, `--plugin`): the answer comes from
-    // it, evaluated in a child process; `options` then only names the bound it is compared with.
+    // Set for a plugin's implementation (implementations/plugins.hpp, `--plugin`): the answer comes
+    // from it, evaluated in a child process; `options` then only names the bound it is compared
+    // with.
     const PluginImpl* plugin = nullptr;
     // Run through gjk::distanceBatch (gjk/batch.hpp: SIMD lanes, the instruction set chosen at
     // run time): the accuracy run on one-case batches, each checked to be bit for bit the scalar

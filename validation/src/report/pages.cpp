@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 namespace
 {
 // Every file a report directory holds, besides the plugins' logs (plugin-*.log,
-// evaluate/plugins.hpp); writeReportPages replaces the directory as a whole.
+// implementations/plugins.hpp); writeReportPages replaces the directory as a whole.
 const char* const kReportFiles[] = {"report.json", "report.md",  "worst-cases.json",
                                     "cases.jsonl", "index.html", "shard.json"};
 } // namespace

@@ -84,7 +84,7 @@ struct Stats
     std::array<std::uint64_t, kInvalidReasons> invalidReasons{};
     std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
     std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
-    // Plugin variants (evaluate/plugins.hpp): cases the implementation refused (not run, not
+    // Plugin variants (implementations/plugins.hpp): cases the implementation refused (not run, not
     // failed, apart from `skipped`), and cases it answered GJK2D_STATUS_ERROR, crashed or hung on
     // (each counted in `cases` and `failures`, without errors measured).
     std::uint64_t refused = 0, pluginErrors = 0, crashed = 0, hung = 0;

@@ -1,6 +1,6 @@
 #include "timing/bench.hpp"
 
-#include "evaluate/peers.hpp"
+#include "implementations/peers.hpp"
 
 #include <fmt/format.h>
 

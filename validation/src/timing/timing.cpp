@@ -1,9 +1,9 @@
 #include "timing/timing.hpp"
 
-#include "evaluate/adapter.hpp"
 #include "evaluate/evaluate.hpp"
-#include "evaluate/in_process.hpp"
-#include "evaluate/plugins.hpp"
+#include "implementations/adapter.hpp"
+#include "implementations/in_process.hpp"
+#include "implementations/plugins.hpp"
 
 #include <fmt/format.h>
 

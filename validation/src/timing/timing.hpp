@@ -3,7 +3,7 @@
 #pragma once
 
 #include "evaluate/evaluate.hpp"
-#include "evaluate/variants.hpp"
+#include "implementations/variants.hpp"
 
 #include <functional>
 #include <vector>
@@ -41,34 +41,34 @@ TimingResult timeQueries(const std::vector<const PreparedCase*>& cases, const Va
                          const TimingConfig& cfg, double pluginTimeoutSeconds);
 
 // A plugin variant's timeQueries(): its timed loop built here, its passes run in a child process
-// (PluginChild, evaluate/plugins.hpp), which sends back only the result. A crash, or no pass
+// (PluginChild, implementations/plugins.hpp), which sends back only the result. A crash, or no pass
 // finished within pluginTimeoutSeconds + 30 s (+ the pass's expected length), gives
 // nsPerQuery = -1 and a line on stderr.
 TimingResult timeContained(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                            const TimingConfig& cfg, double pluginTimeoutSeconds);
 
-// An executable adapter's timeQueries() (evaluate/adapter.hpp): each pass splits the cases into
-// chunks of m and sends one `time` request per chunk, K = the pass's reps; the pass's time is the
-// sum of the adapter's totals (the pipe is outside every timed region), per query
-// sum / (K * cases); calibration and passes as medianOfPasses(). A request without its answer
-// (crash, hang, error) gives nsPerQuery = -1 and a line on stderr.
-// It times the first kAdapterTimingCases of the sample only (TimingResult::cases says how many):
-// every pass sends the cases' text again and the adapter parses it outside its timed loop, which
-// in a slow language costs far more than the loop. Measured at 15ef9ad on the default campaign:
-// GEOS through shapely (about 250 us a query) took 121 s of timing on the whole samples, planck.js
-// 12.6 s; one chunk (2,048 cases) is still a sample of the random family as the others are.
+// An executable adapter's timeQueries() (implementations/adapter.hpp): each pass splits the cases
+// into chunks of m and sends one `time` request per chunk, K = the pass's reps; the pass's time is
+// the sum of the adapter's totals (the pipe is outside every timed region), per query sum / (K *
+// cases); calibration and passes as medianOfPasses(). A request without its answer (crash, hang,
+// error) gives nsPerQuery = -1 and a line on stderr. It times the first kAdapterTimingCases of the
+// sample only (TimingResult::cases says how many): every pass sends the cases' text again and the
+// adapter parses it outside its timed loop, which in a slow language costs far more than the loop.
+// Measured at 15ef9ad on the default campaign: GEOS through shapely (about 250 us a query) took 121
+// s of timing on the whole samples, planck.js 12.6 s; one chunk (2,048 cases) is still a sample of
+// the random family as the others are.
 inline constexpr std::size_t kAdapterTimingCases = 2048;
 TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                          const TimingConfig& cfg, double pluginTimeoutSeconds);
 
-// An in-process variant's timeQueries() (evaluate/in_process.hpp): a plain timed loop in this
-// process, over the first kAdapterTimingCases of the sample (its callbacks are typically a Python
-// function's, tens of microseconds a query, as slow as an adapter's), calibrated and repeated as
-// medianOfPasses(). A per-case callback: one call per case, the loop's time over the cases; a
-// batch callback: one call with the whole sample per loop, its time over the cases. What the
-// callback's caller adds (the Python layer's conversions of each case) is in the time. A callback
-// that throws a std::exception gives nsPerQuery = -1 and a line on stderr; any other exception
-// propagates (it ends the campaign).
+// An in-process variant's timeQueries() (implementations/in_process.hpp): a plain timed loop in
+// this process, over the first kAdapterTimingCases of the sample (its callbacks are typically a
+// Python function's, tens of microseconds a query, as slow as an adapter's), calibrated and
+// repeated as medianOfPasses(). A per-case callback: one call per case, the loop's time over the
+// cases; a batch callback: one call with the whole sample per loop, its time over the cases. What
+// the callback's caller adds (the Python layer's conversions of each case) is in the time. A
+// callback that throws a std::exception gives nsPerQuery = -1 and a line on stderr; any other
+// exception propagates (it ends the campaign).
 TimingResult timeInProcess(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                            const TimingConfig& cfg);
 
@@ -124,7 +124,8 @@ std::vector<TimingResult> medianOfAlternatedPasses(const std::vector<TimedLoop>&
 // The pass loop of timeQueries(), for any timed loop: pass(reps) runs `reps` loops over the
 // `cases` queries and returns the nanoseconds taken. One calibration pass sets reps so that a pass
 // lasts cfg.minPassSeconds; then minPasses..maxPasses passes (no new one after budgetSeconds);
-// the median, min and max per query. Plugin variants (evaluate/plugins.cpp) are timed by it too.
+// the median, min and max per query. Plugin variants (implementations/plugins.cpp) are timed by it
+// too.
 TimingResult medianOfPasses(std::size_t cases, const TimingConfig& cfg,
                             const std::function<double(int)>& pass,
                             const std::function<void()>& afterPass = {});

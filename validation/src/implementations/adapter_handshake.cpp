@@ -1,0 +1,132 @@
+// The executable-adapter protocol's handshake (version 1, docs/validate-your-gjk.md, "Executable
+// adapters"): the host's version line, then the adapter's library and implementation lines, each
+// checked, to its `ready`.
+#include "implementations/adapter_wire.hpp"
+
+namespace gjkval::adapterwire
+{
+namespace
+{
+using namespace adapterio;
+
+// ---- The handshake ----
+
+bool validName(const std::string& s)
+{
+    if (s.empty() || s.size() > 64)
+        return false;
+    return std::all_of(s.begin(), s.end(),
+                       [](char c)
+                       {
+                           return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                                  (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '+' ||
+                                  c == '-';
+                       });
+}
+
+// One `implementation` line, checked; AdapterFailure says what is wrong.
+AdapterImplementation implementationLine(const std::string& line,
+                                         const std::vector<AdapterImplementation>& before)
+{
+    const std::vector<std::string> t = tokens(line);
+    if (t.size() < 5)
+        throw AdapterFailure(
+            fmt::format("bad description: {} has fewer than 5 fields", quoted80(line)));
+    AdapterImplementation im;
+    im.name = t[1];
+    if (!validName(im.name))
+        throw AdapterFailure(
+            fmt::format("bad description: name '{}' is not 1 to 64 characters of [A-Za-z0-9._+-]",
+                        im.name.substr(0, 80)));
+    for (const auto& b : before)
+        if (b.name == im.name)
+            throw AdapterFailure(
+                fmt::format("bad description: the name '{}' is taken (given twice)", im.name));
+    if (t[2] != "float" && t[2] != "double")
+        throw AdapterFailure(fmt::format(
+            "bad description: implementation {}: scalar '{}' is neither float nor double", im.name,
+            t[2].substr(0, 80)));
+    im.scalar = t[2] == "float" ? Scalar::Float : Scalar::Double;
+    if (t[3] != "radius" && t[3] != "no-radius")
+        throw AdapterFailure(
+            fmt::format("bad description: implementation {}: '{}' is neither radius nor no-radius",
+                        im.name, t[3].substr(0, 80)));
+    im.radius = t[3] == "radius";
+    long long maxVertices = 0;
+    if (!parseInteger(t[4], 0, INT32_MAX, maxVertices))
+        throw AdapterFailure(fmt::format(
+            "bad description: implementation {}: max_vertices '{}' is not an integer >= 0", im.name,
+            t[4].substr(0, 80)));
+    im.maxVertices = int(maxVertices);
+    im.description = restAfter(line, 5);
+    return im;
+}
+
+// The first line: `gjk2d-adapter 1`.
+void versionLine(const std::string& line)
+{
+    const std::vector<std::string> t = tokens(line);
+    if (t.size() != 2 || t[0] != "gjk2d-adapter")
+        throw AdapterFailure(
+            fmt::format("bad description: the first line is {}, expected 'gjk2d-adapter {}'",
+                        quoted80(line), kAdapterProtocolVersion));
+    if (t[1] != std::to_string(kAdapterProtocolVersion))
+        throw AdapterFailure(fmt::format(
+            "executable adapter speaks protocol version {}, this gjk-validate speaks {}",
+            t[1].substr(0, 20), kAdapterProtocolVersion));
+}
+
+// Why the handshake stopped short: the adapter's exit, or the limit.
+[[noreturn]] void handshakeCut(Process& p, Io io, double limit)
+{
+    if (io == Io::Timeout)
+    {
+        reap(p, 0);
+        throw AdapterFailure(fmt::format("no 'ready' within {} s of the handshake", limit));
+    }
+    const std::string how = reap(p, kAdapterCloseSeconds);
+    throw AdapterFailure(fmt::format("executable adapter exited during the handshake ({})", how));
+}
+
+} // namespace
+
+AdapterDescription handshake(Process& p, double limit)
+{
+    const auto deadline = deadlineIn(limit);
+    Io io = writeText(p, fmt::format("gjk2d-adapter {}\n", kAdapterProtocolVersion), deadline);
+    std::string line;
+    if (io != Io::Ok || (io = readLine(p, line, deadline)) != Io::Ok)
+        handshakeCut(p, io, limit);
+    versionLine(line);
+    AdapterDescription d;
+    bool haveLibrary = false;
+    for (;;)
+    {
+        if ((io = readLine(p, line, deadline)) != Io::Ok)
+            handshakeCut(p, io, limit);
+        const std::vector<std::string> t = tokens(line);
+        if (t.empty())
+            continue; // spaces only: an empty line
+        if (t[0] == "ready" && t.size() == 1)
+            break;
+        if (t[0] == "library" && !haveLibrary)
+        {
+            d.library = restAfter(line, 1);
+            haveLibrary = true;
+        }
+        else if (t[0] == "implementation" && d.implementations.size() < 64)
+            d.implementations.push_back(implementationLine(line, d.implementations));
+        else
+            throw AdapterFailure(fmt::format(
+                "bad description: unexpected line {} (a second library, a 65th implementation, "
+                "or an unknown word)",
+                quoted80(line)));
+    }
+    if (!haveLibrary)
+        throw AdapterFailure("bad description: no 'library' line before 'ready'");
+    if (d.implementations.empty())
+        throw AdapterFailure("bad description: no 'implementation' line before 'ready'");
+    return d;
+}
+
+} // namespace gjkval::adapterwire
