@@ -1,3 +1,6 @@
+// Stats and its histograms: folding one judged query, merging (exactly, in any order), the
+// report's JSON and the state of shards and checkpoints, all driven by the member tables of
+// stats.hpp.
 #include "statistics/stats.hpp"
 
 #include "evaluate/evaluate.hpp"
