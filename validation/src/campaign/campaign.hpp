@@ -54,8 +54,12 @@ struct CampaignConfig
         kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
 
-// The default campaign of `gjk-validate run` without inputs.
+// The default campaign of `gjk-validate run` without inputs: these families and the default case
+// files (defaultCaseFiles). Its one home: run's help and `gjk-validate list` (which
+// scripts/peers_doc.py reads) show it from here.
 std::vector<std::string> defaultFamilies();
+// defaultFamilies() as run's options: "--family random:200000 --family hard --family engine".
+std::string defaultFamilyOptions();
 // Every *.json of the default campaign's case files, sorted, found relative to the program: in
 // <dir>/cases (the build tree, a link to validation/cases) or <dir>/../<datadir>/gjk2d/cases (an
 // installed prefix). InputError, one line naming both places, when neither exists.
