@@ -5,8 +5,8 @@
     python3 scripts/peers_doc.py --report DIR/report.json   # from a report of run --peers
     python3 scripts/peers_doc.py --doc OUT.md -- --family hard:20   # a campaign of one's own
 
-It runs `build/release/validation/gjk-validate run --peers` on the default campaign's families
-(written out: random:200000, hard, engine and the default case files) into reports/peers/, reads
+It runs `build/release/validation/gjk-validate run --peers` on the default campaign (its options
+as `gjk-validate list` prints them on its first line) into reports/peers/, reads
 its report.json and rewrites only the part of the document between the markers
 `<!-- peers_doc.py: begin -->` and `<!-- peers_doc.py: end -->` (created with the title when the
 document does not exist; the hand-written sections around it are kept). Each plugin variant's worst
@@ -30,8 +30,7 @@ from check_doc_commands import OPTIONAL  # the optional parts a documented comma
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 TITLE = "# How accurate are the distance queries people use?"
 BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
-DEFAULT_FAMILIES = ["--family", "random:200000", "--family", "hard", "--family", "engine",
-                    "--default-cases"]
+DEFAULT_CAMPAIGN = "default campaign (run without --family and --cases): "  # `list`'s line
 GJK2D_ROWS = ["double", "float"]  # gjk2d's reference variants, shown beside the peers
 
 
@@ -47,6 +46,15 @@ def run(cmd, must=True):
     if must and done.returncode not in (0, 1):
         fail(1, f"`{shlex.join(cmd)}` exited {done.returncode}")
     return done.returncode
+
+
+def default_campaign(gjk):
+    """run's options for the default campaign, from `gjk-validate list` (the program's one home)."""
+    done = subprocess.run([gjk, "list", "--no-default-plugins"], capture_output=True, text=True)
+    line = next((l for l in done.stdout.splitlines() if l.startswith(DEFAULT_CAMPAIGN)), None)
+    if done.returncode != 0 or line is None:
+        fail(1, f"`{gjk} list` exited {done.returncode} without its '{DEFAULT_CAMPAIGN}' line")
+    return shlex.split(line[len(DEFAULT_CAMPAIGN):])
 
 
 def num(x):
@@ -386,7 +394,7 @@ def main():
     if a.report:
         report_path = pathlib.Path(a.report)
     else:
-        args = a.run_args or DEFAULT_FAMILIES
+        args = a.run_args or default_campaign(gjk)
         run([gjk, "run", "--peers", *args, "--out", str(out), "--no-progress"])
         report_path = out / "report.json"
     try:

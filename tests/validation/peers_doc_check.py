@@ -6,7 +6,8 @@ the generated part has a table row for every variant of every plugin the report'
 here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Each
 worst case's command loads every plugin the README's first command builds, and an optional one
 (the Box2D v3 adapter, check_doc_commands.OPTIONAL) only in its own variant's paragraph, which says
-what it needs. Writes only under a temporary directory."""
+what it needs. The default campaign the script runs without options is the one `gjk-validate list`
+names. Writes only under a temporary directory."""
 import argparse
 import json
 import pathlib
@@ -90,6 +91,15 @@ def main():
                 if not (t / "peers" / f"{v}.svg").is_file():
                     errors.append(f"no drawing peers/{v}.svg")
         errors += worst_case_commands(text, plugins, a.script)
+        # Without options the script runs the default campaign, as `gjk-validate list` says it:
+        # families, then the default case files.
+        sys.path.insert(0, str(pathlib.Path(a.script).parent))
+        import peers_doc
+        default = peers_doc.default_campaign(a.exe)
+        families = default[:-1]
+        if (default[-1:] != ["--default-cases"] or not families or len(families) % 2
+                or set(families[::2]) != {"--family"}):
+            errors.append(f"the default campaign read from `list` is {default}")
         # Each group here holds one family: the joined histograms' p99 and max must be that
         # family's, as the runner computed them (Hist::percentile).
         cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),

@@ -328,6 +328,14 @@ TEST_CASE("an interrupted run resumes from its checkpoint to the uninterrupted r
     other.seed = 9;
     CHECK_THROWS_WITH(run(other),
                       Catch::Contains("the checkpoint is of another campaign: its seed is 1"));
+    // An earlier version of the state: refused, naming the last revision that wrote (and reads) it.
+    std::ofstream(c.checkpointDir + "/checkpoint.json") << R"({"schema": "gjk-checkpoint/1"})";
+    CampaignConfig resumed = c;
+    resumed.resume = true;
+    CHECK_THROWS_WITH(run(resumed),
+                      Catch::EndsWith("checkpoint.json: a gjk-checkpoint/1 file, written by gjk2d "
+                                      "up to ff6aac0 (which reads it); this release writes "
+                                      "gjk-checkpoint/2: run again without --resume"));
 }
 
 TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
@@ -360,7 +368,11 @@ TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated 
     CHECK(refusal({s0}) == "merge: shard 1/2 is missing");
     CHECK(refusal({s0, s0}) == "b/shard.json: shard 0/2 is given twice");
     CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) ==
-          "b/shard.json: not a gjk-shard/1 file");
+          "b/shard.json: not a gjk-shard/2 file");
+    // An earlier version of the state: refused, naming the last revision that wrote (and reads) it.
+    CHECK(refusal({s0, Json{{"schema", "gjk-shard/1"}}}) ==
+          "b/shard.json: a gjk-shard/1 file, written by gjk2d up to ff6aac0 (which reads it); this "
+          "release writes gjk-shard/2: run the shards again with it");
 }
 
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")

@@ -7,6 +7,8 @@
 #include "common/common.hpp"
 #include "report/compare.hpp"
 
+#include "gjk_html/html.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -361,6 +363,16 @@ TEST_CASE("compare: bad report files are refused with one line naming the file",
 }
 
 // The program: exit codes 0, 1, 2, the table on stdout, --json and --md written.
+TEST_CASE("compare: the HTML page escapes its text with the report page's escape", "[compare]")
+{
+    CHECK(gjk_html::escapeHtml("<a title=\"x\">&</a>") ==
+          "&lt;a title=&quot;x&quot;&gt;&amp;&lt;/a&gt;");
+    CompareOptions o;
+    o.oldName = "OLD '<a&b>\"'";
+    const std::string html = compareHtml(compareReports(smallReport(), smallReport(), o));
+    CHECK(contains(html, "<li>OLD '&lt;a&amp;b&gt;&quot;'</li>"));
+}
+
 TEST_CASE("compare: the program's exit codes and outputs", "[compare][cli]")
 {
     const std::string old = smallReportDir().string();

@@ -253,24 +253,18 @@ TEST_CASE("statistics survive their state: what a shard or a checkpoint writes",
     CHECK(back.iterations.sum == 7);
     CHECK(back.invalid == 3);
     CHECK(back.invalidReasons == std::array<std::uint64_t, kInvalidReasons>{1, 0, 2});
-    // A state written before the witness judgement (no "invalid"): read as none.
-    Json old = state;
-    old.erase("invalid");
-    old.erase("invalid_reasons");
-    CHECK(Stats::fromState(old).invalid == 0);
-    // A state written before the witness filter (no witness counts): read as none.
-    Json beforeFilter = state;
-    beforeFilter.erase("witness_points");
-    beforeFilter.erase("witness_exact");
-    CHECK(Stats::fromState(beforeFilter).witnessExact == 0);
+    // Every row is read back by its name: a state without one (another version's) is refused.
+    Json missing = state;
+    missing["counts"].erase("witness_exact");
+    CHECK_THROWS(Stats::fromState(missing));
     Json counted = state;
-    counted["witness_exact"] = 7;
+    counted["counts"]["witness_exact"] = 7;
     CHECK(Stats::fromState(counted).witnessExact == 7);
     Json wrongReasons = state;
     wrongReasons["invalid_reasons"] = std::vector<std::uint64_t>{1, 2};
     CHECK_THROWS(Stats::fromState(wrongReasons));
     Json broken = state;
-    broken["abs"]["counts"] = std::vector<std::uint64_t>{1, 2};
+    broken["histograms"]["abs"]["counts"] = std::vector<std::uint64_t>{1, 2};
     CHECK_THROWS(Stats::fromState(broken));
 }
 
@@ -386,59 +380,38 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
     CHECK(paths == std::vector<std::string>{"double", "extended", "double-double", "exact"});
 }
 
-TEST_CASE("the shard state's keys keep their order", "[stats]")
+TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
 {
-    // The order of a shard.json written by main before the tables (gjk-validate run --family
-    // random:300 --family hard/points --family hard/float-rotation:50 --no-timing --shard 0/2,
-    // variant double-correct): StatsState is public (docs/report-schema.md, gjk-shard/1).
+    // StatsState (docs/report-schema.md, gjk-shard/2): one key per table, each table's rows in
+    // their order, by their report names.
     Stats s;
     s.hasPaths = true;
     const Json state = s.state();
-    std::vector<std::string> keys;
-    for (const auto& [key, _] : state.items())
-        keys.push_back(key);
-    CHECK(keys == std::vector<std::string>{"cases",
-                                           "failures",
-                                           "false_overlap",
-                                           "false_separation",
-                                           "undecidable",
-                                           "nonfinite",
-                                           "out_of_range",
-                                           "iteration_limit",
-                                           "beyond_bound",
-                                           "skipped",
-                                           "not_applicable",
-                                           "refused",
-                                           "plugin_errors",
-                                           "crashed",
-                                           "hung",
-                                           "certified",
-                                           "contains",
-                                           "uncertified",
-                                           "has_interval",
-                                           "has_input_rounding",
-                                           "width_ulps",
-                                           "abs",
-                                           "rel",
-                                           "ulps",
-                                           "normalized",
-                                           "bound_ratio",
-                                           "witness",
-                                           "witness_gap",
-                                           "input_rounding",
-                                           "iterations",
-                                           "stops",
-                                           "invalid",
-                                           "invalid_reasons",
-                                           "witness_ratio",
-                                           "correct_paths",
-                                           "witness_points",
-                                           "witness_exact",
-                                           "truth"}); // issue 34: appended
+    auto keys = [](const Json& j)
+    {
+        std::vector<std::string> k;
+        for (const auto& [key, _] : j.items())
+            k.push_back(key);
+        return k;
+    };
+    CHECK(keys(state) == std::vector<std::string>{"counts", "flags", "histograms", "paths",
+                                                  "invalid_reasons", "stops", "iterations"});
+    std::vector<std::string> counts, flags, histograms;
+    for (const CountField& f : kCountFields)
+        counts.push_back(f.name);
+    for (const FlagField& f : kFlagFields)
+        flags.push_back(f.name);
+    for (const HistField& f : kHistFields)
+        histograms.push_back(f.name);
+    CHECK(keys(state["counts"]) == counts);
+    CHECK(keys(state["flags"]) == flags);
+    CHECK(keys(state["histograms"]) == histograms);
     s.pathDouble = 1;
-    s.pathDoubleDouble = 2;
-    s.pathExact = 3;
-    s.bitMismatch = 4;
-    s.pathExtended = 5;
-    CHECK(s.state()["correct_paths"] == std::vector<std::uint64_t>{1, 2, 3, 4, 5});
+    s.pathExtended = 2;
+    s.pathDoubleDouble = 3;
+    s.pathExact = 4;
+    CHECK(s.state()["paths"] == std::vector<std::uint64_t>{1, 2, 3, 4}); // kPathFields' order
+    s.hasPaths = false;
+    CHECK(s.state()["paths"].is_null());
+    CHECK_FALSE(Stats::fromState(s.state()).hasPaths);
 }

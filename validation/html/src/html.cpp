@@ -40,11 +40,7 @@ std::string embedJson(const nlohmann::json& data)
     return out;
 }
 
-namespace
-{
-
-// Text as an HTML attribute's value (between double quotes).
-std::string attribute(std::string_view text)
+std::string escapeHtml(std::string_view text)
 {
     std::string out;
     for (char c : text)
@@ -68,6 +64,9 @@ std::string attribute(std::string_view text)
     return out;
 }
 
+namespace
+{
+
 // Fills the template's placeholders. Each placeholder is searched for in the template only, never
 // in text already substituted, so data that happens to contain a placeholder is left alone.
 std::string renderPage(std::string_view mode, std::string_view schema, const nlohmann::json& data)
@@ -80,7 +79,7 @@ std::string renderPage(std::string_view mode, std::string_view schema, const nlo
     };
     const Slot slots[] = {
         {"@MODE@", std::string(mode)},
-        {"@SCHEMA@", attribute(schema)},
+        {"@SCHEMA@", escapeHtml(schema)},
         {"/*@CSS@*/", std::string(assets::report_css())},
         {"@DATA@", embedJson(data)},
         {"/*@JS@*/", std::string(assets::report_js())},

@@ -54,8 +54,12 @@ struct CampaignConfig
         kDefaultPluginTimeoutSeconds; // per plugin call (--plugin-timeout)
 };
 
-// The default campaign of `gjk-validate run` without inputs.
+// The default campaign of `gjk-validate run` without inputs: these families and the default case
+// files (defaultCaseFiles). Its one home: run's help and `gjk-validate list` (which
+// scripts/peers_doc.py reads) show it from here.
 std::vector<std::string> defaultFamilies();
+// defaultFamilies() as run's options: "--family random:200000 --family hard --family engine".
+std::string defaultFamilyOptions();
 // Every *.json of the default campaign's case files, sorted, found relative to the program: in
 // <dir>/cases (the build tree, a link to validation/cases) or <dir>/../<datadir>/gjk2d/cases (an
 // installed prefix). InputError, one line naming both places, when neither exists.
@@ -91,7 +95,6 @@ struct Shard
         return (input + chunk) % count == index;
     }
 };
-inline constexpr const char* kShardSchema = "gjk-shard/1";
 
 // A chunk's place in the campaign: chunk `chunk` of input `input`; ordered as the cases are.
 struct ChunkPosition
@@ -102,7 +105,25 @@ struct ChunkPosition
         return input != o.input ? input < o.input : chunk < o.chunk;
     }
 };
-inline constexpr const char* kCheckpointSchema = "gjk-checkpoint/1";
+
+// The state files: shard.json (`run --shard`, read by `merge`) and checkpoint.json (`run
+// --checkpoint`, read by `--resume`), both holding Stats' state (StatsState,
+// docs/report-schema.md). A change of that state (a row of Stats' tables added, renamed or removed)
+// is a new version of both: bump the number in both names, and add the old version to
+// kOldStateVersions.
+inline constexpr const char* kShardSchema = "gjk-shard/2";
+inline constexpr const char* kCheckpointSchema = "gjk-checkpoint/2";
+
+// The earlier versions of the state files, refused with exit code 2 and a message that names the
+// last revision of gjk2d that wrote (and reads) them.
+struct OldStateVersion
+{
+    int version;
+    const char* lastRevision; // from `git log`: the last commit before the next version
+};
+inline constexpr OldStateVersion kOldStateVersions[] = {
+    {1, "ff6aac0"}, // Stats' state in an order of its own, with its history's exceptions
+};
 
 // One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,
 // docs/validation.md "Shards and merge"). Exact: histogram sums are exact, every tie is broken by

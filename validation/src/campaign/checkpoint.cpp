@@ -41,9 +41,8 @@ ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Sha
         throw InputError(
             fmt::format("--resume: {}: no checkpoint to resume from", shownPath(path)));
     const Json j = readJsonFile(path, "--resume");
-    if (!j.is_object() || j.value("schema", "") != kCheckpointSchema)
-        throw InputError(
-            fmt::format("--resume: {}: not a {} file", shownPath(path), kCheckpointSchema));
+    checkStateSchema(j, kCheckpointSchema, "--resume: " + shownPath(path),
+                     "run again without --resume");
     const std::string difference =
         identityDifference(j.at("state").at("campaign"), campaignIdentity(config), "this run");
     if (!difference.empty())

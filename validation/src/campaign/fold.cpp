@@ -27,6 +27,14 @@ std::vector<std::string> defaultFamilies()
     return {"random:" + std::to_string(kDefaultRandomCount), "hard", "engine"};
 }
 
+std::string defaultFamilyOptions()
+{
+    std::string options;
+    for (const std::string& family : defaultFamilies())
+        options += (options.empty() ? "--family " : " --family ") + family;
+    return options;
+}
+
 std::vector<std::string> defaultCaseFiles()
 {
     std::error_code ec;

@@ -1,3 +1,6 @@
+// The adversarial search (`gjk-validate search`, search.hpp): the mutations of a case, the pool of
+// the best cases kept by the objective, the rounds that evaluate each candidate through the
+// campaign's own truth, variants and witness checks, and the search's report.
 #include "campaign/search.hpp"
 
 #include "common/parallel.hpp"

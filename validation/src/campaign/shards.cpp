@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <istream>
+#include <string_view>
 
 namespace gjkval
 {
@@ -69,6 +70,21 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
                 {"elapsed_s", {t.inputs, t.exact, t.gjk, t.witness, t.timing}},
                 {"families", std::move(families)},
                 {"rejected", std::move(rejected)}};
+}
+
+void checkStateSchema(const Json& j, const char* schema, const std::string& file, const char* redo)
+{
+    const std::string found = j.is_object() ? j.value("schema", "") : "";
+    if (found == schema)
+        return;
+    const std::string_view name(schema);
+    const std::string_view kind = name.substr(0, name.find('/') + 1); // "gjk-shard/"
+    for (const OldStateVersion& old : kOldStateVersions)
+        if (found == fmt::format("{}{}", kind, old.version))
+            throw InputError(fmt::format("{}: a {} file, written by gjk2d up to {} (which reads "
+                                         "it); this release writes {}: {}",
+                                         file, found, old.lastRevision, schema, redo));
+    throw InputError(fmt::format("{}: not a {} file", file, schema));
 }
 
 std::string identityDifference(const Json& other, const Json& identity, const std::string& theirs)
@@ -175,8 +191,7 @@ namespace
 // A shard file's campaign identity; InputError when it is not a shard state.
 const Json& shardIdentity(const Json& shard, const std::string& name)
 {
-    if (!shard.is_object() || shard.value("schema", "") != kShardSchema)
-        throw InputError(fmt::format("{}: not a {} file", shownPath(name), kShardSchema));
+    checkStateSchema(shard, kShardSchema, shownPath(name), "run the shards again with it");
     return shard.at("campaign");
 }
 

@@ -102,6 +102,10 @@ std::function<void(ChunkPosition next)> checkpointAfterChunk(const CampaignState
 
 // --- Shard states (shards.cpp) ----------------------------------------------------------------
 
+// InputError unless `j` is a `schema` file (kShardSchema or kCheckpointSchema): "FILE: not a
+// SCHEMA file", or, for an earlier version (kOldStateVersions), one line naming the revision that
+// reads it and `redo`, what to do with this one instead.
+void checkStateSchema(const Json& j, const char* schema, const std::string& file, const char* redo);
 // What `run --shard` writes and `merge` (and a checkpoint) reads.
 Json shardState(const CampaignState& state, const CampaignConfig& config, Shard shard, int threads);
 // What makes two shards parts of one campaign: everything that changes a case, its evaluation

@@ -52,7 +52,12 @@ int compareCommand(const Options& o, CLI::App& sub)
     if (sub.count("--md") > 0)
         checkOutputFile("--md", o.md);
     if (sub.count("--html") > 0)
+    {
+#if !defined(GJK2D_HAVE_HTML)
+        throw InputError("--html: this build has no HTML renderer (validation/html/)");
+#endif
         checkOutputFile("--html", o.html);
+    }
     testFault();
     const Json oldReport = readReport(o.oldPath);
     const Json newReport = readReport(o.newPath);
@@ -62,7 +67,9 @@ int compareCommand(const Options& o, CLI::App& sub)
     std::fputs(compareText(result).c_str(), stdout);
     writeOutput("json", o.json, [&] { return compareJson(result).dump(1) + "\n"; });
     writeOutput("markdown", o.md, [&] { return compareMarkdown(result); });
+#if defined(GJK2D_HAVE_HTML)
     writeOutput("html", o.html, [&] { return compareHtml(result); });
+#endif
     flushStdout();
     return result.exitCode;
 }

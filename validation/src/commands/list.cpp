@@ -1,4 +1,5 @@
 // gjk-validate list: the families and the variants, the plugins' among them.
+#include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
 #include "commands/outputs.hpp"
 #include "commands/plugin_options.hpp"
@@ -35,6 +36,9 @@ void printShippedPeers()
 int listCommand(const PluginOptions& plugins)
 {
     const LoadedPlugins loaded = loadPlugins(plugins); // before any output: a bad one exits 2
+    // One line, read by scripts/peers_doc.py: run's options for the default campaign.
+    std::printf("default campaign (run without --family and --cases): %s --default-cases\n",
+                defaultFamilyOptions().c_str());
     std::printf("families:\n  random  (default count %d)\n", kDefaultRandomCount);
     for (const auto& h : hardSubFamilies())
         std::printf("  hard/%-20s %4d cases  %s\n", h.name.c_str(), h.count, h.reason.c_str());

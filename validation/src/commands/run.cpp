@@ -416,8 +416,8 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
     auto* run = app.add_subcommand(
         "run", "Run a campaign and write DIR/report.json, report.md, worst-cases.json "
                "(and cases.jsonl, index.html). Without --family and --cases: the "
-               "default campaign, --family random:200000 --family hard --family engine plus every "
-               "validation/cases/*.json.");
+               "default campaign, " +
+                   defaultFamilyOptions() + " plus every validation/cases/*.json.");
     run->footer(exitCodesHelp());
     addInputOptions(run, *o);
     addEvaluationOptions(run, *o);

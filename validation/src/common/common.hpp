@@ -51,7 +51,8 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
      "compare: a statistic of NEW got worse than OLD's beyond its tolerance."},
     {kExitInput, "usage or input error: a bad option or argument, an unreadable or invalid case "
                  "file, an unknown case name, an output path that cannot be used, a report compare "
-                 "cannot read or two reports of different inputs, a run too large "
+                 "cannot read or two reports of different inputs, a shard or checkpoint file of "
+                 "another campaign or of an earlier version, a run too large "
                  "for this machine's memory, "
                  "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
                  "description, given twice) "

@@ -1,3 +1,5 @@
+// The run context: the date, the host, the build's facts (build_info.hpp, generated at configure)
+// and the batch's instruction set, as report.json's and bench's context blocks record them.
 #include "common/context.hpp"
 
 #include "build_info.hpp"

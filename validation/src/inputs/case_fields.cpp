@@ -1,3 +1,5 @@
+// One case of a gjk-cases/1 file read field by field: shapes, transforms, radii and provenance,
+// each field checked, every error one line naming the case and the field (the case is rejected).
 #include "inputs/case_fields.hpp"
 
 #include <fmt/format.h>

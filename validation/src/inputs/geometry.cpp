@@ -1,3 +1,6 @@
+// Double-precision geometry for the runner's bookkeeping: exact orientation signs (a filter, then
+// GMP), the convex order check, hulls, the Minkowski difference, world points and the largest
+// distances. It judges nothing: the exact side does.
 #include "inputs/geometry.hpp"
 
 #include "gjk/math.hpp"

@@ -1,3 +1,6 @@
+// The campaign's inputs as streams: a generated family's cases made in chunks on the threads, a
+// case file's entries read in chunks, in case order; and every input of a command line collected
+// (for the commands that hold their cases).
 #include "inputs/sources.hpp"
 
 #include "common/parallel.hpp"

@@ -98,7 +98,8 @@ Comparison compareReports(const Json& oldReport, const Json& newReport,
 std::string compareText(const Comparison& c);
 std::string compareMarkdown(const Comparison& c);
 // The same as a self-contained HTML page (no script, no download): the table with regressed rows
-// in red and better ones in green, the result first.
+// in red and better ones in green, the result first. Only in a build with the HTML renderer
+// (validation/html/: its style sheet and its escape); `compare --html` is refused without it.
 std::string compareHtml(const Comparison& c);
 Json compareJson(const Comparison& c);
 

@@ -2,7 +2,7 @@
 #include "report/compare.hpp"
 
 #if defined(GJK2D_HAVE_HTML)
-#include "gjk_html/html.hpp" // styleSheet
+#include "gjk_html/html.hpp" // styleSheet, escapeHtml
 #endif
 
 #include <fmt/format.h>
@@ -191,31 +191,8 @@ std::string compareMarkdown(const Comparison& c)
     return s;
 }
 
-// Text for HTML element content and attribute values.
-static std::string htmlEscape(const std::string& v)
-{
-    std::string out;
-    for (char ch : v)
-        switch (ch)
-        {
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '&':
-            out += "&amp;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += ch;
-        }
-    return out;
-}
-
+// The HTML page takes the report page's style sheet and escape (validation/html/).
+#if defined(GJK2D_HAVE_HTML)
 // A row's class in report.css: a failing regression, a change for the worse, for the better.
 static const char* rowClass(const CompareRow& r)
 {
@@ -234,13 +211,9 @@ static const char* rowClass(const CompareRow& r)
 
 std::string compareHtml(const Comparison& c)
 {
-    const auto esc = htmlEscape;
+    const auto esc = [](const std::string& text) { return gjk_html::escapeHtml(text); };
     // The palette and the row classes are report.css's (the report page's), inlined.
-#if defined(GJK2D_HAVE_HTML)
     const std::string_view css = gjk_html::styleSheet();
-#else
-    const std::string_view css;
-#endif
     std::string s = fmt::format(
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>gjk-validate "
         "compare</title>\n<style>\n{}\nbody{{padding:2em}}</style></head><body>\n"
@@ -269,6 +242,7 @@ std::string compareHtml(const Comparison& c)
     }
     return s + "</body></html>\n";
 }
+#endif
 
 Json compareJson(const Comparison& c)
 {

@@ -1,3 +1,5 @@
+// `gjk-validate explain`'s text, from a CaseDetail: both shapes, the exact results, and each
+// variant's answer, judgement and iteration trace.
 #include "report/explain.hpp"
 
 #include <fmt/format.h>

@@ -1,3 +1,6 @@
+// The report directory's pages written from a campaign's result: report.json, report.md,
+// worst-cases.json and index.html (the HTML renderer's, from the report converted in memory),
+// and the check that an --out directory holds nothing but a previous report.
 #include "report/pages.hpp"
 
 #include "report/report.hpp"

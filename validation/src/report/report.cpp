@@ -1,3 +1,6 @@
+// report.md and the terminal summary, rendered from report.json alone (the result line, the run's
+// context, the variants, one table per family, the truth's fallbacks, the worst cases); and the
+// exit codes' text for --help and the docs, from kExitCodeTable.
 #include "report/report.hpp"
 
 #include "statistics/stats.hpp" // kPathFields

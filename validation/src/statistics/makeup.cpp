@@ -1,3 +1,5 @@
+// A family's make-up checks folded case by case (makeup.hpp): each metric's value of one case, the
+// fold that keeps a count, a minimum or a maximum, its merge and its state for shards.
 #include "statistics/makeup.hpp"
 
 #include "evaluate/evaluate.hpp"

@@ -1,3 +1,6 @@
+// Stats and its histograms: folding one judged query, merging (exactly, in any order), the
+// report's JSON and the state of shards and checkpoints, all driven by the member tables of
+// stats.hpp.
 #include "statistics/stats.hpp"
 
 #include "evaluate/evaluate.hpp"
@@ -203,22 +206,6 @@ void copyExactly(std::array<T, N>& to, const Json& j, const char* what)
         throw std::runtime_error(std::string("stats state: the number of ") + what + " differs");
     std::copy(v.begin(), v.end(), to.begin());
 }
-
-// The state's "correct_paths": the four path counts and the bit mismatches, in the order states
-// have always had (Extended came last, so that 4-count states from before it still read).
-constexpr std::uint64_t Stats::*kStatePathOrder[] = {&Stats::pathDouble, &Stats::pathDoubleDouble,
-                                                     &Stats::pathExact, &Stats::bitMismatch,
-                                                     &Stats::pathExtended};
-
-// The Truth rows, under "truth" in the report and in the state alike.
-Json truthJson(const Stats& s)
-{
-    Json t = Json::object();
-    for (const CountField& f : kCountFields)
-        if (f.section == Section::Truth)
-            t[f.name] = s.*f.member;
-    return t;
-}
 } // namespace
 
 void Stats::merge(const Stats& o)
@@ -237,75 +224,50 @@ void Stats::merge(const Stats& o)
     addEach(stops, o.stops);
 }
 
-// The state: StatsState (docs/report-schema.md), in its order (see Section).
+// The state: StatsState (docs/report-schema.md), each table's rows in their order.
 Json Stats::state() const
 {
-    Json j;
+    Json counts = Json::object(), flags = Json::object(), histograms = Json::object();
     for (const CountField& f : kCountFields)
-        if (f.section == Section::Top || f.section == Section::Interval)
-            j[f.name] = this->*f.member;
+        counts[f.name] = this->*f.member;
     for (const FlagField& f : kFlagFields)
-        j[f.name] = this->*f.member;
-    for (Section section : {Section::Interval, Section::Top})
-        for (const HistField& f : kHistFields)
-            if (f.section == section)
-                j[f.name] = (this->*f.member).state();
-    j["iterations"] = iterations.state();
-    j["stops"] = stops;
-    for (const CountField& f : kCountFields)
-        if (f.section == Section::SinceInvalid)
-            j[f.name] = this->*f.member;
-    j["invalid_reasons"] = invalidReasons;
+        flags[f.name] = this->*f.member;
     for (const HistField& f : kHistFields)
-        if (f.section == Section::SinceInvalid)
-            j[f.name] = (this->*f.member).state();
-    if (hasPaths) // written only by correctly rounded variants (older states have none)
+        histograms[f.name] = (this->*f.member).state();
+    Json paths = nullptr; // null: not a correctly rounded variant
+    if (hasPaths)
     {
-        Json p = Json::array();
-        for (auto m : kStatePathOrder)
-            p.push_back(this->*m);
-        j["correct_paths"] = std::move(p);
+        paths = Json::array();
+        for (const PathField& f : kPathFields)
+            paths.push_back(this->*f.member);
     }
-    for (const CountField& f : kCountFields)
-        if (f.section == Section::SinceWitnessFilter)
-            j[f.name] = this->*f.member;
-    j["truth"] = truthJson(*this); // last: the keys before it keep their order
-    return j;
+    return Json{{"counts", std::move(counts)},         {"flags", std::move(flags)},
+                {"histograms", std::move(histograms)}, {"paths", std::move(paths)},
+                {"invalid_reasons", invalidReasons},   {"stops", stops},
+                {"iterations", iterations.state()}};
 }
 
 Stats Stats::fromState(const Json& j)
 {
     Stats s;
-    const bool sinceInvalid =
-        j.contains("invalid"); // states written before the invalid counts existed have none
     for (const CountField& f : kCountFields)
-        if (f.section == Section::Top || f.section == Section::Interval ||
-            (f.section == Section::SinceInvalid && sinceInvalid))
-            s.*f.member = j.at(f.name).get<std::uint64_t>();
-        else if (f.section == Section::SinceWitnessFilter && j.contains(f.name))
-            s.*f.member = j.at(f.name).get<std::uint64_t>();
+        s.*f.member = j.at("counts").at(f.name).get<std::uint64_t>();
     for (const FlagField& f : kFlagFields)
-        s.*f.member = j.at(f.name).get<bool>();
+        s.*f.member = j.at("flags").at(f.name).get<bool>();
     for (const HistField& f : kHistFields)
-        if (f.section != Section::SinceInvalid || sinceInvalid)
-            s.*f.member = Hist::fromState(j.at(f.name));
-    s.iterations = IterHist::fromState(j.at("iterations"));
-    copyExactly(s.stops, j.at("stops"), "stop reasons");
-    if (sinceInvalid)
-        copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
-    if (j.contains("truth")) // states written before the truth's counts have none
-        for (const CountField& f : kCountFields)
-            if (f.section == Section::Truth)
-                s.*f.member = j.at("truth").at(f.name).get<std::uint64_t>();
-    if (j.contains("correct_paths"))
+        s.*f.member = Hist::fromState(j.at("histograms").at(f.name));
+    const Json& paths = j.at("paths");
+    s.hasPaths = !paths.is_null();
+    if (s.hasPaths)
     {
-        const auto p = j.at("correct_paths").get<std::vector<std::uint64_t>>();
-        if (p.size() != 4 && p.size() != 5) // 4: before CorrectPath::Extended
-            throw std::runtime_error("stats state: correct_paths needs 4 or 5 counts");
-        s.hasPaths = true;
+        std::array<std::uint64_t, std::size(kPathFields)> p{};
+        copyExactly(p, paths, "correct paths");
         for (std::size_t i = 0; i < p.size(); ++i)
-            s.*kStatePathOrder[i] = p[i];
+            s.*kPathFields[i].member = p[i];
     }
+    copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
+    copyExactly(s.stops, j.at("stops"), "stop reasons");
+    s.iterations = IterHist::fromState(j.at("iterations"));
     return s;
 }
 
@@ -317,8 +279,7 @@ void writeCounts(const Stats& s, Json& j)
 {
     for (const CountField& f : kCountFields)
     {
-        if (f.section != Section::Top && f.section != Section::SinceInvalid &&
-            f.section != Section::SinceWitnessFilter)
+        if (f.section != Section::Top)
             continue;
         j[f.name] = s.*f.member;
         if (f.member == &Stats::failures)
@@ -333,12 +294,20 @@ void writeCounts(const Stats& s, Json& j)
     }
 }
 
+// The report's Truth rows, under "truth".
+Json truthJson(const Stats& s)
+{
+    Json t = Json::object();
+    for (const CountField& f : kCountFields)
+        if (f.section == Section::Truth)
+            t[f.name] = s.*f.member;
+    return t;
+}
 Json errorsJson(const Stats& s)
 {
     Json e;
     for (const HistField& f : kHistFields)
-        if ((f.section == Section::Top || f.section == Section::SinceInvalid) &&
-            (f.shownIf == nullptr || s.*f.shownIf))
+        if (f.section == Section::Top && (f.shownIf == nullptr || s.*f.shownIf))
             e[f.name] = (s.*f.member).toJson();
     return e;
 }
@@ -393,7 +362,7 @@ Json Stats::toJson() const
     j["ns_spread"] = nsPerQuery >= 0 ? Json::array({nsMin, nsMax}) : Json(nullptr);
     j["timing_passes"] = timingPasses;
     j["ratio_to_baseline"] = ratioToBaseline >= 0 ? Json(ratioToBaseline) : Json(nullptr);
-    j["truth"] = truthJson(*this); // last: the keys before it keep their order
+    j["truth"] = truthJson(*this); // last (Section::Truth)
     return j;
 }
 

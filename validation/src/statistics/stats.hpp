@@ -132,22 +132,18 @@ struct Stats
 // A new counter or histogram: declare it in Stats above, fold it in Stats::add, and give it one
 // row below. merge, toJson (the report, docs/report-schema.md), state/fromState (shards and
 // checkpoints) and `gjk-validate compare` (the rows with `regresses`) all read these tables.
-// Rows are in the report's order; where a member sits in the report and in the state is its
-// Section. Documented exceptions, kept so the JSON stays byte for byte what it was:
-// - derived fields written beside a row: "pass" after failures, "invalid_reasons" after invalid,
-//   "misses" after contains (stats.cpp, toJson);
-// - the state writes the Interval histograms before the others (StatsState's order);
-// - the path counts are a state array in a fixed legacy order (stats.cpp, kStatePathOrder);
-// - the Truth rows are the last key, "truth", of the report and of the state (issue 34).
+// Rows are in the report's order; where a member sits in the report is its Section. The report
+// writes three derived fields beside a row: "pass" after failures, "invalid_reasons" after
+// invalid, "misses" after contains (stats.cpp, toJson). The state is the tables in their order
+// (docs/report-schema.md, StatsState): a row added, renamed or removed changes it, so bump the
+// state's version with it (kShardSchema, kCheckpointSchema and kOldStateVersions in
+// campaign/campaign.hpp).
 enum class Section : std::uint8_t
 {
-    Top, // report: top level (a histogram: under "errors"); state: top level, in table order
-    SinceInvalid, // as Top in the report; state: after "stops", absent from states written before
-                  // it
-    Interval,     // report: under "interval" (certified variants); state: top level
-    Correct,      // report: under "correct" (correctly rounded variants); state: in "correct_paths"
-    SinceWitnessFilter, // as Top in the report; state: last, absent from states written before it
-    Truth, // report and state: under "truth", the last key (absent from states written before it)
+    Top,      // report: top level (a histogram: under "errors")
+    Interval, // report: under "interval" (certified variants)
+    Correct,  // report: under "correct" (correctly rounded variants)
+    Truth,    // report: under "truth", the last key
 };
 
 struct CountField
@@ -168,15 +164,15 @@ inline constexpr CountField kCountFields[] = {
     {"out_of_range", &Stats::outOfRange, Section::Top, true},
     {"iteration_limit", &Stats::iterationLimit, Section::Top, true},
     {"beyond_bound", &Stats::beyondBound, Section::Top, true},
-    {"invalid", &Stats::invalid, Section::SinceInvalid, true},
+    {"invalid", &Stats::invalid, Section::Top, true},
     {"skipped", &Stats::skipped, Section::Top, true},
     {"not_applicable", &Stats::notApplicable, Section::Top, false},
     {"refused", &Stats::refused, Section::Top, false},
     {"plugin_errors", &Stats::pluginErrors, Section::Top, false},
     {"crashed", &Stats::crashed, Section::Top, false},
     {"hung", &Stats::hung, Section::Top, false},
-    {"witness_points", &Stats::witnessPoints, Section::SinceWitnessFilter, false},
-    {"witness_exact", &Stats::witnessExact, Section::SinceWitnessFilter, false},
+    {"witness_points", &Stats::witnessPoints, Section::Top, false},
+    {"witness_exact", &Stats::witnessExact, Section::Top, false},
     {"certified", &Stats::certified, Section::Interval, false},
     {"contains", &Stats::contains, Section::Interval, false},
     {"uncertified", &Stats::uncertified, Section::Interval, false},
@@ -194,7 +190,7 @@ struct HistField
 {
     const char* name;
     Hist Stats::*member;
-    Section section;      // Top or SinceInvalid: under the report's "errors"
+    Section section;      // Top: under the report's "errors"
     bool Stats::*shownIf; // the report writes it only when this flag is set; nullptr: always
 };
 
@@ -206,12 +202,12 @@ inline constexpr HistField kHistFields[] = {
     {"bound_ratio", &Stats::boundRatio, Section::Top, nullptr},
     {"witness", &Stats::witness, Section::Top, nullptr},
     {"witness_gap", &Stats::witnessGap, Section::Top, nullptr},
-    {"witness_ratio", &Stats::witnessRatio, Section::SinceInvalid, nullptr},
+    {"witness_ratio", &Stats::witnessRatio, Section::Top, nullptr},
     {"input_rounding", &Stats::inputRounding, Section::Top, &Stats::hasInputRounding},
     {"width_ulps", &Stats::widthUlps, Section::Interval, nullptr},
 };
 
-// Flags merged by "or"; hasPaths is not one: the state's "correct_paths" stands for it.
+// Flags merged by "or"; hasPaths is not one: the state's "paths" (null without) stands for it.
 struct FlagField
 {
     const char* name;

@@ -1,3 +1,6 @@
+// `gjk-validate bench`: the valid cases prepared once, every variant timed (gjk2d's with their
+// passes alternated, plugins in their child processes), the ratios to the baseline and to a peer's
+// own loop, the bench report's JSON and its table.
 #include "timing/bench.hpp"
 
 #include "implementations/peers.hpp"

@@ -1,3 +1,6 @@
+// Timed passes of the variants: the cases in one contiguous array per scalar type, a loop per kind
+// of variant (plain, correctly rounded, batch, plugin) that keeps the whole answer, and the median
+// over the passes.
 #include "timing/timing.hpp"
 
 #include "evaluate/evaluate.hpp"

@@ -26,6 +26,11 @@ std::string renderCase(const nlohmann::json& caseDetail);
 // (gjk-validate compare --html) inline it and use its classes.
 std::string_view styleSheet();
 
+// Text as HTML: every '<', '>', '&' and '"' written as its entity, so that it is safe as element
+// content and as a double-quoted attribute value. The one escape of the pages gjk2d writes (this
+// renderer's and `gjk-validate compare --html`'s).
+std::string escapeHtml(std::string_view text);
+
 // The JSON text as inlined into the page's <script type="application/json" id="report-data">
 // block: compact, invalid UTF-8 replaced by U+FFFD, and every '<', '>' and '&' written as a
 // \u escape, so no "</script>" or "<!--" can end or disturb the block. The text is valid JSON and

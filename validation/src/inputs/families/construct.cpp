@@ -1,3 +1,6 @@
+// The constructions the family generators share: polygons (on a circle, regular, random), poses
+// (random, relative, shared, baked into the points), and one shape placed at a chosen gap from
+// another.
 #include "inputs/families/construct.hpp"
 
 #include <algorithm>
