@@ -15,7 +15,7 @@
  * refuses such a case without calling (the check below repeats it for a direct caller). It adds
  * nothing to Box2D's answer and drops nothing: the test "plugins: box2d-v3: the adapter's answers
  * equal b2ShapeDistance called directly" compares every case of the default families bit for bit
- * with tests/plugins/box2d3_direct.c.
+ * with validation/plugins/box2d-v3/tests/direct.c.
  *
  * Findings (docs/peers.md, "Box2D v3", with the command): on an overlap of rounded shapes whose
  * cores are apart, Box2D v3 answers distance 0 but keeps each witness point on its own perimeter

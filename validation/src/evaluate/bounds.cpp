@@ -1,3 +1,5 @@
+// The derived error bounds (evaluate/bounds.hpp): the distance's errorBound() and the witness
+// points' witnessBound(), each with its formula's text (docs/error-bound.md).
 #include "evaluate/bounds.hpp"
 
 #include "gjk/math.hpp"

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """The shipped Box2D v3 adapter adds nothing and loses nothing (issue 32, a Done-when):
 
-  box2d3_equal.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --direct BOX2D3_DIRECT
+  equal.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --direct BOX2D3_DIRECT
                   --work DIR --family SPEC [--family SPEC ...]
 
 1. `gjk-validate generate` writes the families' cases to DIR/cases.json;
-2. box2d3_direct (tests/plugins/box2d3_direct.c, the same Box2D objects and flags as the adapter)
+2. box2d3_direct (validation/plugins/box2d-v3/tests/direct.c, the same Box2D objects and flags as the adapter)
    calls b2ShapeDistance on each case, from DIR/cases.txt, which this script writes: every number
    as Python's repr, so the program reads the file's doubles bit for bit;
 3. `gjk-validate run --cases DIR/cases.json --plugin ... --per-case` runs the adapter, child process

@@ -1,8 +1,8 @@
 /* b2ShapeDistance called directly, without gjk-validate or the adapter: the other side of the test
  * "plugins: box2d-v3: the adapter's answers equal b2ShapeDistance called directly"
- * (box2d3_equal.py). Linked with the same Box2D objects as gjk2d-box2d3.so, same flags.
+ * (equal.py). Linked with the same Box2D objects as gjk2d-box2d3.so, same flags.
  *
- * Usage: box2d3_direct CASES.txt     (box2d3_equal.py writes it from a gjk-cases/1 file)
+ * Usage: box2d3_direct CASES.txt     (equal.py writes it from a gjk-cases/1 file)
  *   per case, three lines:  case NAME
  *                           A n radius px py c s x0 y0 ... x(n-1) y(n-1)
  *                           B n radius px py c s x0 y0 ...

@@ -2,7 +2,7 @@
 """Hand-derived cases for the shipped Box2D v3 adapter, run through gjk-validate as a campaign
 runs it (the description, the child process, world coordinates):
 
-  box2d3_hand.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --work DIR
+  hand.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --work DIR
 
 Expected answers, derived by hand (world = R local + p, R = [[c, -s], [s, c]]):
 - squares-3-apart: unit squares (half size 0.5) at (0, 0) and (4, 0): the gap between x = 0.5 and
