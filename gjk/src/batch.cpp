@@ -14,6 +14,8 @@
 // HWY_EXPORT tables), and its MulAdd is one careless edit away from an FMA.
 #include "gjk/batch.hpp"
 
+#include "lane_stop.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -84,6 +86,9 @@ bool batchIsaSupported(BatchIsa isa)
 
 namespace
 {
+
+using lanes::kHandBack; // lane_stop.hpp
+using lanes::kRunning;
 
 // Shapes of more points than this run the scalar query (the lanes copy each shape's points into
 // their buffer when a query starts; a lane scans as many points as the largest shape among the
@@ -188,7 +193,6 @@ template <class T, int W, class State> class LaneBatch
 
   private:
     static constexpr std::size_t kNone = std::size_t(-1);
-    static constexpr int kRunning = -1, kHandBack = -2;
 
     // Within each block of kSortBlock pairs, the pairs in order of their larger shape (a stable
     // counting sort): lanes running at once then hold shapes of about one size, and the scans

@@ -198,8 +198,8 @@ template <class T, int W> struct LaneState
     std::uint64_t steps = 0, busyLaneSteps = 0, scannedPoints = 0, usefulPoints = 0;
 };
 
-inline constexpr int kRunning = -1;
-inline constexpr int kHandBack = -2;
+using gjk::lanes::kHandBack; // lane_stop.hpp
+using gjk::lanes::kRunning;
 
 // Runs the lanes whose stop is kRunning in lockstep until at least one of them stops; returns
 // whether any lane stopped (no lane running: returns false at once). LaneState::stopped then says
