@@ -172,8 +172,8 @@ template <class T, bool FloatRotations = false> void BM_RandomLanes(benchmark::S
     for (auto _ : state)
     {
         std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
-                           gjk::referenceOptions, isa, &stats);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                                gjk::referenceOptions, isa, &stats);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());
@@ -200,8 +200,8 @@ template <class T> void BM_RandomLanesWarm(benchmark::State& state)
         gjk::distance(in[i], caches[i]);
     for (auto _ : state)
     {
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
-                           gjk::referenceOptions, isa);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                                gjk::referenceOptions, isa);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());

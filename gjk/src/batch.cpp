@@ -1,6 +1,6 @@
-// gjk::distanceBatch in SIMD lanes (gjk/batch.hpp): the run-time choice of instruction set, and
-// the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts it),
-// ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
+// gjk::distanceBatchLanes in SIMD lanes (gjk/batch.hpp): the run-time choice of instruction set,
+// and the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts
+// it), ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
 //
 // Why GCC vector extensions and `#pragma GCC target` rather than Highway (libhwy-dev): the lanes
 // need element-wise +, -, *, /, comparisons and selects only (no gather: a lane's points are
@@ -472,9 +472,9 @@ BatchIsa bestBatchIsaFor(std::span<const DistanceInput<float>> inputs)
 namespace
 {
 template <class T>
-void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
-                       std::span<DistanceOutput<T>> outputs, const Options& options, BatchIsa isa,
-                       BatchStats* stats)
+void distanceBatchLanesImpl(std::span<const DistanceInput<T>> inputs,
+                            std::span<SimplexCache> caches, std::span<DistanceOutput<T>> outputs,
+                            const Options& options, BatchIsa isa, BatchStats* stats)
 {
     GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
     const BatchIsa best = bestBatchIsa();
@@ -514,18 +514,18 @@ void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<Simpl
 
 } // namespace
 
-void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<double>> outputs, const Options& options, BatchIsa isa,
-                   BatchStats* stats)
+void distanceBatchLanes(std::span<const DistanceInput<double>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<double>> outputs,
+                        const Options& options, BatchIsa isa, BatchStats* stats)
 {
-    distanceBatchImpl<double>(inputs, caches, outputs, options, isa, stats);
+    distanceBatchLanesImpl<double>(inputs, caches, outputs, options, isa, stats);
 }
 
-void distanceBatch(std::span<const DistanceInput<float>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<float>> outputs, const Options& options, BatchIsa isa,
-                   BatchStats* stats)
+void distanceBatchLanes(std::span<const DistanceInput<float>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<float>> outputs,
+                        const Options& options, BatchIsa isa, BatchStats* stats)
 {
-    distanceBatchImpl<float>(inputs, caches, outputs, options, isa, stats);
+    distanceBatchLanesImpl<float>(inputs, caches, outputs, options, isa, stats);
 }
 
 } // namespace gjk

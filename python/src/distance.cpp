@@ -1,5 +1,6 @@
-// gjk2d.distance (one query) and gjk2d.distance_batch (gjk::distanceBatch over ragged point sets
-// packed with offsets), float32 or float64 (docs/python.md, "One query", "A batch of queries").
+// gjk2d.distance (one query) and gjk2d.distance_batch (gjk::distanceBatchLanes over ragged point
+// sets packed with offsets), float32 or float64 (docs/python.md, "One query", "A batch of
+// queries").
 #include "arrays.hpp"
 #include "bindings.hpp"
 

@@ -406,7 +406,8 @@ void runCorrect(const char* name, std::uint64_t seed, int pairs)
 }
 
 #ifdef GJK_HASH_BATCH
-// --- The batch's portable fallback (gjk::distanceBatch, gjk/src/batch.cpp) ----------------------
+// --- The batch's portable fallback (gjk::distanceBatchLanes, gjk/src/batch.cpp)
+// ----------------------
 //
 // Built with -DGJK_HASH_BATCH and gjk/src/batch.cpp linked (tests/consumer/cross_build.sh; the
 // flag matrix builds the header-only program). The batch's SIMD lanes exist only with GCC on
@@ -459,7 +460,7 @@ template <class T> void runBatch(const char* name, std::uint64_t seed, int pairs
                   std::tuple{half, inputs.size(), certified}})
             {
                 gjk::BatchStats stats;
-                gjk::distanceBatch(
+                gjk::distanceBatchLanes(
                     std::span<const gjk::DistanceInput<T>>(inputs.data() + begin, end - begin),
                     std::span(caches.data() + begin, end - begin),
                     std::span(outputs.data() + begin, end - begin), options, isa, &stats);

@@ -73,6 +73,11 @@ struct BatchStats
     std::uint64_t usefulPoints = 0;  // of them, the points of the lane's own shapes
 };
 
+// Its own name, not an overload of distance.hpp's distanceBatch: with one name, a user's call would
+// switch between the portable loop and these lanes depending on whether some header included this
+// one; with two, each call says which it runs. "Lanes" is what it adds (BatchIsa, BatchStats;
+// docs/gjk.md, "Batches in SIMD lanes"), under the batch's prefix.
+//
 // The batch: outputs[i] = distance(inputs[i], caches[i], options), caches[i] updated (warm batches:
 // pass each pair's cache from the previous step). The spans must have equal sizes. `isa`: Best, or
 // one this CPU runs (else the next narrower one that it runs). Best chooses once per batch, from
@@ -80,13 +85,13 @@ struct BatchStats
 // such shapes: float always lanes, double lanes only when the mean is at most 3.75 points per
 // shape (gjk/src/batch.cpp, kDoubleLanesMaxMeanPoints; stats->isa says which ran). The bits are
 // the same either way. `stats`: filled when given.
-void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<double>> outputs,
-                   const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
-                   BatchStats* stats = nullptr);
-void distanceBatch(std::span<const DistanceInput<float>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<float>> outputs,
-                   const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
-                   BatchStats* stats = nullptr);
+void distanceBatchLanes(std::span<const DistanceInput<double>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<double>> outputs,
+                        const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
+                        BatchStats* stats = nullptr);
+void distanceBatchLanes(std::span<const DistanceInput<float>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<float>> outputs,
+                        const Options& options = referenceOptions, BatchIsa isa = BatchIsa::Best,
+                        BatchStats* stats = nullptr);
 
 } // namespace gjk

@@ -612,8 +612,9 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is
 // distance(inputs[i], caches[i], options). The spans must have equal sizes. Same results as the
-// single query, bit for bit (test "batch"). This header-only one is the single-query loop; the
-// overloads of gjk/batch.hpp (target gjk::batch) run the queries in SIMD lanes (docs/gjk.md).
+// single query, bit for bit (test "batch"). This header-only one is the single-query loop;
+// distanceBatchLanes (gjk/batch.hpp, target gjk::batch) runs the queries in SIMD lanes, under a
+// name of its own so that including it never changes which function this name calls (docs/gjk.md).
 template <class T>
 void distanceBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
                    std::span<DistanceOutput<T>> outputs, const Options& options = referenceOptions)

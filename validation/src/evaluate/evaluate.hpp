@@ -80,9 +80,9 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
         gjk::distance(in, cache, v.options);
     gjk::DistanceOutput<T> out;
     if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
-                           std::span<gjk::SimplexCache>(&cache, 1),
-                           std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(&in, 1),
+                                std::span<gjk::SimplexCache>(&cache, 1),
+                                std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
     else
         out = gjk::distance(in, cache, v.options, trace);
     // A correctly rounded variant: its undecided queries completed exactly, as a user would.
@@ -95,10 +95,10 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
 // from `truth` (a non-finite answer is the farthest) returned; ties keep the earlier start. Where
 // SIMD lanes pay on the case's shapes (gjk::bestBatchIsaFor: always for float, for double on small
-// shapes), the starts after the cold one are answered as one gjk::distanceBatch, the same input in
-// every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp); elsewhere
-// by the scalar query one start after the other, which is what the batch would run, less its
-// copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
+// shapes), the starts after the cold one are answered as one gjk::distanceBatchLanes, the same
+// input in every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp);
+// elsewhere by the scalar query one start after the other, which is what the batch would run, less
+// its copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
 template <class T> struct StartBatch
 {
     std::vector<gjk::DistanceInput<T>> inputs;
@@ -144,9 +144,9 @@ gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, d
     }
     b.inputs.assign(b.caches.size(), in);
     b.outputs.resize(b.caches.size());
-    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(b.inputs),
-                       std::span<gjk::SimplexCache>(b.caches),
-                       std::span<gjk::DistanceOutput<T>>(b.outputs), v.options);
+    gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(b.inputs),
+                            std::span<gjk::SimplexCache>(b.caches),
+                            std::span<gjk::DistanceOutput<T>>(b.outputs), v.options);
     for (const gjk::DistanceOutput<T>& o : b.outputs)
         consider(o);
     return worst;

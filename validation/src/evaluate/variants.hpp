@@ -50,7 +50,7 @@ struct VariantInfo
     // Set for a plugin's implementation (evaluate/plugins.hpp, `--plugin`): the answer comes from
     // it, evaluated in a child process; `options` then only names the bound it is compared with.
     const PluginImpl* plugin = nullptr;
-    // Run through gjk::distanceBatch (gjk/batch.hpp: SIMD lanes, the instruction set chosen at
+    // Run through gjk::distanceBatchLanes (gjk/batch.hpp: SIMD lanes, the instruction set chosen at
     // run time): the accuracy run on one-case batches, each checked to be bit for bit the scalar
     // query (evaluate.cpp); the timing on batches of all the timed cases.
     bool batch = false;
