@@ -1,8 +1,9 @@
 # The SDK: `cmake --install build/release --prefix P` puts under P
-#   include/gjk/...          the header-only GJK library        (gjk2d::gjk)
-#   include/exact/exact.hpp  the exact side's CGAL-free header   (gjk2d::exact, with
+#   include/gjk2d/...        the header-only GJK library        (gjk2d::gjk; gjk2d/distance.hpp)
+#   include/gjk2d/exact.hpp  the exact side's CGAL-free header   (gjk2d::exact, with
 #   lib/libgjk2d_exact.a     its static library; links GMP and MPFR by name)
 #   include/gjk2d/plugin.h   the plugin ABI                      (gjk2d::plugin)
+#   include/gjk/, exact/     the old paths, each forwarding to gjk2d/ with a warning, for one release
 #   bin/gjk-validate         the runner
 #   lib/gjk2d/plugins/       the shipped plugins (the Box2D 2.4.1 adapter, the peers), loaded by `run`
 #   share/gjk2d/cases/       the default campaign's case files

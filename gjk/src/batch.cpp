@@ -1,4 +1,4 @@
-// gjk::distanceBatchLanes in SIMD lanes (gjk/batch.hpp): the run-time choice of instruction set,
+// gjk::distanceBatchLanes in SIMD lanes (gjk2d/batch.hpp): the run-time choice of instruction set,
 // and the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts
 // it), ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
 //
@@ -12,7 +12,7 @@
 // picked by the linker for baseline code), and __builtin_cpu_supports chooses at run time. No new
 // dependency. Highway would give the same with more vocabulary (its own names for every operation,
 // HWY_EXPORT tables), and its MulAdd is one careless edit away from an FMA.
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 
 #include "lane_stop.hpp"
 
@@ -29,34 +29,34 @@
 #include <immintrin.h> // square roots and movemasks (batch_lanes.hpp), used under the target pragmas
 
 // SSE2: x86-64's baseline, no target pragma needed.
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_sse2
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_avx2
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 #pragma GCC pop_options
 
 #pragma GCC push_options
 #pragma GCC target("avx512f")
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_avx512
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 #pragma GCC pop_options
 #else
 #define GJK_BATCH_LANES 0
 #endif
 
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 
 namespace gjk
 {
@@ -530,4 +530,4 @@ void distanceBatchLanes(std::span<const DistanceInput<float>> inputs,
 
 } // namespace gjk
 
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"

@@ -1,4 +1,4 @@
-// The GJK loop of gjk/include/gjk/distance.hpp, one query per SIMD lane (gjk/batch.hpp).
+// The GJK loop of gjk/include/gjk2d/distance.hpp, one query per SIMD lane (gjk2d/batch.hpp).
 // No include guard: gjk/src/batch.cpp includes this file once per instruction set, each time in
 // its own namespace (GJK_LANES_NAMESPACE) under its own `#pragma GCC target`, so that no function
 // compiled for AVX2 or AVX-512 can be picked by the linker for code that runs on the baseline.

@@ -1,10 +1,10 @@
-// gjk2d.distance_batch: many pairs in one call, gjk::distanceBatchLanes (gjk/batch.hpp, SIMD lanes)
-// underneath. Shapes are ragged point sets packed into one (N, 2) array: pair i's shape A is
+// gjk2d.distance_batch: many pairs in one call, gjk::distanceBatchLanes (gjk2d/batch.hpp, SIMD
+// lanes) underneath. Shapes are ragged point sets packed into one (N, 2) array: pair i's shape A is
 // points[offsets_a[i]:offsets_a[i + 1]], its shape B points[offsets_b[i]:offsets_b[i + 1]].
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <gjk/batch.hpp>
+#include <gjk2d/batch.hpp>
 
 #include <algorithm>
 #include <chrono>

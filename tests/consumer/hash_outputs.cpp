@@ -1,4 +1,4 @@
-// A consumer of gjk/distance.hpp built with the user's flags, not the project's: it hashes every
+// A consumer of gjk2d/distance.hpp built with the user's flags, not the project's: it hashes every
 // output bit of 40,000 queries so that builds with different compilers and flags can be compared
 // (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_build.sh), and builds for other
 // platforms too (docs/gjk.md, "The same bits on every platform"; tests/consumer/cross_build.sh):
@@ -27,9 +27,9 @@
 // `--dump FILE` the certified intervals are written out (raw doubles, query order); with
 // `--against FILE` (another build's dump) each interval must intersect that build's: both contain
 // d*. This is how a build whose bits are not promised (Clang -ffp-contract=fast) is still tested.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 #ifdef GJK_HASH_BATCH
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 #endif
 
 #include <algorithm>
@@ -288,7 +288,8 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
     }
 }
 
-// --- The correctly rounded query (Options::correctlyRounded, gjk/correct.hpp), double only ------
+// --- The correctly rounded query (Options::correctlyRounded, gjk2d/correct.hpp), double only
+// ------
 //
 // Its stages differ by platform: the extended stage runs where long double is the x87 80-bit
 // format (x86) and is skipped elsewhere (binary128 on aarch64, riscv64 and s390x), and what no

@@ -1,8 +1,8 @@
-// gjk::distanceBatchLanes in SIMD lanes (gjk/batch.hpp): bit for bit the single query, on every
+// gjk::distanceBatchLanes in SIMD lanes (gjk2d/batch.hpp): bit for bit the single query, on every
 // instruction set this CPU runs (SSE2 always on x86-64; AVX2 and AVX-512 when present), cold and
 // warm, for lanes of mixed sizes (masked by padding), for the rare paths that leave the lanes and
 // for options the lanes do not cover. Expected values: gjk::distance itself, one pair at a time.
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 #include "random_shapes.hpp"
 
 #include <catch2/catch.hpp>

@@ -113,7 +113,7 @@ def sdk(a):
     # pkg-config: a consumer of the exact side, compiled and linked from gjk2d.pc alone.
     consumer = os.path.join(a.work, "consumer.cpp")
     open(consumer, "w").write(
-        "#include <exact/exact.hpp>\n#include <gjk/distance.hpp>\n#include <gjk2d/plugin.h>\n"
+        "#include <gjk2d/exact.hpp>\n#include <gjk2d/distance.hpp>\n#include <gjk2d/plugin.h>\n"
         "#include <cstdio>\nint main() {\n"
         "  exact::Shape a{{{0, 0}, {1, 0}, {0, 1}}, 0}, b{{{3, 0}, {4, 0}, {3, 1}}, 0};\n"
         "  std::printf(\"%.17g\\n\", exact::distance(a, b).distance);\n}\n")

@@ -4,7 +4,7 @@
 
 #include "common/common.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <CLI/CLI.hpp>
 

@@ -2,7 +2,7 @@
 
 #include "inputs/geometry.hpp"
 
-#include <exact/correct_fallback.hpp>
+#include <gjk2d/correct_fallback.hpp>
 
 #include <fmt/format.h>
 
@@ -348,7 +348,7 @@ template <class T> bool sameBits(T a, T b)
 }
 
 // The variant's query; a batch variant's is checked against the scalar query, bit for bit in every
-// output field and the cache (gjk/batch.hpp's promise). A difference is a broken invariant of the
+// output field and the cache (gjk2d/batch.hpp's promise). A difference is a broken invariant of the
 // library (std::logic_error: exit code 4), never a failure of the case.
 template <class T>
 gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const VariantInfo& v)
@@ -381,7 +381,7 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
     if (!same)
         throw std::logic_error(fmt::format(
             "variant {}: case '{}': gjk::distanceBatchLanes ({}) differs from gjk::distance "
-            "(distance {} vs {}, {} vs {} iterations): gjk/batch.hpp promises the same bits",
+            "(distance {} vs {}, {} vs {} iterations): gjk2d/batch.hpp promises the same bits",
             v.name, c.name, gjk::batchIsaName(gjk::bestBatchIsa()), double(out.distance),
             double(ref.distance), out.iterations, ref.iterations));
     return out;

@@ -7,10 +7,10 @@
 #include "evaluate/variants.hpp"
 #include "inputs/cases.hpp"
 
-#include "gjk/batch.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/batch.hpp"
+#include "gjk2d/distance.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <boost/container/small_vector.hpp>
 
@@ -61,7 +61,7 @@ inline constexpr const char* kSkipRefused = "refused by the implementation (plug
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
 
-// exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
+// exact::completeCorrectlyRounded (gjk2d/correct_fallback.hpp), out of line: the timing loop of
 // every variant inlines query() below, and only correctly rounded variants ever call it.
 [[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in,
                                        const gjk::Options& options,
@@ -96,7 +96,7 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
 // from `truth` (a non-finite answer is the farthest) returned; ties keep the earlier start. Where
 // SIMD lanes pay on the case's shapes (gjk::bestBatchIsaFor: always for float, for double on small
 // shapes), the starts after the cold one are answered as one gjk::distanceBatchLanes, the same
-// input in every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp);
+// input in every slot (about 35 queries a `random` case; the scalar query's bits, gjk2d/batch.hpp);
 // elsewhere by the scalar query one start after the other, which is what the batch would run, less
 // its copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
 template <class T> struct StartBatch

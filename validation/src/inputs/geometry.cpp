@@ -1,6 +1,6 @@
 #include "inputs/geometry.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <gmpxx.h>
 
