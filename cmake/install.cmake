@@ -1,8 +1,11 @@
 # The SDK: `cmake --install build/release --prefix P` puts under P
-#   include/gjk/...          the header-only GJK library        (gjk2d::gjk)
-#   include/exact/exact.hpp  the exact side's CGAL-free header   (gjk2d::exact, with
+#   include/gjk2d/...        the header-only GJK library        (gjk2d::gjk; gjk2d/distance.hpp)
+#   include/gjk2d/batch.hpp  the batch in SIMD lanes            (gjk2d::batch, with
+#   lib/libgjk2d_batch.a     its static library)
+#   include/gjk2d/exact.hpp  the exact side's CGAL-free header   (gjk2d::exact, with
 #   lib/libgjk2d_exact.a     its static library; links GMP and MPFR by name)
 #   include/gjk2d/plugin.h   the plugin ABI                      (gjk2d::plugin)
+#   include/gjk/, exact/     the old paths, each forwarding to gjk2d/ with a warning, for one release
 #   bin/gjk-validate         the runner
 #   lib/gjk2d/plugins/       the shipped plugins (the Box2D 2.4.1 adapter, the peers), loaded by `run`
 #   share/gjk2d/cases/       the default campaign's case files
@@ -18,7 +21,7 @@ set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 set(GJK2D_CMAKE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/gjk2d)
 
-install(TARGETS gjk2d_gjk gjk2d_exact gjk2d_plugin EXPORT gjk2d-targets
+install(TARGETS gjk2d_gjk gjk2d_batch gjk2d_exact gjk2d_plugin EXPORT gjk2d-targets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/gjk/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})

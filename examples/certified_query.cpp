@@ -1,5 +1,5 @@
 // A certified query: Options::certify adds an interval [lower, upper] of doubles that provably
-// contains the exact distance between the shapes as given (gjk/certify.hpp).
+// contains the exact distance between the shapes as given (gjk2d/certify.hpp).
 //
 // The answer, by hand (the CTest "example: certified_query" checks it): A is the box [-1, 1]^2 at
 // the origin, B the same box at (3, 3). Their closest points are the corners (1, 1) and (2, 2),
@@ -8,7 +8,7 @@
 // double, so the interval cannot be a single point; the program checks, exactly, that
 // lower <= sqrt(2) <= upper, i.e. lower^2 <= 2 <= upper^2 (squares split into a rounded part and
 // its exact error with std::fma, which -ffp-contract=off does not touch).
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// The exact side (exact/include/exact/exact.hpp, CGAL and GMP behind it): the exact distance of a
+// The exact side (exact/include/gjk2d/exact.hpp, CGAL and GMP behind it): the exact distance of a
 // pair, and a float GJK answer's error in ulps against it (the error measure of gjk-validate: the
 // absolute error over the spacing of floats at the exact value).
 //
@@ -8,8 +8,8 @@
 // - certified_query's pair: two boxes [-1, 1]^2, at the origin and at (3, 3): squared distance 2,
 //   distance sqrt(2). The float query's answer is sqrtf(2), correctly rounded: sqrt(2) * 2^23 =
 //   11863283.2030..., so it is 11863283 * 2^-23, 0.2030 ulps (of 2^-23) below the exact value.
-#include "exact/exact.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
+#include "gjk2d/exact.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -10,7 +10,7 @@
 //   Minus both radii: distance 3 - 0.25 - 0.5 = 2.25; the witness points move along the normal
 //   (1, 0): pointA = (-1 + 0.25, 1) = (-0.75, 1), pointB = (2 - 0.5, 1) = (1.5, 1).
 // Every number above is a small dyadic rational, so the double query computes them exactly.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <cstdio>
 

@@ -9,7 +9,7 @@
 //   y in [1 - 3k/4, 5 - 3k/4], which overlaps A's right edge's y range [-2, 2] for k = 0 .. 7.
 // - A lies in x <= 5 and B in x >= 9 - k/2, so the distance is at least 4 - k/2, and the
 //   overlapping edges attain it: distance 4 - k/2 = 4, 3.5, ..., 0.5, exact in double.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <cstdio>
 

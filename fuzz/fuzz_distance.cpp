@@ -20,10 +20,10 @@
 //  - when out.certified: lower <= upper and the exact distance (exact::distance, the exact side)
 //    lies in [lower, upper];
 //  - the warm/cold promise of docs/gjk.md ("Warm start"): warmRepeatsCold.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
-#include <exact/correct_fallback.hpp> // exact::shapeOf
-#include <exact/exact.hpp>
+#include <gjk2d/correct_fallback.hpp> // exact::shapeOf
+#include <gjk2d/exact.hpp>
 
 #include <algorithm>
 #include <bit>

@@ -12,7 +12,7 @@
 // free, collinear along one direction, duplicates of the previous point, neighbours of the
 // previous point a few ulps apart) and whether it has a radius (b & 4); then numbers, each a
 // selector byte and up to 8 bytes (`number`).
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <bit>
 #include <cmath>

@@ -11,7 +11,7 @@
 //     Counter "gmp": the share of cases that took the GMP route. Small/edge-merge+gmp is the
 //     default route without its filter (Options::filter = false); Small/edge-merge-no-squared
 //     leaves the squared rational out (Options::squaredRational = false).
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -2,7 +2,7 @@
 // closest-feature search, and the final rounding step.
 #pragma once
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <gmpxx.h>
 

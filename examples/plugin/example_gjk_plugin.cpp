@@ -8,7 +8,7 @@
 //                      inaccurate on long edges: the report shows where it fails
 #include <gjk2d/plugin.h>
 
-#include <gjk/distance.hpp>
+#include <gjk2d/distance.hpp>
 
 namespace
 {

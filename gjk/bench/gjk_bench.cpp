@@ -2,8 +2,8 @@
 // same distribution as the runner's `random` family (3 to 8 vertices on circles of radius 0.5 to
 // 2, positions in [-4, 4]^2, random rotations), from a fixed seed, so runs are comparable.
 //   build/release/gjk/gjk_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-#include "gjk/batch.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/batch.hpp"
+#include "gjk2d/distance.hpp"
 #include "random_shapes.hpp"
 
 #include <benchmark/benchmark.h>
@@ -152,7 +152,7 @@ template <class T> void BM_RandomBatch(benchmark::State& state)
     setNsPerQuery(state, in.size());
 }
 
-// The batch in SIMD lanes (gjk/batch.hpp) over the same pairs, cold, on one instruction set
+// The batch in SIMD lanes (gjk2d/batch.hpp) over the same pairs, cold, on one instruction set
 // (0 scalar, 1 SSE2, 2 AVX2, 3 AVX-512; skipped when this CPU lacks it). Counters: lane
 // utilisation (busy lane-iterations / all) and scan utilisation (own points / scanned points).
 // FloatRotations: a float engine's rotations in double (not unit ones: each lane's end then runs
@@ -172,8 +172,8 @@ template <class T, bool FloatRotations = false> void BM_RandomLanes(benchmark::S
     for (auto _ : state)
     {
         std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
-                           gjk::referenceOptions, isa, &stats);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                                gjk::referenceOptions, isa, &stats);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());
@@ -200,8 +200,8 @@ template <class T> void BM_RandomLanesWarm(benchmark::State& state)
         gjk::distance(in[i], caches[i]);
     for (auto _ : state)
     {
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(in), caches, out,
-                           gjk::referenceOptions, isa);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(in), caches, out,
+                                gjk::referenceOptions, isa);
         benchmark::DoNotOptimize(out.data());
     }
     setNsPerQuery(state, in.size());

@@ -3,7 +3,7 @@
 // random rotation. Generated in double; `converted` rounds a shape to float or double.
 #pragma once
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <algorithm>
 #include <cmath>

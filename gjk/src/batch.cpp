@@ -1,6 +1,6 @@
-// gjk::distanceBatch in SIMD lanes (gjk/batch.hpp): the run-time choice of instruction set, and
-// the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts it),
-// ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
+// gjk::distanceBatchLanes in SIMD lanes (gjk2d/batch.hpp): the run-time choice of instruction set,
+// and the scalar side of the lanes: starting a query in a lane (startSimplex, as distance() starts
+// it), ending it (finishQuery, as distance() ends it), refilling the lane with the next pair.
 //
 // Why GCC vector extensions and `#pragma GCC target` rather than Highway (libhwy-dev): the lanes
 // need element-wise +, -, *, /, comparisons and selects only (no gather: a lane's points are
@@ -12,7 +12,9 @@
 // picked by the linker for baseline code), and __builtin_cpu_supports chooses at run time. No new
 // dependency. Highway would give the same with more vocabulary (its own names for every operation,
 // HWY_EXPORT tables), and its MulAdd is one careless edit away from an FMA.
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
+
+#include "lane_stop.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -27,34 +29,34 @@
 #include <immintrin.h> // square roots and movemasks (batch_lanes.hpp), used under the target pragmas
 
 // SSE2: x86-64's baseline, no target pragma needed.
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_sse2
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 
 #pragma GCC push_options
 #pragma GCC target("avx2")
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_avx2
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 #pragma GCC pop_options
 
 #pragma GCC push_options
 #pragma GCC target("avx512f")
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 #define GJK_LANES_NAMESPACE gjk_lanes_avx512
 #include "batch_lanes.hpp"
 #undef GJK_LANES_NAMESPACE
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"
 #pragma GCC pop_options
 #else
 #define GJK_BATCH_LANES 0
 #endif
 
-#include "gjk/detail/fp_begin.hpp"
+#include "gjk2d/detail/fp_begin.hpp"
 
 namespace gjk
 {
@@ -84,6 +86,9 @@ bool batchIsaSupported(BatchIsa isa)
 
 namespace
 {
+
+using lanes::kHandBack; // lane_stop.hpp
+using lanes::kRunning;
 
 // Shapes of more points than this run the scalar query (the lanes copy each shape's points into
 // their buffer when a query starts; a lane scans as many points as the largest shape among the
@@ -188,7 +193,6 @@ template <class T, int W, class State> class LaneBatch
 
   private:
     static constexpr std::size_t kNone = std::size_t(-1);
-    static constexpr int kRunning = -1, kHandBack = -2;
 
     // Within each block of kSortBlock pairs, the pairs in order of their larger shape (a stable
     // counting sort): lanes running at once then hold shapes of about one size, and the scans
@@ -468,9 +472,9 @@ BatchIsa bestBatchIsaFor(std::span<const DistanceInput<float>> inputs)
 namespace
 {
 template <class T>
-void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<SimplexCache> caches,
-                       std::span<DistanceOutput<T>> outputs, const Options& options, BatchIsa isa,
-                       BatchStats* stats)
+void distanceBatchLanesImpl(std::span<const DistanceInput<T>> inputs,
+                            std::span<SimplexCache> caches, std::span<DistanceOutput<T>> outputs,
+                            const Options& options, BatchIsa isa, BatchStats* stats)
 {
     GJK_ASSERT(inputs.size() == caches.size() && inputs.size() == outputs.size());
     const BatchIsa best = bestBatchIsa();
@@ -510,20 +514,20 @@ void distanceBatchImpl(std::span<const DistanceInput<T>> inputs, std::span<Simpl
 
 } // namespace
 
-void distanceBatch(std::span<const DistanceInput<double>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<double>> outputs, const Options& options, BatchIsa isa,
-                   BatchStats* stats)
+void distanceBatchLanes(std::span<const DistanceInput<double>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<double>> outputs,
+                        const Options& options, BatchIsa isa, BatchStats* stats)
 {
-    distanceBatchImpl<double>(inputs, caches, outputs, options, isa, stats);
+    distanceBatchLanesImpl<double>(inputs, caches, outputs, options, isa, stats);
 }
 
-void distanceBatch(std::span<const DistanceInput<float>> inputs, std::span<SimplexCache> caches,
-                   std::span<DistanceOutput<float>> outputs, const Options& options, BatchIsa isa,
-                   BatchStats* stats)
+void distanceBatchLanes(std::span<const DistanceInput<float>> inputs,
+                        std::span<SimplexCache> caches, std::span<DistanceOutput<float>> outputs,
+                        const Options& options, BatchIsa isa, BatchStats* stats)
 {
-    distanceBatchImpl<float>(inputs, caches, outputs, options, isa, stats);
+    distanceBatchLanesImpl<float>(inputs, caches, outputs, options, isa, stats);
 }
 
 } // namespace gjk
 
-#include "gjk/detail/fp_end.hpp"
+#include "gjk2d/detail/fp_end.hpp"

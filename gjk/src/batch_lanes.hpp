@@ -1,4 +1,4 @@
-// The GJK loop of gjk/include/gjk/distance.hpp, one query per SIMD lane (gjk/batch.hpp).
+// The GJK loop of gjk/include/gjk2d/distance.hpp, one query per SIMD lane (gjk2d/batch.hpp).
 // No include guard: gjk/src/batch.cpp includes this file once per instruction set, each time in
 // its own namespace (GJK_LANES_NAMESPACE) under its own `#pragma GCC target`, so that no function
 // compiled for AVX2 or AVX-512 can be picked by the linker for code that runs on the baseline.
@@ -198,8 +198,8 @@ template <class T, int W> struct LaneState
     std::uint64_t steps = 0, busyLaneSteps = 0, scannedPoints = 0, usefulPoints = 0;
 };
 
-inline constexpr int kRunning = -1;
-inline constexpr int kHandBack = -2;
+using gjk::lanes::kHandBack; // lane_stop.hpp
+using gjk::lanes::kRunning;
 
 // Runs the lanes whose stop is kRunning in lockstep until at least one of them stops; returns
 // whether any lane stopped (no lane running: returns false at once). LaneState::stopped then says

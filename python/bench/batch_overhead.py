@@ -2,9 +2,9 @@
 
 Times, on the same packed pairs (8-point random polygons, positions spread so that about half
 overlap), the median of 7 runs of:
-  - gjk2d.distance_batch: the whole Python call (argument checks, packing, the C++ gjk::distanceBatch,
+  - gjk2d.distance_batch: the whole Python call (argument checks, packing, the C++ gjk::distanceBatchLanes,
     the output arrays);
-  - the C++ gjk::distanceBatch call alone, timed inside the module (gjk2d._gjk2d._batch_loop_seconds);
+  - the C++ gjk::distanceBatchLanes call alone, timed inside the module (gjk2d._gjk2d._batch_loop_seconds);
   - one gjk2d.distance call per pair from a Python loop.
 and prints each per query and the batch's overhead per query (the first minus the second).
 

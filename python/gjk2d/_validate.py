@@ -1,7 +1,7 @@
 """gjk2d.validate and gjk2d.load_report (docs/python.md, "Validating your own GJK from Python").
 
 validate() registers a Python callable as an in-process variant of gjk-validate and runs
-`gjk-validate run` in this process with the arguments its keywords make (python/src/validate.cpp):
+`gjk-validate run` in this process with the arguments its keywords make (python/src/py_validate.cpp):
 the same inputs, exact truth, judgement, statistics, timing and report as the command line.
 """
 

@@ -4,7 +4,7 @@
 
 #include "inputs/cases.hpp"
 
-#include <gjk/math.hpp>
+#include <gjk2d/math.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

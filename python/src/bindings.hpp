@@ -7,9 +7,9 @@
 namespace gjk2d_python
 {
 
-void bindDistance(pybind11::module_& m); // distance.cpp: distance, distance_batch, SimplexCache
-void bindExact(pybind11::module_& m);    // exact.cpp: exact_distance
-void bindCases(pybind11::module_& m);    // cases.cpp: families, generate, read_cases, write_cases
-void bindValidate(pybind11::module_& m); // validate.cpp: the in-process campaign
+void bindDistance(pybind11::module_& m); // py_distance.cpp: distance, distance_batch, SimplexCache
+void bindExact(pybind11::module_& m);    // py_exact.cpp: exact_distance
+void bindCases(pybind11::module_& m); // py_cases.cpp: families, generate, read_cases, write_cases
+void bindValidate(pybind11::module_& m); // py_validate.cpp: the in-process campaign
 
 } // namespace gjk2d_python

@@ -1,5 +1,5 @@
 """gjk2d.distance_batch: ragged shapes packed with offsets, the same bits as one gjk2d.distance per
-pair (gjk/batch.hpp promises the single query's bits), float32 and float64, and its bad input."""
+pair (gjk2d/batch.hpp promises the single query's bits), float32 and float64, and its bad input."""
 
 import numpy as np
 import pytest

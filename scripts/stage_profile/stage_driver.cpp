@@ -7,7 +7,7 @@
 //   stage_driver time CASES.txt ROUNDS   (wall time: per round and query kind, 41 passes over all
 //                                         cases, each pass timed alone; prints the fastest and the
 //                                         median pass in ns per cold query)
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include "box2d/collision.h"
 #include "box2d/math_functions.h"

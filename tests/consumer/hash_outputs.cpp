@@ -1,4 +1,4 @@
-// A consumer of gjk/distance.hpp built with the user's flags, not the project's: it hashes every
+// A consumer of gjk2d/distance.hpp built with the user's flags, not the project's: it hashes every
 // output bit of 40,000 queries so that builds with different compilers and flags can be compared
 // (docs/gjk.md, "Compiler flags"; run by tests/consumer/flag_build.sh), and builds for other
 // platforms too (docs/gjk.md, "The same bits on every platform"; tests/consumer/cross_build.sh):
@@ -27,9 +27,9 @@
 // `--dump FILE` the certified intervals are written out (raw doubles, query order); with
 // `--against FILE` (another build's dump) each interval must intersect that build's: both contain
 // d*. This is how a build whose bits are not promised (Clang -ffp-contract=fast) is still tested.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 #ifdef GJK_HASH_BATCH
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 #endif
 
 #include <algorithm>
@@ -288,7 +288,8 @@ template <class T> void run(const char* name, std::uint64_t seed, int pairs)
     }
 }
 
-// --- The correctly rounded query (Options::correctlyRounded, gjk/correct.hpp), double only ------
+// --- The correctly rounded query (Options::correctlyRounded, gjk2d/correct.hpp), double only
+// ------
 //
 // Its stages differ by platform: the extended stage runs where long double is the x87 80-bit
 // format (x86) and is skipped elsewhere (binary128 on aarch64, riscv64 and s390x), and what no
@@ -406,7 +407,8 @@ void runCorrect(const char* name, std::uint64_t seed, int pairs)
 }
 
 #ifdef GJK_HASH_BATCH
-// --- The batch's portable fallback (gjk::distanceBatch, gjk/src/batch.cpp) ----------------------
+// --- The batch's portable fallback (gjk::distanceBatchLanes, gjk/src/batch.cpp)
+// ----------------------
 //
 // Built with -DGJK_HASH_BATCH and gjk/src/batch.cpp linked (tests/consumer/cross_build.sh; the
 // flag matrix builds the header-only program). The batch's SIMD lanes exist only with GCC on
@@ -459,7 +461,7 @@ template <class T> void runBatch(const char* name, std::uint64_t seed, int pairs
                   std::tuple{half, inputs.size(), certified}})
             {
                 gjk::BatchStats stats;
-                gjk::distanceBatch(
+                gjk::distanceBatchLanes(
                     std::span<const gjk::DistanceInput<T>>(inputs.data() + begin, end - begin),
                     std::span(caches.data() + begin, end - begin),
                     std::span(outputs.data() + begin, end - begin), options, isa, &stats);

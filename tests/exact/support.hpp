@@ -2,7 +2,7 @@
 // to the library's internals.
 #pragma once
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <gmpxx.h>
 

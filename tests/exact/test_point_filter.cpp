@@ -10,7 +10,7 @@
 
 #include "../../exact/src/internal.hpp" // detail::pointDistance, the route before PreparedShape
 
-#include <gjk/distance.hpp>
+#include <gjk2d/distance.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
-// gjk::distanceBatch in SIMD lanes (gjk/batch.hpp): bit for bit the single query, on every
+// gjk::distanceBatchLanes in SIMD lanes (gjk2d/batch.hpp): bit for bit the single query, on every
 // instruction set this CPU runs (SSE2 always on x86-64; AVX2 and AVX-512 when present), cold and
 // warm, for lanes of mixed sizes (masked by padding), for the rare paths that leave the lanes and
 // for options the lanes do not cover. Expected values: gjk::distance itself, one pair at a time.
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 #include "random_shapes.hpp"
 
 #include <catch2/catch.hpp>
@@ -113,8 +113,8 @@ BatchStats checkBatch(const std::vector<DistanceInput<T>>& inputs, const Options
         {
             INFO("pass " << pass << " (0: cold)");
             BatchStats stats;
-            distanceBatch(std::span<const DistanceInput<T>>(inputs), caches, outputs, options, isa,
-                          &stats);
+            distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs, options,
+                               isa, &stats);
             CHECK(stats.isa == isa);
             CHECK(stats.queries == inputs.size());
             CHECK(stats.laneQueries + stats.scalarQueries + stats.handedBack == inputs.size());
@@ -283,8 +283,8 @@ TEST_CASE("batch lanes: the instruction sets", "[gjk][batch]")
     std::vector<SimplexCache> caches;
     std::vector<DistanceOutput<double>> outputs;
     BatchStats stats;
-    distanceBatch(std::span<const DistanceInput<double>>(none), caches, outputs, referenceOptions,
-                  BatchIsa::Best, &stats);
+    distanceBatchLanes(std::span<const DistanceInput<double>>(none), caches, outputs,
+                       referenceOptions, BatchIsa::Best, &stats);
     CHECK(stats.queries == 0);
 }
 
@@ -298,10 +298,10 @@ template <class T> BatchIsa checkDefaultChoice(const std::vector<DistanceInput<T
     std::vector<SimplexCache> caches(inputs.size()), laneCaches(inputs.size());
     std::vector<DistanceOutput<T>> outputs(inputs.size()), laneOutputs(inputs.size());
     BatchStats stats;
-    distanceBatch(std::span<const DistanceInput<T>>(inputs), caches, outputs, referenceOptions,
-                  BatchIsa::Best, &stats);
-    distanceBatch(std::span<const DistanceInput<T>>(inputs), laneCaches, laneOutputs,
-                  referenceOptions, bestBatchIsa());
+    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs, referenceOptions,
+                       BatchIsa::Best, &stats);
+    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), laneCaches, laneOutputs,
+                       referenceOptions, bestBatchIsa());
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < inputs.size(); ++i)
     {

@@ -1,7 +1,7 @@
 // Talk sections 3 and 4: GJK between a point or polygon and a polygon, its termination cases, the
 // numerical issues the talk lists, witness points, radii, transforms, warm start, and the
 // symmetries every distance must have. Expected values are derived by hand beside each case.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 #include "random_shapes.hpp" // gjk/bench: the speed targets' random distribution
 
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else

@@ -11,7 +11,7 @@
 //     arithmetic on dyadic inputs for the support scan and the orientations.
 // Expected values come from the hand derivations in the comments or from that exact arithmetic,
 // never from the library.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // Talk sections 1 and 2: point to segment (solve2) and point to triangle (solve3), with the query
 // point Q at the origin. Every expected value is derived by hand in the comment beside it; all are
 // exactly representable in float and double, so the checks are exact.
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>

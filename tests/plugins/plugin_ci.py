@@ -6,8 +6,9 @@
       build it with find_package(gjk2d CONFIG), CMAKE_PREFIX_PATH=W/prefix only; run the installed
       gjk-validate with it; check that report.json has its two variants (and the shipped Box2D
       adapter's) in every family, with counts and ns/query, and that example-gjk gives double's
-      answer on every case (cases.jsonl); compile and link a consumer of
-      gjk2d::exact with `pkg-config --cflags --libs gjk2d`, and with find_package.
+      answer on every case (cases.jsonl); build tests/plugins/sdk_consumer (every query of the
+      SDK, checked against hand-derived values) with `pkg-config --cflags --libs gjk2d`, and
+      with find_package, and run it; compile the old include paths and see their warnings.
   plugin_ci.py contained --exe E --plugin P --kind good-but-quirky|crash|hang --work W
       a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
       refusals, error statuses and crashes or hangs counted, every other result kept, each
@@ -110,37 +111,33 @@ def sdk(a):
     compared = same_answers(os.path.join(out, "cases.jsonl"), "example-gjk", "double")
     if compared != 320:
         fail("cases.jsonl compared {} cases, expected 320 (random:300, hard/sliver:20)".format(compared))
-    # pkg-config: a consumer of the exact side, compiled and linked from gjk2d.pc alone.
-    consumer = os.path.join(a.work, "consumer.cpp")
-    open(consumer, "w").write(
-        "#include <exact/exact.hpp>\n#include <gjk/distance.hpp>\n#include <gjk2d/plugin.h>\n"
-        "#include <cstdio>\nint main() {\n"
-        "  exact::Shape a{{{0, 0}, {1, 0}, {0, 1}}, 0}, b{{{3, 0}, {4, 0}, {3, 1}}, 0};\n"
-        "  std::printf(\"%.17g\\n\", exact::distance(a, b).distance);\n}\n")
+    # A user's program (tests/plugins/sdk_consumer/): the plain, certified and correctly rounded
+    # queries, the batch in SIMD lanes and the exact side, through the installed headers
+    # (gjk2d/...) and libraries, each checked against hand-derived values. Built out of tree twice:
+    # from gjk2d.pc alone, and with find_package (the link dependencies come with the targets).
+    consumer_src = os.path.join(a.source, "tests", "plugins", "sdk_consumer")
     env["PKG_CONFIG_PATH"] = os.path.join(prefix, "lib", "pkgconfig")
     flags = run(["pkg-config", "--cflags", "--libs", "gjk2d"], env=env).stdout.split()
-    exe = os.path.join(a.work, "consumer")
-    run(["c++", "-std=c++20", consumer, "-o", exe] + flags)
-    got = run([exe]).stdout.strip()
-    if got != "2":
-        fail("the pkg-config consumer printed {}, expected 2 (the gap from x = 1 to x = 3)".format(got))
-    # The same consumer through find_package: gjk2d::exact's link dependencies (GMP, MPFR) come
-    # with the exported target.
-    cm = os.path.join(a.work, "consumer-cmake")
-    os.makedirs(cm)
-    shutil.copy(consumer, cm)
-    open(os.path.join(cm, "CMakeLists.txt"), "w").write(
-        "cmake_minimum_required(VERSION 3.25)\nproject(consumer LANGUAGES CXX)\n"
-        "set(CMAKE_CXX_STANDARD 20)\nfind_package(gjk2d 0.1 CONFIG REQUIRED)\n"
-        "add_executable(consumer consumer.cpp)\n"
-        "target_link_libraries(consumer PRIVATE gjk2d::exact gjk2d::gjk gjk2d::plugin)\n")
+    exe = os.path.join(a.work, "sdk_consumer")
+    run(["c++", "-std=c++20", os.path.join(consumer_src, "sdk_consumer.cpp"), "-o", exe] + flags)
+    checked = run([exe]).stdout
+    cm = os.path.join(a.work, "sdk-consumer-cmake")
+    shutil.copytree(consumer_src, cm)
     run(["cmake", "-S", cm, "-B", os.path.join(cm, "build"), "-DCMAKE_PREFIX_PATH=" + prefix], env=env)
     run(["cmake", "--build", os.path.join(cm, "build")], env=env)
-    got = run([os.path.join(cm, "build", "consumer")]).stdout.strip()
-    if got != "2":
-        fail("the find_package consumer printed {}, expected 2".format(got))
-    print("plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json, "
-          "consumers of gjk2d::exact linked through pkg-config and find_package".format(names[-3:]))
+    run([os.path.join(cm, "build", "sdk_consumer")])
+    # The old include paths still compile for one release, and say which path replaces them.
+    old = os.path.join(a.work, "old_paths.cpp")
+    open(old, "w").write("#include <gjk/distance.hpp>\n#include <exact/exact.hpp>\nint main() {}\n")
+    p = run(["c++", "-std=c++20", "-c", old, "-o", os.path.join(a.work, "old_paths.o")] + flags)
+    for path, new_path in [("gjk/distance.hpp", "gjk2d/distance.hpp"),
+                           ("exact/exact.hpp", "gjk2d/exact.hpp")]:
+        warning = "<{}> is deprecated: include <{}>".format(path, new_path)
+        if warning not in p.stderr:
+            fail("compiling <{}> gave no warning '{}':\n{}".format(path, warning, p.stderr))
+    print("plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json; "
+          "tests/plugins/sdk_consumer linked through pkg-config and find_package, {}; the old "
+          "include paths warn".format(names[-3:], checked.strip().splitlines()[-1]))
 
 
 def generated(exe, family, work):
@@ -246,7 +243,9 @@ def deb(a):
             fail("Depends lacks {}: {}".format(dep, fields))
     files = run(["dpkg-deb", "-c", debs[0]]).stdout
     for path in ["./usr/bin/gjk-validate", "./usr/include/gjk2d/plugin.h",
-                 "./usr/include/gjk/distance.hpp", "./usr/include/exact/exact.hpp",
+                 "./usr/include/gjk2d/distance.hpp", "./usr/include/gjk2d/batch.hpp",
+                 "./usr/include/gjk2d/exact.hpp", "./usr/include/gjk/distance.hpp",
+                 "./usr/include/exact/exact.hpp", "./usr/lib/libgjk2d_batch.a",
                  "./usr/lib/libgjk2d_exact.a", "./usr/lib/cmake/gjk2d/gjk2d-config.cmake",
                  "./usr/lib/pkgconfig/gjk2d.pc", "./usr/lib/gjk2d/plugins/gjk2d-box2d.so",
                  "./usr/share/gjk2d/cases/talk.json"] + python_files(a.build):

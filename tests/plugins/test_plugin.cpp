@@ -10,7 +10,7 @@
 //   NO_ENTRY         exports no gjk2d_plugin_describe
 #include <gjk2d/plugin.h>
 
-#include <gjk/distance.hpp>
+#include <gjk2d/distance.hpp>
 
 #include <csignal>
 #include <unistd.h>

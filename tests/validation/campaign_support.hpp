@@ -6,7 +6,7 @@
 #include "inputs/families.hpp"
 #include "statistics/makeup.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <string>
 #include <vector>

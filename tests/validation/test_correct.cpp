@@ -1,5 +1,5 @@
-// Options::correctlyRounded (gjk/include/gjk/correct.hpp) with its exact completion
-// (exact/include/exact/correct_fallback.hpp): the distance is the exact side's, bit for bit, on the
+// Options::correctlyRounded (gjk/include/gjk2d/correct.hpp) with its exact completion
+// (exact/include/gjk2d/correct_fallback.hpp): the distance is the exact side's, bit for bit, on the
 // cases where plain double is furthest off (near touching, mixed and extreme scales, a vertex at
 // 3.6e18), and the header-only stages decide most of them without the exact fallback.
 #include "evaluate/evaluate.hpp"
@@ -7,7 +7,7 @@
 #include "inputs/cases.hpp"
 #include "inputs/families.hpp"
 
-#include <exact/correct_fallback.hpp>
+#include <gjk2d/correct_fallback.hpp>
 
 #include <catch2/catch.hpp>
 

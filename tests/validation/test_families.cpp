@@ -6,7 +6,7 @@
 #include "campaign_support.hpp"
 #include "inputs/geometry.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <catch2/catch.hpp>
 

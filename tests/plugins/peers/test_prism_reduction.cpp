@@ -19,7 +19,7 @@
 
 #include "within.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <catch2/catch.hpp>
 

@@ -28,10 +28,10 @@
 //   them (each lies in the other shape when Bullet is right). No result at all from Bullet
 //   (m_hasResult false) is an error. iterations: the pair detector's m_curIter.
 //
-// Findings (docs/peers.md, "## Bullet"; validation/plugins/bullet/tests/test_bullet.cpp): in double every
-// separated random case is within gjk2d's bound; on overlap Bullet's two points are apart by the
-// penetration depth, which gjk-validate's witness-gap check counts as invalid. In float the default
-// equal-vertex threshold (1e-4) stops GJK early: random/192 is answered 7.8% off, and
+// Findings (docs/peers.md, "## Bullet"; validation/plugins/bullet/tests/test_bullet.cpp): in double
+// every separated random case is within gjk2d's bound; on overlap Bullet's two points are apart by
+// the penetration depth, which gjk-validate's witness-gap check counts as invalid. In float the
+// default equal-vertex threshold (1e-4) stops GJK early: random/192 is answered 7.8% off, and
 // near-touching shapes are called touching.
 #include <gjk2d/plugin.h>
 

@@ -36,8 +36,8 @@
 //   held). The adapter sets the points to NaN before the call, so such an answer is reported the
 //   same in every run: FCL's distance, NaN points (non-finite in the report).
 //
-// Findings (docs/peers.md, "## FCL"; validation/plugins/fcl/tests/test_fcl.cpp): GST_LIBCCD answers a
-// vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
+// Findings (docs/peers.md, "## FCL"; validation/plugins/fcl/tests/test_fcl.cpp): GST_LIBCCD answers
+// a vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
 // squares 3.57 apart); GST_INDEP answers the edge distance but calls shapes closer than its
 // distance_tolerance (1e-6) colliding; GST_LIBCCD aborts on an assertion (doSimplex2, "A is not in
 // region 1") on some cases of coordinates beyond 1e160.

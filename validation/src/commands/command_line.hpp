@@ -4,7 +4,7 @@
 
 #include "common/common.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -41,7 +41,7 @@ struct CommandLine
 {
     int argc;
     char** argv;
-    // Who runs it: the program, or gjk2d.validate (python/src/validate.cpp) that runs `run` in
+    // Who runs it: the program, or gjk2d.validate (python/src/py_validate.cpp) that runs `run` in
     // the Python process with an argument vector of its own.
     const char* program = "gjk-validate";
     std::string text() const; // "gjk-validate run --family random:100"

@@ -4,7 +4,7 @@
 
 #include "build_info.hpp"
 
-#include "gjk/batch.hpp"
+#include "gjk2d/batch.hpp"
 
 #include <ctime>
 #include <unistd.h>
@@ -49,7 +49,7 @@ Json contextJson(const std::string& date, const std::string& revision, const std
     context["compiler"] = GJK2D_BUILD_COMPILER;
     context["flags"] = GJK2D_BUILD_FLAGS;
     context["build_type"] = GJK2D_BUILD_TYPE;
-    // The instruction set the batch variants' lanes run (gjk/batch.hpp), chosen at run time.
+    // The instruction set the batch variants' lanes run (gjk2d/batch.hpp), chosen at run time.
     context["batch_isa"] = gjk::batchIsaName(gjk::bestBatchIsa());
 #if defined(GJK2D_CHECKED)
     context["gjk_checked"] = true;

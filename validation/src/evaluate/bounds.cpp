@@ -2,7 +2,7 @@
 // points' witnessBound(), each with its formula's text (docs/error-bound.md).
 #include "evaluate/bounds.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <fmt/format.h>
 
@@ -94,7 +94,7 @@ constexpr BoundTerm kErrorTerms[] = {
 constexpr std::size_t kErrorTermCount = std::size(kErrorTerms);
 
 // Duality-gap stopping adds the gap it accepts, dualityGap |v| <= dualityGap W, dualityGap =
-// 16 u (gjk/math.hpp, Tolerances): the factor, exact (both are powers of two times 16).
+// 16 u (gjk2d/math.hpp, Tolerances): the factor, exact (both are powers of two times 16).
 constexpr double kDualityGapFactor =
     gjk::Tolerances<double>::dualityGap / gjk::Tolerances<double>::unitRoundoff;
 constexpr BoundTerm kDualityGapTerm = {kDualityGapFactor, "W", metricW};

@@ -229,7 +229,7 @@ template <class T> bool sameBits(T a, T b)
 }
 
 // The variant's query; a batch variant's is checked against the scalar query, bit for bit in every
-// output field and the cache (gjk/batch.hpp's promise). A difference is a broken invariant of the
+// output field and the cache (gjk2d/batch.hpp's promise). A difference is a broken invariant of the
 // library (std::logic_error: exit code 4), never a failure of the case.
 template <class T>
 gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const VariantInfo& v)
@@ -241,9 +241,9 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
     const gjk::DistanceInput<T> in = p.input<T>();
     gjk::SimplexCache batchCache, scalarCache;
     gjk::DistanceOutput<T> out;
-    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
-                       std::span<gjk::SimplexCache>(&batchCache, 1),
-                       std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
+    gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(&in, 1),
+                            std::span<gjk::SimplexCache>(&batchCache, 1),
+                            std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
     const gjk::DistanceOutput<T> ref = gjk::distance(in, scalarCache, v.options);
     bool same = sameBits(out.distance, ref.distance) && sameBits(out.pointA.x, ref.pointA.x) &&
                 sameBits(out.pointA.y, ref.pointA.y) && sameBits(out.pointB.x, ref.pointB.x) &&
@@ -261,8 +261,8 @@ gjk::DistanceOutput<T> checkedQuery(const Case& c, const PreparedCase& p, const 
                batchCache.indexB[i] == scalarCache.indexB[i];
     if (!same)
         throw std::logic_error(fmt::format(
-            "variant {}: case '{}': gjk::distanceBatch ({}) differs from gjk::distance "
-            "(distance {} vs {}, {} vs {} iterations): gjk/batch.hpp promises the same bits",
+            "variant {}: case '{}': gjk::distanceBatchLanes ({}) differs from gjk::distance "
+            "(distance {} vs {}, {} vs {} iterations): gjk2d/batch.hpp promises the same bits",
             v.name, c.name, gjk::batchIsaName(gjk::bestBatchIsa()), double(out.distance),
             double(ref.distance), out.iterations, ref.iterations));
     return out;

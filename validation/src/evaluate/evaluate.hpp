@@ -8,10 +8,10 @@
 #include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 
-#include "gjk/batch.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/batch.hpp"
+#include "gjk2d/distance.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <array>
 #include <cmath>
@@ -34,10 +34,10 @@ inline constexpr const char* kSkipNotConvexOrder =
 // Start::EveryStart: the query from every start the variant tries, the answer farthest
 // from `truth` (a non-finite answer is the farthest) returned; ties keep the earlier start. Where
 // SIMD lanes pay on the case's shapes (gjk::bestBatchIsaFor: always for float, for double on small
-// shapes), the starts after the cold one are answered as one gjk::distanceBatch, the same input in
-// every slot (about 35 queries a `random` case; the scalar query's bits, gjk/batch.hpp); elsewhere
-// by the scalar query one start after the other, which is what the batch would run, less its
-// copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
+// shapes), the starts after the cold one are answered as one gjk::distanceBatchLanes, the same
+// input in every slot (about 35 queries a `random` case; the scalar query's bits, gjk2d/batch.hpp);
+// elsewhere by the scalar query one start after the other, which is what the batch would run, less
+// its copies (docs/speed.md, "The every-start variants' starts in SIMD lanes").
 template <class T> struct StartBatch
 {
     std::vector<gjk::DistanceInput<T>> inputs;
@@ -83,9 +83,9 @@ gjk::DistanceOutput<T> worstStart(const PreparedCase& p, const VariantInfo& v, d
     }
     b.inputs.assign(b.caches.size(), in);
     b.outputs.resize(b.caches.size());
-    gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(b.inputs),
-                       std::span<gjk::SimplexCache>(b.caches),
-                       std::span<gjk::DistanceOutput<T>>(b.outputs), v.options);
+    gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(b.inputs),
+                            std::span<gjk::SimplexCache>(b.caches),
+                            std::span<gjk::DistanceOutput<T>>(b.outputs), v.options);
     for (const gjk::DistanceOutput<T>& o : b.outputs)
         consider(o);
     return worst;

@@ -1,6 +1,6 @@
 // Inside the implementations layer only: what the two halves of the executable-adapter host share,
-// the protocol's text (tokens, strict numbers) and the handshake, which adapter.cpp runs at load and
-// at every restart of an adapter's process (adapter_handshake.cpp).
+// the protocol's text (tokens, strict numbers) and the handshake, which adapter.cpp runs at load
+// and at every restart of an adapter's process (adapter_handshake.cpp).
 #pragma once
 
 #include "implementations/adapter.hpp"

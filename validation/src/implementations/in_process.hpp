@@ -1,5 +1,5 @@
 // Variants whose answers come from a callback of this very process, registered at run time: the
-// Python package's gjk2d.validate (python/src/validate.cpp, docs/python.md). The third kind of
+// Python package's gjk2d.validate (python/src/py_validate.cpp, docs/python.md). The third kind of
 // plugin (PluginKind::InProcess), judged and reported as the other two are, with one difference:
 // it is never forked. A shared library's plugin answers in a forked child
 // (implementations/plugins.cpp), so that a crash costs one case; a callback into a threaded runtime

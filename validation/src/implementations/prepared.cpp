@@ -4,7 +4,7 @@
 
 #include "inputs/geometry.hpp"
 
-#include <exact/correct_fallback.hpp>
+#include <gjk2d/correct_fallback.hpp>
 
 #include <vector>
 

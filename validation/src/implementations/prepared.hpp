@@ -6,8 +6,8 @@
 #include "implementations/variants.hpp"
 #include "inputs/cases.hpp"
 
-#include "gjk/batch.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/batch.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <boost/container/small_vector.hpp>
 
@@ -46,7 +46,7 @@ struct PreparedCase
 };
 PreparedCase prepare(const Case& c);
 
-// exact::completeCorrectlyRounded (exact/correct_fallback.hpp), out of line: the timing loop of
+// exact::completeCorrectlyRounded (gjk2d/correct_fallback.hpp), out of line: the timing loop of
 // every variant inlines query() below, and only correctly rounded variants ever call it.
 [[gnu::noinline]] void completeExactly(const gjk::DistanceInput<double>& in,
                                        const gjk::Options& options,
@@ -65,9 +65,9 @@ gjk::DistanceOutput<T> query(const PreparedCase& p, const VariantInfo& v,
         gjk::distance(in, cache, v.options);
     gjk::DistanceOutput<T> out;
     if (v.batch && !trace) // a batch of one (a trace needs the scalar query: the same bits)
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(&in, 1),
-                           std::span<gjk::SimplexCache>(&cache, 1),
-                           std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(&in, 1),
+                                std::span<gjk::SimplexCache>(&cache, 1),
+                                std::span<gjk::DistanceOutput<T>>(&out, 1), v.options);
     else
         out = gjk::distance(in, cache, v.options, trace);
     // A correctly rounded variant: its undecided queries completed exactly, as a user would.

@@ -8,8 +8,8 @@
 #include "common/output.hpp" // writeAllBytes
 #include "implementations/adapter.hpp"
 #include "implementations/adapter_process.hpp" // SigpipeBlocked
-#include "implementations/prepared.hpp"
 #include "implementations/in_process.hpp"
+#include "implementations/prepared.hpp"
 
 #include <fmt/format.h>
 

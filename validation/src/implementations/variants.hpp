@@ -4,8 +4,8 @@
 
 #include "common/common.hpp"
 
-#include "gjk/batch.hpp"
-#include "gjk/distance.hpp"
+#include "gjk2d/batch.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <string>
 #include <vector>
@@ -51,8 +51,8 @@ struct VariantInfo
     // from it, evaluated in a child process; `options` then only names the bound it is compared
     // with.
     const PluginImpl* plugin = nullptr;
-    // Run through gjk::distanceBatch (gjk/batch.hpp: SIMD lanes, the instruction set chosen at
-    // run time): the accuracy run on one-case batches, each checked to be bit for bit the scalar
+    // Run through gjk::distanceBatchLanes (gjk2d/batch.hpp: SIMD lanes, the instruction set chosen
+    // at run time): the accuracy run on one-case batches, each checked to be bit for bit the scalar
     // query (evaluate.cpp); the timing on batches of all the timed cases.
     bool batch = false;
 };
@@ -72,7 +72,7 @@ const VariantInfo* findVariant(const std::string& name);
 // as not applicable (PreparedCase::binaryOk).
 bool needsConvexOrder(const VariantInfo& v);
 // The library uses the linear scan for shapes of at most this many points whatever the strategy
-// (gjk/types.hpp, usesBinarySearch): they always fit.
+// (gjk2d/types.hpp, usesBinarySearch): they always fit.
 inline constexpr int kLinearSupportMaxPoints = gjk::linearScanMaxCount;
 
 const char* scalarName(Scalar s);

@@ -4,7 +4,7 @@
 #include "common/common.hpp"
 #include "common/json_text.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <array>
 #include <functional>
@@ -14,7 +14,7 @@
 namespace gjkval
 {
 
-// One shape of a case as given: field for field exact::Shape (exact/exact.hpp states what each
+// One shape of a case as given: field for field exact::Shape (gjk2d/exact.hpp states what each
 // field means: the convex hull of `points` mapped by x' = c*x - s*y + px, y' = s*x + c*y + py,
 // grown by `radius`). Not the same type, because the points differ: here std::array<double, 2>
 // (P2), which the runner's geometry (geometry.hpp), the generators and the conversions to

@@ -7,7 +7,7 @@
 
 #include "inputs/cases.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <cstdint>
 #include <functional>

@@ -3,7 +3,7 @@
 // distances. It judges nothing: the exact side does.
 #include "inputs/geometry.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <gmpxx.h>
 

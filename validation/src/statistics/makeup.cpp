@@ -5,7 +5,7 @@
 #include "evaluate/evaluate.hpp"
 #include "inputs/geometry.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <fmt/format.h>
 

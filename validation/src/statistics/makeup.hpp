@@ -19,7 +19,7 @@
 
 #include "inputs/families.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <cstdint>
 #include <set>

@@ -5,7 +5,7 @@
 
 #include "evaluate/evaluate.hpp"
 
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <algorithm>
 #include <cmath>

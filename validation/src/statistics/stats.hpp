@@ -5,7 +5,7 @@
 #include "common/common.hpp"
 #include "statistics/exact_sum.hpp"
 
-#include "gjk/distance.hpp"
+#include "gjk2d/distance.hpp"
 
 #include <array>
 #include <cstdint>

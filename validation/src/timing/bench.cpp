@@ -222,7 +222,7 @@ Json benchContext(const BenchConfig& config, const TimingConfig& tc, BenchCases&
          "any); plugin variants are timed on their own. "
          "ns_per_query is the median pass, ns_min and ns_max the fastest and slowest. "
          "Warm: each query starts from the SimplexCache of a previous query of the same "
-         "case, prepared before timing. A batch variant's pass calls gjk::distanceBatch "
+         "case, prepared before timing. A batch variant's pass calls gjk::distanceBatchLanes "
          "on all its cases at once (context.batch_isa: the instruction set of its lanes). "
          "--against: the peer's own loop (gjk2d_plugin_timing) over inputs it prepared once, "
          "cold (a zeroed cache per query) and warm (each case's cache from its previous "
@@ -280,7 +280,7 @@ std::string benchTable(const Json& b)
     std::string s = fmt::format(
         "{} cases ({} rejected), single thread{}, {} passes of >= {:g} s, {} queries; *-batch "
         "variants: "
-        "gjk::distanceBatch on {}\n",
+        "gjk::distanceBatchLanes on {}\n",
         c["cases_total"].get<std::uint64_t>(), c["cases_rejected"].get<std::uint64_t>(),
         c["timing"].value("cpu", Json()).is_number()
             ? fmt::format(" on CPU {}", c["timing"]["cpu"].get<int>())

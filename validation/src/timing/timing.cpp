@@ -130,8 +130,8 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
-// A batch variant: each rep is one gjk::distanceBatch over all the cases (fresh caches, or copies
-// of the warm ones), as an engine's step or a campaign's chunk would call it.
+// A batch variant: each rep is one gjk::distanceBatchLanes over all the cases (fresh caches, or
+// copies of the warm ones), as an engine's step or a campaign's chunk would call it.
 template <class T>
 double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps,
                      std::vector<gjk::SimplexCache>& caches,
@@ -145,7 +145,8 @@ double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps,
             std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
         else
             std::copy(set.caches.begin(), set.caches.end(), caches.begin());
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(set.inputs), caches, outputs, o);
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(set.inputs), caches, outputs,
+                                o);
         for (const auto& out : outputs)
             acc += kept(out);
     }

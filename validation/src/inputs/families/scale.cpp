@@ -3,7 +3,7 @@
 #include "inputs/families/construct.hpp"
 #include "inputs/families/rows.hpp"
 
-#include "gjk/math.hpp"
+#include "gjk2d/math.hpp"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
-// gjk2d.distance_batch: many pairs in one call, gjk::distanceBatch (gjk/batch.hpp, SIMD lanes)
-// underneath. Shapes are ragged point sets packed into one (N, 2) array: pair i's shape A is
+// gjk2d.distance_batch: many pairs in one call, gjk::distanceBatchLanes (gjk2d/batch.hpp, SIMD
+// lanes) underneath. Shapes are ragged point sets packed into one (N, 2) array: pair i's shape A is
 // points[offsets_a[i]:offsets_a[i + 1]], its shape B points[offsets_b[i]:offsets_b[i + 1]].
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <gjk/batch.hpp>
+#include <gjk2d/batch.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -133,14 +133,14 @@ template <class T> py::dict batch(const BatchArgs& b)
     std::vector<gjk::DistanceOutput<T>> out(p.inputs.size());
     {
         py::gil_scoped_release release;
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(p.inputs), std::span(caches),
-                           std::span(out), gjk::Options{.certify = b.certify});
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(p.inputs), std::span(caches),
+                                std::span(out), gjk::Options{.certify = b.certify});
     }
     return arraysOf(out, b.certify);
 }
 
 // The C++ loop alone on the same packed inputs, for the overhead measurement (docs/python.md):
-// the seconds of one gjk::distanceBatch call (cold caches), the median of `repeats`.
+// the seconds of one gjk::distanceBatchLanes call (cold caches), the median of `repeats`.
 template <class T> double loopSeconds(const BatchArgs& b, int repeats)
 {
     Packed<T> p = pack<T>(b);
@@ -152,8 +152,8 @@ template <class T> double loopSeconds(const BatchArgs& b, int repeats)
     {
         std::fill(caches.begin(), caches.end(), gjk::SimplexCache{});
         const auto t0 = std::chrono::steady_clock::now();
-        gjk::distanceBatch(std::span<const gjk::DistanceInput<T>>(p.inputs), std::span(caches),
-                           std::span(out), gjk::Options{.certify = b.certify});
+        gjk::distanceBatchLanes(std::span<const gjk::DistanceInput<T>>(p.inputs), std::span(caches),
+                                std::span(out), gjk::Options{.certify = b.certify});
         seconds.push_back(
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
     }
@@ -199,7 +199,7 @@ void bindBatch(py::module_& m)
         "radius_b"_a = py::none(), "position_a"_a = py::none(), "rotation_a"_a = py::none(),
         "position_b"_a = py::none(), "rotation_b"_a = py::none(), "dtype"_a = py::none(),
         "certify"_a = false,
-        "Many queries in one call (gjk::distanceBatch): pair i's shapes are "
+        "Many queries in one call (gjk::distanceBatchLanes): pair i's shapes are "
         "points[offsets_a[i]:offsets_a[i+1]] and points[offsets_b[i]:offsets_b[i+1]]. Returns a "
         "dict of arrays.");
     m.def(
@@ -216,7 +216,8 @@ void bindBatch(py::module_& m)
         "radius_b"_a = py::none(), "position_a"_a = py::none(), "rotation_a"_a = py::none(),
         "position_b"_a = py::none(), "rotation_b"_a = py::none(), "dtype"_a = py::none(),
         "certify"_a = false, "repeats"_a = 5,
-        "The C++ gjk::distanceBatch call alone on distance_batch's inputs: its median seconds.");
+        "The C++ gjk::distanceBatchLanes call alone on distance_batch's inputs: its median "
+        "seconds.");
 }
 
 } // namespace gjk2d_python

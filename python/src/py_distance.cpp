@@ -1,11 +1,12 @@
-// gjk2d.distance (one query) and gjk2d.distance_batch (gjk::distanceBatch over ragged point sets
-// packed with offsets), float32 or float64 (docs/python.md, "One query", "A batch of queries").
+// gjk2d.distance (one query) and gjk2d.distance_batch (gjk::distanceBatchLanes over ragged point
+// sets packed with offsets), float32 or float64 (docs/python.md, "One query", "A batch of
+// queries").
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <exact/correct_fallback.hpp>
-#include <gjk/batch.hpp>
-#include <gjk/distance.hpp>
+#include <gjk2d/batch.hpp>
+#include <gjk2d/correct_fallback.hpp>
+#include <gjk2d/distance.hpp>
 
 #include <pybind11/stl.h>
 
@@ -150,7 +151,7 @@ Result distanceFunction(const py::object& pointsA, const py::object& pointsB, do
     if (useFloat(dtype, pointsA, pointsB))
     {
         if (correctlyRounded)
-            badArgument("correctly_rounded", "float64 only (gjk/correct.hpp refines double "
+            badArgument("correctly_rounded", "float64 only (gjk2d/correct.hpp refines double "
                                              "queries; a float query is never decided)");
         return query<float>(q);
     }

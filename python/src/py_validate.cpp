@@ -288,7 +288,7 @@ struct Running
 };
 
 // The runner's failures as Python exceptions, with its one-line messages: InputError is
-// gjk2d.InputError (a ValueError, python/src/cases.cpp registers it), an output that cannot be
+// gjk2d.InputError (a ValueError, python/src/py_cases.cpp registers it), an output that cannot be
 // written OSError, a broken invariant of gjk2d RuntimeError.
 [[noreturn]] void raisePython(PyObject* type, const std::string& message)
 {

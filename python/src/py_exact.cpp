@@ -1,9 +1,9 @@
-// gjk2d.exact_distance: the exact side (exact/exact.hpp, CGAL and GMP) from Python: the correctly
+// gjk2d.exact_distance: the exact side (gjk2d/exact.hpp, CGAL and GMP) from Python: the correctly
 // rounded distance, the exact squared distance as a fractions.Fraction and the exact witnesses.
 #include "arrays.hpp"
 #include "bindings.hpp"
 
-#include <exact/exact.hpp>
+#include <gjk2d/exact.hpp>
 
 #include <pybind11/stl.h>
 

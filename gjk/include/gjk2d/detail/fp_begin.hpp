@@ -1,5 +1,5 @@
 // Floating-point prologue of every gjk/ header: included after the header's own #includes (so that
-// no standard-library code is compiled under it), before `namespace gjk`; gjk/detail/fp_end.hpp
+// no standard-library code is compiled under it), before `namespace gjk`; gjk2d/detail/fp_end.hpp
 // closes it after the namespace. No include guard: each header opens and closes its own region.
 //
 // Why: the exact perpendicular search direction (dot(d, e) == 0 needs -x*y + y*x to round both
