@@ -26,7 +26,6 @@ struct ShippedPeer
     // Its name for `bench --against NAME` (docs/speed.md): set for a peer whose adapter has its
     // own timing loop (gjk2d_plugin_timing, gjk2d/plugin.h), else null.
     const char* againstName;
-    const char* folder; // its folder under validation/plugins/
 };
 
 // Every row of every validation/plugins/*/peer.txt, in the folders' order by name.
