@@ -147,7 +147,7 @@ def main(behaviour):
     if behaviour == "crash-once-more" and start_number() >= 3:
         print("toy adapter: this start fails on purpose", file=sys.stderr)
         sys.exit(3)
-    say("gjk2d-adapter 2" if behaviour == "version" else "gjk2d-adapter 1")
+    say("gjk2d-adapter 3" if behaviour == "version" else "gjk2d-adapter 1")
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = "quad" if behaviour == "bad-description" else "double"
     say("implementation toy-{} {} radius 0 vertex-edge brute force".format(behaviour, scalar))

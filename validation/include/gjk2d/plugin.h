@@ -8,8 +8,11 @@
  * returning a description that lives as long as the library (a static object). It describes one
  * or more implementations; each becomes a variant of the report, named by `name`.
  *
- * Versioning: `abi_version` must equal GJK2D_PLUGIN_ABI_VERSION of the gjk-validate that loads the
- * library, or the runner refuses it (exit 2). Any change to a struct below increments it.
+ * Versioning: `abi_version` is 1 or 2 (GJK2D_PLUGIN_ABI_MIN_VERSION .. GJK2D_PLUGIN_ABI_VERSION);
+ * any other is refused (exit 2). Version 2 appends `contracts` to gjk2d_plugin (what each
+ * implementation promises, below); a version-1 plugin loads as before and is held to gjk2d's own
+ * contract. A change to a struct below increments the version; a new optional entry point, looked
+ * up by name as the two below are, does not (issue 50's prepared shapes come that way).
  *
  * The runner calls `distance_f` / `distance_d` in a child process (a crash or a hang costs one
  * case, never the campaign), one call at a time, never from two threads at once.
@@ -24,7 +27,8 @@ extern "C"
 {
 #endif
 
-#define GJK2D_PLUGIN_ABI_VERSION 1
+#define GJK2D_PLUGIN_ABI_VERSION 2
+#define GJK2D_PLUGIN_ABI_MIN_VERSION 1
 #define GJK2D_PLUGIN_ENTRY_POINT "gjk2d_plugin_describe"
 
 /* Optional, since issue 32 (the ABI version is unchanged: a plugin without it loads as before):
@@ -130,11 +134,52 @@ extern "C"
         gjk2d_distance_d_fn distance_d; /* set when scalar is GJK2D_SCALAR_DOUBLE, else NULL */
     } gjk2d_implementation;
 
+    /* What an implementation answers on overlapping shapes (gjk2d_contract.overlap). */
+    enum gjk2d_overlap
+    {
+        /* A distance of 0 and both witness points at one point of both shapes (gjk2d). */
+        GJK2D_OVERLAP_COMMON_POINT = 0,
+        /* A distance of 0 or below; no witness points promised (FCL without signed distance). */
+        GJK2D_OVERLAP_ZERO = 1,
+        /* A distance of 0 and both points at one point midway between the shapes' cores: the
+         * midpoint of the cores' closest points (Box2D 2.4.1 with radii; a common point of the
+         * cores when they overlap). */
+        GJK2D_OVERLAP_MIDPOINT = 2,
+        /* A negative distance (minus the depth) and a penetration pair: each point on its own
+         * shape, ||pA - pB|| = depth (Bullet, FCL with signed distance). */
+        GJK2D_OVERLAP_PENETRATION = 3
+    };
+
+    /* What an implementation promises, each clause with where the library says so ("source"):
+     * its file and line or its documentation, and its version, e.g. "fcl/narrowphase/
+     * distance_request.h:63, FCL 0.7.0". A clause the library does not state has a NULL or empty
+     * source and says "none stated"; the runner then holds it to gjk2d's own bound for the
+     * implementation's scalar type, and says so (docs/peers.md, "Contracts"). */
+    typedef struct gjk2d_contract
+    {
+        /* The distance on separated shapes is within abs + rel * exact of the exact distance; a
+         * claim of overlap on shapes at most that far apart keeps it too. Negative: none stated
+         * (both negative: the tolerance is gjk2d's bound for the scalar type). */
+        double distance_abs_tolerance;
+        double distance_rel_tolerance;
+        const char* tolerance_source;
+        int32_t overlap; /* a gjk2d_overlap */
+        const char* overlap_source;
+        /* The skin the library keeps around each shape, as the plugin sets it (0: none); the
+         * answers must still be the case's shapes'. */
+        double margin;
+        const char* margin_source;
+    } gjk2d_contract;
+
     typedef struct gjk2d_plugin
     {
-        int32_t abi_version; /* GJK2D_PLUGIN_ABI_VERSION */
+        int32_t abi_version; /* 1 or 2: GJK2D_PLUGIN_ABI_MIN_VERSION .. GJK2D_PLUGIN_ABI_VERSION */
         int32_t count;       /* implementations, 1..64 */
         const gjk2d_implementation* implementations;
+        /* Version 2 only (a version-1 plugin's struct ends above): `count` contracts, one per
+         * implementation in the same order; NULL holds every implementation to gjk2d's own
+         * contract, as version 1 does. */
+        const gjk2d_contract* contracts;
     } gjk2d_plugin;
 
     typedef const gjk2d_plugin* (*gjk2d_plugin_describe_fn)(void);

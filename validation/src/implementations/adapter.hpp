@@ -6,6 +6,7 @@
 // costs the case in flight, and the process is started again for the next one.
 #pragma once
 
+#include "implementations/contract.hpp"
 #include "implementations/variants.hpp"
 
 #include <cstddef>
@@ -19,7 +20,11 @@ struct PluginImpl;   // implementations/plugins.hpp
 struct PluginTask;   // implementations/plugins.hpp
 struct PreparedCase; // evaluate/evaluate.hpp
 
-inline constexpr int kAdapterProtocolVersion = 1;
+// The versions the host speaks. It opens with `gjk2d-adapter 1` (the oldest, so that a version-1
+// adapter that checks the line keeps working); the adapter answers the version it speaks, 1 or 2.
+// Version 2 adds the `contract` lines of the handshake (implementations/contract.hpp).
+inline constexpr int kAdapterProtocolMinVersion = 1;
+inline constexpr int kAdapterProtocolVersion = 2;
 // The handshake may take max(kAdapterHandshakeSeconds, --plugin-timeout): an interpreter's start
 // (Node, Python importing shapely) takes a few hundred milliseconds on an idle machine.
 inline constexpr double kAdapterHandshakeSeconds = 10;
@@ -44,6 +49,8 @@ struct AdapterImplementation
     bool radius = false; // `radius`: takes radius > 0
     int maxVertices = 0; // 0: no limit
     std::string description;
+    // Version 2's `contract NAME ...` lines; version 1: gjk2d's own.
+    Contract contract = ownContract();
     bool operator==(const AdapterImplementation&) const = default;
 };
 
@@ -51,6 +58,7 @@ struct AdapterImplementation
 struct AdapterDescription
 {
     std::string library;
+    int version = kAdapterProtocolVersion; // the version the adapter answered
     std::vector<AdapterImplementation> implementations;
     bool operator==(const AdapterDescription&) const = default;
 };

@@ -1,4 +1,4 @@
-// The executable-adapter protocol's handshake (version 1, docs/validate-your-gjk.md, "Executable
+// The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md, "Executable
 // adapters"): the host's version line, then the adapter's library and implementation lines, each
 // checked, to its `ready`.
 #include "implementations/adapter_wire.hpp"
@@ -62,18 +62,73 @@ AdapterImplementation implementationLine(const std::string& line,
     return im;
 }
 
-// The first line: `gjk2d-adapter 1`.
-void versionLine(const std::string& line)
+// The first line: `gjk2d-adapter 1` or `gjk2d-adapter 2`; the version.
+int versionLine(const std::string& line)
 {
     const std::vector<std::string> t = tokens(line);
     if (t.size() != 2 || t[0] != "gjk2d-adapter")
         throw AdapterFailure(
             fmt::format("bad description: the first line is {}, expected 'gjk2d-adapter {}'",
                         quoted80(line), kAdapterProtocolVersion));
-    if (t[1] != std::to_string(kAdapterProtocolVersion))
-        throw AdapterFailure(fmt::format(
-            "executable adapter speaks protocol version {}, this gjk-validate speaks {}",
-            t[1].substr(0, 20), kAdapterProtocolVersion));
+    for (int v = kAdapterProtocolMinVersion; v <= kAdapterProtocolVersion; ++v)
+        if (t[1] == std::to_string(v))
+            return v;
+    throw AdapterFailure(fmt::format(
+        "executable adapter speaks protocol version {}, this gjk-validate speaks {} to {}",
+        t[1].substr(0, 20), kAdapterProtocolMinVersion, kAdapterProtocolVersion));
+}
+
+// A tolerance token: a number >= 0, or `none`.
+bool toleranceToken(const std::string& t, double& x)
+{
+    if (t == "none")
+    {
+        x = -1;
+        return true;
+    }
+    return parseNumber(t, x) && std::isfinite(x) && x >= 0;
+}
+
+// One `contract NAME CLAUSE ...` line (version 2), into the implementation NAME declared before:
+//   contract NAME overlap common-point|zero|midpoint|penetration SOURCE...
+//   contract NAME tolerance ABS|none REL|none SOURCE...
+//   contract NAME margin M SOURCE...
+// SOURCE: where the library says so (file:line or its documentation, and its version); "" for a
+// clause it does not state.
+void contractLine(const std::string& line, std::vector<AdapterImplementation>& impls)
+{
+    const std::vector<std::string> t = tokens(line);
+    auto bad = [&](const std::string& why)
+    { return AdapterFailure(fmt::format("bad description: {}: {}", quoted80(line), why)); };
+    if (t.size() < 4)
+        throw bad("a contract line is `contract NAME overlap|tolerance|margin ...`");
+    auto it = std::find_if(impls.begin(), impls.end(),
+                           [&](const AdapterImplementation& a) { return a.name == t[1]; });
+    if (it == impls.end())
+        throw bad("no implementation of that name before it");
+    Contract& c = it->contract;
+    c.own = false;
+    if (t[2] == "overlap")
+    {
+        if (!parseOverlap(t[3], c.overlap))
+            throw bad("the overlap is none of common-point, zero, midpoint, penetration");
+        c.overlapSource = restAfter(line, 4);
+    }
+    else if (t[2] == "tolerance")
+    {
+        if (t.size() < 5 || !toleranceToken(t[3], c.absTolerance) ||
+            !toleranceToken(t[4], c.relTolerance))
+            throw bad("a tolerance is `tolerance ABS REL SOURCE...`, each a number >= 0 or none");
+        c.toleranceSource = restAfter(line, 5);
+    }
+    else if (t[2] == "margin")
+    {
+        if (!parseNumber(t[3], c.margin) || !std::isfinite(c.margin) || c.margin < 0)
+            throw bad("the margin is not a finite number >= 0");
+        c.marginSource = restAfter(line, 4);
+    }
+    else
+        throw bad("the clause is none of overlap, tolerance, margin");
 }
 
 // Why the handshake stopped short: the adapter's exit, or the limit.
@@ -93,12 +148,12 @@ void versionLine(const std::string& line)
 AdapterDescription handshake(Process& p, double limit)
 {
     const auto deadline = deadlineIn(limit);
-    Io io = writeText(p, fmt::format("gjk2d-adapter {}\n", kAdapterProtocolVersion), deadline);
+    Io io = writeText(p, fmt::format("gjk2d-adapter {}\n", kAdapterProtocolMinVersion), deadline);
     std::string line;
     if (io != Io::Ok || (io = readLine(p, line, deadline)) != Io::Ok)
         handshakeCut(p, io, limit);
-    versionLine(line);
     AdapterDescription d;
+    d.version = versionLine(line);
     bool haveLibrary = false;
     for (;;)
     {
@@ -116,6 +171,8 @@ AdapterDescription handshake(Process& p, double limit)
         }
         else if (t[0] == "implementation" && d.implementations.size() < 64)
             d.implementations.push_back(implementationLine(line, d.implementations));
+        else if (t[0] == "contract" && d.version >= 2)
+            contractLine(line, d.implementations);
         else
             throw AdapterFailure(fmt::format(
                 "bad description: unexpected line {} (a second library, a 65th implementation, "

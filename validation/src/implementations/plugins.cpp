@@ -25,6 +25,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cmath>
 #include <chrono>
 #include <cstring>
 #include <deque>
@@ -129,11 +130,12 @@ OpenedPlugin openPlugin(const std::string& path)
     if (d == nullptr)
         throw InputError(
             fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_ENTRY_POINT));
-    if (d->abi_version != GJK2D_PLUGIN_ABI_VERSION)
+    if (d->abi_version < GJK2D_PLUGIN_ABI_MIN_VERSION ||
+        d->abi_version > GJK2D_PLUGIN_ABI_VERSION)
         throw InputError(fmt::format(
-            "plugin {}: plugin ABI version {}, this gjk-validate reads version {} (rebuild the "
-            "plugin against this SDK's gjk2d/plugin.h)",
-            path, d->abi_version, GJK2D_PLUGIN_ABI_VERSION));
+            "plugin {}: plugin ABI version {}, this gjk-validate reads versions {} to {} (rebuild "
+            "the plugin against this SDK's gjk2d/plugin.h)",
+            path, d->abi_version, GJK2D_PLUGIN_ABI_MIN_VERSION, GJK2D_PLUGIN_ABI_VERSION));
     if (d->count < 1 || d->count > 64 || d->implementations == nullptr)
         throw InputError(fmt::format("plugin {}: bad description: count {} is outside 1..64 or "
                                      "implementations is NULL",
@@ -228,9 +230,32 @@ std::vector<PluginImpl> adapterImpls(const std::string& path, const std::string&
         p.impl.scalar = a.scalar == Scalar::Float ? GJK2D_SCALAR_FLOAT : GJK2D_SCALAR_DOUBLE;
         p.impl.accepts = a.radius ? std::uint32_t(GJK2D_ACCEPTS_RADIUS) : 0u;
         p.impl.max_vertices = a.maxVertices;
+        p.contract = a.contract;
         impls.push_back(std::move(p));
     }
     return impls;
+}
+
+// Implementation i's contract as a version-2 plugin declares it; InputError when it is unsound.
+Contract declaredContract(const std::string& path, int i, const gjk2d_contract& d)
+{
+    auto text = [](const char* s) { return std::string(s ? s : ""); };
+    Contract c;
+    c.own = false;
+    c.absTolerance = d.distance_abs_tolerance < 0 ? -1 : d.distance_abs_tolerance;
+    c.relTolerance = d.distance_rel_tolerance < 0 ? -1 : d.distance_rel_tolerance;
+    if (std::isnan(d.distance_abs_tolerance) || std::isnan(d.distance_rel_tolerance))
+        c.absTolerance = d.distance_abs_tolerance; // checkContract names it
+    c.toleranceSource = text(d.tolerance_source);
+    c.overlap = Overlap(d.overlap);
+    c.overlapSource = text(d.overlap_source);
+    c.margin = d.margin;
+    c.marginSource = text(d.margin_source);
+    const std::string problem = checkContract(c);
+    if (!problem.empty())
+        throw InputError(fmt::format("plugin {}: bad contract of implementation {}: {}", path, i,
+                                     problem));
+    return c;
 }
 
 // The implementations the file describes, of either kind (canonical path and log name unset).
@@ -247,6 +272,8 @@ std::vector<PluginImpl> describePlugin(const std::string& path, const std::strin
     {
         PluginImpl p;
         p.impl = d.implementations[i];
+        if (d.abi_version >= 2 && d.contracts != nullptr)
+            p.contract = declaredContract(path, i, d.contracts[i]);
         p.library = opened.library;
         p.timing = opened.timing;
         p.index = i;

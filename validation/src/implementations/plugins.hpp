@@ -5,6 +5,7 @@
 // (implementations/in_process.hpp: the Python package's gjk2d.validate).
 #pragma once
 
+#include "implementations/contract.hpp"
 #include "implementations/variants.hpp"
 
 #include <gjk2d/plugin.h>
@@ -62,6 +63,8 @@ struct PluginImpl
     // it) and the implementation's index in its description, which the loop is given.
     const gjk2d_timing* timing = nullptr;
     int index = 0;
+    // What it promises: a version-2 plugin's or adapter's declaration, else gjk2d's own.
+    Contract contract = ownContract();
     // An in-process variant's callbacks; null once released (releaseInProcessVariant).
     std::shared_ptr<InProcessCalls> calls;
 };

@@ -1,0 +1,102 @@
+// Contracts (implementations/contract.hpp): names, gjk2d's own, the checks of a declared one, and
+// report.json's form.
+#include "implementations/contract.hpp"
+
+#include "implementations/plugins.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace gjkval
+{
+
+namespace
+{
+constexpr const char* kOverlapNames[kOverlapKinds] = {"common-point", "zero", "midpoint",
+                                                      "penetration"};
+static_assert(int(Overlap::CommonPoint) == GJK2D_OVERLAP_COMMON_POINT &&
+              int(Overlap::Zero) == GJK2D_OVERLAP_ZERO &&
+              int(Overlap::Midpoint) == GJK2D_OVERLAP_MIDPOINT &&
+              int(Overlap::Penetration) == GJK2D_OVERLAP_PENETRATION);
+
+Json orNull(double tolerance)
+{
+    return tolerance >= 0 ? Json(tolerance) : Json(nullptr);
+}
+} // namespace
+
+const char* overlapName(Overlap o)
+{
+    return kOverlapNames[int(o)];
+}
+
+bool parseOverlap(const std::string& word, Overlap& out)
+{
+    for (int k = 0; k < kOverlapKinds; ++k)
+        if (word == kOverlapNames[k])
+        {
+            out = Overlap(k);
+            return true;
+        }
+    return false;
+}
+
+Contract ownContract()
+{
+    Contract c;
+    c.own = true;
+    c.overlap = Overlap::CommonPoint;
+    c.toleranceSource = "gjk2d's a-priori bound (docs/error-bound.md)";
+    c.overlapSource = "gjk2d/distance.hpp, DistanceOutput";
+    return c;
+}
+
+std::string checkContract(const Contract& c)
+{
+    if (int(c.overlap) < 0 || int(c.overlap) >= kOverlapKinds)
+        return fmt::format("overlap {} is not a gjk2d_overlap (0..{})", int(c.overlap),
+                           kOverlapKinds - 1);
+    if (std::isnan(c.absTolerance) || std::isnan(c.relTolerance) ||
+        std::isinf(c.absTolerance) || std::isinf(c.relTolerance))
+        return "a distance tolerance is not finite (negative: none stated)";
+    if (!std::isfinite(c.margin) || c.margin < 0)
+        return fmt::format("margin {} is not a finite number >= 0", c.margin);
+    return "";
+}
+
+const Contract& contractOf(const VariantInfo& v)
+{
+    static const Contract own = ownContract();
+    return v.plugin ? v.plugin->contract : own;
+}
+
+std::string judgedBy(const VariantInfo& v)
+{
+    const Contract& c = contractOf(v);
+    if (c.own)
+        return fmt::format("gjk2d's own contract: gjk2d's bound for {}", scalarName(v.scalar));
+    if (!c.statesTolerance())
+        return fmt::format("no tolerance stated: gjk2d's bound for {}", scalarName(v.scalar));
+    return fmt::format("its stated tolerance: abs {}, rel {} ({})",
+                       c.absTolerance >= 0 ? fmt::format("{:g}", c.absTolerance) : "none",
+                       c.relTolerance >= 0 ? fmt::format("{:g}", c.relTolerance) : "none",
+                       c.toleranceSource);
+}
+
+Json contractJson(const VariantInfo& v)
+{
+    const Contract& c = contractOf(v);
+    return Json{{"own", c.own},
+                {"overlap", overlapName(c.overlap)},
+                {"overlap_source", c.overlapSource},
+                {"tolerance",
+                 {{"abs", orNull(c.absTolerance)},
+                  {"rel", orNull(c.relTolerance)},
+                  {"source", c.toleranceSource}}},
+                {"margin", c.margin},
+                {"margin_source", c.marginSource},
+                {"judged_by", judgedBy(v)}};
+}
+
+} // namespace gjkval

@@ -1,0 +1,67 @@
+// What an implementation under test promises (gjk2d/plugin.h, gjk2d_contract; the adapter
+// protocol's `contract` lines; docs/peers.md, "Contracts"): one plain struct, every clause with
+// where the library says so. The judge (evaluate/) holds each answer to it; gjk2d's own variants,
+// and version-1 plugins, have gjk2d's own contract (ownContract()).
+//
+// One meaning of "contract" in the runner: what an implementation promises about its answers.
+// (plugin.h's rules for a call, the status codes and the result's fields, are "the ABI".)
+#pragma once
+
+#include "common/common.hpp"
+#include "implementations/variants.hpp"
+
+#include <string>
+
+namespace gjkval
+{
+
+// What an implementation answers on overlapping shapes (gjk2d_overlap, the same order).
+enum class Overlap
+{
+    CommonPoint, // distance 0, both points at one point of both shapes (gjk2d)
+    Zero,        // a distance of 0 or below; no points promised: only the sign is judged
+    Midpoint,    // distance 0, both points at the midpoint between the shapes' cores
+    Penetration, // minus the depth, and a penetration pair (each point on its shape)
+};
+inline constexpr int kOverlapKinds = 4;
+// "common-point", "zero", "midpoint", "penetration": the report's and the protocol's words.
+const char* overlapName(Overlap o);
+// The kind a word names; false for none.
+bool parseOverlap(const std::string& word, Overlap& out);
+
+struct Contract
+{
+    // gjk2d's own contract: every failure of gjk2d's judge (evaluate/evaluate.hpp, failedAnswer)
+    // breaks it; the rest of the struct is its description (common-point, gjk2d's bound).
+    bool own = true;
+    // On separated shapes: |distance - exact| <= abs + rel * exact. Negative: not stated; both
+    // not stated: gjk2d's bound for the scalar type stands in, and the report says so.
+    double absTolerance = -1, relTolerance = -1;
+    std::string toleranceSource; // "" none stated
+    Overlap overlap = Overlap::CommonPoint;
+    std::string overlapSource;
+    double margin = 0; // the skin the library keeps around each shape, as the adapter sets it
+    std::string marginSource;
+
+    bool statesTolerance() const { return absTolerance >= 0 || relTolerance >= 0; }
+    bool operator==(const Contract&) const = default;
+};
+
+// gjk2d's own: what its variants, version-1 plugins and version-1 adapters are held to.
+Contract ownContract();
+// A plugin's declared contract (version 2), checked: InputError-worthy problems are returned as
+// one line ("" when it is sound): an unknown overlap kind, a non-finite or negative margin, a
+// NaN tolerance.
+std::string checkContract(const Contract& c);
+// The contract a variant is held to: its plugin's, or gjk2d's own.
+const Contract& contractOf(const VariantInfo& v);
+// report.json's variants[].contract: {"own", "overlap", "overlap_source", "tolerance": {"abs",
+// "rel", "source"} (null members: not stated), "margin", "margin_source", "judged_by"} where
+// judged_by says in words what the distance is held to ("FCL's stated tolerance ..." or "gjk2d's
+// bound for double: no tolerance stated").
+Json contractJson(const VariantInfo& v);
+// In words, what the variant's distance is held to: "its stated tolerance: abs 1e-06, rel none
+// (SOURCE)", "no tolerance stated: gjk2d's bound for double", "gjk2d's own contract: ...".
+std::string judgedBy(const VariantInfo& v);
+
+} // namespace gjkval
