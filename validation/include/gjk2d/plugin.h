@@ -147,7 +147,13 @@ extern "C"
         GJK2D_OVERLAP_MIDPOINT = 2,
         /* A negative distance (minus the depth) and a penetration pair: each point on its own
          * shape, ||pA - pB|| = depth (Bullet, FCL with signed distance). */
-        GJK2D_OVERLAP_PENETRATION = 3
+        GJK2D_OVERLAP_PENETRATION = 3,
+        /* A distance of 0; where the cores are apart (rounded shapes overlapping by their radii),
+         * each point on its own shape's perimeter along the cores' closest points, so that
+         * ||pA - pB|| = rA + rB - (the cores' distance), the exact penetration depth of the two
+         * rounded shapes; where the cores meet, one common point (Box2D 2.4.1 with radii,
+         * b2_distance.cpp: "Keep closest points on perimeter even if overlapped"). */
+        GJK2D_OVERLAP_PERIMETER = 4
     };
 
     /* What an implementation promises, each clause with where the library says so ("source"):

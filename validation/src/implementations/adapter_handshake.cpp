@@ -90,7 +90,7 @@ bool toleranceToken(const std::string& t, double& x)
 }
 
 // One `contract NAME CLAUSE ...` line (version 2), into the implementation NAME declared before:
-//   contract NAME overlap common-point|zero|midpoint|penetration SOURCE...
+//   contract NAME overlap common-point|zero|midpoint|penetration|perimeter SOURCE...
 //   contract NAME tolerance ABS|none REL|none SOURCE...
 //   contract NAME margin M SOURCE...
 // SOURCE: where the library says so (file:line or its documentation, and its version); "" for a
@@ -111,7 +111,7 @@ void contractLine(const std::string& line, std::vector<AdapterImplementation>& i
     if (t[2] == "overlap")
     {
         if (!parseOverlap(t[3], c.overlap))
-            throw bad("the overlap is none of common-point, zero, midpoint, penetration");
+            throw bad("the overlap is none of common-point, zero, midpoint, penetration, perimeter");
         c.overlapSource = restAfter(line, 4);
     }
     else if (t[2] == "tolerance")

@@ -14,11 +14,12 @@ namespace gjkval
 namespace
 {
 constexpr const char* kOverlapNames[kOverlapKinds] = {"common-point", "zero", "midpoint",
-                                                      "penetration"};
+                                                      "penetration", "perimeter"};
 static_assert(int(Overlap::CommonPoint) == GJK2D_OVERLAP_COMMON_POINT &&
               int(Overlap::Zero) == GJK2D_OVERLAP_ZERO &&
               int(Overlap::Midpoint) == GJK2D_OVERLAP_MIDPOINT &&
-              int(Overlap::Penetration) == GJK2D_OVERLAP_PENETRATION);
+              int(Overlap::Penetration) == GJK2D_OVERLAP_PENETRATION &&
+              int(Overlap::Perimeter) == GJK2D_OVERLAP_PERIMETER);
 
 Json orNull(double tolerance)
 {

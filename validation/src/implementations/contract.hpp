@@ -22,9 +22,13 @@ enum class Overlap
     Zero,        // a distance of 0 or below; no points promised: only the sign is judged
     Midpoint,    // distance 0, both points at the midpoint between the shapes' cores
     Penetration, // minus the depth, and a penetration pair (each point on its shape)
+    // Distance 0; cores apart: each point on its own shape, ||pA - pB|| = rA + rB - core distance
+    // (the rounded shapes' exact depth); cores meeting: one common point.
+    Perimeter,
 };
-inline constexpr int kOverlapKinds = 4;
-// "common-point", "zero", "midpoint", "penetration": the report's and the protocol's words.
+inline constexpr int kOverlapKinds = 5;
+// "common-point", "zero", "midpoint", "penetration", "perimeter": the report's and the protocol's
+// words.
 const char* overlapName(Overlap o);
 // The kind a word names; false for none.
 bool parseOverlap(const std::string& word, Overlap& out);
