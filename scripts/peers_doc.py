@@ -9,9 +9,12 @@ It runs `build/release/validation/gjk-validate run --peers` on the default campa
 as `gjk-validate list` prints them on its first line) into reports/peers/, reads
 its report.json and rewrites only the part of the document between the markers
 `<!-- peers_doc.py: begin -->` and `<!-- peers_doc.py: end -->` (created with the title when the
-document does not exist; the hand-written sections around it are kept). Each plugin variant's worst
-case is drawn to <doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case
-(the folder's other .svg files are removed: it holds only this script's drawings).
+document does not exist; the hand-written sections around it are kept). It gives each variant's
+contract, its contract violations and its accuracy against gjk2d's bound. Each plugin variant's
+worst contract violation gets a standalone program from `gjk-validate repro`, kept in
+<doc's folder>/peers/repro/ (emptied first), and its largest error against gjk2d's bound is drawn to
+<doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case (the folder's
+other .svg files are removed: it holds only this script's drawings).
 Only Python's standard library. Exit codes: 0 written, 1 a command failed, 2 bad usage.
 """
 import argparse
@@ -114,6 +117,10 @@ def group_rows(report, variant):
     rows = []
     for name, sts in groups.items():
         s = lambda k: sum(st.get(k, 0) or 0 for st in sts)
+        reasons = {}
+        for st in sts:
+            for k, n in (st.get("contract_violations") or {}).get("reasons", {}).items():
+                reasons[k] = reasons.get(k, 0) + n
         rel = merge_hist([st.get("errors", {}).get("rel") for st in sts])
         ratio = merge_hist([st.get("errors", {}).get("bound_ratio") for st in sts])
         timed = [(st["cases"], num(st["ns_per_query"])) for st in sts
@@ -121,9 +128,12 @@ def group_rows(report, variant):
         weight = sum(c for c, _ in timed)
         ns = sum(c * t for c, t in timed) / weight if weight > 0 else None
         rows.append({"group": name, "cases": s("cases"), "refused": s("refused"),
+                     "violations": sum((st.get("contract_violations") or {}).get("count", 0)
+                                       for st in sts),
+                     "reasons": reasons, "outside": s("beyond_bound_keeping_contract"),
+                     "depth_unjudged": s("depth_unjudged"),
                      "false_overlap": s("false_overlap"),
                      "false_separation": s("false_separation"), "nonfinite": s("nonfinite"),
-                     "invalid": s("invalid"),
                      "incidents": s("plugin_errors") + s("crashed") + s("hung"),
                      "rel": rel, "ratio": ratio, "ns": ns})
     return rows
@@ -133,29 +143,73 @@ def g(x, spec=".3g"):
     return "-" if x is None else format(x, spec)
 
 
-def table(report, peers, command):
-    out = [f"Per peer and family group, from `{command}`. Rows of gjk2d's reference variants "
+def reasons_text(reasons):
+    return ", ".join(f"{k} {n}" for k, n in sorted(reasons.items(), key=lambda kv: -kv[1])) or "-"
+
+
+def contract_table(report, peers):
+    """Each variant's contract (report.json variants[].contract), clause by clause with its
+    source."""
+    out = ["### What each peer promises (its contract)", "",
+           "Each implementation is judged by what it promises, each clause with where its library "
+           "says so (declared by its adapter: gjk2d/plugin.h, `gjk2d_contract`). Where a library "
+           "states no tolerance, its distance is held to gjk2d's own a-priori bound in its scalar "
+           "type, and the table says so.", "",
+           "| variant | type | on overlap | source | its distance is held to | margin |",
+           "|---|---|---|---|---|---|"]
+    info = {v["name"]: v for v in report["variants"]}
+    for name in [v for v in GJK2D_ROWS if v in info] + peers:
+        v = info[name]
+        c = v.get("contract") or {}
+        margin = c.get("margin", 0)
+        msrc = c.get("margin_source") or ""
+        out.append(f"| {name} | {v.get('type', '?')} | {c.get('overlap', '?')} | "
+                   f"{c.get('overlap_source') or 'none stated'} | {c.get('judged_by', '?')} | "
+                   f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} |")
+    return out
+
+
+def verdict_table(report, peers, command):
+    out = ["### Contract violations and accuracy", "",
+           f"Per variant and family group, from `{command}`. Rows of gjk2d's reference variants "
            "(double, float) are there to compare with.", "",
-           "| variant | family group | cases | refused | false overlaps | false separations "
-           "| non-finite | invalid | errors, crashes, hangs | largest rel. error | p99 rel. error "
-           "| largest error / gjk2d's bound | p99 error / bound | ns/query |",
-           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+           "| variant | family group | cases | refused | breaks its contract | why | outside "
+           "gjk2d's bound, keeps its contract | depth not judged | false overlaps | false "
+           "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
+           "p99 error / bound | ns/query |",
+           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
     for v in names:
         for r in group_rows(report, v):
             out.append(f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
-                       f"{r['false_overlap']} | {r['false_separation']} | {r['nonfinite']} | "
-                       f"{r['invalid']} | {r['incidents']} | {g(r['rel'][0])} | {g(r['rel'][1])} | "
+                       f"{r['violations']} | {reasons_text(r['reasons'])} | {r['outside']} | "
+                       f"{r['depth_unjudged']} | {r['false_overlap']} | {r['false_separation']} | "
+                       f"{g(r['rel'][0])} | {g(r['rel'][1])} | "
                        f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |")
-    out += ["", "Columns (docs/report-schema.md, Stats): cases answered; refused by the "
-            "implementation (not in cases); false overlaps and separations against the exact "
-            "side; non-finite answers; invalid answers (negative distance, witness off its shape "
-            "or not as far apart as the distance); errors, crashes and hangs of the plugin; "
-            "rel. error = |d - d_exact| / d_exact (separated cases); error / bound = |d - "
-            "d_exact| over gjk2d's a-priori bound in the variant's precision (docs/error-bound.md; "
-            "over 1 is a failure for gjk2d); p99 values are histogram bin upper edges, at most the largest; ns/query: "
-            "the families' single-threaded timings, weighted by cases (- when not timed)."]
+    out += ["", "Columns (docs/report-schema.md, Stats): *cases* answered; *refused* by the "
+            "implementation (not in cases); *breaks its contract*: answers that break what the "
+            "implementation promises (the table above): a bug of that implementation; for gjk2d's "
+            "variants, a failure; *why*: the reasons, with their counts (docs/report-schema.md, "
+            "`contract_violations`); *outside gjk2d's bound, keeps its contract*: answers further "
+            "from the exact distance than gjk2d's a-priori bound in the variant's precision "
+            "(docs/error-bound.md) that keep the implementation's own contract: a measured "
+            "accuracy, not a failure; *depth not judged*: penetration answers whose depth waits for "
+            "the exact penetration depth (its points are judged); *false overlaps and separations* "
+            "against the exact side, whatever the contract allows; rel. error = |d - d_exact| / "
+            "d_exact (separated cases); error / bound = |d - d_exact| over gjk2d's bound (a "
+            "negative distance of a zero or penetration contract counts as 0); p99 values are "
+            "histogram bin upper edges, at most the largest; ns/query: the families' "
+            "single-threaded timings, weighted by cases (- when not timed)."]
     return out
+
+
+def worst_violation(report, variant):
+    """The variant's worst contract violation in the report (variants[].worst_contract_violation),
+    or None."""
+    for v in report["variants"]:
+        if v["name"] == variant:
+            return v.get("worst_contract_violation")
+    return None
 
 
 def worst_of(report, variant):
@@ -169,9 +223,10 @@ def worst_of(report, variant):
     return best
 
 
-def explain_command(gjk, report, family, case, plugin_files):
-    """`gjk-validate explain` of one case of the report, its plugins loaded as --plugin."""
-    cmd = [gjk, "explain"]
+def explain_command(gjk, report, family, case, plugin_files, verb="explain", variant="double"):
+    """`gjk-validate explain` (or `repro`) of one case of the report, its plugins loaded as
+    --plugin."""
+    cmd = [gjk, verb]
     inputs = report["context"]["inputs"]
     if family.startswith("file:"):
         rest = family[len("file:"):]
@@ -183,7 +238,7 @@ def explain_command(gjk, report, family, case, plugin_files):
         seed = spec.get("seed", report["context"]["seed"]) if spec else report["context"]["seed"]
         count = f":{spec['count']}" if spec and "count" in spec else ""
         cmd += ["--family", family + count, "--seed", str(seed), case]
-    cmd += ["--variants", "double", "--no-default-plugins"]
+    cmd += ["--variants", variant, "--no-default-plugins"]
     for f in plugin_files:
         cmd += ["--plugin", f]
     return cmd
@@ -299,10 +354,10 @@ def plugins_for(plugins, variant):
 
 
 def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
-    out = ["", "### The worst case of each peer", "",
-           "Each plugin variant's case with the largest error relative to gjk2d's bound (a "
-           "non-finite answer is in the non-finite column, not here), drawn by this script from "
-           "the command under it."]
+    out = ["", "### Each peer's largest error against gjk2d's bound", "",
+           "Each plugin variant's case with the largest error relative to gjk2d's bound, whether "
+           "or not it keeps its contract (a non-finite answer is not here), drawn by this script "
+           "from the command under it."]
     plugins = report["context"].get("plugins", [])
     svg_dir.mkdir(parents=True, exist_ok=True)
     for old in svg_dir.glob("*.svg"):  # the drawings of peers no longer in the report go too
@@ -336,6 +391,36 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
     return out
 
 
+def violation_section(report, peers, gjk, shown_gjk, repro_dir, doc):
+    """Each peer's worst contract violation, and the standalone program `gjk-validate repro` writes
+    for it (in the peer's own language and API, no gjk2d in it), kept in repro_dir and linked."""
+    out = ["", "### Each peer's worst contract violation, with a repro", "",
+           "The case of each plugin variant whose answer breaks its own contract the most (the "
+           "report's `variants[].worst_contract_violation`), and a program that shows it with the "
+           "library alone: `gjk-validate repro` writes it, the command under each."]
+    plugins = report["context"].get("plugins", [])
+    repro_dir.mkdir(parents=True, exist_ok=True)
+    for old in repro_dir.iterdir():  # the programs of peers no longer in the report go too
+        if old.is_file():
+            old.unlink()
+    for v in peers:
+        w = worst_violation(report, v)
+        if not w:
+            out += ["", f"**{v}**: keeps its contract on every case."]
+            continue
+        files, needs = plugins_for(plugins, v)
+        cmd = explain_command(gjk, report, w["family"], w["case"], files, "repro", v)
+        shown = [shown_gjk] + [rel(x) for x in cmd[1:]] + ["--out", rel(str(repro_dir))]
+        before = {f.name for f in repro_dir.iterdir()}
+        code = run(cmd + ["--out", str(repro_dir)], must=False)
+        made = sorted(f.name for f in repro_dir.iterdir() if f.name not in before)
+        links = ", ".join(f"[{m}]({os.path.relpath(repro_dir / m, doc.parent)})" for m in made)
+        what = f"repro: {links}" if code == 0 and made else f"no repro: `repro` exited {code}"
+        out += ["", f"**{v}**{needs}: `{w['case']}` ({w['family']}), {w.get('reason', '?')}; "
+                f"{what}. Command: `{shlex.join(shown)}`"]
+    return out
+
+
 def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
     ctx = report["context"]
     peers = [v["name"] for v in report["variants"] if "plugin" in v]
@@ -349,7 +434,9 @@ def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
         lib = f", {p['library']}" if p.get("library") else ""
         out.append(f"- `{os.path.basename(p['file'])}` ({p.get('kind', '?')}{lib}): "
                    + ", ".join(p.get("variants", [])))
-    out += [""] + table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    out += [""] + contract_table(report, peers) + [""]
+    out += verdict_table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    out += violation_section(report, peers, gjk, shown_gjk, svg_dir / "repro", doc)
     out += worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work)
     return "\n".join(out + ["", END]) + "\n"
 

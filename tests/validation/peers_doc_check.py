@@ -91,6 +91,15 @@ def main():
                 if not (t / "peers" / f"{v}.svg").is_file():
                     errors.append(f"no drawing peers/{v}.svg")
         errors += worst_case_commands(text, plugins, a.script)
+        # Every variant's contract has a row of the contract table, which names its overlap kind.
+        for v in report["variants"]:
+            kind = (v.get("contract") or {}).get("overlap")
+            if v["name"] in ("double", "float") or "plugin" in v:
+                if not kind or not any(l.startswith(f"| {v['name']} | {v['type']} | {kind} | ")
+                                       for l in rows):
+                    errors.append(f"no contract row for {v['name']} (overlap {kind})")
+        if "### Each peer's worst contract violation, with a repro" not in text:
+            errors.append("no section of the peers' contract violations")
         # Without options the script runs the default campaign, as `gjk-validate list` says it:
         # families, then the default case files.
         sys.path.insert(0, str(pathlib.Path(a.script).parent))
@@ -105,7 +114,7 @@ def main():
         cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),
                 "largest error / gjk2d's bound": ("bound_ratio", "max"),
                 "p99 error / bound": ("bound_ratio", "p99")}
-        head = next(l for l in rows if l.startswith("| variant |"))
+        head = next(l for l in rows if l.startswith("| variant | family group |"))
         names = [c.strip() for c in head.strip("|").split("|")]
         for fam in report["families"]:
             group = fam["name"].split("/")[0]
