@@ -1,6 +1,6 @@
-// The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md, "Executable
-// adapters"): the host's version line, then the adapter's library and implementation lines, each
-// checked, to its `ready`.
+// The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md,
+// "Executable adapters"): the host's version line, then the adapter's library and implementation
+// lines, each checked, to its `ready`.
 #include "implementations/adapter_wire.hpp"
 
 namespace gjkval::adapterwire
@@ -111,7 +111,8 @@ void contractLine(const std::string& line, std::vector<AdapterImplementation>& i
     if (t[2] == "overlap")
     {
         if (!parseOverlap(t[3], c.overlap))
-            throw bad("the overlap is none of common-point, zero, midpoint, penetration, perimeter");
+            throw bad(
+                "the overlap is none of common-point, zero, midpoint, penetration, perimeter");
         c.overlapSource = restAfter(line, 4);
     }
     else if (t[2] == "tolerance")

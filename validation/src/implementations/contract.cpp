@@ -58,8 +58,8 @@ std::string checkContract(const Contract& c)
     if (int(c.overlap) < 0 || int(c.overlap) >= kOverlapKinds)
         return fmt::format("overlap {} is not a gjk2d_overlap (0..{})", int(c.overlap),
                            kOverlapKinds - 1);
-    if (std::isnan(c.absTolerance) || std::isnan(c.relTolerance) ||
-        std::isinf(c.absTolerance) || std::isinf(c.relTolerance))
+    if (std::isnan(c.absTolerance) || std::isnan(c.relTolerance) || std::isinf(c.absTolerance) ||
+        std::isinf(c.relTolerance))
         return "a distance tolerance is not finite (negative: none stated)";
     if (!std::isfinite(c.margin) || c.margin < 0)
         return fmt::format("margin {} is not a finite number >= 0", c.margin);

@@ -25,8 +25,8 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -130,8 +130,7 @@ OpenedPlugin openPlugin(const std::string& path)
     if (d == nullptr)
         throw InputError(
             fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_ENTRY_POINT));
-    if (d->abi_version < GJK2D_PLUGIN_ABI_MIN_VERSION ||
-        d->abi_version > GJK2D_PLUGIN_ABI_VERSION)
+    if (d->abi_version < GJK2D_PLUGIN_ABI_MIN_VERSION || d->abi_version > GJK2D_PLUGIN_ABI_VERSION)
         throw InputError(fmt::format(
             "plugin {}: plugin ABI version {}, this gjk-validate reads versions {} to {} (rebuild "
             "the plugin against this SDK's gjk2d/plugin.h)",
@@ -253,8 +252,8 @@ Contract declaredContract(const std::string& path, int i, const gjk2d_contract& 
     c.marginSource = text(d.margin_source);
     const std::string problem = checkContract(c);
     if (!problem.empty())
-        throw InputError(fmt::format("plugin {}: bad contract of implementation {}: {}", path, i,
-                                     problem));
+        throw InputError(
+            fmt::format("plugin {}: bad contract of implementation {}: {}", path, i, problem));
     return c;
 }
 
