@@ -9,8 +9,10 @@
 //   VARIANT CASE FAMILY COMMAND FILE STEM SCALAR the variant, the case, the command that wrote it,
 //                                                the written file's name and its name without the
 //                                                extension, float or double
-//   A_COUNT A_POINTS A_RADIUS A_PX A_PY A_C A_S  shape A as the variant is given it (B_... for B):
-//                                                A_POINTS is "x0, y0, x1, y1, ..."
+//   A_COUNT A_POINTS A_PAIRS A_RADIUS A_PX A_PY A_C A_S
+//                                                shape A as the variant is given it (B_... for B):
+//                                                A_POINTS is "x0, y0, x1, y1, ...", A_PAIRS
+//                                                "{x0, y0}, {x1, y1}, ..." (C and C++)
 //   REPORT_STATUS REPORT_DISTANCE REPORT_AX REPORT_AY REPORT_BX REPORT_BY REPORT_INVALID
 //                                                the variant's answer as gjk-validate reports it
 //   EXACT_DISTANCE EXACT_OVERLAP EXACT_SQUARED EXACT_AX EXACT_AY EXACT_BX EXACT_BY
@@ -126,12 +128,17 @@ void shapeValues(Values& out, const char* k, const CasePoints<double>& pd,
     const std::string p = k;
     auto lit = [&](double v, const std::string& what)
     { return literal(v, s, cFamily, ("shape " + p + "'s " + what).c_str()); };
-    std::string points;
+    std::string points, pairs;
     for (std::size_t i = 0; i < pd.size(); ++i)
-        points += (i ? ", " : "") + lit(pd[i].x, fmt::format("x{}", i)) + ", " +
-                  lit(pd[i].y, fmt::format("y{}", i));
+    {
+        const std::string x = lit(pd[i].x, fmt::format("x{}", i)),
+                          y = lit(pd[i].y, fmt::format("y{}", i));
+        points += (i ? ", " : "") + x + ", " + y;
+        pairs += (i ? ", {" : "{") + x + ", " + y + "}";
+    }
     out[p + "_COUNT"] = std::to_string(pd.size());
     out[p + "_POINTS"] = points;
+    out[p + "_PAIRS"] = pairs;
     out[p + "_RADIUS"] = lit(r, "radius");
     out[p + "_PX"] = lit(xd.p.x, "px");
     out[p + "_PY"] = lit(xd.p.y, "py");
