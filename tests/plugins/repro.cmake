@@ -5,8 +5,10 @@
 # v3 one needs the Box2D v3 sources (README.md, "Box2D v3"). Included by CMakeLists.txt here.
 set(_repro ${CMAKE_CURRENT_SOURCE_DIR}/repro_check.py)
 set(_box2d3_variant box2d-3-*) # not built: repro_check.py skips it
+set(_box2d3_env "")
 if(TARGET gjk2d_box2d3_plugin)
   set(_box2d3_variant $<TARGET_PROPERTY:gjk2d_box2d3_plugin,GJK2D_VARIANT>)
+  set(_box2d3_env "|--env|BOX2D3=${GJK2D_BOX2D3_SOURCE}")
 endif()
 # variant|family|cases|what the cases are|more arguments (a variant ending in * is the first
 # listed variant of that prefix: GEOS's name carries the installed GEOS version)
@@ -17,7 +19,7 @@ set(_repros
     "box2d-2.4.1|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-double|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-float|random:2000|random/1,random/2|random/1 and random/2"
-    "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2"
+    "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2${_box2d3_env}"
     "geos-*|random:2000|random/1,random/2|random/1 and random/2")
 foreach(entry IN LISTS _repros)
   string(REPLACE "|" ";" entry "${entry}")

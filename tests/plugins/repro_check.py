@@ -59,14 +59,14 @@ def run(cmd, **kw):
     return r.stdout
 
 
-def program_output(path, node_path):
+def program_output(path, node_path, env):
     """Builds and runs the program as its comment says; its standard output."""
     text = path.read_text()
     if path.suffix in ('.c', '.cpp'):
         m = re.search(r'^//   ((?:g\+\+|gcc|cc|c\+\+) .*)$', text, re.M)
         if not m:
             fail(f'{path.name}: no one-line compile command in its comment')
-        return run(['bash', '-c', m.group(1)], cwd=path.parent)
+        return run(['bash', '-c', m.group(1)], cwd=path.parent, env=dict(os.environ, **env))
     if path.suffix == '.js':
         if not re.search(r'NODE_PATH=build/npm/planck/node_modules node ', text):
             fail(f'{path.name}: its comment does not say how it finds planck')
@@ -100,6 +100,8 @@ def main():
     ap.add_argument('--cases', required=True, help='case names, separated by commas')
     ap.add_argument('--work', required=True)
     ap.add_argument('--node-path', default='', help="the project's planck: build/npm/planck/node_modules")
+    ap.add_argument('--env', action='append', default=[],
+                    help='NAME=VALUE for the compile command (BOX2D3: the Box2D v3 sources)')
     ap.add_argument('--expect-file', action='append', default=[],
                     help='an extension repro must also write (e.g. .md)')
     a = ap.parse_args()
@@ -133,9 +135,10 @@ def main():
         for ext in a.expect_file:
             if not (work / (s + ext)).is_file():
                 fail(f'{case}: repro wrote no {s}{ext}')
-        if 'gjk2d' in re.sub(r'(//|#).*|<!--.*?-->', '', programs[0].read_text()).replace('gjk-validate', ''):
+        code = re.sub(r'/\*.*?\*/|""".*?"""', '', programs[0].read_text(), flags=re.S)
+        if 'gjk2d' in re.sub(r'(//|#).*', '', code).replace('gjk-validate', ''):
             fail(f'{programs[0].name}: gjk2d appears in its code (only its comments may name it)')
-        out = program_output(programs[0], a.node_path)
+        out = program_output(programs[0], a.node_path, dict(e.split('=', 1) for e in a.env))
         got = printed_answer(out, programs[0].name)
         want = {'distance': [number(v['distance'])], 'pointA': [number(x) for x in v['pointA']],
                 'pointB': [number(x) for x in v['pointB']]}
