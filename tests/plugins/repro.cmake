@@ -42,3 +42,15 @@ foreach(entry IN LISTS _repros)
                    --work ${_ci}/repro-${shown} ${more})
   set_tests_properties("${name}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
 endforeach()
+# What repro refuses, each with exit 2 and one line (docs/validate-your-gjk.md, "Exit codes"): a
+# user's plugin, which has no template, and one of gjk2d's own variants.
+add_test(NAME "plugins: repro: a plugin without a repro template is refused (exit 2)"
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gjk-validate> -DEXPECT=2
+                 "-DARGS=repro|--family|random:5|random/1|--no-default-plugins|--plugin|$<TARGET_FILE:test_plugin_good-but-quirky>|--variants|test-good-but-quirky|--out|${_ci}/repro-refused"
+                 "-DEXPECT_STDERR=has no repro template"
+                 -P ${PROJECT_SOURCE_DIR}/tests/validation/expect_exit.cmake)
+add_test(NAME "plugins: repro: one of gjk2d's own variants is refused (exit 2)"
+         COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gjk-validate> -DEXPECT=2
+                 "-DARGS=repro|--family|random:5|random/1|--variants|double|--out|${_ci}/repro-refused"
+                 "-DEXPECT_STDERR=is one of gjk2d's own variants"
+                 -P ${PROJECT_SOURCE_DIR}/tests/validation/expect_exit.cmake)
