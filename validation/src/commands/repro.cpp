@@ -273,6 +273,12 @@ int reproCommand(Options& o, const CommandLine& line)
         throw InputError(fmt::format("repro: case '{}' is rejected: {}", excerpt(found.c.name),
                                      outcome.rejected));
     const Json detail = caseDetail(found.c, found.family, ctx, outcome, "repro");
+    // A case the variant does not take (a refusal, or inputs its scalar type cannot hold) has no
+    // answer to reproduce; a crash, a hang or an error status has one worth a program.
+    if (const Json& a = detail["variants"][chosen.v->name]; a.contains("skipped"))
+        throw InputError(fmt::format("repro: {} does not take case '{}' ({}): nothing to reproduce",
+                                     chosen.v->name, excerpt(found.c.name),
+                                     a["skipped"].get<std::string>()));
     const std::string stem = fileStem(chosen.v->name, found.c.name);
     // Every file filled before any is written: a bad template writes nothing.
     std::vector<std::pair<std::string, std::string>> files;
