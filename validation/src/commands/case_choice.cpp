@@ -110,8 +110,8 @@ FoundCase findCase(const CaseChoice& o, const std::string& file, std::uint64_t s
             "{}: no case named '{}' in {}; it has {}", command, excerpt(o.name),
             o.family.empty() ? shownPath(file) : "--family " + o.family, someNames(names)));
     if (!found.rejected.empty())
-        throw InputError(fmt::format("{}: case '{}' is rejected: {}", command, excerpt(o.name),
-                                     found.rejected));
+        throw InputError(
+            fmt::format("{}: case '{}' is rejected: {}", command, excerpt(o.name), found.rejected));
     return found;
 }
 

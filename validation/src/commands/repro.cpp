@@ -101,8 +101,8 @@ Chosen chooseVariant(const Options& o)
 std::string literal(double v, Scalar s, bool cFamily, const char* what)
 {
     if (!std::isfinite(v) || (s == Scalar::Float && !std::isfinite(float(v))))
-        throw InputError(fmt::format("repro: {} is {} in {}: no program can be given it", what,
-                                     v, scalarName(s)));
+        throw InputError(fmt::format("repro: {} is {} in {}: no program can be given it", what, v,
+                                     scalarName(s)));
     std::string t = s == Scalar::Float ? fmt::format("{}", float(v)) : fmt::format("{}", v);
     if (t.find_first_of(".e") == std::string::npos)
         t += ".0"; // "1" -> "1.0" (a float literal in C), "-0" -> "-0.0" (keeps the sign)
@@ -166,13 +166,15 @@ Values valuesFor(const FoundRepro& t, const VariantInfo& v, const Case& c, const
     shapeValues(out, "A", p.ad, p.xad, p.rad, v.scalar, cFamily);
     shapeValues(out, "B", p.bd, p.xbd, p.rbd, v.scalar, cFamily);
     const Json& a = detail["variants"][v.name];
-    out["REPORT_STATUS"] = a.contains("skipped")         ? "skipped: " + a["skipped"].get<std::string>()
+    out["REPORT_STATUS"] = a.contains("skipped") ? "skipped: " + a["skipped"].get<std::string>()
                            : a.contains("plugin_status") ? a["plugin_status"].get<std::string>()
                                                          : "ok";
     const bool answered = out["REPORT_STATUS"] == "ok";
     out["REPORT_DISTANCE"] = answered ? shown(a["distance"]) : "none";
-    for (const auto& [key, field, i] : {std::tuple{"REPORT_AX", "pointA", 0}, {"REPORT_AY", "pointA", 1},
-                                        {"REPORT_BX", "pointB", 0}, {"REPORT_BY", "pointB", 1}})
+    for (const auto& [key, field, i] : {std::tuple{"REPORT_AX", "pointA", 0},
+                                        {"REPORT_AY", "pointA", 1},
+                                        {"REPORT_BX", "pointB", 0},
+                                        {"REPORT_BY", "pointB", 1}})
         out[key] = answered ? shown(a[field][i]) : "none";
     out["REPORT_INVALID"] =
         answered && a["invalid"].is_string() ? a["invalid"].get<std::string>() : "none";

@@ -59,7 +59,8 @@ std::vector<FoundRepro> reproTemplates(const std::string& pluginPath, const std:
     const std::string file = std::filesystem::path(pluginPath).filename().string();
     std::vector<FoundRepro> found;
     std::error_code ec;
-    // Only the shipped file itself: a user's plugin of the same file name elsewhere is not the peer.
+    // Only the shipped file itself: a user's plugin of the same file name elsewhere is not the
+    // peer.
     bool shipped = false;
     for (const ShippedPeer& peer : kShippedPeers)
         if (file == peer.file)

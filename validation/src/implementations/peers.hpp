@@ -44,10 +44,10 @@ std::vector<std::string> shippedPluginPaths(bool peers = false);
 // peer.txt `repro` line (docs/code-map.md, "A peer is one folder").
 struct ShippedRepro
 {
-    const char* file;     // the plugin file whose variants it serves
-    const char* variant;  // a variant's name, or "*": every variant of `file`
-    const char* path;     // "<folder>/<template>.in", beside the plugins
-    const char* values;   // "NAME=VALUE NAME=VALUE": placeholders of its own, or ""
+    const char* file;    // the plugin file whose variants it serves
+    const char* variant; // a variant's name, or "*": every variant of `file`
+    const char* path;    // "<folder>/<template>.in", beside the plugins
+    const char* values;  // "NAME=VALUE NAME=VALUE": placeholders of its own, or ""
 };
 // Every `repro` line of every validation/plugins/*/peer.txt, in the folders' order by name.
 std::span<const ShippedRepro> shippedRepros();
