@@ -13,7 +13,7 @@ endif()
 # variant|family|cases|what the cases are|more arguments (a variant ending in * is the first
 # listed variant of that prefix: GEOS's name carries the installed GEOS version)
 set(_repros
-    "planck-1.5.0|random:2000|random/1,random/2|random/1 (its overlap points) and random/2, and the bug report|--expect-file|.md"
+    "planck-1.5.0|random:2000|random/1,random/2|random/1 (its overlap points) and random/2, and the bug report on the overlap|--expect-on-overlap|.md"
     "fcl-0.7-libccd|random:2000|random/1,random/2|random/1 and random/2"
     "fcl-0.7-indep|random:2000|random/1,random/2|random/1 and random/2"
     "box2d-2.4.1|random:2000|random/1,random/2|random/1 and random/2"

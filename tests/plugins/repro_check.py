@@ -8,7 +8,7 @@ hold an overlapping and a separated one (by the exact truth), so that the check 
 one kind.
 
   repro_check.py --exe GJK_VALIDATE --variant NAME|PREFIX* --family SPEC --seed S --cases a,b
-                 --work DIR [--node-path DIR] [--expect-file EXT]...
+                 --work DIR [--node-path DIR] [--env NAME=VALUE]... [--expect-on-overlap EXT]...
 
 Exit status: 0 pass, 1 fail, 77 the variant is not built here (gjk-validate list --peers does
 not list it): CTest SKIP_RETURN_CODE; with GJK2D_REQUIRE_ALL=1 (CI) a skip is a failure.
@@ -102,8 +102,9 @@ def main():
     ap.add_argument('--node-path', default='', help="the project's planck: build/npm/planck/node_modules")
     ap.add_argument('--env', action='append', default=[],
                     help='NAME=VALUE for the compile command (BOX2D3: the Box2D v3 sources)')
-    ap.add_argument('--expect-file', action='append', default=[],
-                    help='an extension repro must also write (e.g. .md)')
+    ap.add_argument('--expect-on-overlap', action='append', default=[],
+                    help='an extension repro must also write on an overlapping case, and only there '
+                         "(planck's .md bug report)")
     a = ap.parse_args()
 
     listed = subprocess.run([a.exe, 'list', '--peers'], capture_output=True, text=True).stdout
@@ -132,9 +133,10 @@ def main():
         programs = [p for p in work.iterdir() if p.stem == s and p.suffix in ('.c', '.cpp', '.js', '.py')]
         if len(programs) != 1:
             fail(f'{case}: expected one program {s}.*, found {[p.name for p in programs]}')
-        for ext in a.expect_file:
-            if not (work / (s + ext)).is_file():
-                fail(f'{case}: repro wrote no {s}{ext}')
+        for ext in a.expect_on_overlap:
+            if (work / (s + ext)).is_file() != truth['overlap']:
+                fail(f'{case}: repro {"wrote no" if truth["overlap"] else "wrote a"} {s}{ext} on '
+                     f'{"an overlapping" if truth["overlap"] else "a separated"} case')
         code = re.sub(r'/\*.*?\*/|""".*?"""', '', programs[0].read_text(), flags=re.S)
         if 'gjk2d' in re.sub(r'(//|#).*', '', code).replace('gjk-validate', ''):
             fail(f'{programs[0].name}: gjk2d appears in its code (only its comments may name it)')

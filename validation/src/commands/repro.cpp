@@ -17,8 +17,10 @@
 //                                                the variant's answer as gjk-validate reports it
 //   EXACT_DISTANCE EXACT_OVERLAP EXACT_SQUARED EXACT_AX EXACT_AY EXACT_BX EXACT_BY
 //                                                the exact truth of the inputs the variant is given
-// and the NAME=VALUE pairs of the template's peer.txt line. An unknown placeholder in a shipped
-// template is our bug (std::logic_error, exit 4).
+// and the NAME=VALUE pairs of the template's peer.txt line. One name is the command's own:
+// WHEN=overlap writes the template only for a case whose shapes overlap (planck's bug report is
+// about its overlap answers). An unknown placeholder in a shipped template is our bug
+// (std::logic_error, exit 4).
 //
 // Numbers: the shortest decimal that reads back as the same double (or float, for a float
 // variant: the case's doubles rounded to float, as gjk-validate hands them to it). Every reader
@@ -287,9 +289,15 @@ int reproCommand(Options& o, const CommandLine& line)
     for (const FoundRepro& t : chosen.templates)
     {
         const std::string name = stem + extensionOf(t.line->path);
-        files.emplace_back(name, fill(readTemplate(t.path),
-                                      valuesFor(t, *chosen.v, found.c, detail, name, line),
-                                      t.line->path));
+        const Values values = valuesFor(t, *chosen.v, found.c, detail, name, line);
+        if (const auto when = values.find("WHEN");
+            when != values.end() && when->second == "overlap" && values.at("EXACT_OVERLAP") != "true")
+        {
+            std::printf("repro: %s is written for overlapping cases only: not for this one\n",
+                        name.c_str());
+            continue;
+        }
+        files.emplace_back(name, fill(readTemplate(t.path), values, t.line->path));
     }
     for (const auto& [name, text] : files)
         writeOutput("repro", (fs::path(o.outDir) / name).string(), [&text] { return text; });
