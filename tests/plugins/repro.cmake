@@ -16,12 +16,15 @@ set(_repros
     "planck-1.5.0|random:2000|random/1,random/2|random/1 (its overlap points) and random/2, and the bug report on the overlap|--expect-on-overlap|.md"
     "fcl-0.7-libccd|random:2000|random/1,random/2|random/1 and random/2"
     "fcl-0.7-indep|random:2000|random/1,random/2|random/1 and random/2"
+    "fcl-0.7-indep|hard/scale-sweep:172|hard/scale-sweep/57-vertex-edge-gap-x1e-05,hard/scale-sweep/71-overlapping-x0.00037|hard/scale-sweep/57 and hard/scale-sweep/71, an overlap"
     "box2d-2.4.1|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-double|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-float|random:2000|random/1,random/2|random/1 and random/2"
     "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2${_box2d3_env}"
     "geos-*|random:2000|random/1,random/2|random/1 and random/2")
+set(_k 0)
 foreach(entry IN LISTS _repros)
+  math(EXPR _k "${_k} + 1")
   string(REPLACE "|" ";" entry "${entry}")
   list(GET entry 0 variant)
   list(GET entry 1 family)
@@ -39,7 +42,7 @@ foreach(entry IN LISTS _repros)
            COMMAND Python3::Interpreter ${_repro} --exe $<TARGET_FILE:gjk-validate>
                    --variant ${variant} --family ${family} --cases ${cases}
                    --node-path ${PROJECT_SOURCE_DIR}/build/npm/planck/node_modules
-                   --work ${_ci}/repro-${shown} ${more})
+                   --work ${_ci}/repro-${_k}-${shown} ${more})
   set_tests_properties("${name}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
 endforeach()
 # What repro refuses, each with exit 2 and one line (docs/validate-your-gjk.md, "Exit codes"): a
