@@ -290,8 +290,9 @@ int reproCommand(Options& o, const CommandLine& line)
     {
         const std::string name = stem + extensionOf(t.line->path);
         const Values values = valuesFor(t, *chosen.v, found.c, detail, name, line);
-        if (const auto when = values.find("WHEN");
-            when != values.end() && when->second == "overlap" && values.at("EXACT_OVERLAP") != "true")
+        if (const auto when = values.find("WHEN"); when != values.end() &&
+                                                   when->second == "overlap" &&
+                                                   values.at("EXACT_OVERLAP") != "true")
         {
             std::printf("repro: %s is written for overlapping cases only: not for this one\n",
                         name.c_str());
