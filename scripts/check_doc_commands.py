@@ -98,7 +98,7 @@ OPTIONAL = [
      "name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE (README.md, \"Box2D v3\")"),
 ]
 
-SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare", "merge"]
+SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare", "merge", "repro"]
 # A placeholder: <...>, [...], A|B, "...", or one of the upper-case names the docs use for one.
 PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\.\.\.|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
                          r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")

@@ -68,6 +68,7 @@ Subcommand addSearch(CLI::App& app, const CommandLine& line);
 Subcommand addList(CLI::App& app, const CommandLine& line);
 Subcommand addCompare(CLI::App& app, const CommandLine& line);
 Subcommand addMerge(CLI::App& app, const CommandLine& line);
+Subcommand addRepro(CLI::App& app, const CommandLine& line);
 
 // Every argument must be valid UTF-8: paths, names and comments are copied into JSON outputs,
 // which hold only UTF-8.

@@ -19,8 +19,9 @@ int runCommandLine(const CommandLine& line)
     app.footer(exitCodesHelp());
     app.set_help_all_flag("--help-all", "help for every subcommand");
     const Subcommand subcommands[] = {
-        addRun(app, line),    addGenerate(app, line), addExplain(app, line), addBench(app, line),
-        addSearch(app, line), addList(app, line),     addCompare(app, line), addMerge(app, line)};
+        addRun(app, line),     addGenerate(app, line), addExplain(app, line),
+        addBench(app, line),   addSearch(app, line),   addList(app, line),
+        addCompare(app, line), addMerge(app, line),    addRepro(app, line)};
     try
     {
         app.parse(line.argc, line.argv);

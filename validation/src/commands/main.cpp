@@ -7,6 +7,7 @@
 //   list      the families and variants
 //   compare   two reports: the statistics that got worse or better, exit 1 on a regression
 //   merge     the shards of a campaign (run --shard I/N) into its report
+//   repro     one case and one peer variant as a standalone program in the peer's language
 // The parsing and the dispatch are the commands layer's (runCommandLine, commands/dispatch.cpp,
 // shared with the Python package's gjk2d.validate); main() reports every failure.
 #include "commands/command_line.hpp"

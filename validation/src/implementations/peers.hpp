@@ -40,6 +40,29 @@ std::string shippedPeerPath(const ShippedPeer& peer);
 // one when `peers` (run --peers).
 std::vector<std::string> shippedPluginPaths(bool peers = false);
 
+// A template `gjk-validate repro` fills for a shipped peer's variant (commands/repro.cpp): a
+// peer.txt `repro` line (docs/code-map.md, "A peer is one folder").
+struct ShippedRepro
+{
+    const char* file;    // the plugin file whose variants it serves
+    const char* variant; // a variant's name, or "*": every variant of `file`
+    const char* path;    // "<folder>/<template>.in", beside the plugins
+    const char* values;  // "NAME=VALUE NAME=VALUE": placeholders of its own, or ""
+};
+// Every `repro` line of every validation/plugins/*/peer.txt, in the folders' order by name.
+std::span<const ShippedRepro> shippedRepros();
+// The templates for the variant `name` of the plugin file `pluginPath` (a shipped peer's file, the
+// one shippedPeerPath finds),
+// in their lines' order, each with the path where it is found: beside the plugins (the build
+// tree's <dir>/plugins/ or the install's GJK2D_INSTALL_PLUGIN_DIR, as shippedPeerPath finds them);
+// empty when none is (a user's own plugin, or a template missing from the install).
+struct FoundRepro
+{
+    const ShippedRepro* line;
+    std::string path;
+};
+std::vector<FoundRepro> reproTemplates(const std::string& pluginPath, const std::string& name);
+
 struct VariantInfo;
 // A report's context.plugins (docs/report-schema.md): every plugin file whose variants are among
 // `variants`, in their order, with its kind, its library (name and version, as the plugin gives
