@@ -335,7 +335,12 @@ TEST_CASE("an interrupted run resumes from its checkpoint to the uninterrupted r
     CHECK_THROWS_WITH(run(resumed),
                       Catch::EndsWith("checkpoint.json: a gjk-checkpoint/1 file, written by gjk2d "
                                       "up to ff6aac0 (which reads it); this release writes "
-                                      "gjk-checkpoint/2: run again without --resume"));
+                                      "gjk-checkpoint/3: run again without --resume"));
+    std::ofstream(c.checkpointDir + "/checkpoint.json") << R"({"schema": "gjk-checkpoint/2"})";
+    CHECK_THROWS_WITH(run(resumed),
+                      Catch::EndsWith("checkpoint.json: a gjk-checkpoint/2 file, written by gjk2d "
+                                      "up to ff7916d (which reads it); this release writes "
+                                      "gjk-checkpoint/3: run again without --resume"));
 }
 
 TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
@@ -368,11 +373,15 @@ TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated 
     CHECK(refusal({s0}) == "merge: shard 1/2 is missing");
     CHECK(refusal({s0, s0}) == "b/shard.json: shard 0/2 is given twice");
     CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) ==
-          "b/shard.json: not a gjk-shard/2 file");
+          "b/shard.json: not a gjk-shard/3 file");
     // An earlier version of the state: refused, naming the last revision that wrote (and reads) it.
     CHECK(refusal({s0, Json{{"schema", "gjk-shard/1"}}}) ==
           "b/shard.json: a gjk-shard/1 file, written by gjk2d up to ff6aac0 (which reads it); this "
-          "release writes gjk-shard/2: run the shards again with it");
+          "release writes gjk-shard/3: run the shards again with it");
+    // Version 2 (before the contract verdict) likewise, naming its last writer.
+    CHECK(refusal({s0, Json{{"schema", "gjk-shard/2"}}}) ==
+          "b/shard.json: a gjk-shard/2 file, written by gjk2d up to ff7916d (which reads it); this "
+          "release writes gjk-shard/3: run the shards again with it");
 }
 
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")

@@ -152,7 +152,12 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
                 &s.invalid,
                 &s.invalidReasons[0],
                 &s.invalidReasons[1],
-                &s.invalidReasons[2]};
+                &s.invalidReasons[2],
+                &s.contractViolations,
+                &s.beyondBoundKeepingContract,
+                &s.depthUnjudged,
+                &s.violationReasons[0],
+                &s.violationReasons[std::size_t(kViolationReasons) - 1]};
     };
     Stats a, b;
     const auto ca = counters(a), cb = counters(b);
@@ -352,6 +357,9 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "hung",
                                            "witness_points",
                                            "witness_exact",
+                                           "contract_violations",
+                                           "beyond_bound_keeping_contract",
+                                           "depth_unjudged",
                                            "failure_rate_upper95",
                                            "errors",
                                            "iterations",
@@ -382,7 +390,7 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
 
 TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
 {
-    // StatsState (docs/report-schema.md, gjk-shard/2): one key per table, each table's rows in
+    // StatsState (docs/report-schema.md, gjk-shard/3): one key per table, each table's rows in
     // their order, by their report names.
     Stats s;
     s.hasPaths = true;
@@ -395,7 +403,8 @@ TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
         return k;
     };
     CHECK(keys(state) == std::vector<std::string>{"counts", "flags", "histograms", "paths",
-                                                  "invalid_reasons", "stops", "iterations"});
+                                                  "invalid_reasons", "violation_reasons",
+                                                  "worst_violation", "stops", "iterations"});
     std::vector<std::string> counts, flags, histograms;
     for (const CountField& f : kCountFields)
         counts.push_back(f.name);
