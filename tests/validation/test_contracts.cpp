@@ -277,7 +277,7 @@ TEST_CASE("midpoint: one point, within dc/2 + W of both cores", "[contract]")
     }
 }
 
-TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth; the depth not judged",
+TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth, which is not judged yet",
           "[contract]")
 {
     // Squares [0, 2]^2 and [1, 3]^2: the depth is 1 (along x or y). A's point (2, 1.5) and B's
