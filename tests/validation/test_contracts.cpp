@@ -71,9 +71,10 @@ Contract declared(Overlap kind, double abs = -1, double rel = -1)
     return c;
 }
 
-// The answer (d, pA, pB) of `im` on case c with the exact truth `truth`, gjk2d's bounds set by
-// hand (bound 2^-30, witness bound 2^-2), judged: judge(), then phase 3 (the witness points'
-// exact distances to the case's shapes, and the contract verdict).
+// The answer (d, pA, pB) of `im` on case c with the exact truth `truth` (by hand: the case's own,
+// or one that no case could give), gjk2d's bounds set by hand (bound 2^-30, witness bound 2^-2),
+// judged: judge(), then phase 3 (the witness points' exact distances to the case's shapes, and the
+// contract verdict).
 VariantOutcome judged(const Implementation& im, const Case& c, const exact::Result& truth, double d,
                       std::array<double, 2> pA, std::array<double, 2> pB,
                       PluginStatus status = PluginStatus::Ok)
@@ -95,6 +96,8 @@ VariantOutcome judged(const Implementation& im, const Case& c, const exact::Resu
     EvalContext ctx;
     ctx.variants = {&im.info};
     CaseOutcome o;
+    computeTruth(c, ctx, o); // the case's prepared shapes, which phase 3 reads, as in a campaign
+    REQUIRE(o.rejected.empty());
     o.variants = {v};
     checkWitnesses(c, ctx, o);
     return o.variants[0];

@@ -1326,7 +1326,7 @@
       h('span', {class: 'muted small'}, fmtInt(f.cases) + ' cases'),
       passBadge(f.pass),
       judgedFails ? h('span', {class: 'bad small'}, plural(judgedFails, 'failure')) : null,
-      compFails ? h('span', {class: 'small muted'}, plural(compFails, 'failure') + ' in comparison variants') : null,
+      compFails ? h('span', {class: 'small muted'}, plural(compFails, 'contract violation') + ' in comparison variants (not judged)') : null,
       wrong ? h('span', {class: 'small muted'}, fmtInt(wrong) + ' misclassified') : null,
       makeupBad ? h('span', {class: 'bad small'}, 'make-up check failed') : null)));
     if (Array.isArray(f.makeup) && f.makeup.length) {

@@ -139,17 +139,28 @@ void judgePenetration(VariantOutcome& v)
     v.depthUnjudged = true;
 }
 
-// The cores (the shapes at radius 0) of a case on the exact side, prepared when a midpoint answer
-// on overlapping shapes first needs them: each point's distance to both, and their distance.
+// The cores (the shapes at radius 0) of a case on the exact side, for a midpoint answer on
+// overlapping shapes: each point's distance to both, and their distance. Without radii the shapes
+// are their cores and overlap (dc = 0): computeTruth's prepared shapes serve; else the cores are
+// prepared here, once per case and input type, and their exact distance computed.
 class Cores
 {
   public:
-    Cores(const Case& c, bool isFloat)
+    Cores(const Case& c, bool isFloat, const TruthShapes* truth)
     {
+        const int t = isFloat ? 1 : 0;
         exact::Shape a = toExact(c.a, isFloat), b = toExact(c.b, isFloat);
+        if (a.radius == 0 && b.radius == 0 && truth && truth->a[t] && truth->b[t])
+        {
+            a_ = &*truth->a[t];
+            b_ = &*truth->b[t];
+            return;
+        }
         a.radius = b.radius = 0;
-        a_.emplace(std::move(a), "shape A");
-        b_.emplace(std::move(b), "shape B");
+        ownA_.emplace(std::move(a), "shape A");
+        ownB_.emplace(std::move(b), "shape B");
+        a_ = &*ownA_;
+        b_ = &*ownB_;
         distance_ = exact::distance(*a_, *b_).distance;
     }
     std::array<double, 2> to(const std::array<double, 2>& p) const
@@ -160,7 +171,8 @@ class Cores
     double distance() const { return distance_; }
 
   private:
-    std::optional<exact::PreparedShape> a_, b_;
+    std::optional<exact::PreparedShape> ownA_, ownB_;
+    const exact::PreparedShape *a_ = nullptr, *b_ = nullptr;
     double distance_ = 0;
 };
 
@@ -231,10 +243,10 @@ void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         const bool isFloat = vi.scalar == Scalar::Float;
         auto getCores = [&]() -> const Cores&
         {
-            std::optional<Cores>& k = cores[isFloat ? 1 : 0];
-            if (!k)
-                k.emplace(c, isFloat);
-            return *k;
+            std::optional<Cores>& slot = cores[isFloat ? 1 : 0];
+            if (!slot)
+                slot.emplace(c, isFloat, out.shapes.get());
+            return *slot;
         };
         judgeDeclared(v, contract, getCores);
     }
