@@ -892,7 +892,7 @@
     return h('div', {class: 'legend heat-legend'},
       kinds.bound ? bar(BOUND_RAMP, BOUND_DECADES, 'error / bound', true) : null,
       kinds.norm ? bar(NORM_RAMP, NORM_DECADES, 'error / (u·R), no bound', false) : null,
-      h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures (red frame: judged)'),
+      h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures or contract violations (red frame: judged)'),
       h('span', {class: 'legend-item'}, glyph({d: 'M13.5 1h7.5v7.5Z', fill: '#111'}), 'false overlap or separation'),
       h('span', {class: 'legend-item'}, glyph(null, '#ece9e3'), 'not run (no judged case: refused, skipped or absent)'));
   }
@@ -915,12 +915,15 @@
       });
       if (!rows.length) return;
       if (family !== ALL_FAMILIES) { rows[0].variant = n; items.push(rows[0]); return; }
+      // A family where the variant fails (gjk2d's own contract) or breaks its declared contract.
+      var broke = function (r) { return ownContract(n) ? r.st.pass === false : violationsOf(r.st) > 0; };
       var med = function (xs) { xs = xs.filter(isFinite).sort(function (a, b) { return a - b; }); return xs.length ? xs[(xs.length - 1) >> 1] : NaN; };
       var worst = rows.reduce(function (w, r) { return !w || (isFinite(r.max) && !(r.max <= w.max)) ? r : w; }, null);
       var nss = rows.map(function (r) { return r.ns; });
       items.push({variant: n, family: rows.length + ' families', ns: med(nss), nsLo: Math.min.apply(null, nss), nsHi: Math.max.apply(null, nss),
         p99: med(rows.map(function (r) { return r.p99; })), max: worst.max, worstFamily: worst.family,
-        fails: rows.filter(function (r) { return r.st.pass === false; }).length, st: {pass: rows.every(function (r) { return r.st.pass !== false; })}});
+        fails: rows.filter(broke).length, st: {pass: !rows.some(broke), failures: rows.reduce(function (a, r) { return a + (isNum(r.st.failures) ? num(r.st.failures) : 0); }, 0),
+          contract_violations: {count: rows.reduce(function (a, r) { return a + violationsOf(r.st); }, 0)}}});
     });
     return items;
   }
@@ -973,7 +976,7 @@
       judged.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'judged'), judged.map(item)) : null,
       comp.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'comparison'), comp.map(item)) : null,
       h('div', {class: 'legend small'}, legendItem('#bbb', 'p99 error (the variant\'s marker)', 'circle'), legendItem('#888', 'max error', 'cap'),
-        legendItem('#bbb', 'fails (red outline)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
+        legendItem('#bbb', 'fails or breaks its contract (red outline)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
   }
 
   function speedPlot(report, family) {
@@ -1036,7 +1039,7 @@
       var own = ownContract(it.variant), failing = own ? it.st.pass === false : violationsOf(it.st) > 0;
       var tip = (all ? 'all families' : it.family) + ' / ' + it.variant + (judged ? '' : ' (comparison, not judged)') + '\n' +
         (all ? fmt(it.ns) + ' ns per query (median over ' + it.family + '; ' + fmt(it.nsLo) + ' – ' + fmt(it.nsHi) + ')\nnormalised error: median p99 ' + fmt(it.p99) + ', worst max ' + fmt(it.max) + ' (' + it.worstFamily + ')' +
-          (it.fails ? '\nfails in ' + plural(it.fails, 'family', 'families') : '')
+          (it.fails ? (own ? '\nfails in ' : '\nbreaks its contract in ') + plural(it.fails, 'family', 'families') : '')
         : fmt(it.ns) + ' ns per query' + (has(it.st.ratio_to_baseline) ? ' (' + fmt(it.st.ratio_to_baseline) + '× baseline)' : '') +
           '\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
           (failing ? (!own ? '\nbreaks its contract' + (judged ? ' (' : ', not judged (') + plural(violationsOf(it.st), 'contract violation') + ')'
@@ -1137,7 +1140,9 @@
   // gjk2d's bound that keep it.
   function violationCell(st, vn, tip, failDetail) {
     var n = violationsOf(st), own = ownContract(vn);
-    var below = own ? failDetail : violationReasons(st).concat(outsideBoundOf(st) > 0 ? [fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound'] : []);
+    var unjudged = st && isNum(st.depth_unjudged) ? num(st.depth_unjudged) : 0;
+    var below = own ? failDetail : violationReasons(st).concat(outsideBoundOf(st) > 0 ? [fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound'] : [],
+      unjudged > 0 ? [fmtInt(unjudged) + ' penetration depth' + (unjudged === 1 ? '' : 's') + ' not judged yet'] : []);
     return h('td', {class: 'num' + (n > 0 && isJudged(vn) ? ' bad' : ''), title: (own ? tip : below).join(', ') || null},
       fmtInt(n), below.length ? h('div', {class: 'small'}, below.join(', ')) : null);
   }

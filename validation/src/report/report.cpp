@@ -205,6 +205,11 @@ std::string contractsMarkdown(const Json& r)
         const Json& c = v["contract"];
         const Json& w =
             v.contains("worst_contract_violation") ? v["worst_contract_violation"] : Json(nullptr);
+        std::uint64_t unjudged = 0; // penetration depths not judged yet, over the families
+        for (const auto& f : r["families"])
+            if (f["variants"].contains(v["name"].get<std::string>()))
+                unjudged += f["variants"][v["name"].get<std::string>()].value("depth_unjudged",
+                                                                              std::uint64_t(0));
         s += fmt::format("- **{}**: on overlap `{}` ({}); judged by {}; worst contract violation: "
                          "{}\n",
                          v["name"].get<std::string>(), c["overlap"].get<std::string>(),
@@ -215,6 +220,11 @@ std::string contractsMarkdown(const Json& r)
                                            w["family"].get<std::string>(),
                                            w["reason"].get<std::string>(), g(w["excess"]))
                              : "none");
+        if (unjudged > 0)
+            s +=
+                fmt::format("  - {} penetration answer(s) keep every clause judged; their depth is "
+                            "not judged yet (the exact penetration depth is issue 51's)\n",
+                            unjudged);
     }
     return s.empty() ? s : "\n### Contracts\n\n" + s;
 }
