@@ -21,7 +21,10 @@ So report.json's family x variant has contract_violations {"count": 2, "reasons"
 gjk2d's own rules (failures) count 5 (three negative distances, two beyond the bound). variants[]
 gives the contract (own false, overlap zero, tolerance abs 1e-6, rel null) and the worst violation
 with its family. The run exits 0 (a comparison variant); under --judge toy-contract its two
-violations fail it (exit 1). The terminal says "breaks its contract", never "fails", for it.
+violations fail it (exit 1). The terminal says "breaks its contract", never "fails", for it;
+`explain` gives an answer's class, reason and excess, and what it was held to (d4: distance within
+T = 1e-6, points within W = max(gjk2d's witness bound, a few 1e-14 here, T) = 1e-6); `compare`
+gives contract_violations a row of its own.
 Exit 0 when every check holds; else a message and exit 1.
 """
 import argparse
@@ -107,6 +110,26 @@ def main():
     for line in stdout.splitlines():
         check(not ("toy-contract" in line and "fail" in line.lower()),
               "the terminal says a comparison variant with a contract fails: " + line)
+    # explain: the answer's class, reason and excess, and what it was held to (judgedBy).
+    p = subprocess.run([a.exe, "explain", a.cases, "contract/d4", "--variants", "double,toy-contract",
+                        "--no-default-plugins", "--plugin", a.adapter], capture_output=True, text=True)
+    check(p.returncode == 0, "explain exited {}: {}".format(p.returncode, p.stderr[-2000:]))
+    for want in ("** BREAKS ITS CONTRACT **", "contract: breaks its contract (distance, 1000 times",
+                 "held to: distance within 1e-06, points within 1e-06 (its stated tolerance: abs "
+                 "1e-06, rel none", "contract: keeps its contract, within gjk2d's bound"):
+        check(want in p.stdout, "explain does not say {!r}:\n{}".format(want, p.stdout))
+    check("FAILED" not in p.stdout, "explain says FAILED:\n" + p.stdout)
+    # compare: one more violation is a row of its own, with the legend (it gates with --all-variants).
+    worse = json.loads(json.dumps(r))
+    worse["families"][0]["variants"]["toy-contract"]["contract_violations"]["count"] = 3
+    path = os.path.join(a.work, "worse.json")
+    with open(path, "w") as f:
+        json.dump(worse, f)
+    p = subprocess.run([a.exe, "compare", os.path.join(a.work, "report"), path, "--all-variants"],
+                       capture_output=True, text=True)
+    check(p.returncode == 1, "compare exited {}: {}".format(p.returncode, p.stdout + p.stderr))
+    check("contract_violations" in p.stdout and "break their implementation's own contract" in
+          p.stdout, "compare does not show the contract row and legend:\n" + p.stdout)
     # Judged: its violations decide the exit code.
     r, _ = campaign(a, os.path.join(a.work, "judged"), ["--judge", "toy-contract"], expect=1)
     check(r["families"][0]["pass"] is False, "judged: the family passes")
