@@ -583,34 +583,46 @@ std::string witnessFallbackLine(const Json& r)
 }
 } // namespace
 
-std::string terminalSummary(const Json& r)
+namespace
 {
-    std::string s;
+// A line per family x variant that failed or misclassified (gjk2d's own contract), or breaks its
+// declared contract or is outside gjk2d's bound keeping it, and per failed make-up check; `pairs`
+// counts the family x variant pairs.
+std::string problemLines(const Json& r, std::size_t& pairs)
+{
     const auto judged = judgedMap(r), own = ownMap(r);
-    std::size_t pairs = 0, judgedCount = 0;
     std::string problems;
     for (const auto& f : r["families"])
     {
+        const std::string family = f["name"].get<std::string>();
         for (const auto& [name, st] : f["variants"].items())
         {
             ++pairs;
             if (!isOwn(own, name))
             {
                 if (violations(st) > 0 || outsideBound(st) > 0)
-                    problems += contractLine(f["name"].get<std::string>(), name, st,
-                                             isJudged(judged, name));
+                    problems += contractLine(family, name, st, isJudged(judged, name));
             }
             else if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
                      count(st, "false_separation") > 0)
-                problems +=
-                    problemLine(f["name"].get<std::string>(), name, st, isJudged(judged, name));
+                problems += problemLine(family, name, st, isJudged(judged, name));
         }
         for (const auto& m : f["makeup"])
             if (!m["ok"].get<bool>())
                 problems += fmt::format("  {:<28} make-up check failed: {} = {} not in [{}, {}]\n",
-                                        f["name"].get<std::string>(), m["check"].get<std::string>(),
-                                        g(m["value"]), g(m["min"]), g(m["max"]));
+                                        family, m["check"].get<std::string>(), g(m["value"]),
+                                        g(m["min"]), g(m["max"]));
     }
+    return problems;
+}
+} // namespace
+
+std::string terminalSummary(const Json& r)
+{
+    std::string s;
+    const auto judged = judgedMap(r);
+    std::size_t pairs = 0, judgedCount = 0;
+    const std::string problems = problemLines(r, pairs);
     for (const auto& v : r["variants"])
         judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
     const Json& c = r["context"];
