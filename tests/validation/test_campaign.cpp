@@ -446,6 +446,25 @@ TEST_CASE("comparison variants' failures are counted and shown, not judged", "[c
     const Json& s = r["families"][0]["variants"];
     CHECK(s["double-closest-point"]["failures"].get<int>() >= 1);
     CHECK(s["double-closest-point"]["pass"] == false);
+    // gjk2d's own contract: its violations are exactly its failures, each with a reason, and the
+    // worst names a case of the family (issue 49).
+    for (const char* name : {"double", "double-closest-point"})
+    {
+        INFO(name);
+        const Json& cv = s[name]["contract_violations"];
+        CHECK(cv["count"] == s[name]["failures"]);
+        std::uint64_t reasons = 0;
+        for (const auto& [reason, n] : cv["reasons"].items())
+            reasons += n.get<std::uint64_t>();
+        CHECK(reasons == cv["count"].get<std::uint64_t>());
+        CHECK(s[name]["beyond_bound_keeping_contract"] == 0);
+        CHECK(r["variants"][name == std::string("double") ? 0 : 1]["contract"]["own"] == true);
+    }
+    const Json& worst = r["variants"][1]["worst_contract_violation"];
+    REQUIRE(worst.is_object());
+    CHECK(worst["family"] == r["families"][0]["name"]);
+    CHECK(worst["case"] == s["double-closest-point"]["contract_violations"]["worst"]["case"]);
+    CHECK(r["variants"][0]["worst_contract_violation"].is_null());
     const std::string md = renderMarkdown(r);
     CHECK_THAT(md, Catch::Contains("(not judged)") && Catch::Contains("| comparison |"));
     CHECK_THAT(terminalSummary(r), Catch::Contains("fails (not judged)"));
