@@ -335,7 +335,12 @@ TEST_CASE("an interrupted run resumes from its checkpoint to the uninterrupted r
     CHECK_THROWS_WITH(run(resumed),
                       Catch::EndsWith("checkpoint.json: a gjk-checkpoint/1 file, written by gjk2d "
                                       "up to ff6aac0 (which reads it); this release writes "
-                                      "gjk-checkpoint/2: run again without --resume"));
+                                      "gjk-checkpoint/3: run again without --resume"));
+    std::ofstream(c.checkpointDir + "/checkpoint.json") << R"({"schema": "gjk-checkpoint/2"})";
+    CHECK_THROWS_WITH(run(resumed),
+                      Catch::EndsWith("checkpoint.json: a gjk-checkpoint/2 file, written by gjk2d "
+                                      "up to ff7916d (which reads it); this release writes "
+                                      "gjk-checkpoint/3: run again without --resume"));
 }
 
 TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated shard",
@@ -368,11 +373,15 @@ TEST_CASE("merge refuses shards of different campaigns, a missing or a repeated 
     CHECK(refusal({s0}) == "merge: shard 1/2 is missing");
     CHECK(refusal({s0, s0}) == "b/shard.json: shard 0/2 is given twice");
     CHECK(refusal({s0, Json{{"schema", "gjk-report/1"}}}) ==
-          "b/shard.json: not a gjk-shard/2 file");
+          "b/shard.json: not a gjk-shard/3 file");
     // An earlier version of the state: refused, naming the last revision that wrote (and reads) it.
     CHECK(refusal({s0, Json{{"schema", "gjk-shard/1"}}}) ==
           "b/shard.json: a gjk-shard/1 file, written by gjk2d up to ff6aac0 (which reads it); this "
-          "release writes gjk-shard/2: run the shards again with it");
+          "release writes gjk-shard/3: run the shards again with it");
+    // Version 2 (before the contract verdict) likewise, naming its last writer.
+    CHECK(refusal({s0, Json{{"schema", "gjk-shard/2"}}}) ==
+          "b/shard.json: a gjk-shard/2 file, written by gjk2d up to ff7916d (which reads it); this "
+          "release writes gjk-shard/3: run the shards again with it");
 }
 
 TEST_CASE("rejected cases are reported and the other cases still run", "[campaign]")
@@ -437,6 +446,25 @@ TEST_CASE("comparison variants' failures are counted and shown, not judged", "[c
     const Json& s = r["families"][0]["variants"];
     CHECK(s["double-closest-point"]["failures"].get<int>() >= 1);
     CHECK(s["double-closest-point"]["pass"] == false);
+    // gjk2d's own contract: its violations are exactly its failures, each with a reason, and the
+    // worst names a case of the family (issue 49).
+    for (const char* name : {"double", "double-closest-point"})
+    {
+        INFO(name);
+        const Json& cv = s[name]["contract_violations"];
+        CHECK(cv["count"] == s[name]["failures"]);
+        std::uint64_t reasons = 0;
+        for (const auto& [reason, n] : cv["reasons"].items())
+            reasons += n.get<std::uint64_t>();
+        CHECK(reasons == cv["count"].get<std::uint64_t>());
+        CHECK(s[name]["beyond_bound_keeping_contract"] == 0);
+        CHECK(r["variants"][name == std::string("double") ? 0 : 1]["contract"]["own"] == true);
+    }
+    const Json& worst = r["variants"][1]["worst_contract_violation"];
+    REQUIRE(worst.is_object());
+    CHECK(worst["family"] == r["families"][0]["name"]);
+    CHECK(worst["case"] == s["double-closest-point"]["contract_violations"]["worst"]["case"]);
+    CHECK(r["variants"][0]["worst_contract_violation"].is_null());
     const std::string md = renderMarkdown(r);
     CHECK_THAT(md, Catch::Contains("(not judged)") && Catch::Contains("| comparison |"));
     CHECK_THAT(terminalSummary(r), Catch::Contains("fails (not judged)"));

@@ -5,6 +5,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 using namespace gjkval;
 
@@ -152,7 +154,12 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
                 &s.invalid,
                 &s.invalidReasons[0],
                 &s.invalidReasons[1],
-                &s.invalidReasons[2]};
+                &s.invalidReasons[2],
+                &s.contractViolations,
+                &s.beyondBoundKeepingContract,
+                &s.depthUnjudged,
+                &s.violationReasons[0],
+                &s.violationReasons[std::size_t(kViolationReasons) - 1]};
     };
     Stats a, b;
     const auto ca = counters(a), cb = counters(b);
@@ -303,7 +310,10 @@ TEST_CASE("every row of the Stats tables merges, survives the state and reaches 
                          : f.section == Section::Correct ? j["correct"]
                          : f.section == Section::Truth   ? j["truth"]
                                                          : j;
-        CHECK(at[f.name] == 101 * k++);
+        if (f.member == &Stats::contractViolations) // an object: {"count", "reasons", "worst"}
+            CHECK(at[f.name]["count"] == 101 * k++);
+        else
+            CHECK(at[f.name] == 101 * k++);
     }
     for (const PathField& f : kPathFields)
         CHECK(j["correct"]["paths"][gjk::correctPathName(f.path)] == 101 * k++);
@@ -352,6 +362,9 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "hung",
                                            "witness_points",
                                            "witness_exact",
+                                           "contract_violations",
+                                           "beyond_bound_keeping_contract",
+                                           "depth_unjudged",
                                            "failure_rate_upper95",
                                            "errors",
                                            "iterations",
@@ -382,7 +395,7 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
 
 TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
 {
-    // StatsState (docs/report-schema.md, gjk-shard/2): one key per table, each table's rows in
+    // StatsState (docs/report-schema.md, gjk-shard/3): one key per table, each table's rows in
     // their order, by their report names.
     Stats s;
     s.hasPaths = true;
@@ -395,7 +408,8 @@ TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
         return k;
     };
     CHECK(keys(state) == std::vector<std::string>{"counts", "flags", "histograms", "paths",
-                                                  "invalid_reasons", "stops", "iterations"});
+                                                  "invalid_reasons", "violation_reasons",
+                                                  "worst_violation", "stops", "iterations"});
     std::vector<std::string> counts, flags, histograms;
     for (const CountField& f : kCountFields)
         counts.push_back(f.name);
@@ -414,4 +428,59 @@ TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
     s.hasPaths = false;
     CHECK(s.state()["paths"].is_null());
     CHECK_FALSE(Stats::fromState(s.state()).hasPaths);
+}
+
+TEST_CASE(
+    "the worst contract violation merges exactly: the largest excess, ties to the earlier case",
+    "[stats][merge][contract]")
+{
+    // Three violations in a family of cases 0..9: excess 5 at case 7, +inf (a crash) at case 3,
+    // +inf at case 8 (a tie: the earlier case 3 stays), 2 at case 1. In any split and order the
+    // worst is case 3's crash; without the infinities, case 7's 5.
+    struct V
+    {
+        double excess;
+        std::uint64_t index;
+        Violation why;
+    };
+    const V vs[] = {{5, 7, Violation::Distance},
+                    {INFINITY, 3, Violation::Crashed},
+                    {INFINITY, 8, Violation::Hung},
+                    {2, 1, Violation::WitnessGap}};
+    auto fold = [&](const std::vector<int>& which)
+    {
+        Stats s;
+        for (int i : which)
+        {
+            ++s.contractViolations;
+            ++s.violationReasons[std::size_t(vs[i].why) - 1];
+            s.worstViolation.add(vs[i].excess, "c" + std::to_string(vs[i].index), vs[i].index,
+                                 vs[i].why);
+        }
+        return s;
+    };
+    const Stats all = fold({0, 1, 2, 3});
+    const std::vector<std::pair<std::vector<int>, std::vector<int>>> splits = {{{0, 2}, {1, 3}},
+                                                                               {{2, 3}, {0, 1}}};
+    for (const auto& split : splits)
+    {
+        Stats a = fold(split.first), b = fold(split.second), ab = a, ba = b;
+        ab.merge(b);
+        ba.merge(a);
+        CHECK(ab.toJson() == all.toJson());
+        CHECK(ba.toJson() == all.toJson());
+    }
+    const Json j = all.toJson()["contract_violations"];
+    CHECK(j["count"] == 4);
+    CHECK(j["reasons"] == Json{{"crashed", 1}, {"hung", 1}, {"witness_gap", 1}, {"distance", 1}});
+    CHECK(j["worst"] == Json{{"case", "c3"}, {"reason", "crashed"}, {"excess", "inf"}});
+    CHECK(fold({0, 3}).toJson()["contract_violations"]["worst"]["case"] == "c7");
+    // The state keeps it exactly, +inf and all.
+    const Stats back = Stats::fromState(all.state());
+    CHECK(back.toJson() == all.toJson());
+    CHECK(back.state() == all.state());
+    // None: null, in the report and the state.
+    CHECK(Stats().toJson()["contract_violations"] ==
+          Json{{"count", 0}, {"reasons", Json::object()}, {"worst", nullptr}});
+    CHECK(Stats().state()["worst_violation"].is_null());
 }

@@ -9,6 +9,14 @@ cases are separated squares), less the radii. The misbehaving adapters answer li
 but on the case whose shape B is at x = 4 (the third case of adapter_cases.json): crash exits by
 SIGSEGV, hang sleeps an hour, garbage answers a line that is no answer. pipeline answers like
 good but reads its stdin itself to see the requests the host sent ahead (serve_watching).
+
+contract.py speaks protocol version 2 and declares a contract, as FCL without signed distance
+does: overlap `zero` (it answers -1 and no points on overlap) and an absolute tolerance of 1e-6
+(tests/plugins/contract_check.py, on contract_cases.json). It answers like good, but -1 and points
+(0, 0) on overlap, below 1e-6 apart (within its tolerance) and on B at x = 1.25 (a false
+overlap: 0.25 apart), and adds 5e-7 to the
+distance with B at x = 4 (within its tolerance, beyond gjk2d's bound) and 1e-3 with B at x = 5
+(beyond its tolerance).
 """
 import os
 import select
@@ -75,6 +83,10 @@ def answer(tok, behaviour):
     if bx == 4 and behaviour == "garbage":
         return "hello there " + tok[1]
     d, p, q = distance(a, ra, b, rb)
+    if behaviour == "contract":
+        if d < 1e-6 or bx == 1.25:  # what FCL's tolerance does to a near touch
+            return "ok {} -1.0 0.0 0.0 0.0 0.0 -1".format(tok[1])
+        d += {4: 5e-7, 5: 1e-3}.get(bx, 0.0)
     return "ok {} {!r} {!r} {!r} {!r} {!r} -1".format(tok[1], d, p[0], p[1], q[0], q[1])
 
 
@@ -147,10 +159,14 @@ def main(behaviour):
     if behaviour == "crash-once-more" and start_number() >= 3:
         print("toy adapter: this start fails on purpose", file=sys.stderr)
         sys.exit(3)
-    say("gjk2d-adapter 3" if behaviour == "version" else "gjk2d-adapter 1")
+    version = {"version": 3, "contract": 2}.get(behaviour, 1)
+    say("gjk2d-adapter {}".format(version))
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = "quad" if behaviour == "bad-description" else "double"
     say("implementation toy-{} {} radius 0 vertex-edge brute force".format(behaviour, scalar))
+    if behaviour == "contract":
+        say("contract toy-contract overlap zero tests/plugins/adapters/toy.py, answer()")
+        say("contract toy-contract tolerance 1e-6 none tests/plugins/adapters/toy.py, answer()")
     say("ready")
     print("toy adapter {}: ready".format(behaviour), file=sys.stderr)  # into the plugin's log
     if behaviour == "pipeline":

@@ -431,15 +431,40 @@
   // Comparison variants (report.variants[].judged === false) are reported, never judged.
   var judgedMap = {};
   function isJudged(name) { return judgedMap[name] !== false; }
+  // Implementations with a contract of their own (report.variants[].contract.own === false): their
+  // verdict is that contract's, said as "breaks its contract" and "outside gjk2d's bound", never
+  // "fails" (gjk2d's own rules are a measure for them).
+  var ownMap = {};
+  function ownContract(name) { return ownMap[name] !== false; }
   function readJudged(report) {
     judgedMap = {};
+    ownMap = {};
     (Array.isArray(report.variants) ? report.variants : []).forEach(function (v) {
       if (v && has(v.name) && v.judged === false) judgedMap[String(v.name)] = false;
+      if (v && has(v.name) && v.contract && v.contract.own === false) ownMap[String(v.name)] = false;
     });
+  }
+  // A family x variant's contract violations (gjk2d's own contract: its failures; a report written
+  // before contracts: its failures), the answers outside gjk2d's bound that keep it, and the
+  // violations' reasons as "2 false overlap, ...".
+  function violationsOf(st) {
+    var c = st && st.contract_violations;
+    return c && isNum(c.count) ? num(c.count) : (st && isNum(st.failures) ? num(st.failures) : 0);
+  }
+  function outsideBoundOf(st) { return st && isNum(st.beyond_bound_keeping_contract) ? num(st.beyond_bound_keeping_contract) : 0; }
+  function violationReasons(st) {
+    var r = st && st.contract_violations && st.contract_violations.reasons;
+    return r && typeof r === 'object' ? Object.keys(r).map(function (k) { return fmtInt(r[k]) + ' ' + k.replace(/_/g, ' '); }) : [];
   }
   function comparisonTag(name) { return isJudged(name) ? null : h('span', {class: 'tag comparison', title: 'comparison variant: reported, not judged'}, 'comparison'); }
 
-  function passBadge(p, name) {
+  function passBadge(p, name, st) {
+    if (has(name) && !ownContract(name)) { // its contract's verdict, not gjk2d's `pass`
+      var broke = violationsOf(st) > 0, judged = isJudged(name);
+      if (broke) return h('span', {class: 'badge ' + (judged ? 'fail' : 'comparison')}, 'breaks its contract' + (judged ? '' : ' (not judged)'));
+      if (outsideBoundOf(st) > 0) return h('span', {class: 'badge comparison-ok'}, 'outside gjk2d\'s bound');
+      return h('span', {class: 'badge ' + (judged ? 'pass' : 'comparison-ok')}, 'keeps its contract');
+    }
     if (has(name) && !isJudged(name)) {
       if (p === false) return h('span', {class: 'badge comparison'}, 'fails (not judged)');
       if (p === true) return h('span', {class: 'badge comparison-ok'}, 'passes (not judged)');
@@ -456,7 +481,7 @@
       if (Array.isArray(f.makeup)) f.makeup.forEach(function (m) { if (m && m.ok === false) ++t.makeupFailed; });
       var fv = familyVariants(f);
       Object.keys(fv).forEach(function (n) {
-        var st = fv[n] || {}, fails = isNum(st.failures) ? num(st.failures) : 0;
+        var st = fv[n] || {}, fails = violationsOf(st);
         if (isJudged(n)) t.judgedFailures += fails; else t.comparisonFailures += fails;
         if (fails > 0 && isJudged(n)) ++t.failingPairs;
         t.misclassified += wrongClass(st);
@@ -483,7 +508,7 @@
       h('span', {}, h('b', {}, String(names.length)), names.length === 1 ? ' variant' : ' variants',
         names.length !== nJudged ? ' (' + nJudged + ' judged, ' + (names.length - nJudged) + ' comparison)' : ''),
       h('span', {class: t.judgedFailures > 0 ? 'bad' : ''}, h('b', {}, fmtInt(t.judgedFailures)), t.judgedFailures === 1 ? ' failure' : ' failures',
-        t.comparisonFailures > 0 ? h('span', {class: 'muted'}, ' (+ ' + fmtInt(t.comparisonFailures) + ' in comparison variants, not judged)') : null),
+        t.comparisonFailures > 0 ? h('span', {class: 'muted'}, ' (+ ' + fmtInt(t.comparisonFailures) + ' contract violations in comparison variants, not judged)') : null),
       t.invalid ? h('span', {class: t.judgedInvalid ? 'bad' : '', id: 'invalid-count', title: 'answers that are no valid answer, counted in the failures (judged variants: ' + fmtInt(t.judgedInvalid) + ')'},
         h('b', {}, fmtInt(t.invalid)), t.invalid === 1 ? ' invalid answer' : ' invalid answers') : null,
       t.makeupFailed ? h('span', {class: 'bad'}, h('b', {}, String(t.makeupFailed)), ' make-up checks failed') : null,
@@ -757,15 +782,17 @@
   // A cell's hover text: what its colour shows, then its cases, refused, skipped and invalid answers
   // (every cell, 0 when the family has no statistics for the variant), failures and misclassified.
   function cellTip(f, n, st, c) {
-    var k = caseCounts(st), fails = st && isNum(st.failures) ? num(st.failures) : 0;
+    var k = caseCounts(st), fails = violationsOf(st);
     var und = st && isNum(st.undecidable) ? num(st.undecidable) : 0, reasons = invalidReasons(st);
+    var verdict = ownContract(n) ? plural(fails, 'failure')
+      : plural(fails, 'contract violation') + ' (breaks its contract), ' + fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound';
     var why = k.refused > 0 && k.skipped > 0 ? 'every case refused or skipped' : k.refused > 0 ? 'every case refused by the implementation' :
       k.skipped > 0 ? 'every case skipped' : 'no case';
     return f.name + ' / ' + n + (isJudged(n) ? '' : ' (comparison, not judged)') + '\n' +
       (c.kind === 'bound' ? 'worst error / bound ' + fmt(c.v) : c.kind === 'norm' ? 'largest error ' + fmt(c.v) + ' u·R (no bound)' :
        c.kind === 'notrun' ? 'not run: ' + why : c.kind === 'missing' ? 'not run in this family' : 'no error recorded') +
       '\n' + countsText(k) + (reasons.length ? ' (' + reasons.join(', ') + ')' : '') +
-      (st ? '\n' + plural(fails, 'failure') + ', ' + fmtInt(st ? wrongClass(st) : 0) + ' misclassified' + (und ? ', ' + fmtInt(und) + ' undecidable' : '') : '') +
+      (st ? '\n' + verdict + ', ' + fmtInt(st ? wrongClass(st) : 0) + ' misclassified' + (und ? ', ' + fmtInt(und) + ' undecidable' : '') : '') +
       '\nclick: the family\'s detail';
   }
 
@@ -808,7 +835,7 @@
       svg.appendChild(label);
       names.forEach(function (n, i) {
         var st = fv[n], c = cellValue(st), x = colX(i), fill = cellColor(c);
-        var fails = st && isNum(st.failures) ? num(st.failures) : 0, wrong = st ? wrongClass(st) : 0;
+        var fails = violationsOf(st), wrong = st ? wrongClass(st) : 0;
         var tip = cellTip(f, n, st, c);
         var cell = sv('g', {class: 'hm-cell', 'data-family': String(f.name), 'data-variant': n, 'data-kind': c.kind,
           'data-fail': fails > 0 ? '1' : null, 'data-wrong': wrong > 0 ? '1' : null}, svgTitle(tip));
@@ -865,7 +892,7 @@
     return h('div', {class: 'legend heat-legend'},
       kinds.bound ? bar(BOUND_RAMP, BOUND_DECADES, 'error / bound', true) : null,
       kinds.norm ? bar(NORM_RAMP, NORM_DECADES, 'error / (u·R), no bound', false) : null,
-      h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures (red frame: judged)'),
+      h('span', {class: 'legend-item'}, glyph({d: 'M7 4.5l8 7m0 -7l-8 7', stroke: '#1a1a1a', 'stroke-width': 2, 'stroke-linecap': 'round'}, null, '#c0392b'), 'failures or contract violations (red frame: judged)'),
       h('span', {class: 'legend-item'}, glyph({d: 'M13.5 1h7.5v7.5Z', fill: '#111'}), 'false overlap or separation'),
       h('span', {class: 'legend-item'}, glyph(null, '#ece9e3'), 'not run (no judged case: refused, skipped or absent)'));
   }
@@ -888,12 +915,15 @@
       });
       if (!rows.length) return;
       if (family !== ALL_FAMILIES) { rows[0].variant = n; items.push(rows[0]); return; }
+      // A family where the variant fails (gjk2d's own contract) or breaks its declared contract.
+      var broke = function (r) { return ownContract(n) ? r.st.pass === false : violationsOf(r.st) > 0; };
       var med = function (xs) { xs = xs.filter(isFinite).sort(function (a, b) { return a - b; }); return xs.length ? xs[(xs.length - 1) >> 1] : NaN; };
       var worst = rows.reduce(function (w, r) { return !w || (isFinite(r.max) && !(r.max <= w.max)) ? r : w; }, null);
       var nss = rows.map(function (r) { return r.ns; });
       items.push({variant: n, family: rows.length + ' families', ns: med(nss), nsLo: Math.min.apply(null, nss), nsHi: Math.max.apply(null, nss),
         p99: med(rows.map(function (r) { return r.p99; })), max: worst.max, worstFamily: worst.family,
-        fails: rows.filter(function (r) { return r.st.pass === false; }).length, st: {pass: rows.every(function (r) { return r.st.pass !== false; })}});
+        fails: rows.filter(broke).length, st: {pass: !rows.some(broke), failures: rows.reduce(function (a, r) { return a + (isNum(r.st.failures) ? num(r.st.failures) : 0); }, 0),
+          contract_violations: {count: rows.reduce(function (a, r) { return a + violationsOf(r.st); }, 0)}}});
     });
     return items;
   }
@@ -946,7 +976,7 @@
       judged.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'judged'), judged.map(item)) : null,
       comp.length ? h('div', {class: 'legend'}, h('span', {class: 'legend-group'}, 'comparison'), comp.map(item)) : null,
       h('div', {class: 'legend small'}, legendItem('#bbb', 'p99 error (the variant\'s marker)', 'circle'), legendItem('#888', 'max error', 'cap'),
-        legendItem('#bbb', 'fails (red outline)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
+        legendItem('#bbb', 'fails or breaks its contract (red outline)', 'ring-red'), h('span', {class: 'legend-item muted'}, 'lower left is better; hover a marker for its numbers')));
   }
 
   function speedPlot(report, family) {
@@ -1005,13 +1035,15 @@
     var pointsG = sv('g', {});
     // Comparison variants under the judged ones.
     items.slice().reverse().forEach(function (it) {
-      var c = variantColor(it.variant), x = xs(it.ns), judged = isJudged(it.variant), failing = it.st.pass === false;
+      var c = variantColor(it.variant), x = xs(it.ns), judged = isJudged(it.variant);
+      var own = ownContract(it.variant), failing = own ? it.st.pass === false : violationsOf(it.st) > 0;
       var tip = (all ? 'all families' : it.family) + ' / ' + it.variant + (judged ? '' : ' (comparison, not judged)') + '\n' +
         (all ? fmt(it.ns) + ' ns per query (median over ' + it.family + '; ' + fmt(it.nsLo) + ' – ' + fmt(it.nsHi) + ')\nnormalised error: median p99 ' + fmt(it.p99) + ', worst max ' + fmt(it.max) + ' (' + it.worstFamily + ')' +
-          (it.fails ? '\nfails in ' + plural(it.fails, 'family', 'families') : '')
+          (it.fails ? (own ? '\nfails in ' : '\nbreaks its contract in ') + plural(it.fails, 'family', 'families') : '')
         : fmt(it.ns) + ' ns per query' + (has(it.st.ratio_to_baseline) ? ' (' + fmt(it.st.ratio_to_baseline) + '× baseline)' : '') +
           '\nnormalised error p99 ' + fmt(it.p99) + ', max ' + fmt(it.max) +
-          (failing ? (judged ? '\nFAIL (' : '\nfails, not judged (') + plural(it.st.failures, 'failure') + ')' : ''));
+          (failing ? (!own ? '\nbreaks its contract' + (judged ? ' (' : ', not judged (') + plural(violationsOf(it.st), 'contract violation') + ')'
+            : (judged ? '\nFAIL (' : '\nfails, not judged (') + plural(it.st.failures, 'failure') + ')') : ''));
       var pg = sv('g', {class: 'pt' + (judged ? ' judged' : ' comparison'), 'data-variant': it.variant, 'data-family': all ? ALL_FAMILIES : it.family}, svgTitle(tip));
       var yp = isFinite(it.p99) ? yOf(it.p99) : null, ym = isFinite(it.max) ? yOf(it.max) : null;
       if (all) pg.appendChild(sv('line', {x1: xs(it.nsLo), x2: xs(it.nsHi), y1: yp === null ? ym : yp, y2: yp === null ? ym : yp, stroke: c, 'stroke-width': 2.5, opacity: 0.55}));
@@ -1049,7 +1081,7 @@
     var head1 = h('tr', {},
       h('th', {rowspan: 2}, 'Variant'), h('th', {rowspan: 2, class: 'num'}, 'Cases'),
       h('th', {rowspan: 2, class: 'num', title: 'false overlap + false separation + undecidable'}, 'Mis\u00adclass.'),
-      h('th', {rowspan: 2, class: 'num'}, 'Fail\u00adures'),
+      h('th', {rowspan: 2, class: 'num', title: 'answers that break their implementation\'s own contract (gjk2d\'s variants: their failures), by reason below the count; below them, for an implementation with a contract of its own, the answers that keep it but are outside gjk2d\'s bound (a measured accuracy, not a failure)'}, 'Breaks contract'),
       h('th', {rowspan: 2, class: 'num', title: 'answers that are no valid answer (a negative distance, a witness point off its shape, witness points further apart than the distance allows), each also a failure; by reason below the count'}, 'In\u00advalid'),
       h('th', {colspan: 2, class: 'grp'}, 'Absolute error'), h('th', {colspan: 2, class: 'grp'}, 'Error [ulps]'),
       h('th', {colspan: 2, class: 'grp'}, 'Error / (u·R)'),
@@ -1086,8 +1118,7 @@
         // Undecidable (within the error bound of the truth) is not a failure: red only for the rest.
         h('td', {class: 'num' + (wrongClass(st) > 0 ? ' bad' : ''), title: misDetail.join(', ') || null}, fmtInt(mis),
           wrongClass(st) > 0 || num(st.undecidable) > 0 ? h('div', {class: 'small'}, misDetail.join(', ')) : null),
-        h('td', {class: 'num' + (num(st.failures) > 0 && isJudged(vn) ? ' bad' : ''), title: [rate].concat(failDetail).filter(Boolean).join(', ') || null},
-          fmtInt(st.failures), failDetail.length ? h('div', {class: 'small'}, failDetail.join(', ')) : null),
+        violationCell(st, vn, [rate].concat(failDetail).filter(Boolean), failDetail),
         invalidCell(st, vn),
         h('td', {class: 'num'}, fmt(ha && ha.max)), h('td', {class: 'num'}, fmt(ha && ha.p99)),
         h('td', {class: 'num'}, fmt(hu && hu.max)), h('td', {class: 'num'}, fmt(hu && hu.p99)),
@@ -1096,12 +1127,24 @@
         h('td', {class: 'num'}, fmt(it.mean)), h('td', {class: 'num'}, fmtInt(it.max)),
         h('td', {class: 'num', title: spread}, has(st.ns_per_query) ? fmt(st.ns_per_query) : '—',
           has(st.ratio_to_baseline) && vn !== report.baseline_variant ? h('div', {class: 'small muted'}, fmt(st.ratio_to_baseline) + '×') : null),
-        h('td', {}, passBadge(st.pass, vn))));
+        h('td', {}, passBadge(st.pass, vn, st))));
     });
     if (missing.length) {
       body.appendChild(h('tr', {class: 'missing-row'}, h('td', {colspan: ncol, class: 'muted small'}, 'not run in this family: ' + missing.join(', '))));
     }
     return h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
+  }
+
+  // The answers that break their implementation's contract (gjk2d's own: failures, with their kinds
+  // below); for an implementation with a contract of its own, the reasons and the answers outside
+  // gjk2d's bound that keep it.
+  function violationCell(st, vn, tip, failDetail) {
+    var n = violationsOf(st), own = ownContract(vn);
+    var unjudged = st && isNum(st.depth_unjudged) ? num(st.depth_unjudged) : 0;
+    var below = own ? failDetail : violationReasons(st).concat(outsideBoundOf(st) > 0 ? [fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound'] : [],
+      unjudged > 0 ? [fmtInt(unjudged) + ' penetration depth' + (unjudged === 1 ? '' : 's') + ' not judged yet'] : []);
+    return h('td', {class: 'num' + (n > 0 && isJudged(vn) ? ' bad' : ''), title: (own ? tip : below).join(', ') || null},
+      fmtInt(n), below.length ? h('div', {class: 'small'}, below.join(', ')) : null);
   }
 
   // The invalid answers of a family x variant (0 when an older report has no "invalid"), with their
@@ -1278,7 +1321,7 @@
     var present = names.filter(function (n) { return n in fv; });
     var judgedFails = 0, compFails = 0, wrong = 0;
     present.forEach(function (n) {
-      var x = isNum(fv[n] && fv[n].failures) ? num(fv[n].failures) : 0;
+      var x = violationsOf(fv[n]);
       if (isJudged(n)) judgedFails += x; else compFails += x;
       wrong += wrongClass(fv[n] || {});
     });
@@ -1288,7 +1331,7 @@
       h('span', {class: 'muted small'}, fmtInt(f.cases) + ' cases'),
       passBadge(f.pass),
       judgedFails ? h('span', {class: 'bad small'}, plural(judgedFails, 'failure')) : null,
-      compFails ? h('span', {class: 'small muted'}, plural(compFails, 'failure') + ' in comparison variants') : null,
+      compFails ? h('span', {class: 'small muted'}, plural(compFails, 'contract violation') + ' in comparison variants (not judged)') : null,
       wrong ? h('span', {class: 'small muted'}, fmtInt(wrong) + ' misclassified') : null,
       makeupBad ? h('span', {class: 'bad small'}, 'make-up check failed') : null)));
     if (Array.isArray(f.makeup) && f.makeup.length) {

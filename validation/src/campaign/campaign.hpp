@@ -111,8 +111,8 @@ struct ChunkPosition
 // docs/report-schema.md). A change of that state (a row of Stats' tables added, renamed or removed)
 // is a new version of both: bump the number in both names, and add the old version to
 // kOldStateVersions.
-inline constexpr const char* kShardSchema = "gjk-shard/2";
-inline constexpr const char* kCheckpointSchema = "gjk-checkpoint/2";
+inline constexpr const char* kShardSchema = "gjk-shard/3";
+inline constexpr const char* kCheckpointSchema = "gjk-checkpoint/3";
 
 // The earlier versions of the state files, refused with exit code 2 and a message that names the
 // last revision of gjk2d that wrote (and reads) them.
@@ -123,6 +123,7 @@ struct OldStateVersion
 };
 inline constexpr OldStateVersion kOldStateVersions[] = {
     {1, "ff6aac0"}, // Stats' state in an order of its own, with its history's exceptions
+    {2, "ff7916d"}, // without the contract verdict (contract_violations and their reasons)
 };
 
 // One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,

@@ -34,8 +34,9 @@ void setTimingRatios(CampaignState& state, std::size_t baseline)
 
 // --- Judgement ---------------------------------------------------------------------------------
 
-// A family passes when its make-up checks hold and no judged variant failed a case; comparison
-// variants are reported, never failed.
+// A family passes when its make-up checks hold and no judged variant broke its contract on a case
+// (for gjk2d's own contract: failed a case; a plugin judged with --judge: its own contract's
+// violations); comparison variants are reported, never failed.
 struct Verdict
 {
     bool makeupOk = true, variantsOk = true;
@@ -50,7 +51,7 @@ Verdict judgeFamily(const std::vector<MakeupResult>& makeup, const std::vector<S
         v.makeupOk = v.makeupOk && m.ok;
     for (std::size_t k = 0; k < stats.size(); ++k)
         if (ctx.variants[k]->judged)
-            v.variantsOk = v.variantsOk && stats[k].failures == 0;
+            v.variantsOk = v.variantsOk && stats[k].contractViolations == 0;
     return v;
 }
 
@@ -104,11 +105,32 @@ Json familyJson(const FamilyResult& f, const std::vector<MakeupResult>& makeup,
     return j;
 }
 
-Json variantsJson(const EvalContext& ctx)
+// Variant k's worst contract violation over the families, {"case", "family", "reason", "excess"}
+// (the largest excess, ties to the earlier family), or null: the case `gjk-validate repro` and
+// `explain` take.
+Json worstViolationJson(const CampaignState& state, std::size_t k)
+{
+    const FamilyResult* worstFamily = nullptr;
+    for (const auto& f : state.families)
+    {
+        const WorstViolation& w = f.stats[k].worstViolation;
+        if (w.any &&
+            (worstFamily == nullptr || w.excess > worstFamily->stats[k].worstViolation.excess))
+            worstFamily = &f;
+    }
+    if (worstFamily == nullptr)
+        return nullptr;
+    Json j = worstFamily->stats[k].worstViolation.toJson();
+    j["family"] = worstFamily->input->name;
+    return j;
+}
+
+Json variantsJson(const CampaignState& state, const EvalContext& ctx)
 {
     Json out = Json::array();
-    for (auto* v : ctx.variants)
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
+        const VariantInfo* v = ctx.variants[k];
         Json j;
         j["name"] = v->name;
         j["type"] = scalarName(v->scalar);
@@ -127,6 +149,8 @@ Json variantsJson(const EvalContext& ctx)
         }
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};
+        j["contract"] = contractJson(*v);
+        j["worst_contract_violation"] = worstViolationJson(state, k);
         out.push_back(std::move(j));
     }
     return out;
@@ -232,7 +256,7 @@ Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, cons
     Json report;
     report["schema"] = kReportSchema;
     report["context"] = contextOf(state, config, threads, date, revision, seconds);
-    report["variants"] = variantsJson(ctx);
+    report["variants"] = variantsJson(state, ctx);
     report["baseline_variant"] = ctx.variants[baseline]->name;
     report["families"] = std::move(families);
     report["rejected"] = std::move(rejectedList);

@@ -30,8 +30,9 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
     auto* judge =
         sub.add_option("--judge", o.judge,
                        "judge this plugin implementation like gjk2d's judged variants: a "
-                       "case fails beyond the error bound of gjk2d's reference options in "
-                       "its scalar type; repeatable")
+                       "case fails where the answer breaks its contract (its declared one, with "
+                       "gjk2d's bound in its scalar type where it states no tolerance; a "
+                       "version-1 plugin: gjk2d's own); repeatable")
             ->allow_extra_args(false);
     if (!judges) // parsed, to be refused with a line that says why (selectVariants)
         judge->group("");

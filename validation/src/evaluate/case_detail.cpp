@@ -103,6 +103,20 @@ Json exactDetail(const exact::Result& r)
     return e;
 }
 
+// The answer's verdict by its implementation's contract: its class, the violation's reason and
+// size, and the tolerances it was held to (docs/report-schema.md, CaseDetail "contract").
+Json contractVerdictJson(const VariantInfo& vi, const VariantOutcome& v)
+{
+    const char* why = violationName(v.violation);
+    return Json{{"own", contractOf(vi).own},
+                {"class", answerClassName(v)},
+                {"violation", why ? Json(why) : Json(nullptr)},
+                {"excess", why ? num(v.violationExcess) : Json(nullptr)},
+                {"tolerance", num(v.tolerance)},
+                {"witness_tolerance", num(v.witnessTolerance)},
+                {"depth_unjudged", v.depthUnjudged}};
+}
+
 // One variant's result on a case, as the case JSON gives it (CaseDetail adds the trace).
 Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
 {
@@ -120,6 +134,7 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
         vj["plugin_status"] = pluginStatusName(v.plugin);
         vj["plugin_detail"] = v.pluginDetail;
         vj["failed"] = v.failed;
+        vj["contract"] = contractVerdictJson(vi, v);
         return vj;
     }
     vj["distance"] = num(v.distance);
@@ -158,6 +173,7 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
         vj["interval_contains"] = v.intervalContains;
     }
     vj["failed"] = v.failed;
+    vj["contract"] = contractVerdictJson(vi, v);
     return vj;
 }
 
@@ -226,9 +242,12 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];
-        if (o.variants[k].skipped || vi.plugin) // a plugin gives no trace
+        if (o.variants[k].skipped)
             continue;
         Json& vj = j["variants"][vi.name];
+        vj["contract"]["judged_by"] = judgedBy(vi); // what the distance was held to, in words
+        if (vi.plugin)                              // a plugin gives no trace
+            continue;
         if (vi.scalar == Scalar::Float)
         {
             gjk::DistanceOutput<float> out;

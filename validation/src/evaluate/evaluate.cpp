@@ -273,7 +273,10 @@ namespace
 {
 // The answer's errors against the truth td: absolute, relative, in ulps, normalised, against the
 // bound, and the witness gap ||pB - pA|| - distance; all infinite for a non-finite answer.
-void measureErrors(VariantOutcome& v, double td, Scalar scalar)
+// `signedOverlap`: the implementation answers overlap with a distance of 0 or below (Overlap::Zero,
+// Penetration), so its negative distance is gjk2d's 0 in that convention, and the distance errors
+// (beyond_bound among them) are measured on max(d, 0); the witness gap keeps the raw d.
+void measureErrors(VariantOutcome& v, double td, Scalar scalar, bool signedOverlap)
 {
     if (v.nonfinite)
     {
@@ -285,7 +288,8 @@ void measureErrors(VariantOutcome& v, double td, Scalar scalar)
         return;
     }
     const double u = unitRoundoff(scalar);
-    v.abs = std::abs(v.distance - td);
+    const double d = signedOverlap ? std::max(v.distance, 0.0) : v.distance;
+    v.abs = std::abs(d - td);
     v.rel = td > 0 ? v.abs / td : kNaN;
     v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
     v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
@@ -322,15 +326,18 @@ bool failedAnswer(const VariantOutcome& v)
            (v.certified && !v.intervalContains) || v.bitMismatch;
 }
 
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance)
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance,
+           Overlap overlap)
 {
     v.truth = truth.distance;
+    v.truthZero = exactIsZero(truth);
     v.nonfinite = !std::isfinite(v.distance) || !std::isfinite(v.pointA[0]) ||
                   !std::isfinite(v.pointA[1]) || !std::isfinite(v.pointB[0]) ||
                   !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
                   !std::isfinite(v.normal[1]);
     v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-    measureErrors(v, truth.distance, scalar);
+    measureErrors(v, truth.distance, scalar,
+                  overlap == Overlap::Zero || overlap == Overlap::Penetration);
     if (!v.nonfinite && !v.outOfRange)
         classifyAnswer(v, exactIsZero(truth));
     // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
@@ -425,7 +432,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
         boundsOf(vi, c, scales.get(false, isFloat), truth.distance, v);
-        judge(v, truth, vi.scalar, vi.options.correctlyRounded);
+        judge(v, truth, vi.scalar, vi.options.correctlyRounded, contractOf(vi).overlap);
     }
 }
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "evaluate/bounds.hpp"
+#include "evaluate/violation.hpp"
+#include "implementations/contract.hpp"
 #include "implementations/plugins.hpp"
 #include "implementations/prepared.hpp"
 #include "implementations/variants.hpp"
@@ -140,6 +142,22 @@ struct VariantOutcome
     // Error / Crashed / Hung: failed, no errors measured) and how it died.
     PluginStatus plugin = PluginStatus::NotRun;
     std::string pluginDetail;
+    // The verdict by the implementation's own contract (judgeContract, phase 3): why the answer
+    // breaks it (None: it keeps it), and by how much: the measured over the allowed (+inf for a
+    // break that has no size: an error status, a non-finite or negative answer). For gjk2d's own
+    // contract the violation is exactly `failed`, named by its first reason. Three classes per
+    // answer: a violation; keeping the contract but beyondBound (a measured accuracy, not a
+    // failure); within gjk2d's bound.
+    Violation violation = Violation::None;
+    double violationExcess = 0;
+    // A declared contract's distance tolerance T and witness tolerance W for this case (gjk2d's
+    // own: bound and witnessBound).
+    double tolerance = 0, witnessTolerance = 0;
+    // A penetration answer on overlapping shapes that keeps every clause judged so far: its depth
+    // is not judged (the exact penetration depth is issue 51's).
+    bool depthUnjudged = false;
+    bool truthZero = false; // the exact distance is 0 (exactIsZero), set by judge()
+    bool keepsContract() const { return violation == Violation::None; }
 };
 
 // A case's shapes on the exact side, prepared once (hull and interval world points) by
@@ -194,7 +212,10 @@ struct EvalContext
 // its errors, its misclassification, whether it is invalid (negative distance, witness gap; the
 // witness points' distances to their shapes come in phase 3), whether its certified interval holds
 // the truth, and whether it failed (docs/validation.md, "Failures"). runVariants calls it.
-void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance);
+// `overlap`: what the implementation answers on overlap; for Zero and Penetration a negative
+// distance is their way to say 0, and the errors are measured on max(d, 0).
+void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance,
+           Overlap overlap = Overlap::CommonPoint);
 // Whether a judged answer fails: the one rule, for judge() and for the witness verdict (phase 3).
 // Cases GJK flags out of range are not judged (docs/error-bound.md, assumptions); a certified
 // interval that misses the truth, or a correctly rounded distance that is not the exact side's,
@@ -213,8 +234,26 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
 // Phase 3: exact distance of each witness point to its shape, and the witness verdict (a point off
 // its shape beyond the witness bound makes the answer invalid, and failed).
 void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out);
+// The contract verdict of every variant of the case (judgeContract), once its witnesses are
+// measured: checkWitnesses calls it last.
+void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out);
 // All of them.
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
+
+// An answer's class (docs/validation.md, "Contracts"): "breaks_contract" (a violation of its
+// implementation's contract), "out_of_range" (gjk2d's own, flagged by GJK: not judged),
+// "outside_bound" (keeps its contract, beyond gjk2d's bound: a measured accuracy, not a failure),
+// "within_bound"; "skipped" when it did not run.
+inline const char* answerClassName(const VariantOutcome& v)
+{
+    if (v.skipped)
+        return "skipped";
+    if (!v.keepsContract())
+        return "breaks_contract";
+    if (v.outOfRange)
+        return "out_of_range";
+    return v.beyondBound ? "outside_bound" : "within_bound";
+}
 
 // Exact distance is 0: the (rounded) shapes touch or overlap.
 inline bool exactIsZero(const exact::Result& r)

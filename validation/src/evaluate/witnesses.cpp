@@ -71,8 +71,10 @@ class ExactShapes
 
 // The witness verdict (judge() left the rest): off its shape comes before the gap.
 // An answer of overlap (distance 0) may give two points that each lie in both shapes instead of
-// one (docs/validate-your-gjk.md, "The whole answer is judged"): Bullet's penetration points, Box2D
-// v3's points on each outline. Either point proves the overlap. Then the witness gap is how far
+// one (docs/validate-your-gjk.md, "The whole answer is judged"), e.g. Box2D v3's points on each
+// outline. Either point proves the overlap. (A penetration pair is not such a pair: each of its
+// points is on its own shape only; a contract that declares penetration is judged by its own
+// clause, contract_judge.cpp.) Then the witness gap is how far
 // the points are from the other shape, and within the witness bound the answer is valid: the
 // failure WitnessGap set from ||pB - pA|| is withdrawn (the other reasons stand).
 void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
@@ -162,7 +164,8 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
             acceptTwoCommonPoints(v, shapes, isFloat);
         judgeWitnesses(v, wa, wb);
     }
-    out.shapes.reset(); // the chunk's hulls are not kept past this phase
+    judgeContracts(c, ctx, out); // the verdict by each implementation's contract, on the measures
+    out.shapes.reset();          // the chunk's hulls are not kept past this phase
 }
 
 } // namespace gjkval

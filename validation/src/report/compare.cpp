@@ -282,6 +282,24 @@ void compareIterationsAndInterval(const Json& oldStats, const Json& newStats,
     }
 }
 
+// The contract verdict beside beyond_bound: contract_violations (its count: the answers that break
+// their implementation's contract) and beyond_bound_keeping_contract (outside gjk2d's bound,
+// keeping it); any increase of either is worse. Reports written before contracts have neither.
+void compareContract(const Json& oldStats, const Json& newStats, const std::string& where,
+                     const Side& os, const Side& ns, const StatRows& out)
+{
+    const Json* ov = object(&oldStats, "contract_violations", os, where);
+    const Json* nv = object(&newStats, "contract_violations", ns, where);
+    if (ov != nullptr || nv != nullptr)
+        out.add("contract_violations", CompareRule::Count,
+                number(ov, "count", os, where + ".contract_violations"),
+                number(nv, "count", ns, where + ".contract_violations"));
+    const char* kept = "beyond_bound_keeping_contract";
+    if (oldStats.contains(kept) || newStats.contains(kept))
+        out.add(kept, CompareRule::Count, number(&oldStats, kept, os, where),
+                number(&newStats, kept, ns, where));
+}
+
 // Every statistic of one family x variant (docs/report-schema.md, Stats).
 void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
                   const CompareOptions& o, const Side& os, const Side& ns, Rows& rows)
@@ -291,9 +309,11 @@ void compareStats(const Json& oldStats, const Json& newStats, CompareRow base,
     const StatRows out{std::move(base), rows};
     // The Stats counts that regress on any increase, in the report's order (statistics/stats.hpp).
     for (const CountField& f : kCountFields)
-        if (f.regresses && (oldStats.contains(f.name) || newStats.contains(f.name)))
+        if (f.regresses && f.section == Section::Top &&
+            (oldStats.contains(f.name) || newStats.contains(f.name)))
             out.add(f.name, CompareRule::Count, number(&oldStats, f.name, os, where),
                     number(&newStats, f.name, ns, where));
+    compareContract(oldStats, newStats, where, os, ns, out);
     const Json* oe = object(&oldStats, "errors", os, where);
     const Json* ne = object(&newStats, "errors", ns, where);
     compareErrors(oe, ne, where, os, ns, out);

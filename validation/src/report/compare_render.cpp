@@ -15,6 +15,24 @@ namespace gjkval
 {
 namespace
 {
+// What the contract rows count, in the words every verdict uses (never "fails" for an
+// implementation with a contract of its own).
+constexpr const char* kContractLegend =
+    "contract_violations: answers that break their implementation's own contract (gjk2d's own "
+    "variants: their failures); beyond_bound_keeping_contract: answers that keep it but are "
+    "outside gjk2d's bound (a measured accuracy, not a failure)\n";
+
+// Whether the rows shown hold the contract rows (and the legend says what they count).
+bool showsContractRows(const std::vector<const CompareRow*>& shown)
+{
+    return std::any_of(shown.begin(), shown.end(),
+                       [](const CompareRow* r)
+                       {
+                           return r->statistic == "contract_violations" ||
+                                  r->statistic == "beyond_bound_keeping_contract";
+                       });
+}
+
 std::string formatValue(const CompareRow& r, double v)
 {
     if (std::isnan(v))
@@ -155,6 +173,8 @@ std::string compareText(const Comparison& c)
         }
         if (std::any_of(shown.begin(), shown.end(), [](const CompareRow* r) { return !r->judged; }))
             s += "(c): a comparison variant (reported; gates only with --all-variants)\n";
+        if (showsContractRows(shown))
+            s += kContractLegend;
     }
     s += summaryText(c) + "\n" + resultLine(c) + "\n";
     return s;
@@ -186,6 +206,8 @@ std::string compareMarkdown(const Comparison& c)
                              formatValue(*r, r->newValue), cell(limitText(*r)),
                              cell(changeText(*r)));
         s += "\n";
+        if (showsContractRows(shown))
+            s += std::string(kContractLegend) + "\n";
     }
     s += summaryText(c) + ".\n\n**" + resultLine(c) + "**\n";
     return s;

@@ -53,13 +53,49 @@ std::string exactText(const char* label, const Json& e)
                        e["squared"].get<std::string>(), fmtPt(e["witnessA"]), fmtPt(e["witnessB"]));
 }
 
+// The answer's verdict by its implementation's contract (CaseDetail "contract"; older details
+// have none): its class in words, the reason and size of a violation, and what the distance and
+// the points were held to (judgedBy, implementations/contract.hpp).
+std::string contractText(const Json& v)
+{
+    if (!v.contains("contract") || !v["contract"].is_object())
+        return {};
+    const Json& c = v["contract"];
+    const std::string cls = c["class"].get<std::string>();
+    std::string words = cls == "breaks_contract" ? "breaks its contract"
+                        : cls == "outside_bound" ? "keeps its contract, outside gjk2d's bound"
+                        : cls == "within_bound"  ? "keeps its contract, within gjk2d's bound"
+                                                 : cls;
+    if (c["violation"].is_string())
+        words += fmt::format(" ({}, {} times what it allows)", c["violation"].get<std::string>(),
+                             fmtNum(c["excess"]));
+    if (c.value("depth_unjudged", false))
+        words += "; its penetration depth is not judged yet (no exact depth)";
+    std::string s = fmt::format("     contract: {}\n", words);
+    s += fmt::format("     held to: distance within {}, points within {}{}\n",
+                     fmtNum(c["tolerance"]), fmtNum(c["witness_tolerance"]),
+                     c.contains("judged_by") ? " (" + c["judged_by"].get<std::string>() + ")" : "");
+    return s;
+}
+
+// The answer's headline verdict: "** FAILED **" for a failure of gjk2d's own contract; for an
+// implementation with a contract of its own "** BREAKS ITS CONTRACT **" (never "failed": gjk2d's
+// rules are a measure for it, its contract the verdict).
+std::string failedWords(const Json& v)
+{
+    const bool own = !v.contains("contract") || v["contract"].value("own", true);
+    if (own)
+        return v["failed"].get<bool>() ? "  ** FAILED **" : "";
+    return v["contract"]["class"] == "breaks_contract" ? "  ** BREAKS ITS CONTRACT **" : "";
+}
+
 // A variant's answer and its judgement: distance, witnesses, errors, validity, certified interval.
 std::string answerText(const std::string& name, const Json& v)
 {
-    std::string s = fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
-                                v["type"].get<std::string>(), fmtFull(v["distance"]),
-                                v["iterations"].get<int>(), v["stop"].get<std::string>(),
-                                v["failed"].get<bool>() ? "  ** FAILED **" : "");
+    std::string s =
+        fmt::format("  variant {} ({}): distance {}  iterations {}  stop {}{}\n", name,
+                    v["type"].get<std::string>(), fmtFull(v["distance"]),
+                    v["iterations"].get<int>(), v["stop"].get<std::string>(), failedWords(v));
     s += fmt::format("     pointA {}  pointB {}  normal {}\n", fmtPt(v["pointA"]),
                      fmtPt(v["pointB"]), fmtPt(v["normal"]));
     const Json& e = v["errors"];
@@ -70,8 +106,11 @@ std::string answerText(const std::string& name, const Json& v)
                      fmtNum(e["witness_gap"]),
                      v["misclassified"].is_null() ? "no" : v["misclassified"].get<std::string>());
     // Older reports have no witness judgement.
+    const bool own = !v.contains("contract") || v["contract"].value("own", true);
     if (v.contains("invalid"))
-        s += fmt::format("     witness bound {}  invalid answer: {}\n", fmtNum(v["witness_bound"]),
+        s += fmt::format("     {}witness bound {}  invalid answer: {}\n",
+                         own ? "" : "by gjk2d's own rules (a measure, not its verdict): ",
+                         fmtNum(v["witness_bound"]),
                          v["invalid"].is_null() ? "no" : v["invalid"].get<std::string>());
     if (v.contains("certified") && !v["certified"].get<bool>())
         s += "     certified interval: none (the query did not certify this case)\n";
@@ -79,7 +118,7 @@ std::string answerText(const std::string& name, const Json& v)
         s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
                          fmtFull(v["lower"]), fmtFull(v["upper"]),
                          v["interval_contains"].get<bool>() ? "yes" : "NO");
-    return s;
+    return s + contractText(v);
 }
 
 // A variant's iteration trace, one step per block: simplex, closest point, direction, support.
@@ -111,7 +150,8 @@ std::string variantText(const std::string& name, const Json& v)
     if (v.contains("plugin_status"))
         return fmt::format("  variant {} ({}): {}: {}\n", name, v["type"].get<std::string>(),
                            v["plugin_status"].get<std::string>(),
-                           v["plugin_detail"].get<std::string>());
+                           v["plugin_detail"].get<std::string>()) +
+               contractText(v);
     const std::string s = answerText(name, v);
     if (!v.contains("trace"))
         return s + "     (no trace: the implementation is a plugin's)\n";

@@ -47,14 +47,54 @@ bool isJudged(const std::map<std::string, bool>& m, const std::string& name)
     return it == m.end() || it->second;
 }
 
-// Comparison variants' failures over all families: counted, never judged.
+// Variant name -> held to gjk2d's own contract (variants[].contract.own; a report without
+// contracts: every variant). The others declared theirs: their verdict is said in its words,
+// "breaks its contract" and "outside gjk2d's bound", never "fails".
+std::map<std::string, bool> ownMap(const Json& r)
+{
+    std::map<std::string, bool> m;
+    for (const auto& v : r["variants"])
+        m[v["name"].get<std::string>()] = !v.contains("contract") || !v["contract"].is_object() ||
+                                          v["contract"].value("own", true);
+    return m;
+}
+
+// A family x variant's contract violations (for gjk2d's own contract, its failures; a report
+// written before contracts: its failures).
+std::uint64_t violations(const Json& st)
+{
+    if (st.contains("contract_violations") && st["contract_violations"].is_object())
+        return st["contract_violations"]["count"].get<std::uint64_t>();
+    return st["failures"].get<std::uint64_t>();
+}
+
+// Judged answers that keep their contract but are beyond gjk2d's bound (0 before contracts).
+std::uint64_t outsideBound(const Json& st)
+{
+    return st.contains("beyond_bound_keeping_contract")
+               ? st["beyond_bound_keeping_contract"].get<std::uint64_t>()
+               : 0;
+}
+
+// "N (k reason, ...)": the contract violations with their reasons.
+std::string violationCounts(const Json& st)
+{
+    std::string out = std::to_string(violations(st)), reasons;
+    if (st.contains("contract_violations") && st["contract_violations"].is_object())
+        for (const auto& [reason, n] : st["contract_violations"]["reasons"].items())
+            reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", u(n), reason);
+    return reasons.empty() ? out : out + " (" + reasons + ")";
+}
+
+// Comparison variants' contract violations over all families (gjk2d's own: failures): counted,
+// never judged.
 std::uint64_t comparisonFailures(const Json& r, const std::map<std::string, bool>& judged)
 {
     std::uint64_t n = 0;
     for (const auto& f : r["families"])
         for (const auto& [name, st] : f["variants"].items())
             if (!isJudged(judged, name))
-                n += st["failures"].get<std::uint64_t>();
+                n += violations(st);
     return n;
 }
 
@@ -107,7 +147,8 @@ std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& ju
     const Json& c = r["context"];
     std::string s = "# GJK validation report\n\n";
     s += fmt::format("**Result: {}** (judged variants only: comparison variants' "
-                     "{} failures are shown, not judged)\n\n",
+                     "{} contract violations (gjk2d's own variants': failures) are shown, not "
+                     "judged)\n\n",
                      resultText(r), comparisonFailures(r, judged));
     s += "| | |\n|---|---|\n";
     for (const char* k :
@@ -151,6 +192,43 @@ std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& ju
     return s + "\n";
 }
 
+// Each implementation with a contract of its own: what it promises (its overlap answer and
+// tolerance, with their sources), what its distance is held to, and its worst contract violation
+// (the case to give `gjk-validate explain` or `repro`).
+std::string contractsMarkdown(const Json& r)
+{
+    std::string s;
+    for (const auto& v : r["variants"])
+    {
+        if (!v.contains("contract") || v["contract"].value("own", true))
+            continue;
+        const Json& c = v["contract"];
+        const Json& w =
+            v.contains("worst_contract_violation") ? v["worst_contract_violation"] : Json(nullptr);
+        std::uint64_t unjudged = 0; // penetration depths not judged yet, over the families
+        for (const auto& f : r["families"])
+            if (f["variants"].contains(v["name"].get<std::string>()))
+                unjudged += f["variants"][v["name"].get<std::string>()].value("depth_unjudged",
+                                                                              std::uint64_t(0));
+        s += fmt::format("- **{}**: on overlap `{}` ({}); judged by {}; worst contract violation: "
+                         "{}\n",
+                         v["name"].get<std::string>(), c["overlap"].get<std::string>(),
+                         mdEscape(c["overlap_source"].get<std::string>()),
+                         mdEscape(c["judged_by"].get<std::string>()),
+                         w.is_object()
+                             ? fmt::format("`{}` ({}, {}, excess {})", w["case"].get<std::string>(),
+                                           w["family"].get<std::string>(),
+                                           w["reason"].get<std::string>(), g(w["excess"]))
+                             : "none");
+        if (unjudged > 0)
+            s +=
+                fmt::format("  - {} penetration answer(s) keep every clause judged; their depth is "
+                            "not judged yet (the exact penetration depth is issue 51's)\n",
+                            unjudged);
+    }
+    return s.empty() ? s : "\n### Contracts\n\n" + s;
+}
+
 // The variants: judged or comparison, type, options (or the plugin's path) and the bound.
 std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& judged)
 {
@@ -165,11 +243,15 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
         const std::string name = v["name"].get<std::string>();
         if (v.contains("plugin")) // its own algorithm: only the bound it is compared with is ours
         {
-            s += fmt::format("| {} | {} | {} | plugin `{}` | - | - | - | cold | {} |\n", name,
+            const std::string held =
+                v.contains("contract")
+                    ? "; judged by " + v["contract"]["judged_by"].get<std::string>()
+                    : "";
+            s += fmt::format("| {} | {} | {} | plugin `{}` | - | - | - | cold | {}{} |\n", name,
                              isJudged(judged, name) ? "judged (--judge)" : "comparison",
                              v["type"].get<std::string>(),
                              mdEscape(v["plugin"]["path"].get<std::string>()),
-                             mdEscape(v["bound"]["formula"].get<std::string>()));
+                             mdEscape(v["bound"]["formula"].get<std::string>()), mdEscape(held));
             continue;
         }
         s += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", name,
@@ -183,7 +265,15 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
          "float variants "
          "are judged against the exact distance of the float-rounded input. p99 values are bin "
          "upper edges.\n";
-    return s;
+    s +=
+        "\nThree classes of an answer: `breaks contract` counts the answers that break their "
+        "implementation's own contract (that implementation's bug; for gjk2d's variants, their "
+        "failures), with the reasons; `outside bound` counts the answers that keep their contract "
+        "but are outside gjk2d's a-priori bound (a measured accuracy, not a failure); the rest are "
+        "within gjk2d's bound. `false ovl`, `false sep`, `undecid.` and `invalid` are gjk2d's own "
+        "rules applied to every answer (for an implementation with a contract of its own, a "
+        "measure, not its verdict).\n";
+    return s + contractsMarkdown(r);
 }
 
 // One row of a family's table: one variant's counts, errors, iterations and speed.
@@ -192,18 +282,20 @@ std::string statsRow(const std::string& name, const Json& st, bool j)
     const Json& e = st["errors"];
     const std::uint64_t na =
         st.contains("not_applicable") ? st["not_applicable"].get<std::uint64_t>() : 0;
-    return fmt::format(
-        "| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | "
-        "{:.2f}/{} | {} | {} |\n",
-        j ? name : name + " (comparison)", u(st["cases"]),
-        u(st["failures"]) + (j || st["failures"].get<std::uint64_t>() == 0 ? "" : " (not judged)"),
-        u(st["false_overlap"]), u(st["false_separation"]), u(st["undecidable"]), u(st["nonfinite"]),
-        invalidCounts(st), u(st["iteration_limit"]), u(st["out_of_range"]),
-        u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") + pluginCounts(st),
-        g(e["abs"]["max"]), g(e["abs"]["p99"]), g(e["normalized"]["max"]),
-        g(e["normalized"]["p99"]), g(e["ulps"]["p99"]), g(e["witness"]["max"]),
-        st["iterations"]["mean"].get<double>(), st["iterations"]["max"].get<int>(),
-        g(st["ns_per_query"], "{:.1f}"), g(st["ratio_to_baseline"], "{:.2f}"));
+    return fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} "
+                       "| {} | {} | {} | "
+                       "{:.2f}/{} | {} | {} |\n",
+                       j ? name : name + " (comparison)", u(st["cases"]),
+                       violationCounts(st) + (j || violations(st) == 0 ? "" : " (not judged)"),
+                       u(Json(outsideBound(st))), u(st["false_overlap"]), u(st["false_separation"]),
+                       u(st["undecidable"]), u(st["nonfinite"]), invalidCounts(st),
+                       u(st["iteration_limit"]), u(st["out_of_range"]),
+                       u(st["skipped"]) + (na ? fmt::format(" ({} n/a)", na) : "") +
+                           pluginCounts(st),
+                       g(e["abs"]["max"]), g(e["abs"]["p99"]), g(e["normalized"]["max"]),
+                       g(e["normalized"]["p99"]), g(e["ulps"]["p99"]), g(e["witness"]["max"]),
+                       st["iterations"]["mean"].get<double>(), st["iterations"]["max"].get<int>(),
+                       g(st["ns_per_query"], "{:.1f}"), g(st["ratio_to_baseline"], "{:.2f}"));
 }
 
 // A correctly rounded variant: the share of the queries each path decided.
@@ -279,12 +371,12 @@ std::string familyMarkdown(const Json& r, const Json& f, const std::map<std::str
                                                    : (m["ok"].get<bool>() ? "ok" : "**FAILED**"));
         s += "\n\n";
     }
-    s += "| variant | cases | fail | false ovl | false sep | undecid. | nonfinite | invalid | "
-         "iter lim | out of range | "
+    s += "| variant | cases | breaks contract | outside bound | false ovl | false sep | undecid. | "
+         "nonfinite | invalid | iter lim | out of range | "
          "skipped | max abs | p99 abs | max norm | p99 norm | p99 ulps | max witness | iters "
          "mean/max | "
          "ns/query | x base |\n"
-         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+         "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& [name, st] : f["variants"].items())
         s += statsRow(name, st, isJudged(judged, name));
     for (const auto& [name, st] : f["variants"].items())
@@ -354,13 +446,37 @@ std::string renderMarkdown(const Json& r)
     return s + worstMarkdown(r);
 }
 
+namespace
+{
+bool isOwn(const std::map<std::string, bool>& m, const std::string& name)
+{
+    const auto it = m.find(name);
+    return it == m.end() || it->second;
+}
+
+// A family x variant's verdict in words: FAIL (a judged variant broke its contract); for a
+// comparison variant held to gjk2d's own contract "fails (not judged)", for one with a contract
+// of its own "breaks its contract" or "outside gjk2d's bound" (keeping it), never "fails".
+std::string verdictWords(const Json& st, bool judgedVariant, bool ownContract)
+{
+    if (violations(st) > 0)
+        return judgedVariant
+                   ? "  FAIL"
+                   : (ownContract ? "  fails (not judged)" : "  breaks its contract (not judged)");
+    return !ownContract && outsideBound(st) > 0 ? "  outside gjk2d's bound" : "";
+}
+} // namespace
+
 std::string terminalTable(const Json& r)
 {
+    // The columns: broke, the answers that break their implementation's contract (gjk2d's own
+    // variants: failures); beyond, the answers that keep it but are beyond gjk2d's bound.
     std::string s;
-    const auto judged = judgedMap(r);
-    s += fmt::format("{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}\n",
-                     "family", "variant", "cases", "fail", "undec", "max abs", "max norm",
-                     "p99 norm", "p99 ulps", "iters", "ns/query", "x base");
+    const auto judged = judgedMap(r), own = ownMap(r);
+    s += fmt::format("{:<28} {:<21} {:>7} {:>5} {:>6} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} "
+                     "{:>6}\n",
+                     "family", "variant", "cases", "broke", "beyond", "undec", "max abs",
+                     "max norm", "p99 norm", "p99 ulps", "iters", "ns/query", "x base");
     for (const auto& f : r["families"])
     {
         bool first = true;
@@ -370,15 +486,15 @@ std::string terminalTable(const Json& r)
             std::string fam = first ? f["name"].get<std::string>() : "";
             if (fam.size() > 28)
                 fam = fam.substr(0, 25) + "...";
-            const bool failed = st["failures"].get<std::uint64_t>() > 0;
             s += fmt::format(
-                "{:<28} {:<21} {:>7} {:>5} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} {:>6}{}\n",
-                fam, name, u(st["cases"]), u(st["failures"]), u(st["undecidable"]),
+                "{:<28} {:<21} {:>7} {:>5} {:>6} {:>5} {:>9} {:>9} {:>9} {:>9} {:>5} {:>8} "
+                "{:>6}{}\n",
+                fam, name, u(st["cases"]), violations(st), outsideBound(st), u(st["undecidable"]),
                 g(e["abs"]["max"], "{:.2g}"), g(e["normalized"]["max"], "{:.3g}"),
                 g(e["normalized"]["p99"], "{:.2g}"), g(e["ulps"]["p99"], "{:.2g}"),
                 st["iterations"]["max"].get<int>(), g(st["ns_per_query"], "{:.1f}"),
                 g(st["ratio_to_baseline"], "{:.2f}"),
-                !failed ? "" : (isJudged(judged, name) ? "  FAIL" : "  fails (not judged)"));
+                verdictWords(st, isJudged(judged, name), isOwn(own, name)));
             first = false;
             const auto oor = st["out_of_range"].get<std::uint64_t>(),
                        skipped = st["skipped"].get<std::uint64_t>();
@@ -399,6 +515,25 @@ namespace
 std::uint64_t count(const Json& st, const char* key)
 {
     return st.contains(key) && st[key].is_number() ? st[key].get<std::uint64_t>() : 0;
+}
+
+// One line for a family x variant with a contract of its own that breaks it or is outside gjk2d's
+// bound: its violations with their reasons, the answers outside the bound that keep it, the
+// penetration depths not judged yet.
+std::string contractLine(const std::string& family, const std::string& name, const Json& st,
+                         bool judgedVariant)
+{
+    const std::uint64_t broken = violations(st);
+    const std::string what = broken == 0     ? "outside gjk2d's bound"
+                             : judgedVariant ? "FAIL: breaks its contract"
+                                             : "breaks its contract";
+    std::string detail = fmt::format("{} contract violation(s)", violationCounts(st));
+    detail += fmt::format(", {} outside gjk2d's bound keeping its contract", outsideBound(st));
+    if (count(st, "depth_unjudged") > 0)
+        detail +=
+            fmt::format(", {} penetration depth(s) not judged yet", count(st, "depth_unjudged"));
+    std::string fam = family.size() > 28 ? family.substr(0, 25) + "..." : family;
+    return fmt::format("  {:<28} {:<21} {:<19} {}\n", fam, name, what, detail);
 }
 
 // One line for a family x variant that failed or gave a wrong overlap answer: what and how much.
@@ -448,28 +583,46 @@ std::string witnessFallbackLine(const Json& r)
 }
 } // namespace
 
+namespace
+{
+// A line per family x variant that failed or misclassified (gjk2d's own contract), or breaks its
+// declared contract or is outside gjk2d's bound keeping it, and per failed make-up check; `pairs`
+// counts the family x variant pairs.
+std::string problemLines(const Json& r, std::size_t& pairs)
+{
+    const auto judged = judgedMap(r), own = ownMap(r);
+    std::string problems;
+    for (const auto& f : r["families"])
+    {
+        const std::string family = f["name"].get<std::string>();
+        for (const auto& [name, st] : f["variants"].items())
+        {
+            ++pairs;
+            if (!isOwn(own, name))
+            {
+                if (violations(st) > 0 || outsideBound(st) > 0)
+                    problems += contractLine(family, name, st, isJudged(judged, name));
+            }
+            else if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
+                     count(st, "false_separation") > 0)
+                problems += problemLine(family, name, st, isJudged(judged, name));
+        }
+        for (const auto& m : f["makeup"])
+            if (!m["ok"].get<bool>())
+                problems += fmt::format("  {:<28} make-up check failed: {} = {} not in [{}, {}]\n",
+                                        family, m["check"].get<std::string>(), g(m["value"]),
+                                        g(m["min"]), g(m["max"]));
+    }
+    return problems;
+}
+} // namespace
+
 std::string terminalSummary(const Json& r)
 {
     std::string s;
     const auto judged = judgedMap(r);
     std::size_t pairs = 0, judgedCount = 0;
-    std::string problems;
-    for (const auto& f : r["families"])
-    {
-        for (const auto& [name, st] : f["variants"].items())
-        {
-            ++pairs;
-            if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
-                count(st, "false_separation") > 0)
-                problems +=
-                    problemLine(f["name"].get<std::string>(), name, st, isJudged(judged, name));
-        }
-        for (const auto& m : f["makeup"])
-            if (!m["ok"].get<bool>())
-                problems += fmt::format("  {:<28} make-up check failed: {} = {} not in [{}, {}]\n",
-                                        f["name"].get<std::string>(), m["check"].get<std::string>(),
-                                        g(m["value"]), g(m["min"]), g(m["max"]));
-    }
+    const std::string problems = problemLines(r, pairs);
     for (const auto& v : r["variants"])
         judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
     const Json& c = r["context"];
@@ -480,8 +633,10 @@ std::string terminalSummary(const Json& r)
     if (problems.empty())
         s += "no family x variant failed or answered overlap wrongly\n";
     else
-        s += fmt::format("failed or misclassified (false overlap or separation), family x variant "
-                         "({} pairs in all; --verbose or report.md for the full table):\n{}",
+        s += fmt::format("failed or misclassified (false overlap or separation), or, for an "
+                         "implementation with a contract of its own, breaks its contract or is "
+                         "outside gjk2d's bound, family x variant ({} pairs in all; --verbose or "
+                         "report.md for the full table):\n{}",
                          pairs, problems);
     if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
         s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
@@ -506,7 +661,8 @@ std::string terminalSummary(const Json& r)
     for (const auto& f : r["families"])
         families.push_back(&f);
     s += truthLines(r, families);
-    s += fmt::format("result: {}; comparison variants: {} failure(s), shown, not judged\n",
+    s += fmt::format("result: {}; comparison variants: {} contract violation(s) (gjk2d's own "
+                     "variants': failures), shown, not judged\n",
                      resultText(r), comparisonFailures(r, judged));
     return s;
 }
@@ -523,7 +679,7 @@ std::string failureCauses(const Json& r)
     {
         for (const auto& [name, st] : f["variants"].items())
             if (isJudged(judged, name))
-                failures += st["failures"].get<std::uint64_t>();
+                failures += violations(st); // gjk2d's own: its failures
         makeup += f.contains("makeup_ok") && !f["makeup_ok"].get<bool>() ? 1 : 0;
     }
     std::string s = failures > 0 ? fmt::format("{} judged variant failure(s)", failures) : "";

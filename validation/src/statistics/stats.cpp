@@ -189,6 +189,57 @@ IterHist IterHist::fromState(const Json& j)
     return h;
 }
 
+void WorstViolation::add(double e, const std::string& name, std::uint64_t i, Violation why)
+{
+    // NaN (a ratio of nothing) ranks as +inf: a violation without a size is the worst.
+    const double key = std::isnan(e) ? INFINITY : e;
+    if (any && !(key > excess || (key == excess && i < index)))
+        return;
+    any = true;
+    excess = key;
+    caseName = name;
+    index = i;
+    reason = why;
+}
+
+void WorstViolation::merge(const WorstViolation& o)
+{
+    if (o.any)
+        add(o.excess, o.caseName, o.index, o.reason);
+}
+
+Json WorstViolation::toJson() const
+{
+    if (!any)
+        return nullptr;
+    return Json{{"case", caseName}, {"reason", violationName(reason)}, {"excess", num(excess)}};
+}
+
+Json WorstViolation::state() const
+{
+    if (!any)
+        return nullptr;
+    return Json{
+        {"excess", num(excess)}, {"case", caseName}, {"index", index}, {"reason", int(reason)}};
+}
+
+WorstViolation WorstViolation::fromState(const Json& j)
+{
+    WorstViolation w;
+    if (j.is_null())
+        return w;
+    w.any = true;
+    const Json& e = j.at("excess");
+    w.excess = e.is_string() ? INFINITY : e.get<double>(); // num() writes +inf as "inf"
+    w.caseName = j.at("case").get<std::string>();
+    w.index = j.at("index").get<std::uint64_t>();
+    const int r = j.at("reason").get<int>();
+    if (r < 1 || r > kViolationReasons)
+        throw std::runtime_error("stats state: a worst violation without a reason");
+    w.reason = Violation(r);
+    return w;
+}
+
 namespace
 {
 template <typename T, std::size_t N>
@@ -221,6 +272,8 @@ void Stats::merge(const Stats& o)
     hasPaths = hasPaths || o.hasPaths;
     iterations.merge(o.iterations);
     addEach(invalidReasons, o.invalidReasons);
+    addEach(violationReasons, o.violationReasons);
+    worstViolation.merge(o.worstViolation);
     addEach(stops, o.stops);
 }
 
@@ -241,9 +294,14 @@ Json Stats::state() const
         for (const PathField& f : kPathFields)
             paths.push_back(this->*f.member);
     }
-    return Json{{"counts", std::move(counts)},         {"flags", std::move(flags)},
-                {"histograms", std::move(histograms)}, {"paths", std::move(paths)},
-                {"invalid_reasons", invalidReasons},   {"stops", stops},
+    return Json{{"counts", std::move(counts)},
+                {"flags", std::move(flags)},
+                {"histograms", std::move(histograms)},
+                {"paths", std::move(paths)},
+                {"invalid_reasons", invalidReasons},
+                {"violation_reasons", violationReasons},
+                {"worst_violation", worstViolation.state()},
+                {"stops", stops},
                 {"iterations", iterations.state()}};
 }
 
@@ -266,6 +324,8 @@ Stats Stats::fromState(const Json& j)
             s.*kPathFields[i].member = p[i];
     }
     copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
+    copyExactly(s.violationReasons, j.at("violation_reasons"), "contract violation reasons");
+    s.worstViolation = WorstViolation::fromState(j.at("worst_violation"));
     copyExactly(s.stops, j.at("stops"), "stop reasons");
     s.iterations = IterHist::fromState(j.at("iterations"));
     return s;
@@ -291,6 +351,23 @@ void writeCounts(const Stats& s, Json& j)
                 reasons[invalidName(Invalid(i + 1))] = s.invalidReasons[std::size_t(i)];
             j["invalid_reasons"] = std::move(reasons);
         }
+    }
+    for (const CountField& f : kCountFields)
+    {
+        if (f.section != Section::Contract)
+            continue;
+        if (f.member != &Stats::contractViolations)
+        {
+            j[f.name] = s.*f.member;
+            continue;
+        }
+        Json reasons = Json::object(); // the reasons that occur, in Violation's order
+        for (int i = 0; i < kViolationReasons; ++i)
+            if (s.violationReasons[std::size_t(i)] > 0)
+                reasons[violationName(Violation(i + 1))] = s.violationReasons[std::size_t(i)];
+        j[f.name] = {{"count", s.contractViolations},
+                     {"reasons", std::move(reasons)},
+                     {"worst", s.worstViolation.toJson()}};
     }
 }
 
@@ -409,6 +486,21 @@ void addJudged(Stats& s, const VariantOutcome& v, const std::string& name, std::
     s.witnessRatio.add(v.witnessRatio, name, index); // NaN (not checked) is ignored
 }
 
+// The answer's class by its implementation's contract: a violation (by reason, the worst kept),
+// or, keeping it, judged and beyond gjk2d's bound; and a penetration depth left unjudged.
+void addContract(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index)
+{
+    if (!v.keepsContract())
+    {
+        ++s.contractViolations;
+        ++s.violationReasons[std::size_t(v.violation) - 1];
+        s.worstViolation.add(v.violationExcess, name, index, v.violation);
+    }
+    else if (!v.outOfRange && v.beyondBound)
+        ++s.beyondBoundKeepingContract;
+    s.depthUnjudged += v.depthUnjudged ? 1 : 0;
+}
+
 // Certified variants: the interval given, whether it holds the truth, its width.
 void addInterval(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index,
                  const VariantInfo& vi)
@@ -443,6 +535,7 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
     ++cases;
     addTruth(*this, vi.scalar == Scalar::Float ? o.exactFloat.fallbacks : o.exact.fallbacks);
     failures += v.failed ? 1 : 0;
+    addContract(*this, v, name, index);
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
     {
         pluginErrors += v.plugin == PluginStatus::Error ? 1 : 0;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "common/common.hpp"
+#include "evaluate/violation.hpp"
 #include "statistics/exact_sum.hpp"
 
 #include "gjk2d/distance.hpp"
@@ -66,6 +67,25 @@ struct IterHist
 
 inline constexpr int kStopReasons = int(gjk::stopReasonCount);
 
+// A family x variant's worst contract violation: the largest excess (the measured over the
+// allowed, VariantOutcome::violationExcess; +inf for one without a size), ties to the earlier case,
+// so that it merges exactly in any order, as Hist's maximum does. The case name is what
+// `gjk-validate repro` and `explain` take.
+struct WorstViolation
+{
+    bool any = false;
+    double excess = 0;
+    std::string caseName;
+    std::uint64_t index = 0; // the case's place in its family
+    Violation reason = Violation::None;
+    void add(double e, const std::string& name, std::uint64_t i, Violation why);
+    void merge(const WorstViolation& o);
+    // {"case", "reason", "excess"}, or null when there is none.
+    Json toJson() const;
+    Json state() const; // null when there is none; fromState(state()) == *this
+    static WorstViolation fromState(const Json& j);
+};
+
 struct VariantOutcome; // evaluate/evaluate.hpp (below statistics/ in the pipeline)
 struct VariantInfo;
 struct CaseOutcome;
@@ -82,6 +102,14 @@ struct Stats
     // witness bound), each also a failure; by reason (Invalid, common.hpp: [r - 1] for reason r).
     std::uint64_t invalid = 0;
     std::array<std::uint64_t, kInvalidReasons> invalidReasons{};
+    // The verdict by each implementation's own contract (evaluate/contract_judge.cpp; for gjk2d's
+    // own contract the same answers as `failures`): answers that break it, by reason (Violation:
+    // [r - 1] for reason r), and the worst; judged answers that keep it but are beyond gjk2d's
+    // bound (class 2, a measured accuracy: of `beyond_bound`); penetration answers on overlap that
+    // keep every judged clause, whose depth is not judged yet (issue 51).
+    std::uint64_t contractViolations = 0, beyondBoundKeepingContract = 0, depthUnjudged = 0;
+    std::array<std::uint64_t, kViolationReasons> violationReasons{};
+    WorstViolation worstViolation;
     std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
     std::uint64_t notApplicable = 0; // of which: the variant's precondition fails (convex order)
     // Plugin variants (implementations/plugins.hpp): cases the implementation refused (not run, not
@@ -134,13 +162,15 @@ struct Stats
 // checkpoints) and `gjk-validate compare` (the rows with `regresses`) all read these tables.
 // Rows are in the report's order; where a member sits in the report is its Section. The report
 // writes three derived fields beside a row: "pass" after failures, "invalid_reasons" after
-// invalid, "misses" after contains (stats.cpp, toJson). The state is the tables in their order
-// (docs/report-schema.md, StatsState): a row added, renamed or removed changes it, so bump the
-// state's version with it (kShardSchema, kCheckpointSchema and kOldStateVersions in
+// invalid, "misses" after contains (stats.cpp, toJson); and the Contract rows after the Top ones,
+// contract_violations as an object with its reasons and worst case. The state is the tables in
+// their order (docs/report-schema.md, StatsState): a row added, renamed or removed changes it, so
+// bump the state's version with it (kShardSchema, kCheckpointSchema and kOldStateVersions in
 // campaign/campaign.hpp).
 enum class Section : std::uint8_t
 {
     Top,      // report: top level (a histogram: under "errors")
+    Contract, // report: top level after the Top rows; contract_violations as {"count", ...}
     Interval, // report: under "interval" (certified variants)
     Correct,  // report: under "correct" (correctly rounded variants)
     Truth,    // report: under "truth", the last key
@@ -166,6 +196,11 @@ inline constexpr CountField kCountFields[] = {
     {"beyond_bound", &Stats::beyondBound, Section::Top, true},
     {"invalid", &Stats::invalid, Section::Top, true},
     {"skipped", &Stats::skipped, Section::Top, true},
+    // `compare` reads contract_violations.count (its own row; the Contract rows are not top-level
+    // numbers there), flagging any increase.
+    {"contract_violations", &Stats::contractViolations, Section::Contract, true},
+    {"beyond_bound_keeping_contract", &Stats::beyondBoundKeepingContract, Section::Contract, false},
+    {"depth_unjudged", &Stats::depthUnjudged, Section::Contract, false},
     {"not_applicable", &Stats::notApplicable, Section::Top, false},
     {"refused", &Stats::refused, Section::Top, false},
     {"plugin_errors", &Stats::pluginErrors, Section::Top, false},

@@ -1,0 +1,351 @@
+// Each answer judged by its implementation's contract (evaluate/contract_judge.cpp, issue 49), on
+// hand-made answers with expected verdicts worked out by hand: every overlap kind and every reason
+// of a declared contract, the tolerances T and W, the measure on max(d, 0) of the signed kinds, and
+// gjk2d's own contract, whose violations are exactly its failures. The answers are judged as the
+// runner judges a plugin's (judge(), then phase 3 on the case's real shapes), once for a double
+// and once for a float implementation: every shape and point here is exact in float.
+#include "evaluate/evaluate.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace gjkval;
+
+namespace
+{
+exact::Result truthOf(double d, bool overlap = false)
+{
+    exact::Result r;
+    r.overlap = overlap;
+    r.distance = r.lower = r.upper = d;
+    return r;
+}
+
+ShapeIn square(double x0, double y0, double side)
+{
+    ShapeIn s;
+    s.points = {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};
+    return s;
+}
+
+ShapeIn point(double x, double y, double radius = 0)
+{
+    ShapeIn s;
+    s.points = {{x, y}};
+    s.radius = radius;
+    return s;
+}
+
+Case caseOf(ShapeIn a, ShapeIn b)
+{
+    Case c;
+    c.name = "hand";
+    c.a = std::move(a);
+    c.b = std::move(b);
+    return c;
+}
+
+// An implementation of scalar s with contract `c`, as a loaded plugin's variant.
+struct Implementation
+{
+    PluginImpl impl;
+    VariantInfo info;
+    Implementation(Scalar s, const Contract& c)
+        : info{"hand-" + std::string(scalarName(s)), s, gjk::Options{}, "test", false}
+    {
+        impl.contract = c;
+        info.plugin = &impl;
+    }
+};
+
+Contract declared(Overlap kind, double abs = -1, double rel = -1)
+{
+    Contract c;
+    c.own = false;
+    c.overlap = kind;
+    c.absTolerance = abs;
+    c.relTolerance = rel;
+    c.toleranceSource = abs >= 0 || rel >= 0 ? "the test" : "";
+    return c;
+}
+
+// The answer (d, pA, pB) of `im` on case c with the exact truth `truth` (by hand: the case's own,
+// or one that no case could give), gjk2d's bounds set by hand (bound 2^-30, witness bound 2^-2),
+// judged: judge(), then phase 3 (the witness points' exact distances to the case's shapes, and the
+// contract verdict).
+VariantOutcome judged(const Implementation& im, const Case& c, const exact::Result& truth, double d,
+                      std::array<double, 2> pA, std::array<double, 2> pB,
+                      PluginStatus status = PluginStatus::Ok)
+{
+    VariantOutcome v;
+    v.plugin = status;
+    if (status != PluginStatus::Ok)
+        v.failed = true; // as takePluginAnswer leaves it
+    else
+    {
+        v.distance = d;
+        v.pointA = pA;
+        v.pointB = pB;
+        v.R = 1;
+        v.bound = 0x1p-30;
+        v.witnessBound = 0x1p-2;
+        judge(v, truth, im.info.scalar, false, contractOf(im.info).overlap);
+    }
+    EvalContext ctx;
+    ctx.variants = {&im.info};
+    CaseOutcome o;
+    computeTruth(c, ctx, o); // the case's prepared shapes, which phase 3 reads, as in a campaign
+    REQUIRE(o.rejected.empty());
+    o.variants = {v};
+    checkWitnesses(c, ctx, o);
+    return o.variants[0];
+}
+
+std::string reason(const VariantOutcome& v)
+{
+    const char* n = violationName(v.violation);
+    return n ? n : "none";
+}
+
+const Scalar kScalars[] = {Scalar::Double, Scalar::Float};
+} // namespace
+
+TEST_CASE(
+    "a declared contract on separated shapes: the tolerance, the claim of overlap, the points",
+    "[contract]")
+{
+    // A the point (0, 0), B the point (3, 0): exact 3. T = 1e-6 (abs), W = max(2^-2, T) = 2^-2.
+    const Case c = caseOf(point(0, 0), point(3, 0));
+    const exact::Result t = truthOf(3);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Zero, 1e-6));
+        // Within T but beyond gjk2d's bound (2^-30): keeps it, outside the bound (class 2).
+        const VariantOutcome near = judged(im, c, t, 3 + 5e-7, {0, 0}, {3, 0});
+        CHECK(near.tolerance == 1e-6);
+        CHECK(near.witnessTolerance == 0.25);
+        CHECK(near.keepsContract());
+        CHECK(near.beyondBound);
+        CHECK(std::string(answerClassName(near)) == "outside_bound");
+        // 2e-6 off: beyond T, a violation by distance of excess 2e-6 / 1e-6.
+        const VariantOutcome off = judged(im, c, t, 3 + 2e-6, {0, 0}, {3, 0});
+        CHECK(reason(off) == "distance");
+        CHECK(off.violationExcess == Approx(2).epsilon(1e-6));
+        CHECK(std::string(answerClassName(off)) == "breaks_contract");
+        // A claim of overlap (-1) on shapes 3 apart: false_overlap, excess 3 / 1e-6.
+        const VariantOutcome claim = judged(im, c, t, -1, {0, 0}, {0, 0});
+        CHECK(reason(claim) == "false_overlap");
+        CHECK(claim.violationExcess == Approx(3e6));
+        // A's point 0.5 off A (W = 0.25): witness_off_shape, excess 0.5 / 0.25; on W: keeps it.
+        CHECK(reason(judged(im, c, t, 3, {0, 0.5}, {3, 0.5})) == "witness_off_shape");
+        CHECK(judged(im, c, t, 3, {0, 0.5}, {3, 0.5}).violationExcess == 2);
+        CHECK(judged(im, c, t, 3, {0, 0.25}, {3, 0.25}).keepsContract());
+        // A the square [-1, 0]^2 (exact 3 from (3, 0) still): (0, -0.5) is on A, the gap
+        // sqrt(9.25) - 3 = 0.04 < W: keeps it; B's point at (2.5, 0) is 0.5 off B.
+        const Case wide = caseOf(square(-1, -1, 1), point(3, 0));
+        CHECK(reason(judged(im, wide, t, 3, {0, -0.5}, {3, 0})) == "none");
+        CHECK(reason(judged(im, wide, t, 3, {0, 0}, {2.5, 0})) == "witness_off_shape");
+        // A the square [0, 1]^2 against (3, 0): exact 2. (1, 0) and (3, 0): keeps it. (0, 0), on
+        // A too, is 3 from (3, 0): the gap 3 - 2 = 1 > W: witness_gap.
+        const Case line = caseOf(square(0, 0, 1), point(3, 0));
+        CHECK(judged(im, line, truthOf(2), 2, {1, 0}, {3, 0}).keepsContract());
+        CHECK(reason(judged(im, line, truthOf(2), 2, {0, 0}, {3, 0})) == "witness_gap");
+    }
+}
+
+TEST_CASE("a declared contract's tolerance: abs + rel * exact, either alone, or gjk2d's bound",
+          "[contract]")
+{
+    const Case c = caseOf(point(0, 0), point(4, 0));
+    const exact::Result t = truthOf(4);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        // rel 1e-6 alone: T = 4e-6; abs 1e-6 + rel 1e-6: T = 5e-6.
+        const VariantOutcome rel =
+            judged(Implementation(s, declared(Overlap::Zero, -1, 1e-6)), c, t, 4, {0, 0}, {4, 0});
+        CHECK(rel.tolerance == Approx(4e-6));
+        const VariantOutcome both =
+            judged(Implementation(s, declared(Overlap::Zero, 1e-6, 1e-6)), c, t, 4, {0, 0}, {4, 0});
+        CHECK(both.tolerance == Approx(5e-6));
+        // Nothing stated: gjk2d's bound (2^-30) and witness bound hold it.
+        const Implementation none(s, declared(Overlap::Zero));
+        const VariantOutcome in = judged(none, c, t, 4 + 0x1p-31, {0, 0}, {4, 0});
+        CHECK(in.tolerance == 0x1p-30);
+        CHECK(in.witnessTolerance == 0x1p-2);
+        CHECK(in.keepsContract());
+        CHECK(reason(judged(none, c, t, 4 + 0x1p-28, {0, 0}, {4, 0})) == "distance");
+    }
+}
+
+TEST_CASE("zero: on overlap only the sign is judged, and the error is measured on max(d, 0)",
+          "[contract]")
+{
+    // Squares [0, 2]^2 and [1, 3]^2 overlap: exact 0.
+    const Case c = caseOf(square(0, 0, 2), square(1, 1, 2));
+    const exact::Result t = truthOf(0, true);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Zero, 1e-6));
+        // FCL's -1 with points (0, 0) far outside B: keeps it; error max(-1, 0) - 0 = 0: within
+        // gjk2d's bound. gjk2d's own rules call it invalid (a measure here, not the verdict).
+        const VariantOutcome v = judged(im, c, t, -1, {0, 0}, {0, 0});
+        CHECK(v.keepsContract());
+        CHECK(v.abs == 0);
+        CHECK_FALSE(v.beyondBound);
+        CHECK(v.invalid == Invalid::NegativeDistance);
+        CHECK(std::string(answerClassName(v)) == "within_bound");
+        // Non-finite points are not judged on overlap either; a non-finite distance is.
+        CHECK(judged(im, c, t, 0, {NAN, 0}, {0, 0}).keepsContract());
+        CHECK(reason(judged(im, c, t, NAN, {0, 0}, {0, 0})) == "nonfinite");
+        // A distance within T is not a separation; 0.5 is: false_separation, excess 0.5 / T.
+        CHECK(judged(im, c, t, 5e-7, {0, 0}, {0, 0}).keepsContract());
+        const VariantOutcome sep = judged(im, c, t, 0.5, {2, 1}, {2.5, 1});
+        CHECK(reason(sep) == "false_separation");
+        CHECK(sep.violationExcess == Approx(5e5));
+    }
+}
+
+TEST_CASE("zero: a claim of overlap within the tolerance of touching keeps it", "[contract]")
+{
+    // Unit squares 2^-22 apart (FCL's default distance_tolerance is 1e-6): -1 keeps it, and the
+    // error max(-1, 0) against 2^-22 is beyond gjk2d's bound: class 2. 2^-19 apart (1.9e-6): no.
+    const exact::Result near = truthOf(0x1p-22), far = truthOf(0x1p-19);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Zero, 1e-6));
+        const VariantOutcome v = judged(im, caseOf(square(0, 0, 1), square(1 + 0x1p-22, 0, 1)),
+                                        near, -1, {0, 0}, {0, 0});
+        CHECK(v.keepsContract());
+        CHECK(v.abs == 0x1p-22);
+        CHECK(std::string(answerClassName(v)) == "outside_bound");
+        CHECK(reason(judged(im, caseOf(square(0, 0, 1), square(1 + 0x1p-19, 0, 1)), far, -1, {0, 0},
+                            {0, 0})) == "false_overlap");
+    }
+}
+
+TEST_CASE("common-point: as gjk2d's own on overlap, and no negative distance", "[contract]")
+{
+    const Case c = caseOf(square(0, 0, 2), square(1, 1, 2));
+    const exact::Result t = truthOf(0, true);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::CommonPoint));
+        CHECK(judged(im, c, t, 0, {1.5, 1.5}, {1.5, 1.5}).keepsContract());
+        // (0.5, 0.5) is in A and 0.71 from B, so not a second common point: the gap
+        // ||pB - pA|| = 1.41 > W (2^-2) is the witness_gap.
+        CHECK(reason(judged(im, c, t, 0, {0.5, 0.5}, {1.5, 1.5})) == "witness_gap");
+        // A point off its own shape comes first: B's point (0.5, 0.5) is 0.71 from B.
+        CHECK(reason(judged(im, c, t, 0, {0.5, 0.5}, {0.5, 0.5})) == "witness_off_shape");
+        // Two points each in both shapes (docs/validate-your-gjk.md): kept, as gjk2d's own.
+        CHECK(judged(im, c, t, 0, {2, 2}, {1, 1}).keepsContract());
+        CHECK(reason(judged(im, c, t, -1, {1.5, 1.5}, {1.5, 1.5})) == "negative_distance");
+    }
+}
+
+TEST_CASE("midpoint: one point, within dc/2 + W of both cores", "[contract]")
+{
+    // Discs: A the point (0, 0) with radius 1, B the point (1.5, 0) with radius 1. They overlap
+    // (1.5 < 2); their cores are 1.5 apart, so dc/2 = 0.75, and with W = 2^-2 each point must be
+    // within 1 of both centres. (0.75, 0): 0.75 from each, the midpoint: keeps it. (0.75, 0.5):
+    // sqrt(0.5625 + 0.25) = 0.90: keeps it. (0.75, 0.75): sqrt(1.125) = 1.06: midpoint_off, excess
+    // 1.06 / 1. planck's pointA - pointB = (-1.5, 0): 3 from B's core: midpoint_off, excess 3.
+    const Case discs = caseOf(point(0, 0, 1), point(1.5, 0, 1));
+    // Squares overlapping at radius 0: the cores overlap (dc = 0): a common point within W.
+    const Case squares = caseOf(square(0, 0, 2), square(1, 1, 2));
+    const exact::Result t = truthOf(0, true);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Midpoint));
+        CHECK(judged(im, discs, t, 0, {0.75, 0}, {0.75, 0}).keepsContract());
+        CHECK(judged(im, discs, t, 0, {0.75, 0.5}, {0.75, 0.5}).keepsContract());
+        const VariantOutcome off = judged(im, discs, t, 0, {0.75, 0.75}, {0.75, 0.75});
+        CHECK(reason(off) == "midpoint_off");
+        CHECK(off.violationExcess == Approx(std::sqrt(1.125)));
+        const VariantOutcome planck = judged(im, discs, t, 0, {-1.5, 0}, {-1.5, 0});
+        CHECK(reason(planck) == "midpoint_off");
+        CHECK(planck.violationExcess == Approx(3));
+        // Two points 0.5 apart: witness_gap (||pA - pB|| > W), before the cores.
+        CHECK(reason(judged(im, discs, t, 0, {0.5, 0}, {1, 0})) == "witness_gap");
+        CHECK(judged(im, squares, t, 0, {1.5, 1.5}, {1.5, 1.5}).keepsContract());
+        CHECK(reason(judged(im, squares, t, 0, {0.5, 0.5}, {0.5, 0.5})) == "midpoint_off");
+        CHECK(reason(judged(im, squares, t, -0.25, {1.5, 1.5}, {1.5, 1.5})) == "negative_distance");
+    }
+}
+
+TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth, which is not judged yet",
+          "[contract]")
+{
+    // Squares [0, 2]^2 and [1, 3]^2: the depth is 1 (along x or y). A's point (2, 1.5) and B's
+    // (1, 1.5), d = -1: each on its shape, ||pA - pB|| = 1 = |d|: keeps every clause judged, its
+    // depth unjudged. B's point at (1.5, 1.5): | 0.5 - 1 | = 0.5 > W: penetration_gap. A's point at
+    // (2.5, 1.5), 0.5 off A: witness_off_shape.
+    const Case c = caseOf(square(0, 0, 2), square(1, 1, 2));
+    const exact::Result t = truthOf(0, true);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Penetration));
+        const VariantOutcome v = judged(im, c, t, -1, {2, 1.5}, {1, 1.5});
+        CHECK(v.keepsContract());
+        CHECK(v.depthUnjudged);
+        CHECK(v.abs == 0); // measured on max(d, 0)
+        CHECK(reason(judged(im, c, t, -1, {2, 1.5}, {1.5, 1.5})) == "penetration_gap");
+        CHECK_FALSE(judged(im, c, t, -1, {2, 1.5}, {1.5, 1.5}).depthUnjudged);
+        CHECK(reason(judged(im, c, t, -1, {2.5, 1.5}, {1, 1.5})) == "witness_off_shape");
+    }
+}
+
+TEST_CASE("an error status, a crash or a hang breaks a declared contract", "[contract]")
+{
+    const Case c = caseOf(point(0, 0), point(3, 0));
+    for (Scalar s : kScalars)
+    {
+        const Implementation im(s, declared(Overlap::Zero, 1e-6));
+        CHECK(reason(judged(im, c, truthOf(3), 0, {}, {}, PluginStatus::Error)) == "error");
+        CHECK(reason(judged(im, c, truthOf(3), 0, {}, {}, PluginStatus::Crashed)) == "crashed");
+        const VariantOutcome hung = judged(im, c, truthOf(3), 0, {}, {}, PluginStatus::Hung);
+        CHECK(reason(hung) == "hung");
+        CHECK(hung.violationExcess == INFINITY);
+    }
+}
+
+TEST_CASE("gjk2d's own contract: a violation is exactly a failure, named by its first reason",
+          "[contract]")
+{
+    // A gjk2d variant's answers through the whole pipeline (evaluateCase, the real truth).
+    for (const char* name : {"double", "float"})
+    {
+        INFO(name);
+        const VariantInfo* v = findVariant(name);
+        REQUIRE(contractOf(*v).own);
+        EvalContext ctx;
+        ctx.variants = {v};
+        const CaseOutcome o = evaluateCase(caseOf(square(0, 0, 1), point(3, 0.5)), ctx);
+        const VariantOutcome& right = o.variants[0];
+        CHECK_FALSE(right.failed);
+        CHECK(right.keepsContract());
+        CHECK(right.tolerance == right.bound);
+        CHECK(std::string(answerClassName(right)) == "within_bound");
+    }
+    // Hand-made failures of `double` (its own contract): the reason follows failedAnswer's.
+    const Implementation own(Scalar::Double, ownContract());
+    const Case c = caseOf(point(0, 0), point(3, 0));
+    const VariantOutcome beyond = judged(own, c, truthOf(3), 3.5, {0, 0}, {3.5, 0});
+    CHECK(beyond.failed);
+    CHECK(reason(beyond) == "witness_off_shape"); // (3.5, 0) is 0.5 from B: invalid first
+    const VariantOutcome dist = judged(own, c, truthOf(3), 3 + 0x1p-20, {0, 0}, {3, 0});
+    CHECK(dist.failed);
+    CHECK(reason(dist) == "distance");
+    CHECK(dist.violationExcess == dist.boundRatio);
+    const VariantOutcome neg = judged(own, c, truthOf(3), -1, {0, 0}, {3, 0});
+    CHECK(reason(neg) == "negative_distance");
+    CHECK(reason(judged(own, c, truthOf(3), 0, {}, {}, PluginStatus::Crashed)) == "crashed");
+}

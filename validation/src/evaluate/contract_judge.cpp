@@ -1,0 +1,255 @@
+// Each answer judged by its implementation's own contract (implementations/contract.hpp; docs/
+// validation.md, "Contracts"): the first of three classes of an answer (a contract violation, with
+// its reason; then keeping the contract but beyond gjk2d's bound; then within it). gjk2d's own
+// contract is gjk2d's judge: a violation is exactly `failed` (failedAnswer), named by its first
+// reason. A declared contract (a version-2 plugin's) is held clause by clause, in this file's
+// order; the first clause broken names the violation.
+#include "evaluate/evaluate.hpp"
+
+#include "inputs/geometry.hpp"
+
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace gjkval
+{
+namespace
+{
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// measured / allowed, +inf when nothing is allowed (a tolerance of 0).
+double excessOf(double measured, double allowed)
+{
+    return allowed > 0 ? measured / allowed : kInf;
+}
+
+void breaks(VariantOutcome& v, Violation why, double excess = kInf)
+{
+    v.violation = why;
+    v.violationExcess = excess;
+}
+
+// gjk2d's own contract: failedAnswer's reasons, the first that applies in the enum's order (a
+// plugin's status, non-finite, invalid, then the distance's own: misclassified or beyond the bound,
+// then gjk2d's special variants' iteration limit, interval and bits). The excess of a distance
+// reason is the error over the bound, of a witness reason the witness ratio.
+void judgeOwn(VariantOutcome& v)
+{
+    v.tolerance = v.bound;
+    v.witnessTolerance = v.witnessBound;
+    if (!v.failed)
+        return;
+    if (v.plugin == PluginStatus::Error || v.plugin == PluginStatus::Crashed ||
+        v.plugin == PluginStatus::Hung)
+        return breaks(v, v.plugin == PluginStatus::Error     ? Violation::Error
+                         : v.plugin == PluginStatus::Crashed ? Violation::Crashed
+                                                             : Violation::Hung);
+    const bool judged = !v.outOfRange;
+    if (judged && v.nonfinite)
+        return breaks(v, Violation::Nonfinite);
+    if (judged && v.invalid == Invalid::NegativeDistance)
+        return breaks(v, Violation::NegativeDistance);
+    if (judged && v.invalid == Invalid::WitnessOffShape)
+        return breaks(v, Violation::WitnessOffShape, v.witnessRatio);
+    if (judged && v.invalid == Invalid::WitnessGap)
+        return breaks(v, Violation::WitnessGap, excessOf(v.witnessGap, v.witnessBound));
+    if (judged && v.mis == Misclass::FalseOverlap)
+        return breaks(v, Violation::FalseOverlap, v.boundRatio);
+    if (judged && v.mis == Misclass::FalseSeparation)
+        return breaks(v, Violation::FalseSeparation, v.boundRatio);
+    if (judged && v.beyondBound)
+        return breaks(v, Violation::Distance, v.boundRatio);
+    if (judged && v.iterationLimit)
+        return breaks(v, Violation::IterationLimit);
+    if (v.certified && !v.intervalContains)
+        return breaks(v, Violation::Interval);
+    breaks(v, Violation::BitMismatch); // the one reason left (failedAnswer)
+}
+
+// T and W for a declared contract (the answer's v.bound and v.witnessBound set): T = abs + rel *
+// exact, a clause not stated counting 0, or gjk2d's bound when neither is stated; W = max(gjk2d's
+// witness bound, T) when a tolerance is stated (a library that promises its distance to T cannot
+// promise its points closer), else gjk2d's witness bound.
+void setTolerances(VariantOutcome& v, const Contract& c)
+{
+    if (!c.statesTolerance())
+    {
+        v.tolerance = v.bound;
+        v.witnessTolerance = v.witnessBound;
+        return;
+    }
+    v.tolerance = std::max(c.absTolerance, 0.0) + std::max(c.relTolerance, 0.0) * std::abs(v.truth);
+    v.witnessTolerance = std::max(v.witnessBound, v.tolerance);
+}
+
+// Separated shapes (exact > 0): a claim of overlap keeps the contract within T of touching (its
+// points are then not judged); a distance within T; each point within W of its shape (phase 3's
+// v.witness, the larger of the two), ||pB - pA|| within W of d.
+void judgeSeparated(VariantOutcome& v, bool claimsOverlap)
+{
+    const double T = v.tolerance, W = v.witnessTolerance;
+    if (claimsOverlap)
+    {
+        if (!(v.truth <= T))
+            breaks(v, Violation::FalseOverlap, excessOf(v.truth, T));
+        return;
+    }
+    const double error = std::abs(v.distance - v.truth);
+    if (!(error <= T))
+        return breaks(v, Violation::Distance, excessOf(error, T));
+    if (!(v.witness <= W))
+        return breaks(v, Violation::WitnessOffShape, excessOf(v.witness, W));
+    if (!(v.witnessGap <= W))
+        breaks(v, Violation::WitnessGap, excessOf(v.witnessGap, W));
+}
+
+// Midpoint on overlap: both points at one point (||pA - pB|| <= W) midway between the cores. The
+// midpoint of the cores' closest points is dc/2 from each core (dc their exact distance; a common
+// point of the cores, dc = 0, when they overlap), so each point must be within dc/2 + W of both.
+// `toCores` gives a point's distances to A's core and B's core.
+template <class ToCores> void judgeMidpoint(VariantOutcome& v, ToCores&& toCores, double dc)
+{
+    const double W = v.witnessTolerance;
+    const double gap = std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]);
+    if (!(gap <= W))
+        return breaks(v, Violation::WitnessGap, excessOf(gap, W));
+    const double allowed = dc / 2 + W;
+    double worst = 0;
+    for (const auto& p : {v.pointA, v.pointB})
+    {
+        const std::array<double, 2> d = toCores(p);
+        worst = std::max({worst, d[0], d[1]});
+    }
+    if (!(worst <= allowed))
+        breaks(v, Violation::MidpointOff, excessOf(worst, allowed));
+}
+
+// Penetration on overlap: each point on its own shape within W, and ||pA - pB|| the depth |d|
+// within W. The depth itself is not judged until the exact side computes it (issue 51).
+void judgePenetration(VariantOutcome& v)
+{
+    const double W = v.witnessTolerance;
+    if (!(v.witness <= W))
+        return breaks(v, Violation::WitnessOffShape, excessOf(v.witness, W));
+    const double gap = std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) -
+                                std::abs(v.distance));
+    if (!(gap <= W))
+        return breaks(v, Violation::PenetrationGap, excessOf(gap, W));
+    v.depthUnjudged = true;
+}
+
+// The cores (the shapes at radius 0) of a case on the exact side, for a midpoint answer on
+// overlapping shapes: each point's distance to both, and their distance. Without radii the shapes
+// are their cores and overlap (dc = 0): computeTruth's prepared shapes serve; else the cores are
+// prepared here, once per case and input type, and their exact distance computed.
+class Cores
+{
+  public:
+    Cores(const Case& c, bool isFloat, const TruthShapes* truth)
+    {
+        const int t = isFloat ? 1 : 0;
+        exact::Shape a = toExact(c.a, isFloat), b = toExact(c.b, isFloat);
+        if (a.radius == 0 && b.radius == 0 && truth && truth->a[t] && truth->b[t])
+        {
+            a_ = &*truth->a[t];
+            b_ = &*truth->b[t];
+            return;
+        }
+        a.radius = b.radius = 0;
+        ownA_.emplace(std::move(a), "shape A");
+        ownB_.emplace(std::move(b), "shape B");
+        a_ = &*ownA_;
+        b_ = &*ownB_;
+        distance_ = exact::distance(*a_, *b_).distance;
+    }
+    std::array<double, 2> to(const std::array<double, 2>& p) const
+    {
+        const exact::Point q{p[0], p[1]};
+        return {exact::pointToShapeDistance(*a_, q), exact::pointToShapeDistance(*b_, q)};
+    }
+    double distance() const { return distance_; }
+
+  private:
+    std::optional<exact::PreparedShape> ownA_, ownB_;
+    const exact::PreparedShape *a_ = nullptr, *b_ = nullptr;
+    double distance_ = 0;
+};
+
+// A declared contract's verdict on one answer (phase 3 done: v.witness measured where the answer
+// was finite). `cores` gives the case's cores for this answer's input type.
+template <class GetCores> void judgeDeclared(VariantOutcome& v, const Contract& c, GetCores&& cores)
+{
+    setTolerances(v, c);
+    if (v.plugin == PluginStatus::Error)
+        return breaks(v, Violation::Error);
+    if (v.plugin == PluginStatus::Crashed)
+        return breaks(v, Violation::Crashed);
+    if (v.plugin == PluginStatus::Hung)
+        return breaks(v, Violation::Hung);
+    const bool signedKind = c.overlap == Overlap::Zero || c.overlap == Overlap::Penetration;
+    // The points are judged unless the answer is Zero's on overlapping shapes.
+    const bool pointsJudged = !(c.overlap == Overlap::Zero && v.truthZero);
+    if (!std::isfinite(v.distance) || (pointsJudged && v.nonfinite))
+        return breaks(v, Violation::Nonfinite);
+    if (!signedKind && v.distance < 0)
+        return breaks(v, Violation::NegativeDistance);
+    if (!v.truthZero)
+        return judgeSeparated(v, v.distance <= 0);
+    if (!(v.distance <= v.tolerance))
+        return breaks(v, Violation::FalseSeparation, excessOf(v.distance, v.tolerance));
+    switch (c.overlap)
+    {
+    case Overlap::Zero:
+        return;                // only the sign
+    case Overlap::CommonPoint: // as gjk2d's own: each point on its shape, the gap (phase 3's)
+        if (!(v.witness <= v.witnessTolerance))
+            return breaks(v, Violation::WitnessOffShape, excessOf(v.witness, v.witnessTolerance));
+        if (!(v.witnessGap <= v.witnessTolerance))
+            breaks(v, Violation::WitnessGap, excessOf(v.witnessGap, v.witnessTolerance));
+        return;
+    case Overlap::Midpoint:
+    {
+        const Cores& k = cores();
+        return judgeMidpoint(
+            v, [&](const std::array<double, 2>& p) { return k.to(p); }, k.distance());
+    }
+    case Overlap::Penetration:
+        return judgePenetration(v);
+    }
+}
+} // namespace
+
+void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out)
+{
+    if (!out.rejected.empty())
+        return;
+    std::optional<Cores> cores[2]; // by input type: double, float-rounded
+    for (std::size_t k = 0; k < ctx.variants.size(); ++k)
+    {
+        VariantOutcome& v = out.variants[k];
+        v.violation = Violation::None;
+        v.violationExcess = 0;
+        v.depthUnjudged = false;
+        if (v.skipped)
+            continue;
+        const VariantInfo& vi = *ctx.variants[k];
+        const Contract& contract = contractOf(vi);
+        if (contract.own)
+        {
+            judgeOwn(v);
+            continue;
+        }
+        const bool isFloat = vi.scalar == Scalar::Float;
+        auto getCores = [&]() -> const Cores&
+        {
+            std::optional<Cores>& slot = cores[isFloat ? 1 : 0];
+            if (!slot)
+                slot.emplace(c, isFloat, out.shapes.get());
+            return *slot;
+        };
+        judgeDeclared(v, contract, getCores);
+    }
+}
+
+} // namespace gjkval

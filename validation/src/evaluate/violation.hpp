@@ -1,0 +1,55 @@
+// Why an answer breaks its implementation's contract (implementations/contract.hpp): the reasons,
+// their report names, and their count. One home: evaluate/contract_judge.cpp decides them,
+// statistics/ counts them, report.json names them (docs/report-schema.md, "contract_violations").
+#pragma once
+
+namespace gjkval
+{
+
+// One reason per answer (the first that applies, in evaluate/contract_judge.cpp's order).
+enum class Violation
+{
+    None,
+    Error,            // the implementation answered GJK2D_STATUS_ERROR
+    Crashed,          // it crashed
+    Hung,             // it did not answer within the timeout
+    Nonfinite,        // a non-finite distance, or a non-finite point where points are judged
+    NegativeDistance, // a negative distance where the contract promises none (common-point,
+                      // midpoint)
+    WitnessOffShape,  // a witness point further than W from its shape
+    WitnessGap,       // | ||pB - pA|| - d | (midpoint: ||pB - pA||) beyond W
+    FalseOverlap,     // a claim of overlap on shapes further apart than the tolerance T
+    FalseSeparation,  // a distance beyond T on overlapping shapes
+    Distance,         // |d - exact| beyond T on separated shapes (gjk2d's own: beyond its bound)
+    MidpointOff,      // a midpoint point further than dc/2 + W from one of the two cores
+    PenetrationGap,   // | ||pA - pB|| - |d| | beyond W for a penetration pair
+    IterationLimit,   // gjk2d's own: the iteration limit was reached
+    Interval,         // gjk2d's own: the certified interval misses the exact distance
+    BitMismatch,      // gjk2d's own: a correctly rounded distance that is not the exact side's
+};
+inline constexpr int kViolationReasons = int(Violation::BitMismatch); // the reasons after None
+
+// The report's name of a reason (report.json contract_violations.reasons, cases.jsonl); null for
+// None.
+inline const char* violationName(Violation r)
+{
+    constexpr const char* names[kViolationReasons + 1] = {nullptr,
+                                                          "error",
+                                                          "crashed",
+                                                          "hung",
+                                                          "nonfinite",
+                                                          "negative_distance",
+                                                          "witness_off_shape",
+                                                          "witness_gap",
+                                                          "false_overlap",
+                                                          "false_separation",
+                                                          "distance",
+                                                          "midpoint_off",
+                                                          "penetration_gap",
+                                                          "iteration_limit",
+                                                          "interval",
+                                                          "bit_mismatch"};
+    return names[int(r)];
+}
+
+} // namespace gjkval
