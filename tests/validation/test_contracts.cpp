@@ -280,6 +280,36 @@ TEST_CASE("midpoint: one point, within dc/2 + W of both cores", "[contract]")
     }
 }
 
+TEST_CASE("perimeter: each point on its own perimeter, rA + rB - dc apart; one point where the "
+          "cores meet",
+          "[contract]")
+{
+    // Discs: A the point (0, 0) with radius 1, B the point (1.5, 0) with radius 1 (overlapping by
+    // their radii, cores dc = 1.5 apart). Box2D v3 keeps each point on its own perimeter along the
+    // cores' closest points: pA = (0, 0) + 1 (1, 0) = (1, 0), pB = (1.5, 0) - 1 (1, 0) = (0.5, 0),
+    // ||pA - pB|| = 0.5 = rA + rB - dc: keeps it. Swapped, (0.5, 0) and (1, 0): each 0.5 from its
+    // own centre, | 0.5 - 1 | = 0.5 off the perimeter > W = 2^-2: perimeter_off, excess 0.5 / 0.25.
+    // The midpoint (0.75, 0) twice: 0.25 off each perimeter (within W) but 0 apart for a depth of
+    // 0.5: | 0 - 0.5 | = 0.5: perimeter_off. Squares overlapping at radius 0 (dc = 0): one common
+    // point, as a midpoint of cores 0 apart.
+    const Case discs = caseOf(point(0, 0, 1), point(1.5, 0, 1));
+    const Case squares = caseOf(square(0, 0, 2), square(1, 1, 2));
+    const exact::Result t = truthOf(0, true);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation im(s, declared(Overlap::Perimeter));
+        CHECK(judged(im, discs, t, 0, {1, 0}, {0.5, 0}).keepsContract());
+        const VariantOutcome swapped = judged(im, discs, t, 0, {0.5, 0}, {1, 0});
+        CHECK(reason(swapped) == "perimeter_off");
+        CHECK(swapped.violationExcess == Approx(2));
+        CHECK(reason(judged(im, discs, t, 0, {0.75, 0}, {0.75, 0})) == "perimeter_off");
+        CHECK(judged(im, squares, t, 0, {1.5, 1.5}, {1.5, 1.5}).keepsContract());
+        CHECK(reason(judged(im, squares, t, 0, {0.5, 0.5}, {0.5, 0.5})) == "midpoint_off");
+        CHECK(reason(judged(im, discs, t, -0.5, {1, 0}, {0.5, 0})) == "negative_distance");
+    }
+}
+
 TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth, which is not judged yet",
           "[contract]")
 {

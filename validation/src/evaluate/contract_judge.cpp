@@ -139,6 +139,27 @@ void judgePenetration(VariantOutcome& v)
     v.depthUnjudged = true;
 }
 
+// Perimeter on overlap (Box2D v3: "Keep closest points on perimeter even if overlapped"): where the
+// cores meet (dc = 0) GJK's one common point, as a midpoint of cores dc = 0 apart; where they are
+// apart, each point on its own rounded shape's perimeter along the cores' closest points: its
+// distance to its core is its radius, within W, and ||pA - pB|| = rA + rB - dc, the rounded
+// shapes' exact penetration depth (the cores' closest pair moved by each radius towards the
+// other), within W. `toCores` as for judgeMidpoint.
+template <class ToCores>
+void judgePerimeter(VariantOutcome& v, ToCores&& toCores, double dc, double rA, double rB)
+{
+    if (dc == 0)
+        return judgeMidpoint(v, toCores, 0);
+    const double W = v.witnessTolerance;
+    const double onA = std::abs(toCores(v.pointA)[0] - rA);
+    const double onB = std::abs(toCores(v.pointB)[1] - rB);
+    const double apart =
+        std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - (rA + rB - dc));
+    const double worst = std::max({onA, onB, apart});
+    if (!(worst <= W))
+        breaks(v, Violation::PerimeterOff, excessOf(worst, W));
+}
+
 // The cores (the shapes at radius 0) of a case on the exact side, for a midpoint answer on
 // overlapping shapes: each point's distance to both, and their distance. Without radii the shapes
 // are their cores and overlap (dc = 0): computeTruth's prepared shapes serve; else the cores are
@@ -150,6 +171,8 @@ class Cores
     {
         const int t = isFloat ? 1 : 0;
         exact::Shape a = toExact(c.a, isFloat), b = toExact(c.b, isFloat);
+        radiusA_ = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
+        radiusB_ = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
         if (a.radius == 0 && b.radius == 0 && truth && truth->a[t] && truth->b[t])
         {
             a_ = &*truth->a[t];
@@ -169,11 +192,13 @@ class Cores
         return {exact::pointToShapeDistance(*a_, q), exact::pointToShapeDistance(*b_, q)};
     }
     double distance() const { return distance_; }
+    double radiusA() const { return radiusA_; } // in the answer's input type
+    double radiusB() const { return radiusB_; }
 
   private:
     std::optional<exact::PreparedShape> ownA_, ownB_;
     const exact::PreparedShape *a_ = nullptr, *b_ = nullptr;
-    double distance_ = 0;
+    double distance_ = 0, radiusA_ = 0, radiusB_ = 0;
 };
 
 // A declared contract's verdict on one answer (phase 3 done: v.witness measured where the answer
@@ -216,6 +241,13 @@ template <class GetCores> void judgeDeclared(VariantOutcome& v, const Contract& 
     }
     case Overlap::Penetration:
         return judgePenetration(v);
+    case Overlap::Perimeter:
+    {
+        const Cores& k = cores();
+        return judgePerimeter(
+            v, [&](const std::array<double, 2>& p) { return k.to(p); }, k.distance(), k.radiusA(),
+            k.radiusB());
+    }
     }
 }
 } // namespace

@@ -23,6 +23,7 @@ enum class Violation
     Distance,         // |d - exact| beyond T on separated shapes (gjk2d's own: beyond its bound)
     MidpointOff,      // a midpoint point further than dc/2 + W from one of the two cores
     PenetrationGap,   // | ||pA - pB|| - |d| | beyond W for a penetration pair
+    PerimeterOff,     // a perimeter pair off its perimeters, or not rA + rB - dc apart
     IterationLimit,   // gjk2d's own: the iteration limit was reached
     Interval,         // gjk2d's own: the certified interval misses the exact distance
     BitMismatch,      // gjk2d's own: a correctly rounded distance that is not the exact side's
@@ -46,6 +47,7 @@ inline const char* violationName(Violation r)
                                                           "distance",
                                                           "midpoint_off",
                                                           "penetration_gap",
+                                                          "perimeter_off",
                                                           "iteration_limit",
                                                           "interval",
                                                           "bit_mismatch"};
