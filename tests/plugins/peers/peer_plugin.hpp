@@ -1,6 +1,7 @@
 // Calls one implementation of a shipped peer's shared library (gjk2d/plugin.h) as gjk-validate
 // does: dlopen, gjk2d_plugin_describe, the implementation's distance function on one case, in the
-// implementation's scalar type. For the tests of the FCL and Bullet adapters (docs/peers.md).
+// implementation's scalar type, and reads its declared contract. For the tests of the FCL and
+// Bullet adapters (docs/peers.md).
 #pragma once
 
 #include <gjk2d/plugin.h>
@@ -49,7 +50,11 @@ class Plugin
         const gjk2d_plugin* d = describe();
         for (int32_t i = 0; i < d->count; ++i)
             if (name == d->implementations[i].name)
+            {
                 impl_ = &d->implementations[i];
+                if (d->abi_version >= 2 && d->contracts != nullptr)
+                    contract_ = &d->contracts[i];
+            }
         if (!impl_)
             throw std::runtime_error(path + " has no implementation " + name);
         auto library =
@@ -61,6 +66,8 @@ class Plugin
     ~Plugin() { ::dlclose(handle_); }
 
     const gjk2d_implementation& implementation() const { return *impl_; }
+    // The implementation's declared contract (ABI version 2); nullptr: gjk2d's own.
+    const gjk2d_contract* contract() const { return contract_; }
     const std::string& library() const { return library_; }
 
     // The case in the implementation's scalar type (a float implementation gets it rounded).
@@ -95,6 +102,7 @@ class Plugin
 
     void* handle_ = nullptr;
     const gjk2d_implementation* impl_ = nullptr;
+    const gjk2d_contract* contract_ = nullptr;
     std::string library_;
 };
 
