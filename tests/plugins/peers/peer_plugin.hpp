@@ -74,14 +74,18 @@ class Plugin
     Answer distance(const Shape& a, const Shape& b) const
     {
         if (impl_->scalar == GJK2D_SCALAR_FLOAT)
-            return call<float, gjk2d_shape_f, gjk2d_result_f>(a, b, impl_->distance_f);
-        return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d);
+            return call<float, gjk2d_shape_f, gjk2d_result_f>(a, b, impl_->distance_f,
+                                                              impl_->cache_bytes);
+        return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d,
+                                                           impl_->cache_bytes);
     }
 
   private:
+    // A cold start: cache_bytes zeroed bytes (NULL when 0), as the runner calls it.
     template <class T, class S, class R, class Fn>
-    static Answer call(const Shape& a, const Shape& b, Fn fn)
+    static Answer call(const Shape& a, const Shape& b, Fn fn, int32_t cacheBytes)
     {
+        std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 0), 0);
         const std::vector<T> pa(a.points.begin(), a.points.end());
         const std::vector<T> pb(b.points.begin(), b.points.end());
         const auto shape = [](const Shape& s, const std::vector<T>& p) {
@@ -91,7 +95,7 @@ class Plugin
         const S sa = shape(a, pa), sb = shape(b, pb);
         R r{};
         Answer out;
-        out.status = fn(&sa, &sb, nullptr, &r);
+        out.status = fn(&sa, &sb, cache.empty() ? nullptr : cache.data(), &r);
         out.distance = r.distance;
         out.ax = r.point_a[0];
         out.ay = r.point_a[1];
