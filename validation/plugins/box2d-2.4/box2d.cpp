@@ -94,11 +94,15 @@ const gjk2d_implementation kImplementations[] = {
 };
 
 const gjk2d_contract kContract = {
-    -1, -1, "", GJK2D_OVERLAP_MIDPOINT,
+    -1,
+    -1,
+    "",
+    GJK2D_OVERLAP_MIDPOINT,
     "src/collision/b2_distance.cpp:588-596 (useRadii: \"Shapes are overlapped when radii are "
     "considered. Move the witness points to the middle.\": both points 0.5 (pointA + pointB), "
     "distance 0), Box2D 2.4.1 (erincatto/box2d tag v2.4.1)",
-    0, ""};
+    0,
+    ""};
 
 const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations, &kContract};
 

@@ -96,12 +96,12 @@ double extent(const Shape& s)
 // when it is 0 (two bare points at their local origins). The distance and the nearest points' x, y
 // do not depend on h (docs/peers.md, "The prism reduction"), but a penetration does: two prisms of
 // the same [-h, h] are also separated by a translation of 2h along z, and EPA answers the smallest
-// translation it finds, so its depth is the 2D one only while that is below 2h (with h = 1, a segment
-// crossing a 10 x 10 square 4 deep is answered depth 2, along z: test_prism_height.cpp). Every point of a
-// shape, radius included, lies within e of its position (for a unit (c, s)), so its width is at
-// most 2e, and the 2D depth, at most the smaller shape's width, is at most 2 min(eA, eB) <=
-// eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp and in the
-// programs of `gjk-validate repro`, so that they answer as this adapter.
+// translation it finds, so its depth is the 2D one only while that is below 2h (with h = 1, a
+// segment crossing a 10 x 10 square 4 deep is answered depth 2, along z: test_prism_height.cpp).
+// Every point of a shape, radius included, lies within e of its position (for a unit (c, s)), so
+// its width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most 2
+// min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp
+// and in the programs of `gjk-validate repro`, so that they answer as this adapter.
 btScalar prismHalfHeight(const Shape& a, const Shape& b)
 {
     const double h = 2 * (extent(a) + extent(b));

@@ -227,9 +227,9 @@ const gjk2d_implementation kImplementations[] = {
 // The sources: FCL 0.7.0's headers (Debian's /usr/include/fcl = upstream's include/fcl at tag
 // 0.7.0), as read for this contract; a new FCL needs them read again.
 #define GJK2D_FCL_OVERLAP_SOURCE                                                                   \
-    "fcl/narrowphase/distance_result.h:55-64 (min_distance in collision: \"a implementation "     \
-    "defined negative value\"), fcl/narrowphase/distance_request.h:57-62, 86-89 "                 \
-    "(enable_signed_distance false, the default: \"implementation defined (mostly -1)\"), "       \
+    "fcl/narrowphase/distance_result.h:55-64 (min_distance in collision: \"a implementation "      \
+    "defined negative value\"), fcl/narrowphase/distance_request.h:57-62, 86-89 "                  \
+    "(enable_signed_distance false, the default: \"implementation defined (mostly -1)\"), "        \
     "FCL 0.7.0"
 
 const gjk2d_contract kContracts[] = {

@@ -62,7 +62,8 @@ TEST_CASE("discs of radius 1 1.5 apart: distance 0, both points at the midpoint 
 TEST_CASE("overlapping squares at (10, 10): distance 0, one point in both squares")
 {
     const double tol = 1e-5;
-    const peers::Answer r = box2d().distance(peers::unitSquare(10, 10), peers::unitSquare(10.5, 10.5));
+    const peers::Answer r =
+        box2d().distance(peers::unitSquare(10, 10), peers::unitSquare(10.5, 10.5));
     REQUIRE(r.status == GJK2D_STATUS_OK);
     INFO("pA (" << r.ax << ", " << r.ay << "), pB (" << r.bx << ", " << r.by << ")");
     CHECK(r.distance == 0);

@@ -118,7 +118,8 @@ TEMPLATE_TEST_CASE("a segment and a diamond through a 10 x 10 square: depths 4 a
     CHECK(r.bx == within(6, tol));
     CHECK(r.ay == within(r.by, tol));
     CHECK((r.ay >= -tol && r.ay <= 10 + tol));
-    const peers::Answer d = bullet<TestType>().distance(a, peers::Shape{{12, 5, 7, 10, 2, 5, 7, 0}, 0});
+    const peers::Answer d =
+        bullet<TestType>().distance(a, peers::Shape{{12, 5, 7, 10, 2, 5, 7, 0}, 0});
     REQUIRE(d.status == GJK2D_STATUS_OK);
     CHECK(d.distance == within(-8, tol));
     CHECK(d.ax == within(10, tol));

@@ -101,8 +101,8 @@ TEST_CASE("penetrating cases: half height 1 answers the z translation 2, the ada
         std::vector<double> b;
         double depth;
     };
-    for (const Case& c : {Case{"segment", {6, -5, 6, 15}, 4},
-                          Case{"diamond", {12, 5, 7, 10, 2, 5, 7, 0}, 8}})
+    for (const Case& c :
+         {Case{"segment", {6, -5, 6, 15}, 4}, Case{"diamond", {12, 5, 7, 10, 2, 5, 7, 0}, 8}})
     {
         INFO(c.name);
         const peers::Answer low = direct(square, c.b, 1);

@@ -118,8 +118,8 @@ TEST_CASE("the contracts: zero on overlap, GST_INDEP's tolerance 1e-6, none for 
 
 // The tolerance clause through FCL. Squares 5e-7 apart (B = [1 + 5e-7, 2 + 5e-7] x [0, 1]):
 // GST_INDEP reports collision (min_distance -1) below its distance_tolerance of 1e-6, which its
-// contract allows (a gap within abs 1e-6 may be called contact); GST_LIBCCD answers the gap. At 3e-6
-// and at 1e-3 both measure the gap, well within 1e-6 (measured: within kPolygon).
+// contract allows (a gap within abs 1e-6 may be called contact); GST_LIBCCD answers the gap. At
+// 3e-6 and at 1e-3 both measure the gap, well within 1e-6 (measured: within kPolygon).
 TEST_CASE("GST_INDEP calls shapes closer than 1e-6 colliding, measures 1e-3 within 1e-6")
 {
     const double gap = 5e-7;
@@ -210,8 +210,8 @@ TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2"
 // DistanceResult (min_distance at its initial numeric max, the nearest points whatever the memory
 // held; the adapter presets them to NaN). The prism rule's sqrt(x^2 + y^2) overflows on these
 // coordinates (about 1e180 squared), so h = inf: the prisms' z coordinates are infinite, and
-// GST_INDEP answers -1 ("in collision") with the origin for both points, a false overlap made by the
-// adapter's prisms, not by FCL. Pinned so that a change of the rule shows here; the same answer
+// GST_INDEP answers -1 ("in collision") with the origin for both points, a false overlap made by
+// the adapter's prisms, not by FCL. Pinned so that a change of the rule shows here; the same answer
 // whatever the stack held before. (GST_LIBCCD aborted on this case with h = 1.)
 TEST_CASE("a huge case: the prism rule overflows to h = inf, GST_INDEP answers -1, in every run")
 {
