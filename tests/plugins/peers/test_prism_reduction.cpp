@@ -9,12 +9,12 @@
 //
 // Tolerances, each checked on every case here:
 // - polygons, radius 0 or a Bullet margin: kPolygon = 1e-12 with coordinates below 8. Measured
-//   largest: distance error 8.9e-16 (both adapters, random polygons case 11), witness point off
-//   its shape 1.4e-15 (Bullet, random rounded polygons case 9), witness gap 1.8e-15 (FCL, random
-//   rounded points and segments case 40): 1e-12 leaves a factor of over 500;
+//   largest, with the adapters' per-case half height: distance error 8.9e-16 (both adapters),
+//   witness point off its shape 1.4e-15 (Bullet), witness gap 8.9e-16: 1e-12 leaves a factor of
+//   over 500;
 // - FCL's Sphere and Capsule distances: kRounded = 1e-6, FCL's documented GJK stopping threshold
-//   (DistanceRequest::distance_tolerance). Measured largest 1.7e-9 (the hand-derived rounded point
-//   and square); random rounded points and segments stay below it too.
+//   (DistanceRequest::distance_tolerance). Measured largest: distance error 3.1e-7 (1.7e-9 with the
+//   former half height 1), witness point off its shape 1.8e-15, witness gap 5.1e-15.
 // Separated cases closer than 1e-5 are not drawn (GST_INDEP calls them colliding below 1e-6, a
 // finding tested in test_fcl.cpp, not a property of the reduction).
 #include "peer_plugin.hpp"
