@@ -13,8 +13,9 @@
 //   witness point off its shape 1.4e-15 (Bullet), witness gap 8.9e-16: 1e-12 leaves a factor of
 //   over 500;
 // - FCL's Sphere and Capsule distances: kRounded = 1e-6, FCL's documented GJK stopping threshold
-//   (DistanceRequest::distance_tolerance). Measured largest: distance error 3.1e-7 (1.7e-9 with the
-//   former half height 1), witness point off its shape 1.8e-15, witness gap 5.1e-15.
+//   (DistanceRequest::distance_tolerance). Measured largest: distance error 3.1e-7 (the
+//   hand-derived rounded point and square; 1.7e-9 with the former half height 1), witness point off
+//   its shape 1.8e-15, witness gap 5.1e-15.
 // Separated cases closer than 1e-5 are not drawn (GST_INDEP calls them colliding below 1e-6, a
 // finding tested in test_fcl.cpp, not a property of the reduction).
 #include "peer_plugin.hpp"

@@ -7,8 +7,10 @@
 //   once (u S) and FCL's GJK projects onto an edge in a few operations; the largest error measured
 //   on these cases is 2 ulps of 3.57 (4.4e-16, the edge-nearest squares), 80 times below it.
 // - kRounded = 1e-6, FCL's documented GJK stopping threshold (DistanceRequest::distance_tolerance,
-//   default 1e-6): a Sphere or Capsule is curved, GJK stops within it. Measured: 1.7e-9 (indep,
-//   sphere), 6e-8 (indep, capsule).
+//   default 1e-6): a Sphere or Capsule is curved, GJK stops near it. Measured, with the adapter's
+//   per-case prism half height: indep 3.1e-7 (sphere), 1.7e-7 (capsule); libccd 1.5e-11 (sphere),
+//   9.4e-7 (capsule: close to the threshold, which for libccd bounds nothing; with half height 1
+//   these were 1.7e-9, 6e-8, 1.4e-11 and 1.6e-8).
 #include "peer_plugin.hpp"
 
 #include "within.hpp"
