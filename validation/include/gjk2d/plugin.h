@@ -151,8 +151,9 @@ extern "C"
         /* A distance of 0; where the cores are apart (rounded shapes overlapping by their radii),
          * each point on its own shape's perimeter along the cores' closest points, so that
          * ||pA - pB|| = rA + rB - (the cores' distance), the exact penetration depth of the two
-         * rounded shapes; where the cores meet, one common point (Box2D 2.4.1 with radii,
-         * b2_distance.cpp: "Keep closest points on perimeter even if overlapped"). */
+         * rounded shapes; where the cores meet, one common point (Box2D v3 with radii,
+         * src/distance.c: "Keep closest points on perimeter even if overlapped"; Box2D 2.4.1 takes
+         * the midpoint). */
         GJK2D_OVERLAP_PERIMETER = 4
     };
 
