@@ -101,7 +101,9 @@ double extent(const Shape& s)
 // Every point of a shape, radius included, lies within e of its position (for a unit (c, s)), so
 // its width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most 2
 // min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp
-// and in the programs of `gjk-validate repro`, so that they answer as this adapter.
+// and in the programs of `gjk-validate repro`, so that they answer as this adapter. Beyond about
+// 1e154 (float: h beyond 3.4e38), h is infinite, and so are the prisms' z: what Bullet answers then
+// is not about the 2D case.
 btScalar prismHalfHeight(const Shape& a, const Shape& b)
 {
     const double h = 2 * (extent(a) + extent(b));

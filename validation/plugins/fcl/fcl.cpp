@@ -92,6 +92,8 @@ double extent(const gjk2d_shape_d& s)
 // shape's width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most
 // 2 min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in
 // bullet.cpp and in the programs of `gjk-validate repro`, so that they answer as this adapter.
+// Beyond about 1e154, x * x overflows and h is infinite: FCL then answers about prisms of infinite
+// height, not about the 2D case (test_fcl.cpp, "a huge case": a false overlap).
 double prismHalfHeight(const gjk2d_shape_d& a, const gjk2d_shape_d& b)
 {
     const double h = 2 * (extent(a) + extent(b));
