@@ -26,8 +26,9 @@
 //   penetration depth, answered by EPA when the cores overlap), the normal on B and the point on
 //   B; the point on A is pointOnB + normal * distance (btDiscreteCollisionDetectorInterface.h:
 //   "closestPointInA = closestPointInB + m_distance * m_normalOnSurfaceB"). On overlap the two
-//   points are a penetration pair: each on its own shape's surface, apart by the depth (neither
-//   lies in both shapes in general). No result at all from Bullet (m_hasResult false) is an
+//   points are EPA's penetration pair: each on its own shape's surface, in 3D apart by the depth
+//   Bullet reports (neither lies in both shapes in general; their x, y are apart by less when the
+//   pair is tilted in z, test_bullet.cpp). No result at all from Bullet (m_hasResult false) is an
 //   error. iterations: the pair detector's m_curIter.
 //
 // The contract (gjk2d_contract, kContract below; sources: Bullet 3.24's headers, Debian's
