@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
-"""A small host side of the executable-adapter protocol (version 1), to test the shipped
-executable adapters (gjk2d-planck, gjk2d-geos) without gjk-validate: it starts the adapter, does
-the handshake, sends distance and time requests and checks the answers against hand-derived values.
+"""A small host side of the executable-adapter protocol (it opens with version 1, as the host
+does, and reads the adapters' version 2), to test the shipped executable adapters (gjk2d-planck,
+gjk2d-geos) without gjk-validate: it starts the adapter, does the handshake (the contract lines
+included), sends distance and time requests and checks the answers against hand-derived values:
+each overlap case against the contract the adapter declares, and, where the library breaks it,
+against what it really answers (planck 1.5.0's witness points, its bug).
 
   adapter_driver.py --adapter FILE --peer planck|geos --check NAME     one check (a CTest entry)
   adapter_driver.py --adapter FILE --peer planck|geos --measure        round-trip and time-loop cost
@@ -84,26 +87,38 @@ class Adapter:
 # The handshake each peer must give: the library line, and the variant name built from the version.
 LIBRARY = {'planck': r'planck\.js (\d+\.\d+\.\d+)', 'geos': r'GEOS (\d+\.\d+\.\d+) via shapely \S+'}
 VARIANT = {'planck': 'planck-{}', 'geos': 'geos-{}'}
+# The contract each declares (protocol version 2): its overlap kind and the source's file and
+# version (planck: src/collision/Distance.ts:211-217; GEOS: DistanceOp.h and .cpp), no tolerance
+# stated, margin 0.
+CONTRACT = {'planck': ('midpoint', r'src/collision/Distance\.ts:211-217 .*planck\.js 1\.5\.0.*'),
+            'geos': ('common-point', r'include/geos/operation/distance/DistanceOp\.h:53-61 .*GEOS 3\.11\.1.*')}
 
 
 def check_handshake(ad, peer):
-    """The description: version 1, the library line, one double radius variant without a vertex
-    limit, ready. Returns the variant name."""
+    """The description: version 2, the library line, one double radius variant without a vertex
+    limit, its three contract lines, ready. Returns the variant name."""
     h = ad.handshake
-    if h[0] != 'gjk2d-adapter 1':
-        fail(f'first line {h[0]!r}, expected "gjk2d-adapter 1"')
+    if h[0] != 'gjk2d-adapter 2':
+        fail(f'first line {h[0]!r}, expected "gjk2d-adapter 2"')
     m = re.fullmatch(r'library ' + LIBRARY[peer], h[1])
     if not m:
         fail(f'library line {h[1]!r} does not match {LIBRARY[peer]!r}')
-    if h[-1] != 'ready' or len(h) != 4:
-        fail(f'expected one implementation line then "ready": {h}')
+    if h[-1] != 'ready' or len(h) != 7:
+        fail(f'expected one implementation line, three contract lines, then "ready": {h}')
     t = h[2].split(' ')
     name = VARIANT[peer].format(m.group(1))
     if t[:5] != ['implementation', name, 'double', 'radius', '0'] or len(t) < 6:
         fail(f'implementation line {h[2]!r}: expected "implementation {name} double radius 0 <text>"')
     if not re.fullmatch(r'[A-Za-z0-9._+-]{1,64}', name):
         fail(f'variant name {name!r} breaks the naming rule')
-    print(f'handshake: {h[1]!r}, variant {name}')
+    kind, source = CONTRACT[peer]
+    want = [re.escape(f'contract {name} overlap {kind} ') + source,
+            re.escape(f'contract {name} tolerance none none'),
+            re.escape(f'contract {name} margin 0')]
+    for line, pattern in zip(h[3:6], want):
+        if not re.fullmatch(pattern, line):
+            fail(f'contract line {line!r} does not match {pattern!r}')
+    print(f'handshake: {h[1]!r}, variant {name}, overlap {kind}')
     return name
 
 
@@ -155,6 +170,15 @@ def in_both_squares(centre_a, centre_b):
     return check
 
 
+def one_point(inside):
+    """The `common-point` contract: both witness points the same point, and `inside` holds."""
+    def check(pa, pb):
+        if pa != pb:
+            return f'witness points {pa}, {pb} are not one point'
+        return inside(pa, pb)
+    return check
+
+
 def facing_gap(xa, xb, tol):
     # Unit squares centred at (100, 100) and (100 + 1 + gap, 100): (xa, y) and (xb, y), y in
     # [99.5, 100.5], within tol.
@@ -169,8 +193,11 @@ def facing_gap(xa, xb, tol):
 GAP = 101.0000000005 - 101.0  # 5.000000413701855e-10, exact (Sterbenz): the double's gap
 
 
-# Overlap answers differ by peer (docs/peers.md): planck 1.5.0 sets both witness points to
-# pointA - pointB (its finding); the GEOS adapter gives a point in both shapes.
+# Overlap answers differ by peer (docs/peers.md). The GEOS adapter keeps its `common-point`
+# contract: one point in both shapes. planck declares `midpoint` (Distance.ts:211-217, "Move the
+# witness points to the middle"), but 1.5.0 sets both witness points to pointA - pointB
+# (Distance.ts:214-216): its answers below break its own contract, a planck bug; they are what
+# planck answers, pinned so that a fixed planck shows here.
 CASES = {
     # |4 - 0.5 - 0.5| = 3 between the facing edges x = 0.5 and x = 3.5.
     'squares-3-apart': (shape(SQUARE), shape(SQUARE, p=(4.0, 0.0)), 3.0, 0.0,
@@ -180,7 +207,7 @@ CASES = {
     # witness points become pointA - pointB = (0, 0), outside both shapes.
     'overlap': (shape(SQUARE, p=(10.0, 10.0)), shape(SQUARE, p=(10.5, 10.25)), 0.0, 0.0,
                 {'planck': witnesses_at((0.0, 0.0), (0.0, 0.0), 0.0),
-                 'geos': in_both_squares((10.0, 10.0), (10.5, 10.25))}),
+                 'geos': one_point(in_both_squares((10.0, 10.0), (10.5, 10.25)))}),
     # Point (2, 0) and the segment (0, 0)-(2, 2): the foot is (1, 1), distance sqrt 2.
     'point-segment': (shape([(0.0, 0.0)], p=(2.0, 0.0)), shape([(0.0, 0.0), (2.0, 2.0)]),
                       math.sqrt(2.0), 1e-15,
@@ -198,6 +225,14 @@ CASES = {
                        0.0, 0.0,
                        {'planck': witnesses_at((-1.0, 0.0), (-1.0, 0.0), 0.0),
                         'geos': witnesses_at((10.5, 0.0), (10.5, 0.0), 0.0)}),
+    # Discs of radius 1 centred at (0, 0) and (1.5, 0): the cores (the centres) 1.5 apart, within
+    # rA + rB = 2: distance 0. The midpoint of the cores' closest points is (0.75, 0), in both
+    # discs: what planck's `midpoint` contract (and Box2D 2.4.1) gives. planck 1.5.0 answers both
+    # points at pointA - pointB = (0, 0) - (1.5, 0) = (-1.5, 0), outside both discs: its bug. The
+    # GEOS adapter: the point dividing the centres as rA : rB, (0.75, 0).
+    'circles-1.5': (shape([(0.0, 0.0)], r=1.0), shape([(0.0, 0.0)], r=1.0, p=(1.5, 0.0)), 0.0, 0.0,
+                    {'planck': witnesses_at((-1.5, 0.0), (-1.5, 0.0), 0.0),
+                     'geos': witnesses_at((0.75, 0.0), (0.75, 0.0), 0.0)}),
     # The unit square turned by (c, s) = (0.6, 0.8): its corners R (+-0.5, +-0.5) are (0.7, 0.1),
     # (-0.1, 0.7), (-0.7, -0.1), (0.1, -0.7). The point (5, 0.1) lies in the corner (0.7, 0.1)'s
     # region ((4.3, 0) has negative dot products with both edge directions (-0.8, 0.6) and

@@ -1,6 +1,7 @@
 // Calls one implementation of a shipped peer's shared library (gjk2d/plugin.h) as gjk-validate
 // does: dlopen, gjk2d_plugin_describe, the implementation's distance function on one case, in the
-// implementation's scalar type. For the tests of the FCL and Bullet adapters (docs/peers.md).
+// implementation's scalar type, and reads its declared contract. For the tests of the FCL and
+// Bullet adapters (docs/peers.md).
 #pragma once
 
 #include <gjk2d/plugin.h>
@@ -49,7 +50,11 @@ class Plugin
         const gjk2d_plugin* d = describe();
         for (int32_t i = 0; i < d->count; ++i)
             if (name == d->implementations[i].name)
+            {
                 impl_ = &d->implementations[i];
+                if (d->abi_version >= 2 && d->contracts != nullptr)
+                    contract_ = &d->contracts[i];
+            }
         if (!impl_)
             throw std::runtime_error(path + " has no implementation " + name);
         auto library =
@@ -61,20 +66,26 @@ class Plugin
     ~Plugin() { ::dlclose(handle_); }
 
     const gjk2d_implementation& implementation() const { return *impl_; }
+    // The implementation's declared contract (ABI version 2); nullptr: gjk2d's own.
+    const gjk2d_contract* contract() const { return contract_; }
     const std::string& library() const { return library_; }
 
     // The case in the implementation's scalar type (a float implementation gets it rounded).
     Answer distance(const Shape& a, const Shape& b) const
     {
         if (impl_->scalar == GJK2D_SCALAR_FLOAT)
-            return call<float, gjk2d_shape_f, gjk2d_result_f>(a, b, impl_->distance_f);
-        return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d);
+            return call<float, gjk2d_shape_f, gjk2d_result_f>(a, b, impl_->distance_f,
+                                                              impl_->cache_bytes);
+        return call<double, gjk2d_shape_d, gjk2d_result_d>(a, b, impl_->distance_d,
+                                                           impl_->cache_bytes);
     }
 
   private:
+    // A cold start: cache_bytes zeroed bytes (NULL when 0), as the runner calls it.
     template <class T, class S, class R, class Fn>
-    static Answer call(const Shape& a, const Shape& b, Fn fn)
+    static Answer call(const Shape& a, const Shape& b, Fn fn, int32_t cacheBytes)
     {
+        std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 0), 0);
         const std::vector<T> pa(a.points.begin(), a.points.end());
         const std::vector<T> pb(b.points.begin(), b.points.end());
         const auto shape = [](const Shape& s, const std::vector<T>& p) {
@@ -84,7 +95,7 @@ class Plugin
         const S sa = shape(a, pa), sb = shape(b, pb);
         R r{};
         Answer out;
-        out.status = fn(&sa, &sb, nullptr, &r);
+        out.status = fn(&sa, &sb, cache.empty() ? nullptr : cache.data(), &r);
         out.distance = r.distance;
         out.ax = r.point_a[0];
         out.ay = r.point_a[1];
@@ -95,6 +106,7 @@ class Plugin
 
     void* handle_ = nullptr;
     const gjk2d_implementation* impl_ = nullptr;
+    const gjk2d_contract* contract_ = nullptr;
     std::string library_;
 };
 

@@ -1,5 +1,6 @@
-// The Box2D 2.4.1 adapter (a shipped plugin, gjk2d/plugin.h): Erin Catto's own b2Distance, the
-// engine the talk describes, as a comparison variant "box2d-2.4.1" in every default report.
+// The Box2D 2.4.1 adapter (a shipped plugin, gjk2d/plugin.h, ABI version 2): Erin Catto's own
+// b2Distance, the engine the talk describes, as a comparison variant "box2d-2.4.1" in every
+// default report.
 //
 // Built against Debian's libbox2d-dev. What it takes, checked in Box2D 2.4.1's sources:
 // - b2DistanceProxy::Set(vertices, count, radius) stores the pointer and the count, with no limit
@@ -8,8 +9,17 @@
 //   256 points would have its indices wrapped, so the description says max_vertices = 256 and the
 //   runner refuses larger cases without calling;
 // - it computes in float; radii are handled with useRadii = true (distance minus both radii,
-//   witness points moved onto the rounded surfaces, 0 and the midpoint when they overlap);
+//   witness points moved onto the rounded surfaces; 0 and the midpoint when they overlap);
 // - the warm start is the b2SimplexCache (count = 0: cold), given as the plugin's cache bytes.
+//
+// The contract (gjk2d_contract, kContract below), read in Box2D 2.4.1's sources (erincatto/box2d
+// tag v2.4.1; Debian's libbox2d-dev 2.4.1 ships its headers unchanged):
+// - overlap `midpoint`: with useRadii, when the cores' distance is at most rA + rB (or at most
+//   b2_epsilon, radius 0 too), "Move the witness points to the middle": both points at
+//   0.5 (pointA + pointB), distance 0 (src/collision/b2_distance.cpp:588-596);
+// - tolerance: none stated (b2_distance.h documents none);
+// - margin 0: a b2DistanceProxy built with Set(vertices, count, radius) has the case's radius
+//   only (b2_polygonRadius belongs to b2PolygonShape, not this path).
 //
 // gjk-validate interposes b2Distance for its engine families (inputs/engine.cpp) and exports that
 // symbol from the program, where this library's own reference to b2Distance would bind too. The
@@ -83,7 +93,18 @@ const gjk2d_implementation kImplementations[] = {
      int32_t(sizeof(b2SimplexCache)), &box2dDistance, nullptr},
 };
 
-const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations};
+const gjk2d_contract kContract = {
+    -1,
+    -1,
+    "",
+    GJK2D_OVERLAP_MIDPOINT,
+    "src/collision/b2_distance.cpp:588-596 (useRadii: \"Shapes are overlapped when radii are "
+    "considered. Move the witness points to the middle.\": both points 0.5 (pointA + pointB), "
+    "distance 0), Box2D 2.4.1 (erincatto/box2d tag v2.4.1)",
+    0,
+    ""};
+
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations, &kContract};
 
 } // namespace
 

@@ -1,5 +1,5 @@
-/* The Box2D v3 adapter (a shipped plugin, gjk2d/plugin.h): b2ShapeDistance, the GJK of Erin
- * Catto's current engine, compiled from the Box2D v3 source tree GJK2D_BOX2D3_SOURCE names
+/* The Box2D v3 adapter (a shipped plugin, gjk2d/plugin.h, ABI version 2): b2ShapeDistance, the GJK
+ * of Erin Catto's current engine, compiled from the Box2D v3 source tree GJK2D_BOX2D3_SOURCE names
  * (validation/plugins/box2d-v3/CMakeLists.txt; docs/peers.md, "Box2D v3").
  *
  * Called as Box2D calls itself (b2TimeOfImpact in its src/distance.c; the anchors'
@@ -17,11 +17,19 @@
  * equal b2ShapeDistance called directly" compares every case of the default families bit for bit
  * with validation/plugins/box2d-v3/tests/direct.c.
  *
- * Findings (docs/peers.md, "Box2D v3", with the command): on an overlap of rounded shapes whose
- * cores are apart, Box2D v3 answers distance 0 but keeps each witness point on its own perimeter
- * (by design, "this way the points move smoothly"), so the runner counts a witness gap: 2,440 of
- * the engine proximity families' cases. Its distances leave gjk2d's bound only at the ends of the
- * float range (hard/tiny-scale, hard/extreme-scale, hard/range). */
+ * The contract (gjk2d_contract, kContract below), read in src/distance.c and
+ * include/box2d/collision.h at erincatto/box2d 617d32ab (b2GetVersion 3.2.0), the anchors' tree:
+ * - overlap `perimeter`: where the cores overlap, b2ShapeDistance returns early with distance 0 and
+ *   the simplex's witness points, one common point of the cores (distance.c:497-508, and :518-534
+ *   when the search direction vanishes); where only the rounded shapes overlap, "Keep closest
+ * points on perimeter even if overlapped, this way the points move smoothly": distance max(0, d -
+ * rA - rB), each point moved by its radius along the cores' normal (distance.c:598-608);
+ * collision.h:404, distance "zero if overlapped";
+ * - tolerance: none stated;
+ * - margin 0: a b2ShapeProxy from b2MakeProxy has the case's radius only.
+ *
+ * Findings (docs/peers.md, "Box2D v3", with the command): its distances leave gjk2d's bound only
+ * at the ends of the float range (hard/tiny-scale, hard/extreme-scale, hard/range). */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 
 #include <gjk2d/plugin.h>
@@ -186,7 +194,19 @@ static void timingRelease(void* prepared)
 
 static const gjk2d_timing kTiming = {&timingPrepare, &timingPass, &timingRelease};
 
-static const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations};
+static const gjk2d_contract kContract = {
+    -1,
+    -1,
+    "",
+    GJK2D_OVERLAP_PERIMETER,
+    "src/distance.c:497-508, 518-534 (cores overlapping: distance 0, one common point), 598-608 "
+    "(useRadii: \"Keep closest points on perimeter even if overlapped\"), "
+    "include/box2d/collision.h:404, read at erincatto/box2d 617d32ab; this "
+    "build: " GJK2D_BOX2D3_LIBRARY,
+    0,
+    ""};
+
+static const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations, &kContract};
 
 GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 {

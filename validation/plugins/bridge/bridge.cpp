@@ -1,5 +1,6 @@
-// gjk2d-adapter-bridge: an executable adapter (protocol version 1, docs/validate-your-gjk.md
-// "Executable adapters (any language)") that hosts a shared-library plugin (gjk2d/plugin.h).
+// gjk2d-adapter-bridge: an executable adapter (protocol version 1 or 2, docs/validate-your-gjk.md
+// "Executable adapters (any language)") that hosts a shared-library plugin (gjk2d/plugin.h, ABI
+// version 1 or 2).
 //
 //   gjk2d-adapter-bridge PLUGIN.so [SUFFIX]  (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so
 //   gjk2d-adapter-bridge)
@@ -20,6 +21,12 @@
 // hosted plugin takes (radius, max_vertices), always cold (protocol 1 has no warm start), and
 // answers `refused` or `error` when the plugin's call says so. What the plugin prints on stdout
 // goes to stderr (the bridge's stdout carries the protocol only).
+//
+// Contracts: the bridge answers the hosted plugin's ABI version as its protocol version, so that
+// the bridged plugin is held to what the plugin itself is. A version-2 plugin with contracts
+// gets, after each implementation line, its three `contract` lines (overlap, tolerance, margin,
+// each with its source); a version-1 plugin, or a version-2 one whose contracts are NULL, gets
+// none: gjk2d's own contract, as when the host loads the plugin itself.
 #include <gjk2d/plugin.h>
 
 #include <dlfcn.h>
@@ -62,8 +69,11 @@ void openPlugin(const char* path)
         reinterpret_cast<gjk2d_plugin_describe_fn>(::dlsym(h, GJK2D_PLUGIN_ENTRY_POINT));
     if (describe == nullptr || (g_plugin = describe()) == nullptr)
         die(std::string(path) + " does not describe a gjk2d plugin");
-    if (g_plugin->abi_version != GJK2D_PLUGIN_ABI_VERSION)
-        die(std::string(path) + ": plugin ABI version " + std::to_string(g_plugin->abi_version));
+    if (g_plugin->abi_version < GJK2D_PLUGIN_ABI_MIN_VERSION ||
+        g_plugin->abi_version > GJK2D_PLUGIN_ABI_VERSION)
+        die(std::string(path) + ": plugin ABI version " + std::to_string(g_plugin->abi_version) +
+            ", the bridge reads " + std::to_string(GJK2D_PLUGIN_ABI_MIN_VERSION) + " to " +
+            std::to_string(GJK2D_PLUGIN_ABI_VERSION));
     auto library =
         reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(h, GJK2D_PLUGIN_LIBRARY_ENTRY));
     g_library = library && library() ? library() : std::string(path);
@@ -77,6 +87,44 @@ const gjk2d_implementation* findImpl(const std::string& name)
     return nullptr;
 }
 
+std::string num(double x)
+{
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", x);
+    return buf;
+}
+
+// A source as the rest of a protocol line: line breaks become spaces; a space before it unless
+// it is empty (a clause the library does not state).
+std::string sourceText(const char* source)
+{
+    std::string s = source ? source : "";
+    for (char& c : s)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    return s.empty() ? s : " " + s;
+}
+
+// A tolerance as the protocol writes it: the number, or `none` when negative (none stated).
+std::string tolerance(double x)
+{
+    return x < 0 ? std::string("none") : num(x);
+}
+
+// The version-2 `contract` lines of implementation `name` (gjk2d_contract's three clauses).
+void sayContract(const std::string& name, const gjk2d_contract& c)
+{
+    static const char* const kOverlap[] = {"common-point", "zero", "midpoint", "penetration",
+                                           "perimeter"}; // gjk2d_overlap's order
+    if (c.overlap < 0 || c.overlap >= int32_t(sizeof kOverlap / sizeof kOverlap[0]))
+        die("implementation " + name + ": overlap " + std::to_string(c.overlap) +
+            " is not a gjk2d_overlap");
+    say("contract " + name + " overlap " + kOverlap[c.overlap] + sourceText(c.overlap_source));
+    say("contract " + name + " tolerance " + tolerance(c.distance_abs_tolerance) + " " +
+        tolerance(c.distance_rel_tolerance) + sourceText(c.tolerance_source));
+    say("contract " + name + " margin " + num(c.margin) + sourceText(c.margin_source));
+}
+
 void handshake()
 {
     std::string line;
@@ -86,15 +134,20 @@ void handshake()
     line = buf;
     if (line.rfind("gjk2d-adapter 1", 0) != 0)
         die("the host does not speak protocol 1: " + line);
-    say("gjk2d-adapter 1");
+    // The plugin's ABI version is the protocol version spoken (the header comment).
+    say("gjk2d-adapter " + std::to_string(g_plugin->abi_version));
     say("library " + g_library);
+    const gjk2d_contract* contracts = g_plugin->abi_version >= 2 ? g_plugin->contracts : nullptr;
     for (int i = 0; i < g_plugin->count; ++i)
     {
         const gjk2d_implementation& im = g_plugin->implementations[i];
-        say(std::string("implementation ") + im.name + g_suffix + " " +
+        const std::string name = im.name + g_suffix;
+        say("implementation " + name + " " +
             (im.scalar == GJK2D_SCALAR_FLOAT ? "float" : "double") + " " +
             ((im.accepts & GJK2D_ACCEPTS_RADIUS) ? "radius" : "no-radius") + " " +
             std::to_string(im.max_vertices) + " " + (im.description ? im.description : ""));
+        if (contracts != nullptr)
+            sayContract(name, contracts[i]);
     }
     say("ready");
 }
@@ -183,13 +236,6 @@ template <class T, class Shape> struct Cases
         return true;
     }
 };
-
-std::string num(double x)
-{
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return buf;
-}
 
 template <class T, class Shape, class Result, class Fn>
 std::string distanceT(const std::string& id, Fn fn, int cacheBytes, Reader& in)

@@ -1,14 +1,15 @@
-// The Bullet 3.24 adapter (a shipped peer, gjk2d/plugin.h): btGjkPairDetector between two prisms,
-// as Bullet's collision pipeline runs it for a pair of convex shapes: a btVoronoiSimplexSolver for
-// GJK, a btGjkEpaPenetrationDepthSolver for overlapping cores. One source, two modules built
-// against Debian's libbullet-dev: gjk2d-bullet-float.so ("bullet-3.24-float", btScalar = float,
-// `pkg-config bullet`) and gjk2d-bullet-double.so ("bullet-3.24-double", BT_USE_DOUBLE_PRECISION,
-// `pkg-config bullet-float64`). docs/peers.md, "## Bullet".
+// The Bullet 3.24 adapter (a shipped peer, gjk2d/plugin.h, ABI version 2): btGjkPairDetector
+// between two prisms, as Bullet's collision pipeline runs it for a pair of convex shapes: a
+// btVoronoiSimplexSolver for GJK, a btGjkEpaPenetrationDepthSolver for overlapping cores. One
+// source, two modules built against Debian's libbullet-dev: gjk2d-bullet-float.so
+// ("bullet-3.24-float", btScalar = float, `pkg-config bullet`) and gjk2d-bullet-double.so
+// ("bullet-3.24-double", BT_USE_DOUBLE_PRECISION, `pkg-config bullet-float64`). docs/peers.md,
+// "## Bullet".
 //
 // The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
-// prism P x [-h, h] with h = kHalfHeight, the same for both shapes, a btConvexHullShape of its 2n
-// vertices (any order: Bullet's support scans them, the shape is their hull). The case's radius
-// is the shape's collision margin, setMargin(r), also for r = 0 (Bullet's default margin is 0.04):
+// prism P x [-h, h], the same h for both shapes, chosen per case (prismHalfHeight, below), a
+// btConvexHullShape of its 2n vertices (any order: Bullet's support scans them, the shape is their
+// hull). The case's radius is the shape's collision margin, setMargin(r), also for r = 0:
 // btGjkPairDetector runs GJK on the margin-less hulls and subtracts both margins from the
 // distance, so a margin is an exact radius (the prism swept by a ball of radius r). Every case is
 // taken: points, segments and polygons, with or without radius.
@@ -21,18 +22,31 @@
 // - Defaults kept as Bullet's users run them: the simplex solver's equal-vertex threshold
 //   (VORONOI_DEFAULT_EQUAL_VERTEX_THRESHOLD: 1e-4 in float, 1e-12 in double), the pair
 //   detector's tolerances, no maximum distance (BT_LARGE_FLOAT).
-// - The answer: Bullet's btPointCollector holds the distance, the normal on B and the point on B;
-//   the point on A is pointOnB + normal * distance (Bullet's own convention, btManifoldResult).
-//   A negative distance (cores overlapping, answered by EPA, or margins overlapping) is reported
-//   as distance 0, as plugin.h asks for overlapping shapes, with the two points as Bullet gives
-//   them (each lies in the other shape when Bullet is right). No result at all from Bullet
-//   (m_hasResult false) is an error. iterations: the pair detector's m_curIter.
+// - The answer, as Bullet gives it: its btPointCollector holds the distance (negative: the
+//   penetration depth, answered by EPA when the cores overlap), the normal on B and the point on
+//   B; the point on A is pointOnB + normal * distance (btDiscreteCollisionDetectorInterface.h:
+//   "closestPointInA = closestPointInB + m_distance * m_normalOnSurfaceB"). On overlap the two
+//   points are EPA's penetration pair: each on its own shape's surface, in 3D apart by the depth
+//   Bullet reports (neither lies in both shapes in general; their x, y are apart by less when the
+//   pair is tilted in z, test_bullet.cpp). No result at all from Bullet (m_hasResult false) is an
+//   error. iterations: the pair detector's m_curIter.
+//
+// The contract (gjk2d_contract, kContract below; sources: Bullet 3.24's headers, Debian's
+// /usr/include/bullet = upstream's src/ at tag 3.24):
+// - overlap `penetration`: "give either closest points (distance > 0) or penetration (distance)"
+//   (btDiscreteCollisionDetectorInterface.h:53-57; btPointCollector.h:25, "negative means
+//   penetration"; btGjkEpaPenetrationDepthSolver.h:22-23, EPA "to calculate the penetration
+//   depth");
+// - tolerance: none stated. Bullet's thresholds (REL_ERROR2, gGjkEpaPenetrationTolerance in
+//   btGjkPairDetector.cpp, the simplex solver's equal-vertex threshold) are stopping rules, which
+//   promise no accuracy of the answer;
+// - margin 0: the adapter sets each shape's margin to the case's radius, so there is no skin
+//   beyond the case's shape; Bullet's default is CONVEX_DISTANCE_MARGIN = 0.04
+//   (btCollisionMargin.h:19-22), which the adapter does not use.
 //
 // Findings (docs/peers.md, "## Bullet"; validation/plugins/bullet/tests/test_bullet.cpp): in double
-// every separated random case is within gjk2d's bound; on overlap Bullet's two points are apart by
-// the penetration depth, which gjk-validate's witness-gap check counts as invalid. In float the
-// default equal-vertex threshold (1e-4) stops GJK early: random/192 is answered 7.8% off, and
-// near-touching shapes are called touching.
+// every separated random case is within gjk2d's bound. In float the default equal-vertex threshold
+// (1e-4) stops GJK early: random/192 is answered 7.8% off.
 #include <gjk2d/plugin.h>
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -41,6 +55,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
+#include <algorithm>
+#include <cmath>
 #include <new>
 #include <vector>
 
@@ -64,12 +80,39 @@ using Result = gjk2d_result_f;
 #endif
 static_assert(sizeof(*Shape{}.points) == sizeof(btScalar), "the case's scalar is btScalar");
 
-// The prisms' half height: 1, a fixed number rather than the shapes' scale. The distance and the
-// nearest points' x, y do not depend on it (docs/peers.md); it only has to be positive.
-constexpr btScalar kHalfHeight = 1;
+// A shape's extent about its local origin: e = radius + max_i sqrt(x_i^2 + y_i^2) over its local
+// points, in double from the case's numbers (floats in the float module, exact in double).
+double extent(const Shape& s)
+{
+    double m = 0;
+    for (int32_t i = 0; i < s.count; ++i)
+    {
+        const double x = s.points[2 * i], y = s.points[2 * i + 1];
+        m = std::max(m, std::sqrt(x * x + y * y));
+    }
+    return double(s.radius) + m;
+}
+
+// The prisms' half height h, one per case: h = 2 (eA + eB) in double, then rounded to btScalar; 1
+// when it is 0 (two bare points at their local origins). The distance and the nearest points' x, y
+// do not depend on h (docs/peers.md, "The prism reduction"), but a penetration does: two prisms of
+// the same [-h, h] are also separated by a translation of 2h along z, and EPA answers the smallest
+// translation it finds, so its depth is the 2D one only while that is below 2h (with h = 1, a
+// segment crossing a 10 x 10 square 4 deep is answered depth 2, along z: test_prism_height.cpp).
+// Every point of a shape, radius included, lies within e of its position (for a unit (c, s)), so
+// its width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most 2
+// min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp
+// and in the programs of `gjk-validate repro`, so that they answer as this adapter. Beyond about
+// 1e154 (float: h beyond 3.4e38), h is infinite, and so are the prisms' z: what Bullet answers then
+// is not about the 2D case.
+btScalar prismHalfHeight(const Shape& a, const Shape& b)
+{
+    const double h = 2 * (extent(a) + extent(b));
+    return btScalar(h == 0 ? 1.0 : h);
+}
 
 // The prism P x [-h, h] of the shape's points in the world frame, margin = the case's radius.
-void buildPrism(const Shape& s, btConvexHullShape& hull)
+void buildPrism(const Shape& s, btScalar h, btConvexHullShape& hull)
 {
     const btScalar c = s.rotation[0], sn = s.rotation[1];
     for (int32_t i = 0; i < s.count; ++i)
@@ -77,8 +120,8 @@ void buildPrism(const Shape& s, btConvexHullShape& hull)
         const btScalar x = s.points[2 * i], y = s.points[2 * i + 1];
         const btScalar wx = c * x - sn * y + s.position[0];
         const btScalar wy = sn * x + c * y + s.position[1];
-        hull.addPoint(btVector3(wx, wy, -kHalfHeight), false);
-        hull.addPoint(btVector3(wx, wy, kHalfHeight), false);
+        hull.addPoint(btVector3(wx, wy, -h), false);
+        hull.addPoint(btVector3(wx, wy, h), false);
     }
     hull.recalcLocalAabb();
     hull.setMargin(s.radius);
@@ -106,9 +149,10 @@ int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
 {
     if (a->count < 1 || b->count < 1)
         return GJK2D_STATUS_REFUSED;
+    const btScalar h = prismHalfHeight(*a, *b);
     btConvexHullShape hullA, hullB;
-    buildPrism(*a, hullA);
-    buildPrism(*b, hullB);
+    buildPrism(*a, h, hullA);
+    buildPrism(*b, h, hullB);
     Zeroed<btVoronoiSimplexSolver> simplex;
     btGjkEpaPenetrationDepthSolver epa;
     btGjkPairDetector detector(&hullA, &hullB, simplex.get(), &epa);
@@ -121,7 +165,7 @@ int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
         return GJK2D_STATUS_ERROR;
     const btVector3 onB = result.m_pointInWorld;
     const btVector3 onA = onB + result.m_normalOnBInWorld * result.m_distance;
-    out->distance = result.m_distance < 0 ? btScalar(0) : result.m_distance;
+    out->distance = result.m_distance; // negative: minus the penetration depth (`penetration`)
     out->point_a[0] = onA.x();
     out->point_a[1] = onA.y();
     out->point_b[0] = onB.x();
@@ -145,7 +189,22 @@ const gjk2d_implementation kImplementations[] = {
      GJK2D_BULLET_SCALAR, GJK2D_ACCEPTS_RADIUS, 0, 0, kFloat, kDouble},
 };
 
-const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations};
+// The sources: Bullet 3.24's headers (Debian's /usr/include/bullet = upstream's src/ at tag 3.24),
+// as read for this contract; a new Bullet needs them read again.
+const gjk2d_contract kContract = {
+    -1,
+    -1,
+    "",
+    GJK2D_OVERLAP_PENETRATION,
+    "BulletCollision/NarrowPhaseCollision/btDiscreteCollisionDetectorInterface.h:53-57 (\"give "
+    "either closest points (distance > 0) or penetration (distance)\"), btPointCollector.h:25 "
+    "(\"negative means penetration\"), btGjkEpaPenetrationDepthSolver.h:22-23, Bullet 3.24",
+    0,
+    "the adapter sets each margin to the case's radius (setMargin): no skin beyond the case's "
+    "shape; Bullet's default, not used: CONVEX_DISTANCE_MARGIN 0.04, "
+    "BulletCollision/CollisionShapes/btCollisionMargin.h:19-22, Bullet 3.24"};
+
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations, &kContract};
 
 } // namespace
 

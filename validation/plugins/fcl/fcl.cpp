@@ -1,11 +1,12 @@
-// The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h): fcl::distance between two prisms, with
-// both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD, FCL's default)
-// and "fcl-0.7-indep" (GST_INDEP). Built against Debian's libfcl-dev; docs/peers.md, "## FCL".
+// The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h, ABI version 2): fcl::distance between two
+// prisms, with both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD,
+// FCL's default) and "fcl-0.7-indep" (GST_INDEP). Built against Debian's libfcl-dev (FCL 0.7.0,
+// whose headers are upstream's tag 0.7.0 unchanged); docs/peers.md, "## FCL".
 //
 // The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
-// prism P x [-h, h] with h = kHalfHeight, the same for both shapes; the distance of two prisms is
-// the 2D distance of their polygons, and their nearest points can be taken at z = 0. The adapter
-// returns FCL's nearest points' x and y.
+// prism P x [-h, h], the same h for both shapes, chosen per case (prismHalfHeight, below); the
+// distance of two prisms is the 2D distance of their polygons, and their nearest points can be
+// taken at z = 0. The adapter returns FCL's nearest points' x and y.
 // - Transforms: the adapter applies the case's transform to the points itself, world = R * local +
 //   p in double with R = [[c, -s], [s, c]] from the case's (c, s) as given, and hands FCL identity
 //   transforms. FCL's Transform3 is an Eigen Isometry and libccd turns its linear part into a
@@ -23,18 +24,28 @@
 //   capsule are the 2D point and segment swept by r in 3D, whose distance to a prism is again the
 //   2D one. Any other shape with radius > 0 is refused (GJK2D_STATUS_REFUSED): FCL has no
 //   rounded polytope, and approximating one would judge our approximation, not FCL.
-// - Overlap: unsigned distance (enable_signed_distance = false). FCL documents min_distance as
-//   "implementation defined negative value" when the objects are in collision (DistanceResult;
-//   DistanceRequest::enable_signed_distance: "mostly -1"): a negative answer is FCL's "in
-//   collision", reported as distance 0, with the nearest points as FCL returns them. Signed
-//   distance is not used: with GST_INDEP it hits an assert compiled into Debian's libfcl
-//   (distance-inl.h:177) on overlapping convexes.
-// - Overlap points: FCL sets no nearest points in collision, both are the origin; reported as
-//   they are (so an overlapping case's witness points are off their shapes in the report).
+// - Overlap: unsigned distance (enable_signed_distance = false, FCL's default). FCL's answer is
+//   reported as it is: in collision its min_distance is "implementation defined" and negative
+//   (mostly -1), and it sets no nearest points (both stay the origin). Signed distance is not used:
+//   with GST_INDEP it hits an assert compiled into Debian's libfcl (distance-inl.h:177) on
+//   overlapping convexes.
 // - No answer: on some cases of huge coordinates FCL returns without touching its DistanceResult
 //   (min_distance stays at its initial numeric max, the nearest points at whatever the memory
 //   held). The adapter sets the points to NaN before the call, so such an answer is reported the
 //   same in every run: FCL's distance, NaN points (non-finite in the report).
+//
+// The contract (gjk2d_contract, kContracts below; each clause's source is FCL 0.7.0's file:line,
+// identical in Debian's /usr/include/fcl and upstream's include/fcl at tag 0.7.0):
+// - overlap `zero`, both solvers: a distance of 0 or below, no points promised
+//   (DistanceResult::min_distance and DistanceRequest::enable_signed_distance, quoted there);
+// - tolerance: DistanceRequest::distance_tolerance (default 1e-6) reaches both solvers
+//   (distance-inl.h:234, :240) but means different things. GST_INDEP: its GJK reports contact
+//   when the simplex is within it of the origin (gjk-inl.h:115) and stops when the duality gap is
+//   within it relative to the distance (gjk-inl.h:147): abs 1e-6, rel 1e-6. GST_LIBCCD: libccd
+//   stops when the distance improves by less than it (gjk_libccd-inl.h:2081, :2105), which FCL
+//   says "does NOT necessarily mean that the computed distance is within" it
+//   (gjk_libccd-inl.h:2693-2696): none stated;
+// - margin 0: FCL keeps no skin around its shapes.
 //
 // Findings (docs/peers.md, "## FCL"; validation/plugins/fcl/tests/test_fcl.cpp): GST_LIBCCD answers
 // a vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
@@ -45,6 +56,7 @@
 
 #include <fcl/narrowphase/distance.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -59,9 +71,34 @@ namespace
 
 using Vec3 = fcl::Vector3<double>;
 
-// The prisms' half height: 1, a fixed number rather than the shapes' scale. The distance and the
-// nearest points' x, y do not depend on it (docs/peers.md); it only has to be positive.
-constexpr double kHalfHeight = 1.0;
+// A shape's extent about its local origin: e = radius + max_i sqrt(x_i^2 + y_i^2) over its local
+// points, in double from the case's numbers.
+double extent(const gjk2d_shape_d& s)
+{
+    double m = 0;
+    for (int32_t i = 0; i < s.count; ++i)
+    {
+        const double x = s.points[2 * i], y = s.points[2 * i + 1];
+        m = std::max(m, std::sqrt(x * x + y * y));
+    }
+    return s.radius + m;
+}
+
+// The prisms' half height h, one per case: h = 2 (eA + eB), 1 when that is 0 (two bare points at
+// their local origins). The distance and the nearest points' x, y do not depend on h
+// (docs/peers.md, "The prism reduction"), but a minimal translation does: two prisms of the same
+// [-h, h] are also separated by 2h along z, so a penetration depth is the 2D one only while that is
+// below 2h. Every point of a shape lies within e of its position (for a unit (c, s)), so the
+// shape's width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most
+// 2 min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in
+// bullet.cpp and in the programs of `gjk-validate repro`, so that they answer as this adapter.
+// Beyond about 1e154, x * x overflows and h is infinite: FCL then answers about prisms of infinite
+// height, not about the 2D case (test_fcl.cpp, "a huge case": a false overlap).
+double prismHalfHeight(const gjk2d_shape_d& a, const gjk2d_shape_d& b)
+{
+    const double h = 2 * (extent(a) + extent(b));
+    return h == 0 ? 1.0 : h;
+}
 
 // The shape's points in the world frame: world = R * local + p, the case's (c, s) as given.
 std::vector<Vec3> worldPoints(const gjk2d_shape_d& s)
@@ -108,13 +145,13 @@ Placed capsule(const Vec3& p0, const Vec3& p1, double r)
 }
 
 // The prism P x [-h, h] as a face-less Convex (see the header comment).
-Placed prism(const std::vector<Vec3>& p)
+Placed prism(const std::vector<Vec3>& p, double h)
 {
     auto vertices = std::make_shared<std::vector<Vec3>>();
     for (const Vec3& v : p)
     {
-        vertices->emplace_back(v.x(), v.y(), -kHalfHeight);
-        vertices->emplace_back(v.x(), v.y(), kHalfHeight);
+        vertices->emplace_back(v.x(), v.y(), -h);
+        vertices->emplace_back(v.x(), v.y(), h);
     }
     Placed out;
     out.geometry = std::make_shared<fcl::Convex<double>>(
@@ -122,13 +159,13 @@ Placed prism(const std::vector<Vec3>& p)
     return out;
 }
 
-// The FCL geometry of one case shape; an empty geometry when FCL cannot take it (radius > 0 on
-// more than two points).
-Placed geometryOf(const gjk2d_shape_d& s)
+// The FCL geometry of one case shape, a prism of half height h when it has no radius; an empty
+// geometry when FCL cannot take it (radius > 0 on more than two points).
+Placed geometryOf(const gjk2d_shape_d& s, double h)
 {
     const std::vector<Vec3> p = worldPoints(s);
     if (s.radius == 0)
-        return prism(p);
+        return prism(p, h);
     if (s.count == 1)
     {
         Placed out;
@@ -146,7 +183,8 @@ int32_t fclDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, gjk2d_result
 {
     if (a->count < 1 || b->count < 1)
         return GJK2D_STATUS_REFUSED;
-    const Placed ga = geometryOf(*a), gb = geometryOf(*b);
+    const double h = prismHalfHeight(*a, *b);
+    const Placed ga = geometryOf(*a, h), gb = geometryOf(*b, h);
     if (!ga.geometry || !gb.geometry)
         return GJK2D_STATUS_REFUSED;
     fcl::DistanceRequest<double> request;
@@ -158,7 +196,7 @@ int32_t fclDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, gjk2d_result
     result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
     const double d =
         fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
-    out->distance = d < 0 ? 0.0 : d; // negative: FCL's "in collision" (see the header comment)
+    out->distance = d; // negative: FCL's "in collision", as it is (overlap `zero`)
     out->point_a[0] = result.nearest_points[0].x();
     out->point_a[1] = result.nearest_points[0].y();
     out->point_b[0] = result.nearest_points[1].x();
@@ -188,7 +226,33 @@ const gjk2d_implementation kImplementations[] = {
      GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &indepDistance},
 };
 
-const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations};
+// The sources: FCL 0.7.0's headers (Debian's /usr/include/fcl = upstream's include/fcl at tag
+// 0.7.0), as read for this contract; a new FCL needs them read again.
+#define GJK2D_FCL_OVERLAP_SOURCE                                                                   \
+    "fcl/narrowphase/distance_result.h:55-64 (min_distance in collision: \"a implementation "      \
+    "defined negative value\"), fcl/narrowphase/distance_request.h:57-62, 86-89 "                  \
+    "(enable_signed_distance false, the default: \"implementation defined (mostly -1)\"), "        \
+    "FCL 0.7.0"
+
+const gjk2d_contract kContracts[] = {
+    {-1, -1,
+     "none: DistanceRequest::distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: "
+     "1e-6) is GST_LIBCCD's stopping rule (fcl/narrowphase/distance-inl.h:234; "
+     "fcl/narrowphase/detail/convexity_based_algorithm/gjk_libccd-inl.h:2081, 2105), which \"does "
+     "NOT necessarily mean that the computed distance is within\" it (gjk_libccd-inl.h:2693-2696), "
+     "FCL 0.7.0",
+     GJK2D_OVERLAP_ZERO, GJK2D_FCL_OVERLAP_SOURCE, 0, ""},
+    {1e-6, 1e-6,
+     "DistanceRequest::distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: 1e-6), "
+     "GST_INDEP's gjk_tolerance (fcl/narrowphase/distance-inl.h:240): contact when the simplex is "
+     "within it of the origin (fcl/narrowphase/detail/convexity_based_algorithm/gjk-inl.h:115), "
+     "stop when the duality gap is within it times the distance (gjk-inl.h:147), FCL 0.7.0",
+     GJK2D_OVERLAP_ZERO, GJK2D_FCL_OVERLAP_SOURCE, 0, ""},
+};
+static_assert(sizeof(kContracts) / sizeof(kContracts[0]) ==
+              sizeof(kImplementations) / sizeof(kImplementations[0]));
+
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations, kContracts};
 
 } // namespace
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The GEOS adapter: an executable adapter (protocol version 1, docs/peers.md "## GEOS (shapely)")
+"""The GEOS adapter: an executable adapter (protocol version 2, docs/peers.md "## GEOS (shapely)")
 for GEOS's distance through shapely, run by Debian's /usr/bin/python3 (python3-shapely 1.8.5,
 GEOS 3.11.1 on Debian 12).
 
@@ -20,6 +20,17 @@ What a Python user would write, and what it takes:
     docs/validate-your-gjk.md asks for).
 - iterations: GEOS does not say (-1). No vertex limit (0): GEOS takes any number of points.
 It refuses only a shape without points (shapely cannot build one).
+
+The contract (the handshake's `contract` lines, CONTRACT below), read in GEOS 3.11.1 (libgeos/geos
+tag 3.11.1) and shapely 1.8.5:
+- overlap `common-point`: nearest_points (shapely/ops.py:328-332) is GEOS's DistanceOp, whose
+  nearest points are "a pair of points in the input geometries which have the minimum distance
+  between them" (include/geos/operation/distance/DistanceOp.h:53-61): on intersecting geometries
+  they are 0 apart, one point of both (a vertex inside the other polygon: that vertex twice,
+  src/operation/distance/DistanceOp.cpp:253-269). With radii, the point q above is in both
+  rounded shapes;
+- tolerance: none stated (DistanceOp.h:62-64 says only that a point inside a segment is "a close
+  approximation to the exact point"); margin 0.
 """
 import sys
 import time
@@ -36,6 +47,15 @@ except ImportError:  # shapely 2
 
 GEOS_VERSION = '.'.join(str(v) for v in geos_version)
 IMPL = f'geos-{GEOS_VERSION}'
+# What GEOS promises (the module docstring): the handshake's `contract` lines, protocol version 2.
+CONTRACT = [
+    f'contract {IMPL} overlap common-point include/geos/operation/distance/DistanceOp.h:53-61 (the '
+    'nearest points: "a pair of points in the input geometries which have the minimum distance between '
+    'them"), src/operation/distance/DistanceOp.cpp:253-269 (a vertex inside the other polygon: both '
+    'points at it), GEOS 3.11.1, via shapely 1.8.5 ops.nearest_points (shapely/ops.py:328-332)',
+    f'contract {IMPL} tolerance none none',
+    f'contract {IMPL} margin 0',
+]
 
 
 def say(line):
@@ -168,13 +188,15 @@ def main():
         if not t:
             continue
         if not handshaken:
-            # We speak version 1 whatever the host asks: the host judges a mismatch (the protocol's rule).
+            # We speak version 2 whatever the host asks: the host judges a mismatch (the protocol's rule).
             if t[0] != 'gjk2d-adapter':
                 print(f'gjk2d-geos: expected the handshake, got "{line.strip()[:80]}"', file=sys.stderr)
-            say('gjk2d-adapter 1')
+            say('gjk2d-adapter 2')
             say(f'library GEOS {GEOS_VERSION} via shapely {shapely.__version__}')
             say(f'implementation {IMPL} double radius 0 GEOS {GEOS_VERSION} distance and nearest_points '
                 f'via shapely {shapely.__version__} (Point, LineString, convex hull), radii subtracted')
+            for line in CONTRACT:
+                say(line)
             say('ready')
             handshaken = True
             continue

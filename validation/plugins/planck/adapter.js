@@ -1,4 +1,4 @@
-// The planck.js adapter: an executable adapter (protocol version 1, docs/peers.md "## planck.js")
+// The planck.js adapter: an executable adapter (protocol version 2, docs/peers.md "## planck.js")
 // around planck.js's Distance, the JavaScript port of Box2D 2.x's b2Distance, run by Node.
 //
 // What it takes, checked in planck 1.5.0's sources (src/collision/Distance.ts):
@@ -8,11 +8,16 @@
 //   (12) bounds PolygonShape only, not this path. So max_vertices is 0 (no limit).
 // - It computes in JS numbers (double). Transform.set({p, q: {c, s}}) copies (c, s) as given.
 // - useRadii = true: distance minus both radii, witness points moved onto the rounded surfaces.
-// - A fresh SimplexCache (count 0) per query: a cold start, as protocol version 1 asks.
+// - A fresh SimplexCache (count 0) per query: a cold start (the protocol has no warm start).
 // It refuses only what it cannot hand planck: a shape without points.
-// Finding: when the shapes overlap with their radii (core distance <= rA + rB), planck 1.5.0 sets
-// both witness points to pointA - pointB (a difference vector, not a point: Box2D's C++ takes the
-// midpoint 0.5 (pointA + pointB)). The adapter reports what planck returns, unchanged.
+// The contract (the `contract` lines of the handshake, CONTRACT below), read in planck 1.5.0's
+// src/collision/Distance.ts (the npm package's sources; its dist/planck.js does the same):
+// - overlap `midpoint`: with useRadii, when the core distance is at most rA + rB (or at most
+//   EPSILON), "Move the witness points to the middle" (Distance.ts:211-217), as Box2D 2.x does;
+// - tolerance: none stated; margin 0 (a DistanceProxy has the case's radius only).
+// Finding (a bug, which breaks that contract): in that branch planck 1.5.0 sets both witness
+// points to pointA - pointB (Distance.ts:214-216, a difference vector, not a point: Box2D's C++
+// takes the midpoint 0.5 (pointA + pointB)). The adapter reports what planck returns, unchanged.
 // Finding: that branch is taken too when the core distance is at most planck's EPSILON, 1e-9
 // (src/common/Math.ts): shapes 5e-10 apart get distance 0 (a false overlap).
 // Finding: on NaN input getSupport returns -1 and planck throws a TypeError: answered "error".
@@ -29,6 +34,13 @@ const VERSION = JSON.parse(
   require("fs").readFileSync(require("path").join(require.resolve("planck"), "..", "..", "package.json"), "utf8"),
 ).version;
 const IMPL = "planck-" + VERSION;
+// What planck promises (the header comment): the handshake's `contract` lines, protocol version 2.
+const CONTRACT = [
+  `contract ${IMPL} overlap midpoint src/collision/Distance.ts:211-217 (useRadii: "Shapes are overlapped when ` +
+    `radii are considered. Move the witness points to the middle."), planck.js 1.5.0 (npm)`,
+  `contract ${IMPL} tolerance none none`,
+  `contract ${IMPL} margin 0`,
+];
 
 // A request the adapter cannot read (its answer: "error <id> <message>").
 class RequestError extends Error {}
@@ -149,11 +161,12 @@ rl.on("line", (line) => {
   const t = line.trim().split(/ +/);
   if (t.length === 1 && t[0] === "") return;
   if (!handshaken) {
-    // We speak version 1 whatever the host asks: the host judges a mismatch (the protocol's rule).
+    // We speak version 2 whatever the host asks: the host judges a mismatch (the protocol's rule).
     if (t[0] !== "gjk2d-adapter") process.stderr.write(`gjk2d-planck: expected the handshake, got "${line.slice(0, 80)}"\n`);
-    say("gjk2d-adapter 1");
+    say("gjk2d-adapter 2");
     say(`library planck.js ${VERSION}`);
     say(`implementation ${IMPL} double radius 0 planck.js ${VERSION} Distance (DistanceProxy.setVertices), cold SimplexCache, useRadii`);
+    CONTRACT.forEach(say);
     say("ready");
     handshaken = true;
     return;

@@ -19,8 +19,15 @@ Expected answers, derived by hand (world = R local + p, R = [[c, -s], [s, c]]):
   5 - 0.75 = 4.25 (exact); pA = 0.5 (0.6, 0.8) = (0.3, 0.4), pB = (3, 4) - 0.25 (0.6, 0.8) =
   (2.85, 3.8). 0.3, 0.4, 2.85 and 3.8 are not floats: the witnesses are checked to 2e-6, four
   float ulps at 4 (ulp 4.8e-7), for the few float roundings of the direction and the scaling.
+- circles-overlap (the contract's `perimeter` clause): radius 1 at (0, 0) and at (1.5, 0): the cores
+  (the centres) 1.5 apart, the discs overlap by 2 - 1.5 = 0.5. b2ShapeDistance answers distance 0
+  and keeps each point on its own perimeter along the cores' normal (1, 0): pA = (1, 0),
+  pB = (1.5, 0) - (1, 0) = (0.5, 0), 0.5 apart, the overlap's depth; all exact in float.
 - nine-points: a 9-point shape: more than B2_MAX_POLYGON_VERTICES = 8, refused by the runner
   without calling (the description's max_vertices), not answered.
+With --bridge (gjk2d-adapter-bridge), the plugin's declared contract is read through the bridge's
+handshake (protocol 2): overlap `perimeter` with its source (src/distance.c, erincatto/box2d
+617d32ab), no tolerance stated, margin 0.
 Exit 0 when every case gives its expected answer, else 1 naming the case.
 """
 import argparse
@@ -47,6 +54,7 @@ CASES = [
     ("rotated-rectangle", shape([[-2, -0.5], [2, -0.5], [2, 0.5], [-2, 0.5]], q=(0, 1)),
      shape([[0, 0]], p=(0, 5))),
     ("circles", shape([[0, 0]], radius=0.5), shape([[0, 0]], p=(3, 4), radius=0.25)),
+    ("circles-overlap", shape([[0, 0]], radius=1.0), shape([[0, 0]], p=(1.5, 0), radius=1.0)),
     ("nine-points", shape(NINE), shape([[0, 0]], p=(5, 0))),
 ]
 
@@ -64,6 +72,8 @@ def check(name, v):
         ok = d == 0
     elif name == "point-segment":
         ok = d == 2 and [ax, ay, bx, by] == [0, 2, 0, 0]
+    elif name == "circles-overlap":
+        ok = d == 0 and [ax, ay, bx, by] == [1, 0, 0.5, 0]
     elif name == "rotated-rectangle":
         ok = d == 3 and [ax, ay, bx, by] == [0, 2, 0, 5]
     else:  # circles
@@ -75,7 +85,19 @@ def main():
     ap = argparse.ArgumentParser()
     for a in ("--exe", "--plugin", "--variant", "--work"):
         ap.add_argument(a, required=True)
+    ap.add_argument("--bridge", help="gjk2d-adapter-bridge, to read the plugin's contract")
     args = ap.parse_args()
+    if args.bridge:
+        h = subprocess.run([args.bridge, args.plugin], input="gjk2d-adapter 1\n", capture_output=True,
+                           text=True, timeout=30).stdout.splitlines()
+        want = ["contract {} overlap perimeter src/distance.c:".format(args.variant),
+                "contract {} tolerance none none".format(args.variant),
+                "contract {} margin 0".format(args.variant)]
+        if h[:1] != ["gjk2d-adapter 2"] or len(h) != 7 or not all(l.startswith(w) for l, w in zip(h[3:6], want)) \
+                or "erincatto/box2d 617d32ab" not in h[3]:
+            print("box2d3_hand: FAIL: the contract read through the bridge: {}".format(h), file=sys.stderr)
+            sys.exit(1)
+        print("box2d3_hand: contract: {}".format(h[3]))
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
     path = os.path.join(args.work, "hand.json")

@@ -11,7 +11,8 @@ if(TARGET gjk2d_box2d3_plugin)
   add_test(NAME "plugins: box2d-v3: hand-derived cases"
            COMMAND Python3::Interpreter ${CMAKE_CURRENT_LIST_DIR}/hand.py
                    --exe $<TARGET_FILE:gjk-validate> --plugin $<TARGET_FILE:gjk2d_box2d3_plugin>
-                   --variant ${_box2d3_variant} --work ${_ci}/box2d3-hand)
+                   --variant ${_box2d3_variant} --work ${_ci}/box2d3-hand
+                   --bridge $<TARGET_FILE:gjk2d_adapter_bridge>)
   add_test(NAME "plugins: box2d-v3: the adapter's answers equal b2ShapeDistance called directly"
            COMMAND Python3::Interpreter ${CMAKE_CURRENT_LIST_DIR}/equal.py
                    --exe $<TARGET_FILE:gjk-validate> --plugin $<TARGET_FILE:gjk2d_box2d3_plugin>

@@ -12,3 +12,24 @@ if(TARGET gjk2d_bullet_float_plugin AND TARGET gjk2d_bullet_double_plugin)
   add_dependencies(bullet_peer_tests gjk2d_bullet_float_plugin gjk2d_bullet_double_plugin)
   gjk2d_catch_tests(bullet_peer_tests "plugins: bullet: ")
 endif()
+
+# The prisms' half height on penetrating cases (test_prism_height.cpp): Bullet in double called
+# directly (its own pkg-config flags, BT_USE_DOUBLE_PRECISION), beside the adapter.
+if(TARGET gjk2d_bullet_double_plugin)
+  find_package(PkgConfig QUIET)
+  pkg_check_modules(GJK2D_BULLET_TEST_DOUBLE QUIET bullet-float64)
+endif()
+if(TARGET gjk2d_bullet_double_plugin AND GJK2D_BULLET_TEST_DOUBLE_FOUND)
+  add_executable(bullet_prism_height_tests ${CMAKE_CURRENT_LIST_DIR}/test_prism_height.cpp)
+  target_compile_definitions(bullet_prism_height_tests PRIVATE
+    GJK2D_BULLET_DOUBLE_PLUGIN="$<TARGET_FILE:gjk2d_bullet_double_plugin>")
+  target_include_directories(bullet_prism_height_tests PRIVATE ${PROJECT_SOURCE_DIR}/tests
+                             ${PROJECT_SOURCE_DIR}/tests/plugins/peers)
+  target_include_directories(bullet_prism_height_tests SYSTEM PRIVATE
+                             ${GJK2D_BULLET_TEST_DOUBLE_INCLUDE_DIRS})
+  target_compile_options(bullet_prism_height_tests PRIVATE ${GJK2D_BULLET_TEST_DOUBLE_CFLAGS_OTHER})
+  target_link_libraries(bullet_prism_height_tests PRIVATE gjk2d_plugin Catch2::Catch2WithMain
+                        ${GJK2D_BULLET_TEST_DOUBLE_LINK_LIBRARIES} ${CMAKE_DL_LIBS})
+  add_dependencies(bullet_prism_height_tests gjk2d_bullet_double_plugin)
+  gjk2d_catch_tests(bullet_prism_height_tests "plugins: bullet prism height: ")
+endif()

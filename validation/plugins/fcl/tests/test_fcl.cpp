@@ -7,8 +7,10 @@
 //   once (u S) and FCL's GJK projects onto an edge in a few operations; the largest error measured
 //   on these cases is 2 ulps of 3.57 (4.4e-16, the edge-nearest squares), 80 times below it.
 // - kRounded = 1e-6, FCL's documented GJK stopping threshold (DistanceRequest::distance_tolerance,
-//   default 1e-6): a Sphere or Capsule is curved, GJK stops within it. Measured: 1.7e-9 (indep,
-//   sphere), 6e-8 (indep, capsule).
+//   default 1e-6): a Sphere or Capsule is curved, GJK stops near it. Measured, with the adapter's
+//   per-case prism half height: indep 3.1e-7 (sphere), 1.7e-7 (capsule); libccd 1.5e-11 (sphere),
+//   9.4e-7 (capsule: close to the threshold, which for libccd bounds nothing; with half height 1
+//   these were 1.7e-9, 6e-8, 1.4e-11 and 1.6e-8).
 #include "peer_plugin.hpp"
 
 #include "within.hpp"
@@ -17,6 +19,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace
 {
@@ -93,25 +96,55 @@ TEST_CASE("GST_LIBCCD answers a vertex-to-vertex distance where an edge is neare
     CHECK(q.distance == within(std::hypot(2, 0.5), kPolygon));
 }
 
-// Squares 5e-7 apart (B = [1 + 5e-7, 2 + 5e-7] x [0, 1]): GST_INDEP reports collision (min_distance
-// -1, so distance 0) below its distance_tolerance of 1e-6; GST_LIBCCD answers the gap. At 3e-6
-// both answer it.
-TEST_CASE("GST_INDEP calls shapes closer than 1e-6 colliding, GST_LIBCCD does not")
+// The contract each variant declares (fcl.cpp, kContracts): overlap `zero` for both, GST_INDEP's
+// distance_tolerance as abs and rel 1e-6, none for GST_LIBCCD (FCL says its tolerance is no bound),
+// margin 0; every stated clause names its FCL 0.7.0 source.
+TEST_CASE("the contracts: zero on overlap, GST_INDEP's tolerance 1e-6, none for GST_LIBCCD")
 {
-    const double gap = 5e-7, far = 3e-6;
-    const peers::Answer i = indep().distance(peers::unitSquare(), peers::unitSquare(1 + gap, 0));
-    REQUIRE(i.status == GJK2D_STATUS_OK);
-    CHECK(i.distance == 0);
-    const peers::Answer l = libccd().distance(peers::unitSquare(), peers::unitSquare(1 + gap, 0));
-    CHECK(l.distance == within(gap, kPolygon));
-    const peers::Answer j = indep().distance(peers::unitSquare(), peers::unitSquare(1 + far, 0));
-    CHECK(j.distance == within(far, kPolygon));
+    for (const peers::Plugin* p : {&libccd(), &indep()})
+    {
+        INFO(p->implementation().name);
+        const gjk2d_contract* c = p->contract();
+        REQUIRE(c != nullptr);
+        CHECK(c->overlap == GJK2D_OVERLAP_ZERO);
+        CHECK(std::string(c->overlap_source).find("distance_result.h:55-64") != std::string::npos);
+        CHECK(std::string(c->overlap_source).find("FCL 0.7.0") != std::string::npos);
+        CHECK(std::string(c->tolerance_source).find("FCL 0.7.0") != std::string::npos);
+        CHECK(c->margin == 0);
+    }
+    CHECK(indep().contract()->distance_abs_tolerance == 1e-6);
+    CHECK(indep().contract()->distance_rel_tolerance == 1e-6);
+    CHECK(libccd().contract()->distance_abs_tolerance < 0);
+    CHECK(libccd().contract()->distance_rel_tolerance < 0);
 }
 
-// A = [10, 11]^2, B = [10.5, 11.5]^2 overlap. FCL answers min_distance -1 ("in collision", per
-// DistanceResult's documentation) and sets no nearest points: both are the origin, on neither
-// shape. The adapter reports distance 0 and FCL's points as they are.
-TEST_CASE("overlapping squares: FCL's -1 is distance 0, its nearest points the origin")
+// The tolerance clause through FCL. Squares 5e-7 apart (B = [1 + 5e-7, 2 + 5e-7] x [0, 1]):
+// GST_INDEP reports collision (min_distance -1) below its distance_tolerance of 1e-6, which its
+// contract allows (a gap within abs 1e-6 may be called contact); GST_LIBCCD answers the gap. At
+// 3e-6 and at 1e-3 both measure the gap, well within 1e-6 (measured: within kPolygon).
+TEST_CASE("GST_INDEP calls shapes closer than 1e-6 colliding, measures 1e-3 within 1e-6")
+{
+    const double gap = 5e-7;
+    const peers::Answer i = indep().distance(peers::unitSquare(), peers::unitSquare(1 + gap, 0));
+    REQUIRE(i.status == GJK2D_STATUS_OK);
+    CHECK(i.distance == -1);
+    const peers::Answer l = libccd().distance(peers::unitSquare(), peers::unitSquare(1 + gap, 0));
+    CHECK(l.distance == within(gap, kPolygon));
+    for (const double far : {3e-6, 1e-3})
+        for (const peers::Plugin* p : {&libccd(), &indep()})
+        {
+            INFO(p->implementation().name << ", gap " << far);
+            const peers::Answer j = p->distance(peers::unitSquare(), peers::unitSquare(1 + far, 0));
+            REQUIRE(j.status == GJK2D_STATUS_OK);
+            CHECK(j.distance == within(far, kPolygon));
+        }
+}
+
+// The overlap clause (`zero`) through FCL: A = [10, 11]^2, B = [10.5, 11.5]^2 overlap by 0.5.
+// FCL answers min_distance -1 ("in collision", DistanceResult's documentation), 0 or below as
+// `zero` promises, and sets no nearest points: both are the origin, on neither shape, which `zero`
+// does not judge. The adapter reports both as they are.
+TEST_CASE("overlapping squares: FCL's -1 as it is, its nearest points the origin")
 {
     for (const peers::Plugin* p : {&libccd(), &indep()})
     {
@@ -119,7 +152,7 @@ TEST_CASE("overlapping squares: FCL's -1 is distance 0, its nearest points the o
         const peers::Answer r =
             p->distance(peers::unitSquare(10, 10), peers::unitSquare(10.5, 10.5));
         REQUIRE(r.status == GJK2D_STATUS_OK);
-        CHECK(r.distance == 0);
+        CHECK(r.distance == -1);
         CHECK((r.ax == 0 && r.ay == 0 && r.bx == 0 && r.by == 0));
     }
 }
@@ -175,10 +208,14 @@ TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2"
 }
 
 // hard/extreme-scale/48-gap-1e180 (gjk-validate generate --family hard/extreme-scale; exact
-// distance 1.46e172): GST_INDEP returns without writing its DistanceResult, min_distance stays at
-// its initial numeric max and the nearest points at whatever the memory held. The adapter presets
-// them to NaN: the same answer whatever the stack held before. (GST_LIBCCD aborts on this case.)
-TEST_CASE("GST_INDEP leaves a huge case unanswered: numeric max, NaN points, in every run")
+// distance 1.46e172). With prisms of half height 1, GST_INDEP returned without writing its
+// DistanceResult (min_distance at its initial numeric max, the nearest points whatever the memory
+// held; the adapter presets them to NaN). The prism rule's sqrt(x^2 + y^2) overflows on these
+// coordinates (about 1e180 squared), so h = inf: the prisms' z coordinates are infinite, and
+// GST_INDEP answers -1 ("in collision") with the origin for both points, a false overlap made by
+// the adapter's prisms, not by FCL. Pinned so that a change of the rule shows here; the same answer
+// whatever the stack held before. (GST_LIBCCD aborted on this case with h = 1.)
+TEST_CASE("a huge case: the prism rule overflows to h = inf, GST_INDEP answers -1, in every run")
 {
     const peers::Shape a{{6.538098967619074e+179, 1.3121003390251404e+180, 6.55369169873577e+178,
                           1.4645066040429783e+180, -1.1633465828879966e+179,
@@ -204,7 +241,7 @@ TEST_CASE("GST_INDEP leaves a huge case unanswered: numeric max, NaN points, in 
         peers::dirtyStack(byte);
         const peers::Answer r = indep().distance(a, b);
         REQUIRE(r.status == GJK2D_STATUS_OK);
-        CHECK(r.distance == std::numeric_limits<double>::max());
-        CHECK((std::isnan(r.ax) && std::isnan(r.ay) && std::isnan(r.bx) && std::isnan(r.by)));
+        CHECK(r.distance == -1);
+        CHECK((r.ax == 0 && r.ay == 0 && r.bx == 0 && r.by == 0));
     }
 }
