@@ -57,6 +57,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <new>
 #include <vector>
 
@@ -80,15 +81,16 @@ using Result = gjk2d_result_f;
 #endif
 static_assert(sizeof(*Shape{}.points) == sizeof(btScalar), "the case's scalar is btScalar");
 
-// A shape's extent about its local origin: e = radius + max_i sqrt(x_i^2 + y_i^2) over its local
-// points, in double from the case's numbers (floats in the float module, exact in double).
+// A shape's extent about its local origin: e = radius + max_i (|x_i| + |y_i|) over its local
+// points, in double from the case's numbers (floats in the float module, exact in double): at
+// least each point's distance to the origin, and finite wherever the numbers are.
 double extent(const Shape& s)
 {
     double m = 0;
     for (int32_t i = 0; i < s.count; ++i)
     {
         const double x = s.points[2 * i], y = s.points[2 * i + 1];
-        m = std::max(m, std::sqrt(x * x + y * y));
+        m = std::max(m, std::abs(x) + std::abs(y));
     }
     return double(s.radius) + m;
 }
@@ -102,13 +104,14 @@ double extent(const Shape& s)
 // Every point of a shape, radius included, lies within e of its position (for a unit (c, s)), so
 // its width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most 2
 // min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp
-// and in the programs of `gjk-validate repro`, so that they answer as this adapter. Beyond about
-// 1e154 (float: h beyond 3.4e38), h is infinite, and so are the prisms' z: what Bullet answers then
-// is not about the 2D case.
+// and in the programs of `gjk-validate repro`, so that they answer as this adapter. At most the
+// largest btScalar / 8, so that h, 2h and the prisms' vertices stay finite in btScalar (beyond it
+// the shapes themselves are near btScalar's range).
 btScalar prismHalfHeight(const Shape& a, const Shape& b)
 {
     const double h = 2 * (extent(a) + extent(b));
-    return btScalar(h == 0 ? 1.0 : h);
+    const double most = double(std::numeric_limits<btScalar>::max()) / 8;
+    return btScalar(h == 0 ? 1.0 : std::min(h, most));
 }
 
 // The prism P x [-h, h] of the shape's points in the world frame, margin = the case's radius.

@@ -71,33 +71,34 @@ namespace
 
 using Vec3 = fcl::Vector3<double>;
 
-// A shape's extent about its local origin: e = radius + max_i sqrt(x_i^2 + y_i^2) over its local
-// points, in double from the case's numbers.
+// A shape's extent about its local origin: e = radius + max_i (|x_i| + |y_i|) over its local
+// points, in double from the case's numbers: at least each point's distance to the origin
+// (|x| + |y| >= sqrt(x^2 + y^2)), and finite wherever the numbers are (x * x overflows from 1e154).
 double extent(const gjk2d_shape_d& s)
 {
     double m = 0;
     for (int32_t i = 0; i < s.count; ++i)
     {
         const double x = s.points[2 * i], y = s.points[2 * i + 1];
-        m = std::max(m, std::sqrt(x * x + y * y));
+        m = std::max(m, std::abs(x) + std::abs(y));
     }
     return s.radius + m;
 }
 
 // The prisms' half height h, one per case: h = 2 (eA + eB), 1 when that is 0 (two bare points at
-// their local origins). The distance and the nearest points' x, y do not depend on h
+// their local origins), at most kMaxHalfHeight (the largest double / 8, so that 2h and the prisms'
+// vertices stay finite). The distance and the nearest points' x, y do not depend on h
 // (docs/peers.md, "The prism reduction"), but a minimal translation does: two prisms of the same
 // [-h, h] are also separated by 2h along z, so a penetration depth is the 2D one only while that is
 // below 2h. Every point of a shape lies within e of its position (for a unit (c, s)), so the
 // shape's width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most
 // 2 min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in
 // bullet.cpp and in the programs of `gjk-validate repro`, so that they answer as this adapter.
-// Beyond about 1e154, x * x overflows and h is infinite: FCL then answers about prisms of infinite
-// height, not about the 2D case (test_fcl.cpp, "a huge case": a false overlap).
+constexpr double kMaxHalfHeight = std::numeric_limits<double>::max() / 8;
 double prismHalfHeight(const gjk2d_shape_d& a, const gjk2d_shape_d& b)
 {
     const double h = 2 * (extent(a) + extent(b));
-    return h == 0 ? 1.0 : h;
+    return h == 0 ? 1.0 : std::min(h, kMaxHalfHeight);
 }
 
 // The shape's points in the world frame: world = R * local + p, the case's (c, s) as given.

@@ -4,9 +4,10 @@
 // btVoronoiSimplexSolver, btGjkEpaPenetrationDepthSolver), once with h = 1 and once with the
 // adapter's h = 2 (eA + eB); then the adapter itself (gjk2d-bullet-double.so) on the same case.
 //
-// A = [0, 10]^2 (eA = sqrt(200)). Two hand-derived cases (depths derived in test_bullet.cpp):
-// - B the segment (6, -5)-(6, 15): depth 4 along x; eB = sqrt(261), h = 2 (eA + eB) = 60.6;
-// - B the diamond (12, 5), (7, 10), (2, 5), (7, 0): depth 8 along x; eB = 13, h = 54.3.
+// A = [0, 10]^2 (eA = max |x| + |y| = 20). Two hand-derived cases (depths derived in
+// test_bullet.cpp):
+// - B the segment (6, -5)-(6, 15): depth 4 along x; eB = 21, h = 2 (eA + eB) = 82;
+// - B the diamond (12, 5), (7, 10), (2, 5), (7, 0): depth 8 along x; eB = 17, h = 74.
 // With h = 1 the prisms are also separated by 2 along z, less than either depth: Bullet answers
 // -2, both points at one x, y (the translation runs along z). With the adapter's h it answers the
 // 2D depth, its points' x, y apart by it; and the adapter answers bit for bit what the direct
@@ -38,7 +39,7 @@ double extent(const std::vector<double>& p)
 {
     double m = 0;
     for (std::size_t i = 0; i + 1 < p.size(); i += 2)
-        m = std::max(m, std::sqrt(p[i] * p[i] + p[i + 1] * p[i + 1]));
+        m = std::max(m, std::abs(p[i]) + std::abs(p[i + 1]));
     return m;
 }
 

@@ -152,8 +152,8 @@ TEST_CASE("overlapping squares: FCL's -1 as it is, its nearest points the origin
         const peers::Answer r =
             p->distance(peers::unitSquare(10, 10), peers::unitSquare(10.5, 10.5));
         REQUIRE(r.status == GJK2D_STATUS_OK);
-        CHECK(r.distance == -1);
-        CHECK((r.ax == 0 && r.ay == 0 && r.bx == 0 && r.by == 0));
+        CHECK(r.distance == std::numeric_limits<double>::max());
+        CHECK((std::isnan(r.ax) && std::isnan(r.ay) && std::isnan(r.bx) && std::isnan(r.by)));
     }
 }
 
@@ -208,14 +208,14 @@ TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the square by 2"
 }
 
 // hard/extreme-scale/48-gap-1e180 (gjk-validate generate --family hard/extreme-scale; exact
-// distance 1.46e172). With prisms of half height 1, GST_INDEP returned without writing its
-// DistanceResult (min_distance at its initial numeric max, the nearest points whatever the memory
-// held; the adapter presets them to NaN). The prism rule's sqrt(x^2 + y^2) overflows on these
-// coordinates (about 1e180 squared), so h = inf: the prisms' z coordinates are infinite, and
-// GST_INDEP answers -1 ("in collision") with the origin for both points, a false overlap made by
-// the adapter's prisms, not by FCL. Pinned so that a change of the rule shows here; the same answer
-// whatever the stack held before. (GST_LIBCCD aborted on this case with h = 1.)
-TEST_CASE("a huge case: the prism rule overflows to h = inf, GST_INDEP answers -1, in every run")
+// distance 1.46e172). The prism rule's e = radius + max (|x| + |y|) stays finite here (about 4e180;
+// sqrt(x^2 + y^2) overflowed to h = inf, and GST_INDEP then answered -1, a false overlap made by
+// the prisms). With the finite h GST_INDEP returns without writing its DistanceResult, as it did
+// with prisms of half height 1: min_distance stays at its initial numeric max (1.8e308), the
+// nearest points at the adapter's NaN presets (Eigen leaves them unwritten). FCL's own answer:
+// "far apart" with no points, for shapes 1.46e172 apart. The same whatever the stack held before.
+TEST_CASE("a huge case: GST_INDEP leaves its result unwritten (numeric max, NaN points), in every "
+          "run")
 {
     const peers::Shape a{{6.538098967619074e+179, 1.3121003390251404e+180, 6.55369169873577e+178,
                           1.4645066040429783e+180, -1.1633465828879966e+179,
@@ -241,7 +241,7 @@ TEST_CASE("a huge case: the prism rule overflows to h = inf, GST_INDEP answers -
         peers::dirtyStack(byte);
         const peers::Answer r = indep().distance(a, b);
         REQUIRE(r.status == GJK2D_STATUS_OK);
-        CHECK(r.distance == -1);
-        CHECK((r.ax == 0 && r.ay == 0 && r.bx == 0 && r.by == 0));
+        CHECK(r.distance == std::numeric_limits<double>::max());
+        CHECK((std::isnan(r.ax) && std::isnan(r.ay) && std::isnan(r.bx) && std::isnan(r.by)));
     }
 }
