@@ -431,12 +431,13 @@ TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
 }
 
 TEST_CASE(
-    "the worst contract violation merges exactly: the largest excess, ties to the earlier case",
+    "the worst contract violation merges exactly: the largest measured excess, ties to the earlier "
+    "case, one without a size only where none is measured",
     "[stats][merge][contract]")
 {
-    // Three violations in a family of cases 0..9: excess 5 at case 7, +inf (a crash) at case 3,
-    // +inf at case 8 (a tie: the earlier case 3 stays), 2 at case 1. In any split and order the
-    // worst is case 3's crash; without the infinities, case 7's 5.
+    // Four violations in a family of cases 0..9: excess 5 at case 7, +inf (a crash) at case 3,
+    // +inf at case 8, 2 at case 1. In any split and order the worst is case 7's 5 (a measured one
+    // ranks above any without a size); of the crash and the hang alone, the earlier case 3.
     struct V
     {
         double excess;
@@ -473,8 +474,10 @@ TEST_CASE(
     const Json j = all.toJson()["contract_violations"];
     CHECK(j["count"] == 4);
     CHECK(j["reasons"] == Json{{"crashed", 1}, {"hung", 1}, {"witness_gap", 1}, {"distance", 1}});
-    CHECK(j["worst"] == Json{{"case", "c3"}, {"reason", "crashed"}, {"excess", "inf"}});
+    CHECK(j["worst"] == Json{{"case", "c7"}, {"reason", "distance"}, {"excess", 5}});
     CHECK(fold({0, 3}).toJson()["contract_violations"]["worst"]["case"] == "c7");
+    const Json sizeless = fold({2, 1}).toJson()["contract_violations"]["worst"];
+    CHECK(sizeless == Json{{"case", "c3"}, {"reason", "crashed"}, {"excess", "inf"}});
     // The state keeps it exactly, +inf and all.
     const Stats back = Stats::fromState(all.state());
     CHECK(back.toJson() == all.toJson());

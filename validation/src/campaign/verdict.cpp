@@ -106,7 +106,8 @@ Json familyJson(const FamilyResult& f, const std::vector<MakeupResult>& makeup,
 }
 
 // Variant k's worst contract violation over the families, {"case", "family", "reason", "excess"}
-// (the largest excess, ties to the earlier family), or null: the case `gjk-validate repro` and
+// (the largest measured excess, a break without a size only where none is measured: statistics'
+// WorstViolation order; ties to the earlier family), or null: the case `gjk-validate repro` and
 // `explain` take.
 Json worstViolationJson(const CampaignState& state, std::size_t k)
 {
@@ -114,8 +115,7 @@ Json worstViolationJson(const CampaignState& state, std::size_t k)
     for (const auto& f : state.families)
     {
         const WorstViolation& w = f.stats[k].worstViolation;
-        if (w.any &&
-            (worstFamily == nullptr || w.excess > worstFamily->stats[k].worstViolation.excess))
+        if (worstFamily == nullptr ? w.any : w.outranks(worstFamily->stats[k].worstViolation))
             worstFamily = &f;
     }
     if (worstFamily == nullptr)

@@ -189,11 +189,43 @@ IterHist IterHist::fromState(const Json& j)
     return h;
 }
 
+namespace
+{
+// The order of WorstViolation (a total preorder, so that merging is exact in any order): a
+// measured violation (a finite excess) ranks above one without a size (+inf: a non-finite answer,
+// an error status, a crash, a hang), which is the worst only where the family has no measured one;
+// among measured ones the larger excess, among equals the earlier case. A maintainer reads a
+// measured excess as the routine's bug, a non-finite answer at 1e160 first as a range limit: the
+// worst violation is the case `repro` is run on (docs/peers.md), and the count keeps every one.
+// 1 when a violation of excess `key` is worse than one of `excess` by size alone, -1 when it is
+// less bad, 0 when only the order of the cases can tell them apart.
+int sizeOrder(double key, double excess)
+{
+    const bool measured = std::isfinite(key), otherMeasured = std::isfinite(excess);
+    if (measured != otherMeasured)
+        return measured ? 1 : -1;
+    if (measured && key != excess)
+        return key > excess ? 1 : -1;
+    return 0;
+}
+
+bool ranksAbove(double key, std::uint64_t i, double excess, std::uint64_t index)
+{
+    const int order = sizeOrder(key, excess);
+    return order != 0 ? order > 0 : i < index;
+}
+} // namespace
+
+bool WorstViolation::outranks(const WorstViolation& o) const
+{
+    return any && (!o.any || sizeOrder(excess, o.excess) > 0);
+}
+
 void WorstViolation::add(double e, const std::string& name, std::uint64_t i, Violation why)
 {
-    // NaN (a ratio of nothing) ranks as +inf: a violation without a size is the worst.
+    // NaN (a ratio of nothing) ranks as +inf: a violation without a size.
     const double key = std::isnan(e) ? INFINITY : e;
-    if (any && !(key > excess || (key == excess && i < index)))
+    if (any && !ranksAbove(key, i, excess, index))
         return;
     any = true;
     excess = key;

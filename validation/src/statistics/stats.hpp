@@ -67,9 +67,10 @@ struct IterHist
 
 inline constexpr int kStopReasons = int(gjk::stopReasonCount);
 
-// A family x variant's worst contract violation: the largest excess (the measured over the
-// allowed, VariantOutcome::violationExcess; +inf for one without a size), ties to the earlier case,
-// so that it merges exactly in any order, as Hist's maximum does. The case name is what
+// A family x variant's worst contract violation: the largest finite excess (the measured over the
+// allowed, VariantOutcome::violationExcess), ties to the earlier case; one without a size (+inf:
+// non-finite, an error status, a crash, a hang) only where there is no measured one (stats.cpp,
+// ranksAbove). It merges exactly in any order, as Hist's maximum does. The case name is what
 // `gjk-validate repro` and `explain` take.
 struct WorstViolation
 {
@@ -80,6 +81,9 @@ struct WorstViolation
     Violation reason = Violation::None;
     void add(double e, const std::string& name, std::uint64_t i, Violation why);
     void merge(const WorstViolation& o);
+    // Worse than `o` by size alone (in the order above; ties are the caller's to break: the
+    // earlier family keeps its place in report.json's worst_contract_violation).
+    bool outranks(const WorstViolation& o) const;
     // {"case", "reason", "excess"}, or null when there is none.
     Json toJson() const;
     Json state() const; // null when there is none; fromState(state()) == *this
