@@ -1,0 +1,126 @@
+// Bullet's btGjkPairDetector on one case: a standalone reproduction, with nothing of gjk2d in it.
+// Written by gjk2d's `gjk-validate repro` (docs/peers.md, "Repro programs"):
+//   gjk-validate repro --family hard/tiny-scale:40 --seed 1 hard/tiny-scale/13-penetration --variants bullet-3.24-double --no-default-plugins --plugin /work/main/build/release/validation/plugins/gjk2d-box2d.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-float.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-double.so --plugin /work/main/build/release/validation/plugins/gjk2d-fcl.so --plugin /work/main/build/release/validation/plugins/gjk2d-geos --plugin /work/main/build/release/validation/plugins/gjk2d-planck --out /work/main/docs/peers/repro
+// Build and run it against Debian's libbullet-dev (Bullet 3.24, btScalar = double: pkg-config
+// bullet-float64; -O3 -ffp-contract=off as gjk2d builds its adapter, so that no a*b+c is fused here):
+//   g++ bullet-3.24-double-hard-tiny-scale-13-penetration.cpp $(pkg-config --cflags --libs bullet-float64) -std=c++17 -O3 -ffp-contract=off -o bullet-3.24-double-hard-tiny-scale-13-penetration && ./bullet-3.24-double-hard-tiny-scale-13-penetration
+//
+// The case: hard/tiny-scale/13-penetration (family hard/tiny-scale), variant bullet-3.24-double. gjk-validate hands Bullet the case's
+// numbers in btScalar (double: a float variant gets the case's doubles rounded to the nearest
+// float). Each number below is the shortest decimal that reads back as that double (a float's with
+// the suffix f, so that it is rounded once): the compiler reads it correctly rounded, so Bullet
+// gets the very bits gjk-validate gave it.
+//
+// The call, as gjk2d's adapter (validation/plugins/bullet/bullet.cpp) makes it, as Bullet's
+// collision pipeline runs a convex pair: each 2D shape (points in its local frame, a radius,
+// world = R * local + p with R = [[c, -s], [s, c]]) becomes the prism P x [-h, h], a
+// btConvexHullShape of its 2n vertices placed in the world frame here in btScalar, with the case's
+// radius as its collision margin (setMargin, also for 0); identity transforms. h = 2 * (eA + eB),
+// e = radius + max_i (|x_i| + |y_i|) over the shape's local points, computed in double and
+// then rounded to btScalar (1 when it is 0): far taller than any depth of the case, so that a
+// minimal translation never runs along z. Then btGjkPairDetector with a btVoronoiSimplexSolver
+// (built in zeroed storage: Bullet reads members its constructor leaves unwritten on degenerate
+// paths) and a btGjkEpaPenetrationDepthSolver, into a btPointCollector. gjk-validate reports
+// distance m_distance (negative: minus the penetration depth), the point on B m_pointInWorld and
+// the point on A
+// m_pointInWorld + m_normalOnBInWorld * m_distance (Bullet's convention, btManifoldResult).
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <cstdio>
+#include <new>
+#include <vector>
+
+struct Shape
+{
+    std::vector<btScalar> points; // x0, y0, x1, y1, ...
+    btScalar radius, px, py, c, s;
+};
+
+const Shape A = {{-7.451247517680003e-13, 1.5201315221650268e-12, -1.668439329912728e-12, -2.8691626440035246e-13, -1.9293210310220212e-13, -1.6819000992834402e-12, 1.2871126638070315e-12, -1.0997052928146947e-12}, 0.0, 3.965422804173187e-12, 2.1148162225741096e-13, 0.6992970807683456, -0.7148311638623975};
+const Shape B = {{5.366744947776257e-14, 5.149741318252004e-13, -2.5567131591868176e-14, 5.171313888797808e-13, -1.975745560527043e-13, 4.785842103362206e-13, -3.9537621900783157e-13, 3.342995618089235e-13, -4.844174077924134e-13, -1.8280680132381753e-13, -2.1087321769066305e-13, -4.728752876217506e-13, 4.0896199591525183e-13, -3.175352539161292e-13, 4.157159140604732e-13, -3.086402928644157e-13}, 0.0, 2.152835973107967e-12, 5.979044002450922e-13, 0.07675571594713124, 0.9970499285740124};
+
+// The exact answer for these inputs (gjk2d's CGAL/GMP ground truth), correctly rounded to double.
+// On overlap the shapes share points: no pair of nearest points is unique, and the exact side's
+// witness is one common point.
+const double exactDistance = 0;
+const bool exactOverlap = true;
+const double exactA[2] = {2.608130515490983e-12, 3.513573886659925e-13}, exactB[2] = {2.608130515490983e-12, 3.513573886659925e-13};
+
+// The shape's reach from its own origin, in double: radius + the largest |x| + |y| of its points.
+double reach(const Shape& s)
+{
+    double m = 0;
+    for (std::size_t i = 0; i < s.points.size(); i += 2)
+    {
+        const double x = s.points[i], y = s.points[i + 1];
+        m = std::max(m, std::abs(x) + std::abs(y));
+    }
+    return double(s.radius) + m;
+}
+
+void buildPrism(const Shape& s, btScalar h, btConvexHullShape& hull)
+{
+    for (std::size_t i = 0; i < s.points.size(); i += 2)
+    {
+        const btScalar x = s.points[i], y = s.points[i + 1];
+        const btScalar wx = s.c * x - s.s * y + s.px;
+        const btScalar wy = s.s * x + s.c * y + s.py;
+        hull.addPoint(btVector3(wx, wy, -h), false);
+        hull.addPoint(btVector3(wx, wy, h), false);
+    }
+    hull.recalcLocalAabb();
+    hull.setMargin(s.radius);
+}
+
+int main()
+{
+    double hd = 2 * (reach(A) + reach(B));
+    if (hd == 0)
+        hd = 1;
+    hd = std::min(hd, double(std::numeric_limits<btScalar>::max()) / 8);
+    const btScalar h = btScalar(hd);
+    btConvexHullShape hullA, hullB;
+    buildPrism(A, h, hullA);
+    buildPrism(B, h, hullB);
+    alignas(btVoronoiSimplexSolver) unsigned char storage[sizeof(btVoronoiSimplexSolver)] = {};
+    btVoronoiSimplexSolver* simplex = new (storage) btVoronoiSimplexSolver;
+    btGjkEpaPenetrationDepthSolver epa;
+    btGjkPairDetector detector(&hullA, &hullB, simplex, &epa);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_transformA.setIdentity();
+    input.m_transformB.setIdentity();
+    btPointCollector result;
+    detector.getClosestPoints(input, result, nullptr);
+    if (!result.m_hasResult)
+    {
+        std::printf("Bullet gave no result (m_hasResult false)\n");
+        return 1;
+    }
+    const btVector3 onB = result.m_pointInWorld;
+    const btVector3 onA = onB + result.m_normalOnBInWorld * result.m_distance;
+    std::printf("Bullet btGjkPairDetector (btScalar %s) on hard/tiny-scale/13-penetration, half-height h = %.17g, "
+                "%d iterations:\n", sizeof(btScalar) == 4 ? "float" : "double", double(h),
+                detector.m_curIter);
+    std::printf("bullet m_distance %.17g  m_normalOnBInWorld (%.17g, %.17g, %.17g)\n",
+                double(result.m_distance), double(result.m_normalOnBInWorld.x()),
+                double(result.m_normalOnBInWorld.y()), double(result.m_normalOnBInWorld.z()));
+    // As gjk-validate reports it: m_distance as it is (negative: minus the penetration depth), the
+    // points' x and y.
+    const double d = double(result.m_distance);
+    const double ax = onA.x(), ay = onA.y(), bx = onB.x(), by = onB.y();
+    std::printf("answer distance %.17g %a\n", d, d);
+    std::printf("answer pointA %.17g %.17g %a %a\n", ax, ay, ax, ay);
+    std::printf("answer pointB %.17g %.17g %a %a\n", bx, by, bx, by);
+    std::printf("exact distance %.17g%s\n", exactDistance, exactOverlap ? " (the shapes overlap)" : "");
+    std::printf("exact pointA %.17g %.17g%s\n", exactA[0], exactA[1], exactOverlap ? " (a common point)" : "");
+    std::printf("exact pointB %.17g %.17g\n", exactB[0], exactB[1]);
+    simplex->~btVoronoiSimplexSolver();
+    return 0;
+}
