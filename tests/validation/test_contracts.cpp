@@ -280,7 +280,7 @@ TEST_CASE("midpoint: one point, within dc/2 + W of both cores", "[contract]")
     }
 }
 
-TEST_CASE("perimeter: each point on its own perimeter, rA + rB - dc apart; one point where the "
+TEST_CASE("perimeter: each point on its own perimeter, rA + rB - dc apart, or one point where the "
           "cores meet",
           "[contract]")
 {

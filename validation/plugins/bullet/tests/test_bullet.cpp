@@ -129,14 +129,14 @@ TEMPLATE_TEST_CASE("a segment and a diamond through a 10 x 10 square: depths 4 a
 }
 
 // A finding, not a prism effect (docs/peers.md, "## Bullet"): two 10 x 10 squares, B = A placed at
-// (5, 0), overlap by 5 along x and 10 along y, depth 5. Bullet's EPA answers -3.5286, pA
-// (7.490, 0) on A's bottom edge and pB (5, 2.490) on B's left edge: each point on its own shape,
+// (5, 0), overlap by 5 along x and 10 along y, depth 5. Bullet's EPA answers -3.5321, pA
+// (7.495, 0) on A's bottom edge and pB (5, 2.495) on B's left edge: each point on its own shape,
 // but 29% short of the depth, along a diagonal that separates nothing (the squares' projections on
-// it overlap by 15 / sqrt(2)), and the 3D pair is tilted (its z differ by 0.22): their x, y are
-// 3.5218 apart, not 3.5286. Not the prisms: measured outside the adapter, half height 1 gives
-// -0.962, 100 gives -3.5333, 1000 -3.5355, tending to 5 / sqrt(2). The same in float and double
-// (to 1e-4). The depth is judged once the exact side computes it (issue 49); until then this pins
-// what Bullet answers.
+// it overlap by 15 / sqrt(2)), and the 3D pair is tilted (its z differ by about 0.16): their x, y
+// are 3.5286 apart, not 3.5321 (with the adapter's half height h = 2 (20 + 20) = 80). Not the
+// prisms: measured outside the adapter, half height 1 gives -0.962, 100 gives -3.5333, 1000
+// -3.5355, tending to 5 / sqrt(2). The same in float and double (to 1e-4). The depth is judged once
+// the exact side computes it (issue 49); until then this pins what Bullet answers.
 TEMPLATE_TEST_CASE("10 x 10 squares overlapping by 5: EPA answers -3.53, a pair 29% short of the "
                    "depth",
                    "", float, double)
@@ -147,8 +147,8 @@ TEMPLATE_TEST_CASE("10 x 10 squares overlapping by 5: EPA answers -3.53, a pair 
     REQUIRE(r.status == GJK2D_STATUS_OK);
     INFO("distance " << r.distance << ", pA (" << r.ax << ", " << r.ay << "), pB (" << r.bx << ", "
                      << r.by << ")");
-    CHECK(r.distance == within(-3.5286, 1e-4));
-    CHECK(std::hypot(r.ax - r.bx, r.ay - r.by) == within(3.5218, 1e-4));
+    CHECK(r.distance == within(-3.5321, 1e-4));
+    CHECK(std::hypot(r.ax - r.bx, r.ay - r.by) == within(3.5286, 1e-4));
     CHECK(r.ay == within(0, 1e-4));
     CHECK(r.bx == within(5, 1e-4));
 }
