@@ -93,7 +93,8 @@ RULES = [
 # marks it in the doc, the file of the build that is there when the part is built, how to get it).
 # A user's clone has no Box2D v3 sources (they are in no Debian package): README.md, "Box2D v3".
 OPTIONAL = [
-    ("box2d-v3", r"--against box2d-v3\b|gjk2d-box2d3\.so", "needs the Box2D v3 sources",
+    ("box2d-v3", r"--against box2d-v3\b|gjk2d-box2d3\.so|\bbox2d-3-[0-9a-f]{6,}\b",
+     "needs the Box2D v3 sources",
      "validation/plugins/gjk2d-box2d3.so",
      "name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE (README.md, \"Box2D v3\")"),
 ]
