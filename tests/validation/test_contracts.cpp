@@ -379,3 +379,24 @@ TEST_CASE("gjk2d's own contract: a violation is exactly a failure, named by its 
     CHECK(reason(neg) == "negative_distance");
     CHECK(reason(judged(own, c, truthOf(3), 0, {}, {}, PluginStatus::Crashed)) == "crashed");
 }
+
+TEST_CASE(
+    "a declared contract is checked: a NaN or infinite tolerance, a bad margin or overlap kind "
+    "are refused",
+    "[contract]")
+{
+    // gjk2d/plugin.h: a negative tolerance is "not stated", a non-finite one is refused; the margin
+    // is a finite number >= 0; the overlap one of the five kinds (0..4).
+    CHECK(checkContract(declared(Overlap::Zero, 1e-6, -1)).empty());
+    CHECK(checkContract(declared(Overlap::Midpoint)).empty());
+    CHECK_FALSE(checkContract(declared(Overlap::Zero, std::nan(""))).empty());
+    CHECK_FALSE(checkContract(declared(Overlap::Zero, -1, std::numeric_limits<double>::infinity()))
+                    .empty());
+    Contract c = declared(Overlap::Penetration);
+    c.margin = -0.5;
+    CHECK_FALSE(checkContract(c).empty());
+    c.margin = std::numeric_limits<double>::infinity();
+    CHECK_FALSE(checkContract(c).empty());
+    c = declared(Overlap(kOverlapKinds));
+    CHECK_FALSE(checkContract(c).empty());
+}

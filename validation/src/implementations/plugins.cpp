@@ -26,7 +26,6 @@
 
 #include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -241,10 +240,9 @@ Contract declaredContract(const std::string& path, int i, const gjk2d_contract& 
     auto text = [](const char* s) { return std::string(s ? s : ""); };
     Contract c;
     c.own = false;
+    // Negative: not stated. A NaN is kept (NaN < 0 is false) for checkContract to refuse.
     c.absTolerance = d.distance_abs_tolerance < 0 ? -1 : d.distance_abs_tolerance;
     c.relTolerance = d.distance_rel_tolerance < 0 ? -1 : d.distance_rel_tolerance;
-    if (std::isnan(d.distance_abs_tolerance) || std::isnan(d.distance_rel_tolerance))
-        c.absTolerance = d.distance_abs_tolerance; // checkContract names it
     c.toleranceSource = text(d.tolerance_source);
     c.overlap = Overlap(d.overlap);
     c.overlapSource = text(d.overlap_source);
