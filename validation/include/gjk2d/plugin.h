@@ -12,7 +12,7 @@
  * any other is refused (exit 2). Version 2 appends `contracts` to gjk2d_plugin (what each
  * implementation promises, below); a version-1 plugin loads as before and is held to gjk2d's own
  * contract. A change to a struct below increments the version; a new optional entry point, looked
- * up by name as the two below are, does not (issue 50's prepared shapes come that way).
+ * up by name as the three below are, does not.
  *
  * The runner calls `distance_f` / `distance_d` in a child process (a crash or a hang costs one
  * case, never the campaign), one call at a time, never from two threads at once.
@@ -50,6 +50,18 @@ extern "C"
  * runner calls prepare once, then pass once per timed pass (alternated with gjk2d's passes), then
  * release, all in one child process; the table lives as long as the library. */
 #define GJK2D_PLUGIN_TIMING_ENTRY "gjk2d_plugin_timing"
+
+/* Optional, since issue 50 (the ABI version is unchanged: a plugin without it loads as before):
+ *
+ *     const gjk2d_prepared* gjk2d_plugin_prepared(void);
+ *
+ * shapes prepared once, as the library's users build them: its proxy, its FCL or Bullet object.
+ * Where a plugin exports it, `run` and `bench` time its queries on prepared shapes (the query
+ * alone: ns/query), and its preparation apart (ns per shape); the accuracy run answers each case
+ * through prepare, distance and release too, so that what is judged is what is timed. Without it
+ * the plugin is timed through distance_f/distance_d, and the report says that its figure includes
+ * shape set-up. The table (below) lives as long as the library. */
+#define GJK2D_PLUGIN_PREPARED_ENTRY "gjk2d_plugin_prepared"
 
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
      * to that type and judges it against the exact truth of those rounded inputs. */
@@ -211,6 +223,43 @@ extern "C"
         void (*release)(void* prepared);
     } gjk2d_timing;
     typedef const gjk2d_timing* (*gjk2d_plugin_timing_fn)(void); /* GJK2D_PLUGIN_TIMING_ENTRY */
+
+    /* What a prepared shape holds (gjk2d_prepared.scope). */
+    enum gjk2d_prepared_scope
+    {
+        /* The shape in its own frame: the transform is given to each query, and the library takes
+         * the case's (c, s) and position exactly (Box2D: b2Transform's q.c, q.s). One preparation
+         * serves every query of that shape. */
+        GJK2D_PREPARED_SHAPE = 0,
+        /* The library cannot take the case's transform exactly (libccd turns a non-unit (c, s)
+         * into a quaternion and loses its scale; the Bullet adapter bakes world points in), so
+         * a prepared shape holds the case's world points: one preparation per case and shape, and
+         * the query ignores the transforms it is given. The report says so. */
+        GJK2D_PREPARED_CASE = 1
+    };
+
+    /* The optional prepared shapes (GJK2D_PLUGIN_PREPARED_ENTRY). `implementation` is the index
+     * in the description; shapes are gjk2d_shape_f for a float implementation, else gjk2d_shape_d;
+     * results gjk2d_result_f or gjk2d_result_d. */
+    typedef struct gjk2d_prepared
+    {
+        /* GJK2D_PREPARED_SHAPE or GJK2D_PREPARED_CASE, for implementation `implementation`. */
+        int32_t (*scope)(int32_t implementation);
+        /* Builds the library's shape from `shape` (valid during this call only: copy what the
+         * query needs). A SCOPE_SHAPE implementation reads points, count and radius; a
+         * SCOPE_CASE one reads the transform too. NULL when it cannot (the case is then answered
+         * GJK2D_STATUS_ERROR). */
+        void* (*prepare)(int32_t implementation, const void* shape);
+        /* One query on two prepared shapes, as distance_f/distance_d answers it: `a` and `b` are
+         * the case's shapes (a SCOPE_SHAPE implementation reads their transforms; the runner
+         * keeps them valid during the call), `cache` as distance_f's, `out` the result. Returns a
+         * gjk2d_status. Its answer must equal distance_f/distance_d's on the same case, bit for
+         * bit (the shipped plugins' distance_d is prepare, distance, release). */
+        int32_t (*distance)(int32_t implementation, const void* prepared_a, const void* a,
+                            const void* prepared_b, const void* b, void* cache, void* out);
+        void (*release)(int32_t implementation, void* prepared);
+    } gjk2d_prepared;
+    typedef const gjk2d_prepared* (*gjk2d_plugin_prepared_fn)(void); /* GJK2D_PLUGIN_PREPARED_ENTRY */
 
 #if defined(_WIN32)
 #define GJK2D_PLUGIN_EXPORT __declspec(dllexport)

@@ -309,6 +309,7 @@ void timeVariants(CampaignState& state, const CampaignConfig& config, const Eval
             s.nsMin = t.nsMin;
             s.nsMax = t.nsMax;
             s.timingPasses = t.passes;
+            s.prepareNsPerShape = t.prepareNsPerShape;
             p.add(1);
         }
     for (auto& f : state.families) // the samples are no longer needed

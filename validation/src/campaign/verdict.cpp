@@ -150,6 +150,7 @@ Json variantsJson(const CampaignState& state, const EvalContext& ctx)
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};
         j["contract"] = contractJson(*v);
+        j["timing"] = timingJson(*v);
         j["worst_contract_violation"] = worstViolationJson(state, k);
         out.push_back(std::move(j));
     }

@@ -412,12 +412,12 @@ void answerThroughAdapters(const std::vector<PluginTask>& tasks, double timeoutS
         answerPipelined(pool().slots[path], list, timeoutSeconds);
 }
 
-double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
-                     double timeoutSeconds, const std::string& what)
+AdapterTime adapterTime(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
+                        double timeoutSeconds, const std::string& what)
 {
     Slot& s = pool().slots[v.plugin->path];
     if (!ensureRunning(s, *v.plugin, timeoutSeconds))
-        return -1;
+        return {};
     const std::uint64_t id = s.nextId++;
     const Exchange e = exchange(
         s, fmt::format("time {} {} {} {} {}\n", id, v.name, K, m, casesText), timeoutSeconds);
@@ -429,7 +429,7 @@ double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::stri
         double ns = -1;
         if (t.size() == 3 && t[0] == "timed" && parseInteger(t[1], 0, LLONG_MAX, got) &&
             std::uint64_t(got) == id && parseNumber(t[2], ns) && std::isfinite(ns) && ns >= 0)
-            return ns;
+            return {ns, -1};
         const bool said = !t.empty() && (t[0] == "error" || t[0] == "refused");
         why = (said ? "it answered " : "malformed answer: ") + quoted80(e.line);
         if (!said)
@@ -437,7 +437,7 @@ double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::stri
     }
     std::fprintf(stderr, "gjk-validate: executable adapter %s, variant '%s', %s: %s; no ns/query\n",
                  v.plugin->path.c_str(), v.name.c_str(), what.c_str(), why.c_str());
-    return -1;
+    return {};
 }
 
 void closeAdapters()

@@ -91,8 +91,16 @@ std::string adapterCaseText(const VariantInfo& v, const PreparedCase& p);
 // by spaces) K times in its own timed loop. The total in nanoseconds, or a negative number when
 // the adapter did not answer `timed` within timeoutSeconds (crash, hang, `error`, malformed): a
 // line on stderr says so, naming `what`, and the process is started again for the next request.
-double adapterTimeNs(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
-                     double timeoutSeconds, const std::string& what);
+// An adapter that declared `prepared NAME shape|case` (Preparation::Shape or Case) builds the
+// chunk's shapes once, before its timed loop, and answers `timed ID NS PREPARE_NS`: NS the K loops
+// of queries alone, PREPARE_NS the preparation of the chunk's 2m shapes (AdapterTime::prepareNs).
+struct AdapterTime
+{
+    double ns = -1;        // the K loops; negative: no answer
+    double prepareNs = -1; // the preparation of the chunk's shapes; -1: not given
+};
+AdapterTime adapterTime(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
+                        double timeoutSeconds, const std::string& what);
 
 // Ends every adapter process: stdin closed, kAdapterCloseSeconds to exit, then SIGKILL. Called
 // when the plugins' work is done (finishPluginLogs) and, at the latest, at exit.

@@ -100,6 +100,7 @@ struct OpenedPlugin
     const gjk2d_plugin* description = nullptr;
     std::string library;
     const gjk2d_timing* timing = nullptr;
+    const gjk2d_prepared* prepared = nullptr;
 };
 
 // Opens the plugin and reads its description, of this ABI version and with 1 .. 64
@@ -147,7 +148,14 @@ OpenedPlugin openPlugin(const std::string& path)
     if (loop && (loop->prepare == nullptr || loop->pass == nullptr || loop->release == nullptr))
         throw InputError(fmt::format("plugin {}: {}() returned a table with a NULL function", path,
                                      GJK2D_PLUGIN_TIMING_ENTRY));
-    return {d, text ? text : "", loop};
+    const auto preparedEntry =
+        reinterpret_cast<gjk2d_plugin_prepared_fn>(::dlsym(handle, GJK2D_PLUGIN_PREPARED_ENTRY));
+    const gjk2d_prepared* prepared = preparedEntry ? preparedEntry() : nullptr;
+    if (prepared && (prepared->scope == nullptr || prepared->prepare == nullptr ||
+                     prepared->distance == nullptr || prepared->release == nullptr))
+        throw InputError(fmt::format("plugin {}: {}() returned a table with a NULL function", path,
+                                     GJK2D_PLUGIN_PREPARED_ENTRY));
+    return {d, text ? text : "", loop, prepared};
 }
 
 // Every implementation well described, under a name no variant and no other implementation has.
@@ -274,6 +282,17 @@ std::vector<PluginImpl> describePlugin(const std::string& path, const std::strin
         p.library = opened.library;
         p.timing = opened.timing;
         p.index = i;
+        p.prepared = opened.prepared;
+        if (p.prepared)
+        {
+            const std::int32_t scope = p.prepared->scope(i);
+            if (scope != GJK2D_PREPARED_SHAPE && scope != GJK2D_PREPARED_CASE)
+                throw InputError(fmt::format(
+                    "plugin {}: implementation '{}': prepared scope {} is neither "
+                    "GJK2D_PREPARED_SHAPE (0) nor GJK2D_PREPARED_CASE (1)",
+                    path, p.impl.name, scope));
+            p.preparation = scope == GJK2D_PREPARED_SHAPE ? Preparation::Shape : Preparation::Case;
+        }
         impls.push_back(std::move(p));
     }
     return impls;
@@ -341,6 +360,48 @@ void judgePluginVariant(const std::string& name)
     throw InputError(fmt::format("--judge {}: no loaded plugin has an implementation of that name "
                                  "(loaded: {})",
                                  name, known.empty() ? "none" : known));
+}
+
+const char* preparationName(Preparation p)
+{
+    switch (p)
+    {
+    case Preparation::None:
+        return "none";
+    case Preparation::Shape:
+        return "shape";
+    case Preparation::Case:
+        return "case";
+    case Preparation::InCall:
+        return "in-call";
+    }
+    return "?";
+}
+
+Preparation preparationOf(const VariantInfo& v)
+{
+    return v.plugin ? v.plugin->preparation : Preparation::None;
+}
+
+bool selfTimed(const VariantInfo& v)
+{
+    return v.plugin && v.plugin->kind == PluginKind::Executable;
+}
+
+Json timingJson(const VariantInfo& v)
+{
+    static constexpr const char* includes[] = {
+        "the query alone: gjk2d's plain query takes the points as given, nothing to prepare",
+        "the query alone, on shapes prepared once in their own frame (preparation timed apart, per "
+        "shape)",
+        "the query alone, on shapes prepared per case with the case's world points baked in (the "
+        "library cannot take the case's transform exactly; preparation timed apart, per shape)",
+        "the query and the shapes' set-up, every call (no preparation step offered)",
+    };
+    const Preparation p = preparationOf(v);
+    return {{"preparation", preparationName(p)},
+            {"includes", includes[int(p)]},
+            {"timed_by", selfTimed(v) ? "adapter" : "gjk-validate"}};
 }
 
 const char* pluginKindName(PluginKind k)

@@ -44,6 +44,32 @@ const char* pluginKindName(PluginKind k);
 // One implementation of a loaded plugin.
 struct InProcessCalls; // implementations/in_process.hpp
 
+// What a variant's shape preparation is, and so what its ns/query includes (the report's
+// variants[].timing, timingJson below):
+// - None: gjk2d's plain query takes the points as given; there is nothing to prepare.
+// - Shape: shapes prepared once in their own frame (GJK2D_PREPARED_SHAPE, or an adapter's
+//   `prepared NAME shape`); ns/query is the query alone, the preparation timed apart per shape.
+// - Case: the library cannot take the case's transform exactly, so a prepared shape holds the
+//   case's world points, one per case and shape (GJK2D_PREPARED_CASE, `prepared NAME case`);
+//   ns/query is the query alone, the preparation timed apart per shape.
+// - InCall: no preparation step offered (a plugin without gjk2d_plugin_prepared, an adapter
+//   without a `prepared` line, an in-process callback): ns/query includes shape set-up.
+enum class Preparation
+{
+    None,
+    Shape,
+    Case,
+    InCall,
+};
+const char* preparationName(Preparation p); // "none", "shape", "case", "in-call"
+Preparation preparationOf(const VariantInfo& v); // None for gjk2d's own variants
+// Whether the variant's ns/query is the implementation's own measurement (an executable adapter's
+// `timed` answers), not gjk-validate's clock.
+bool selfTimed(const VariantInfo& v);
+// report.json's variants[].timing: {"preparation": preparationName, "includes": what ns/query
+// includes in words, "timed_by": "gjk-validate" or "adapter"}.
+Json timingJson(const VariantInfo& v);
+
 struct PluginImpl
 {
     // The plugin file: absolute, symbolic links resolved (the report's). An in-process variant's:
@@ -63,6 +89,12 @@ struct PluginImpl
     // it) and the implementation's index in its description, which the loop is given.
     const gjk2d_timing* timing = nullptr;
     int index = 0;
+    // A shared library's optional prepared shapes (gjk2d_plugin_prepared; null without it): the
+    // accuracy run and the timing both answer through them.
+    const gjk2d_prepared* prepared = nullptr;
+    // Its preparation: a shared library's from prepared->scope(index), an adapter's from its
+    // handshake's `prepared` line; InCall without either.
+    Preparation preparation = Preparation::InCall;
     // What it promises: a version-2 plugin's or adapter's declaration, else gjk2d's own.
     Contract contract = ownContract();
     // An in-process variant's callbacks; null once released (releaseInProcessVariant).

@@ -149,6 +149,9 @@ struct Stats
     // Timing (not merged: measured once per family and variant).
     double nsPerQuery = -1, nsMin = -1, nsMax = -1, ratioToBaseline = -1;
     int timingPasses = 0;
+    // The preparation of one shape, timed apart from the query (a variant with a preparation step:
+    // implementations/plugins.hpp, Preparation); -1: none measured.
+    double prepareNsPerShape = -1;
 
     // Folds one judged query (case `name`, its place `index` in the family) of variant `vi`.
     void add(const VariantOutcome& v, const std::string& name, std::uint64_t index,

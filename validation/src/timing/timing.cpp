@@ -585,8 +585,9 @@ TimingResult timeAdapter(const std::vector<const PreparedCase*>& cases, const Va
         double ns = 0;
         for (std::size_t k = 0; k < chunks.text.size(); ++k)
         {
-            const double t = adapterTimeNs(v, reps, chunks.cases[k], chunks.text[k], limit,
-                                           fmt::format("timing chunk {}", k));
+            const double t = adapterTime(v, reps, chunks.cases[k], chunks.text[k], limit,
+                                         fmt::format("timing chunk {}", k))
+                                 .ns;
             if (t < 0)
                 throw AdapterLost{};
             ns += t;

@@ -29,6 +29,9 @@ struct TimingResult
     int repsPerPass = 0; // loops over the cases in one pass
     std::size_t cases = 0;
     bool warm = false; // warm-started queries were timed
+    // A variant with a preparation step (Preparation::Shape or Case): the preparation of all the
+    // timed cases' shapes, once, over their number; -1: not measured.
+    double prepareNsPerShape = -1;
 };
 
 // Times the variant's query over `cases` (none skipped for it: see skipReason()): the one timing
