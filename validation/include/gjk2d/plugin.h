@@ -246,10 +246,12 @@ extern "C"
         /* GJK2D_PREPARED_SHAPE or GJK2D_PREPARED_CASE, for implementation `implementation`. */
         int32_t (*scope)(int32_t implementation);
         /* Builds the library's shape from `shape` (valid during this call only: copy what the
-         * query needs). A SCOPE_SHAPE implementation reads points, count and radius; a
-         * SCOPE_CASE one reads the transform too. NULL when it cannot (the case is then answered
-         * GJK2D_STATUS_ERROR). */
-        void* (*prepare)(int32_t implementation, const void* shape);
+         * query needs). A GJK2D_PREPARED_SHAPE implementation reads points, count and radius,
+         * and is given other = NULL. A GJK2D_PREPARED_CASE one reads the transform too, and is
+         * given the case's other shape as `other`, for what the case fixes for both (the prism
+         * reduction's common half-height, docs/peers.md). NULL when it cannot (the case is then
+         * answered GJK2D_STATUS_ERROR). */
+        void* (*prepare)(int32_t implementation, const void* shape, const void* other);
         /* One query on two prepared shapes, as distance_f/distance_d answers it: `a` and `b` are
          * the case's shapes (a SCOPE_SHAPE implementation reads their transforms; the runner
          * keeps them valid during the call), `cache` as distance_f's, `out` the result. Returns a
