@@ -294,24 +294,27 @@ void timeVariants(CampaignState& state, const CampaignConfig& config, const Eval
     tc.maxPasses = config.maxPasses;
     tc.budgetSeconds = config.timingBudgetSeconds;
     const std::size_t nv = ctx.variants.size();
-    Progress p(config.progress, "timing", state.families.size() * nv);
-    for (auto& f : state.families)
+    Progress p(config.progress, "timing", state.families.size());
+    for (auto& f : state.families) // per family, every variant's passes alternated
+    {
+        std::vector<std::vector<const PreparedCase*>> cases(nv);
         for (std::size_t k = 0; k < nv; ++k)
-        {
-            std::vector<const PreparedCase*> cases;
             for (std::size_t i = 0; i < f.timing.cases.size(); ++i)
                 if (f.timing.runs[i][k])
-                    cases.push_back(&f.timing.cases[i]);
-            const VariantInfo& v = *ctx.variants[k];
-            const TimingResult t = timeQueries(cases, v, tc, ctx.pluginTimeoutSeconds);
+                    cases[k].push_back(&f.timing.cases[i]);
+        const std::vector<TimingResult> t =
+            timeAlternated(cases, ctx.variants, tc, ctx.pluginTimeoutSeconds);
+        for (std::size_t k = 0; k < nv; ++k)
+        {
             Stats& s = f.stats[k];
-            s.nsPerQuery = t.nsPerQuery;
-            s.nsMin = t.nsMin;
-            s.nsMax = t.nsMax;
-            s.timingPasses = t.passes;
-            s.prepareNsPerShape = t.prepareNsPerShape;
-            p.add(1);
+            s.nsPerQuery = t[k].nsPerQuery;
+            s.nsMin = t[k].nsMin;
+            s.nsMax = t[k].nsMax;
+            s.timingPasses = t[k].passes;
+            s.prepareNsPerShape = t[k].prepareNsPerShape;
         }
+        p.add(1);
+    }
     for (auto& f : state.families) // the samples are no longer needed
         f.timing = {};
 }

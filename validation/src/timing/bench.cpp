@@ -3,6 +3,8 @@
 // own loop, the bench report's JSON and its table.
 #include "timing/bench.hpp"
 
+#include "timing/plugin_timing.hpp"
+
 #include "implementations/peers.hpp"
 
 #include <fmt/format.h>
@@ -87,9 +89,8 @@ VariantCases casesOf(const VariantInfo& v, const std::vector<PreparedCase>& prep
     return c;
 }
 
-// Every variant timed. gjk2d's variants are timed with their passes alternated
-// (medianOfAlternatedPasses: all their inputs are held at once); plugin variants, timed in a child
-// process each, on their own.
+// Every variant timed, their passes alternated (medianOfAlternatedPasses: all their inputs are held
+// at once), with --against's own loop, cold and warm.
 struct VariantTimings
 {
     std::vector<TimingResult> results;
@@ -102,35 +103,26 @@ VariantTimings timeEveryVariant(const BenchConfig& config,
                                 const std::vector<PreparedCase>& prepared, const TimingConfig& tc)
 {
     VariantTimings t;
-    t.results.resize(config.variants.size());
     std::vector<TimedLoop> loops;
-    std::vector<std::size_t> loopOf; // the variant of each loop
-    for (std::size_t k = 0; k < config.variants.size(); ++k)
+    for (const VariantInfo* v : config.variants)
     {
-        const VariantInfo* v = config.variants[k];
         t.cases.push_back(casesOf(*v, prepared));
-        if (v->plugin)
-            t.results[k] = timeQueries(t.cases[k].cases, *v, tc, config.pluginTimeoutSeconds);
-        else
-        {
-            loops.push_back(timedLoop(t.cases[k].cases, *v, tc));
-            loopOf.push_back(k);
-        }
+        loops.push_back(variantLoop(t.cases.back().cases, *v, tc, config.pluginTimeoutSeconds));
     }
-    if (config.against) // its own loop, cold and warm, alternated with gjk2d's
+    if (config.against) // its own loop, cold and warm, alternated with the others
     {
         t.againstCases = casesOf(*config.against, prepared);
         for (const bool warm : {false, true})
             loops.push_back(ownTimingLoop(t.againstCases.cases, *config.against, warm, tc,
                                           config.pluginTimeoutSeconds));
     }
-    const std::vector<TimingResult> alternated = medianOfAlternatedPasses(loops, tc);
-    for (std::size_t l = 0; l < loopOf.size(); ++l)
-        t.results[loopOf[l]] = alternated[l];
+    std::vector<TimingResult> alternated = medianOfAlternatedPasses(loops, tc);
+    const std::size_t nv = config.variants.size();
+    t.results.assign(alternated.begin(), alternated.begin() + std::ptrdiff_t(nv));
     if (config.against)
     {
-        t.againstCold = alternated[loopOf.size()];
-        t.againstWarm = alternated[loopOf.size() + 1];
+        t.againstCold = alternated[nv];
+        t.againstWarm = alternated[nv + 1];
     }
     return t;
 }
