@@ -82,20 +82,49 @@ AnswerRecord callIn(Fn fn, const Shape& a, const Shape& b, void* cache)
     return r;
 }
 
+// A query on shapes prepared for it (gjk2d_plugin_prepared): both prepared, the query, both
+// released, so that the accuracy run judges what the timing times. A failed prepare() (NULL) is
+// GJK2D_STATUS_ERROR.
+template <class Shape, class Result>
+std::int32_t callPrepared(const PluginImpl& plugin, const Shape* a, const Shape* b, void* cache,
+                          Result* out)
+{
+    const gjk2d_prepared& pp = *plugin.prepared;
+    const bool perCase = plugin.preparation == Preparation::Case;
+    void* pa = pp.prepare(plugin.index, a, perCase ? b : nullptr);
+    void* pb = pp.prepare(plugin.index, b, perCase ? a : nullptr);
+    const std::int32_t status = pa && pb ? pp.distance(plugin.index, pa, a, pb, b, cache, out)
+                                         : std::int32_t(GJK2D_STATUS_ERROR);
+    for (void* s : {pa, pb})
+        if (s != nullptr)
+            pp.release(plugin.index, s);
+    return status;
+}
+
 // The call itself, as the child makes it. `cache`: cache_bytes zeroed bytes (a cold start).
 AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
                         std::vector<unsigned char>& cache)
 {
-    const gjk2d_implementation& im = v.plugin->impl;
+    const PluginImpl& plugin = *v.plugin;
+    const gjk2d_implementation& im = plugin.impl;
     std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
     void* c = im.cache_bytes > 0 ? cache.data() : nullptr;
     if (im.scalar == GJK2D_SCALAR_FLOAT)
-        return callIn<float, gjk2d_shape_f, gjk2d_result_f>(
-            im.distance_f, shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf),
-            shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf), c);
-    return callIn<double, gjk2d_shape_d, gjk2d_result_d>(
-        im.distance_d, shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
-        shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
+    {
+        const auto prepared = [&](const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cc,
+                                  gjk2d_result_f* o) { return callPrepared(plugin, a, b, cc, o); };
+        const auto a = shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf);
+        const auto b = shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf);
+        return plugin.prepared
+                   ? callIn<float, gjk2d_shape_f, gjk2d_result_f>(prepared, a, b, c)
+                   : callIn<float, gjk2d_shape_f, gjk2d_result_f>(im.distance_f, a, b, c);
+    }
+    const auto prepared = [&](const gjk2d_shape_d* a, const gjk2d_shape_d* b, void* cc,
+                              gjk2d_result_d* o) { return callPrepared(plugin, a, b, cc, o); };
+    const auto a = shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad);
+    const auto b = shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd);
+    return plugin.prepared ? callIn<double, gjk2d_shape_d, gjk2d_result_d>(prepared, a, b, c)
+                           : callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d, a, b, c);
 }
 
 std::mutex g_messages; // crash and hang lines on stderr
