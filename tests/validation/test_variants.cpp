@@ -264,15 +264,21 @@ TEST_CASE("bench: the variants' passes alternate", "[variants][bench]")
     tc.minPasses = tc.maxPasses = 3;
     tc.budgetSeconds = 1e9;
     tc.minPassSeconds = 1e-9; // one rep per pass
-    const std::vector<TimingResult> r =
-        medianOfAlternatedPasses({loop('a', 10, 4), loop('b', 25, 2)}, tc);
-    CHECK(std::string(order.begin(), order.end()) == "ababab"
-                                                     "ab"); // calibration, then 3 rounds
+    TimedLoop b = loop('b', 25, 2);
+    b.prepareNsPerShape = [] { return 7.5; };
+    const std::vector<TimingResult> r = medianOfAlternatedPasses({loop('a', 10, 4), b}, tc);
+    // Calibration, then 3 rounds, round p starting at loop p mod 2: no loop always runs first.
+    CHECK(std::string(order.begin(), order.end()) == "ab"
+                                                     "ab"
+                                                     "ba"
+                                                     "ab");
     REQUIRE(r.size() == 2);
     CHECK(r[0].nsPerQuery == 10.0);
     CHECK(r[1].nsPerQuery == 25.0);
     CHECK(r[0].passes == 3);
     CHECK(r[1].cases == 2);
+    CHECK(r[0].prepareNsPerShape == -1.0); // no preparation step
+    CHECK(r[1].prepareNsPerShape == 7.5);
 }
 
 TEST_CASE("every-start variants judge the worst answer over many starts", "[variants]")
