@@ -9,3 +9,11 @@ if(TARGET gjk2d_fcl_plugin)
   add_dependencies(fcl_peer_tests gjk2d_fcl_plugin)
   gjk2d_catch_tests(fcl_peer_tests "plugins: fcl: ")
 endif()
+
+# Its prepared shapes (gjk2d_plugin_prepared) answer as distance_d, bit for bit, both solvers
+# (tests/plugins/peers/prepared_equal.cpp; GST_LIBCCD's aborts on some hard cases are counted).
+if(TARGET gjk2d_fcl_plugin AND TARGET prepared_equal)
+  add_test(NAME "plugins: fcl: prepared shapes answer as distance_d, bit for bit"
+           COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_fcl_plugin>
+                   --family random:500 --family hard --family engine)
+endif()
