@@ -13,6 +13,16 @@ if(TARGET gjk2d_bullet_float_plugin AND TARGET gjk2d_bullet_double_plugin)
   gjk2d_catch_tests(bullet_peer_tests "plugins: bullet: ")
 endif()
 
+# Their prepared shapes (gjk2d_plugin_prepared) answer as distance_f / distance_d, bit for bit
+# (tests/plugins/peers/prepared_equal.cpp).
+foreach(_precision float double)
+  if(TARGET gjk2d_bullet_${_precision}_plugin AND TARGET prepared_equal)
+    add_test(NAME "plugins: bullet: ${_precision}: prepared shapes answer as the plain call, bit for bit"
+             COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_bullet_${_precision}_plugin>
+                     --family random:500 --family hard --family engine)
+  endif()
+endforeach()
+
 # The prisms' half height on penetrating cases (test_prism_height.cpp): Bullet in double called
 # directly (its own pkg-config flags, BT_USE_DOUBLE_PRECISION), beside the adapter.
 if(TARGET gjk2d_bullet_double_plugin)
