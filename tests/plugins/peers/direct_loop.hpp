@@ -301,7 +301,8 @@ inline bool sameBits(double x, double y)
 // first cases' distances are compared with the adapter's, bit for bit (not the points: FCL leaves
 // them unwritten on overlap, where the adapter sets NaN first);
 // else passes of whole loops over the cases are timed, the adapter's prepared queries alternated
-// with them when --plugin is given, and the medians printed in ns/query.
+// with them when --plugin is given (after, then before: neither side always runs first), and the
+// medians printed in ns/query.
 template <class Query>
 int run(const Options& o, const std::vector<const Case*>& cases, Query&& query)
 {
@@ -357,10 +358,12 @@ int run(const Options& o, const std::vector<const Case*>& cases, Query&& query)
     const int reps = std::max(1, int(std::ceil(o.passSeconds * 1e9 / std::max(once, 1.0))));
     const double queries = double(reps) * double(cases.size());
     std::vector<double> direct, viaAdapter;
-    for (int p = 0; p < o.passes; ++p)
+    for (int p = 0; p < o.passes; ++p) // the adapter's pass after the direct one, then before it
     {
+        if (adapter && p % 2 == 1)
+            viaAdapter.push_back(adapter->pass(reps) / queries);
         direct.push_back(directPass(reps) / queries);
-        if (adapter)
+        if (adapter && p % 2 == 0)
             viaAdapter.push_back(adapter->pass(reps) / queries);
     }
     std::printf("%s, %zu cases, %d passes of %d loops:\n", o.variant.c_str(), cases.size(),
