@@ -10,7 +10,11 @@
 //   runner refuses larger cases without calling;
 // - it computes in float; radii are handled with useRadii = true (distance minus both radii,
 //   witness points moved onto the rounded surfaces; 0 and the midpoint when they overlap);
-// - the warm start is the b2SimplexCache (count = 0: cold), given as the plugin's cache bytes.
+// - the warm start is the b2SimplexCache (count = 0: cold), given as the plugin's cache bytes;
+// - shapes prepared once (gjk2d_plugin_prepared, scope `shape`): a prepared shape is its points
+//   copied and its b2DistanceProxy, in its own frame; a query builds the b2DistanceInput from two
+//   proxies and the case's transforms and calls b2Distance. distance_f is prepare, query, release,
+//   so that the two forms answer alike, bit for bit.
 //
 // The contract (gjk2d_contract, kContract below), read in Box2D 2.4.1's sources (erincatto/box2d
 // tag v2.4.1; Debian's libbox2d-dev 2.4.1 ships its headers unchanged):
@@ -31,7 +35,8 @@
 
 #include <dlfcn.h>
 
-#include <cstring>
+#include <new>
+#include <vector>
 
 namespace
 {
@@ -52,9 +57,6 @@ B2DistanceFn libraryB2Distance()
     return fn;
 }
 
-// At most 256 points per shape: the adapter hands Box2D b2Vec2 arrays (the layout of x0, y0, ...).
-static_assert(sizeof(b2Vec2) == 2 * sizeof(float));
-
 b2Transform transformOf(const gjk2d_shape_f& s)
 {
     b2Transform xf;
@@ -64,20 +66,63 @@ b2Transform transformOf(const gjk2d_shape_f& s)
     return xf;
 }
 
-int32_t box2dDistance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cache,
-                      gjk2d_result_f* out)
+// A prepared shape (gjk2d_prepared, scope GJK2D_PREPARED_SHAPE): its points copied once, in its own
+// frame, and the b2DistanceProxy over them, as a Box2D 2.4.1 user keeps a shape's proxy
+// (b2DistanceProxy::Set stores the pointer: "The vertices must remain in scope while the proxy is
+// in use"). The scope is the shape's because Box2D takes the case's transform exactly:
+// b2Transform's p and q.c, q.s are the case's floats, set directly (transformOf), so one proxy
+// serves every pose of the shape. A shape Box2D cannot take (no point, more than 256) is kept as
+// refused, so that the query answers GJK2D_STATUS_REFUSED as distance_f does.
+struct Prepared
 {
-    if (a->count < 1 || b->count < 1 || a->count > 256 || b->count > 256)
+    std::vector<b2Vec2> points;
+    b2DistanceProxy proxy;
+    bool refused = false;
+};
+
+void* prepare(int32_t implementation, const void* shape, const void* /*other*/)
+{
+    if (implementation != 0)
+        return nullptr;
+    const auto& s = *static_cast<const gjk2d_shape_f*>(shape);
+    auto* p = new (std::nothrow) Prepared;
+    if (p == nullptr)
+        return nullptr;
+    p->refused = s.count < 1 || s.count > 256;
+    if (!p->refused)
+    {
+        p->points.reserve(std::size_t(s.count));
+        for (int32_t i = 0; i < s.count; ++i)
+            p->points.emplace_back(s.points[2 * i], s.points[2 * i + 1]);
+        p->proxy.Set(p->points.data(), s.count, s.radius);
+    }
+    return p;
+}
+
+void release(int32_t /*implementation*/, void* prepared)
+{
+    delete static_cast<Prepared*>(prepared);
+}
+
+// The query, what a Box2D 2.4.1 user pays for one: the b2DistanceInput from the two kept proxies
+// and the case's transforms, useRadii, b2Distance with the given b2SimplexCache (zeroed: count 0,
+// a cold start), the output copied out.
+int32_t distance(int32_t /*implementation*/, const void* preparedA, const void* a,
+                 const void* preparedB, const void* b, void* cache, void* result)
+{
+    const auto& pa = *static_cast<const Prepared*>(preparedA);
+    const auto& pb = *static_cast<const Prepared*>(preparedB);
+    if (pa.refused || pb.refused)
         return GJK2D_STATUS_REFUSED;
     b2DistanceInput in;
-    in.proxyA.Set(reinterpret_cast<const b2Vec2*>(a->points), a->count, a->radius);
-    in.proxyB.Set(reinterpret_cast<const b2Vec2*>(b->points), b->count, b->radius);
-    in.transformA = transformOf(*a);
-    in.transformB = transformOf(*b);
+    in.proxyA = pa.proxy;
+    in.proxyB = pb.proxy;
+    in.transformA = transformOf(*static_cast<const gjk2d_shape_f*>(a));
+    in.transformB = transformOf(*static_cast<const gjk2d_shape_f*>(b));
     in.useRadii = true;
-    b2SimplexCache* c = static_cast<b2SimplexCache*>(cache); // zeroed: count 0, a cold start
     b2DistanceOutput o;
-    libraryB2Distance()(&o, c, &in);
+    libraryB2Distance()(&o, static_cast<b2SimplexCache*>(cache), &in);
+    auto* out = static_cast<gjk2d_result_f*>(result);
     out->distance = o.distance;
     out->point_a[0] = o.pointA.x;
     out->point_a[1] = o.pointA.y;
@@ -86,6 +131,25 @@ int32_t box2dDistance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cach
     out->iterations = o.iterations;
     return GJK2D_STATUS_OK;
 }
+
+int32_t scope(int32_t /*implementation*/)
+{
+    return GJK2D_PREPARED_SHAPE;
+}
+
+// distance_f is the prepared form on one case: prepare both shapes, query, release.
+int32_t box2dDistance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cache,
+                      gjk2d_result_f* out)
+{
+    void* pa = prepare(0, a, nullptr);
+    void* pb = prepare(0, b, nullptr);
+    const int32_t status = pa && pb ? distance(0, pa, a, pb, b, cache, out) : GJK2D_STATUS_ERROR;
+    release(0, pa);
+    release(0, pb);
+    return status;
+}
+
+const gjk2d_prepared kPrepared = {&scope, &prepare, &distance, &release};
 
 const gjk2d_implementation kImplementations[] = {
     {"box2d-2.4.1", "Box2D 2.4.1 b2Distance (Debian libbox2d), cold start, useRadii",
@@ -117,4 +181,10 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return "Box2D 2.4.1 (Debian libbox2d-dev)";
+}
+
+// Shapes prepared once (the optional export of gjk2d/plugin.h): the b2DistanceProxy of each shape.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_prepared* gjk2d_plugin_prepared(void)
+{
+    return &kPrepared;
 }

@@ -9,6 +9,12 @@
  * no simplex capture. b2ShapeDistance answers in A's frame; its points are mapped to world with
  * b2TransformPoint(xfA, .), in float.
  *
+ * Shapes prepared once (gjk2d_plugin_prepared, scope `shape`): a prepared shape is its
+ * b2ShapeProxy; a query is what a Box2D v3 user pays on two kept proxies: the b2DistanceInput
+ * (proxies copied in, b2InvMulTransforms), the zeroed cache, b2ShapeDistance and the two points
+ * mapped to world. distance_f is prepare, query, release, so that the two forms answer alike, bit
+ * for bit.
+ *
  * What it takes: float; radii (rounded polygons, capsules, circles). What it refuses: a shape of
  * more than B2_MAX_POLYGON_VERTICES (8) points, because b2ShapeProxy holds 8 points and
  * b2MakeProxy silently keeps the first 8: the description says max_vertices = 8, so the runner
@@ -38,7 +44,6 @@
 #include "box2d/math_functions.h"
 
 #include <stdlib.h>
-#include <string.h>
 #include <time.h>
 
 static b2Transform transformOf(const gjk2d_shape_f* s)
@@ -62,35 +67,81 @@ static b2ShapeProxy proxyOf(const gjk2d_shape_f* s)
     return b2MakeProxy(pts, s->count, s->radius);
 }
 
-static int refused(const gjk2d_shape_f* a, const gjk2d_shape_f* b)
+static int refusedShape(const gjk2d_shape_f* s)
 {
-    return a->count < 1 || b->count < 1 || a->count > B2_MAX_POLYGON_VERTICES ||
-           b->count > B2_MAX_POLYGON_VERTICES;
+    return s->count < 1 || s->count > B2_MAX_POLYGON_VERTICES;
 }
 
-/* The query's input, as Box2D builds it: B in A's frame. */
-static b2DistanceInput inputOf(const gjk2d_shape_f* a, const gjk2d_shape_f* b)
+static int refused(const gjk2d_shape_f* a, const gjk2d_shape_f* b)
 {
-    b2DistanceInput in;
-    memset(&in, 0, sizeof in);
-    in.proxyA = proxyOf(a);
-    in.proxyB = proxyOf(b);
-    in.transform = b2InvMulTransforms(transformOf(a), transformOf(b));
+    return refusedShape(a) || refusedShape(b);
+}
+
+/* The query's input, as Box2D builds it (b2TimeOfImpact in its src/distance.c): zeroed, the two
+ * proxies, B in A's frame. */
+static b2DistanceInput inputOf(const b2ShapeProxy* proxyA, const b2ShapeProxy* proxyB,
+                               b2Transform xfA, b2Transform xfB)
+{
+    b2DistanceInput in = {0};
+    in.proxyA = *proxyA;
+    in.proxyB = *proxyB;
+    in.transform = b2InvMulTransforms(xfA, xfB);
     in.useRadii = true;
     return in;
 }
 
-static int32_t box2d3Distance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cache,
-                              gjk2d_result_f* out)
+/* A prepared shape (gjk2d_prepared, scope GJK2D_PREPARED_SHAPE): its b2ShapeProxy, made once by
+ * b2MakeProxy in the shape's own frame, as a Box2D v3 user keeps a shape's proxy. The scope is the
+ * shape's because Box2D takes the case's transform exactly (b2Transform's p and q.c, q.s are the
+ * case's floats, set directly by transformOf), so one proxy serves every pose of the shape. A shape
+ * b2MakeProxy cannot hold (no point, more than 8) is kept as refused, so that the query answers
+ * GJK2D_STATUS_REFUSED as distance_f does. */
+typedef struct
 {
+    b2ShapeProxy proxy;
+    int refused;
+} PreparedShape;
+
+static void* preparedPrepare(int32_t implementation, const void* shape, const void* other)
+{
+    (void)other; /* scope shape: given NULL */
+    const gjk2d_shape_f* s = (const gjk2d_shape_f*)shape;
+    if (implementation != 0)
+        return NULL;
+    PreparedShape* p = (PreparedShape*)calloc(1, sizeof *p);
+    if (p == NULL)
+        return NULL;
+    p->refused = refusedShape(s);
+    if (!p->refused)
+        p->proxy = proxyOf(s);
+    return p;
+}
+
+static void preparedRelease(int32_t implementation, void* prepared)
+{
+    (void)implementation;
+    free(prepared);
+}
+
+/* The query, what a Box2D v3 user pays for one on two kept proxies: the b2DistanceInput (the
+ * proxies copied in, b2InvMulTransforms of the case's two transforms), a zeroed b2SimplexCache,
+ * b2ShapeDistance, and its frame-A points mapped to world with b2TransformPoint(xfA, .). */
+static int32_t preparedDistance(int32_t implementation, const void* preparedA, const void* a,
+                                const void* preparedB, const void* b, void* cache, void* result)
+{
+    (void)implementation;
     (void)cache; /* cache_bytes 0: every call is cold */
-    if (refused(a, b))
+    const PreparedShape* pa = (const PreparedShape*)preparedA;
+    const PreparedShape* pb = (const PreparedShape*)preparedB;
+    if (pa->refused || pb->refused)
         return GJK2D_STATUS_REFUSED;
-    b2Transform xfA = transformOf(a);
-    b2DistanceInput in = inputOf(a, b);
+    const b2Transform xfA = transformOf((const gjk2d_shape_f*)a);
+    const b2Transform xfB = transformOf((const gjk2d_shape_f*)b);
+    const b2DistanceInput in = inputOf(&pa->proxy, &pb->proxy, xfA, xfB);
     b2SimplexCache simplexCache = {0};
-    b2DistanceOutput o = b2ShapeDistance(&in, &simplexCache, NULL, 0);
-    b2Vec2 wa = b2TransformPoint(xfA, o.pointA), wb = b2TransformPoint(xfA, o.pointB);
+    const b2DistanceOutput o = b2ShapeDistance(&in, &simplexCache, NULL, 0);
+    const b2Vec2 wa = b2TransformPoint(xfA, o.pointA), wb = b2TransformPoint(xfA, o.pointB);
+    gjk2d_result_f* out = (gjk2d_result_f*)result;
     out->distance = o.distance;
     out->point_a[0] = wa.x;
     out->point_a[1] = wa.y;
@@ -98,6 +149,28 @@ static int32_t box2d3Distance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, vo
     out->point_b[1] = wb.y;
     out->iterations = o.iterations;
     return GJK2D_STATUS_OK;
+}
+
+static int32_t preparedScope(int32_t implementation)
+{
+    (void)implementation;
+    return GJK2D_PREPARED_SHAPE;
+}
+
+static const gjk2d_prepared kPrepared = {&preparedScope, &preparedPrepare, &preparedDistance,
+                                         &preparedRelease};
+
+/* distance_f is the prepared form on one case: prepare both shapes, query, release. */
+static int32_t box2d3Distance(const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cache,
+                              gjk2d_result_f* out)
+{
+    void* pa = preparedPrepare(0, a, NULL);
+    void* pb = preparedPrepare(0, b, NULL);
+    const int32_t status = pa != NULL && pb != NULL ? preparedDistance(0, pa, a, pb, b, cache, out)
+                                                    : GJK2D_STATUS_ERROR;
+    preparedRelease(0, pa);
+    preparedRelease(0, pb);
+    return status;
 }
 
 static const gjk2d_implementation kImplementations[] = {
@@ -142,7 +215,8 @@ static void* timingPrepare(int32_t implementation, const void* a, const void* b,
     {
         if (refused(&sa[i], &sb[i])) /* the runner leaves such cases out (max_vertices) */
             continue;
-        t->inputs[t->count] = inputOf(&sa[i], &sb[i]);
+        const b2ShapeProxy proxyA = proxyOf(&sa[i]), proxyB = proxyOf(&sb[i]);
+        t->inputs[t->count] = inputOf(&proxyA, &proxyB, transformOf(&sa[i]), transformOf(&sb[i]));
         if (warm)
             b2ShapeDistance(&t->inputs[t->count], &t->caches[t->count], NULL, 0);
         t->count += 1;
@@ -224,4 +298,10 @@ GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 GJK2D_PLUGIN_EXPORT const gjk2d_timing* gjk2d_plugin_timing(void)
 {
     return &kTiming;
+}
+
+/* Shapes prepared once (the optional export of gjk2d/plugin.h): the b2ShapeProxy of each shape. */
+GJK2D_PLUGIN_EXPORT const gjk2d_prepared* gjk2d_plugin_prepared(void)
+{
+    return &kPrepared;
 }

@@ -19,6 +19,10 @@
 // - The simplex solver is built in zeroed storage (Zeroed, below): Bullet reads members its
 //   constructor leaves unwritten on degenerate paths, and an answer must not depend on what ran
 //   before it in the process.
+// - Shapes prepared once (gjk2d_plugin_prepared, scope `case`): a prepared shape is its
+//   btConvexHullShape, built from the case's world points with the case's half height; a query
+//   is the pair detector on two hulls, as below. distance_f / distance_d is prepare, query,
+//   release, so that the two forms answer alike, bit for bit.
 // - Defaults kept as Bullet's users run them: the simplex solver's equal-vertex threshold
 //   (VORONOI_DEFAULT_EQUAL_VERTEX_THRESHOLD: 1e-4 in float, 1e-12 in double), the pair
 //   detector's tolerances, no maximum distance (BT_LARGE_FLOAT).
@@ -148,17 +152,52 @@ template <class T> class Zeroed
     T* object_;
 };
 
-int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
+// A prepared shape (gjk2d_prepared, scope GJK2D_PREPARED_CASE): the btConvexHullShape a user keeps,
+// built once from the case's world points with the case's half height (buildPrism), which depends
+// on both shapes: hence the `other` shape. The scope is the case's because the world points are
+// baked in (see the header comment: the adapter applies the case's (c, s) itself and hands Bullet
+// identity transforms). A shape without a point is kept as refused, which the query answers as
+// distance_f / distance_d does.
+struct Prepared
 {
-    if (a->count < 1 || b->count < 1)
+    btConvexHullShape hull;
+    bool refused = false;
+};
+
+void* prepare(int32_t implementation, const void* shape, const void* other)
+{
+    if (implementation != 0 || other == nullptr)
+        return nullptr;
+    const Shape& s = *static_cast<const Shape*>(shape);
+    const Shape& o = *static_cast<const Shape*>(other);
+    auto* p = new (std::nothrow) Prepared;
+    if (p == nullptr)
+        return nullptr;
+    p->refused = s.count < 1 || o.count < 1;
+    if (!p->refused)
+        buildPrism(s, prismHalfHeight(s, o), p->hull);
+    return p;
+}
+
+void release(int32_t /*implementation*/, void* prepared)
+{
+    delete static_cast<Prepared*>(prepared);
+}
+
+// The query, what Bullet's own pipeline pays for one pair of kept shapes (btConvexConvexAlgorithm
+// builds a btGjkPairDetector per call): the simplex solver (zeroed, see Zeroed), the EPA solver,
+// the pair detector, getClosestPoints with identity transforms, the answer copied out. The case's
+// shapes are not read (their transforms are in the hulls' points).
+int32_t distance(int32_t /*implementation*/, const void* preparedA, const void* /*a*/,
+                 const void* preparedB, const void* /*b*/, void* /*cache*/, void* answer)
+{
+    const auto& pa = *static_cast<const Prepared*>(preparedA);
+    const auto& pb = *static_cast<const Prepared*>(preparedB);
+    if (pa.refused || pb.refused)
         return GJK2D_STATUS_REFUSED;
-    const btScalar h = prismHalfHeight(*a, *b);
-    btConvexHullShape hullA, hullB;
-    buildPrism(*a, h, hullA);
-    buildPrism(*b, h, hullB);
     Zeroed<btVoronoiSimplexSolver> simplex;
     btGjkEpaPenetrationDepthSolver epa;
-    btGjkPairDetector detector(&hullA, &hullB, simplex.get(), &epa);
+    btGjkPairDetector detector(&pa.hull, &pb.hull, simplex.get(), &epa);
     btGjkPairDetector::ClosestPointInput input;
     input.m_transformA.setIdentity();
     input.m_transformB.setIdentity();
@@ -168,6 +207,7 @@ int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
         return GJK2D_STATUS_ERROR;
     const btVector3 onB = result.m_pointInWorld;
     const btVector3 onA = onB + result.m_normalOnBInWorld * result.m_distance;
+    auto* out = static_cast<Result*>(answer);
     out->distance = result.m_distance; // negative: minus the penetration depth (`penetration`)
     out->point_a[0] = onA.x();
     out->point_a[1] = onA.y();
@@ -176,6 +216,24 @@ int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
     out->iterations = detector.m_curIter;
     return GJK2D_STATUS_OK;
 }
+
+int32_t scope(int32_t /*implementation*/)
+{
+    return GJK2D_PREPARED_CASE;
+}
+
+// distance_f / distance_d is the prepared form on one case: prepare both shapes, query, release.
+int32_t bulletDistance(const Shape* a, const Shape* b, void*, Result* out)
+{
+    void* pa = prepare(0, a, b);
+    void* pb = prepare(0, b, a);
+    const int32_t status = pa && pb ? distance(0, pa, a, pb, b, nullptr, out) : GJK2D_STATUS_ERROR;
+    release(0, pa);
+    release(0, pb);
+    return status;
+}
+
+const gjk2d_prepared kPrepared = {&scope, &prepare, &distance, &release};
 
 #ifdef BT_USE_DOUBLE_PRECISION
 constexpr gjk2d_distance_f_fn kFloat = nullptr;
@@ -219,4 +277,10 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return "Bullet " GJK2D_BULLET_VERSION " (Debian libbullet-dev)";
+}
+
+// Shapes prepared once (the optional export of gjk2d/plugin.h): each case's btConvexHullShapes.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_prepared* gjk2d_plugin_prepared(void)
+{
+    return &kPrepared;
 }

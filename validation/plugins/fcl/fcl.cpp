@@ -29,6 +29,10 @@
 //   (mostly -1), and it sets no nearest points (both stay the origin). Signed distance is not used:
 //   with GST_INDEP it hits an assert compiled into Debian's libfcl (distance-inl.h:177) on
 //   overlapping convexes.
+// - Shapes prepared once (gjk2d_plugin_prepared, scope `case`): a prepared shape is the
+//   fcl::CollisionObject of its geometry, built from the case's world points with the case's half
+//   height; a query is fcl::distance on two objects with the request below. distance_d is
+//   prepare, query, release, so that the two forms answer alike, bit for bit.
 // - No answer: on some cases of huge coordinates FCL returns without touching its DistanceResult
 //   (min_distance stays at its initial numeric max, the nearest points at whatever the memory
 //   held). The adapter sets the points to NaN before the call, so such an answer is reported the
@@ -54,6 +58,7 @@
 // region 1") on some cases of coordinates beyond 1e160.
 #include <gjk2d/plugin.h>
 
+#include <fcl/narrowphase/collision_object.h>
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
@@ -179,42 +184,96 @@ Placed geometryOf(const gjk2d_shape_d& s, double h)
     return {};
 }
 
-int32_t fclDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, gjk2d_result_d* out,
-                    fcl::GJKSolverType solver)
+// A prepared shape (gjk2d_prepared, scope GJK2D_PREPARED_CASE): the fcl::CollisionObject a user
+// keeps (fcl/narrowphase/distance.h:49, "Main distance interface: given two collision objects"),
+// its geometry built once from the case's world points (geometryOf) with the case's half height,
+// which depends on both shapes: hence the `other` shape. The scope is the case's because the world
+// points are baked in (see the header comment: libccd drops the scale of a (c, s) that is not of
+// unit length, so FCL cannot be handed the case's transform). No object: a shape FCL cannot take
+// (no point, a radius on more than two points), which the query refuses as distance_d does.
+struct Prepared
 {
-    if (a->count < 1 || b->count < 1)
-        return GJK2D_STATUS_REFUSED;
-    const double h = prismHalfHeight(*a, *b);
-    const Placed ga = geometryOf(*a, h), gb = geometryOf(*b, h);
-    if (!ga.geometry || !gb.geometry)
+    std::unique_ptr<fcl::CollisionObject<double>> object;
+};
+
+void* prepare(int32_t implementation, const void* shape, const void* other)
+{
+    if (implementation < 0 || implementation > 1 || other == nullptr)
+        return nullptr;
+    const auto& s = *static_cast<const gjk2d_shape_d*>(shape);
+    const auto& o = *static_cast<const gjk2d_shape_d*>(other);
+    auto p = std::make_unique<Prepared>();
+    if (s.count >= 1 && o.count >= 1)
+    {
+        const Placed g = geometryOf(s, prismHalfHeight(s, o));
+        if (g.geometry)
+            p->object = std::make_unique<fcl::CollisionObject<double>>(g.geometry, g.pose);
+    }
+    return p.release();
+}
+
+void release(int32_t /*implementation*/, void* prepared)
+{
+    delete static_cast<Prepared*>(prepared);
+}
+
+// The query, what an FCL user pays for one on two kept objects: the request (nearest points,
+// unsigned distance, the implementation's solver), fcl::distance, the result copied out. The case's
+// shapes are not read (their transforms are in the objects' points).
+int32_t distance(int32_t implementation, const void* preparedA, const void* /*a*/,
+                 const void* preparedB, const void* /*b*/, void* /*cache*/, void* result)
+{
+    const auto& pa = *static_cast<const Prepared*>(preparedA);
+    const auto& pb = *static_cast<const Prepared*>(preparedB);
+    if (!pa.object || !pb.object)
         return GJK2D_STATUS_REFUSED;
     fcl::DistanceRequest<double> request;
     request.enable_nearest_points = true;
     request.enable_signed_distance = false;
-    request.gjk_solver_type = solver;
-    fcl::DistanceResult<double> result; // its nearest points start unwritten (Eigen)
+    request.gjk_solver_type = implementation == 0 ? fcl::GST_LIBCCD : fcl::GST_INDEP;
+    fcl::DistanceResult<double> r; // its nearest points start unwritten (Eigen)
     const double none = std::numeric_limits<double>::quiet_NaN();
-    result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
-    const double d =
-        fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
+    r.nearest_points[0] = r.nearest_points[1] = Vec3(none, none, none);
+    const double d = fcl::distance(pa.object.get(), pb.object.get(), request, r);
+    auto* out = static_cast<gjk2d_result_d*>(result);
     out->distance = d; // negative: FCL's "in collision", as it is (overlap `zero`)
-    out->point_a[0] = result.nearest_points[0].x();
-    out->point_a[1] = result.nearest_points[0].y();
-    out->point_b[0] = result.nearest_points[1].x();
-    out->point_b[1] = result.nearest_points[1].y();
+    out->point_a[0] = r.nearest_points[0].x();
+    out->point_a[1] = r.nearest_points[0].y();
+    out->point_b[0] = r.nearest_points[1].x();
+    out->point_b[1] = r.nearest_points[1].y();
     out->iterations = -1;
     return GJK2D_STATUS_OK;
 }
 
+int32_t scope(int32_t /*implementation*/)
+{
+    return GJK2D_PREPARED_CASE;
+}
+
+// distance_d is the prepared form on one case: prepare both shapes, query, release.
+int32_t fclDistance(int32_t implementation, const gjk2d_shape_d* a, const gjk2d_shape_d* b,
+                    gjk2d_result_d* out)
+{
+    void* pa = prepare(implementation, a, b);
+    void* pb = prepare(implementation, b, a);
+    const int32_t status =
+        pa && pb ? distance(implementation, pa, a, pb, b, nullptr, out) : GJK2D_STATUS_ERROR;
+    release(implementation, pa);
+    release(implementation, pb);
+    return status;
+}
+
 int32_t libccdDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
 {
-    return fclDistance(a, b, out, fcl::GST_LIBCCD);
+    return fclDistance(0, a, b, out);
 }
 
 int32_t indepDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
 {
-    return fclDistance(a, b, out, fcl::GST_INDEP);
+    return fclDistance(1, a, b, out);
 }
+
+const gjk2d_prepared kPrepared = {&scope, &prepare, &distance, &release};
 
 const gjk2d_implementation kImplementations[] = {
     {"fcl-0.7-libccd",
@@ -265,4 +324,10 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return "FCL " GJK2D_FCL_VERSION " (Debian libfcl-dev)";
+}
+
+// Shapes prepared once (the optional export of gjk2d/plugin.h): each case's fcl::CollisionObjects.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_prepared* gjk2d_plugin_prepared(void)
+{
+    return &kPrepared;
 }

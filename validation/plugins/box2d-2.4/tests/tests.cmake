@@ -10,3 +10,11 @@ if(TARGET gjk2d_box2d_plugin)
   add_dependencies(box2d_peer_tests gjk2d_box2d_plugin)
   gjk2d_catch_tests(box2d_peer_tests "plugins: box2d-2.4: ")
 endif()
+
+# Its prepared shapes (gjk2d_plugin_prepared) answer as distance_f, bit for bit
+# (tests/plugins/peers/prepared_equal.cpp).
+if(TARGET gjk2d_box2d_plugin AND TARGET prepared_equal)
+  add_test(NAME "plugins: box2d-2.4: prepared shapes answer as distance_f, bit for bit"
+           COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_box2d_plugin>
+                   --family random:500 --family hard --family engine)
+endif()

@@ -34,13 +34,18 @@ if(TARGET gjk2d_box2d3_plugin)
                    -DEXPECT_FILE=${CMAKE_CURRENT_BINARY_DIR}/bench-against.json
                    "-DEXPECT_JSON=against/cold/ns_per_query:NUMBER|against/warm/ns_per_query:NUMBER|variants/double/ratio_to_against:NUMBER|variants/double-warm/ratio_to_against:NUMBER"
                    -P ${PROJECT_SOURCE_DIR}/tests/validation/expect_exit.cmake)
+  # Its prepared shapes (gjk2d_plugin_prepared) answer as distance_f, bit for bit
+  # (tests/plugins/peers/prepared_equal.cpp).
+  add_test(NAME "plugins: box2d-v3: prepared shapes answer as distance_f, bit for bit"
+           COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_box2d3_plugin>
+                   --family random:500 --family hard --family engine)
 else()
   # A user's clone has no Box2D v3 sources (no Debian package has them): an optional peer. Its
   # tests are one skipped entry that says why (scripts/test.sh prints it); in CI, where
   # ../shared/anchors/box2d-v3 is beside the clone, its absence stops the configure.
-  gjk2d_tests_lack("no Box2D v3 sources: the Box2D v3 adapter and its 3 tests are not built"
+  gjk2d_tests_lack("no Box2D v3 sources: the Box2D v3 adapter and its 4 tests are not built"
                    "name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE, the environment or a CMake option: README.md, \"Box2D v3\"")
   add_test(NAME "plugins: box2d-v3: not built (no Box2D v3 sources)"
-           COMMAND Python3::Interpreter -c "print('skipped: the Box2D v3 adapter and its 3 tests: no Box2D v3 sources given (name a tree in GJK2D_BOX2D3_SOURCE, the environment or a CMake option: README.md, \"Box2D v3\")'); raise SystemExit(77)")
+           COMMAND Python3::Interpreter -c "print('skipped: the Box2D v3 adapter and its 4 tests: no Box2D v3 sources given (name a tree in GJK2D_BOX2D3_SOURCE, the environment or a CMake option: README.md, \"Box2D v3\")'); raise SystemExit(77)")
   set_tests_properties("plugins: box2d-v3: not built (no Box2D v3 sources)" PROPERTIES SKIP_RETURN_CODE 77)
 endif()

@@ -9,3 +9,37 @@ if(TARGET gjk2d_fcl_plugin)
   add_dependencies(fcl_peer_tests gjk2d_fcl_plugin)
   gjk2d_catch_tests(fcl_peer_tests "plugins: fcl: ")
 endif()
+
+# Its prepared shapes (gjk2d_plugin_prepared) answer as distance_d, bit for bit, both solvers
+# (tests/plugins/peers/prepared_equal.cpp; GST_LIBCCD's aborts on some hard cases are counted).
+if(TARGET gjk2d_fcl_plugin AND TARGET prepared_equal)
+  add_test(NAME "plugins: fcl: prepared shapes answer as distance_d, bit for bit"
+           COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_fcl_plugin>
+                   --family random:500 --family hard --family engine)
+endif()
+
+# The direct loop (direct_loop.cpp): FCL called on shapes built once, timed beside the adapter's
+# prepared queries by hand (its command is in its header comment; docs/peers.md, "FCL"). Its CTest
+# only checks that it runs and that its distances on 50 cases are the adapter's, both solvers.
+if(TARGET gjk2d_fcl_plugin)
+  find_package(nlohmann_json 3 REQUIRED) # the case file (its imported target is validation/'s)
+  find_package(PkgConfig QUIET)
+  pkg_check_modules(GJK2D_FCL_DIRECT QUIET fcl)
+endif()
+if(TARGET gjk2d_fcl_plugin AND GJK2D_FCL_DIRECT_FOUND)
+  set(_fcl_direct_flags ${GJK2D_FCL_DIRECT_CFLAGS_OTHER})
+  list(FILTER _fcl_direct_flags EXCLUDE REGEX "^-std=")
+  add_executable(fcl_direct_loop ${CMAKE_CURRENT_LIST_DIR}/direct_loop.cpp)
+  target_include_directories(fcl_direct_loop PRIVATE ${PROJECT_SOURCE_DIR}/tests/plugins/peers)
+  target_include_directories(fcl_direct_loop SYSTEM PRIVATE ${GJK2D_FCL_DIRECT_INCLUDE_DIRS})
+  target_compile_options(fcl_direct_loop PRIVATE ${_fcl_direct_flags})
+  target_link_libraries(fcl_direct_loop PRIVATE gjk2d_plugin nlohmann_json::nlohmann_json
+                        ${GJK2D_FCL_DIRECT_LINK_LIBRARIES} ${CMAKE_DL_LIBS})
+  foreach(_variant fcl-0.7-libccd fcl-0.7-indep)
+    add_test(NAME "plugins: fcl: the direct loop runs, its distances are the adapter's (${_variant})"
+             COMMAND fcl_direct_loop ${GJK2D_DIRECT_LOOP_CASES} --variant ${_variant} --check 50
+                     --plugin $<TARGET_FILE:gjk2d_fcl_plugin>)
+    set_tests_properties("plugins: fcl: the direct loop runs, its distances are the adapter's (${_variant})"
+                         PROPERTIES FIXTURES_REQUIRED gjk2d_direct_loop_cases)
+  endforeach()
+endif()
