@@ -27,6 +27,14 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            crash.py, hang.py and garbage.py on the same cases: they misbehave on case 640
            (B at x = 4) with up to 63 later requests in flight: that case alone is lost, every
            other one answered right (the later ones were sent again to the next process).
+  prepared A declares `prepared toy-prepared case` (protocol 2) and answers two figures: its
+           distances are 1, 2, 3, 4, it was timed (ns_per_query > 0), and report.json's
+           variants[].timing says preparation "case", timed by the adapter.
+  prepared-missing, timed-extra, too-fast
+           A answers every case right but its `timed` answers are refused: a missing preparation
+           figure after a `prepared` line, a second figure without one, 1 ns for K x m queries
+           (below 1 ns a query). The distances are 1, 2, 3, 4; ns_per_query is null; stderr has
+           one line naming A and saying why; exit code 0.
   bridge   A is gjk2d-adapter-bridge: a two-line script runs it with the shipped gjk2d-box2d.so
            (--so) as box2d-2.4.1-bridge beside box2d-2.4.1 itself, on random and
            rounded cases: every answer (distance, witness points, iterations, refusal) is the
@@ -107,6 +115,56 @@ def good(a):
         fail("the adapter's stderr is not in plugin-good.log")
     print("adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
         st["ns_per_query"]))
+
+
+def answered_all(lines, name):
+    got = {k: v.get("distance") for k, v in answers(lines, name).items()}
+    if got != {"adapters/d1": 1.0, "adapters/d2": 2.0, "adapters/d3": 3.0, "adapters/d4": 4.0}:
+        fail("{}'s distances: {}".format(name, got))
+
+
+def variant_entry(report, name):
+    for v in report["variants"]:
+        if v["name"] == name:
+            return v
+    fail("no variant {} in report.json's variants".format(name))
+
+
+def prepared(a):
+    _, report, lines, _ = campaign(a)
+    answered_all(lines, "toy-prepared")
+    st = stats_of(report, "toy-prepared")
+    if st["failures"] != 0 or not (st["ns_per_query"] or 0) > 0:
+        fail("stats: {}".format(st))
+    timing = variant_entry(report, "toy-prepared")["timing"]
+    if timing["preparation"] != "case" or timing["timed_by"] != "adapter":
+        fail("variants[].timing: {}".format(timing))
+    print("adapter_check: prepared: distances 1, 2, 3, 4, timed {:.0f} ns/query, preparation "
+          "case, timed by the adapter".format(st["ns_per_query"]))
+
+
+TIMED_REFUSALS = {
+    "prepared-missing": "without the preparation's figure that its `prepared` line promises",
+    "timed-extra": "a second figure without a `prepared` line in its handshake",
+    "too-fast": "x 4 queries: below 1 ns a query, which no distance query reaches; no ns/query",
+}
+
+
+def timed_refused(a):
+    name = "toy-" + a.kind
+    p, report, lines, _ = campaign(a)
+    answered_all(lines, name)
+    st = stats_of(report, name)
+    if st["ns_per_query"] is not None or st["failures"] != 0:
+        fail("expected ns_per_query null and no failure: {}".format(st))
+    said = [l for l in p.stderr.splitlines()
+            if l.startswith("gjk-validate: executable adapter " + os.path.realpath(a.adapter))]
+    if len(said) != 1 or TIMED_REFUSALS[a.kind] not in said[0] or \
+            not said[0].endswith("; no ns/query"):
+        fail("expected one stderr line saying '{}':\n{}".format(TIMED_REFUSALS[a.kind], p.stderr))
+    if report["exit_code"] != 0:
+        fail("a refused timing decided the exit code")
+    print("adapter_check: {}: answers kept, no ns/query, one line: {}".format(a.kind, said[0]))
 
 
 def contained(a):
@@ -260,7 +318,8 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared"])
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared",
+                             "prepared"] + list(TIMED_REFUSALS))
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -270,8 +329,8 @@ def main():
     os.makedirs(a.work)
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
     {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
-     "pipeline": pipeline}.get(
-        a.kind, contained)(a)
+     "pipeline": pipeline, "prepared": prepared,
+     **{k: timed_refused for k in TIMED_REFUSALS}}.get(a.kind, contained)(a)
 
 
 if __name__ == "__main__":
