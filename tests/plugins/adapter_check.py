@@ -40,6 +40,15 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            rounded cases: every answer (distance, witness points, iterations, refusal) is the
            same, bit for bit (the same function on the same inputs: the protocol's numbers
            round-trip).
+  bridge-prepared
+           A is gjk2d-adapter-bridge hosting --so, a plugin with prepared shapes
+           (prepared_plugin.cpp: test-prepared-shape, scope shape; test-prepared-case, scope
+           case): the bridge's handshake is version 2 with a `prepared` line per implementation,
+           by its scope; on random and rounded cases every answer through the bridge (prepare,
+           distance, release) is the plugin's own (its distance_d), errors included (a shape of
+           7 points cannot be prepared); both bridged variants are timed (ns_per_query > 0:
+           the `timed` answers carry two figures) and report.json says preparation shape and
+           case, timed by the adapter.
   shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
            as a shared library (variants[].plugin.kind), not started.
 Exit 0 when every check holds; else a message and exit 1.
@@ -300,6 +309,48 @@ def bridge(a):
     print("adapter_check: bridge: protocol 2, the plugin's contract forwarded")
 
 
+def bridge_prepared(a):
+    wrapper = os.path.join(a.work, "prepared-bridge")
+    with open(wrapper, "w") as f:
+        f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
+    os.chmod(wrapper, 0o755)
+    h = subprocess.run([wrapper], input="gjk2d-adapter 1\n", capture_output=True, text=True,
+                       timeout=30).stdout.splitlines()
+    want = [r"gjk2d-adapter 2", r"library .*", r"implementation test-prepared-shape-bridge .*",
+            r"prepared test-prepared-shape-bridge shape",
+            r"implementation test-prepared-case-bridge .*",
+            r"prepared test-prepared-case-bridge case", r"ready"]
+    if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
+        fail("the bridge's handshake {} does not match {}".format(h, want))
+    out = os.path.join(a.work, "report")
+    names = ["test-prepared-shape", "test-prepared-case"]
+    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
+         ",".join(["double"] + names + [n + "-bridge" for n in names]), "--no-default-plugins",
+         "--plugin", a.so, "--plugin", wrapper, "--per-case", "--passes", "3", "--out", out,
+         "--no-progress"])
+    keys = ("distance", "pointA", "pointB", "iterations", "skipped", "plugin_status")
+    n, errors = 0, 0
+    for l in open(os.path.join(out, "cases.jsonl")):
+        j = json.loads(l)
+        for name in names:
+            mine, theirs = j["variants"][name + "-bridge"], j["variants"][name]
+            if [mine.get(k) for k in keys] != [theirs.get(k) for k in keys]:
+                fail("{}: the bridge answered {}, the plugin {}".format(j["name"], mine, theirs))
+            errors += theirs.get("plugin_status") == "error"
+        n += 1
+    if n != 340 or errors == 0:
+        fail("expected 340 cases, some of them errors (7 points), got {} and {}".format(n, errors))
+    report = json.load(open(os.path.join(out, "report.json")))
+    for name, scope in zip(names, ["shape", "case"]):
+        st = [f["variants"][name + "-bridge"]["ns_per_query"] for f in report["families"]]
+        timing = variant_entry(report, name + "-bridge")["timing"]
+        if not all((x or 0) > 0 for x in st) or timing["preparation"] != scope or \
+                timing["timed_by"] != "adapter":
+            fail("{}-bridge: ns_per_query {}, timing {}".format(name, st, timing))
+    print("adapter_check: bridge-prepared: prepared lines by scope, 340 cases ({} errors) the "
+          "plugin's answers bit for bit, timed with two figures".format(errors))
+
+
 def shared(a):
     if not os.access(a.adapter, os.X_OK):
         fail(a.adapter + " has no exec bit: the check would prove nothing")
@@ -319,7 +370,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared",
-                             "prepared"] + list(TIMED_REFUSALS))
+                             "prepared", "bridge-prepared"] + list(TIMED_REFUSALS))
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -330,6 +381,7 @@ def main():
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
     {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
      "pipeline": pipeline, "prepared": prepared,
+     "bridge-prepared": bridge_prepared,
      **{k: timed_refused for k in TIMED_REFUSALS}}.get(a.kind, contained)(a)
 
 
