@@ -297,13 +297,16 @@ def bridge(a):
     print("adapter_check: bridge: 340 cases, every answer the shared library's, bit for bit")
     # The contract (ABI and protocol version 2): the bridge speaks the plugin's version and forwards
     # its declared contract as the three `contract` lines (box2d.cpp's kContract: midpoint, its
-    # source, no tolerance, margin 0).
+    # source, no tolerance, margin 0), and a `prepared` line when the plugin exports
+    # gjk2d_plugin_prepared.
     h = subprocess.run([a.adapter, a.so, "-bridge"], input="gjk2d-adapter 1\n", capture_output=True,
                        text=True, timeout=30).stdout.splitlines()
     name = "box2d-2.4.1-bridge"
     want = [r"gjk2d-adapter 2", r"library .*", r"implementation {} .*".format(name),
             r"contract {} overlap midpoint src/collision/b2_distance\.cpp:588-596 .*Box2D 2\.4\.1.*".format(name),
             r"contract {} tolerance none none".format(name), r"contract {} margin 0".format(name), r"ready"]
+    if len(h) == len(want) + 1:  # a plugin with prepared shapes: the bridge's `prepared` line
+        want.insert(-1, r"prepared {} (shape|case)".format(name))
     if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
         fail("the bridge's handshake {} does not match {}".format(h, want))
     print("adapter_check: bridge: protocol 2, the plugin's contract forwarded")
