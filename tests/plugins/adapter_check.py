@@ -27,11 +27,28 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            crash.py, hang.py and garbage.py on the same cases: they misbehave on case 640
            (B at x = 4) with up to 63 later requests in flight: that case alone is lost, every
            other one answered right (the later ones were sent again to the next process).
+  prepared A declares `prepared toy-prepared case` (protocol 2) and answers two figures: its
+           distances are 1, 2, 3, 4, it was timed (ns_per_query > 0), and report.json's
+           variants[].timing says preparation "case", timed by the adapter.
+  prepared-missing, timed-extra, too-fast
+           A answers every case right but its `timed` answers are refused: a missing preparation
+           figure after a `prepared` line, a second figure without one, 1 ns for K x m queries
+           (below 1 ns a query). The distances are 1, 2, 3, 4; ns_per_query is null; stderr has
+           one line naming A and saying why; exit code 0.
   bridge   A is gjk2d-adapter-bridge: a two-line script runs it with the shipped gjk2d-box2d.so
            (--so) as box2d-2.4.1-bridge beside box2d-2.4.1 itself, on random and
            rounded cases: every answer (distance, witness points, iterations, refusal) is the
            same, bit for bit (the same function on the same inputs: the protocol's numbers
            round-trip).
+  bridge-prepared
+           A is gjk2d-adapter-bridge hosting --so, a plugin with prepared shapes
+           (prepared_plugin.cpp: test-prepared-shape, scope shape; test-prepared-case, scope
+           case): the bridge's handshake is version 2 with a `prepared` line per implementation,
+           by its scope; on random and rounded cases every answer through the bridge (prepare,
+           distance, release) is the plugin's own (its distance_d), errors included (a shape of
+           7 points cannot be prepared); both bridged variants are timed (ns_per_query > 0:
+           the `timed` answers carry two figures) and report.json says preparation shape and
+           case, timed by the adapter.
   shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
            as a shared library (variants[].plugin.kind), not started.
 Exit 0 when every check holds; else a message and exit 1.
@@ -107,6 +124,56 @@ def good(a):
         fail("the adapter's stderr is not in plugin-good.log")
     print("adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
         st["ns_per_query"]))
+
+
+def answered_all(lines, name):
+    got = {k: v.get("distance") for k, v in answers(lines, name).items()}
+    if got != {"adapters/d1": 1.0, "adapters/d2": 2.0, "adapters/d3": 3.0, "adapters/d4": 4.0}:
+        fail("{}'s distances: {}".format(name, got))
+
+
+def variant_entry(report, name):
+    for v in report["variants"]:
+        if v["name"] == name:
+            return v
+    fail("no variant {} in report.json's variants".format(name))
+
+
+def prepared(a):
+    _, report, lines, _ = campaign(a)
+    answered_all(lines, "toy-prepared")
+    st = stats_of(report, "toy-prepared")
+    if st["failures"] != 0 or not (st["ns_per_query"] or 0) > 0:
+        fail("stats: {}".format(st))
+    timing = variant_entry(report, "toy-prepared")["timing"]
+    if timing["preparation"] != "case" or timing["timed_by"] != "adapter":
+        fail("variants[].timing: {}".format(timing))
+    print("adapter_check: prepared: distances 1, 2, 3, 4, timed {:.0f} ns/query, preparation "
+          "case, timed by the adapter".format(st["ns_per_query"]))
+
+
+TIMED_REFUSALS = {
+    "prepared-missing": "without the preparation's figure that its `prepared` line promises",
+    "timed-extra": "a second figure without a `prepared` line in its handshake",
+    "too-fast": "x 4 queries: below 1 ns a query, which no distance query reaches; no ns/query",
+}
+
+
+def timed_refused(a):
+    name = "toy-" + a.kind
+    p, report, lines, _ = campaign(a)
+    answered_all(lines, name)
+    st = stats_of(report, name)
+    if st["ns_per_query"] is not None or st["failures"] != 0:
+        fail("expected ns_per_query null and no failure: {}".format(st))
+    said = [l for l in p.stderr.splitlines()
+            if l.startswith("gjk-validate: executable adapter " + os.path.realpath(a.adapter))]
+    if len(said) != 1 or TIMED_REFUSALS[a.kind] not in said[0] or \
+            not said[0].endswith("; no ns/query"):
+        fail("expected one stderr line saying '{}':\n{}".format(TIMED_REFUSALS[a.kind], p.stderr))
+    if report["exit_code"] != 0:
+        fail("a refused timing decided the exit code")
+    print("adapter_check: {}: answers kept, no ns/query, one line: {}".format(a.kind, said[0]))
 
 
 def contained(a):
@@ -230,16 +297,61 @@ def bridge(a):
     print("adapter_check: bridge: 340 cases, every answer the shared library's, bit for bit")
     # The contract (ABI and protocol version 2): the bridge speaks the plugin's version and forwards
     # its declared contract as the three `contract` lines (box2d.cpp's kContract: midpoint, its
-    # source, no tolerance, margin 0).
+    # source, no tolerance, margin 0), and a `prepared` line when the plugin exports
+    # gjk2d_plugin_prepared.
     h = subprocess.run([a.adapter, a.so, "-bridge"], input="gjk2d-adapter 1\n", capture_output=True,
                        text=True, timeout=30).stdout.splitlines()
     name = "box2d-2.4.1-bridge"
     want = [r"gjk2d-adapter 2", r"library .*", r"implementation {} .*".format(name),
             r"contract {} overlap midpoint src/collision/b2_distance\.cpp:588-596 .*Box2D 2\.4\.1.*".format(name),
             r"contract {} tolerance none none".format(name), r"contract {} margin 0".format(name), r"ready"]
+    if len(h) == len(want) + 1:  # a plugin with prepared shapes: the bridge's `prepared` line
+        want.insert(-1, r"prepared {} (shape|case)".format(name))
     if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
         fail("the bridge's handshake {} does not match {}".format(h, want))
     print("adapter_check: bridge: protocol 2, the plugin's contract forwarded")
+
+
+def bridge_prepared(a):
+    wrapper = os.path.join(a.work, "prepared-bridge")
+    with open(wrapper, "w") as f:
+        f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
+    os.chmod(wrapper, 0o755)
+    h = subprocess.run([wrapper], input="gjk2d-adapter 1\n", capture_output=True, text=True,
+                       timeout=30).stdout.splitlines()
+    want = [r"gjk2d-adapter 2", r"library .*", r"implementation test-prepared-shape-bridge .*",
+            r"prepared test-prepared-shape-bridge shape",
+            r"implementation test-prepared-case-bridge .*",
+            r"prepared test-prepared-case-bridge case", r"ready"]
+    if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
+        fail("the bridge's handshake {} does not match {}".format(h, want))
+    out = os.path.join(a.work, "report")
+    names = ["test-prepared-shape", "test-prepared-case"]
+    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
+         ",".join(["double"] + names + [n + "-bridge" for n in names]), "--no-default-plugins",
+         "--plugin", a.so, "--plugin", wrapper, "--per-case", "--passes", "3", "--out", out,
+         "--no-progress"])
+    keys = ("distance", "pointA", "pointB", "iterations", "skipped", "plugin_status")
+    n, errors = 0, 0
+    for l in open(os.path.join(out, "cases.jsonl")):
+        j = json.loads(l)
+        for name in names:
+            mine, theirs = j["variants"][name + "-bridge"], j["variants"][name]
+            if [mine.get(k) for k in keys] != [theirs.get(k) for k in keys]:
+                fail("{}: the bridge answered {}, the plugin {}".format(j["name"], mine, theirs))
+            errors += theirs.get("plugin_status") == "error"
+        n += 1
+    if n != 340 or errors == 0:
+        fail("expected 340 cases, some of them errors (7 points), got {} and {}".format(n, errors))
+    report = json.load(open(os.path.join(out, "report.json")))
+    for name, scope in zip(names, ["shape", "case"]):
+        st = [f["variants"][name + "-bridge"]["ns_per_query"] for f in report["families"]]
+        timing = variant_entry(report, name + "-bridge")["timing"]
+        if not all((x or 0) > 0 for x in st) or timing["preparation"] != scope or \
+                timing["timed_by"] != "adapter":
+            fail("{}-bridge: ns_per_query {}, timing {}".format(name, st, timing))
+    print("adapter_check: bridge-prepared: prepared lines by scope, 340 cases ({} errors) the "
+          "plugin's answers bit for bit, timed with two figures".format(errors))
 
 
 def shared(a):
@@ -260,7 +372,8 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared"])
+    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared",
+                             "prepared", "bridge-prepared"] + list(TIMED_REFUSALS))
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -270,8 +383,9 @@ def main():
     os.makedirs(a.work)
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
     {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
-     "pipeline": pipeline}.get(
-        a.kind, contained)(a)
+     "pipeline": pipeline, "prepared": prepared,
+     "bridge-prepared": bridge_prepared,
+     **{k: timed_refused for k in TIMED_REFUSALS}}.get(a.kind, contained)(a)
 
 
 if __name__ == "__main__":

@@ -92,19 +92,23 @@ VARIANT = {'planck': 'planck-{}', 'geos': 'geos-{}'}
 # stated, margin 0.
 CONTRACT = {'planck': ('midpoint', r'src/collision/Distance\.ts:211-217 .*planck\.js 1\.5\.0.*'),
             'geos': ('common-point', r'include/geos/operation/distance/DistanceOp\.h:53-61 .*GEOS 3\.11\.1.*')}
+# The scope of its prepared shapes (the `prepared` line): planck takes the case's (c, s) exactly,
+# so its shapes are prepared in their own frame; GEOS works in world coordinates.
+SCOPE = {'planck': 'shape', 'geos': 'case'}
 
 
 def check_handshake(ad, peer):
     """The description: version 2, the library line, one double radius variant without a vertex
-    limit, its three contract lines, ready. Returns the variant name."""
+    limit, its three contract lines, its prepared line, ready. Returns the variant name."""
     h = ad.handshake
     if h[0] != 'gjk2d-adapter 2':
         fail(f'first line {h[0]!r}, expected "gjk2d-adapter 2"')
     m = re.fullmatch(r'library ' + LIBRARY[peer], h[1])
     if not m:
         fail(f'library line {h[1]!r} does not match {LIBRARY[peer]!r}')
-    if h[-1] != 'ready' or len(h) != 7:
-        fail(f'expected one implementation line, three contract lines, then "ready": {h}')
+    if h[-1] != 'ready' or len(h) != 8:
+        fail(f'expected one implementation line, three contract lines, one prepared line, then '
+             f'"ready": {h}')
     t = h[2].split(' ')
     name = VARIANT[peer].format(m.group(1))
     if t[:5] != ['implementation', name, 'double', 'radius', '0'] or len(t) < 6:
@@ -118,6 +122,8 @@ def check_handshake(ad, peer):
     for line, pattern in zip(h[3:6], want):
         if not re.fullmatch(pattern, line):
             fail(f'contract line {line!r} does not match {pattern!r}')
+    if h[6] != f'prepared {name} {SCOPE[peer]}':
+        fail(f'prepared line {h[6]!r}, expected "prepared {name} {SCOPE[peer]}"')
     print(f'handshake: {h[1]!r}, variant {name}, overlap {kind}')
     return name
 
@@ -290,13 +296,14 @@ def check_case(ad, peer, name, rid=1):
 
 
 def check_time(ad):
-    """A time request over two cases, K = 50: one "timed <id> <total_ns>" with a positive integer."""
+    """A time request over two cases, K = 50: one "timed <id> <total_ns> <prepare_ns>" (the
+    adapter declared `prepared`), both positive integers."""
     cases = [CASES['squares-3-apart'], CASES['rotated-square']]
     body = ' '.join(fmt_case(c[0], c[1]) for c in cases)
     answer = ad.ask(f'time 42 {ad.variant} 50 2 {body}')
-    m = re.fullmatch(r'timed 42 ([0-9]+)', answer)
-    if not m or int(m.group(1)) <= 0:
-        fail(f'expected "timed 42 <total_ns>" with total_ns > 0, got {answer!r}')
+    m = re.fullmatch(r'timed 42 ([0-9]+) ([0-9]+)', answer)
+    if not m or int(m.group(1)) <= 0 or int(m.group(2)) <= 0:
+        fail(f'expected "timed 42 <total_ns> <prepare_ns>", both > 0, got {answer!r}')
     print(f'time: {answer} ({int(m.group(1)) / 100:.0f} ns/query)')
 
 
@@ -342,8 +349,9 @@ def measure(ad):
     k = 20000
     answer = ad.ask(f'time 1 {ad.variant} {k} 1 {body}')
     loop = int(answer.split()[2]) / k
+    prepare = int(answer.split()[3]) / 2
     print(f'{ad.peer}: round trip {trip / 1000:.1f} us/query ({n} requests), '
-          f'time loop {loop:.0f} ns/query (K = {k}, m = 1)')
+          f'time loop {loop:.0f} ns/query (K = {k}, m = 1), {prepare:.0f} ns per shape prepared')
 
 
 def main():

@@ -20,7 +20,7 @@ set(_checks
     "1000-points|a 1000-gon is taken (no vertex limit)"
     "bad-requests|a bad request gets error or refused for its id and the stream goes on"
     "nonfinite|nan and inf in a case get an answer for its id"
-    "time|a time request gives timed and a positive total")
+    "time|a time request gives timed with positive totals for the loop and the preparation")
 foreach(peer IN ITEMS planck geos)
   foreach(entry IN LISTS _checks)
     string(REPLACE "|" ";" entry "${entry}")

@@ -17,6 +17,14 @@ does: overlap `zero` (it answers -1 and no points on overlap) and an absolute to
 overlap: 0.25 apart), and adds 5e-7 to the
 distance with B at x = 4 (within its tolerance, beyond gjk2d's bound) and 1e-3 with B at x = 5
 (beyond its tolerance).
+
+The `prepared` line and the `timed` figures (protocol version 2): prepared.py declares
+`prepared toy-prepared case` and answers `timed ID NS PREPARE_NS`, its cases' world points built
+once before the timed loop (prepare()), the `distance` requests through the same prepare() and
+query. The misbehaving ones answer right but time wrong, or describe themselves wrong:
+prepared-missing declares `prepared ... shape` and answers one figure; timed-extra declares none
+and answers two; too-fast answers `timed ID 1` (below 1 ns a query); prepared-bad-scope declares
+the scope `world`; prepared-v1 gives a prepared line in a version-1 handshake.
 """
 import os
 import select
@@ -73,9 +81,15 @@ def say(line):
     sys.stdout.flush()
 
 
+def prepare(tok, i):
+    """The case at tok[i] prepared (its world points, baked in) and the index after it."""
+    a, ra, _, i = world(tok, i)
+    b, rb, bx, i = world(tok, i)
+    return (a, ra, b, rb, bx), i
+
+
 def answer(tok, behaviour):
-    a, ra, _, i = world(tok, 3)
-    b, rb, bx, _ = world(tok, i)
+    (a, ra, b, rb, bx), _ = prepare(tok, 3)
     if bx == 4 and behaviour in ("crash", "crash-once-more"):
         os.kill(os.getpid(), signal.SIGSEGV)
     if bx == 4 and behaviour == "hang":
@@ -90,18 +104,24 @@ def answer(tok, behaviour):
     return "ok {} {!r} {!r} {!r} {!r} {!r} -1".format(tok[1], d, p[0], p[1], q[0], q[1])
 
 
-def timed(tok):
+def timed(tok, behaviour):
     k, m = int(tok[3]), int(tok[4])
     cases, i = [], 5
+    p0 = time.monotonic_ns()
     for _ in range(m):
-        a, ra, _, i = world(tok, i)
-        b, rb, _, i = world(tok, i)
-        cases.append((a, ra, b, rb))
+        c, i = prepare(tok, i)
+        cases.append(c[:4])
+    p1 = time.monotonic_ns()
     t0 = time.monotonic_ns()
     for _ in range(k):
         for c in cases:
             distance(*c)
-    return "timed {} {}".format(tok[1], time.monotonic_ns() - t0)
+    ns = time.monotonic_ns() - t0
+    if behaviour == "too-fast":
+        return "timed {} 1".format(tok[1])
+    if behaviour in ("prepared", "timed-extra"):
+        return "timed {} {} {}".format(tok[1], ns, p1 - p0)
+    return "timed {} {}".format(tok[1], ns)
 
 
 def start_number():
@@ -148,7 +168,7 @@ def serve_watching():
         line, buf = buf.split(b"\n", 1)
         seen += 1
         tok = line.decode().split()
-        say(timed(tok) if tok[0] == "time" else answer(tok, "pipeline"))
+        say(timed(tok, "pipeline") if tok[0] == "time" else answer(tok, "pipeline"))
 
 
 def main(behaviour):
@@ -159,7 +179,8 @@ def main(behaviour):
     if behaviour == "crash-once-more" and start_number() >= 3:
         print("toy adapter: this start fails on purpose", file=sys.stderr)
         sys.exit(3)
-    version = {"version": 3, "contract": 2}.get(behaviour, 1)
+    version = {"version": 3, "contract": 2, "prepared": 2, "prepared-missing": 2,
+               "prepared-bad-scope": 2}.get(behaviour, 1)
     say("gjk2d-adapter {}".format(version))
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = "quad" if behaviour == "bad-description" else "double"
@@ -167,6 +188,10 @@ def main(behaviour):
     if behaviour == "contract":
         say("contract toy-contract overlap zero tests/plugins/adapters/toy.py, answer()")
         say("contract toy-contract tolerance 1e-6 none tests/plugins/adapters/toy.py, answer()")
+    scope = {"prepared": "case", "prepared-missing": "shape", "prepared-bad-scope": "world",
+             "prepared-v1": "case"}.get(behaviour)
+    if scope:
+        say("prepared toy-{} {}".format(behaviour, scope))
     say("ready")
     print("toy adapter {}: ready".format(behaviour), file=sys.stderr)  # into the plugin's log
     if behaviour == "pipeline":
@@ -176,6 +201,6 @@ def main(behaviour):
         if tok and tok[0] == "distance":
             say(answer(tok, behaviour))
         elif tok and tok[0] == "time":
-            say(timed(tok))
+            say(timed(tok, behaviour))
         elif tok:
             say("error {} unknown request".format(tok[1]))

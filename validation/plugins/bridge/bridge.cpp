@@ -27,6 +27,15 @@
 // gets, after each implementation line, its three `contract` lines (overlap, tolerance, margin,
 // each with its source); a version-1 plugin, or a version-2 one whose contracts are NULL, gets
 // none: gjk2d's own contract, as when the host loads the plugin itself.
+//
+// Prepared shapes: when the plugin exports gjk2d_plugin_prepared, the bridge speaks protocol
+// version 2 (at least) and declares `prepared NAME shape|case` per implementation, by its scope.
+// Then every answer goes through the plugin's prepare, distance and release: a `distance` request
+// prepares its two shapes, queries and releases them (so what is judged is what is timed); a
+// `time` request prepares its 2m shapes once, timed apart (PREPARE_NS), then times K loops of
+// queries alone on them (NS), cache zeroed per query, and answers `timed ID NS PREPARE_NS`.
+// A shape the plugin cannot prepare (NULL) answers `error`. Without it, the plugin's distance_f
+// or distance_d answers, every figure includes the shapes' set-up, and `timed ID NS` says so.
 #include <gjk2d/plugin.h>
 
 #include <dlfcn.h>
@@ -57,6 +66,7 @@ void say(const std::string& line)
 }
 
 const gjk2d_plugin* g_plugin = nullptr;
+const gjk2d_prepared* g_prepared = nullptr; // the optional gjk2d_plugin_prepared table
 std::string g_library;
 std::string g_suffix; // appended to every implementation's name (the second argument)
 
@@ -77,14 +87,33 @@ void openPlugin(const char* path)
     auto library =
         reinterpret_cast<gjk2d_plugin_library_fn>(::dlsym(h, GJK2D_PLUGIN_LIBRARY_ENTRY));
     g_library = library && library() ? library() : std::string(path);
+    auto prepared =
+        reinterpret_cast<gjk2d_plugin_prepared_fn>(::dlsym(h, GJK2D_PLUGIN_PREPARED_ENTRY));
+    if (prepared != nullptr)
+    {
+        g_prepared = prepared();
+        if (g_prepared == nullptr || g_prepared->scope == nullptr ||
+            g_prepared->prepare == nullptr || g_prepared->distance == nullptr ||
+            g_prepared->release == nullptr)
+            die(std::string(path) + ": " GJK2D_PLUGIN_PREPARED_ENTRY
+                                    " returns a table without its four functions");
+    }
 }
 
-const gjk2d_implementation* findImpl(const std::string& name)
+// The index of the implementation called `name` (suffix included); -1 when none is.
+int findImpl(const std::string& name)
 {
     for (int i = 0; i < g_plugin->count; ++i)
         if (name == g_plugin->implementations[i].name + g_suffix)
-            return &g_plugin->implementations[i];
-    return nullptr;
+            return i;
+    return -1;
+}
+
+// Implementation i's scope: GJK2D_PREPARED_SHAPE or GJK2D_PREPARED_CASE (checked at the
+// handshake), or -1 when the plugin has no prepared shapes.
+int32_t scopeOf(int i)
+{
+    return g_prepared ? g_prepared->scope(i) : -1;
 }
 
 std::string num(double x)
@@ -134,8 +163,10 @@ void handshake()
     line = buf;
     if (line.rfind("gjk2d-adapter 1", 0) != 0)
         die("the host does not speak protocol 1: " + line);
-    // The plugin's ABI version is the protocol version spoken (the header comment).
-    say("gjk2d-adapter " + std::to_string(g_plugin->abi_version));
+    // The plugin's ABI version is the protocol version spoken, version 2 at least when it has
+    // prepared shapes (the `prepared` line is version 2's; the header comment).
+    say("gjk2d-adapter " +
+        std::to_string(g_prepared && g_plugin->abi_version < 2 ? 2 : g_plugin->abi_version));
     say("library " + g_library);
     const gjk2d_contract* contracts = g_plugin->abi_version >= 2 ? g_plugin->contracts : nullptr;
     for (int i = 0; i < g_plugin->count; ++i)
@@ -148,6 +179,12 @@ void handshake()
             std::to_string(im.max_vertices) + " " + (im.description ? im.description : ""));
         if (contracts != nullptr)
             sayContract(name, contracts[i]);
+        const int32_t scope = scopeOf(i);
+        if (g_prepared && scope != GJK2D_PREPARED_SHAPE && scope != GJK2D_PREPARED_CASE)
+            die("implementation " + name + ": prepared scope " + std::to_string(scope) +
+                " is neither GJK2D_PREPARED_SHAPE (0) nor GJK2D_PREPARED_CASE (1)");
+        if (g_prepared)
+            say("prepared " + name + (scope == GJK2D_PREPARED_SHAPE ? " shape" : " case"));
     }
     say("ready");
 }
@@ -237,16 +274,51 @@ template <class T, class Shape> struct Cases
     }
 };
 
-template <class T, class Shape, class Result, class Fn>
-std::string distanceT(const std::string& id, Fn fn, int cacheBytes, Reader& in)
+// Case k's two shapes prepared by implementation i (a SHAPE-scoped one is given other = NULL, a
+// CASE-scoped one the case's other shape); false, with nothing left prepared, when either is NULL.
+template <class Shape> bool prepareCase(int i, const Shape& a, const Shape& b, void*& pa, void*& pb)
+{
+    const bool perCase = scopeOf(i) == GJK2D_PREPARED_CASE;
+    pa = g_prepared->prepare(i, &a, perCase ? &b : nullptr);
+    pb = pa ? g_prepared->prepare(i, &b, perCase ? &a : nullptr) : nullptr;
+    if (pb == nullptr && pa != nullptr)
+        g_prepared->release(i, pa);
+    return pb != nullptr;
+}
+
+// One query of implementation i: through its prepared shapes when the plugin has them
+// (prepared[0], prepared[1]), else through distance_f / distance_d.
+template <class Shape, class Result> struct Query
+{
+    int i;
+    int32_t (*fn)(const Shape*, const Shape*, void*, Result*);
+    int32_t operator()(const Shape& a, void* pa, const Shape& b, void* pb, void* cache,
+                       Result* out) const
+    {
+        return g_prepared ? g_prepared->distance(i, pa, &a, pb, &b, cache, out)
+                          : fn(&a, &b, cache, out);
+    }
+};
+
+template <class T, class Shape, class Result>
+std::string distanceT(const std::string& id, const Query<Shape, Result>& query, int cacheBytes,
+                      Reader& in)
 {
     Cases<T, Shape> cs;
     if (!cs.read(in, 1))
         return "error " + id + " bad request";
+    void *pa = nullptr, *pb = nullptr;
+    if (g_prepared && !prepareCase(query.i, cs.a[0], cs.b[0], pa, pb))
+        return "error " + id + " the plugin could not prepare the case's shapes";
     std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 1), 0);
     Result o{};
     o.iterations = -1;
-    const int32_t st = fn(&cs.a[0], &cs.b[0], cacheBytes > 0 ? cache.data() : nullptr, &o);
+    const int32_t st = query(cs.a[0], pa, cs.b[0], pb, cacheBytes > 0 ? cache.data() : nullptr, &o);
+    if (g_prepared)
+    {
+        g_prepared->release(query.i, pa);
+        g_prepared->release(query.i, pb);
+    }
     if (st == GJK2D_STATUS_REFUSED)
         return "refused " + id + " the plugin refused the case";
     if (st != GJK2D_STATUS_OK)
@@ -257,16 +329,48 @@ std::string distanceT(const std::string& id, Fn fn, int cacheBytes, Reader& in)
 
 volatile double g_sink = 0; // keeps the timed loop from being optimised away
 
+long long nanosSince(std::chrono::steady_clock::time_point t0)
+{
+    return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() -
+                                                                t0)
+        .count();
+}
+
 // The runner's loop (timing.cpp timePassPlugin), K rounds over the m cases; only it is timed.
-template <class T, class Shape, class Result, class Fn>
-std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m, Reader& in)
+// With prepared shapes, their preparation comes first, timed apart, and the loop queries them.
+template <class T, class Shape, class Result>
+std::string timeT(const std::string& id, const Query<Shape, Result>& query, int cacheBytes, long K,
+                  long m, Reader& in)
 {
     Cases<T, Shape> cs;
     if (K < 1 || m < 1 || !cs.read(in, m))
         return "error " + id + " bad request";
+    const std::size_t n = cs.a.size();
+    std::vector<void*> pa(n, nullptr), pb(n, nullptr);
+    const auto releaseAll = [&]
+    {
+        for (std::size_t i = 0; i < n && g_prepared; ++i)
+            if (pa[i] != nullptr)
+            {
+                g_prepared->release(query.i, pa[i]);
+                g_prepared->release(query.i, pb[i]);
+            }
+    };
+    long long prepareNs = 0;
+    if (g_prepared)
+    {
+        const auto p0 = std::chrono::steady_clock::now();
+        for (std::size_t i = 0; i < n; ++i)
+            if (!prepareCase(query.i, cs.a[i], cs.b[i], pa[i], pb[i]))
+            {
+                releaseAll();
+                return "error " + id + " the plugin could not prepare case " +
+                       std::to_string(i + 1) + "'s shapes";
+            }
+        prepareNs = nanosSince(p0);
+    }
     std::vector<unsigned char> cache(std::size_t(cacheBytes > 0 ? cacheBytes : 1), 0);
     void* c = cacheBytes > 0 ? cache.data() : nullptr;
-    const std::size_t n = cs.a.size();
     const auto t0 = std::chrono::steady_clock::now();
     double acc = 0;
     for (long r = 0; r < K; ++r)
@@ -274,13 +378,14 @@ std::string timeT(const std::string& id, Fn fn, int cacheBytes, long K, long m, 
         {
             std::memset(cache.data(), 0, std::size_t(cacheBytes));
             Result o{};
-            fn(&cs.a[i], &cs.b[i], c, &o);
+            query(cs.a[i], pa[i], cs.b[i], pb[i], c, &o);
             acc += double(o.distance);
         }
-    const auto t1 = std::chrono::steady_clock::now();
+    const long long ns = nanosSince(t0);
     g_sink = g_sink + acc;
-    return "timed " + id + " " +
-           std::to_string(std::chrono::duration_cast<std::chrono::nanoseconds>(t1 - t0).count());
+    releaseAll();
+    return "timed " + id + " " + std::to_string(ns) +
+           (g_prepared ? " " + std::to_string(prepareNs) : std::string());
 }
 
 std::string answer(const std::string& line)
@@ -289,22 +394,21 @@ std::string answer(const std::string& line)
     std::string word, id, name;
     if (!in.word(word) || !in.word(id) || !in.word(name))
         return "error " + (id.empty() ? std::string("0") : id) + " bad request";
-    const gjk2d_implementation* im = findImpl(name);
-    if (im == nullptr)
+    const int i = findImpl(name);
+    if (i < 0)
         return "error " + id + " no implementation " + name;
-    const bool f = im->scalar == GJK2D_SCALAR_FLOAT;
+    const gjk2d_implementation& im = g_plugin->implementations[i];
+    const bool f = im.scalar == GJK2D_SCALAR_FLOAT;
+    const Query<gjk2d_shape_f, gjk2d_result_f> qf{i, im.distance_f};
+    const Query<gjk2d_shape_d, gjk2d_result_d> qd{i, im.distance_d};
     if (word == "distance")
-        return f ? distanceT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f,
-                                                                   im->cache_bytes, in)
-                 : distanceT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d,
-                                                                    im->cache_bytes, in);
+        return f ? distanceT<float>(id, qf, im.cache_bytes, in)
+                 : distanceT<double>(id, qd, im.cache_bytes, in);
     long K = 0, m = 0;
     if (word != "time" || !in.integer(K) || !in.integer(m))
         return "error " + id + " unknown request " + word;
-    return f ? timeT<float, gjk2d_shape_f, gjk2d_result_f>(id, im->distance_f, im->cache_bytes, K,
-                                                           m, in)
-             : timeT<double, gjk2d_shape_d, gjk2d_result_d>(id, im->distance_d, im->cache_bytes, K,
-                                                            m, in);
+    return f ? timeT<float>(id, qf, im.cache_bytes, K, m, in)
+             : timeT<double>(id, qd, im.cache_bytes, K, m, in);
 }
 } // namespace
 

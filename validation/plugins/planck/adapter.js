@@ -6,10 +6,18 @@
 //   limit: getSupport loops over all `count` points, and SimplexCache keeps its indices in plain JS
 //   arrays of numbers (no 8-bit index as in Box2D 2.4.1's b2SimplexCache). Settings.maxPolygonVertices
 //   (12) bounds PolygonShape only, not this path. So max_vertices is 0 (no limit).
-// - It computes in JS numbers (double). Transform.set({p, q: {c, s}}) copies (c, s) as given.
+// - It computes in JS numbers (double). Transform.set({p, q: {c, s}}) copies (c, s) as given
+//   (Rot.set with an object, dist/planck.js: no angle, no sin or cos), so it takes the case's
+//   transform exactly.
 // - useRadii = true: distance minus both radii, witness points moved onto the rounded surfaces.
 // - A fresh SimplexCache (count 0) per query: a cold start (the protocol has no warm start).
 // It refuses only what it cannot hand planck: a shape without points.
+// Prepared shapes (the handshake's `prepared ... shape` line): a shape is built once in its own
+// frame, as an engine keeps it (its vertices as planck Vec2s in a DistanceProxy with its radius,
+// prepare() below), and each query sets the two transforms and runs Distance on the two proxies
+// (query() below). A `time` request prepares its 2m shapes once, timed apart, before its timed
+// loop of queries, and answers both figures; a `distance` request goes through the same prepare()
+// and query(), so what is judged is what is timed.
 // The contract (the `contract` lines of the handshake, CONTRACT below), read in planck 1.5.0's
 // src/collision/Distance.ts (the npm package's sources; its dist/planck.js does the same):
 // - overlap `midpoint`: with useRadii, when the core distance is at most rA + rB (or at most
@@ -89,14 +97,23 @@ function readCase(t, i) {
   return { a: A.shape, b: B.shape, next: B.next };
 }
 
-// The work of one query, the same inside and outside the timed loop.
+// A shape prepared once, in its own frame: its planck DistanceProxy.
+function prepare(shape) {
+  const vertices = shape.vertices.map((v) => planck.Vec2(v.x, v.y));
+  const proxy = new planck.DistanceProxy();
+  proxy.setVertices(vertices, vertices.length, shape.r);
+  return proxy;
+}
+
+// One query on two prepared shapes and the case's transforms, the same inside and outside the
+// timed loop.
 const input = new planck.DistanceInput();
 const output = new planck.DistanceOutput();
-function distance(a, b) {
-  input.proxyA.setVertices(a.vertices, a.vertices.length, a.r);
-  input.proxyB.setVertices(b.vertices, b.vertices.length, b.r);
-  input.transformA.set(a.xf);
-  input.transformB.set(b.xf);
+function query(proxyA, xfA, proxyB, xfB) {
+  input.proxyA = proxyA;
+  input.proxyB = proxyB;
+  input.transformA.set(xfA);
+  input.transformB.set(xfB);
   input.useRadii = true;
   planck.Distance(output, new planck.SimplexCache(), input);
   return output;
@@ -120,7 +137,7 @@ function answer(t) {
       if (c.next !== t.length) throw new RequestError(`${t.length - c.next} tokens after shape B`);
       const why = refusal(c);
       if (why) return say(`refused ${id} ${why}`);
-      const o = distance(c.a, c.b);
+      const o = query(prepare(c.a), c.a.xf, prepare(c.b), c.b.xf);
       return say(`ok ${id} ${o.distance} ${o.pointA.x} ${o.pointA.y} ${o.pointB.x} ${o.pointB.y} ${o.iterations}`);
     }
     if (t[0] === "time") {
@@ -138,14 +155,22 @@ function answer(t) {
         i = c.next;
       }
       if (i !== t.length) throw new RequestError(`${t.length - i} tokens after case ${m}`);
+      const proxiesA = new Array(m);
+      const proxiesB = new Array(m);
+      const prepStart = process.hrtime.bigint();
+      for (let k = 0; k < m; ++k) {
+        proxiesA[k] = prepare(cases[k].a);
+        proxiesB[k] = prepare(cases[k].b);
+      }
+      const prepared = process.hrtime.bigint() - prepStart;
       let sink = 0;
       const start = process.hrtime.bigint();
       for (let round = 0; round < K; ++round) {
-        for (let k = 0; k < m; ++k) sink += distance(cases[k].a, cases[k].b).distance;
+        for (let k = 0; k < m; ++k) sink += query(proxiesA[k], cases[k].a.xf, proxiesB[k], cases[k].b.xf).distance;
       }
       const total = process.hrtime.bigint() - start;
       if (sink === -1) process.stderr.write("\n"); // keeps the loop's results alive
-      return say(`timed ${id} ${total}`);
+      return say(`timed ${id} ${total} ${prepared}`);
     }
     return say(`error ${id} unknown request "${t[0]}"`);
   } catch (e) {
@@ -167,6 +192,7 @@ rl.on("line", (line) => {
     say(`library planck.js ${VERSION}`);
     say(`implementation ${IMPL} double radius 0 planck.js ${VERSION} Distance (DistanceProxy.setVertices), cold SimplexCache, useRadii`);
     CONTRACT.forEach(say);
+    say(`prepared ${IMPL} shape`);
     say("ready");
     handshaken = true;
     return;

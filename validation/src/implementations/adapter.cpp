@@ -1,4 +1,4 @@
-// The host side of the executable-adapter protocol (version 1, docs/validate-your-gjk.md,
+// The host side of the executable-adapter protocol (versions 1 and 2, docs/validate-your-gjk.md,
 // "Executable adapters"): the handshake, requests and answers, pipelining and a lost answer
 // recovered, over the process and pipes of implementations/adapter_process.hpp.
 #include "implementations/adapter.hpp"
@@ -412,6 +412,53 @@ void answerThroughAdapters(const std::vector<PluginTask>& tasks, double timeoutS
         answerPipelined(pool().slots[path], list, timeoutSeconds);
 }
 
+namespace
+{
+// A `timed` answer to request `id` of K x m queries: the figures (ns, and prepareNs when the
+// adapter declared `prepared`), or why they are refused (`why`, the stream still in step: one
+// line answered one request). `malformed`: a line that is no `timed` answer to `id` at all.
+struct TimedAnswer
+{
+    AdapterTime time;
+    std::string why;
+    bool malformed = false;
+};
+
+TimedAnswer timedAnswer(const std::string& line, std::uint64_t id, bool prepared, int K,
+                        std::size_t m)
+{
+    TimedAnswer a;
+    const std::vector<std::string> t = tokens(line);
+    long long got = -1;
+    double ns = -1, prepareNs = -1;
+    auto figure = [&](std::size_t k, double& x)
+    { return parseNumber(t[k], x) && std::isfinite(x) && x >= 0; };
+    if (t.size() < 3 || t.size() > 4 || t[0] != "timed" || !parseInteger(t[1], 0, LLONG_MAX, got) ||
+        std::uint64_t(got) != id || !figure(2, ns) || (t.size() == 4 && !figure(3, prepareNs)))
+    {
+        const bool said = !t.empty() && (t[0] == "error" || t[0] == "refused");
+        a.why = (said ? "it answered " : "malformed answer: ") + quoted80(line);
+        a.malformed = !said;
+        return a;
+    }
+    if (prepared && t.size() == 3)
+        a.why = fmt::format("it answered {}, without the preparation's figure that its `prepared` "
+                            "line promises (`timed ID NS PREPARE_NS`)",
+                            quoted80(line));
+    else if (!prepared && t.size() == 4)
+        a.why = fmt::format("it answered {}, a second figure without a `prepared` line in its "
+                            "handshake (`timed ID NS`)",
+                            quoted80(line));
+    else if (ns < double(K) * double(m))
+        a.why = fmt::format("it answered {} ns for {} x {} queries: below 1 ns a query, which no "
+                            "distance query reaches",
+                            ns, K, m);
+    else
+        a.time = {ns, prepareNs};
+    return a;
+}
+} // namespace
+
 AdapterTime adapterTime(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
                         double timeoutSeconds, const std::string& what)
 {
@@ -424,15 +471,13 @@ AdapterTime adapterTime(const VariantInfo& v, int K, std::size_t m, const std::s
     std::string why = e.how;
     if (e.io == Io::Ok)
     {
-        const std::vector<std::string> t = tokens(e.line);
-        long long got = -1;
-        double ns = -1;
-        if (t.size() == 3 && t[0] == "timed" && parseInteger(t[1], 0, LLONG_MAX, got) &&
-            std::uint64_t(got) == id && parseNumber(t[2], ns) && std::isfinite(ns) && ns >= 0)
-            return {ns, -1};
-        const bool said = !t.empty() && (t[0] == "error" || t[0] == "refused");
-        why = (said ? "it answered " : "malformed answer: ") + quoted80(e.line);
-        if (!said)
+        const bool prepared = v.plugin->preparation == Preparation::Shape ||
+                              v.plugin->preparation == Preparation::Case;
+        const TimedAnswer a = timedAnswer(e.line, id, prepared, K, m);
+        if (a.why.empty())
+            return a.time;
+        why = a.why;
+        if (a.malformed)
             reap(s.proc, 0); // the stream cannot be trusted
     }
     std::fprintf(stderr, "gjk-validate: executable adapter %s, variant '%s', %s: %s; no ns/query\n",

@@ -1,5 +1,5 @@
-// Executable adapters: the host side of the gjk2d executable-adapter protocol, version 1
-// (docs/validate-your-gjk.md, "Executable adapters (any language)"). An adapter is any
+// Executable adapters: the host side of the gjk2d executable-adapter protocol, versions 1
+// and 2 (docs/validate-your-gjk.md, "Executable adapters (any language)"). An adapter is any
 // executable file gjk-validate starts and talks to over its stdin and stdout, one line per
 // message: a handshake (its library and implementations), then `distance` and `time` requests,
 // one answer each. Contained like a shared-library plugin: a crash, a hang or a malformed answer
@@ -7,6 +7,7 @@
 #pragma once
 
 #include "implementations/contract.hpp"
+#include "implementations/plugins.hpp"
 #include "implementations/variants.hpp"
 
 #include <cstddef>
@@ -16,13 +17,12 @@
 namespace gjkval
 {
 
-struct PluginImpl;   // implementations/plugins.hpp
-struct PluginTask;   // implementations/plugins.hpp
 struct PreparedCase; // evaluate/evaluate.hpp
 
 // The versions the host speaks. It opens with `gjk2d-adapter 1` (the oldest, so that a version-1
 // adapter that checks the line keeps working); the adapter answers the version it speaks, 1 or 2.
-// Version 2 adds the `contract` lines of the handshake (implementations/contract.hpp).
+// Version 2 adds the `contract` lines of the handshake (implementations/contract.hpp) and the
+// optional `prepared` lines (AdapterImplementation::preparation).
 inline constexpr int kAdapterProtocolMinVersion = 1;
 inline constexpr int kAdapterProtocolVersion = 2;
 // The handshake may take max(kAdapterHandshakeSeconds, --plugin-timeout): an interpreter's start
@@ -51,6 +51,8 @@ struct AdapterImplementation
     std::string description;
     // Version 2's `contract NAME ...` lines; version 1: gjk2d's own.
     Contract contract = ownContract();
+    // Version 2's optional `prepared NAME shape|case` line: Shape or Case; InCall without it.
+    Preparation preparation = Preparation::InCall;
     bool operator==(const AdapterImplementation&) const = default;
 };
 
@@ -93,7 +95,10 @@ std::string adapterCaseText(const VariantInfo& v, const PreparedCase& p);
 // line on stderr says so, naming `what`, and the process is started again for the next request.
 // An adapter that declared `prepared NAME shape|case` (Preparation::Shape or Case) builds the
 // chunk's shapes once, before its timed loop, and answers `timed ID NS PREPARE_NS`: NS the K loops
-// of queries alone, PREPARE_NS the preparation of the chunk's 2m shapes (AdapterTime::prepareNs).
+// of queries alone, PREPARE_NS the preparation of the chunk's 2m shapes (AdapterTime::prepareNs);
+// one without answers `timed ID NS`. A missing or extra figure is refused, and so is an NS below
+// 1 ns a query (NS < K m: no distance query is that fast, so the adapter's clock or loop is
+// wrong), each with one line on stderr; the answer is then no time ({}), the process kept.
 struct AdapterTime
 {
     double ns = -1;        // the K loops; negative: no answer

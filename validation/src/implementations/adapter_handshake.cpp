@@ -1,6 +1,6 @@
 // The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md,
-// "Executable adapters"): the host's version line, then the adapter's library and implementation
-// lines, each checked, to its `ready`.
+// "Executable adapters"): the host's version line, then the adapter's library, implementation,
+// contract and prepared lines, each checked, to its `ready`.
 #include "implementations/adapter_wire.hpp"
 
 namespace gjkval::adapterwire
@@ -132,6 +132,34 @@ void contractLine(const std::string& line, std::vector<AdapterImplementation>& i
         throw bad("the clause is none of overlap, tolerance, margin");
 }
 
+// One `prepared NAME shape|case` line (version 2), for the implementation NAME declared before:
+// the adapter builds a `time` request's shapes once, before its timed loop, in their own frame
+// (`shape`: the transforms applied per query, as the library takes them) or with the case's world
+// points baked in (`case`), and answers `timed ID NS PREPARE_NS`.
+void preparedLine(const std::string& line, int version, std::vector<AdapterImplementation>& impls)
+{
+    const std::vector<std::string> t = tokens(line);
+    auto bad = [&](const std::string& why)
+    { return AdapterFailure(fmt::format("bad description: {}: {}", quoted80(line), why)); };
+    if (version < 2)
+        throw bad("a prepared line needs protocol version 2 (the adapter answered "
+                  "'gjk2d-adapter 1')");
+    if (t.size() != 3)
+        throw bad("a prepared line is `prepared NAME shape|case`");
+    auto it = std::find_if(impls.begin(), impls.end(),
+                           [&](const AdapterImplementation& a) { return a.name == t[1]; });
+    if (it == impls.end())
+        throw bad("no implementation of that name before it");
+    if (it->preparation != Preparation::InCall)
+        throw bad("a second prepared line for that implementation");
+    if (t[2] == "shape")
+        it->preparation = Preparation::Shape;
+    else if (t[2] == "case")
+        it->preparation = Preparation::Case;
+    else
+        throw bad(fmt::format("the scope '{}' is neither shape nor case", t[2].substr(0, 80)));
+}
+
 // Why the handshake stopped short: the adapter's exit, or the limit.
 [[noreturn]] void handshakeCut(Process& p, Io io, double limit)
 {
@@ -174,6 +202,8 @@ AdapterDescription handshake(Process& p, double limit)
             d.implementations.push_back(implementationLine(line, d.implementations));
         else if (t[0] == "contract" && d.version >= 2)
             contractLine(line, d.implementations);
+        else if (t[0] == "prepared")
+            preparedLine(line, d.version, d.implementations);
         else
             throw AdapterFailure(fmt::format(
                 "bad description: unexpected line {} (a second library, a 65th implementation, "

@@ -237,6 +237,7 @@ std::vector<PluginImpl> adapterImpls(const std::string& path, const std::string&
         p.impl.accepts = a.radius ? std::uint32_t(GJK2D_ACCEPTS_RADIUS) : 0u;
         p.impl.max_vertices = a.maxVertices;
         p.contract = a.contract;
+        p.preparation = a.preparation;
         impls.push_back(std::move(p));
     }
     return impls;
