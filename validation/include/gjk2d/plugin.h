@@ -261,7 +261,8 @@ extern "C"
                             const void* prepared_b, const void* b, void* cache, void* out);
         void (*release)(int32_t implementation, void* prepared);
     } gjk2d_prepared;
-    typedef const gjk2d_prepared* (*gjk2d_plugin_prepared_fn)(void); /* GJK2D_PLUGIN_PREPARED_ENTRY */
+    typedef const gjk2d_prepared* (*gjk2d_plugin_prepared_fn)(
+        void); /* GJK2D_PLUGIN_PREPARED_ENTRY */
 
 #if defined(_WIN32)
 #define GJK2D_PLUGIN_EXPORT __declspec(dllexport)

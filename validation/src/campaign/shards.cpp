@@ -40,8 +40,7 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
         for (const auto& s : f.stats)
         {
             stats.push_back(s.state());
-            timing.push_back(
-                {s.nsPerQuery, s.nsMin, s.nsMax, s.timingPasses, s.prepareNsPerShape});
+            timing.push_back({s.nsPerQuery, s.nsMin, s.nsMax, s.timingPasses, s.prepareNsPerShape});
         }
         std::vector<Case> worst;
         Json worstAt = Json::array();

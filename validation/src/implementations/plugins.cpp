@@ -288,10 +288,10 @@ std::vector<PluginImpl> describePlugin(const std::string& path, const std::strin
         {
             const std::int32_t scope = p.prepared->scope(i);
             if (scope != GJK2D_PREPARED_SHAPE && scope != GJK2D_PREPARED_CASE)
-                throw InputError(fmt::format(
-                    "plugin {}: implementation '{}': prepared scope {} is neither "
-                    "GJK2D_PREPARED_SHAPE (0) nor GJK2D_PREPARED_CASE (1)",
-                    path, p.impl.name, scope));
+                throw InputError(
+                    fmt::format("plugin {}: implementation '{}': prepared scope {} is neither "
+                                "GJK2D_PREPARED_SHAPE (0) nor GJK2D_PREPARED_CASE (1)",
+                                path, p.impl.name, scope));
             p.preparation = scope == GJK2D_PREPARED_SHAPE ? Preparation::Shape : Preparation::Case;
         }
         impls.push_back(std::move(p));

@@ -61,7 +61,7 @@ enum class Preparation
     Case,
     InCall,
 };
-const char* preparationName(Preparation p); // "none", "shape", "case", "in-call"
+const char* preparationName(Preparation p);      // "none", "shape", "case", "in-call"
 Preparation preparationOf(const VariantInfo& v); // None for gjk2d's own variants
 // Whether the variant's ns/query is the implementation's own measurement (an executable adapter's
 // `timed` answers), not gjk-validate's clock.
