@@ -71,13 +71,16 @@ b2Transform transformOf(const gjk2d_shape_f& s)
 // (b2DistanceProxy::Set stores the pointer: "The vertices must remain in scope while the proxy is
 // in use"). The scope is the shape's because Box2D takes the case's transform exactly:
 // b2Transform's p and q.c, q.s are the case's floats, set directly (transformOf), so one proxy
-// serves every pose of the shape. A shape Box2D cannot take (no point, more than 256) is kept as
-// refused, so that the query answers GJK2D_STATUS_REFUSED as distance_f does.
+// serves every pose of the shape. Up to b2_maxPolygonVertices (8) points are held in the prepared
+// shape itself, as b2PolygonShape holds its vertices, larger shapes in a vector of their own. A
+// shape Box2D cannot take (no point, more than 256) is kept as refused, so that the query answers
+// GJK2D_STATUS_REFUSED as distance_f does.
 struct Prepared
 {
-    std::vector<b2Vec2> points;
     b2DistanceProxy proxy;
     bool refused = false;
+    b2Vec2 few[b2_maxPolygonVertices];
+    std::vector<b2Vec2> many;
 };
 
 void* prepare(int32_t implementation, const void* shape, const void* /*other*/)
@@ -91,10 +94,12 @@ void* prepare(int32_t implementation, const void* shape, const void* /*other*/)
     p->refused = s.count < 1 || s.count > 256;
     if (!p->refused)
     {
-        p->points.reserve(std::size_t(s.count));
+        if (s.count > b2_maxPolygonVertices)
+            p->many.resize(std::size_t(s.count));
+        b2Vec2* points = s.count > b2_maxPolygonVertices ? p->many.data() : p->few;
         for (int32_t i = 0; i < s.count; ++i)
-            p->points.emplace_back(s.points[2 * i], s.points[2 * i + 1]);
-        p->proxy.Set(p->points.data(), s.count, s.radius);
+            points[i].Set(s.points[2 * i], s.points[2 * i + 1]);
+        p->proxy.Set(points, s.count, s.radius);
     }
     return p;
 }
