@@ -113,11 +113,11 @@ std::string reap(Process& p, double waitSeconds)
     while (!childExited(p.pid, false) && Clock::now() < deadline)
         ::usleep(2000);
     killChildGroup(p.pid);
+    disownChild(p.pid); // before its PID is freed: no signal is sent to that group again
     int status = 0;
     while (::waitpid(p.pid, &status, 0) < 0 && errno == EINTR)
     {
     }
-    disownChild(p.pid);
     p = Process{};
     return howEnded(status);
 }

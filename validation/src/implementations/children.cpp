@@ -206,11 +206,11 @@ std::string PluginChild::finish()
     // Exited, not yet reaped (its PID names its group): what it left in its group goes with it.
     childExited(pid_, true);
     killChildGroup(pid_);
+    disownChild(pid_); // before its PID is freed: no signal is sent to that group again
     int status = 0;
     while (::waitpid(pid_t(pid_), &status, 0) < 0 && errno == EINTR)
     {
     }
-    disownChild(pid_);
     if (WIFSIGNALED(status))
         return fmt::format("signal {} ({})", WTERMSIG(status), ::strsignal(WTERMSIG(status)));
     if (WIFEXITED(status) && WEXITSTATUS(status) != 0)

@@ -37,7 +37,7 @@ void ownChild(int pid);
 // parent's state).
 bool killChildGroup(int pid);
 
-// After the child is reaped: no longer owned.
+// Once its group is ended, before the child is reaped: no longer owned (nor signalled again).
 void disownChild(int pid);
 
 // Whether `pid` has exited, without reaping it (waitid WNOWAIT): `wait` blocks until it has. True
