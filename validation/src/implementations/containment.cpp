@@ -125,14 +125,10 @@ void containDescendants()
                      std::strerror(errno));
     for (const int sig : {SIGINT, SIGTERM, SIGHUP})
     {
-        struct sigaction old
-        {
-        };
+        struct sigaction old = {};
         if (::sigaction(sig, nullptr, &old) != 0 || old.sa_handler != SIG_DFL)
             continue; // ignored (nohup) or handled by whoever set it: left as it is
-        struct sigaction act
-        {
-        };
+        struct sigaction act = {};
         act.sa_handler = endGroupsThenDie;
         sigemptyset(&act.sa_mask);
         act.sa_flags = SA_RESTART;
