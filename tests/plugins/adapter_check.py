@@ -49,6 +49,12 @@ and 4, derived by hand there) with the variant double and the plugin A, into W/r
            7 points cannot be prepared); both bridged variants are timed (ns_per_query > 0:
            the `timed` answers carry two figures) and report.json says preparation shape and
            case, timed by the adapter.
+  fork-hang, setsid
+           A leaves a sleeping child behind at each of its starts (its PID in W/sleepers):
+           fork-hang's stays in A's process group and A hangs on d3, setsid's leaves the group
+           and the session. After gjk-validate exits, no such child is left (each PID is gone
+           within 2 s: killed and reaped, not a zombie); d1, d2, d4 answered (d3 hung for
+           fork-hang). Each start counts: the load's handshake, the cases, the start after a hang.
   shared   A is a shared-library plugin with its exec bit set (as CMake links it): it is loaded
            as a shared library (variants[].plugin.kind), not started.
 Exit 0 when every check holds; else a message and exit 1.
@@ -58,8 +64,10 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 
 def fail(msg):
@@ -240,6 +248,40 @@ def pipeline_cases(path):
     return want
 
 
+def gone(pid, grace):
+    """Whether no process has the PID within `grace` seconds (a zombie still has it)."""
+    deadline = time.monotonic() + grace
+    while True:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return True
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+
+
+def tree(a):
+    name = "toy-" + a.kind
+    _, report, lines, _ = campaign(a, ["--no-timing"])
+    pids = [int(l) for l in open(os.path.join(a.work, "sleepers"))]
+    starts = 3 if a.kind == "fork-hang" else 2
+    left = [pid for pid in pids if not gone(pid, 2)]
+    for pid in left:  # the check fails; nothing of it outlives it either
+        os.kill(pid, signal.SIGKILL)
+    if left:
+        fail("children of the adapter outlived gjk-validate: {} of {}".format(left, pids))
+    if len(pids) != starts:
+        fail("expected {} starts, each leaving a child: {}".format(starts, pids))
+    got = answers(lines, name)
+    expect = {"adapters/d1": 1.0, "adapters/d2": 2.0, "adapters/d4": 4.0}
+    expect["adapters/d3"] = None if a.kind == "fork-hang" else 3.0
+    if {k: v.get("distance") for k, v in got.items()} != expect:
+        fail("the adapter's answers: {}".format(got))
+    print("adapter_check: {}: the children of its {} starts ended with gjk-validate".format(
+        a.kind, starts))
+
+
 def pipeline_window(a):
     """The window the pipeline adapter saw: the host never exceeded it, and filled it."""
     snaps = [tuple(map(int, l.split())) for l in open(os.path.join(a.work, "window"))]
@@ -373,7 +415,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared",
-                             "prepared", "bridge-prepared"] + list(TIMED_REFUSALS))
+                             "prepared", "bridge-prepared", "fork-hang", "setsid"] + list(TIMED_REFUSALS))
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -384,7 +426,7 @@ def main():
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
     {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
      "pipeline": pipeline, "prepared": prepared,
-     "bridge-prepared": bridge_prepared,
+     "bridge-prepared": bridge_prepared, "fork-hang": tree, "setsid": tree,
      **{k: timed_refused for k in TIMED_REFUSALS}}.get(a.kind, contained)(a)
 
 

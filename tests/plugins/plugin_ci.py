@@ -13,6 +13,10 @@
       a campaign with a misbehaving test plugin: exit 0 (compared, not judged), the plugin's
       refusals, error statuses and crashes or hangs counted, every other result kept, each
       crash or hang named with its case on stderr; then with --judge: exit 1.
+  plugin_ci.py tree --exe E --plugin P --work W
+      P is the fork-hang test plugin: on each case where it hangs it first leaves two sleeping
+      children (their PIDs in W/pids), one in its child's process group, one out of it (setsid).
+      After the campaign, none of them is left (each PID gone within 2 s: killed and reaped).
   plugin_ci.py box2d --exe E --work W
       the shipped Box2D 2.4.1 adapter, named in --variants: cases of more than 256 points refused
       (its cache's 8-bit indices), every random case answered, with iterations.
@@ -26,8 +30,10 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
+import time
 
 
 def fail(msg):
@@ -200,6 +206,37 @@ def contained(a):
                                           st["crashed"], st["hung"], count))
 
 
+def gone(pid, grace):
+    """Whether no process has the PID within `grace` seconds (a zombie still has it)."""
+    deadline = time.monotonic() + grace
+    while True:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return True
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+
+
+def tree(a):
+    fresh(a.work)
+    pids_file = os.path.join(a.work, "pids")
+    env = dict(os.environ, GJK2D_TEST_PIDS=pids_file)
+    run([a.exe, "run", "--family", "random:40", "--variants", "double", "--no-default-plugins",
+         "--threads", "2", "--plugin", a.plugin, "--plugin-timeout", "0.3", "--no-timing",
+         "--out", os.path.join(a.work, "report"), "--no-progress"], env=env)
+    pids = [int(l) for l in open(pids_file)] if os.path.exists(pids_file) else []
+    left = [pid for pid in pids if not gone(pid, 2)]
+    for pid in left:  # the check fails; nothing of it outlives it either
+        os.kill(pid, signal.SIGKILL)
+    if left:
+        fail("children of the plugin outlived gjk-validate: {} of {}".format(left, pids))
+    if not pids:
+        fail("the plugin hung on no case: nothing was checked")
+    print("plugin_ci: tree: the plugin's {} children ended with gjk-validate".format(len(pids)))
+
+
 def box2d(a):
     fresh(a.work)
     out = os.path.join(a.work, "report")
@@ -266,6 +303,10 @@ def main():
     c.add_argument("--plugin", required=True)
     c.add_argument("--kind", required=True, choices=["good-but-quirky", "crash", "hang"])
     c.add_argument("--work", required=True)
+    t = sub.add_parser("tree")
+    t.add_argument("--exe", required=True)
+    t.add_argument("--plugin", required=True)
+    t.add_argument("--work", required=True)
     b = sub.add_parser("box2d")
     b.add_argument("--exe", required=True)
     b.add_argument("--work", required=True)
@@ -273,7 +314,7 @@ def main():
     d.add_argument("--build", required=True)
     d.add_argument("--work", required=True)
     a = ap.parse_args()
-    {"sdk": sdk, "contained": contained, "box2d": box2d, "deb": deb}[a.step](a)
+    {"sdk": sdk, "contained": contained, "tree": tree, "box2d": box2d, "deb": deb}[a.step](a)
 
 
 if __name__ == "__main__":

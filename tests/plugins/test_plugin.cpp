@@ -5,6 +5,9 @@
 //                    points and B a multiple of 3
 //   CRASH            like the above, but raises SIGSEGV where (countA + countB) % 5 == 0
 //   HANG             like the above, but never returns where (countA + countB) % 5 == 0
+//   FORK_HANG        like HANG, but first leaves two children that sleep 300 s, their PIDs
+//                    appended to the file $GJK2D_TEST_PIDS: one in the plugin child's process
+//                    group, one out of it (setsid)
 //   WRONG_ABI        describes itself with abi_version GJK2D_PLUGIN_ABI_VERSION + 1
 //   BAD_DESCRIPTION  an implementation with scalar 7
 //   NO_ENTRY         exports no gjk2d_plugin_describe
@@ -13,19 +16,55 @@
 #include <gjk2d/distance.hpp>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <unistd.h>
 
 namespace
 {
 
+#if defined(FORK_HANG)
+// Each child has left the group, when it does, before its PID is written.
+void leaveSleepers()
+{
+    for (const bool leave : {false, true})
+    {
+        int ready[2];
+        if (::pipe(ready) != 0)
+            return;
+        const pid_t pid = ::fork();
+        if (pid == 0)
+        {
+            if (leave)
+                ::setsid();
+            (void)!::write(ready[1], "1", 1);
+            ::sleep(300);
+            ::_exit(0);
+        }
+        char c;
+        ::close(ready[1]);
+        (void)!::read(ready[0], &c, 1);
+        ::close(ready[0]);
+        if (std::FILE* f = std::fopen(std::getenv("GJK2D_TEST_PIDS"), "a"))
+        {
+            std::fprintf(f, "%d\n", int(pid));
+            std::fclose(f);
+        }
+    }
+}
+#endif
+
 int32_t answer(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
 {
-#if defined(CRASH) || defined(HANG)
+#if defined(CRASH) || defined(HANG) || defined(FORK_HANG)
     if ((a->count + b->count) % 5 == 0)
     {
 #if defined(CRASH)
         std::raise(SIGSEGV);
 #else
+#if defined(FORK_HANG)
+        leaveSleepers();
+#endif
         for (;;)
             ::pause();
 #endif

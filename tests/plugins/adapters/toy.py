@@ -1,7 +1,7 @@
 """Test adapters of the executable-adapter protocol, version 1 (tests/plugins/CMakeLists.txt,
 docs/validate-your-gjk.md "Executable adapters (any language)"): good.py, crash.py, hang.py,
-garbage.py, version.py, bad-description.py, crash-once-more.py and pipeline.py each call main()
-with their behaviour.
+garbage.py, version.py, bad-description.py, crash-once-more.py, pipeline.py, fork-hang.py and
+setsid.py each call main() with their behaviour.
 
 The distance is brute force, exact enough for the test's cases: the smallest distance between a
 vertex of one shape and an edge of the other (right for shapes that do not overlap; the tests'
@@ -9,6 +9,10 @@ cases are separated squares), less the radii. The misbehaving adapters answer li
 but on the case whose shape B is at x = 4 (the third case of adapter_cases.json): crash exits by
 SIGSEGV, hang sleeps an hour, garbage answers a line that is no answer. pipeline answers like
 good but reads its stdin itself to see the requests the host sent ahead (serve_watching).
+fork-hang and setsid leave a process behind at each start (spawn_sleeper): a child that sleeps
+300 s, its PID appended to $TOY_STATE_DIR/sleepers; fork-hang's child stays in the adapter's
+process group and the adapter hangs on B at x = 4 as hang does, setsid's child calls setsid()
+(out of the group, out of the session) and the adapter answers like good.
 
 contract.py speaks protocol version 2 and declares a contract, as FCL without signed distance
 does: overlap `zero` (it answers -1 and no points on overlap) and an absolute tolerance of 1e-6
@@ -92,7 +96,7 @@ def answer(tok, behaviour):
     (a, ra, b, rb, bx), _ = prepare(tok, 3)
     if bx == 4 and behaviour in ("crash", "crash-once-more"):
         os.kill(os.getpid(), signal.SIGSEGV)
-    if bx == 4 and behaviour == "hang":
+    if bx == 4 and behaviour in ("hang", "fork-hang"):
         time.sleep(3600)
     if bx == 4 and behaviour == "garbage":
         return "hello there " + tok[1]
@@ -131,6 +135,31 @@ def start_number():
     with open(path, "w") as f:
         f.write(str(n))
     return n
+
+
+def spawn_sleeper(new_session):
+    """A child that outlives this process unless the host ends it: it sleeps 300 s, with
+    /dev/null for stdin and stdout (the host's pipes are this process's alone). Its PID is in
+    $TOY_STATE_DIR/sleepers before this returns, and with new_session it has left the process
+    group and the session (setsid) by then too."""
+    ready_r, ready_w = os.pipe()
+    pid = os.fork()
+    if pid == 0:
+        os.close(ready_r)
+        if new_session:
+            os.setsid()
+        null = os.open(os.devnull, os.O_RDWR)
+        os.dup2(null, 0)
+        os.dup2(null, 1)
+        os.write(ready_w, b"1")
+        os.close(ready_w)
+        time.sleep(300)
+        os._exit(0)
+    os.close(ready_w)
+    os.read(ready_r, 1)
+    os.close(ready_r)
+    with open(os.path.join(os.environ["TOY_STATE_DIR"], "sleepers"), "a") as f:
+        f.write("{}\n".format(pid))
 
 
 def wait_for_window(fd, buf):
@@ -179,6 +208,8 @@ def main(behaviour):
     if behaviour == "crash-once-more" and start_number() >= 3:
         print("toy adapter: this start fails on purpose", file=sys.stderr)
         sys.exit(3)
+    if behaviour in ("fork-hang", "setsid"):
+        spawn_sleeper(behaviour == "setsid")
     version = {"version": 3, "contract": 2, "prepared": 2, "prepared-missing": 2,
                "prepared-bad-scope": 2}.get(behaviour, 1)
     say("gjk2d-adapter {}".format(version))

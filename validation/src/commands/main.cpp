@@ -12,6 +12,8 @@
 // shared with the Python package's gjk2d.validate); main() reports every failure.
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
+#include "implementations/adapter.hpp"
+#include "implementations/containment.hpp"
 #include "report/report.hpp"
 
 #include <csignal>
@@ -44,15 +46,10 @@ void keepFreedMemory()
     mallopt(M_TRIM_THRESHOLD, 256 << 20);
 #endif
 }
-} // namespace
 
 // Every failure ends here with its documented exit code (kExitCodeTable) and one line on stderr.
-int main(int argc, char** argv)
+int runReportingFailures(int argc, char** argv)
 {
-    // A file size limit (ulimit -f) makes a write fail with EFBIG, handled as any failed write,
-    // instead of killing the program with SIGXFSZ.
-    std::signal(SIGXFSZ, SIG_IGN);
-    keepFreedMemory();
     try
     {
         return runCommandLine({argc, argv});
@@ -90,4 +87,19 @@ int main(int argc, char** argv)
                    stderr);
         return kExitInternal;
     }
+}
+} // namespace
+
+int main(int argc, char** argv)
+{
+    // A file size limit (ulimit -f) makes a write fail with EFBIG, handled as any failed write,
+    // instead of killing the program with SIGXFSZ.
+    std::signal(SIGXFSZ, SIG_IGN);
+    keepFreedMemory();
+    // No process the run starts, nor one those start, outlives gjk-validate: set here, not in the
+    // library, whose host may be the Python interpreter (implementations/containment.hpp).
+    containDescendants();
+    const int code = runReportingFailures(argc, argv);
+    closeAdapters(); // every adapter ended, then whatever the run's processes left behind
+    return code;
 }

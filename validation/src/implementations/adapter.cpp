@@ -6,6 +6,7 @@
 #include "implementations/adapter_wire.hpp"
 
 #include "implementations/adapter_process.hpp"
+#include "implementations/containment.hpp"
 #include "implementations/plugins.hpp"
 #include "implementations/prepared.hpp"
 
@@ -489,6 +490,7 @@ void closeAdapters()
 {
     for (auto& [path, s] : pool().slots)
         reap(s.proc, kAdapterCloseSeconds);
+    sweepInherited(); // what left an adapter's group (setsid) has come back to gjk-validate
 }
 
 } // namespace gjkval

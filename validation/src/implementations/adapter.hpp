@@ -107,8 +107,10 @@ struct AdapterTime
 AdapterTime adapterTime(const VariantInfo& v, int K, std::size_t m, const std::string& casesText,
                         double timeoutSeconds, const std::string& what);
 
-// Ends every adapter process: stdin closed, kAdapterCloseSeconds to exit, then SIGKILL. Called
-// when the plugins' work is done (finishPluginLogs) and, at the latest, at exit.
+// Ends every adapter process: stdin closed, kAdapterCloseSeconds to exit, then SIGKILL to its
+// process group; then the processes that left the groups (sweepInherited, implementations/
+// containment.hpp). Called when the plugins' work is done (finishPluginLogs), by gjk-validate's
+// main at its end and, at the latest, at exit.
 void closeAdapters();
 
 } // namespace gjkval

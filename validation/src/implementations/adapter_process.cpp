@@ -2,6 +2,7 @@
 // limit, ended and reaped; how it died, said in one line.
 #include "implementations/adapter_process.hpp"
 
+#include "implementations/containment.hpp"
 #include "implementations/plugins.hpp"
 
 #include <fmt/format.h>
@@ -42,11 +43,13 @@ int msLeft(Clock::time_point deadline)
 
 namespace
 {
-// In the child: stdin and stdout the pipes, stderr where the plugin's log is, signals as a fresh
-// program expects them; then the adapter itself (exit 127 when it cannot be executed).
+// In the child: a process group of its own (what the adapter starts is ended with it), stdin and
+// stdout the pipes, stderr where the plugin's log is, signals as a fresh program expects them; then
+// the adapter itself (exit 127 when it cannot be executed).
 [[noreturn]] void execAdapter(const std::string& path, const PluginImpl* plugin, int in, int out,
                               int err)
 {
+    inForkedChild();
     firstOutputRoute(plugin);
     if (::dup2(in, STDIN_FILENO) < 0 || ::dup2(out, STDOUT_FILENO) < 0 ||
         (err >= 0 && ::dup2(err, STDERR_FILENO) < 0))
@@ -87,6 +90,7 @@ Process startProcess(const std::string& path, const PluginImpl* plugin, int err)
             fmt::format("adapter {}: fork failed: {}", path, std::strerror(errno)));
     if (pid == 0)
         execAdapter(path, plugin, in[0], out[1], err);
+    ownChild(pid);
     ::close(in[0]);
     ::close(out[1]);
     ::fcntl(in[1], F_SETFL, ::fcntl(in[1], F_GETFL) | O_NONBLOCK); // a write never blocks
@@ -103,17 +107,16 @@ std::string reap(Process& p, double waitSeconds)
         return {};
     ::close(p.toAdapter);
     ::close(p.fromAdapter);
+    // Up to waitSeconds for the adapter to exit, left a zombie: its PID names its group until
+    // the group is ended, whether the adapter exited or is killed with it now.
     const auto deadline = deadlineIn(waitSeconds);
-    int status = 0;
-    pid_t r = 0;
-    while ((r = ::waitpid(p.pid, &status, WNOHANG)) == 0 && Clock::now() < deadline)
+    while (!childExited(p.pid, false) && Clock::now() < deadline)
         ::usleep(2000);
-    if (r == 0)
+    killChildGroup(p.pid);
+    disownChild(p.pid); // before its PID is freed: no signal is sent to that group again
+    int status = 0;
+    while (::waitpid(p.pid, &status, 0) < 0 && errno == EINTR)
     {
-        ::kill(p.pid, SIGKILL);
-        while (::waitpid(p.pid, &status, 0) < 0 && errno == EINTR)
-        {
-        }
     }
     p = Process{};
     return howEnded(status);

@@ -46,12 +46,15 @@ struct AdapterFailure : std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
-// Starts `path` with no arguments. `err` >= 0: the adapter's stderr goes there rather than to
-// the plugin's log (`plugin` null: gjk-validate's stderr).
+// Starts `path` with no arguments, in a process group of its own (implementations/
+// containment.hpp). `err` >= 0: the adapter's stderr goes there rather than to the plugin's log
+// (`plugin` null: gjk-validate's stderr).
 Process startProcess(const std::string& path, const PluginImpl* plugin, int err = -1);
 
-// Ends the process: its pipes closed, up to waitSeconds for it to exit, then SIGKILL. How it
-// ended ("exit code 0" for a clean exit, "signal 11 (Segmentation fault)").
+// Ends the process: its pipes closed, up to waitSeconds for it to exit, then SIGKILL to its
+// process group (the adapter if it still runs, and whatever it started there), whose leader is
+// then reaped. How it ended ("exit code 0" for a clean exit, "signal 11 (Segmentation fault)";
+// "signal 9 (Killed)" when it was killed).
 std::string reap(Process& p, double waitSeconds);
 
 // While one lives, SIGPIPE is blocked in this thread (a write to a gone adapter is EPIPE, not

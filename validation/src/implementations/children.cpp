@@ -7,6 +7,7 @@
 #include "common/output.hpp" // writeAllBytes
 #include "implementations/adapter.hpp"
 #include "implementations/adapter_process.hpp" // SigpipeBlocked
+#include "implementations/containment.hpp"
 #include "implementations/in_process.hpp"
 #include "implementations/prepared.hpp"
 
@@ -160,6 +161,7 @@ PluginChild PluginChild::serveOrStart(const PluginImpl* plugin, bool commands,
             fmt::format("plugin child: fork failed: {}", std::strerror(errno)));
     if (pid == 0)
     {
+        inForkedChild(); // what a plugin starts is ended with its child
         ::close(fds[0]);
         if (commands)
             ::close(cmds[1]);
@@ -176,6 +178,7 @@ PluginChild PluginChild::serveOrStart(const PluginImpl* plugin, bool commands,
         std::fflush(stderr);
         ::_exit(0);
     }
+    ownChild(pid);
     ::close(fds[1]);
     PluginChild c;
     c.pid_ = pid;
@@ -200,6 +203,10 @@ std::string PluginChild::finish()
     }
     cmd_ = -1;
     ::close(fd_);
+    // Exited, not yet reaped (its PID names its group): what it left in its group goes with it.
+    childExited(pid_, true);
+    killChildGroup(pid_);
+    disownChild(pid_); // before its PID is freed: no signal is sent to that group again
     int status = 0;
     while (::waitpid(pid_t(pid_), &status, 0) < 0 && errno == EINTR)
     {
@@ -213,7 +220,8 @@ std::string PluginChild::finish()
 
 void PluginChild::kill()
 {
-    ::kill(pid_t(pid_), SIGKILL);
+    if (!killChildGroup(pid_)) // the child and whatever it started in its group
+        throw std::logic_error(fmt::format("plugin child {} killed when not running", pid_));
     finish();
 }
 

@@ -210,8 +210,9 @@ std::vector<PluginLog> finishPluginLogs();
 // A child process for plugin calls, fed by fork: it sees the parent's memory (the cases) as it
 // was, runs `work` writing its answers to the pipe `fd`, and leaves with _exit (no atexit
 // handlers). Crash signals are at their defaults in it, and its stdout and stderr go where
-// setPluginLogDirectory() says (routePluginOutput). The campaign forks between its parallel
-// phases, when no worker thread runs.
+// setPluginLogDirectory() says (routePluginOutput). It leads a process group of its own, ended
+// with it (implementations/containment.hpp). The campaign forks between its parallel phases, when
+// no worker thread runs.
 class PluginChild
 {
   public:
@@ -228,9 +229,10 @@ class PluginChild
     long read(void* buf, std::size_t n, double timeoutSeconds) const;
     int answerFd() const { return fd_; }   // what the child writes
     int commandFd() const { return cmd_; } // serve(): what it reads
-    // How the child ended, after its pipe closed: "" for a clean exit 0.
+    // How the child ended, after its pipe closed: "" for a clean exit 0. Whatever it left in its
+    // process group is killed once it has exited.
     std::string finish();
-    void kill(); // SIGKILL, then finish()
+    void kill(); // SIGKILL to its process group, then finish()
 
   private:
     static PluginChild serveOrStart(const PluginImpl* plugin, bool commands,
