@@ -8,6 +8,7 @@
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -467,7 +468,81 @@ TEST_CASE("comparison variants' failures are counted and shown, not judged", "[c
     CHECK(r["variants"][0]["worst_contract_violation"].is_null());
     const std::string md = renderMarkdown(r);
     CHECK_THAT(md, Catch::Contains("(not judged)") && Catch::Contains("| comparison |"));
-    CHECK_THAT(terminalSummary(r), Catch::Contains("fails (not judged)"));
+    // The terminal: the comparison variant's verdict on its line; its families only with --verbose.
+    CHECK_THAT(terminalSummary(r),
+               Catch::Contains("fails\n") && !Catch::Contains("fails (not judged)"));
+    CHECK_THAT(terminalSummary(r, true), Catch::Contains("fails (not judged)"));
+}
+
+namespace
+{
+std::vector<std::string> linesOf(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);)
+        lines.push_back(l);
+    return lines;
+}
+
+// The lines of `lines` whose first word is `word`.
+std::size_t startingWith(const std::vector<std::string>& lines, const std::string& word)
+{
+    return std::count_if(lines.begin(), lines.end(),
+                         [&](const std::string& l) { return l.rfind(word + " ", 0) == 0; });
+}
+} // namespace
+
+TEST_CASE("the terminal summary reads like the report page's first screen", "[campaign][report]")
+{
+    // Issue 50: the verdict first, then a line per variant; per family only what failed the run (a
+    // judged variant's failures), every family x variant that failed with --verbose.
+    static const VariantInfo judgedClosestPoint{
+        "judged-closest-point", Scalar::Double,
+        gjk::Options{.direction = gjk::SearchDirection::ClosestPoint}, "test", true};
+    CampaignConfig c = smallConfig(2);
+    c.families = {"hard/near-parallel"};
+    c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/regressions.json"};
+    c.variants = {findVariant("double"), findVariant("double-closest-point"), &judgedClosestPoint};
+    const Run camp = run(c);
+    REQUIRE(camp.exitCode == kExitFail);
+    const Json& r = camp.report;
+    const auto lines = linesOf(terminalSummary(r));
+    REQUIRE(lines.size() > 2);
+    CHECK(lines[0] == "result: " + resultText(r));
+    CHECK_THAT(lines[0], Catch::StartsWith("result: FAIL (exit code 1): "));
+    CHECK_THAT(lines[1], Catch::StartsWith("ran ") && Catch::Contains("2 families") &&
+                             Catch::Contains("3 variants: 2 judged, 1 comparison"));
+    for (const char* name : {"double", "double-closest-point", "judged-closest-point"})
+    {
+        INFO(name);
+        CHECK(startingWith(lines, name) == 1); // its line of the variant table
+    }
+    for (const auto& l : lines)
+        if (startingWith({l}, "double") || startingWith({l}, "double-closest-point") ||
+            startingWith({l}, "judged-closest-point"))
+            CHECK(l.size() <= 100);
+    // Per family: the judged variant's failures, never the comparison variant's.
+    std::size_t judgedRows = 0, failingFamilies = 0;
+    for (const auto& l : lines)
+    {
+        CHECK_FALSE((l.rfind("  ", 0) == 0 && l.find("double-closest-point") != std::string::npos));
+        judgedRows += l.rfind("  ", 0) == 0 && l.find("judged-closest-point") != std::string::npos;
+    }
+    for (const auto& f : r["families"])
+        failingFamilies += f["variants"]["judged-closest-point"]["failures"].get<int>() > 0;
+    CHECK(failingFamilies >= 1);
+    CHECK(judgedRows == failingFamilies);
+    // --verbose: every family x variant, and the comparison variant's failing families too.
+    const auto verbose = linesOf(terminalSummary(r, true));
+    CHECK(verbose[0] == lines[0]);
+    std::size_t comparisonRows = 0;
+    for (const auto& l : verbose)
+        comparisonRows += l.rfind("  ", 0) == 0 &&
+                          l.find("double-closest-point") != std::string::npos &&
+                          l.find("fails (not judged)") != std::string::npos;
+    CHECK(comparisonRows >= 1);
+    CHECK(verbose.size() > lines.size() + 3 * r["families"].size());
 }
 
 TEST_CASE("the talk's cases: float with the closest-point direction fails, the reference passes",
