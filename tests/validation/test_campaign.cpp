@@ -7,6 +7,7 @@
 
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -543,6 +544,45 @@ TEST_CASE("the terminal summary reads like the report page's first screen", "[ca
                           l.find("fails (not judged)") != std::string::npos;
     CHECK(comparisonRows >= 1);
     CHECK(verbose.size() > lines.size() + 3 * r["families"].size());
+}
+
+TEST_CASE("what a variant's ns/query includes, in report.md and on the terminal",
+          "[campaign][report]")
+{
+    // Issue 50: variants[].timing and prepare_ns_per_shape. gjk2d's own variants prepare nothing,
+    // in one row; a variant that prepares its shapes has its preparation figure, the families'
+    // weighted by their cases; an adapter's own timing and a figure with shape set-up are marked.
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:200", "hard/talk-segment"};
+    c.variants = parseVariants("double,float,double-closest-point");
+    Json r = run(c).report;
+    CHECK_THAT(renderMarkdown(r),
+               Catch::Contains("| gjk2d's own (3 variants) | no preparation: the "
+                               "plain query takes the points as given | - |"));
+    // Made a prepared peer timed by its adapter (the names of a real one are tested with the
+    // plugins): 100 ns/shape on 200 cases and 400 on 16 weigh to (100 * 200 + 400 * 16) / 216.
+    Json& v = r["variants"][2];
+    v["plugin"] = {{"path", "/x.so"}};
+    v["timing"] = {
+        {"preparation", "shape"}, {"includes", "the query alone"}, {"timed_by", "adapter"}};
+    REQUIRE(r["families"].size() == 2);
+    r["families"][0]["variants"]["double-closest-point"]["prepare_ns_per_shape"] = 100.0;
+    r["families"][1]["variants"]["double-closest-point"]["prepare_ns_per_shape"] = 400.0;
+    const double cases0 =
+                     r["families"][0]["variants"]["double-closest-point"]["cases"].get<double>(),
+                 cases1 =
+                     r["families"][1]["variants"]["double-closest-point"]["cases"].get<double>();
+    const std::string md = renderMarkdown(r);
+    CHECK_THAT(md, Catch::Contains("| gjk2d's own (2 variants) |"));
+    CHECK_THAT(md, Catch::Contains(fmt::format(
+                       "| double-closest-point | the query alone; timed by the adapter | {:.1f} |",
+                       (100 * cases0 + 400 * cases1) / (cases0 + cases1))));
+    v["timing"]["preparation"] = "in-call";
+    for (const auto& l : linesOf(terminalSummary(r)))
+        if (startingWith({l}, "double-closest-point"))
+            CHECK_THAT(l, Catch::Matches(".* [0-9.]+a\\+  [a-z].*"));
+        else if (startingWith({l}, "double"))
+            CHECK_THAT(l, Catch::Matches(".* [0-9.]+ {4}pass"));
 }
 
 TEST_CASE("the talk's cases: float with the closest-point direction fails, the reference passes",

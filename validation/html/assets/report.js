@@ -628,9 +628,11 @@
     var formulas = {};
     vars.forEach(function (v) { if (v && v.bound && has(v.bound.formula)) formulas[v.bound.formula] = (formulas[v.bound.formula] || 0) + 1; });
     var commonFormula = Object.keys(formulas).sort(function (a, b) { return formulas[b] - formulas[a]; })[0] || null;
+    var hasTiming = vars.some(function (v) { return timingText(v, report); });
     if (vars.length) {
       vt = h('table', {class: 'data compact'},
-        h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'))),
+        h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'),
+          hasTiming ? h('th', {}, 'ns / query includes') : null)),
         h('tbody', {}, vars.map(function (v) {
           v = v || {};
           // Only what differs from the baseline variant's options: the table stays one line a row.
@@ -646,12 +648,30 @@
             h('td', {class: 'variant-cell'}, variantDot(String(v.name)), String(v.name),
               report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null, comparisonTag(String(v.name)),
               v.warm === true ? h('span', {class: 'tag'}, 'warm start') : null),
-            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, pluginFile(v), opts), h('td', {class: 'small'}, bound));
+            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, pluginFile(v), opts), h('td', {class: 'small'}, bound),
+            hasTiming ? h('td', {class: 'small timing-cell', 'data-timing-of': String(v.name)}, timingText(v, report) || '—') : null);
         })));
     }
     append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), h('div', {class: 'table-wrap'}, vt),
       commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null) : null)]);
     return sec;
+  }
+
+  // What a variant's ns/query includes (report.variants[].timing) and, where it has a preparation
+  // step, the ns to prepare one shape (families[].variants[].prepare_ns_per_shape, weighted by the
+  // families' cases); null for a report written before the field. gjk2d's own variants prepare
+  // nothing. The same words as report.md's timing table (validation/src/report/report.cpp).
+  function timingText(v, report) {
+    var t = v && v.timing && typeof v.timing === 'object' ? v.timing : null;
+    if (!t) return null;
+    if (t.preparation === 'none') return 'no preparation: the plain query takes the points as given';
+    var sum = 0, cases = 0;
+    families(report).forEach(function (f) {
+      var st = familyVariants(f)[v.name];
+      if (st && isNum(st.prepare_ns_per_shape) && num(st.cases) > 0) { sum += num(st.prepare_ns_per_shape) * num(st.cases); cases += num(st.cases); }
+    });
+    return [has(t.includes) ? String(t.includes) : null, t.timed_by === 'adapter' ? 'timed by the adapter' : null,
+      cases > 0 ? fmt(sum / cases) + ' ns/shape to prepare' : null].filter(Boolean).join('; ');
   }
 
   // The file a plugin's variant came from (report.variants[].plugin.path), for the variants table.

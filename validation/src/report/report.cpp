@@ -174,10 +174,10 @@ double numberOf(const Json& v)
     return std::nan("");
 }
 
-// One variant over the families, as the terminal's variant table gives it: counts summed; the
-// largest error / bound (or, a variant without a bound, normalised error); ns/query and ns/shape
-// to prepare as the timed families' figures weighted by their cases (NaN: not measured in any
-// family).
+// One variant over the families, as the terminal's variant table and report.md's timing table
+// give it: counts summed; the largest error / bound (or, a variant without a bound, normalised
+// error); ns/query and ns/shape to prepare as the timed families' figures weighted by their cases
+// (NaN: not measured in any family).
 struct VariantTotals
 {
     std::uint64_t cases = 0, failures = 0, misclassified = 0, violations = 0, outsideBound = 0;
@@ -218,6 +218,19 @@ VariantTotals variantTotals(const Json& r, const std::string& name)
     if (prepare[1] > 0)
         t.prepareNsPerShape = prepare[0] / prepare[1];
     return t;
+}
+
+// What a variant's ns/query includes (variants[].timing, docs/report-schema.md), in words; "" for a
+// report written before the field. gjk2d's own variants have nothing to prepare.
+std::string timingWords(const Json& v)
+{
+    if (!v.contains("timing") || !v["timing"].is_object())
+        return "";
+    const Json& t = v["timing"];
+    if (t.value("preparation", "") == "none")
+        return "no preparation: the plain query takes the points as given";
+    return t.value("includes", "") +
+           (t.value("timed_by", "") == "adapter" ? "; timed by the adapter" : "");
 }
 
 } // namespace
@@ -313,6 +326,43 @@ std::string contractsMarkdown(const Json& r)
     return s.empty() ? s : "\n### Contracts\n\n" + s;
 }
 
+// What each variant's ns/query includes and who timed it (variants[].timing), and its preparation
+// figure where it has one; gjk2d's own variants, which prepare nothing, in one row. Nothing for a
+// report written before the field.
+std::string timingMarkdown(const Json& r)
+{
+    std::string rows;
+    std::size_t own = 0;
+    for (const auto& v : r["variants"])
+    {
+        const std::string words = timingWords(v);
+        if (words.empty())
+            continue;
+        if (v["timing"].value("preparation", "") == "none" && !v.contains("plugin"))
+        {
+            ++own;
+            continue;
+        }
+        const double prepare = variantTotals(r, v["name"].get<std::string>()).prepareNsPerShape;
+        rows += fmt::format("| {} | {} | {} |\n", v["name"].get<std::string>(), mdEscape(words),
+                            std::isnan(prepare) ? "-" : fmt::format("{:.1f}", prepare));
+    }
+    if (own > 0)
+        rows =
+            fmt::format("| gjk2d's own ({} variants) | no preparation: the plain query takes the "
+                        "points as given | - |\n",
+                        own) +
+            rows;
+    if (rows.empty())
+        return rows;
+    return "\n### Timing\n\n| variant | ns/query includes | ns/shape to prepare "
+           "|\n|---|---|---|\n" +
+           rows +
+           "\nns/shape to prepare: preparing one shape, timed apart from the query (the families' "
+           "figures weighted by their cases; - when there is nothing to prepare or it was not "
+           "timed). ns/query per family is in the families' tables.\n";
+}
+
 // The variants: judged or comparison, type, options (or the plugin's path) and the bound.
 std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& judged)
 {
@@ -357,7 +407,7 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
         "within gjk2d's bound. `false ovl`, `false sep`, `undecid.` and `invalid` are gjk2d's own "
         "rules applied to every answer (for an implementation with a contract of its own, a "
         "measure, not its verdict).\n";
-    return s + contractsMarkdown(r);
+    return s + contractsMarkdown(r) + timingMarkdown(r);
 }
 
 // One row of a family's table: one variant's counts, errors, iterations and speed.
