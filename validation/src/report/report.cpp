@@ -878,14 +878,16 @@ std::string terminalSummary(const Json& r, bool verbose)
     std::size_t pairs = 0;
     const std::string problems = problemLines(r, !verbose, pairs);
     if (!problems.empty())
-        s += verbose ? fmt::format("failed or misclassified (false overlap or separation), or, for "
-                                   "an implementation with a contract of its own, breaks its "
-                                   "contract or is outside gjk2d's bound, family x variant ({} "
-                                   "pairs in all):\n{}",
-                                   pairs, problems)
-                     : "what failed the run, family x variant (--verbose: every family x variant "
-                       "that failed or broke its contract):\n" +
-                           problems;
+        s +=
+            wrap(verbose ? fmt::format("failed or misclassified (false overlap or separation), or, "
+                                       "for an implementation with a contract of its own, breaks "
+                                       "its contract or is outside gjk2d's bound, family x "
+                                       "variant ({} pairs in all):",
+                                       pairs)
+                         : "what failed the run, per family (--verbose: every family x variant "
+                           "that failed):",
+                 "", 100) +
+            problems;
     if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
         s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
                          u(r["context"]["cases_rejected"]));
