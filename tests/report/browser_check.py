@@ -367,7 +367,9 @@ VIEWS_PROBE = """(function() {
     });
   });
   out.timing = {};
-  document.querySelectorAll('#context td.timing-cell').forEach(function (td) { out.timing[td.getAttribute('data-timing-of')] = td.textContent; });
+  document.querySelectorAll('#context li.timing-note').forEach(function (li) {
+    li.getAttribute('data-timing-of').split('\\n').forEach(function (n) { out.timing[n] = li.textContent; });
+  });
   var ctx = document.getElementById('context');
   out.variantsText = ctx ? ctx.textContent : '';
   var counts = document.getElementById('counts');
@@ -626,9 +628,9 @@ def check_data_views(views, report):
                 [t.get('includes')] + (['timed by the adapter'] if t.get('timed_by') == 'adapter' else []) +
                 (['ns/shape to prepare'] if prepared else []))
         if text is None or any(w not in text for w in want):
-            fails.append(f'the variants table does not say what ns/query of {v.get("name")!r} includes ({want}): {text!r}')
+            fails.append(f'the context does not say what ns/query of {v.get("name")!r} includes ({want}): {text!r}')
         elif not prepared and 'ns/shape to prepare' in text:
-            fails.append(f'the variants table gives {v.get("name")!r} a preparation figure it does not have: {text!r}')
+            fails.append(f'the context gives {v.get("name")!r} a preparation figure it does not have: {text!r}')
     total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
     if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
         fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')

@@ -628,11 +628,16 @@
     var formulas = {};
     vars.forEach(function (v) { if (v && v.bound && has(v.bound.formula)) formulas[v.bound.formula] = (formulas[v.bound.formula] || 0) + 1; });
     var commonFormula = Object.keys(formulas).sort(function (a, b) { return formulas[b] - formulas[a]; })[0] || null;
-    var hasTiming = vars.some(function (v) { return timingText(v, report); });
+    // What ns/query includes, under the table: the variants with the same words on one line.
+    var timing = [];
+    vars.forEach(function (v) {
+      var text = timingText(v, report), same = timing.filter(function (t) { return t.text === text; })[0];
+      if (!text) return;
+      if (same) same.names.push(String(v.name)); else timing.push({text: text, names: [String(v.name)]});
+    });
     if (vars.length) {
       vt = h('table', {class: 'data compact'},
-        h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'),
-          hasTiming ? h('th', {}, 'ns / query includes') : null)),
+        h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'))),
         h('tbody', {}, vars.map(function (v) {
           v = v || {};
           // Only what differs from the baseline variant's options: the table stays one line a row.
@@ -648,12 +653,14 @@
             h('td', {class: 'variant-cell'}, variantDot(String(v.name)), String(v.name),
               report.baseline_variant === v.name ? h('span', {class: 'tag'}, 'baseline') : null, comparisonTag(String(v.name)),
               v.warm === true ? h('span', {class: 'tag'}, 'warm start') : null),
-            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, pluginFile(v), opts), h('td', {class: 'small'}, bound),
-            hasTiming ? h('td', {class: 'small timing-cell', 'data-timing-of': String(v.name)}, timingText(v, report) || '—') : null);
+            h('td', {}, has(v.type) ? String(v.type) : '—'), h('td', {class: 'small'}, pluginFile(v), opts), h('td', {class: 'small'}, bound));
         })));
     }
     append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), h('div', {class: 'table-wrap'}, vt),
-      commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null) : null)]);
+      commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null,
+      timing.length ? h('div', {class: 'small', id: 'timing-notes'}, 'What ns / query includes:', h('ul', {class: 'plain'}, timing.map(function (t) {
+        return h('li', {class: 'timing-note', 'data-timing-of': t.names.join('\n')}, h('b', {}, t.names.join(', ')), ': ' + t.text);
+      }))) : null) : null)]);
     return sec;
   }
 
