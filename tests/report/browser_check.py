@@ -366,6 +366,10 @@ VIEWS_PROBE = """(function() {
         cls: tr.lastElementChild.textContent, witnessBound: wb ? wb.textContent : null});
     });
   });
+  out.timing = {};
+  document.querySelectorAll('#context li.timing-note').forEach(function (li) {
+    li.getAttribute('data-timing-of').split('\\n').forEach(function (n) { out.timing[n] = li.textContent; });
+  });
   var ctx = document.getElementById('context');
   out.variantsText = ctx ? ctx.textContent : '';
   var counts = document.getElementById('counts');
@@ -613,6 +617,20 @@ def check_data_views(views, report):
         want = f"Witness checks{points:,} points measured, {wexact:,} by the exact route"
         if want not in views['variantsText']:
             fails.append(f'the context section does not say {want!r}')
+    for v in report.get('variants') or []:  # what ns/query includes, and the preparation figure (issue 50)
+        t = v.get('timing') if isinstance(v, dict) else None
+        if not isinstance(t, dict):
+            continue
+        checked['timing'] = checked.get('timing', 0) + 1
+        text = views['timing'].get(str(v.get('name')))
+        prepared = any(num((f.get('variants') or {}).get(v['name'], {}).get('prepare_ns_per_shape')) > 0 for f in fams.values())
+        want = (['no preparation: the plain query takes the points as given'] if t.get('preparation') == 'none' else
+                [t.get('includes')] + (['timed by the adapter'] if t.get('timed_by') == 'adapter' else []) +
+                (['ns/shape to prepare'] if prepared else []))
+        if text is None or any(w not in text for w in want):
+            fails.append(f'the context does not say what ns/query of {v.get("name")!r} includes ({want}): {text!r}')
+        elif not prepared and 'ns/shape to prepare' in text:
+            fails.append(f'the context gives {v.get("name")!r} a preparation figure it does not have: {text!r}')
     total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
     if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
         fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')

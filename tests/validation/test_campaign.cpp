@@ -7,7 +7,9 @@
 
 #include "../within.hpp" // within(x, m): an absolute margin and nothing else
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -467,7 +469,120 @@ TEST_CASE("comparison variants' failures are counted and shown, not judged", "[c
     CHECK(r["variants"][0]["worst_contract_violation"].is_null());
     const std::string md = renderMarkdown(r);
     CHECK_THAT(md, Catch::Contains("(not judged)") && Catch::Contains("| comparison |"));
-    CHECK_THAT(terminalSummary(r), Catch::Contains("fails (not judged)"));
+    // The terminal: the comparison variant's verdict on its line; its families only with --verbose.
+    CHECK_THAT(terminalSummary(r),
+               Catch::Contains("fails\n") && !Catch::Contains("fails (not judged)"));
+    CHECK_THAT(terminalSummary(r, true), Catch::Contains("fails (not judged)"));
+}
+
+namespace
+{
+std::vector<std::string> linesOf(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);)
+        lines.push_back(l);
+    return lines;
+}
+
+// The lines of `lines` whose first word is `word`.
+std::size_t startingWith(const std::vector<std::string>& lines, const std::string& word)
+{
+    return std::count_if(lines.begin(), lines.end(),
+                         [&](const std::string& l) { return l.rfind(word + " ", 0) == 0; });
+}
+} // namespace
+
+TEST_CASE("the terminal summary reads like the report page's first screen", "[campaign][report]")
+{
+    // Issue 50: the verdict first, then a line per variant; per family only what failed the run (a
+    // judged variant's failures), every family x variant that failed with --verbose.
+    static const VariantInfo judgedClosestPoint{
+        "judged-closest-point", Scalar::Double,
+        gjk::Options{.direction = gjk::SearchDirection::ClosestPoint}, "test", true};
+    CampaignConfig c = smallConfig(2);
+    c.families = {"hard/near-parallel"};
+    c.caseFiles = {std::string(GJK2D_SOURCE_DIR) + "/validation/cases/regressions.json"};
+    c.variants = {findVariant("double"), findVariant("double-closest-point"), &judgedClosestPoint};
+    const Run camp = run(c);
+    REQUIRE(camp.exitCode == kExitFail);
+    const Json& r = camp.report;
+    const auto lines = linesOf(terminalSummary(r));
+    REQUIRE(lines.size() > 2);
+    CHECK(lines[0] == "result: " + resultText(r));
+    CHECK_THAT(lines[0], Catch::StartsWith("result: FAIL (exit code 1): "));
+    CHECK_THAT(lines[1], Catch::StartsWith("ran ") && Catch::Contains("2 families") &&
+                             Catch::Contains("3 variants: 2 judged, 1 comparison"));
+    for (const char* name : {"double", "double-closest-point", "judged-closest-point"})
+    {
+        INFO(name);
+        CHECK(startingWith(lines, name) == 1); // its line of the variant table
+    }
+    for (const auto& l : lines)
+        if (startingWith({l}, "double") || startingWith({l}, "double-closest-point") ||
+            startingWith({l}, "judged-closest-point"))
+            CHECK(l.size() <= 100);
+    // Per family: the judged variant's failures, never the comparison variant's.
+    std::size_t judgedRows = 0, failingFamilies = 0;
+    for (const auto& l : lines)
+    {
+        CHECK_FALSE((l.rfind("  ", 0) == 0 && l.find("double-closest-point") != std::string::npos));
+        judgedRows += l.rfind("  ", 0) == 0 && l.find("judged-closest-point") != std::string::npos;
+    }
+    for (const auto& f : r["families"])
+        failingFamilies += f["variants"]["judged-closest-point"]["failures"].get<int>() > 0;
+    CHECK(failingFamilies >= 1);
+    CHECK(judgedRows == failingFamilies);
+    // --verbose: every family x variant, and the comparison variant's failing families too.
+    const auto verbose = linesOf(terminalSummary(r, true));
+    CHECK(verbose[0] == lines[0]);
+    std::size_t comparisonRows = 0;
+    for (const auto& l : verbose)
+        comparisonRows += l.rfind("  ", 0) == 0 &&
+                          l.find("double-closest-point") != std::string::npos &&
+                          l.find("fails (not judged)") != std::string::npos;
+    CHECK(comparisonRows >= 1);
+    CHECK(verbose.size() > lines.size() + 3 * r["families"].size());
+}
+
+TEST_CASE("what a variant's ns/query includes, in report.md and on the terminal",
+          "[campaign][report]")
+{
+    // Issue 50: variants[].timing and prepare_ns_per_shape. gjk2d's own variants prepare nothing,
+    // in one row; a variant that prepares its shapes has its preparation figure, the families'
+    // weighted by their cases; an adapter's own timing and a figure with shape set-up are marked.
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:200", "hard/talk-segment"};
+    c.variants = parseVariants("double,float,double-closest-point");
+    Json r = run(c).report;
+    CHECK_THAT(renderMarkdown(r),
+               Catch::Contains("| gjk2d's own (3 variants) | no preparation: the "
+                               "plain query takes the points as given | - |"));
+    // Made a prepared peer timed by its adapter (the names of a real one are tested with the
+    // plugins): 100 ns/shape on 200 cases and 400 on 16 weigh to (100 * 200 + 400 * 16) / 216.
+    Json& v = r["variants"][2];
+    v["plugin"] = {{"path", "/x.so"}};
+    v["timing"] = {
+        {"preparation", "shape"}, {"includes", "the query alone"}, {"timed_by", "adapter"}};
+    REQUIRE(r["families"].size() == 2);
+    r["families"][0]["variants"]["double-closest-point"]["prepare_ns_per_shape"] = 100.0;
+    r["families"][1]["variants"]["double-closest-point"]["prepare_ns_per_shape"] = 400.0;
+    const double cases0 =
+                     r["families"][0]["variants"]["double-closest-point"]["cases"].get<double>(),
+                 cases1 =
+                     r["families"][1]["variants"]["double-closest-point"]["cases"].get<double>();
+    const std::string md = renderMarkdown(r);
+    CHECK_THAT(md, Catch::Contains("| gjk2d's own (2 variants) |"));
+    CHECK_THAT(md, Catch::Contains(fmt::format(
+                       "| double-closest-point | the query alone; timed by the adapter | {:.1f} |",
+                       (100 * cases0 + 400 * cases1) / (cases0 + cases1))));
+    v["timing"]["preparation"] = "in-call";
+    for (const auto& l : linesOf(terminalSummary(r)))
+        if (startingWith({l}, "double-closest-point"))
+            CHECK_THAT(l, Catch::Matches(".* [0-9.]+a\\+  [a-z].*"));
+        else if (startingWith({l}, "double"))
+            CHECK_THAT(l, Catch::Matches(".* [0-9.]+ {4}pass"));
 }
 
 TEST_CASE("the talk's cases: float with the closest-point direction fails, the reference passes",

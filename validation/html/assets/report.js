@@ -628,6 +628,13 @@
     var formulas = {};
     vars.forEach(function (v) { if (v && v.bound && has(v.bound.formula)) formulas[v.bound.formula] = (formulas[v.bound.formula] || 0) + 1; });
     var commonFormula = Object.keys(formulas).sort(function (a, b) { return formulas[b] - formulas[a]; })[0] || null;
+    // What ns/query includes, under the table: the variants with the same words on one line.
+    var timing = [];
+    vars.forEach(function (v) {
+      var text = timingText(v, report), same = timing.filter(function (t) { return t.text === text; })[0];
+      if (!text) return;
+      if (same) same.names.push(String(v.name)); else timing.push({text: text, names: [String(v.name)]});
+    });
     if (vars.length) {
       vt = h('table', {class: 'data compact'},
         h('thead', {}, h('tr', {}, h('th', {}, 'Variant'), h('th', {}, 'Type'), h('th', {}, 'Options'), h('th', {}, 'Error bound'))),
@@ -650,8 +657,28 @@
         })));
     }
     append(sec, [h('div', {class: 'context-grid'}, grid, vt ? h('div', {}, h('h3', {}, 'Variants'), h('div', {class: 'table-wrap'}, vt),
-      commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null) : null)]);
+      commonFormula ? h('p', {class: 'small'}, 'Error bound (unless stated in the row): ' + commonFormula) : null,
+      timing.length ? h('div', {class: 'small', id: 'timing-notes'}, 'What ns / query includes:', h('ul', {class: 'plain'}, timing.map(function (t) {
+        return h('li', {class: 'timing-note', 'data-timing-of': t.names.join('\n')}, h('b', {}, t.names.join(', ')), ': ' + t.text);
+      }))) : null) : null)]);
     return sec;
+  }
+
+  // What a variant's ns/query includes (report.variants[].timing) and, where it has a preparation
+  // step, the ns to prepare one shape (families[].variants[].prepare_ns_per_shape, weighted by the
+  // families' cases); null for a report written before the field. gjk2d's own variants prepare
+  // nothing. The same words as report.md's timing table (validation/src/report/report.cpp).
+  function timingText(v, report) {
+    var t = v && v.timing && typeof v.timing === 'object' ? v.timing : null;
+    if (!t) return null;
+    if (t.preparation === 'none') return 'no preparation: the plain query takes the points as given';
+    var sum = 0, cases = 0;
+    families(report).forEach(function (f) {
+      var st = familyVariants(f)[v.name];
+      if (st && isNum(st.prepare_ns_per_shape) && num(st.cases) > 0) { sum += num(st.prepare_ns_per_shape) * num(st.cases); cases += num(st.cases); }
+    });
+    return [has(t.includes) ? String(t.includes) : null, t.timed_by === 'adapter' ? 'timed by the adapter' : null,
+      cases > 0 ? fmt(sum / cases) + ' ns/shape to prepare' : null].filter(Boolean).join('; ');
   }
 
   // The file a plugin's variant came from (report.variants[].plugin.path), for the variants table.

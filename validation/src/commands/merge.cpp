@@ -90,7 +90,9 @@ Subcommand addMerge(CLI::App& app, const CommandLine& line)
     m->add_option("--out", o->outDir,
                   "output directory, replaced as a whole (it may hold only a previous report)")
         ->capture_default_str();
-    m->add_flag("--verbose", o->verbose, "also print every family x variant to the terminal");
+    m->add_flag("--verbose", o->verbose,
+                "also print every family x variant to the terminal, and every one that failed or "
+                "broke its contract");
     return {m, [o, line] { return mergeCommand(*o, line); }};
 }
 

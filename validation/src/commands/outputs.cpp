@@ -51,9 +51,7 @@ void writeReportAndSummary(const CampaignReport& result, StagedDir& out, bool ve
     const std::vector<PluginLog> logs = finishPluginLogs(); // into the directory before its commit
     const std::string page = writeReportPages(result, out);
     printPluginLogs(logs, out.dir());
-    if (verbose)
-        std::fputs(terminalTable(result.report).c_str(), stdout);
-    std::fputs(terminalSummary(result.report).c_str(), stdout);
+    std::fputs(terminalSummary(result.report, verbose).c_str(), stdout);
     std::printf("report: %s\n", page.c_str());
     flushStdout();
 }

@@ -423,8 +423,9 @@ Subcommand addRun(CLI::App& app, const CommandLine& line)
     addEvaluationOptions(run, *o);
     addPartOptions(run, *o);
     run->add_flag("--verbose", o->verbose,
-                  "also print every family x variant to the terminal (the summary lists only "
-                  "those that failed or misclassified; report.md has the full table)");
+                  "also print every family x variant to the terminal, and every one that failed "
+                  "or broke its contract (the summary has a line per variant and, per family, "
+                  "only the judged variants' failures; report.md has the full table)");
     addPluginOptions(*run, o->plugins, ShippedPlugins::JoinDefaultList);
     run->add_flag("--no-progress", o->noProgress,
                   "no progress bar (it is shown only when stderr is a terminal)");

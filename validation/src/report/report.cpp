@@ -9,8 +9,10 @@
 #include <fmt/ranges.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace gjkval
 {
@@ -30,6 +32,31 @@ std::string g(const Json& v, const char* spec = "{:.3g}")
 std::string u(const Json& v)
 {
     return v.is_number() ? std::to_string(v.get<std::uint64_t>()) : g(v);
+}
+
+std::uint64_t count(const Json& st, const char* key)
+{
+    return st.contains(key) && st[key].is_number() ? st[key].get<std::uint64_t>() : 0;
+}
+
+// Words of `text` in lines of at most `width` characters, each line starting with `indent`.
+std::string wrap(const std::string& text, const std::string& indent, std::size_t width)
+{
+    std::string out, line = indent;
+    std::size_t i = 0;
+    while (i < text.size())
+    {
+        const std::size_t end = std::min(text.find(' ', i), text.size());
+        const std::string word = text.substr(i, end - i);
+        if (line.size() > indent.size() && line.size() + 1 + word.size() > width)
+        {
+            out += line + "\n";
+            line = indent;
+        }
+        line += (line.size() > indent.size() ? " " : "") + word;
+        i = end + 1;
+    }
+    return out + line + "\n";
 }
 
 // Variant name -> judged (a report without the field: every variant judged).
@@ -136,6 +163,76 @@ std::string invalidCounts(const Json& st)
     return reasons.empty() ? out : out + " (" + reasons + ")";
 }
 
+// A number of report.json, a non-finite one written as its string ("inf", "-inf", "nan"); NaN for
+// null or anything else.
+double numberOf(const Json& v)
+{
+    if (v.is_number())
+        return v.get<double>();
+    if (v.is_string() && (v == "inf" || v == "-inf"))
+        return v == "inf" ? HUGE_VAL : -HUGE_VAL;
+    return std::nan("");
+}
+
+// One variant over the families, as the terminal's variant table and report.md's timing table
+// give it: counts summed; the largest error / bound (or, a variant without a bound, normalised
+// error); ns/query and ns/shape to prepare as the timed families' figures weighted by their cases
+// (NaN: not measured in any family).
+struct VariantTotals
+{
+    std::uint64_t cases = 0, failures = 0, misclassified = 0, violations = 0, outsideBound = 0;
+    double worstBound = std::nan(""), worstNorm = std::nan("");
+    double nsPerQuery = std::nan(""), prepareNsPerShape = std::nan("");
+};
+
+VariantTotals variantTotals(const Json& r, const std::string& name)
+{
+    VariantTotals t;
+    double ns[2] = {0, 0}, prepare[2] = {0, 0}; // sum of figure x cases, sum of cases
+    for (const auto& f : r["families"])
+    {
+        if (!f["variants"].contains(name))
+            continue;
+        const Json& st = f["variants"][name];
+        const std::uint64_t n = count(st, "cases");
+        t.cases += n;
+        t.failures += count(st, "failures");
+        t.misclassified += count(st, "false_overlap") + count(st, "false_separation");
+        t.violations += violations(st);
+        t.outsideBound += outsideBound(st);
+        const Json& e = st["errors"];
+        if (e.contains("bound_ratio"))
+            t.worstBound = std::fmax(t.worstBound, numberOf(e["bound_ratio"]["max"]));
+        if (e.contains("normalized"))
+            t.worstNorm = std::fmax(t.worstNorm, numberOf(e["normalized"]["max"]));
+        for (auto [key, sums] :
+             {std::pair{"ns_per_query", ns}, std::pair{"prepare_ns_per_shape", prepare}})
+            if (st.contains(key) && st[key].is_number() && n > 0)
+            {
+                sums[0] += st[key].get<double>() * double(n);
+                sums[1] += double(n);
+            }
+    }
+    if (ns[1] > 0)
+        t.nsPerQuery = ns[0] / ns[1];
+    if (prepare[1] > 0)
+        t.prepareNsPerShape = prepare[0] / prepare[1];
+    return t;
+}
+
+// What a variant's ns/query includes (variants[].timing, docs/report-schema.md), in words; "" for a
+// report written before the field. gjk2d's own variants have nothing to prepare.
+std::string timingWords(const Json& v)
+{
+    if (!v.contains("timing") || !v["timing"].is_object())
+        return "";
+    const Json& t = v["timing"];
+    if (t.value("preparation", "") == "none")
+        return "no preparation: the plain query takes the points as given";
+    return t.value("includes", "") +
+           (t.value("timed_by", "") == "adapter" ? "; timed by the adapter" : "");
+}
+
 } // namespace
 
 namespace
@@ -229,6 +326,43 @@ std::string contractsMarkdown(const Json& r)
     return s.empty() ? s : "\n### Contracts\n\n" + s;
 }
 
+// What each variant's ns/query includes and who timed it (variants[].timing), and its preparation
+// figure where it has one; gjk2d's own variants, which prepare nothing, in one row. Nothing for a
+// report written before the field.
+std::string timingMarkdown(const Json& r)
+{
+    std::string rows;
+    std::size_t own = 0;
+    for (const auto& v : r["variants"])
+    {
+        const std::string words = timingWords(v);
+        if (words.empty())
+            continue;
+        if (v["timing"].value("preparation", "") == "none" && !v.contains("plugin"))
+        {
+            ++own;
+            continue;
+        }
+        const double prepare = variantTotals(r, v["name"].get<std::string>()).prepareNsPerShape;
+        rows += fmt::format("| {} | {} | {} |\n", v["name"].get<std::string>(), mdEscape(words),
+                            std::isnan(prepare) ? "-" : fmt::format("{:.1f}", prepare));
+    }
+    if (own > 0)
+        rows =
+            fmt::format("| gjk2d's own ({} variants) | no preparation: the plain query takes the "
+                        "points as given | - |\n",
+                        own) +
+            rows;
+    if (rows.empty())
+        return rows;
+    return "\n### Timing\n\n| variant | ns/query includes | ns/shape to prepare "
+           "|\n|---|---|---|\n" +
+           rows +
+           "\nns/shape to prepare: preparing one shape, timed apart from the query (the families' "
+           "figures weighted by their cases; - when there is nothing to prepare or it was not "
+           "timed). ns/query per family is in the families' tables.\n";
+}
+
 // The variants: judged or comparison, type, options (or the plugin's path) and the bound.
 std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& judged)
 {
@@ -273,7 +407,7 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
         "within gjk2d's bound. `false ovl`, `false sep`, `undecid.` and `invalid` are gjk2d's own "
         "rules applied to every answer (for an implementation with a contract of its own, a "
         "measure, not its verdict).\n";
-    return s + contractsMarkdown(r);
+    return s + contractsMarkdown(r) + timingMarkdown(r);
 }
 
 // One row of a family's table: one variant's counts, errors, iterations and speed.
@@ -465,8 +599,8 @@ std::string verdictWords(const Json& st, bool judgedVariant, bool ownContract)
                    : (ownContract ? "  fails (not judged)" : "  breaks its contract (not judged)");
     return !ownContract && outsideBound(st) > 0 ? "  outside gjk2d's bound" : "";
 }
-} // namespace
 
+// Every family x variant, a line each (run --verbose).
 std::string terminalTable(const Json& r)
 {
     // The columns: broke, the answers that break their implementation's contract (gjk2d's own
@@ -508,13 +642,6 @@ std::string terminalTable(const Json& r)
         }
     }
     return s;
-}
-
-namespace
-{
-std::uint64_t count(const Json& st, const char* key)
-{
-    return st.contains(key) && st[key].is_number() ? st[key].get<std::uint64_t>() : 0;
 }
 
 // One line for a family x variant with a contract of its own that breaks it or is outside gjk2d's
@@ -586,9 +713,10 @@ std::string witnessFallbackLine(const Json& r)
 namespace
 {
 // A line per family x variant that failed or misclassified (gjk2d's own contract), or breaks its
-// declared contract or is outside gjk2d's bound keeping it, and per failed make-up check; `pairs`
-// counts the family x variant pairs.
-std::string problemLines(const Json& r, std::size_t& pairs)
+// declared contract or is outside gjk2d's bound keeping it, and per failed make-up check; with
+// `judgedOnly`, only the judged variants' failures and the failed make-up checks (what fails the
+// run). `pairs` counts the family x variant pairs.
+std::string problemLines(const Json& r, bool judgedOnly, std::size_t& pairs)
 {
     const auto judged = judgedMap(r), own = ownMap(r);
     std::string problems;
@@ -598,14 +726,17 @@ std::string problemLines(const Json& r, std::size_t& pairs)
         for (const auto& [name, st] : f["variants"].items())
         {
             ++pairs;
+            const bool j = isJudged(judged, name);
+            if (judgedOnly && (!j || violations(st) == 0))
+                continue;
             if (!isOwn(own, name))
             {
                 if (violations(st) > 0 || outsideBound(st) > 0)
-                    problems += contractLine(family, name, st, isJudged(judged, name));
+                    problems += contractLine(family, name, st, j);
             }
             else if (count(st, "failures") > 0 || count(st, "false_overlap") > 0 ||
                      count(st, "false_separation") > 0)
-                problems += problemLine(family, name, st, isJudged(judged, name));
+                problems += problemLine(family, name, st, j);
         }
         for (const auto& m : f["makeup"])
             if (!m["ok"].get<bool>())
@@ -615,40 +746,15 @@ std::string problemLines(const Json& r, std::size_t& pairs)
     }
     return problems;
 }
-} // namespace
 
-std::string terminalSummary(const Json& r)
+// The run's short lines, wrapped at 100 characters: its phases' rates and times, the witness
+// checks' and the truths' GMP fallbacks.
+std::string runLines(const Json& r)
 {
-    std::string s;
-    const auto judged = judgedMap(r);
-    std::size_t pairs = 0, judgedCount = 0;
-    const std::string problems = problemLines(r, pairs);
-    for (const auto& v : r["variants"])
-        judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
     const Json& c = r["context"];
-    s +=
-        fmt::format("{} cases ({} rejected), {} families, {} variants ({} judged, {} comparison)\n",
-                    u(c["cases_total"]), u(c["cases_rejected"]), r["families"].size(),
-                    r["variants"].size(), judgedCount, r["variants"].size() - judgedCount);
-    if (problems.empty())
-        s += "no family x variant failed or answered overlap wrongly\n";
-    else
-        s += fmt::format("failed or misclassified (false overlap or separation), or, for an "
-                         "implementation with a contract of its own, breaks its contract or is "
-                         "outside gjk2d's bound, family x variant ({} pairs in all; --verbose or "
-                         "report.md for the full table):\n{}",
-                         pairs, problems);
-    if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
-        s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
-                         u(c["cases_rejected"]));
-    std::size_t shown = 0;
-    for (const auto& j : r["rejected"])
-        if (shown++ < 10)
-            s += fmt::format("  {}: {}\n", j["name"].get<std::string>(),
-                             j["reason"].get<std::string>());
     const Json& t = c["throughput"];
     const Json& e = c["elapsed_s"];
-    s += fmt::format(
+    std::string s = fmt::format(
         "{} cases on {} threads in {:.1f} s: exact {:.0f} cases/s ({:.1f} s), GJK {:.0f} cases/s "
         "({:.2f} s, {} variants), witness checks {:.0f} cases/s ({:.1f} s), timing {:.1f} s\n",
         u(c["cases_total"]), c["threads"].get<int>(), e["total"].get<double>(),
@@ -661,10 +767,136 @@ std::string terminalSummary(const Json& r)
     for (const auto& f : r["families"])
         families.push_back(&f);
     s += truthLines(r, families);
-    s += fmt::format("result: {}; comparison variants: {} contract violation(s) (gjk2d's own "
-                     "variants': failures), shown, not judged\n",
-                     resultText(r), comparisonFailures(r, judged));
-    return s;
+    std::string wrapped; // each line in lines of at most 100 characters, the rest indented
+    std::istringstream in(s);
+    for (std::string line; std::getline(in, line);)
+        wrapped += wrap(line, "  ", 100).substr(2);
+    return wrapped;
+}
+
+// The verdict and one line of what was run.
+std::string verdictLines(const Json& r)
+{
+    const auto judged = judgedMap(r);
+    std::size_t judgedCount = 0;
+    for (const auto& v : r["variants"])
+        judgedCount += isJudged(judged, v["name"].get<std::string>()) ? 1 : 0;
+    const Json& c = r["context"];
+    return fmt::format("result: {}\nran {} cases ({} rejected), {} families, {} variants: {} "
+                       "judged, {} comparison (not judged)\n",
+                       resultText(r), u(c["cases_total"]), u(c["cases_rejected"]),
+                       r["families"].size(), r["variants"].size(), judgedCount,
+                       r["variants"].size() - judgedCount);
+}
+
+// A variant's verdict over the families, in the words of its contract (verdictWords').
+std::string variantVerdict(const VariantTotals& t, bool judgedVariant, bool ownContract)
+{
+    if (ownContract)
+        return t.violations > 0 ? (judgedVariant ? "FAIL" : "fails")
+                                : (judgedVariant ? "pass" : "passes");
+    if (t.violations > 0)
+        return judgedVariant ? "FAIL: breaks its contract" : "breaks its contract";
+    return t.outsideBound > 0 ? "outside gjk2d's bound" : "keeps its contract";
+}
+
+// The worst column: the largest error / gjk2d's bound (a variant without one: "norm" and its
+// largest normalised error); for a contract broken, its worst violation's excess and reason.
+std::string worstText(const Json& v, const VariantTotals& t, bool ownContract)
+{
+    const Json& w =
+        v.contains("worst_contract_violation") ? v["worst_contract_violation"] : Json(nullptr);
+    if (!ownContract && t.violations > 0 && w.is_object())
+    {
+        const double excess = numberOf(w["excess"]);
+        std::string reason = w["reason"].get<std::string>();
+        std::replace(reason.begin(), reason.end(), '_', ' ');
+        return std::isfinite(excess) ? fmt::format("{:.2g} {}", excess, reason) : reason;
+    }
+    if (!std::isnan(t.worstBound))
+        return fmt::format("{:.3g}", t.worstBound);
+    return std::isnan(t.worstNorm) ? "-" : fmt::format("norm {:.3g}", t.worstNorm);
+}
+
+// The ns/query column, ten characters: the figure and its marks, a (timed by the adapter) and +
+// (the shapes' set-up included: no preparation step).
+std::string nsCell(const Json& v, const VariantTotals& t)
+{
+    std::string marks;
+    if (v.contains("timing") && v["timing"].is_object())
+    {
+        marks += v["timing"].value("timed_by", "") == "adapter" ? "a" : "";
+        marks += v["timing"].value("preparation", "") == "in-call" ? "+" : "";
+    }
+    return fmt::format("{:>8}{:<2}",
+                       std::isnan(t.nsPerQuery) ? "-" : fmt::format("{:.1f}", t.nsPerQuery),
+                       std::isnan(t.nsPerQuery) ? "" : marks);
+}
+
+// One line per variant, judged ones first (a heading per group), and the legend.
+std::string variantTable(const Json& r)
+{
+    const auto judged = judgedMap(r), own = ownMap(r);
+    constexpr const char* row = "{:<21} {:>7} {:>12} {:<24} {:>10}  {}\n"; // at most 100 wide
+    std::string s = fmt::format(fmt::runtime(row), "variant", "cases", "failures",
+                                "worst err/bound", "mean ns/q", "verdict");
+    for (const bool group : {true, false})
+    {
+        std::string rows;
+        for (const auto& v : r["variants"])
+        {
+            const std::string name = v["name"].get<std::string>();
+            if (isJudged(judged, name) != group)
+                continue;
+            const VariantTotals t = variantTotals(r, name);
+            const bool o = isOwn(own, name);
+            std::string fails = std::to_string(o ? t.failures : t.violations);
+            if (o && t.misclassified > 0)
+                fails += fmt::format(" ({} ovl)", t.misclassified);
+            rows += fmt::format(
+                fmt::runtime(row), name.size() > 21 ? name.substr(0, 18) + "..." : name, t.cases,
+                fails, worstText(v, t, o), nsCell(v, t), variantVerdict(t, group, o));
+        }
+        if (!rows.empty())
+            s += (group ? "judged (they decide the result):\n"
+                        : "comparison (shown, not judged):\n") +
+                 rows;
+    }
+    return s + wrap("failures: failed cases (wrong overlap answers); a contract of its own: its "
+                    "violations. worst: the largest error / gjk2d's bound, or a broken contract's "
+                    "worst excess and why. mean ns/q: the timed families' figures weighted by "
+                    "their cases; a: timed by the adapter; +: includes the shapes' set-up.",
+                    "", 100);
+}
+} // namespace
+
+std::string terminalSummary(const Json& r, bool verbose)
+{
+    std::string s = verdictLines(r) + variantTable(r);
+    if (verbose)
+        s += terminalTable(r);
+    std::size_t pairs = 0;
+    const std::string problems = problemLines(r, !verbose, pairs);
+    if (!problems.empty())
+        s +=
+            wrap(verbose ? fmt::format("failed or misclassified (false overlap or separation), or, "
+                                       "for an implementation with a contract of its own, breaks "
+                                       "its contract or is outside gjk2d's bound, family x "
+                                       "variant ({} pairs in all):",
+                                       pairs)
+                         : "what failed the run, per family (--verbose: every family x variant "
+                           "that failed):",
+                 "", 100) +
+            problems;
+    if (r["context"]["cases_rejected"].get<std::uint64_t>() > 0)
+        s += fmt::format("{} case(s) rejected (see report.md, 'Rejected cases'):\n",
+                         u(r["context"]["cases_rejected"]));
+    std::size_t shown = 0;
+    for (const auto& j : r["rejected"])
+        if (shown++ < 10)
+            s += fmt::format("  {}: {}\n", j["name"].get<std::string>(),
+                             j["reason"].get<std::string>());
+    return s + runLines(r);
 }
 
 namespace
@@ -709,29 +941,6 @@ std::string resultText(const Json& r)
     }
     return fmt::format("FAIL (exit code {}): {}", code, failureCauses(r));
 }
-
-namespace
-{
-// Words of `text` in lines of at most `width` characters, each line starting with `indent`.
-std::string wrap(const std::string& text, const std::string& indent, std::size_t width)
-{
-    std::string out, line = indent;
-    std::size_t i = 0;
-    while (i < text.size())
-    {
-        const std::size_t end = std::min(text.find(' ', i), text.size());
-        const std::string word = text.substr(i, end - i);
-        if (line.size() > indent.size() && line.size() + 1 + word.size() > width)
-        {
-            out += line + "\n";
-            line = indent;
-        }
-        line += (line.size() > indent.size() ? " " : "") + word;
-        i = end + 1;
-    }
-    return out + line + "\n";
-}
-} // namespace
 
 std::string exitCodesHelp(std::size_t width)
 {

@@ -13,11 +13,12 @@ namespace gjkval
 inline constexpr const char* kReportSchema = "gjk-report/1";
 
 std::string renderMarkdown(const Json& report);
-// The run's summary for the terminal: totals, one line per family x variant that failed or answered
-// overlap wrongly (false overlap or separation), failed make-up checks, rejected cases, throughput
-// and the result. terminalTable: every family x variant (gjk-validate run --verbose).
-std::string terminalSummary(const Json& report);
-std::string terminalTable(const Json& report);
+// The run's summary for the terminal, the report page's first screen in text: the result and what
+// was run; one line per variant (cases, failures or contract violations, worst error / bound or
+// contract violation, ns/query, verdict); the judged variants' failures per family, failed make-up
+// checks and rejected cases; throughput and the truth's fallbacks. `verbose`: also every family x
+// variant, and every family x variant that failed or broke its contract.
+std::string terminalSummary(const Json& report, bool verbose = false);
 
 // The result in words, from report.json's exit_code: "PASS (exit code 0)", "FAIL (exit code 1):
 // 3 judged variant failure(s); make-up checks of 2 family(ies) failed" (either or both causes),
