@@ -169,6 +169,33 @@ def contract_table(report, peers):
     return out
 
 
+def timing_table(report, peers):
+    """What each variant's ns/query includes (report.json variants[].timing), its ns/query and its
+    preparation per shape, weighted by the timed families' cases."""
+    out = ["### What ns/query includes", "",
+           "Each implementation is timed as its users pay: where its adapter offers a preparation "
+           "step (gjk2d/plugin.h, `gjk2d_plugin_prepared`; an adapter's `prepared` line), shapes "
+           "are prepared once, outside the timed loop, and ns/query is the query alone; the "
+           "preparation is timed apart, per shape. Variants are timed in alternated passes, family "
+           "by family (docs/speed.md, \"What a variant's ns/query includes\").", "",
+           "| variant | ns/query | ns to prepare a shape | what ns/query includes | timed by |",
+           "|---|---|---|---|---|"]
+    info = {v["name"]: v for v in report["variants"]}
+    for name in [v for v in GJK2D_ROWS if v in info] + peers:
+        t = info[name].get("timing") or {}
+        sts = [f["variants"][name] for f in report["families"] if name in f["variants"]]
+        timed = [(st["cases"], num(st["ns_per_query"]), st.get("prepare_ns_per_shape"))
+                 for st in sts if st.get("ns_per_query") is not None]
+        weight = sum(c for c, _, _ in timed)
+        ns = sum(c * x for c, x, _ in timed) / weight if weight > 0 else None
+        prep = [(c, num(p)) for c, _, p in timed if p is not None]
+        pw = sum(c for c, _ in prep)
+        pns = sum(c * x for c, x in prep) / pw if pw > 0 else None
+        out.append(f"| {name} | {g(ns, '.0f')} | {g(pns, '.0f')} | {t.get('includes', '?')} | "
+                   f"{t.get('timed_by', '?')} |")
+    return out
+
+
 def verdict_table(report, peers, command):
     out = ["### Contract violations and accuracy", "",
            f"Per variant and family group, from `{command}`. Rows of gjk2d's reference variants "
@@ -434,7 +461,7 @@ def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
         lib = f", {p['library']}" if p.get("library") else ""
         out.append(f"- `{os.path.basename(p['file'])}` ({p.get('kind', '?')}{lib}): "
                    + ", ".join(p.get("variants", [])))
-    out += [""] + contract_table(report, peers) + [""]
+    out += [""] + contract_table(report, peers) + [""] + timing_table(report, peers) + [""]
     out += verdict_table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
     out += violation_section(report, peers, gjk, shown_gjk, svg_dir / "repro", doc)
     out += worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work)

@@ -250,7 +250,9 @@ extern "C"
          * and is given other = NULL. A GJK2D_PREPARED_CASE one reads the transform too, and is
          * given the case's other shape as `other`, for what the case fixes for both (the prism
          * reduction's common half-height, docs/peers.md). NULL when it cannot (the case is then
-         * answered GJK2D_STATUS_ERROR). */
+         * answered GJK2D_STATUS_ERROR). A shape the library does not take (too many points, a
+         * radius it has no shape for) may still be prepared, and the query then answers
+         * GJK2D_STATUS_REFUSED, as distance_f/distance_d does. */
         void* (*prepare)(int32_t implementation, const void* shape, const void* other);
         /* One query on two prepared shapes, as distance_f/distance_d answers it: `a` and `b` are
          * the case's shapes (a SCOPE_SHAPE implementation reads their transforms; the runner

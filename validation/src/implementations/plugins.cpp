@@ -396,7 +396,8 @@ Json timingJson(const VariantInfo& v)
         "the query alone, on shapes prepared once in their own frame (preparation timed apart, per "
         "shape)",
         "the query alone, on shapes prepared per case with the case's world points baked in (the "
-        "library cannot take the case's transform exactly; preparation timed apart, per shape)",
+        "library cannot take the case's transform exactly, or works in world coordinates; "
+        "preparation timed apart, per shape)",
         "the query and the shapes' set-up, every call (no preparation step offered)",
     };
     const Preparation p = preparationOf(v);

@@ -27,7 +27,8 @@ Expected answers, derived by hand (world = R local + p, R = [[c, -s], [s, c]]):
   without calling (the description's max_vertices), not answered.
 With --bridge (gjk2d-adapter-bridge), the plugin's declared contract is read through the bridge's
 handshake (protocol 2): overlap `perimeter` with its source (src/distance.c, erincatto/box2d
-617d32ab), no tolerance stated, margin 0.
+617d32ab), no tolerance stated, margin 0; and its prepared shapes, scope `shape` (a b2ShapeProxy
+in the shape's own frame).
 Exit 0 when every case gives its expected answer, else 1 naming the case.
 """
 import argparse
@@ -93,8 +94,8 @@ def main():
         want = ["contract {} overlap perimeter src/distance.c:".format(args.variant),
                 "contract {} tolerance none none".format(args.variant),
                 "contract {} margin 0".format(args.variant)]
-        if h[:1] != ["gjk2d-adapter 2"] or len(h) != 7 or not all(l.startswith(w) for l, w in zip(h[3:6], want)) \
-                or "erincatto/box2d 617d32ab" not in h[3]:
+        if h[:1] != ["gjk2d-adapter 2"] or len(h) != 8 or not all(l.startswith(w) for l, w in zip(h[3:6], want)) \
+                or "erincatto/box2d 617d32ab" not in h[3] or h[6] != "prepared {} shape".format(args.variant):
             print("box2d3_hand: FAIL: the contract read through the bridge: {}".format(h), file=sys.stderr)
             sys.exit(1)
         print("box2d3_hand: contract: {}".format(h[3]))
