@@ -44,6 +44,7 @@
 #include "box2d/math_functions.h"
 
 #include <stdlib.h>
+#include <string.h>
 #include <time.h>
 
 static b2Transform transformOf(const gjk2d_shape_f* s)
@@ -102,13 +103,62 @@ typedef struct
     int refused;
 } PreparedShape;
 
+/* Prepared shapes live in a pool, as an engine keeps its shapes (Box2D v3's world holds them in
+ * arrays): blocks of kPoolBlock, handed out in order, released ones reused first. Shapes
+ * prepared one after another sit side by side in memory, as they would in the engine's arrays,
+ * rather than wherever the allocator puts each one. */
+enum
+{
+    kPoolBlock = 4096
+};
+typedef union PoolSlot
+{
+    PreparedShape shape;
+    union PoolSlot* next; /* when free */
+} PoolSlot;
+typedef struct PoolBlock
+{
+    struct PoolBlock* previous;
+    PoolSlot slots[kPoolBlock];
+} PoolBlock;
+static PoolBlock* g_poolBlocks = NULL;
+static int32_t g_poolUsed = kPoolBlock; /* slots handed out of the newest block */
+static PoolSlot* g_poolFree = NULL;
+
+static PreparedShape* poolTake(void)
+{
+    if (g_poolFree != NULL)
+    {
+        PoolSlot* s = g_poolFree;
+        g_poolFree = s->next;
+        return &s->shape;
+    }
+    if (g_poolUsed == kPoolBlock)
+    {
+        PoolBlock* b = (PoolBlock*)malloc(sizeof *b);
+        if (b == NULL)
+            return NULL;
+        b->previous = g_poolBlocks;
+        g_poolBlocks = b;
+        g_poolUsed = 0;
+    }
+    return &g_poolBlocks->slots[g_poolUsed++].shape;
+}
+
+static void poolGive(PreparedShape* p)
+{
+    PoolSlot* s = (PoolSlot*)p;
+    s->next = g_poolFree;
+    g_poolFree = s;
+}
+
 static void* preparedPrepare(int32_t implementation, const void* shape, const void* other)
 {
     (void)other; /* scope shape: given NULL */
     const gjk2d_shape_f* s = (const gjk2d_shape_f*)shape;
     if (implementation != 0)
         return NULL;
-    PreparedShape* p = (PreparedShape*)calloc(1, sizeof *p);
+    PreparedShape* p = poolTake();
     if (p == NULL)
         return NULL;
     p->refused = refusedShape(s);
@@ -120,7 +170,17 @@ static void* preparedPrepare(int32_t implementation, const void* shape, const vo
 static void preparedRelease(int32_t implementation, void* prepared)
 {
     (void)implementation;
-    free(prepared);
+    if (prepared != NULL)
+        poolGive((PreparedShape*)prepared);
+}
+
+/* A kept proxy copied into a query's input: its count, radius and the points it holds
+ * (b2ShapeDistance reads points[0 .. count) only), not all B2_MAX_POLYGON_VERTICES slots. */
+static void keptProxyInto(b2ShapeProxy* to, const b2ShapeProxy* from)
+{
+    to->count = from->count;
+    to->radius = from->radius;
+    memcpy(to->points, from->points, (size_t)from->count * sizeof from->points[0]);
 }
 
 /* The query, what a Box2D v3 user pays for one on two kept proxies: the b2DistanceInput (the
@@ -137,7 +197,11 @@ static int32_t preparedDistance(int32_t implementation, const void* preparedA, c
         return GJK2D_STATUS_REFUSED;
     const b2Transform xfA = transformOf((const gjk2d_shape_f*)a);
     const b2Transform xfB = transformOf((const gjk2d_shape_f*)b);
-    const b2DistanceInput in = inputOf(&pa->proxy, &pb->proxy, xfA, xfB);
+    b2DistanceInput in; /* as inputOf builds it, the proxies' unused points left out */
+    keptProxyInto(&in.proxyA, &pa->proxy);
+    keptProxyInto(&in.proxyB, &pb->proxy);
+    in.transform = b2InvMulTransforms(xfA, xfB);
+    in.useRadii = true;
     b2SimplexCache simplexCache = {0};
     const b2DistanceOutput o = b2ShapeDistance(&in, &simplexCache, NULL, 0);
     const b2Vec2 wa = b2TransformPoint(xfA, o.pointA), wb = b2TransformPoint(xfA, o.pointB);
