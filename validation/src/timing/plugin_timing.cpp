@@ -81,15 +81,14 @@ template <class T, class Shape> struct PluginTimingSet
 };
 
 // A plugin's pass: what an engine's call of it costs, the ABI call and nothing else. Per query:
-// its cache_bytes zeroed (a cold start, as gjk2d's fresh SimplexCache), one call through the
-// function pointer, the result read. No copy of the inputs, no IPC: the child process that runs
-// it (timeContained) reports only the passes' times, after timing.
-template <class T, class Shape, class Result, class Fn>
-double timePassPlugin(const PluginTimingSet<T, Shape>& set, Fn fn,
-                      std::vector<unsigned char>& cache, int cacheBytes, int reps)
+// its cache_bytes zeroed (a cold start, as gjk2d's fresh SimplexCache), one call, call(i, cache,
+// &result) (through distance_f/distance_d, or the prepared table's distance), the result read. No
+// copy of the inputs, no IPC: the served child that runs it reports only the passes' times.
+template <class Result, class Call>
+double timePassPlugin(std::size_t n, Call call, std::vector<unsigned char>& cache, int cacheBytes,
+                      int reps)
 {
     void* c = cacheBytes > 0 ? cache.data() : nullptr;
-    const std::size_t n = set.a.size();
     const auto t0 = Clock::now();
     double acc = 0;
     for (int r = 0; r < reps; ++r)
@@ -97,12 +96,12 @@ double timePassPlugin(const PluginTimingSet<T, Shape>& set, Fn fn,
         {
             std::memset(cache.data(), 0, std::size_t(cacheBytes));
             Result o{};
-            fn(&set.a[i], &set.b[i], c, &o);
+            call(i, c, &o);
             acc += double(o.distance);
         }
-    const auto t1 = Clock::now();
+    const double ns = nsSince(t0);
     g_pluginTimingSink = g_pluginTimingSink + acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    return ns;
 }
 
 // Reads n bytes from fd, waiting as long as it takes: false at end of file or on an error.
@@ -177,31 +176,6 @@ template <class T, class Shape> struct PreparedShapes
     PreparedShapes& operator=(const PreparedShapes&) = delete;
 };
 
-// A pass on prepared shapes: per query the cache zeroed (a cold start), one call through the
-// table's distance, the result read; the shapes' preparation is outside it.
-template <class T, class Shape, class Result>
-double timePassPrepared(const PluginTimingSet<T, Shape>& set, const PreparedShapes<T, Shape>& ps,
-                        std::vector<unsigned char>& cache, int cacheBytes, int reps)
-{
-    void* c = cacheBytes > 0 ? cache.data() : nullptr;
-    const gjk2d_prepared& pp = *ps.im.prepared;
-    const std::int32_t index = ps.im.index;
-    const std::size_t n = set.a.size();
-    const auto t0 = Clock::now();
-    double acc = 0;
-    for (int r = 0; r < reps; ++r)
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            std::memset(cache.data(), 0, std::size_t(cacheBytes));
-            Result o{};
-            pp.distance(index, ps.a[i], &set.a[i], ps.b[i], &set.b[i], c, &o);
-            acc += double(o.distance);
-        }
-    const double ns = nsSince(t0);
-    g_pluginTimingSink = g_pluginTimingSink + acc;
-    return ns;
-}
-
 // The child's side of sharedLibraryLoop(): prepared shapes, or the per-call ABI.
 template <class T, class Shape, class Result>
 void serveSharedLibrary(const PluginImpl& im, const PluginTimingSet<T, Shape>& set, int out, int in)
@@ -220,7 +194,11 @@ void serveSharedLibrary(const PluginImpl& im, const PluginTimingSet<T, Shape>& s
         servePasses(
             kNoPreparation,
             [&](int reps)
-            { return timePassPlugin<T, Shape, Result>(set, fn, cache, cacheBytes, reps); },
+            {
+                const auto call = [&](std::size_t i, void* c, Result* o)
+                { fn(&set.a[i], &set.b[i], c, o); };
+                return timePassPlugin<Result>(set.a.size(), call, cache, cacheBytes, reps);
+            },
             out, in);
         return;
     }
@@ -228,7 +206,13 @@ void serveSharedLibrary(const PluginImpl& im, const PluginTimingSet<T, Shape>& s
     servePasses(
         shapes.nsPerShape,
         [&](int reps)
-        { return timePassPrepared<T, Shape, Result>(set, shapes, cache, cacheBytes, reps); },
+        {
+            // The shapes' preparation is outside the pass: only the table's distance is in it.
+            const gjk2d_prepared& pp = *im.prepared;
+            const auto call = [&](std::size_t i, void* c, Result* o)
+            { pp.distance(im.index, shapes.a[i], &set.a[i], shapes.b[i], &set.b[i], c, o); };
+            return timePassPlugin<Result>(set.a.size(), call, cache, cacheBytes, reps);
+        },
         out, in);
 }
 
