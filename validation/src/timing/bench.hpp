@@ -1,6 +1,6 @@
 // `gjk-validate bench`: times GJK variants on given cases (families and case files), without the
 // exact side: repeated single-threaded passes over all cases, the median ns per query and the
-// spread over the passes. Reuses the campaign's inputs (collectInputs) and timing (timeQueries).
+// spread over the passes. Reuses the campaign's inputs (collectInputs) and timing (timeAlternated).
 #pragma once
 
 #include "common/context.hpp"
