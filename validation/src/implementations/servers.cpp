@@ -101,6 +101,19 @@ std::int32_t callPrepared(const PluginImpl& plugin, const Shape* a, const Shape*
     return status;
 }
 
+// One case in the implementation's scalar type: through its prepared shapes when it has them,
+// else its plain function.
+template <class T, class Shape, class Result, class Fn>
+AnswerRecord callScalar(const PluginImpl& plugin, Fn plain, const Shape& a, const Shape& b,
+                        void* cache)
+{
+    if (plugin.prepared)
+        return callIn<T, Shape, Result>([&](const Shape* x, const Shape* y, void* c, Result* o)
+                                        { return callPrepared(plugin, x, y, c, o); },
+                                        a, b, cache);
+    return callIn<T, Shape, Result>(plain, a, b, cache);
+}
+
 // The call itself, as the child makes it. `cache`: cache_bytes zeroed bytes (a cold start).
 AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
                         std::vector<unsigned char>& cache)
@@ -110,21 +123,12 @@ AnswerRecord callPlugin(const VariantInfo& v, const PreparedCase& p,
     std::fill(cache.begin(), cache.begin() + im.cache_bytes, 0);
     void* c = im.cache_bytes > 0 ? cache.data() : nullptr;
     if (im.scalar == GJK2D_SCALAR_FLOAT)
-    {
-        const auto prepared = [&](const gjk2d_shape_f* a, const gjk2d_shape_f* b, void* cc,
-                                  gjk2d_result_f* o) { return callPrepared(plugin, a, b, cc, o); };
-        const auto a = shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf);
-        const auto b = shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf);
-        return plugin.prepared
-                   ? callIn<float, gjk2d_shape_f, gjk2d_result_f>(prepared, a, b, c)
-                   : callIn<float, gjk2d_shape_f, gjk2d_result_f>(im.distance_f, a, b, c);
-    }
-    const auto prepared = [&](const gjk2d_shape_d* a, const gjk2d_shape_d* b, void* cc,
-                              gjk2d_result_d* o) { return callPrepared(plugin, a, b, cc, o); };
-    const auto a = shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad);
-    const auto b = shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd);
-    return plugin.prepared ? callIn<double, gjk2d_shape_d, gjk2d_result_d>(prepared, a, b, c)
-                           : callIn<double, gjk2d_shape_d, gjk2d_result_d>(im.distance_d, a, b, c);
+        return callScalar<float, gjk2d_shape_f, gjk2d_result_f>(
+            plugin, im.distance_f, shapeOf<float, gjk2d_shape_f>(p.af, p.raf, p.xaf),
+            shapeOf<float, gjk2d_shape_f>(p.bf, p.rbf, p.xbf), c);
+    return callScalar<double, gjk2d_shape_d, gjk2d_result_d>(
+        plugin, im.distance_d, shapeOf<double, gjk2d_shape_d>(p.ad, p.rad, p.xad),
+        shapeOf<double, gjk2d_shape_d>(p.bd, p.rbd, p.xbd), c);
 }
 
 std::mutex g_messages; // crash and hang lines on stderr

@@ -353,15 +353,6 @@ std::vector<const PreparedCase*> slowSample(const std::vector<const PreparedCase
             cases.begin() + std::ptrdiff_t(std::min(cases.size(), kAdapterTimingCases))};
 }
 
-double median(std::vector<double> xs)
-{
-    if (xs.empty())
-        return -1;
-    std::sort(xs.begin(), xs.end());
-    const std::size_t n = xs.size();
-    return n % 2 ? xs[n / 2] : 0.5 * (xs[n / 2 - 1] + xs[n / 2]);
-}
-
 // An adapter loop's state: its chunks, and the preparation figures per shape of its passes.
 struct AdapterLoopState
 {
@@ -435,7 +426,12 @@ TimedLoop adapterLoop(const std::vector<const PreparedCase*>& cases, const Varia
         return ns;
     };
     if (v.plugin->preparation != Preparation::InCall)
-        loop.prepareNsPerShape = [st] { return median(st->prepareNsPerShape); };
+        loop.prepareNsPerShape = [st]
+        {
+            std::vector<double> xs = st->prepareNsPerShape;
+            std::sort(xs.begin(), xs.end());
+            return medianOfSorted(xs);
+        };
     return loop;
 }
 

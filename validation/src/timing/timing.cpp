@@ -190,6 +190,18 @@ TimedLoop loopT(const std::vector<const PreparedCase*>& cases, const gjk::Option
     return loop;
 }
 
+} // namespace
+
+double medianOfSorted(const std::vector<double>& xs)
+{
+    const std::size_t n = xs.size();
+    if (n == 0)
+        return -1;
+    return n % 2 ? xs[n / 2] : 0.5 * (xs[n / 2 - 1] + xs[n / 2]);
+}
+
+namespace
+{
 // The median, min and max of a loop's per-query times (sorted in place).
 TimingResult summary(std::size_t cases, std::vector<double>& perQuery, int reps)
 {
@@ -199,7 +211,7 @@ TimingResult summary(std::size_t cases, std::vector<double>& perQuery, int reps)
     const std::size_t n = perQuery.size();
     if (n == 0)
         return res;
-    res.nsPerQuery = n % 2 ? perQuery[n / 2] : 0.5 * (perQuery[n / 2 - 1] + perQuery[n / 2]);
+    res.nsPerQuery = medianOfSorted(perQuery);
     res.nsMin = perQuery.front();
     res.nsMax = perQuery.back();
     res.passes = int(n);

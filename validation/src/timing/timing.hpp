@@ -93,6 +93,10 @@ class PinnedToOneCpu
     cpu_set_t previous_; // the mask before, valid when cpu_ >= 0
 };
 
+// The median of ascending values (the mean of the middle two when their count is even); -1 when
+// there are none.
+double medianOfSorted(const std::vector<double>& xs);
+
 // The passes of several loops alternated: one calibration pass each (reps so that a pass lasts
 // cfg.minPassSeconds), then pass p of every loop before pass p + 1 of any, round p starting at
 // loop p mod n, so that a drift of the machine's speed falls on all of them alike and their
