@@ -96,6 +96,22 @@ struct Result
     ExactPoint exactWitnessA,
         exactWitnessB;   // the hull (radius-free) closest points, exact, only when requested
     Fallbacks fallbacks; // how the case was decided; not part of the truth
+
+    // Options::penetration (docs/exact.md, "Penetration depth"): the signed distance of the
+    // rounded shapes. When the cores are apart, sqrt(squared) - rA - rB (negative when the radii
+    // overlap); when they overlap (overlap == true), -(depth + rA + rB), depth the origin's exact
+    // distance to the boundary of hull(A) - hull(B) (0 when the origin is on it).
+    bool hasSigned = false;
+    double signedDistance = 0; // correctly rounded to nearest
+    double signedLower = 0,
+           signedUpper = 0; // enclosing doubles of the exact signed distance, as lower/upper
+    std::string depthSquaredNum,
+        depthSquaredDen; // overlap only: the cores' exact squared depth, lowest terms ("0"/"1"
+                         // when touching); empty when the cores are apart
+    // The penetration pair, world frame, each coordinate correctly rounded to nearest: pA on A's
+    // rounded boundary, pB on B's, pA - pB the minimal translation of B to contact (the signed
+    // distance is -|pA - pB| on overlap). Cores apart: witnessA, witnessB (moved by the radii).
+    Point penetrationA, penetrationB;
 };
 
 struct Options
@@ -110,6 +126,8 @@ struct Options
     // a gcd and two decimal conversions, as much as the rest of the filtered case). For callers
     // that never read it (the runner without --per-case); the GMP route fills it regardless.
     bool squaredRational = true;
+    // Also compute the signed distance and the penetration pair (Result::hasSigned and below).
+    bool penetration = false;
 };
 
 // Throws std::invalid_argument for invalid input (no points, NaN or infinite values, negative
@@ -165,6 +183,13 @@ double pointToShapeDistance(const PreparedShape& shape, Point p, bool* gmpRoute 
 // witnesses (when separated; the overlap witnesses are left at 0). Cost O((n + m)^3): small inputs
 // only.
 Result bruteForce(const Shape& a, const Shape& b);
+
+// Independent brute force of the signed distance (plain GMP rationals, no hull construction): on
+// overlap, the least over every candidate edge normal n (perpendicular to a pair of points of A or
+// of B) of h_Z(n)^2 / |n|^2, h_Z the support function of hull(A) - hull(B); apart, bruteForce's
+// distance. Fills everything bruteForce fills plus the signed fields and the penetration pair.
+// Small inputs only.
+Result bruteForceSigned(const Shape& a, const Shape& b);
 
 // Throws std::invalid_argument if the shape is invalid (what distance() checks); `name` prefixes
 // the message.

@@ -139,6 +139,13 @@ struct Options
     // CorrectPath::NeedsExact asks the caller for the exact completion
     // (exact/include/gjk2d/correct_fallback.hpp). double queries only.
     bool correctlyRounded = false;
+    // Return the signed distance (gjk2d/expand.hpp, docs/gjk.md "Signed distance"): on
+    // overlapping shapes, minus the penetration depth of the rounded shapes, found by expanding
+    // GJK's final simplex into a polygon inside the Minkowski difference (EPA), with a penetration
+    // pair and a certified interval for the depth. Rounded shapes whose cores are apart but whose
+    // radii overlap get the core distance minus both radii, unclamped. Answers on separated shapes
+    // are bit for bit those of the same options without it.
+    bool signedDistance = false;
 
     bool operator==(const Options&) const = default;
 };
@@ -218,6 +225,36 @@ constexpr const char* correctPathName(CorrectPath p)
     return "?";
 }
 
+// Why the expanding polygon (Options::signedDistance, gjk2d/expand.hpp) stopped; None when it did
+// not run (the shapes are apart).
+enum class ExpandStop : std::uint8_t
+{
+    None,            // no expansion: the rounded shapes are apart, or their cores are
+    Touching,        // the origin is on the Minkowski difference's boundary: core depth 0
+    GapClosed,       // the support value along the closest edge's normal is within the named
+                     // tolerance of that edge's distance (the certified interval is that narrow)
+    RepeatedSupport, // the support point along the closest edge's normal is already a vertex
+    IterationLimit,  // the polygon grew past its limit: the answer is the best edge so far
+};
+
+constexpr const char* expandStopName(ExpandStop r)
+{
+    switch (r)
+    {
+    case ExpandStop::None:
+        return "none";
+    case ExpandStop::Touching:
+        return "touching";
+    case ExpandStop::GapClosed:
+        return "gap-closed";
+    case ExpandStop::RepeatedSupport:
+        return "repeated-support";
+    case ExpandStop::IterationLimit:
+        return "iteration-limit";
+    }
+    return "?";
+}
+
 // How many StopReason values there are (IterationLimit is the last: checked below).
 inline constexpr std::size_t stopReasonCount = std::size_t(StopReason::IterationLimit) + 1;
 static_assert(stopReasonName(StopReason(stopReasonCount - 1))[0] != '?' &&
@@ -287,8 +324,13 @@ template <class T> struct DistanceOutput
 {
     Vec2<T> pointA{};   // closest point on A (world), on the rounded surface when radii are used
     Vec2<T> pointB{};   // closest point on B (world)
-    Vec2<T> normal{};   // unit, from pointA towards pointB when distance > 0; zero otherwise
-    T distance = T(0);  // >= 0
+    // Unit, from pointA towards pointB when distance > 0; zero otherwise. With
+    // Options::signedDistance and distance < 0: the unit direction in which B leaves A,
+    // (pointA - pointB) / |pointA - pointB| (moving B by pointA - pointB brings it to contact).
+    Vec2<T> normal{};
+    // >= 0; with Options::signedDistance, < 0 on overlap: minus the rounded shapes' penetration
+    // depth, pointA on A's boundary and pointB on B's (a penetration pair).
+    T distance = T(0);
     int iterations = 0; // support points computed
     int simplexCount = 0;
     StopReason stop = StopReason::RepeatedSupport;
@@ -309,6 +351,10 @@ template <class T> struct DistanceOutput
     // Options::correctlyRounded: how the distance was decided. Beside the flags, in their padding:
     // the output keeps its size.
     CorrectPath path = CorrectPath::Plain;
+    // Options::signedDistance: how the expansion stopped (None on separated shapes). On overlap
+    // the expansion also sets certified and [lower, upper], which then enclose the signed
+    // distance (minus the depth), rounded outwards.
+    ExpandStop expand = ExpandStop::None;
     double lower = 0;
     double upper = std::numeric_limits<double>::infinity();
 };

@@ -63,6 +63,17 @@ extern "C"
  * shape set-up. The table (below) lives as long as the library. */
 #define GJK2D_PLUGIN_PREPARED_ENTRY "gjk2d_plugin_prepared"
 
+/* Optional, since issue 51 (the ABI version is unchanged: a plugin without it loads as before):
+ *
+ *     const gjk2d_depth_contract* gjk2d_plugin_depth(void);
+ *
+ * `count` depth clauses, one per implementation in the description's order: how close to the
+ * exact penetration depth an implementation whose contract says GJK2D_OVERLAP_PENETRATION
+ * promises its depth to be, and where the library says so. Without it (or with both tolerances
+ * negative) the depth is held to gjk2d's depth bound for the scalar type, and the report says that
+ * no tolerance is stated (docs/peers.md, "Contracts"). */
+#define GJK2D_PLUGIN_DEPTH_ENTRY "gjk2d_plugin_depth"
+
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
      * to that type and judges it against the exact truth of those rounded inputs. */
     enum gjk2d_scalar
@@ -189,6 +200,16 @@ extern "C"
         double margin;
         const char* margin_source;
     } gjk2d_contract;
+
+    /* The optional depth clause (GJK2D_PLUGIN_DEPTH_ENTRY), one per implementation: on
+     * overlapping shapes |depth - exact depth| <= abs + rel * exact depth. Negative: none stated. */
+    typedef struct gjk2d_depth_contract
+    {
+        double abs_tolerance;
+        double rel_tolerance;
+        const char* source; /* file and line or documentation, and version; NULL: none stated */
+    } gjk2d_depth_contract;
+    typedef const gjk2d_depth_contract* (*gjk2d_plugin_depth_fn)(void); /* GJK2D_PLUGIN_DEPTH_ENTRY */
 
     typedef struct gjk2d_plugin
     {

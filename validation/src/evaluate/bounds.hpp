@@ -41,4 +41,12 @@ double witnessBound(const VariantInfo& variant, const CaseMetrics& metrics);
 // Human-readable formula for the report ("variants[].witness_bound.formula").
 std::string witnessBoundFormula(const VariantInfo& variant);
 
+// The depth bound of docs/error-bound.md ("Penetration depth"): |signed distance - exact| on
+// overlapping shapes, for a variant with Options::signedDistance (and for a plugin whose contract
+// promises penetration and states no depth tolerance, the reference options' of its scalar type).
+// metrics.exactDistance is then the exact signed distance (negative).
+double depthBound(const VariantInfo& variant, const CaseMetrics& metrics);
+// Human-readable formula for the report ("variants[].depth_bound.formula").
+std::string depthBoundFormula(const VariantInfo& variant);
+
 } // namespace gjkval

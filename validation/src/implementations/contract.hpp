@@ -46,6 +46,11 @@ struct Contract
     std::string overlapSource;
     double margin = 0; // the skin the library keeps around each shape, as the adapter sets it
     std::string marginSource;
+    // On overlapping shapes, for overlap == Penetration: |depth - exact depth| <= depthAbs +
+    // depthRel * exact depth (gjk2d_plugin_depth; the protocol's `contract NAME depth` line).
+    // Negative: not stated: gjk2d's depth bound for the scalar type stands in.
+    double depthAbsTolerance = -1, depthRelTolerance = -1;
+    std::string depthSource; // "" none stated
 
     bool statesTolerance() const { return absTolerance >= 0 || relTolerance >= 0; }
     bool operator==(const Contract&) const = default;
