@@ -410,7 +410,14 @@ class Solver
     {
     }
 
-    ExactResult run() { return build(locateFeature()); }
+    ExactResult run(bool wantPolygon = false)
+    {
+        const Feature f = locateFeature();
+        ExactResult e = build(f);
+        if (wantPolygon && f.overlap)
+            e.polygon = polygon();
+        return e;
+    }
 
     // The filtered result (Options::filter): the rounded outputs in double-double where the bound
     // decides them, with the exact squared distance from the feature; else build() and finish().
@@ -429,21 +436,57 @@ class Solver
             }
             if (filteredFinish(f, a_, b_, as, bs, r))
             {
+                const bool needSquared = options.squaredRational || options.penetration;
+                const mpq_class q = needSquared ? squared(f) : mpq_class(0);
                 if (options.squaredRational)
                 {
-                    const mpq_class q = squared(f);
                     r.squaredNum = q.get_num().get_str();
                     r.squaredDen = q.get_den().get_str();
+                }
+                if (options.penetration)
+                {
+                    ExactResult e;
+                    e.overlap = f.overlap;
+                    e.squared = q;
+                    if (f.overlap)
+                        e.polygon = polygon();
+                    finishSigned(e, a_.radius, b_.radius, r);
+                    r.fallbacks.depth = true;
                 }
                 r.fallbacks = counts(r.fallbacks);
                 return r;
             }
         }
         Fallbacks undecided = r.fallbacks;
-        r = finish(build(f), a_.radius, b_.radius, options.exactWitnesses);
+        ExactResult e = build(f);
+        if (options.penetration && f.overlap)
+            e.polygon = polygon();
+        r = finish(e, a_.radius, b_.radius, options.exactWitnesses);
+        if (options.penetration)
+        {
+            finishSigned(e, a_.radius, b_.radius, r);
+            undecided.depth = true;
+        }
         r.fallbacks = counts(undecided);
         r.fallbacks.gmp = true;
         return r;
+    }
+
+    // The whole of Z with its provenance, exactly (Options::penetration with overlapping cores).
+    Polygon polygon()
+    {
+        Polygon p;
+        const std::size_t k = za.size();
+        p.z.reserve(k);
+        p.a.reserve(k);
+        p.b.reserve(k);
+        for (std::size_t t = 0; t < k; ++t)
+        {
+            p.z.push_back(toQ(z(static_cast<int>(t))));
+            p.a.push_back(toQ(A.exact(za[t])));
+            p.b.push_back(toQ(B.exact(zb[t])));
+        }
+        return p;
     }
 
     // pointDistance(): a_ is the query point (one point, identity, no radius).
@@ -869,9 +912,9 @@ double preparedPointDistance(const PreparedData& d, Point p, bool& gmp)
     return pointDistance(q, d.shape, gmp);
 }
 
-ExactResult edgeMerge(const Shape& a, const Shape& b)
+ExactResult edgeMerge(const Shape& a, const Shape& b, bool wantPolygon)
 {
-    return Solver(a, b).run();
+    return Solver(a, b).run(wantPolygon);
 }
 
 double pointDistance(const Shape& point, const Shape& shape, bool& gmp)
@@ -883,7 +926,10 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
 {
     if (options.filter)
         return Solver(a, b).runFiltered(options);
-    Result r = finish(edgeMerge(a, b), a.radius, b.radius, options.exactWitnesses);
+    const ExactResult e = edgeMerge(a, b, options.penetration);
+    Result r = finish(e, a.radius, b.radius, options.exactWitnesses);
+    if (options.penetration)
+        finishSigned(e, a.radius, b.radius, r);
     r.fallbacks.gmp = true;
     return r;
 }
@@ -893,7 +939,10 @@ Result edgeMergeResult(const PreparedData& a, const PreparedData& b, const Optio
     Solver solver(a, b);
     if (options.filter)
         return solver.runFiltered(options);
-    Result r = finish(solver.run(), a.shape.radius, b.shape.radius, options.exactWitnesses);
+    const ExactResult e = solver.run(options.penetration);
+    Result r = finish(e, a.shape.radius, b.shape.radius, options.exactWitnesses);
+    if (options.penetration)
+        finishSigned(e, a.shape.radius, b.shape.radius, r);
     r.fallbacks.gmp = true;
     return r;
 }

@@ -72,6 +72,8 @@ struct Fallbacks
         false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
     bool witness = false; // a rounded witness coordinate was undecided
     bool gmp = false;     // the rounded outputs came from the GMP/MPFR route
+    bool depth = false;   // default route with the filter and Options::penetration: the signed
+                          // distance and the penetration pair came from GMP/MPFR
 };
 
 struct Result
@@ -187,7 +189,9 @@ Result bruteForce(const Shape& a, const Shape& b);
 // Independent brute force of the signed distance (plain GMP rationals, no hull construction): on
 // overlap, the least over every candidate edge normal n (perpendicular to a pair of points of A or
 // of B) of h_Z(n)^2 / |n|^2, h_Z the support function of hull(A) - hull(B); apart, bruteForce's
-// distance. Fills everything bruteForce fills plus the signed fields and the penetration pair.
+// distance. Fills everything bruteForce fills plus hasSigned, signedDistance, signedLower,
+// signedUpper and depthSquaredNum/Den; the penetration pair only when the cores are apart (the
+// witnesses, as distance() gives them), left at 0 on overlap (as bruteForce's witnesses).
 // Small inputs only.
 Result bruteForceSigned(const Shape& a, const Shape& b);
 
