@@ -434,25 +434,16 @@ class Solver
                 as[t] = a_.points[za[ids[t]]];
                 bs[t] = b_.points[zb[ids[t]]];
             }
-            if (filteredFinish(f, a_, b_, as, bs, r))
+            if (filteredFinish(f, a_, b_, as, bs, r, options.penetration))
             {
-                const bool needSquared = options.squaredRational || options.penetration;
-                const mpq_class q = needSquared ? squared(f) : mpq_class(0);
                 if (options.squaredRational)
                 {
+                    const mpq_class q = squared(f);
                     r.squaredNum = q.get_num().get_str();
                     r.squaredDen = q.get_den().get_str();
                 }
                 if (options.penetration)
-                {
-                    ExactResult e;
-                    e.overlap = f.overlap;
-                    e.squared = q;
-                    if (f.overlap)
-                        e.polygon = polygon();
-                    finishSigned(e, a_.radius, b_.radius, r);
-                    r.fallbacks.depth = true;
-                }
+                    filteredSigned(f, options, r);
                 r.fallbacks = counts(r.fallbacks);
                 return r;
             }
@@ -471,6 +462,119 @@ class Solver
         r.fallbacks.gmp = true;
         return r;
     }
+
+    // Options::penetration after filteredFinish() decided the rest: separated, the signed
+    // distance filteredFinish() rounded where it could; overlapping, filteredDepth(). What they
+    // leave undecided, the GMP route (penetration.cpp) rounds, with Fallbacks::depth.
+    void filteredSigned(const Feature& f, const Options& options, Result& r)
+    {
+        if (!f.overlap)
+        {
+            if (r.hasSigned)
+            {
+                r.penetrationA = r.witnessA;
+                r.penetrationB = r.witnessB;
+                return;
+            }
+            ExactResult e;
+            e.squared = squared(f);
+            finishSigned(e, a_.radius, b_.radius, r);
+            r.fallbacks.depth = true;
+            return;
+        }
+        const int k = static_cast<int>(za.size());
+        VertexArray<Point> as(k), bs(k);
+        for (int t = 0; t < k; ++t)
+        {
+            as[t] = a_.points[za[t]];
+            bs[t] = b_.points[zb[t]];
+        }
+        ExactTies ties(*this);
+        int chosen = 0;
+        Result s;
+        if (filteredDepth(k, a_, b_, as.data(), bs.data(), ties, chosen, s))
+        {
+            r.hasSigned = true;
+            r.signedDistance = s.signedDistance;
+            r.signedLower = s.signedLower;
+            r.signedUpper = s.signedUpper;
+            r.penetrationA = s.penetrationA;
+            r.penetrationB = s.penetrationB;
+            if (options.squaredRational)
+            {
+                const mpq_class q = k == 1 ? mpq_class(0) : edgeExact(chosen).squared;
+                r.depthSquaredNum = q.get_num().get_str();
+                r.depthSquaredDen = q.get_den().get_str();
+            }
+        }
+        else
+        {
+            ExactResult e;
+            e.overlap = true;
+            e.polygon = polygon();
+            finishSigned(e, a_.radius, b_.radius, r);
+            r.fallbacks.depth = true;
+        }
+        r.fallbacks.depthTies += ties.exact;
+    }
+
+    // Edge e of Z (vertex e to e + 1), exactly: its squared line distance from O and its outward
+    // normal (D.y, -D.x) up to a positive power of two.
+    struct EdgeExact
+    {
+        mpq_class squared;
+        mpz_class nx, ny;
+    };
+    EdgeExact edgeExact(int e)
+    {
+        const int k = static_cast<int>(za.size());
+        const E2 &P = z(e), &Q = z(e + 1 == k ? 0 : e + 1);
+        const E2 D = sub(Q, P);
+        const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
+        const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
+        const mpz_class C = px * qy - py * qx;
+        return {toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true), D.y, -D.x};
+    }
+
+    // filteredDepth()'s near ties, decided as penetration.cpp's deepest() decides: the least
+    // squared distance, then the least outward-normal angle in [0, 2 pi).
+    class ExactTies final : public DepthTies
+    {
+      public:
+        explicit ExactTies(Solver& s) : s_(s) {}
+        int exact = 0; // comparisons made
+        int choose(const int* edges, int n) override
+        {
+            int best = edges[0];
+            EdgeExact b = s_.edgeExact(best);
+            for (int t = 1; t < n; ++t)
+            {
+                EdgeExact c = s_.edgeExact(edges[t]);
+                ++exact;
+                const int o = cmp(c.squared, b.squared);
+                if (o < 0 || (o == 0 && angleLess(c, b)))
+                {
+                    best = edges[t];
+                    b = std::move(c);
+                }
+            }
+            return best;
+        }
+
+      private:
+        Solver& s_;
+        static int half(const EdgeExact& n)
+        {
+            return (sgn(n.ny) > 0 || (sgn(n.ny) == 0 && sgn(n.nx) > 0)) ? 0 : 1;
+        }
+        static bool angleLess(const EdgeExact& n, const EdgeExact& m)
+        {
+            const int hn = half(n), hm = half(m);
+            if (hn != hm)
+                return hn < hm;
+            return cmp(n.nx * m.ny, n.ny * m.nx) > 0;
+        }
+    };
 
     // The whole of Z with its provenance, exactly (Options::penetration with overlapping cores).
     Polygon polygon()

@@ -216,8 +216,28 @@ template <class Pr> Feature locate(int k, Pr& pr)
 // below) are the differences of input points as[t] of A and bs[t] of B, computed in double-double
 // with an error bound. True when every rounding is decided; false otherwise, with
 // r.fallbacks.{squared, distance, witness} saying which was not.
+// With `penetration` and separated cores, also the unclamped signed distance (and its enclosure)
+// where the bound decides it: then r.hasSigned (else the caller rounds it with GMP).
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
-                    const Point* bs, Result& r);
+                    const Point* bs, Result& r, bool penetration = false);
+
+// The caller's exact choice among near-tied edges of filteredDepth(): edges[0..n) (edge e runs from
+// Z vertex e to e + 1), the one penetration.cpp's deepest() would choose (least squared distance,
+// then least outward-normal angle).
+class DepthTies
+{
+  public:
+    virtual int choose(const int* edges, int n) = 0;
+
+  protected:
+    ~DepthTies() = default;
+};
+// filter.cpp: overlapping cores, Z's k vertices (counterclockwise, as merge() made them) the
+// differences of input points as[t] of A and bs[t] of B: the signed distance, its enclosure and
+// the penetration pair of r, in double-double with error bounds; `chosen` the closest edge (0 when
+// k = 1). True when every rounding is decided (r's other fields untouched); false: the GMP route.
+bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const Point* bs,
+                   DepthTies& ties, int& chosen, Result& r);
 
 // filter.cpp: max(0, dist(p, hull(B)) - B.radius), correctly rounded to nearest, for the located
 // feature f of Z = {p} - hull(B) (p in the world frame; bs: B's input points of the feature's Z

@@ -32,36 +32,6 @@ std::string describe(const Shape& s)
     return o.str();
 }
 
-bool same(double x, double y)
-{
-    return std::memcmp(&x, &y, sizeof x) == 0;
-}
-
-// The signed fields in which r and s differ, bit for bit (the pair only when `pair`).
-std::vector<std::string> differentSigned(const Result& r, const Result& s, bool pair)
-{
-    std::vector<std::string> out;
-    auto field = [&out](bool equal, const char* name)
-    {
-        if (!equal)
-            out.push_back(name);
-    };
-    field(r.hasSigned == s.hasSigned, "hasSigned");
-    field(same(r.signedDistance, s.signedDistance), "signedDistance");
-    field(same(r.signedLower, s.signedLower), "signedLower");
-    field(same(r.signedUpper, s.signedUpper), "signedUpper");
-    field(r.depthSquaredNum == s.depthSquaredNum, "depthSquaredNum");
-    field(r.depthSquaredDen == s.depthSquaredDen, "depthSquaredDen");
-    if (pair)
-    {
-        field(same(r.penetrationA.x, s.penetrationA.x), "penetrationA.x");
-        field(same(r.penetrationA.y, s.penetrationA.y), "penetrationA.y");
-        field(same(r.penetrationB.x, s.penetrationB.x), "penetrationB.x");
-        field(same(r.penetrationB.y, s.penetrationB.y), "penetrationB.y");
-    }
-    return out;
-}
-
 double ulpOf(double v)
 {
     v = std::fabs(v);
@@ -137,10 +107,10 @@ Result checkSigned(const Shape& a, const Shape& b, bool withBruteForce, Counts* 
                 CHECK(differentFields(x, def).size() <= (route == Route::EdgeMerge ? 0u : 4u));
                 if (!x.overlap)
                 {
-                    CHECK(same(x.penetrationA.x, x.witnessA.x));
-                    CHECK(same(x.penetrationA.y, x.witnessA.y));
-                    CHECK(same(x.penetrationB.x, x.witnessB.x));
-                    CHECK(same(x.penetrationB.y, x.witnessB.y));
+                    CHECK(sameBits(x.penetrationA.x, x.witnessA.x));
+                    CHECK(sameBits(x.penetrationA.y, x.witnessA.y));
+                    CHECK(sameBits(x.penetrationB.x, x.witnessB.x));
+                    CHECK(sameBits(x.penetrationB.y, x.witnessB.y));
                 }
             }
     // Without Options::penetration: nothing signed.
@@ -164,7 +134,7 @@ Result checkSigned(const Shape& a, const Shape& b, bool withBruteForce, Counts* 
         CHECK(def.depthSquaredNum.empty());
         // where the unclamped value is positive, the same correctly rounded real as the distance
         if (def.distance > 0)
-            CHECK(same(def.signedDistance, def.distance));
+            CHECK(sameBits(def.signedDistance, def.distance));
     }
 
     if (def.overlap)
@@ -490,4 +460,35 @@ TEST_CASE("penetration: bruteForceSigned fields")
     CHECK(r.penetrationA.x == 0);
     CHECK(r.penetrationB.x == 0);
     CHECK_THROWS_AS(exact::bruteForceSigned(Shape{}, square(0, 0, 1, 1)), std::invalid_argument);
+}
+
+TEST_CASE("penetration: the filter decides plain overlaps; the depth rational only when asked for")
+{
+    // The first case again under an inexact rotation (0.6, 0.8) of both shapes: the filter is to
+    // decide it (no GMP), and with Options::squaredRational = false leave both rationals out.
+    Shape a = square(0, 0, 2, 2, 0.25), b = square(1, 0.5, 3, 2.5, 0.5);
+    for (Shape* s : {&a, &b})
+    {
+        s->c = 0.6;
+        s->s = 0.8;
+    }
+    Options o;
+    o.penetration = true;
+    const Result full = exact::distance(a, b, o);
+    o.squaredRational = false;
+    const Result lazy = exact::distance(a, b, o);
+    CHECK_FALSE(full.fallbacks.gmp);
+    CHECK_FALSE(full.fallbacks.depth);
+    CHECK_FALSE(lazy.fallbacks.depth);
+    CHECK_FALSE(full.depthSquaredNum.empty());
+    CHECK(lazy.depthSquaredNum.empty());
+    CHECK(lazy.depthSquaredDen.empty());
+    CHECK(sameBits(lazy.signedDistance, full.signedDistance));
+    CHECK(sameBits(lazy.penetrationA.x, full.penetrationA.x));
+    // The deep overlap's tie (top and bottom both 3/2 away): decided by exact comparison.
+    o.squaredRational = true;
+    const Result tie = exact::distance(square(0, 0, 10, 2), square(4, 0.5, 6, 1.5), o);
+    CHECK(tie.fallbacks.depthTies >= 1);
+    CHECK_FALSE(tie.fallbacks.depth);
+    CHECK(tie.penetrationA.y == 2);
 }

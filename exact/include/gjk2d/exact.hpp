@@ -72,8 +72,10 @@ struct Fallbacks
         false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
     bool witness = false; // a rounded witness coordinate was undecided
     bool gmp = false;     // the rounded outputs came from the GMP/MPFR route
-    bool depth = false;   // default route with the filter and Options::penetration: the signed
-                          // distance and the penetration pair came from GMP/MPFR
+    // Options::penetration (docs/exact.md, "Penetration depth"):
+    int depthTies = 0;  // closest-edge comparisons the error bounds left to exact integers
+    bool depth = false; // the signed distance or the penetration pair was undecided by the
+                        // filter: they came from GMP/MPFR
 };
 
 struct Result
