@@ -111,7 +111,8 @@ struct Result
            signedUpper = 0; // enclosing doubles of the exact signed distance, as lower/upper
     std::string depthSquaredNum,
         depthSquaredDen; // overlap only: the cores' exact squared depth, lowest terms ("0"/"1"
-                         // when touching); empty when the cores are apart
+                         // when touching); empty when the cores are apart, and (as squaredNum)
+                         // where the filter decided and Options::squaredRational is false
     // The penetration pair, world frame, each coordinate correctly rounded to nearest: pA on A's
     // rounded boundary, pB on B's, pA - pB the minimal translation of B to contact (the signed
     // distance is -|pA - pB| on overlap). Cores apart: witnessA, witnessB (moved by the radii).
