@@ -152,8 +152,9 @@ Result checkSigned(const Shape& a, const Shape& b, bool withBruteForce, Counts* 
         CHECK(std::fabs(len + def.signedDistance) <= 8 * ulpOf(S));
         // Translating B by pA - pB brings the rounded shapes to contact: the exact signed distance
         // is 1-Lipschitz in B's translation, and B's translated position is off the exact one by
-        // at most 2 ulp(S') a coordinate (pA, pB, the subtraction, the addition to B's position),
-        // so |signed| <= 2 sqrt(2) ulp(S') after; bound 4 ulp(S').
+        // at most 2.5 ulp(S') a coordinate (pA and pB half an ulp(S) each, the subtraction ulp(S),
+        // the addition to B's position half an ulp(S')), so |signed| <= 2.5 sqrt(2) ulp(S') < 4
+        // ulp(S') after; bound 4 ulp(S').
         Shape moved = b;
         moved.px += pA.x - pB.x;
         moved.py += pA.y - pB.y;
