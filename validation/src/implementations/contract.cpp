@@ -63,6 +63,12 @@ std::string checkContract(const Contract& c)
         return "a distance tolerance is not finite (negative: none stated)";
     if (!std::isfinite(c.margin) || c.margin < 0)
         return fmt::format("margin {} is not a finite number >= 0", c.margin);
+    if (!std::isfinite(c.depthAbsTolerance) || !std::isfinite(c.depthRelTolerance))
+        return "a depth tolerance is not finite (negative: none stated)";
+    if (c.statesDepthTolerance() && c.overlap != Overlap::Penetration)
+        return fmt::format("a depth tolerance is stated, but the overlap is {}, which answers no "
+                           "depth (only penetration does)",
+                           overlapName(c.overlap));
     return "";
 }
 
@@ -85,6 +91,23 @@ std::string judgedBy(const VariantInfo& v)
                        c.toleranceSource);
 }
 
+std::string judgedByDepth(const VariantInfo& v)
+{
+    const Contract& c = contractOf(v);
+    if (c.own)
+        return fmt::format("gjk2d's own contract: gjk2d's depth bound for {}",
+                           scalarName(v.scalar));
+    if (c.overlap != Overlap::Penetration)
+        return fmt::format("no depth answered (overlap {})", overlapName(c.overlap));
+    if (!c.statesDepthTolerance())
+        return fmt::format("no depth tolerance stated: gjk2d's depth bound for {}",
+                           scalarName(v.scalar));
+    return fmt::format("its stated tolerance: abs {}, rel {} ({})",
+                       c.depthAbsTolerance >= 0 ? fmt::format("{:g}", c.depthAbsTolerance) : "none",
+                       c.depthRelTolerance >= 0 ? fmt::format("{:g}", c.depthRelTolerance) : "none",
+                       c.depthSource);
+}
+
 Json contractJson(const VariantInfo& v)
 {
     const Contract& c = contractOf(v);
@@ -97,7 +120,12 @@ Json contractJson(const VariantInfo& v)
                   {"source", c.toleranceSource}}},
                 {"margin", c.margin},
                 {"margin_source", c.marginSource},
-                {"judged_by", judgedBy(v)}};
+                {"depth",
+                 {{"abs", orNull(c.depthAbsTolerance)},
+                  {"rel", orNull(c.depthRelTolerance)},
+                  {"source", c.depthSource}}},
+                {"judged_by", judgedBy(v)},
+                {"judged_by_depth", judgedByDepth(v)}};
 }
 
 } // namespace gjkval
