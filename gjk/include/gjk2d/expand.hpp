@@ -77,26 +77,32 @@ constexpr int expandIterationLimit(int countA, int countB)
 }
 
 // The expanding polygon: vertices counter-clockwise (points of Z with their index pairs), and the
-// signed distance from the origin to each edge's line (edge k from vertex k to k + 1): positive
-// when the origin is on the inner side.
+// signed distance from the origin to each edge's line (edge k from vertex k to k + 1, edgeDistance
+// below): positive when the origin is on the inner side. Each edge's distance is computed once,
+// when the edge is made.
 template <class T> struct ExpandPolygon
 {
     static constexpr int inlineCapacity = 32;
     SimplexVertex<T> inlineV[inlineCapacity];
-    std::vector<SimplexVertex<T>> heap; // shapes with more points
+    T inlineDist[inlineCapacity];
+    std::vector<SimplexVertex<T>> heapV; // shapes with more points
+    std::vector<T> heapDist;
     SimplexVertex<T>* v = inlineV;
+    T* dist = inlineDist;
     int count = 0;
 
     explicit ExpandPolygon(int capacity)
     {
         if (capacity > inlineCapacity)
         {
-            heap.resize(std::size_t(capacity));
-            v = heap.data();
+            heapV.resize(std::size_t(capacity));
+            heapDist.resize(std::size_t(capacity));
+            v = heapV.data();
+            dist = heapDist.data();
         }
     }
+    ExpandPolygon(const ExpandPolygon&) = delete;
     int next(int k) const { return k + 1 == count ? 0 : k + 1; }
-    int prev(int k) const { return k == 0 ? count - 1 : k - 1; }
     bool holds(int indexA, int indexB) const
     {
         for (int k = 0; k < count; ++k)
@@ -129,23 +135,51 @@ struct ExpandEnd
 };
 
 // Insert w after vertex k (the closest edge's first vertex), removing the vertices it makes reflex
-// or collinear on either side, so that the polygon stays the convex hull of its points. At least
-// the edge's two vertices... or what remains of them stay: the loop keeps two old vertices.
+// or collinear on either side (as an incremental convex hull does), so that the polygon stays the
+// convex hull of its points, which holds the old polygon and so the origin. At least two old
+// vertices stay, so the polygon keeps three.
 template <class T> void insertVertex(ExpandPolygon<T>& P, int k, const SimplexVertex<T>& w)
 {
-    // Rebuild in order starting after the insertion point: old vertices k+1, ..., k (cyclic).
-    SimplexVertex<T> tmp[ExpandPolygon<T>::inlineCapacity];
-    std::vector<SimplexVertex<T>> tmpHeap;
-    SimplexVertex<T>* o = tmp;
-    if (P.count + 1 > ExpandPolygon<T>::inlineCapacity)
+    // The common case, both neighbours stay convex: shift the vertices after k by one.
+    const int k1 = P.next(k);
+    const int k0 = k == 0 ? P.count - 1 : k - 1;
+    const int k2 = P.next(k1);
+    if (cross(P.v[k1].w - w.w, P.v[k2].w - P.v[k1].w) > T(0) &&
+        cross(P.v[k].w - P.v[k0].w, w.w - P.v[k].w) > T(0))
     {
-        tmpHeap.resize(std::size_t(P.count + 1));
-        o = tmpHeap.data();
+        for (int j = P.count; j > k + 1; --j)
+        {
+            P.v[j] = P.v[j - 1];
+            P.dist[j] = P.dist[j - 1];
+        }
+        P.v[k + 1] = w;
+        ++P.count;
+        P.dist[k] = edgeDistance(P.v[k].w, w.w);
+        P.dist[k + 1] = edgeDistance(w.w, P.v[P.next(k + 1)].w);
+        return;
     }
-    // o[0 .. m) = the old vertices from k + 1 round to k.
+    // o[0 .. m) = the old vertices from k + 1 round to k, with their edges' distances.
     const int m = P.count;
-    for (int j = 0; j < m; ++j)
-        o[j] = P.v[(k + 1 + j) % m];
+    SimplexVertex<T> tmp[ExpandPolygon<T>::inlineCapacity];
+    T tmpDist[ExpandPolygon<T>::inlineCapacity];
+    std::vector<SimplexVertex<T>> tmpHeap;
+    std::vector<T> tmpDistHeap;
+    SimplexVertex<T>* o = tmp;
+    T* od = tmpDist;
+    if (m > ExpandPolygon<T>::inlineCapacity)
+    {
+        tmpHeap.resize(std::size_t(m));
+        tmpDistHeap.resize(std::size_t(m));
+        o = tmpHeap.data();
+        od = tmpDistHeap.data();
+    }
+    for (int j = 0, i = k + 1; j < m; ++j, ++i)
+    {
+        if (i == m)
+            i = 0;
+        o[j] = P.v[i];
+        od[j] = P.dist[i];
+    }
     // Forward side: drop o[0], o[1], ... while the turn w -> o[j] -> o[j + 1] is not strictly left.
     int first = 0, last = m - 1; // o[last] is vertex k
     while (last - first >= 2 && cross(o[first].w - w.w, o[first + 1].w - o[first].w) <= T(0))
@@ -154,9 +188,14 @@ template <class T> void insertVertex(ExpandPolygon<T>& P, int k, const SimplexVe
     while (last - first >= 2 && cross(o[last].w - o[last - 1].w, w.w - o[last].w) <= T(0))
         --last;
     P.count = 0;
-    P.v[P.count++] = w;
-    for (int j = first; j <= last; ++j)
-        P.v[P.count++] = o[j];
+    P.v[0] = w;
+    P.dist[0] = edgeDistance(w.w, o[first].w);
+    P.count = 1;
+    for (int j = first; j <= last; ++j, ++P.count)
+    {
+        P.v[P.count] = o[j];
+        P.dist[P.count] = j < last ? od[j] : edgeDistance(o[last].w, w.w);
+    }
 }
 
 // Steps 1: a triangle (or more) around the origin from GJK's final simplex of 1 to 3 vertices,
@@ -225,17 +264,15 @@ bool seedPolygon(Shape& A, Shape& B, const Simplex<T>& s, ExpandPolygon<T>& P, E
 template <class T, class Shape>
 GJK_INLINE void expandPolygon(Shape& A, Shape& B, ExpandPolygon<T>& P, int limit, ExpandEnd& end)
 {
+    for (int j = 0; j < P.count; ++j)
+        P.dist[j] = edgeDistance(P.v[j].w, P.v[P.next(j)].w);
     for (int iteration = 0;; ++iteration)
     {
         // The closest edge (the first of equals).
         int k = 0;
-        T best = edgeDistance(P.v[0].w, P.v[1].w);
         for (int j = 1; j < P.count; ++j)
-        {
-            const T dj = edgeDistance(P.v[j].w, P.v[P.next(j)].w);
-            if (dj < best)
-                best = dj, k = j;
-        }
+            if (P.dist[j] < P.dist[k])
+                k = j;
         end.edge = k;
         if (iteration == limit)
         {
