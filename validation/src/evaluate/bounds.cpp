@@ -204,16 +204,3 @@ std::string depthBoundFormula(const VariantInfo& variant)
 
 } // namespace gjkval
 
-// TEMPORARY STUB (branch issue51-judge only, until issue51-epa is merged, which defines both):
-// helper "epa" owns depthBound and depthBoundFormula.
-namespace gjkval
-{
-double depthBound(const VariantInfo&, const CaseMetrics& m)
-{
-    return 64 * m.unitRoundoff * m.R;
-}
-std::string depthBoundFormula(const VariantInfo&)
-{
-    return "stub: 64 u R (until issue51-epa's depth bound)";
-}
-} // namespace gjkval
