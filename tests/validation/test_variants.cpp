@@ -58,7 +58,9 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "float-every-start",
                                           "double-batch",
                                           "float-batch",
-                                          "double-correct"};
+                                          "double-correct",
+                                          "double-signed",
+                                          "float-signed"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};

@@ -347,7 +347,9 @@ void classifyAnswer(VariantOutcome& v, bool truthZero, bool penetration)
         v.mis = Misclass::FalseSeparation;
     else if (!truthZero && v.distance <= 0)
         v.mis = Misclass::FalseOverlap;
-    if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
+    // Within the bound the claim is undecidable at this precision; a penetration answer's negative
+    // distance is a claim like any other (minus its depth), not an invalid one.
+    if (v.mis != Misclass::None && !v.beyondBound && (v.distance >= 0 || penetration))
         v.mis = Misclass::Undecidable;
     // The answer's own contract, first part (the witness points' distances to their shapes are
     // measured in phase 3, checkWitnesses, which may replace WitnessGap).
