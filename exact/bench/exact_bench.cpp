@@ -11,6 +11,11 @@
 //     Counter "gmp": the share of cases that took the GMP route. Small/edge-merge+gmp is the
 //     default route without its filter (Options::filter = false); Small/edge-merge-no-squared
 //     leaves the squared rational out (Options::squaredRational = false).
+//   Overlap/<options>: the same kind of pairs with centres within 1/2 of each other (about 85%
+//     overlapping), with and without Options::penetration (the signed distance and the
+//     penetration pair, docs/exact.md "Penetration depth"): "plain" (the default), "penetration",
+//     "penetration+gmp" (no filter), "no-squared" and "penetration-no-squared" (the runner's
+//     options without --per-case). Counter "depth_gmp": the share whose signed part took GMP.
 #include <gjk2d/exact.hpp>
 
 #include <benchmark/benchmark.h>
@@ -70,12 +75,13 @@ void pair(benchmark::State& state, exact::Route route)
     state.SetLabel(transformed ? "transformed" : "identity");
 }
 
-std::vector<std::pair<exact::Shape, exact::Shape>> smallCases()
+// Offsets in [-spread, spread]: 2.5 gives about 15% overlapping, 0.5 about 85%.
+std::vector<std::pair<exact::Shape, exact::Shape>> smallCases(double spread = 2.5)
 {
     std::mt19937_64 rng(2024);
     std::uniform_int_distribution<int> count(3, 8);
     std::uniform_real_distribution<double> coord(-1, 1), angle(0, 2 * std::acos(-1.0)),
-        offset(-2.5, 2.5), radius(0, 0.3);
+        offset(-spread, spread), radius(0, 0.3);
     std::vector<std::pair<exact::Shape, exact::Shape>> cases;
     for (int k = 0; k < 1024; ++k)
     {
@@ -109,6 +115,23 @@ void small(benchmark::State& state, exact::Options o)
         benchmark::DoNotOptimize(r.distance);
     }
     state.counters["gmp"] = k ? double(gmp) / double(k) : 0.0; // share of cases on the GMP route
+}
+
+void overlapping(benchmark::State& state, exact::Options o)
+{
+    static const auto cases = smallCases(0.5);
+    std::size_t k = 0, gmp = 0, overlaps = 0;
+    for (auto _ : state)
+    {
+        const auto& c = cases[k++ % cases.size()];
+        exact::Result r = exact::distance(c.first, c.second, o);
+        gmp += r.fallbacks.depth || r.fallbacks.gmp;
+        overlaps += r.overlap;
+        benchmark::DoNotOptimize(r.distance);
+        benchmark::DoNotOptimize(r.signedDistance);
+    }
+    state.counters["depth_gmp"] = k ? double(gmp) / double(k) : 0.0;
+    state.counters["overlap"] = k ? double(overlaps) / double(k) : 0.0;
 }
 
 void bruteForceSmall(benchmark::State& state)
@@ -156,6 +179,18 @@ const int registered = []
         ->Unit(benchmark::kMicrosecond);
     benchmark::RegisterBenchmark("Small/brute-force", bruteForceSmall)
         ->Unit(benchmark::kMicrosecond);
+    exact::Options pen;
+    pen.penetration = true;
+    exact::Options penGmp = pen;
+    penGmp.filter = false;
+    exact::Options penNoSquared = pen;
+    penNoSquared.squaredRational = false;
+    for (const auto& [name, o] :
+         {std::pair{"plain", exact::Options{}}, std::pair{"penetration", pen},
+          std::pair{"penetration+gmp", penGmp}, std::pair{"no-squared", noSquared},
+          std::pair{"penetration-no-squared", penNoSquared}})
+        benchmark::RegisterBenchmark((std::string("Overlap/") + name).c_str(), overlapping, o)
+            ->Unit(benchmark::kMicrosecond);
     return 0;
 }();
 

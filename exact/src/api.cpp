@@ -72,10 +72,10 @@ Result distance(const Shape& a, const Shape& b, const Options& options)
     switch (options.route)
     {
     case Route::HullOfDifferences:
-        e = detail::hullOfDifferences(a, b);
+        e = detail::hullOfDifferences(a, b, options.penetration);
         break;
     case Route::MinkowskiSum2:
-        e = detail::minkowskiSum2(a, b);
+        e = detail::minkowskiSum2(a, b, options.penetration);
         break;
     case Route::EdgeMerge:
         return detail::edgeMergeResult(a, b, options);
@@ -83,6 +83,8 @@ Result distance(const Shape& a, const Shape& b, const Options& options)
         throw std::invalid_argument("exact: unknown route");
     }
     Result r = detail::finish(e, a.radius, b.radius, options.exactWitnesses);
+    if (options.penetration)
+        detail::finishSigned(e, a.radius, b.radius, r);
     r.fallbacks.gmp = true;
     return r;
 }

@@ -143,8 +143,65 @@ Result bruteForce(const Shape& sa, const Shape& sb)
                     e.wb = x;
                 }
             }
-    e.z = {e.wb.x - e.wa.x, e.wb.y - e.wa.y};
+    e.z = {e.wa.x - e.wb.x, e.wa.y - e.wb.y}; // finish()'s z = wa - wb
     return detail::finish(e, sa.radius, sb.radius, false);
+}
+
+// Overlap: the depth is the least over unit directions n of h_Z(n) = max_i n.a_i - min_j n.b_j
+// (O inside Z: the distance from O to Z's supporting line of normal n), and that least is taken at
+// a normal of an edge of Z, which is an edge of hull(A) or of hull(B), so perpendicular to a pair
+// of distinct input points of A or of B (docs/exact.md, "Penetration depth"). Every such normal,
+// both signs, is a candidate; with no candidate (each shape a single point, the same one: Z = {O})
+// the depth is 0.
+Result bruteForceSigned(const Shape& sa, const Shape& sb)
+{
+    Result r = bruteForce(sa, sb);
+    r.hasSigned = true;
+    if (!r.overlap)
+    {
+        mpq_class q(r.squaredNum + "/" + r.squaredDen, 10);
+        q.canonicalize();
+        detail::roundSigned(q, 1, sa.radius, sb.radius, r.signedDistance, r.signedLower,
+                            r.signedUpper);
+        r.penetrationA = r.witnessA;
+        r.penetrationB = r.witnessB;
+        return r;
+    }
+    const std::vector<QPoint> a = transformed(sa), b = transformed(sb);
+    bool any = false;
+    mpq_class best = 0;
+    auto tryNormal = [&](const mpq_class& nx, const mpq_class& ny)
+    {
+        mpq_class hi = dot(nx, ny, a[0]), lo = dot(nx, ny, b[0]);
+        for (const QPoint& p : a)
+            if (const mpq_class v = dot(nx, ny, p); v > hi)
+                hi = v;
+        for (const QPoint& p : b)
+            if (const mpq_class v = dot(nx, ny, p); v < lo)
+                lo = v;
+        mpq_class h = hi - lo;
+        if (sgn(h) < 0)
+            h = 0;
+        const mpq_class v = h * h / (nx * nx + ny * ny);
+        if (!any || v < best)
+            best = v;
+        any = true;
+    };
+    for (const auto* s : {&a, &b})
+        for (std::size_t i = 0; i < s->size(); ++i)
+            for (std::size_t j = i + 1; j < s->size(); ++j)
+            {
+                const QPoint &p = (*s)[i], &q = (*s)[j];
+                if (p.x == q.x && p.y == q.y)
+                    continue;
+                tryNormal(p.y - q.y, q.x - p.x);
+                tryNormal(q.y - p.y, p.x - q.x);
+            }
+    detail::roundSigned(best, -1, sa.radius, sb.radius, r.signedDistance, r.signedLower,
+                        r.signedUpper);
+    r.depthSquaredNum = best.get_num().get_str();
+    r.depthSquaredDen = best.get_den().get_str();
+    return r; // the penetration pair left at 0 on overlap (as the overlap witnesses)
 }
 
 } // namespace exact

@@ -103,7 +103,10 @@ struct KernelPredicates
 
 // Locates the closest feature of Z and constructs the exact result; provenance(k, a, b) gives the
 // A and B points whose difference a - b is Z vertex k.
-template <class Provenance> ExactResult solve(const std::vector<P2>& z, Provenance&& provenance)
+// With wantPolygon and overlapping cores, also the whole of Z with its provenance
+// (ExactResult::polygon, for the penetration depth).
+template <class Provenance>
+ExactResult solve(const std::vector<P2>& z, Provenance&& provenance, bool wantPolygon = false)
 {
     KernelPredicates pr{z};
     const Feature f = locate(static_cast<int>(z.size()), pr);
@@ -118,7 +121,22 @@ template <class Provenance> ExactResult solve(const std::vector<P2>& z, Provenan
         bs[t] = toQ(b);
         zs[t] = {as[t].x - bs[t].x, as[t].y - bs[t].y};
     }
-    return construct(f, zs, as, bs);
+    ExactResult r = construct(f, zs, as, bs);
+    if (wantPolygon && f.overlap)
+    {
+        Polygon& poly = r.polygon;
+        for (std::size_t k = 0; k < z.size(); ++k)
+        {
+            P2 a, b;
+            provenance(static_cast<int>(k), a, b);
+            poly.a.push_back(toQ(a));
+            poly.b.push_back(toQ(b));
+            const QPoint& qa = poly.a.back();
+            const QPoint& qb = poly.b.back();
+            poly.z.push_back({qa.x - qb.x, qa.y - qb.y});
+        }
+    }
+    return r;
 }
 
 } // namespace exact::detail::cg

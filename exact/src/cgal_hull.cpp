@@ -12,7 +12,7 @@
 namespace exact::detail
 {
 
-ExactResult hullOfDifferences(const Shape& sa, const Shape& sb)
+ExactResult hullOfDifferences(const Shape& sa, const Shape& sb, bool wantPolygon)
 {
     using namespace cg;
     const std::vector<P2> a = transformAll(sa), b = transformAll(sb);
@@ -34,12 +34,14 @@ ExactResult hullOfDifferences(const Shape& sa, const Shape& sb)
     z.reserve(hull.size());
     for (std::size_t k : hull)
         z.push_back(diff[k]);
-    return solve(z,
-                 [&](int k, P2& pa, P2& pb)
-                 {
-                     pa = a[hull[k] / m];
-                     pb = b[hull[k] % m];
-                 });
+    return solve(
+        z,
+        [&](int k, P2& pa, P2& pb)
+        {
+            pa = a[hull[k] / m];
+            pb = b[hull[k] % m];
+        },
+        wantPolygon);
 }
 
 } // namespace exact::detail

@@ -99,7 +99,7 @@ std::vector<P2> minkowskiVertices(const std::vector<P2>& as, const std::vector<P
 
 } // namespace
 
-ExactResult minkowskiSum2(const Shape& sa, const Shape& sb)
+ExactResult minkowskiSum2(const Shape& sa, const Shape& sb, bool wantPolygon)
 {
     const std::vector<P2> a = transformAll(sa), b = transformAll(sb);
     const int mag = magnitude(sb, magnitude(sa, INT_MIN / 4));
@@ -121,25 +121,27 @@ ExactResult minkowskiSum2(const Shape& sa, const Shape& sb)
     const K::Less_xy_2 less;
     std::sort(sortedA.begin(), sortedA.end(),
               [&](std::size_t i, std::size_t j) { return less(as[i], as[j]); });
-    return solve(z,
-                 [&](int k, P2& pa, P2& pb)
-                 {
-                     const P2& v = z[k];
-                     for (std::size_t j : hb)
-                     {
-                         const P2 cand = bs[j] + (v - CGAL::ORIGIN);
-                         auto it = std::lower_bound(sortedA.begin(), sortedA.end(), cand,
-                                                    [&](std::size_t i, const P2& c)
-                                                    { return less(as[i], c); });
-                         if (it != sortedA.end() && as[*it] == cand)
-                         {
-                             pa = a[*it]; // unscaled
-                             pb = b[j];
-                             return;
-                         }
-                     }
-                     throw std::logic_error("exact: minkowski-sum-2 vertex without a vertex pair");
-                 });
+    return solve(
+        z,
+        [&](int k, P2& pa, P2& pb)
+        {
+            const P2& v = z[k];
+            for (std::size_t j : hb)
+            {
+                const P2 cand = bs[j] + (v - CGAL::ORIGIN);
+                auto it =
+                    std::lower_bound(sortedA.begin(), sortedA.end(), cand,
+                                     [&](std::size_t i, const P2& c) { return less(as[i], c); });
+                if (it != sortedA.end() && as[*it] == cand)
+                {
+                    pa = a[*it]; // unscaled
+                    pb = b[j];
+                    return;
+                }
+            }
+            throw std::logic_error("exact: minkowski-sum-2 vertex without a vertex pair");
+        },
+        wantPolygon);
 }
 
 } // namespace exact::detail

@@ -410,7 +410,14 @@ class Solver
     {
     }
 
-    ExactResult run() { return build(locateFeature()); }
+    ExactResult run(bool wantPolygon = false)
+    {
+        const Feature f = locateFeature();
+        ExactResult e = build(f);
+        if (wantPolygon && f.overlap)
+            e.polygon = polygon();
+        return e;
+    }
 
     // The filtered result (Options::filter): the rounded outputs in double-double where the bound
     // decides them, with the exact squared distance from the feature; else build() and finish().
@@ -427,7 +434,7 @@ class Solver
                 as[t] = a_.points[za[ids[t]]];
                 bs[t] = b_.points[zb[ids[t]]];
             }
-            if (filteredFinish(f, a_, b_, as, bs, r))
+            if (filteredFinish(f, a_, b_, as, bs, r, options.penetration))
             {
                 if (options.squaredRational)
                 {
@@ -435,15 +442,155 @@ class Solver
                     r.squaredNum = q.get_num().get_str();
                     r.squaredDen = q.get_den().get_str();
                 }
+                if (options.penetration)
+                    filteredSigned(f, options, r);
                 r.fallbacks = counts(r.fallbacks);
                 return r;
             }
         }
         Fallbacks undecided = r.fallbacks;
-        r = finish(build(f), a_.radius, b_.radius, options.exactWitnesses);
+        ExactResult e = build(f);
+        if (options.penetration && f.overlap)
+            e.polygon = polygon();
+        r = finish(e, a_.radius, b_.radius, options.exactWitnesses);
+        if (options.penetration)
+        {
+            finishSigned(e, a_.radius, b_.radius, r);
+            undecided.depth = true;
+        }
         r.fallbacks = counts(undecided);
         r.fallbacks.gmp = true;
         return r;
+    }
+
+    // Options::penetration after filteredFinish() decided the rest: separated, the signed
+    // distance filteredFinish() rounded where it could; overlapping, filteredDepth(). What they
+    // leave undecided, the GMP route (penetration.cpp) rounds, with Fallbacks::depth.
+    void filteredSigned(const Feature& f, const Options& options, Result& r)
+    {
+        if (!f.overlap)
+        {
+            if (r.hasSigned)
+            {
+                r.penetrationA = r.witnessA;
+                r.penetrationB = r.witnessB;
+                return;
+            }
+            ExactResult e;
+            e.squared = squared(f);
+            finishSigned(e, a_.radius, b_.radius, r);
+            r.fallbacks.depth = true;
+            return;
+        }
+        const int k = static_cast<int>(za.size());
+        VertexArray<Point> as(k), bs(k);
+        for (int t = 0; t < k; ++t)
+        {
+            as[t] = a_.points[za[t]];
+            bs[t] = b_.points[zb[t]];
+        }
+        ExactTies ties(*this);
+        int chosen = 0;
+        Result s;
+        if (filteredDepth(k, a_, b_, as.data(), bs.data(), ties, chosen, s))
+        {
+            r.hasSigned = true;
+            r.signedDistance = s.signedDistance;
+            r.signedLower = s.signedLower;
+            r.signedUpper = s.signedUpper;
+            r.penetrationA = s.penetrationA;
+            r.penetrationB = s.penetrationB;
+            if (options.squaredRational)
+            {
+                const mpq_class q = k == 1 ? mpq_class(0) : edgeExact(chosen).squared;
+                r.depthSquaredNum = q.get_num().get_str();
+                r.depthSquaredDen = q.get_den().get_str();
+            }
+        }
+        else
+        {
+            ExactResult e;
+            e.overlap = true;
+            e.polygon = polygon();
+            finishSigned(e, a_.radius, b_.radius, r);
+            r.fallbacks.depth = true;
+        }
+        r.fallbacks.depthTies += ties.exact;
+    }
+
+    // Edge e of Z (vertex e to e + 1), exactly: its squared line distance from O and its outward
+    // normal (D.y, -D.x) up to a positive power of two.
+    struct EdgeExact
+    {
+        mpq_class squared;
+        mpz_class nx, ny;
+    };
+    EdgeExact edgeExact(int e)
+    {
+        const int k = static_cast<int>(za.size());
+        const E2 &P = z(e), &Q = z(e + 1 == k ? 0 : e + 1);
+        const E2 D = sub(Q, P);
+        const mpz_class px = at(P.x, P.e, D.e), py = at(P.y, P.e, D.e);
+        const mpz_class qx = at(Q.x, Q.e, D.e), qy = at(Q.y, Q.e, D.e);
+        const mpz_class C = px * qy - py * qx;
+        return {toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true), D.y, -D.x};
+    }
+
+    // filteredDepth()'s near ties, decided as penetration.cpp's deepest() decides: the least
+    // squared distance, then the least outward-normal angle in [0, 2 pi).
+    class ExactTies final : public DepthTies
+    {
+      public:
+        explicit ExactTies(Solver& s) : s_(s) {}
+        int exact = 0; // comparisons made
+        int choose(const int* edges, int n) override
+        {
+            int best = edges[0];
+            EdgeExact b = s_.edgeExact(best);
+            for (int t = 1; t < n; ++t)
+            {
+                EdgeExact c = s_.edgeExact(edges[t]);
+                ++exact;
+                const int o = cmp(c.squared, b.squared);
+                if (o < 0 || (o == 0 && angleLess(c, b)))
+                {
+                    best = edges[t];
+                    b = std::move(c);
+                }
+            }
+            return best;
+        }
+
+      private:
+        Solver& s_;
+        static int half(const EdgeExact& n)
+        {
+            return (sgn(n.ny) > 0 || (sgn(n.ny) == 0 && sgn(n.nx) > 0)) ? 0 : 1;
+        }
+        static bool angleLess(const EdgeExact& n, const EdgeExact& m)
+        {
+            const int hn = half(n), hm = half(m);
+            if (hn != hm)
+                return hn < hm;
+            return cmp(n.nx * m.ny, n.ny * m.nx) > 0;
+        }
+    };
+
+    // The whole of Z with its provenance, exactly (Options::penetration with overlapping cores).
+    Polygon polygon()
+    {
+        Polygon p;
+        const std::size_t k = za.size();
+        p.z.reserve(k);
+        p.a.reserve(k);
+        p.b.reserve(k);
+        for (std::size_t t = 0; t < k; ++t)
+        {
+            p.z.push_back(toQ(z(static_cast<int>(t))));
+            p.a.push_back(toQ(A.exact(za[t])));
+            p.b.push_back(toQ(B.exact(zb[t])));
+        }
+        return p;
     }
 
     // pointDistance(): a_ is the query point (one point, identity, no radius).
@@ -869,9 +1016,9 @@ double preparedPointDistance(const PreparedData& d, Point p, bool& gmp)
     return pointDistance(q, d.shape, gmp);
 }
 
-ExactResult edgeMerge(const Shape& a, const Shape& b)
+ExactResult edgeMerge(const Shape& a, const Shape& b, bool wantPolygon)
 {
-    return Solver(a, b).run();
+    return Solver(a, b).run(wantPolygon);
 }
 
 double pointDistance(const Shape& point, const Shape& shape, bool& gmp)
@@ -883,7 +1030,10 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options)
 {
     if (options.filter)
         return Solver(a, b).runFiltered(options);
-    Result r = finish(edgeMerge(a, b), a.radius, b.radius, options.exactWitnesses);
+    const ExactResult e = edgeMerge(a, b, options.penetration);
+    Result r = finish(e, a.radius, b.radius, options.exactWitnesses);
+    if (options.penetration)
+        finishSigned(e, a.radius, b.radius, r);
     r.fallbacks.gmp = true;
     return r;
 }
@@ -893,7 +1043,10 @@ Result edgeMergeResult(const PreparedData& a, const PreparedData& b, const Optio
     Solver solver(a, b);
     if (options.filter)
         return solver.runFiltered(options);
-    Result r = finish(solver.run(), a.shape.radius, b.shape.radius, options.exactWitnesses);
+    const ExactResult e = solver.run(options.penetration);
+    Result r = finish(e, a.shape.radius, b.shape.radius, options.exactWitnesses);
+    if (options.penetration)
+        finishSigned(e, a.shape.radius, b.shape.radius, r);
     r.fallbacks.gmp = true;
     return r;
 }

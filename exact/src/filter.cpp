@@ -10,6 +10,8 @@
 #include "expansion.hpp"
 #include "internal.hpp"
 
+#include <boost/container/small_vector.hpp>
+
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -439,10 +441,27 @@ bool roundShifted(const V& w, double rho, const V& zc, const V& s, double& out)
     return roundTo(add(w, mul(exactly(rho), div(zc, s))), out);
 }
 
-// Correctly rounded max(0, sqrt(q) - rA - rB) with its tight enclosure (finish.cpp).
-bool roundDistance(const V& s, double rA, double rB, Result& r)
+// Correctly rounded value of v with its tight enclosure (finish.cpp's roundSigned()): roundTo()
+// and the side of the exact value, which must be known (a double's neighbour, or the double).
+bool roundEnclosed(const V& v, double& value, double& lower, double& upper)
+{
+    int side = 2;
+    if (!roundTo(v, value, &side) || side == 2)
+        return false;
+    lower = side < 0 ? std::nextafter(value, -HUGE_VAL) : value;
+    upper = side > 0 ? std::nextafter(value, HUGE_VAL) : value;
+    return true;
+}
+
+// Correctly rounded max(0, sqrt(q) - rA - rB) with its tight enclosure (finish.cpp). With
+// `signedOut` (Options::penetration), also sqrt(q) - rA - rB unclamped, when decided (else
+// `signedOut->hasSigned` stays false: the caller's GMP rounds it).
+bool roundDistance(const V& s, double rA, double rB, Result& r, Result* signedOut = nullptr)
 {
     const V d = sub(s, add(exactly(rA), exactly(rB)));
+    if (signedOut)
+        signedOut->hasSigned = roundEnclosed(d, signedOut->signedDistance, signedOut->signedLower,
+                                             signedOut->signedUpper);
     double h, l;
     twoSum(d.h, d.l, h, l);
     const bool exactNonPositive = d.e == 0 && (h < 0 || (h == 0 && l <= 0));
@@ -822,7 +841,7 @@ int zSignExact(ZPredicate kind, Point p, const Shape& B, Point bi, Point bj)
 }
 
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
-                    const Point* bs, Result& r)
+                    const Point* bs, Result& r, bool penetration)
 {
     const int count = f.kind == Feature::Vertex ? 1 : f.kind == Feature::Edge ? 2 : 3;
     P2 a[3], b[3];
@@ -844,7 +863,7 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
     if (r.fallbacks.squared)
         return false;
     const V& s = c.s;
-    r.fallbacks.distance = !roundDistance(s, A.radius, B.radius, r);
+    r.fallbacks.distance = !roundDistance(s, A.radius, B.radius, r, penetration ? &r : nullptr);
     if (r.fallbacks.distance)
         return false;
     r.fallbacks.witness = !(roundShifted(c.wa.x, -A.radius, c.z.x, s, r.witnessA.x) &&
@@ -852,6 +871,94 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
                             roundShifted(c.wb.x, B.radius, c.z.x, s, r.witnessB.x) &&
                             roundShifted(c.wb.y, B.radius, c.z.y, s, r.witnessB.y));
     return !r.fallbacks.witness;
+}
+
+// ---------------------------------------------------------------- penetration depth
+//
+// filteredDepth (docs/exact.md, "Penetration depth", "The filter"): the signed distance and the
+// penetration pair of overlapping cores from the whole of Z, in the double-double operations
+// above. Each edge P -> Q (D = Q - P) has its squared line distance C^2 / L (C = P x D, L = |D|^2)
+// as a V with its bound; the least is chosen when its interval lies below every other edge's, else
+// among the edges whose intervals reach it by the caller's exact comparison (ties). Then, for the
+// chosen edge: the signed value -(C / sqrt(L) + rA + rB), the foot parameter t = -(P . D) / L, the
+// hull points a + t (a' - a) and b + t (b' - b), and the pair moved by the radii along
+// N / sqrt(L), N = (D.y, -D.x): each rounded by roundTo() as above, so equal to penetration.cpp's
+// MPFR roundings of the same reals wherever decided.
+
+namespace
+{
+// [lo, hi] holding the exact value of v (its rounding, |l| and e, with a relative margin).
+void bounds(const V& v, double& lo, double& hi)
+{
+    const double spread = (std::fabs(v.l) + v.e) * kUp + 0x1p-50 * std::fabs(v.h);
+    lo = v.h - spread;
+    hi = v.h + spread;
+}
+} // namespace
+
+bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const Point* bs,
+                   DepthTies& ties, int& chosen, Result& r)
+{
+    const double rA = A.radius, rB = B.radius;
+    const V radii = add(exactly(rA), exactly(rB)); // exact: two doubles' sum
+    boost::container::small_vector<P2, 16> a(k), b(k), z(k);
+    for (int t = 0; t < k; ++t)
+    {
+        a[t] = transform(A, as[t]);
+        b[t] = transform(B, bs[t]);
+        z[t] = sub(a[t], b[t]);
+    }
+    if (k == 1)
+    { // Z = {O}: depth 0, n = (1, 0)
+        chosen = 0;
+        return roundEnclosed(neg(radii), r.signedDistance, r.signedLower, r.signedUpper) &&
+               roundTo(add(a[0].x, exactly(rA)), r.penetrationA.x) &&
+               roundTo(a[0].y, r.penetrationA.y) &&
+               roundTo(sub(b[0].x, exactly(rB)), r.penetrationB.x) &&
+               roundTo(b[0].y, r.penetrationB.y);
+    }
+    boost::container::small_vector<double, 16> lo(k), hi(k);
+    int best = 0;
+    double bestH = 0;
+    for (int e = 0; e < k; ++e)
+    {
+        const P2 d = sub(z[e + 1 == k ? 0 : e + 1], z[e]);
+        const V C = cross(z[e], d);
+        const V dd = div(mul(C, C), dot(d, d));
+        bounds(dd, lo[e], hi[e]);
+        if (!std::isfinite(lo[e]) || !std::isfinite(hi[e]))
+            return false;
+        if (e == 0 || dd.h < bestH)
+        {
+            best = e;
+            bestH = dd.h;
+        }
+    }
+    boost::container::small_vector<int, 16> near;
+    for (int e = 0; e < k; ++e)
+        if (lo[e] <= hi[best])
+            near.push_back(e);
+    chosen = near.size() == 1 ? best : ties.choose(near.data(), static_cast<int>(near.size()));
+    const int e = chosen, g = e + 1 == k ? 0 : e + 1;
+    const P2 d = sub(z[g], z[e]);
+    const V L = dot(d, d);
+    const V C = cross(z[e], d); // >= 0: O is inside or on the edge's left
+    V depth;
+    if (isExact(C) && C.h == 0)
+        depth = exactly(0);
+    else if (std::fabs(C.h) * (1 - 0x1p-50) > C.e && C.h > 0)
+        depth = div(C, sqrtV(L));
+    else
+        return false; // within its bound of 0 (touching): the GMP route
+    if (!roundEnclosed(neg(add(depth, radii)), r.signedDistance, r.signedLower, r.signedUpper))
+        return false;
+    const V t = div(neg(dot(z[e], d)), L);
+    const P2 wa = along(a[e], a[g], t), wb = along(b[e], b[g], t);
+    const V s = sqrtV(L), nx = d.y, ny = neg(d.x);
+    return roundShifted(wa.x, rA, nx, s, r.penetrationA.x) &&
+           roundShifted(wa.y, rA, ny, s, r.penetrationA.y) &&
+           roundShifted(wb.x, -rB, nx, s, r.penetrationB.x) &&
+           roundShifted(wb.y, -rB, ny, s, r.penetrationB.y);
 }
 
 } // namespace exact::detail

@@ -88,6 +88,14 @@ bool sqrtIsRational(const mpq_class& q, mpq_class& root)
     return true;
 }
 
+QPoint canonical(const QPoint& p)
+{
+    QPoint c = p;
+    c.x.canonicalize();
+    c.y.canonicalize();
+    return c;
+}
+
 [[noreturn]] void precisionExhausted()
 {
     throw std::logic_error(
@@ -214,7 +222,77 @@ void roundDistanceImpl(const mpq_class& q, double rA, double rB, const mpq_class
     precisionExhausted();
 }
 
+// Correctly rounded sigma sqrt(q) - rA - rB (sigma = +1 or -1, q >= 0), unclamped, with its tight
+// enclosure: the signed distance (Options::penetration). The same scheme as roundDistanceImpl():
+// an exact rational when sqrt(q) is one (the only way the value can be a double or a midpoint),
+// else an MPFR interval refined until both ends round alike and the enclosing doubles are adjacent.
+void roundSignedImpl(const mpq_class& q, int sigma, double rA, double rB, double& value,
+                     double& lower, double& upper)
+{
+    mpq_class root;
+    if (sgn(q) == 0 || sqrtIsRational(q, root))
+    {
+        if (sgn(q) == 0)
+            root = 0;
+        const mpq_class v = (sigma > 0 ? root : mpq_class(-root)) - mpq_class(rA) - mpq_class(rB);
+        value = roundToDouble(v);
+        encloseQ(v, lower, upper);
+        return;
+    }
+    SqrtEnclosure sq(q);
+    for (mpfr_prec_t p = kStartPrecision; p <= kMaxPrecision; p *= 2)
+    {
+        const Iv& s = sq.at(p);
+        Iv v(p);
+        if (sigma > 0)
+        {
+            mpfr_set(v.lo.v, s.lo.v, MPFR_RNDD);
+            mpfr_set(v.hi.v, s.hi.v, MPFR_RNDU);
+        }
+        else
+        {
+            mpfr_neg(v.lo.v, s.hi.v, MPFR_RNDD);
+            mpfr_neg(v.hi.v, s.lo.v, MPFR_RNDU);
+        }
+        mpfr_sub_d(v.lo.v, v.lo.v, rA, MPFR_RNDD);
+        mpfr_sub_d(v.lo.v, v.lo.v, rB, MPFR_RNDD);
+        mpfr_sub_d(v.hi.v, v.hi.v, rA, MPFR_RNDU);
+        mpfr_sub_d(v.hi.v, v.hi.v, rB, MPFR_RNDU);
+        double out;
+        if (!agree(v, out))
+            continue;
+        lower = mpfr_get_d(v.lo.v, MPFR_RNDD);
+        upper = mpfr_get_d(v.hi.v, MPFR_RNDU);
+        // Irrational, so strictly between two adjacent doubles (or beyond +-DBL_MAX, then one end
+        // is infinite): refine until the interval says which two.
+        if (std::isfinite(upper) && std::isfinite(lower) &&
+            upper != std::nextafter(lower, HUGE_VAL))
+            continue;
+        value = out;
+        return;
+    }
+    precisionExhausted();
+}
+
 } // namespace
+
+void roundSigned(const mpq_class& q, int sigma, double rA, double rB, double& value, double& lower,
+                 double& upper)
+{
+    roundSignedImpl(q, sigma, rA, rB, value, lower, upper);
+}
+
+void roundPair(const QPoint& a, const QPoint& b, const QPoint& n, double rA, double rB, Point& pA,
+               Point& pB)
+{
+    const QPoint ac = canonical(a), bc = canonical(b), nc = canonical(n);
+    const mpq_class q = nc.x * nc.x + nc.y * nc.y; // > 0
+    mpq_class root;
+    const mpq_class* rootp = sqrtIsRational(q, root) ? &root : nullptr;
+    SqrtEnclosure sq(q);
+    pA = {roundShifted(ac.x, rA, nc.x, rootp, sq), roundShifted(ac.y, rA, nc.y, rootp, sq)};
+    pB = {roundShifted(bc.x, -rB, nc.x, rootp, sq), roundShifted(bc.y, -rB, nc.y, rootp, sq)};
+}
 
 double roundToDouble(const mpq_class& q)
 {
@@ -258,17 +336,6 @@ std::string toString(const mpq_class& q)
         return q.get_num().get_str();
     return q.get_num().get_str() + "/" + q.get_den().get_str();
 }
-
-namespace
-{
-QPoint canonical(const QPoint& p)
-{
-    QPoint c = p;
-    c.x.canonicalize();
-    c.y.canonicalize();
-    return c;
-}
-} // namespace
 
 // mpfr_set_q only divides numerator by denominator, so the unreduced coordinates of ExactResult
 // round correctly as they are; mpq arithmetic and strings get reduced copies.

@@ -7,6 +7,7 @@
 #include <gmpxx.h>
 
 #include <stdexcept>
+#include <vector>
 
 namespace exact::detail
 {
@@ -16,9 +17,19 @@ struct QPoint
     mpq_class x, y;
 };
 
+// Z = hull(A) - hull(B) as a route built it: its vertices counterclockwise (no three collinear; one
+// vertex for a point, two for a segment), each with its provenance: z[k] = a[k] - b[k], a[k] a
+// vertex of hull(A) and b[k] one of hull(B). Canonical rationals. Filled for Options::penetration
+// when the cores overlap (the depth needs every edge of Z, the distance only the located feature).
+struct Polygon
+{
+    std::vector<QPoint> z, a, b;
+};
+
 // What every route computes, exactly: the rest of Result is derived from it by finish().
 struct ExactResult
 {
+    Polygon polygon; // Options::penetration and overlap only (else empty)
     bool overlap = false;
     mpq_class squared; // canonical
     QPoint z; // closest point of Z = hull(A) - hull(B) to the origin (zero when overlapping); z =
@@ -39,8 +50,34 @@ void roundDistance(const mpq_class& q, double rA, double rB, double& value, doub
 
 std::string toString(const mpq_class& q); // "num" or "num/den"
 
+// ---------------------------------------------------------------- penetration (penetration.cpp)
+
+// Correctly rounded sigma sqrt(q) - rA - rB (sigma = +1 or -1, q >= 0), not clamped, with its tight
+// enclosure (finish.cpp).
+void roundSigned(const mpq_class& q, int sigma, double rA, double rB, double& value, double& lower,
+                 double& upper);
+// Correctly rounded a + rA n/|n| and b - rB n/|n|, coordinate by coordinate; n != 0 (finish.cpp).
+void roundPair(const QPoint& a, const QPoint& b, const QPoint& n, double rA, double rB, Point& pA,
+               Point& pB);
+
+// The depth of the origin in Z (overlap): the closest edge's line (docs/exact.md, "Penetration
+// depth"), the edge chosen among equally close ones by the least angle in [0, 2 pi) of its outward
+// normal; its squared distance, an outward normal (not unit), the foot point's decomposition
+// a - b (a on hull(A), b on hull(B), dividing A's and B's edges in the ratio the foot divides Z's).
+struct Depth
+{
+    mpq_class squared;
+    QPoint normal;
+    QPoint a, b;
+};
+Depth deepest(const Polygon& z);
+// The signed fields of r (Options::penetration) from e: cores apart, from e.squared and r's
+// witnesses (already rounded); overlapping, from e.polygon.
+void finishSigned(const ExactResult& e, double rA, double rB, Result& r);
+
 // The three routes. Inputs are validated by the caller.
-ExactResult edgeMerge(const Shape& a, const Shape& b);
+// wantPolygon: fill ExactResult::polygon when the cores overlap (Options::penetration).
+ExactResult edgeMerge(const Shape& a, const Shape& b, bool wantPolygon = false);
 // Route EdgeMerge to the end: with options.filter, the rounded outputs from filteredFinish() where
 // it decides them and the exact squared distance from the located feature; otherwise (and when
 // it does not decide) edgeMerge() and finish(). Fills Result::fallbacks.
@@ -48,8 +85,8 @@ Result edgeMergeResult(const Shape& a, const Shape& b, const Options& options);
 // The same from prepared shapes (exact::PreparedShape): their hulls, not made again; the same
 // result, fallback counts included.
 Result edgeMergeResult(const PreparedData& a, const PreparedData& b, const Options& options);
-ExactResult hullOfDifferences(const Shape& a, const Shape& b);
-ExactResult minkowskiSum2(const Shape& a, const Shape& b);
+ExactResult hullOfDifferences(const Shape& a, const Shape& b, bool wantPolygon = false);
+ExactResult minkowskiSum2(const Shape& a, const Shape& b, bool wantPolygon = false);
 
 // ----------------------------------------------------------------------------------------------
 // Closest feature of a convex polygon Z (vertices v_0..v_{k-1}, counterclockwise, no repeated
@@ -179,8 +216,28 @@ template <class Pr> Feature locate(int k, Pr& pr)
 // below) are the differences of input points as[t] of A and bs[t] of B, computed in double-double
 // with an error bound. True when every rounding is decided; false otherwise, with
 // r.fallbacks.{squared, distance, witness} saying which was not.
+// With `penetration` and separated cores, also the unclamped signed distance (and its enclosure)
+// where the bound decides it: then r.hasSigned (else the caller rounds it with GMP).
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
-                    const Point* bs, Result& r);
+                    const Point* bs, Result& r, bool penetration = false);
+
+// The caller's exact choice among near-tied edges of filteredDepth(): edges[0..n) (edge e runs from
+// Z vertex e to e + 1), the one penetration.cpp's deepest() would choose (least squared distance,
+// then least outward-normal angle).
+class DepthTies
+{
+  public:
+    virtual int choose(const int* edges, int n) = 0;
+
+  protected:
+    ~DepthTies() = default;
+};
+// filter.cpp: overlapping cores, Z's k vertices (counterclockwise, as merge() made them) the
+// differences of input points as[t] of A and bs[t] of B: the signed distance, its enclosure and
+// the penetration pair of r, in double-double with error bounds; `chosen` the closest edge (0 when
+// k = 1). True when every rounding is decided (r's other fields untouched); false: the GMP route.
+bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const Point* bs,
+                   DepthTies& ties, int& chosen, Result& r);
 
 // filter.cpp: max(0, dist(p, hull(B)) - B.radius), correctly rounded to nearest, for the located
 // feature f of Z = {p} - hull(B) (p in the world frame; bs: B's input points of the feature's Z

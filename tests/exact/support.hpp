@@ -218,4 +218,36 @@ inline std::vector<std::string> differentFields(const exact::Result& r, const ex
     return out;
 }
 
+inline bool sameBits(double x, double y)
+{
+    return std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+// The signed fields (Options::penetration) in which r and s differ, bit for bit (the pair only
+// when `pair`).
+inline std::vector<std::string> differentSigned(const exact::Result& r, const exact::Result& s,
+                                                bool pair)
+{
+    std::vector<std::string> out;
+    auto field = [&out](bool equal, const char* name)
+    {
+        if (!equal)
+            out.push_back(name);
+    };
+    field(r.hasSigned == s.hasSigned, "hasSigned");
+    field(sameBits(r.signedDistance, s.signedDistance), "signedDistance");
+    field(sameBits(r.signedLower, s.signedLower), "signedLower");
+    field(sameBits(r.signedUpper, s.signedUpper), "signedUpper");
+    field(r.depthSquaredNum == s.depthSquaredNum, "depthSquaredNum");
+    field(r.depthSquaredDen == s.depthSquaredDen, "depthSquaredDen");
+    if (pair)
+    {
+        field(sameBits(r.penetrationA.x, s.penetrationA.x), "penetrationA.x");
+        field(sameBits(r.penetrationA.y, s.penetrationA.y), "penetrationA.y");
+        field(sameBits(r.penetrationB.x, s.penetrationB.x), "penetrationB.x");
+        field(sameBits(r.penetrationB.y, s.penetrationB.y), "penetrationB.y");
+    }
+    return out;
+}
+
 } // namespace exact_test

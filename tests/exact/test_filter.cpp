@@ -24,14 +24,29 @@ std::uint64_t bits(double v)
 }
 
 // Filtered (the default) and forced-GMP results of one case, field by field; returns the filtered
-// result.
-Result filteredEqualsExact(const Shape& a, const Shape& b)
+// result. With `penetration`, the same with Options::penetration, the signed fields and the pair
+// included (and the rest as without it), filtered depth counted in *depthGmp.
+Result filteredEqualsExact(const Shape& a, const Shape& b, bool penetration = true,
+                           int* depthGmp = nullptr)
 {
     Options exactOnly;
     exactOnly.filter = false;
     const Result f = exact::distance(a, b), e = exact::distance(a, b, exactOnly);
     CHECK(e.fallbacks.gmp);
     CHECK(exact_test::differentFields(f, e).empty());
+    if (penetration)
+    {
+        Options p;
+        p.penetration = true;
+        exactOnly.penetration = true;
+        const Result fp = exact::distance(a, b, p), ep = exact::distance(a, b, exactOnly);
+        CHECK(fp.hasSigned);
+        CHECK(exact_test::differentFields(fp, e).empty());
+        CHECK(exact_test::differentFields(ep, e).empty());
+        CHECK(exact_test::differentSigned(fp, ep, true).empty());
+        if (depthGmp)
+            *depthGmp += fp.fallbacks.depth;
+    }
     return f;
 }
 
@@ -123,7 +138,7 @@ TEST_CASE("the filter decides ordinary random cases itself", "[exact][filter]")
     std::uniform_real_distribution<double> u(-1, 1), angle(0, 6.283185307179586), off(-2.5, 2.5);
     std::uniform_int_distribution<int> n(3, 8);
     const int count = 4000;
-    int gmp = 0;
+    int gmp = 0, depthGmp = 0;
     for (int k = 0; k < count; ++k)
     {
         Shape s[2];
@@ -136,9 +151,38 @@ TEST_CASE("the filter decides ordinary random cases itself", "[exact][filter]")
             sh.px = off(rng), sh.py = off(rng);
             sh.radius = k % 2 ? 0.3 * std::fabs(u(rng)) : 0.0;
         }
-        gmp += filteredEqualsExact(s[0], s[1]).fallbacks.gmp;
+        gmp += filteredEqualsExact(s[0], s[1], true, &depthGmp).fallbacks.gmp;
     }
     CHECK(gmp * 1000 < count);
+    CHECK(depthGmp * 1000 < count);
+}
+
+TEST_CASE("the filter decides the depth of ordinary overlapping cases itself",
+          "[exact][filter][penetration]")
+{
+    // As above with the shapes' centres within 1/2 of each other (most cases overlap): the signed
+    // distance and the pair are to leave fewer than 1 in 1,000 to GMP.
+    std::mt19937_64 rng(51);
+    std::uniform_real_distribution<double> u(-1, 1), angle(0, 6.283185307179586), off(-0.5, 0.5);
+    std::uniform_int_distribution<int> n(3, 8);
+    const int count = 4000;
+    int overlaps = 0, depthGmp = 0;
+    for (int k = 0; k < count; ++k)
+    {
+        Shape s[2];
+        for (Shape& sh : s)
+        {
+            for (int i = n(rng); i > 0; --i)
+                sh.points.push_back({u(rng), u(rng)});
+            const double t = angle(rng);
+            sh.c = std::cos(t), sh.s = std::sin(t);
+            sh.px = off(rng), sh.py = off(rng);
+            sh.radius = k % 2 ? 0.3 * std::fabs(u(rng)) : 0.0;
+        }
+        overlaps += filteredEqualsExact(s[0], s[1], true, &depthGmp).overlap;
+    }
+    CHECK(overlaps * 4 > count * 3);
+    CHECK(depthGmp * 1000 < count);
 }
 
 TEST_CASE("the squared rational is left out only when not asked for", "[exact][filter]")

@@ -72,6 +72,10 @@ struct Fallbacks
         false; // the rounded distance (or its clamp at 0, or its enclosure) was undecided
     bool witness = false; // a rounded witness coordinate was undecided
     bool gmp = false;     // the rounded outputs came from the GMP/MPFR route
+    // Options::penetration (docs/exact.md, "Penetration depth"):
+    int depthTies = 0;  // closest-edge comparisons the error bounds left to exact integers
+    bool depth = false; // the signed distance or the penetration pair was undecided by the
+                        // filter: they came from GMP/MPFR
 };
 
 struct Result
@@ -107,7 +111,8 @@ struct Result
            signedUpper = 0; // enclosing doubles of the exact signed distance, as lower/upper
     std::string depthSquaredNum,
         depthSquaredDen; // overlap only: the cores' exact squared depth, lowest terms ("0"/"1"
-                         // when touching); empty when the cores are apart
+                         // when touching); empty when the cores are apart, and (as squaredNum)
+                         // where the filter decided and Options::squaredRational is false
     // The penetration pair, world frame, each coordinate correctly rounded to nearest: pA on A's
     // rounded boundary, pB on B's, pA - pB the minimal translation of B to contact (the signed
     // distance is -|pA - pB| on overlap). Cores apart: witnessA, witnessB (moved by the radii).
@@ -187,7 +192,9 @@ Result bruteForce(const Shape& a, const Shape& b);
 // Independent brute force of the signed distance (plain GMP rationals, no hull construction): on
 // overlap, the least over every candidate edge normal n (perpendicular to a pair of points of A or
 // of B) of h_Z(n)^2 / |n|^2, h_Z the support function of hull(A) - hull(B); apart, bruteForce's
-// distance. Fills everything bruteForce fills plus the signed fields and the penetration pair.
+// distance. Fills everything bruteForce fills plus hasSigned, signedDistance, signedLower,
+// signedUpper and depthSquaredNum/Den; the penetration pair only when the cores are apart (the
+// witnesses, as distance() gives them), left at 0 on overlap (as bruteForce's witnesses).
 // Small inputs only.
 Result bruteForceSigned(const Shape& a, const Shape& b);
 

@@ -43,13 +43,14 @@ bool parseOverlap(const std::string& word, Overlap& out)
     return false;
 }
 
-Contract ownContract()
+Contract ownContract(const gjk::Options& options)
 {
     Contract c;
     c.own = true;
-    c.overlap = Overlap::CommonPoint;
+    c.overlap = options.signedDistance ? Overlap::Penetration : Overlap::CommonPoint;
     c.toleranceSource = "gjk2d's a-priori bound (docs/error-bound.md)";
-    c.overlapSource = "gjk2d/distance.hpp, DistanceOutput";
+    c.overlapSource = options.signedDistance ? "gjk2d/types.hpp, Options::signedDistance"
+                                             : "gjk2d/distance.hpp, DistanceOutput";
     return c;
 }
 
@@ -74,8 +75,10 @@ std::string checkContract(const Contract& c)
 
 const Contract& contractOf(const VariantInfo& v)
 {
-    static const Contract own = ownContract();
-    return v.plugin ? v.plugin->contract : own;
+    static const Contract own = ownContract(), ownSigned = ownContract({.signedDistance = true});
+    if (v.plugin)
+        return v.plugin->contract;
+    return v.options.signedDistance ? ownSigned : own;
 }
 
 std::string judgedBy(const VariantInfo& v)

@@ -57,8 +57,10 @@ struct Contract
     bool operator==(const Contract&) const = default;
 };
 
-// gjk2d's own: what its variants, version-1 plugins and version-1 adapters are held to.
-Contract ownContract();
+// gjk2d's own: what its variants, version-1 plugins and version-1 adapters are held to. With
+// Options::signedDistance its overlap answer is Penetration (minus the depth, a penetration pair),
+// the depth held to gjk2d's depth bound (evaluate/bounds.hpp, depthBound): no depth clause stated.
+Contract ownContract(const gjk::Options& options = {});
 // A plugin's declared contract (version 2), checked: InputError-worthy problems are returned as
 // one line ("" when it is sound): an unknown overlap kind, a non-finite or negative margin, a
 // NaN tolerance, a non-finite depth tolerance, or a depth tolerance on a contract whose overlap is
