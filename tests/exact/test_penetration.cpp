@@ -462,7 +462,7 @@ TEST_CASE("penetration: bruteForceSigned fields")
     CHECK_THROWS_AS(exact::bruteForceSigned(Shape{}, square(0, 0, 1, 1)), std::invalid_argument);
 }
 
-TEST_CASE("penetration: the filter decides plain overlaps; the depth rational only when asked for")
+TEST_CASE("penetration: the filter decides plain overlaps, the depth rational only when asked for")
 {
     // The first case again under an inexact rotation (0.6, 0.8) of both shapes: the filter is to
     // decide it (no GMP), and with Options::squaredRational = false leave both rationals out.
