@@ -308,12 +308,25 @@ Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
 {
     const SimplexVertex<T>& v1 = P.v[k];
     const SimplexVertex<T>& v2 = P.v[P.next(k)];
-    const Vec2<T> e = edgeOfSafeSize(v2.w - v1.w);
+    const Vec2<T> e12 = v2.w - v1.w;
+    const Vec2<T> e = edgeOfSafeSize(e12); // e12 times a power of two
     const T len = length(e);
-    const T ee = dot(e, e);
+    // The projection's weight dot(-v1, e12) / |e12|^2, with the scaled e in both numerator and
+    // denominator (the power of two cancels; a tiny edge's own square would underflow).
+    const T ee = dot(e, e12);
     T t = ee > T(0) ? dot(-v1.w, e) / ee : T(0);
     t = std::clamp(t, T(0), T(1));
     Answer<T> a;
+    if (!(len > T(0))) // every edge of length 0 (the polygon collapsed to a point): depth 0
+    {
+        a.pointA = v1.wA;
+        a.pointB = v1.wB;
+        a.normal = {T(1), T(0)};
+        weights.count = 1;
+        weights.v[0] = v1;
+        weights.v[0].a = T(1);
+        return a;
+    }
     a.distance = std::max(cross(v1.w, e) / len, T(0));
     a.normal = (T(1) / len) * rightPerp(e);
     a.pointA = (T(1) - t) * v1.wA + t * v2.wA;
