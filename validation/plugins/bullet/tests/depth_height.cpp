@@ -13,6 +13,9 @@
 //     tests/plugins/bullet_depth_height_double /tmp/r.json
 //     tests/plugins/bullet_depth_height_float /tmp/r.json
 //
+// --depths prints each overlapping case's brute-force 2D depth instead (name, depth), to set
+// beside the exact side's.
+//
 // Columns, per rule: the overlapping cases answered within 1e-9 (relative, or absolute below a
 // depth of 1) of the 2D depth; those short of it by more; those answered no penetration at all
 // (depth 0 or less: Bullet's EPA ending on InvalidHull at a first face through the origin); the
@@ -304,9 +307,10 @@ int checkAdapter(const std::vector<Overlapping>& cases, std::size_t n, const std
 
 int main(int argc, char** argv)
 {
-    const char* usage = "usage: bullet_depth_height_{float,double} CASES.json [--check N --plugin "
-                        "gjk2d-bullet-{float,double}.so]\n";
-    if (argc != 2 && argc != 6)
+    const char* usage = "usage: bullet_depth_height_{float,double} CASES.json [--depths | --check N "
+                        "--plugin gjk2d-bullet-{float,double}.so]\n";
+    const bool depths = argc == 3 && std::string(argv[2]) == "--depths";
+    if (argc != 2 && argc != 6 && !depths)
     {
         std::fprintf(stderr, "%s", usage);
         return 2;
@@ -324,6 +328,12 @@ int main(int argc, char** argv)
     }
     if (argc == 6)
         return checkAdapter(cases, std::size_t(std::atoi(argv[3])), argv[5]) == 0 ? 0 : 1;
+    if (depths) // the brute-force 2D depths, to set beside the exact side's
+    {
+        for (const Overlapping& o : cases)
+            std::printf("%s %.17g\n", o.c->name.c_str(), o.depth);
+        return 0;
+    }
     std::printf("%s: %zu overlapping cases of %s (2D depth > 0 by brute force)\n", kVariant,
                 cases.size(), argv[1]);
     std::printf("%-30s %6s %6s %5s %11s %11s %11s %10s %6s\n", "half height", "within", "short",
