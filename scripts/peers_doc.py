@@ -34,7 +34,9 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 TITLE = "# How accurate are the distance queries people use?"
 BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
 DEFAULT_CAMPAIGN = "default campaign (run without --family and --cases): "  # `list`'s line
-GJK2D_ROWS = ["double", "float"]  # gjk2d's reference variants, shown beside the peers
+# gjk2d's reference variants, and its signed ones (issue 51: a penetration contract, beside the
+# peers' EPA), shown beside the peers
+GJK2D_ROWS = ["double", "float", "double-signed", "float-signed"]
 
 
 def fail(code, message):
@@ -215,7 +217,8 @@ def timing_table(report, peers):
 def verdict_table(report, peers, command):
     out = ["### Contract violations and accuracy", "",
            f"Per variant and family group, from `{command}`. Rows of gjk2d's reference variants "
-           "(double, float) are there to compare with.", "",
+           "(double, float) and signed ones (double-signed, float-signed) are there to compare "
+           "with.", "",
            "| variant | family group | cases | refused | breaks its contract | why | outside "
            "gjk2d's bound, keeps its contract | false overlaps | false "
            "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
@@ -248,8 +251,7 @@ def verdict_table(report, peers, command):
 def depth_table(report, peers):
     """The penetration depth beside the distance (report.json Stats `penetration`): each variant
     whose contract says penetration, per family group."""
-    names = [v for v in ["double-signed", "float-signed"] + peers
-             if any(x["name"] == v for x in report["variants"])]
+    names = [v for v in GJK2D_ROWS + peers if any(x["name"] == v for x in report["variants"])]
     rows = [(v, r) for v in names for r in group_rows(report, v) if r["penetration"]]
     if not rows:
         return []
