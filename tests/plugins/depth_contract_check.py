@@ -9,8 +9,10 @@ handshake allows). C is adapters/contract_cases.json. Checked in report.json's v
   toy-depth  contract.overlap "penetration", contract.depth {"abs": 1e-3, "rel": null, "source":
              "tests/plugins/adapters/toy.py"}, judged_by_depth "its stated tolerance: abs 0.001,
              rel none (tests/plugins/adapters/toy.py)";
-  double     contract.depth all unstated ({null, null, ""}), judged_by_depth "gjk2d's own
-             contract: gjk2d's depth bound for double".
+  double     contract.depth all unstated ({null, null, ""}), judged_by_depth "no depth answered
+             (overlap common-point)";
+  double-signed  its own contract's overlap penetration, judged_by_depth "gjk2d's own contract:
+             gjk2d's depth bound for double".
 With --bridge (the adapter bridge) and --so (a shipped plugin exporting gjk2d_plugin_depth, whose
 implementation is N): the plugin loaded as a shared library and through the bridge gives the same
 contract.depth, so the ABI's clause and the protocol's line carry the same facts.
@@ -53,7 +55,7 @@ def main():
     for k in ("--bridge", "--so", "--so-name"):
         ap.add_argument(k)
     a = ap.parse_args()
-    v = variants(a, os.path.join(a.work, "adapter"), "double,toy-depth", a.adapter)
+    v = variants(a, os.path.join(a.work, "adapter"), "double,double-signed,toy-depth", a.adapter)
     c = v["toy-depth"]["contract"]
     source = "tests/plugins/adapters/toy.py"
     check(c["overlap"] == "penetration", "toy-depth overlap {}".format(c["overlap"]))
@@ -65,8 +67,12 @@ def main():
     d = v["double"]["contract"]
     check(d["depth"] == {"abs": None, "rel": None, "source": ""},
           "double contract.depth {}".format(d["depth"]))
-    check(d["judged_by_depth"] == "gjk2d's own contract: gjk2d's depth bound for double",
+    check(d["judged_by_depth"] == "no depth answered (overlap common-point)",
           "double judged_by_depth {!r}".format(d["judged_by_depth"]))
+    ds = v["double-signed"]["contract"]
+    check(ds["overlap"] == "penetration" and ds["judged_by_depth"] ==
+          "gjk2d's own contract: gjk2d's depth bound for double",
+          "double-signed contract {}".format(ds))
     if a.bridge:
         direct = variants(a, os.path.join(a.work, "so"), a.so_name, a.so)[a.so_name]["contract"]
         wrapper = os.path.join(a.work, "bridged.sh")

@@ -97,11 +97,11 @@ std::string judgedBy(const VariantInfo& v)
 std::string judgedByDepth(const VariantInfo& v)
 {
     const Contract& c = contractOf(v);
+    if (c.overlap != Overlap::Penetration)
+        return fmt::format("no depth answered (overlap {})", overlapName(c.overlap));
     if (c.own)
         return fmt::format("gjk2d's own contract: gjk2d's depth bound for {}",
                            scalarName(v.scalar));
-    if (c.overlap != Overlap::Penetration)
-        return fmt::format("no depth answered (overlap {})", overlapName(c.overlap));
     if (!c.statesDepthTolerance())
         return fmt::format("no depth tolerance stated: gjk2d's depth bound for {}",
                            scalarName(v.scalar));

@@ -79,8 +79,8 @@ Json contractJson(const VariantInfo& v);
 std::string judgedBy(const VariantInfo& v);
 // In words, what the variant's penetration depth is held to: "its stated tolerance: abs 0.0001, rel
 // none (SOURCE)", "no depth tolerance stated: gjk2d's depth bound for double", "gjk2d's own
-// contract: gjk2d's depth bound for double", or, for an overlap kind that answers no depth, "no
-// depth answered (overlap zero)".
+// contract: gjk2d's depth bound for double" (double-signed), or, for an overlap kind that answers
+// no depth, "no depth answered (overlap zero)" (gjk2d's double: "... (overlap common-point)").
 std::string judgedByDepth(const VariantInfo& v);
 
 } // namespace gjkval
