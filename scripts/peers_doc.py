@@ -34,7 +34,9 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 TITLE = "# How accurate are the distance queries people use?"
 BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
 DEFAULT_CAMPAIGN = "default campaign (run without --family and --cases): "  # `list`'s line
-GJK2D_ROWS = ["double", "float"]  # gjk2d's reference variants, shown beside the peers
+# gjk2d's reference variants, and its signed ones (issue 51: a penetration contract, beside the
+# peers' EPA), shown beside the peers
+GJK2D_ROWS = ["double", "float", "double-signed", "float-signed"]
 
 
 def fail(code, message):
@@ -131,12 +133,26 @@ def group_rows(report, variant):
                      "violations": sum((st.get("contract_violations") or {}).get("count", 0)
                                        for st in sts),
                      "reasons": reasons, "outside": s("beyond_bound_keeping_contract"),
-                     "depth_unjudged": s("depth_unjudged"),
+                     "penetration": penetration_rows(sts),
                      "false_overlap": s("false_overlap"),
                      "false_separation": s("false_separation"), "nonfinite": s("nonfinite"),
                      "incidents": s("plugin_errors") + s("crashed") + s("hung"),
                      "rel": rel, "ratio": ratio, "ns": ns})
     return rows
+
+
+def penetration_rows(sts):
+    """The families' penetration blocks (report.json Stats `penetration`, only a variant whose
+    contract says penetration) joined: None when no family has one."""
+    blocks = [st["penetration"] for st in sts if st.get("penetration")]
+    if not blocks:
+        return None
+    s = lambda k: sum(b.get(k, 0) or 0 for b in blocks)
+    return {"cases": s("cases"), "violations": s("contract_violations"),
+            "beyond": s("beyond_bound"), "outside": s("beyond_bound_keeping_contract"),
+            "nonfinite": s("nonfinite"), "abs": merge_hist([b.get("abs") for b in blocks]),
+            "rel": merge_hist([b.get("rel") for b in blocks]),
+            "ratio": merge_hist([b.get("bound_ratio") for b in blocks])}
 
 
 def g(x, spec=".3g"):
@@ -155,8 +171,9 @@ def contract_table(report, peers):
            "says so (declared by its adapter: gjk2d/plugin.h, `gjk2d_contract`). Where a library "
            "states no tolerance, its distance is held to gjk2d's own a-priori bound in its scalar "
            "type, and the table says so.", "",
-           "| variant | type | on overlap | source | its distance is held to | margin |",
-           "|---|---|---|---|---|---|"]
+           "| variant | type | on overlap | source | its distance is held to | margin | its "
+           "depth is held to |",
+           "|---|---|---|---|---|---|---|"]
     info = {v["name"]: v for v in report["variants"]}
     for name in [v for v in GJK2D_ROWS if v in info] + peers:
         v = info[name]
@@ -165,7 +182,8 @@ def contract_table(report, peers):
         msrc = c.get("margin_source") or ""
         out.append(f"| {name} | {v.get('type', '?')} | {c.get('overlap', '?')} | "
                    f"{c.get('overlap_source') or 'none stated'} | {c.get('judged_by', '?')} | "
-                   f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} |")
+                   f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} | "
+                   f"{c.get('judged_by_depth', '?')} |")
     return out
 
 
@@ -199,18 +217,19 @@ def timing_table(report, peers):
 def verdict_table(report, peers, command):
     out = ["### Contract violations and accuracy", "",
            f"Per variant and family group, from `{command}`. Rows of gjk2d's reference variants "
-           "(double, float) are there to compare with.", "",
+           "(double, float) and signed ones (double-signed, float-signed) are there to compare "
+           "with.", "",
            "| variant | family group | cases | refused | breaks its contract | why | outside "
-           "gjk2d's bound, keeps its contract | depth not judged | false overlaps | false "
+           "gjk2d's bound, keeps its contract | false overlaps | false "
            "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
            "p99 error / bound | ns/query |",
-           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
     for v in names:
         for r in group_rows(report, v):
             out.append(f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
                        f"{r['violations']} | {reasons_text(r['reasons'])} | {r['outside']} | "
-                       f"{r['depth_unjudged']} | {r['false_overlap']} | {r['false_separation']} | "
+                       f"{r['false_overlap']} | {r['false_separation']} | "
                        f"{g(r['rel'][0])} | {g(r['rel'][1])} | "
                        f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |")
     out += ["", "Columns (docs/report-schema.md, Stats): *cases* answered; *refused* by the "
@@ -220,13 +239,41 @@ def verdict_table(report, peers, command):
             "`contract_violations`); *outside gjk2d's bound, keeps its contract*: answers further "
             "from the exact distance than gjk2d's a-priori bound in the variant's precision "
             "(docs/error-bound.md) that keep the implementation's own contract: a measured "
-            "accuracy, not a failure; *depth not judged*: penetration answers whose depth waits for "
-            "the exact penetration depth (its points are judged); *false overlaps and separations* "
+            "accuracy, not a failure; *false overlaps and separations* "
             "against the exact side, whatever the contract allows; rel. error = |d - d_exact| / "
             "d_exact (separated cases); error / bound = |d - d_exact| over gjk2d's bound (a "
             "negative distance of a zero or penetration contract counts as 0); p99 values are "
             "histogram bin upper edges, at most the largest; ns/query: the families' "
             "single-threaded timings, weighted by cases (- when not timed)."]
+    return out
+
+
+def depth_table(report, peers):
+    """The penetration depth beside the distance (report.json Stats `penetration`): each variant
+    whose contract says penetration, per family group."""
+    names = [v for v in GJK2D_ROWS + peers if any(x["name"] == v for x in report["variants"])]
+    rows = [(v, r) for v in names for r in group_rows(report, v) if r["penetration"]]
+    if not rows:
+        return []
+    out = ["### Penetration depth (contracts that say `penetration`)", "",
+           "The depth of each overlapping case against the exact penetration depth (docs/exact.md, "
+           "\"Penetration depth\"), beside the distance above: what an engine resolving contacts "
+           "consumes.", "",
+           "| variant | family group | overlapping cases | breaks its contract | beyond gjk2d's "
+           "depth bound | of them keeping its contract | largest depth error | largest rel. "
+           "error | p99 rel. error | largest error / depth bound |",
+           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for v, r in rows:
+        p = r["penetration"]
+        out.append(f"| {v} | {r['group']} | {p['cases']} | {p['violations']} | {p['beyond']} | "
+                   f"{p['outside']} | {g(p['abs'][0])} | {g(p['rel'][0])} | {g(p['rel'][1])} | "
+                   f"{g(p['ratio'][0])} |")
+    out += ["", "Columns (docs/report-schema.md, `penetration`): *overlapping cases* judged (exact "
+            "signed distance below 0); *breaks its contract*: the depth beyond its stated "
+            "tolerance (or gjk2d's depth bound where none is stated: the contract table above), "
+            "or a point off its shape; *beyond gjk2d's depth bound*: |depth - exact depth| over "
+            "gjk2d's a-priori depth bound (docs/error-bound.md), *of them keeping its contract*: "
+            "a measured accuracy; rel. error = |depth - exact depth| / exact depth."]
     return out
 
 
@@ -463,6 +510,8 @@ def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
                    + ", ".join(p.get("variants", [])))
     out += [""] + contract_table(report, peers) + [""] + timing_table(report, peers) + [""]
     out += verdict_table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    depth = depth_table(report, peers)
+    out += [""] + depth if depth else []
     out += violation_section(report, peers, gjk, shown_gjk, svg_dir / "repro", doc)
     out += worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work)
     return "\n".join(out + ["", END]) + "\n"

@@ -112,6 +112,27 @@ template <class T> void BM_Random(benchmark::State& state)
     setNsPerQuery(state, in.size());
 }
 
+// The cold query on the overlapping pairs of the random set (unsigned distance 0, about a fifth of
+// them), without (signed:0, the reference options) and with Options::signedDistance (signed:1):
+// the cost of the expanding polygon (docs/gjk.md, "Signed distance").
+template <class T> void BM_RandomOverlapping(benchmark::State& state)
+{
+    static const std::vector<gjk::DistanceInput<T>> overlapping = []
+    {
+        std::vector<gjk::DistanceInput<T>> v;
+        for (const auto& in : inputs<T>().inputs)
+            if (gjk::distance(in).distance == T(0))
+                v.push_back(in);
+        return v;
+    }();
+    gjk::Options o;
+    o.signedDistance = state.range(0) == 1;
+    for (auto _ : state)
+        coldPass(overlapping, overlapping.size(), o);
+    state.counters["pairs"] = double(overlapping.size());
+    setNsPerQuery(state, overlapping.size());
+}
+
 // The cold query on a float engine's rotations (transforms as given, docs/gjk.md): against
 // BM_Random, the cost of the non-unit path (docs/speed.md, "Transforms as given").
 template <class T> void BM_RandomFloatRotations(benchmark::State& state)
@@ -253,6 +274,16 @@ BENCHMARK_TEMPLATE(BM_Random, float)
     ->Arg(0)
     ->Arg(1)
     ->ArgName("certify")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomOverlapping, double)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("signed")
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_RandomOverlapping, float)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("signed")
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomFloatRotations, double)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_RandomLearned, double)

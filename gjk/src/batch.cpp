@@ -96,13 +96,17 @@ using lanes::kRunning;
 constexpr int kMaxLanePoints = 64;
 
 // Whether the lanes run this pair with these options (docs/gjk.md, "Batches in SIMD lanes"):
-// the default search direction and stopping rule, A's local frame, the linear scan (a binary
-// search on small shapes is the linear scan too: usesBinarySearch). Inputs that break the input
+// the default search direction and stopping rule, A's local frame, no signed distance, the linear
+// scan (a binary search on small shapes is the linear scan too: usesBinarySearch). Inputs that break the input
 // contract (meetsInputContract, asserted by distance()) run the scalar query, which asserts.
 template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& options)
 {
     if (options.direction != SearchDirection::EdgePerpendicular ||
         options.stopping != StoppingRule::RepeatedSupport || options.frame != Frame::LocalA)
+        return false;
+    // Options::signedDistance needs the shapes after the loop (the expanding polygon, gjk2d/
+    // expand.hpp): every pair runs the scalar query, with its results.
+    if (options.signedDistance)
         return false;
     if (!meetsInputContract(in))
         return false;

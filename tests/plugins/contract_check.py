@@ -17,7 +17,7 @@ by its contract, derived by hand (T = 1e-6, gjk2d's bound on these cases is a fe
   d3               3 + 5e-7: within T, keeps it; outside gjk2d's bound (class 2).
   d4               4 + 1e-3: distance, excess 1e-3 / 1e-6 = 1e3.
 So report.json's family x variant has contract_violations {"count": 2, "reasons": {"false_overlap":
-1, "distance": 1}}, its worst the false overlap, beyond_bound_keeping_contract 2, depth_unjudged 0;
+1, "distance": 1}}, its worst the false overlap, beyond_bound_keeping_contract 2, no penetration block;
 gjk2d's own rules (failures) count 5 (three negative distances, two beyond the bound). variants[]
 gives the contract (own false, overlap zero, tolerance abs 1e-6, rel null) and the worst violation
 with its family. The run exits 0 (a comparison variant); under --judge toy-contract its two
@@ -85,7 +85,7 @@ def main():
           "worst {}".format(cv["worst"]))
     check(st["beyond_bound_keeping_contract"] == 2,
           "beyond_bound_keeping_contract {} != 2".format(st["beyond_bound_keeping_contract"]))
-    check(st["depth_unjudged"] == 0, "depth_unjudged {}".format(st["depth_unjudged"]))
+    check("penetration" not in st, "a penetration block for a contract of overlap zero")
     check(st["failures"] == 5, "failures (gjk2d's own rules) {} != 5".format(st["failures"]))
     dbl = r["families"][0]["variants"]["double"]
     check(dbl["contract_violations"] == {"count": 0, "reasons": {}, "worst": None},

@@ -123,3 +123,12 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 {
     return &kPlugin;
 }
+
+#if defined(BAD_DEPTH)
+// A depth clause that is no number (gjk2d_plugin_depth): refused, exit 2, one line.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_depth_contract* gjk2d_plugin_depth(void)
+{
+    static const gjk2d_depth_contract kDepth[] = {{__builtin_nan(""), -1, "a NaN on purpose"}};
+    return kDepth;
+}
+#endif

@@ -34,6 +34,7 @@ import json
 import math
 import os
 import queue
+import re
 import shutil
 import subprocess
 import sys
@@ -348,7 +349,7 @@ STYLE_PROBE = """(function() {
 
 # What the heat map, the family tables, the variants table and the viewers say, for check_data_views.
 VIEWS_PROBE = """(function() {
-  var out = {cells: [], invalid: [], rows: [], variantsText: '', counts: ''};
+  var out = {cells: [], invalid: [], rows: [], penetration: [], arrows: 0, variantsText: '', counts: ''};
   document.querySelectorAll('#heatmap .hm-cell').forEach(function (c) {
     out.cells.push({family: c.getAttribute('data-family'), variant: c.getAttribute('data-variant'), kind: c.getAttribute('data-kind'),
       fill: c.querySelector('rect').getAttribute('fill'), tip: c.querySelector('title').textContent});
@@ -359,6 +360,13 @@ VIEWS_PROBE = """(function() {
         count: td.getAttribute('data-invalid'), text: td.textContent, title: td.getAttribute('title') || ''});
     });
   });
+  document.querySelectorAll('details.family').forEach(function (d) {
+    d.querySelectorAll('tr.penetration-row').forEach(function (tr) {
+      out.penetration.push({family: d.getAttribute('data-family'), variant: tr.getAttribute('data-variant'),
+        cells: Array.prototype.map.call(tr.children, function (td) { return td.textContent; })});
+    });
+  });
+  out.arrows = document.querySelectorAll('.translation-arrow').length;
   document.querySelectorAll('.viewer').forEach(function (v) {
     v.querySelectorAll('table.results tr[data-variant]').forEach(function (tr) {
       var wb = tr.querySelector('td.witness-bound');
@@ -634,7 +642,43 @@ def check_data_views(views, report):
     total_invalid = sum(count_of(st, 'invalid') for f in fams.values() for st in (f.get('variants') or {}).values())
     if total_invalid and f'{total_invalid:,} invalid answer' not in views['counts']:
         fails.append(f'the header does not count the {total_invalid} invalid answers: {views["counts"]!r}')
+    fails += check_penetration(views, report, fams)
     log('data views checked:', checked, f'(invalid answers in all: {total_invalid})')
+    return fails
+
+
+def check_penetration(views, report, fams):
+    """Each family x variant with a penetration block in report.json (a contract whose overlap answer
+    is penetration) has its row in the family's penetration table, with its overlapping cases, contract
+    violations and verdict; no other variant has one. A viewer whose case overlaps (exact signed
+    distance < 0) draws the minimal translation."""
+    fails = []
+    rows = {(r['family'], r['variant']): r['cells'] for r in views['penetration']}
+    want = {}
+    for fam, f in fams.items():
+        for var, st in (f.get('variants') or {}).items():
+            if isinstance(st, dict) and isinstance(st.get('penetration'), dict):
+                want[(fam, var)] = st['penetration']
+    for key, p in want.items():
+        cells = rows.get(key)
+        if cells is None:
+            fails.append(f'penetration {key[0]} / {key[1]}: no row in the family\'s penetration table')
+            continue
+        shown = re.match(r'[\d,]*', cells[2]).group(0)  # the count, before the worst's reason
+        if cells[1] != f"{count_of(p, 'cases'):,}" or shown != f"{count_of(p, 'contract_violations'):,}":
+            fails.append(f'penetration {key[0]} / {key[1]}: the row says {cells[1:3]!r}, report.json {p.get("cases")} cases, {p.get("contract_violations")} violations')
+        verdict = cells[-1]
+        if count_of(p, 'contract_violations') > 0 and verdict in ('pass', 'keeps its contract'):
+            fails.append(f'penetration {key[0]} / {key[1]}: {p.get("contract_violations")} violations but the verdict says {verdict!r}')
+    for key in rows:
+        if key not in want:
+            fails.append(f'penetration {key[0]} / {key[1]}: a row without a penetration block in report.json')
+    overlapping = [w for w in (report.get('worst') or []) if isinstance(w, dict) and
+                   isinstance((w.get('exact') or {}).get('signed_distance'), (int, float)) and w['exact']['signed_distance'] < 0]
+    if overlapping and views['arrows'] == 0:
+        fails.append(f'{len(overlapping)} worst case(s) overlap (exact signed distance < 0) but no minimal translation is drawn')
+    log(f'penetration checked: {len(want)} family x variant blocks, {len(overlapping)} overlapping worst case(s), '
+        f'{views["arrows"]} translation arrow(s)')
     return fails
 
 

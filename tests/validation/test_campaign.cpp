@@ -800,3 +800,98 @@ TEST_CASE("a broken invariant of the truth fails the run, and only invalid input
         CHECK(calls == 2);
     }
 }
+
+TEST_CASE("penetration: report.json's block, the terminal's line, report.md and explain",
+          "[campaign][penetration]")
+{
+    // A small campaign with double and double-signed (gjk2d's own contract, overlap answered by
+    // penetration): only double-signed has the penetration block; random:200 overlaps in 20 % to
+    // 80 % of its cases (its make-up), so its block judges some; the terminal gives the variant a
+    // penetration line, verdict first; report.md a Penetration list.
+    CampaignConfig c = smallConfig(2);
+    c.families = {"random:200"};
+    c.variants = parseVariants("double,double-signed");
+    c.timing = false;
+    const Campaign camp = runCampaign(c, campaignInputs(c));
+    const Json& r = camp.report;
+    const Json& f = r["families"][0]["variants"];
+    CHECK_FALSE(f["double"].contains("penetration"));
+    REQUIRE(f["double-signed"].contains("penetration"));
+    const Json& p = f["double-signed"]["penetration"];
+    CHECK(p["cases"].get<std::uint64_t>() >= 40);
+    CHECK(p["contract_violations"] == 0);
+    CHECK(p["bound_ratio"]["count"] == p["cases"]);
+    CHECK(r["variants"][1]["contract"]["overlap"] == "penetration");
+    CHECK(r["variants"][1].contains("depth_bound"));
+    CHECK_FALSE(r["variants"][0].contains("depth_bound"));
+    CHECK(camp.exitCode == kExitPass);
+    const std::string summary = terminalSummary(r);
+    CHECK_THAT(summary,
+               Catch::Contains(fmt::format(
+                   "    penetration: pass: {} overlapping case(s), 0 contract violation(s)",
+                   p["cases"].get<std::uint64_t>())));
+    CHECK_THAT(renderMarkdown(r), Catch::Contains("### Penetration") &&
+                                      Catch::Contains("- **double-signed**: penetration: pass"));
+}
+
+TEST_CASE("explain: an overlapping case's exact depth, each penetration answer's depth and error",
+          "[campaign][penetration]")
+{
+    // A hand-made CaseDetail: unit squares A = [0, 1]^2 and B = [0.75, 1.75] x [0, 1] overlap by
+    // 0.25 (exact signed distance -0.25, pair (1, 0.5) and (0.75, 0.5)); the variant answered
+    // -0.1875 with (1, 0.5) and (0.8125, 0.5): 0.0625 off (relative 0.25), over a depth bound of
+    // 1e-15 (ratio 6.25e13). Every number is exact in binary, so the text shows it whole.
+    const Json shape = {{"points", Json::array()},
+                        {"radius", 0},
+                        {"transform", {{"p", {0, 0}}, {"q", {1, 0}}}},
+                        {"world", Json::array()}};
+    Json d = {{"name", "hand/overlap"}, {"family", "hand"}, {"a", shape}, {"b", shape}};
+    d["exact"] = {{"distance", 0},
+                  {"squared", "0/1"},
+                  {"overlap", true},
+                  {"witnessA", {0.875, 0.5}},
+                  {"witnessB", {0.875, 0.5}},
+                  {"lower", 0},
+                  {"upper", 0},
+                  {"signed_distance", -0.25},
+                  {"signed_lower", -0.25},
+                  {"signed_upper", -0.25},
+                  {"penetrationA", {1, 0.5}},
+                  {"penetrationB", {0.75, 0.5}}};
+    Json v = {{"type", "double"},
+              {"distance", -0.1875},
+              {"pointA", {1, 0.5}},
+              {"pointB", {0.8125, 0.5}},
+              {"normal", {1, 0}},
+              {"iterations", 3},
+              {"stop", "repeated-support"},
+              {"bound", 1e-15},
+              {"witness_bound", 1e-15},
+              {"errors",
+               {{"abs", 0},
+                {"rel", nullptr},
+                {"ulps", nullptr},
+                {"normalized", 0},
+                {"bound_ratio", 0},
+                {"witness", 0},
+                {"witness_gap", 0},
+                {"witness_ratio", 0}}},
+              {"misclassified", nullptr},
+              {"invalid", nullptr},
+              {"failed", true}};
+    v["penetration"] = {{"exact", -0.25},     {"distance", -0.1875}, {"abs", 0.0625},
+                        {"rel", 0.25},        {"bound", 1e-15},      {"bound_ratio", 6.25e13},
+                        {"tolerance", 1e-15}, {"beyond_bound", true}};
+    d["variants"] = {{"double-signed", v}};
+    const std::string text = explainText(d);
+    CHECK_THAT(text, Catch::Contains("signed distance -0.25 in [-0.25, -0.25]: the shapes overlap, "
+                                     "exact depth 0.25") &&
+                         Catch::Contains("penetration pair A (1, 0.5) B (0.75, 0.5)") &&
+                         Catch::Contains("penetration: exact depth 0.25, its depth 0.1875: error "
+                                         "0.0625 (relative 0.25), gjk2d's depth bound 1e-15 "
+                                         "(ratio 6.25e+13)") &&
+                         Catch::Contains("** beyond gjk2d's depth bound **"));
+    // Without a signed answer (0 on overlap): "none".
+    d["variants"]["double-signed"]["penetration"]["distance"] = 0;
+    CHECK_THAT(explainText(d), Catch::Contains("its depth none (distance 0)"));
+}

@@ -90,6 +90,7 @@ VariantOutcome judged(const Implementation& im, const Case& c, const exact::Resu
         v.pointB = pB;
         v.R = 1;
         v.bound = 0x1p-30;
+        v.depthBound = 0x1p-30; // read where a penetration depth is judged
         v.witnessBound = 0x1p-2;
         judge(v, truth, im.info.scalar, false, contractOf(im.info).overlap);
     }
@@ -310,13 +311,13 @@ TEST_CASE("perimeter: each point on its own perimeter, rA + rB - dc apart, or on
     }
 }
 
-TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth, which is not judged yet",
-          "[contract]")
+TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth |d|", "[contract]")
 {
     // Squares [0, 2]^2 and [1, 3]^2: the depth is 1 (along x or y). A's point (2, 1.5) and B's
-    // (1, 1.5), d = -1: each on its shape, ||pA - pB|| = 1 = |d|: keeps every clause judged, its
-    // depth unjudged. B's point at (1.5, 1.5): | 0.5 - 1 | = 0.5 > W: penetration_gap. A's point at
-    // (2.5, 1.5), 0.5 off A: witness_off_shape.
+    // (1, 1.5), d = -1: each on its shape, ||pA - pB|| = 1 = |d|: keeps every clause. B's point at
+    // (1.5, 1.5): | 0.5 - 1 | = 0.5 > W: penetration_gap. A's point at (2.5, 1.5), 0.5 off A:
+    // witness_off_shape. (The truth here has no signed distance: the depth itself is not judged;
+    // the next tests judge it.)
     const Case c = caseOf(square(0, 0, 2), square(1, 1, 2));
     const exact::Result t = truthOf(0, true);
     for (Scalar s : kScalars)
@@ -325,12 +326,169 @@ TEST_CASE("penetration: each point on its shape, ||pA - pB|| the depth, which is
         const Implementation im(s, declared(Overlap::Penetration));
         const VariantOutcome v = judged(im, c, t, -1, {2, 1.5}, {1, 1.5});
         CHECK(v.keepsContract());
-        CHECK(v.depthUnjudged);
-        CHECK(v.abs == 0); // measured on max(d, 0)
+        CHECK_FALSE(v.depthJudged);
+        CHECK(v.abs == 0);                 // measured on max(d, 0)
+        CHECK(v.invalid == Invalid::None); // a negative distance is minus the depth, not invalid
+        CHECK(v.witnessGap == 0);          // ||pA - pB|| against |d|
         CHECK(reason(judged(im, c, t, -1, {2, 1.5}, {1.5, 1.5})) == "penetration_gap");
-        CHECK_FALSE(judged(im, c, t, -1, {2, 1.5}, {1.5, 1.5}).depthUnjudged);
         CHECK(reason(judged(im, c, t, -1, {2.5, 1.5}, {1, 1.5})) == "witness_off_shape");
     }
+}
+
+namespace
+{
+// The exact truth of overlapping shapes whose exact signed distance is `s` (< 0; 0: touching), as
+// the exact side gives it with exact::Options::penetration.
+exact::Result signedTruthOf(double s)
+{
+    exact::Result r = truthOf(0, s < 0);
+    r.hasSigned = true;
+    r.signedDistance = r.signedLower = r.signedUpper = s;
+    return r;
+}
+
+Contract declaredDepth(double abs, double rel = -1)
+{
+    Contract c = declared(Overlap::Penetration);
+    c.depthAbsTolerance = abs;
+    c.depthRelTolerance = rel;
+    c.depthSource = "the test";
+    return c;
+}
+} // namespace
+
+TEST_CASE("penetration: the depth judged against the exact signed distance",
+          "[contract][penetration]")
+{
+    // Two unit squares, A = [0, 1]^2 and B = [0.75, 1.75] x [0, 1], overlap by 0.25 along x (by 1
+    // along y): the exact signed distance is -0.25, the minimal translation of B (0.25, 0), the
+    // penetration pair pA = (1, 0.5) on A's boundary, pB = (0.75, 0.5) on B's. gjk2d's depth bound
+    // is set by hand to 2^-30 (judged() below), so:
+    // - d = -0.25 with that pair: |d - s| = 0, kept, within the bound;
+    // - d = -0.24, pA = (1, 0.5), pB = (0.76, 0.5) (both on their shapes, 0.24 apart): |d - s| =
+    //   0.01, relative 0.04, beyond gjk2d's depth bound; with no depth clause stated that keeps the
+    //   contract (a measured accuracy, "outside_bound"); with abs 0.02 stated it keeps it; with abs
+    //   0.005 it breaks it, depth_off, 0.01 / 0.005 = 2 times what it allows; with rel 0.02 stated
+    //   (Td = 0.02 x 0.25 = 0.005) the same;
+    // - d = 0 with the common point (0.875, 0.5): no depth where the contract promises one, the
+    //   exact depth 0.25 over Td (2^-30): no_depth.
+    const Case c = caseOf(square(0, 0, 1), square(0.75, 0, 1));
+    const exact::Result t = signedTruthOf(-0.25);
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation none(s, declared(Overlap::Penetration));
+        const VariantOutcome exactPair = judged(none, c, t, -0.25, {1, 0.5}, {0.75, 0.5});
+        CHECK(exactPair.depthJudged);
+        CHECK(exactPair.depthAbs == 0);
+        CHECK(exactPair.keepsContract());
+        CHECK(std::string(answerClassName(exactPair)) == "within_bound");
+        const double d = s == Scalar::Float ? double(-0.24f) : -0.24;
+        const double pb = s == Scalar::Float ? double(0.76f) : 0.76;
+        const VariantOutcome off = judged(none, c, t, d, {1, 0.5}, {pb, 0.5});
+        CHECK(off.depthAbs == Approx(0.01));
+        CHECK(off.depthRel == Approx(0.04));
+        CHECK(off.depthTolerance == 0x1p-30); // no clause: gjk2d's depth bound
+        CHECK(off.beyondDepthBound);
+        CHECK(off.keepsContract());
+        CHECK(std::string(answerClassName(off)) == "outside_bound");
+        CHECK(judged(Implementation(s, declaredDepth(0.02)), c, t, d, {1, 0.5}, {pb, 0.5})
+                  .keepsContract());
+        const VariantOutcome broken =
+            judged(Implementation(s, declaredDepth(0.005)), c, t, d, {1, 0.5}, {pb, 0.5});
+        CHECK(reason(broken) == "depth_off");
+        CHECK(broken.violationExcess == Approx(2));
+        CHECK(reason(judged(Implementation(s, declaredDepth(-1, 0.02)), c, t, d, {1, 0.5},
+                            {pb, 0.5})) == "depth_off");
+        const VariantOutcome zero = judged(none, c, t, 0, {0.875, 0.5}, {0.875, 0.5});
+        CHECK(reason(zero) == "no_depth");
+        CHECK(zero.violationExcess == Approx(0.25 / 0x1p-30));
+    }
+}
+
+TEST_CASE("penetration: touching shapes may answer 0", "[contract][penetration]")
+{
+    // A = [0, 1]^2, B = [1, 2] x [0, 1] touch along x = 1: exact signed distance 0, no depth to
+    // judge; the common point (1, 0.5) with d = 0 keeps the contract. The same shapes with a
+    // truth (by hand) of depth 2^-40, below Td = gjk2d's depth bound 2^-30: touching to the
+    // contract's precision, so 0 still keeps it; a stated clause of abs 2^-45 makes that depth a
+    // real one: no_depth.
+    const Case c = caseOf(square(0, 0, 1), square(1, 0, 1));
+    for (Scalar s : kScalars)
+    {
+        INFO(scalarName(s));
+        const Implementation none(s, declared(Overlap::Penetration));
+        const VariantOutcome touching = judged(none, c, signedTruthOf(0), 0, {1, 0.5}, {1, 0.5});
+        CHECK_FALSE(touching.depthJudged);
+        CHECK(touching.keepsContract());
+        const VariantOutcome shallow =
+            judged(none, c, signedTruthOf(-0x1p-40), 0, {1, 0.5}, {1, 0.5});
+        CHECK(shallow.depthJudged);
+        CHECK(shallow.depthAbs == 0x1p-40);
+        CHECK(shallow.keepsContract());
+        CHECK(reason(judged(Implementation(s, declaredDepth(0x1p-45)), c, signedTruthOf(-0x1p-40),
+                            0, {1, 0.5}, {1, 0.5})) == "no_depth");
+    }
+}
+
+TEST_CASE("gjk2d's signed variants: gjk2d's own contract, overlap answered by penetration",
+          "[contract][penetration]")
+{
+    // The contract of double-signed and float-signed is gjk2d's own with overlap = penetration, no
+    // depth clause (gjk2d's depth bound); every other gjk2d variant's overlap is common-point.
+    for (const char* name : {"double-signed", "float-signed"})
+    {
+        INFO(name);
+        const VariantInfo* v = findVariant(name);
+        REQUIRE(v != nullptr);
+        CHECK(v->judged);
+        CHECK(v->start == Start::Cold);
+        CHECK(v->options.signedDistance);
+        const Contract& c = contractOf(*v);
+        CHECK(c.own);
+        CHECK(c.overlap == Overlap::Penetration);
+        CHECK(c.depthAbsTolerance < 0);
+        CHECK(c.depthRelTolerance < 0);
+    }
+    CHECK(contractOf(*findVariant("double")).overlap == Overlap::CommonPoint);
+    EvalContext ctx;
+    ctx.variants = {findVariant("double")};
+    CHECK_FALSE(ctx.truthOptions().penetration); // the exact depth only when a run judges one
+    ctx.variants.push_back(findVariant("float-signed"));
+    CHECK(ctx.truthOptions().penetration);
+
+    // Judged by gjk2d's own contract (failures), on the squares overlapping by 0.25 above: the
+    // exact pair keeps it; a depth 0.01 off is beyond gjk2d's depth bound (2^-30 here): a failure,
+    // depth_off, its excess the error over the bound; a certified interval that misses the exact
+    // signed distance fails (interval).
+    const Case c = caseOf(square(0, 0, 1), square(0.75, 0, 1));
+    const exact::Result t = signedTruthOf(-0.25);
+    const Implementation own(Scalar::Double, ownContract({.signedDistance = true}));
+    const VariantOutcome right = judged(own, c, t, -0.25, {1, 0.5}, {0.75, 0.5});
+    CHECK_FALSE(right.failed);
+    CHECK(right.keepsContract());
+    const VariantOutcome off = judged(own, c, t, -0.24, {1, 0.5}, {0.76, 0.5});
+    CHECK(off.failed);
+    CHECK(reason(off) == "depth_off");
+    CHECK(off.violationExcess == off.depthRatio);
+    CHECK(off.depthRatio == Approx(0.01 / 0x1p-30));
+    VariantOutcome v;
+    v.distance = -0.25;
+    v.pointA = {1, 0.5};
+    v.pointB = {0.75, 0.5};
+    v.R = 1;
+    v.bound = v.depthBound = 0x1p-30;
+    v.witnessBound = 0x1p-2;
+    v.certified = true;
+    v.lower = -0.25;
+    v.upper = -0.25 + 0x1p-40;
+    judge(v, t, Scalar::Double, false, Overlap::Penetration);
+    CHECK(v.intervalContains);
+    CHECK_FALSE(v.failed);
+    v.lower = -0.25 + 0x1p-50; // above the exact -0.25
+    judge(v, t, Scalar::Double, false, Overlap::Penetration);
+    CHECK_FALSE(v.intervalContains);
+    CHECK(v.failed);
 }
 
 TEST_CASE("an error status, a crash or a hang breaks a declared contract", "[contract]")

@@ -1,5 +1,6 @@
 // Statistics on hand-made data: histogram bins and percentiles, means, and that merging two shards
 // gives exactly the statistics of the whole.
+#include "evaluate/evaluate.hpp"
 #include "statistics/stats.hpp"
 
 #include <catch2/catch.hpp>
@@ -157,7 +158,6 @@ TEST_CASE("merging adds every counter into its own field", "[stats][merge]")
                 &s.invalidReasons[2],
                 &s.contractViolations,
                 &s.beyondBoundKeepingContract,
-                &s.depthUnjudged,
                 &s.violationReasons[0],
                 &s.violationReasons[std::size_t(kViolationReasons) - 1]};
     };
@@ -332,6 +332,7 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
     // double-certified and double-correct): the tables and their exceptions must reproduce it.
     Stats s;
     s.hasInterval = s.hasPaths = s.hasInputRounding = true;
+    s.penetration.any = true;
     const Json j = s.toJson();
     std::vector<std::string> keys, errors, interval, correct;
     for (const auto& [key, _] : j.items())
@@ -364,12 +365,12 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "witness_exact",
                                            "contract_violations",
                                            "beyond_bound_keeping_contract",
-                                           "depth_unjudged",
                                            "failure_rate_upper95",
                                            "errors",
                                            "iterations",
                                            "interval",
                                            "correct",
+                                           "penetration", // issue 51
                                            "stops",
                                            "ns_per_query",
                                            "ns_spread",
@@ -410,7 +411,9 @@ TEST_CASE("the shard state is the Stats tables in their order", "[stats]")
     };
     CHECK(keys(state) == std::vector<std::string>{"counts", "flags", "histograms", "paths",
                                                   "invalid_reasons", "violation_reasons",
-                                                  "worst_violation", "stops", "iterations"});
+                                                  "worst_violation", "stops", "iterations",
+                                                  "penetration"});
+    CHECK(state["penetration"].is_null()); // no penetration contract
     std::vector<std::string> counts, flags, histograms;
     for (const CountField& f : kCountFields)
         counts.push_back(f.name);
@@ -487,4 +490,88 @@ TEST_CASE(
     CHECK(Stats().toJson()["contract_violations"] ==
           Json{{"count", 0}, {"reasons", Json::object()}, {"worst", nullptr}});
     CHECK(Stats().state()["worst_violation"].is_null());
+}
+
+namespace
+{
+// A penetration answer on an overlapping case, as judge() and judgeContracts leave it: its depth
+// error |d - s|, relative error and error over gjk2d's depth bound, whether it is beyond that
+// bound, and its contract verdict.
+VariantOutcome depthAnswer(double abs, double rel, double ratio, Violation why = Violation::None)
+{
+    VariantOutcome v;
+    v.depthJudged = true;
+    v.depthAbs = abs;
+    v.depthRel = rel;
+    v.depthRatio = ratio;
+    v.beyondDepthBound = ratio > 1;
+    v.violation = why;
+    v.violationExcess = why == Violation::None ? 0 : ratio;
+    return v;
+}
+} // namespace
+
+TEST_CASE(
+    "the penetration block merges exactly across shards, and a state without it reads as none",
+    "[stats][merge][penetration]")
+{
+    // Five overlapping cases 0..4 of a family: depth errors 0 (case 0), 2^-50 (1, ratio 0.25),
+    // 2^-40 (2, ratio 3: beyond gjk2d's depth bound, keeping the contract), 2^-48 (3, ratio 1),
+    // and a depth_off at case 4 (ratio 5). Split 0,2,4 | 1,3 and merged in both orders: the whole's
+    // counts (5 cases, 1 violation, 2 beyond the bound of which 1 keeps the contract), its largest
+    // error 2^-40 at case 2, its largest ratio 5 at case 4, its sums exact.
+    const VariantOutcome vs[] = {depthAnswer(0, 0, 0), depthAnswer(0x1p-50, 0x1p-52, 0.25),
+                                 depthAnswer(0x1p-40, 0x1p-42, 3), depthAnswer(0x1p-48, 0x1p-50, 1),
+                                 depthAnswer(0x1p-45, 0x1p-47, 5, Violation::DepthOff)};
+    auto fold = [&](const std::vector<int>& which)
+    {
+        PenetrationStats p;
+        p.any = true;
+        for (int i : which)
+            p.add(vs[i], "c" + std::to_string(i), std::uint64_t(i));
+        return p;
+    };
+    const PenetrationStats whole = fold({0, 1, 2, 3, 4});
+    CHECK(whole.cases == 5);
+    CHECK(whole.contractViolations == 1);
+    CHECK(whole.beyondBound == 2);
+    CHECK(whole.beyondBoundKeepingContract == 1);
+    CHECK(whole.abs.max == 0x1p-40);
+    CHECK(whole.abs.maxCase == "c2");
+    CHECK(whole.boundRatio.max == 5);
+    CHECK(whole.boundRatio.maxCase == "c4");
+    CHECK(whole.boundRatio.zeros == 1);
+    CHECK(whole.worstViolation.caseName == "c4");
+    CHECK(whole.abs.sum() == 0x1p-50 + 0x1p-40 + 0x1p-48 + 0x1p-45); // exact in double
+    PenetrationStats a = fold({0, 2, 4}), b = fold({1, 3}), ab = a, ba = b;
+    ab.merge(b);
+    ba.merge(a);
+    CHECK(ab.toJson() == whole.toJson());
+    CHECK(ba.toJson() == whole.toJson());
+    CHECK(ab.state() == whole.state());
+
+    // Through Stats' state, as a shard writes it: the block survives; a variant without a
+    // penetration contract writes null; a state without the key (written before issue 51) reads as
+    // none, and merging it leaves the other's block as it is.
+    Stats s, none;
+    s.penetration = whole;
+    const Stats back = Stats::fromState(Json::parse(s.state().dump()));
+    CHECK(back.penetration.state() == whole.state());
+    CHECK(back.toJson()["penetration"] == whole.toJson());
+    Json old = none.state();
+    CHECK(old["penetration"].is_null());
+    CHECK_FALSE(none.toJson().contains("penetration"));
+    old.erase("penetration");
+    Stats fromOld = Stats::fromState(old);
+    CHECK_FALSE(fromOld.penetration.any);
+    fromOld.merge(back);
+    CHECK(fromOld.penetration.state() == whole.state());
+    // An older state's violation reasons stop before DepthOff and NoDepth: they count 0 there.
+    Json fewer = none.state();
+    fewer["violation_reasons"] =
+        std::vector<std::uint64_t>(std::size_t(int(Violation::BitMismatch)), 1);
+    const Stats older = Stats::fromState(fewer);
+    CHECK(older.violationReasons[std::size_t(Violation::BitMismatch) - 1] == 1);
+    CHECK(older.violationReasons[std::size_t(Violation::DepthOff) - 1] == 0);
+    CHECK(older.violationReasons[std::size_t(Violation::NoDepth) - 1] == 0);
 }

@@ -58,7 +58,9 @@ TEST_CASE("the variant table: judged and comparison variants", "[variants]")
                                           "float-every-start",
                                           "double-batch",
                                           "float-batch",
-                                          "double-correct"};
+                                          "double-correct",
+                                          "double-signed",
+                                          "float-signed"};
     const std::set<std::string> comparison = {"double-closest-point", "double-world-frame",
                                               "double-duality-gap", "float-closest-point",
                                               "float-world-frame"};
@@ -194,6 +196,21 @@ TEST_CASE("a reduced campaign over every variant: judged variants pass, comparis
                     CHECK(s["interval"]["certified"] == cases);
                 else
                     CHECK(s["interval"]["certified"].get<std::uint64_t>() * 2 >= cases);
+            }
+            // The signed variants (issue 51): gjk2d's own contract with overlap = penetration; on
+            // every overlapping case the depth within gjk2d's depth bound, no contract violation;
+            // no other variant has the block.
+            const bool isSigned = name.find("-signed") != std::string::npos;
+            CHECK(s.contains("penetration") == isSigned);
+            if (isSigned)
+            {
+                const Json& p = s["penetration"];
+                CHECK(p["contract_violations"] == 0);
+                CHECK(p["beyond_bound"] == 0);
+                if (p["cases"].get<std::uint64_t>() > 0)
+                    CHECK(p["bound_ratio"]["max"].get<double>() <= 1.0);
+                if (fam == "random") // 30 % to 70 % of random cases overlap (its make-up)
+                    CHECK(p["cases"].get<std::uint64_t>() > 1000);
             }
             notApplicable += s["not_applicable"].get<std::uint64_t>();
             if (fam == "hard/many-vertices")

@@ -25,6 +25,7 @@
 //   gjk2d/simplex.hpp  the simplex solvers solve2 and solve3, with their derivations
 //   gjk2d/certify.hpp  the certified interval (Options::certify)
 //   gjk2d/correct.hpp  the correctly rounded distance (Options::correctlyRounded)
+//   gjk2d/expand.hpp   the signed distance on overlap (Options::signedDistance): EPA
 //   gjk2d/distance.hpp this file: search direction, witness points, the loop, distance()
 #pragma once
 
@@ -550,6 +551,13 @@ GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<
     }
 }
 
+// Options::signedDistance's step after the loop (gjk2d/expand.hpp, included at the end of this
+// file): replaces an overlapping answer by the signed one; returns whether it left the safe range.
+template <class T, bool Scaled, class Shape>
+bool signedAnswer(const DistanceInput<T>& input, const Options& options, Shape& A, Shape& B,
+                  const Transform<T>& world, int scale, StopReason stop, const Simplex<T>& simplex,
+                  int edgeBase, DistanceOutput<T>& out);
+
 // The query. `Scaled`: the rescaled retry (gjk2d/rescale.hpp), a second instantiation kept out of
 // line (distanceRescaled), so that the common query carries no test for it.
 template <class T, bool Scaled>
@@ -574,7 +582,22 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
                    iterationLimit(options, input.proxyA.count, input.proxyB.count), simplex, end);
     end.supportOutOfRange =
         A.overflowed() || B.overflowed() || (Scaled && (A.inexact || B.inexact));
-    return finishQuery<T, Scaled>(input, cache, options, trace, scale, world, stop, simplex, end);
+    DistanceOutput<T> out =
+        finishQuery<T, Scaled>(input, cache, options, trace, scale, world, stop, simplex, end);
+    // Options::signedDistance on overlap (distance 0 after the radii), when this pass's answer
+    // stands (not replaced by the rescaled retry, which makes this step itself). Out of range, the
+    // query runs again rescaled, as finishQuery's own check does.
+    if (options.signedDistance && (Scaled || !out.rescaled) && out.distance == T(0) &&
+        !out.outOfRange) [[unlikely]]
+    {
+        const bool exceeded = signedAnswer<T, Scaled>(input, options, A, B, world, scale, stop,
+                                                      simplex, end.edgeBase, out);
+        if constexpr (Scaled)
+            out.outOfRange = out.outOfRange || exceeded;
+        else if (exceeded)
+            distanceRescaled(input, cache, options, trace, out, false);
+    }
+    return out;
 }
 
 // The rescaled retry, out of line: the common query never runs it.
@@ -635,3 +658,5 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, const Options& options
 } // namespace gjk
 
 #include "gjk2d/detail/fp_end.hpp"
+
+#include "gjk2d/expand.hpp" // signedAnswer (Options::signedDistance)

@@ -87,6 +87,15 @@ template <class T> struct Tolerances
     // when the new support point w can lower the squared distance by less than a few roundings of
     // the dot products (each carries up to ~2u relative error with respect to the larger term).
     static constexpr T dualityGap = T(16) * unitRoundoff;
+    // The expanding polygon's GapClosed rule (gjk2d/expand.hpp, Options::signedDistance): stop
+    // when the support point w along the closest edge's outward normal n lies beyond the edge by
+    // dot(n, w - v) <= expandGap * dot(n, w), i.e. when the certified interval [edge distance,
+    // support value] is narrower than 4u of the support value. The edge distance itself,
+    // cross(v, e) / |e|, is rounded by at least 3u relative (two products and a difference, a
+    // square root and a division: docs/error-bound.md, "Penetration depth"), so a narrower gap
+    // cannot be resolved by expanding further; 4u is the next power-of-two multiple. Its share of
+    // the depth bound is 4u times the depth (docs/error-bound.md).
+    static constexpr T expandGap = T(4) * unitRoundoff;
     // Range in which the query's products neither overflow nor lose precision to underflow.
     // The largest products are dots and crosses of two simplex vertices, at most ~8 R^2 for
     // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below

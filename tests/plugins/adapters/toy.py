@@ -22,6 +22,12 @@ overlap: 0.25 apart), and adds 5e-7 to the
 distance with B at x = 4 (within its tolerance, beyond gjk2d's bound) and 1e-3 with B at x = 5
 (beyond its tolerance).
 
+depth.py (protocol version 2) declares overlap `penetration` and a depth clause, `contract
+toy-depth depth 1e-3 none SOURCE` (tests/plugins/depth_contract_check.py, on contract_cases.json);
+it answers like good, but on the overlapping squares (B at x = 0.5) minus the depth 0.5 and the
+penetration pair (1, 0.5), (0.5, 0.5), derived by hand. depth-bad.py declares the clause with a
+NaN tolerance, depth-zero.py one on overlap `zero`: both are refused at the handshake.
+
 The `prepared` line and the `timed` figures (protocol version 2): prepared.py declares
 `prepared toy-prepared case` and answers `timed ID NS PREPARE_NS`, its cases' world points built
 once before the timed loop (prepare()), the `distance` requests through the same prepare() and
@@ -101,6 +107,8 @@ def answer(tok, behaviour):
     if bx == 4 and behaviour == "garbage":
         return "hello there " + tok[1]
     d, p, q = distance(a, ra, b, rb)
+    if behaviour == "depth" and bx == 0.5:  # two unit squares 0.5 deep along x
+        return "ok {} -0.5 1.0 0.5 0.5 0.5 -1".format(tok[1])
     if behaviour == "contract":
         if d < 1e-6 or bx == 1.25:  # what FCL's tolerance does to a near touch
             return "ok {} -1.0 0.0 0.0 0.0 0.0 -1".format(tok[1])
@@ -211,7 +219,8 @@ def main(behaviour):
     if behaviour in ("fork-hang", "setsid"):
         spawn_sleeper(behaviour == "setsid")
     version = {"version": 3, "contract": 2, "prepared": 2, "prepared-missing": 2,
-               "prepared-bad-scope": 2}.get(behaviour, 1)
+               "prepared-bad-scope": 2, "depth": 2, "depth-bad": 2,
+               "depth-zero": 2}.get(behaviour, 1)
     say("gjk2d-adapter {}".format(version))
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = "quad" if behaviour == "bad-description" else "double"
@@ -219,6 +228,12 @@ def main(behaviour):
     if behaviour == "contract":
         say("contract toy-contract overlap zero tests/plugins/adapters/toy.py, answer()")
         say("contract toy-contract tolerance 1e-6 none tests/plugins/adapters/toy.py, answer()")
+    if behaviour in ("depth", "depth-bad", "depth-zero"):  # the depth line before its overlap's
+        tolerance = "nan none" if behaviour == "depth-bad" else "1e-3 none"
+        say("contract toy-{} depth {} tests/plugins/adapters/toy.py".format(behaviour, tolerance))
+        overlap = "zero" if behaviour == "depth-zero" else "penetration"
+        say("contract toy-{} overlap {} tests/plugins/adapters/toy.py, answer()".format(
+            behaviour, overlap))
     scope = {"prepared": "case", "prepared-missing": "shape", "prepared-bad-scope": "world",
              "prepared-v1": "case"}.get(behaviour)
     if scope:

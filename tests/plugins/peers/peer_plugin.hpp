@@ -48,12 +48,17 @@ class Plugin
         if (!describe)
             throw std::runtime_error(path + " does not export " GJK2D_PLUGIN_ENTRY_POINT);
         const gjk2d_plugin* d = describe();
+        auto depth =
+            reinterpret_cast<gjk2d_plugin_depth_fn>(::dlsym(handle_, GJK2D_PLUGIN_DEPTH_ENTRY));
+        const gjk2d_depth_contract* clauses = depth ? depth() : nullptr;
         for (int32_t i = 0; i < d->count; ++i)
             if (name == d->implementations[i].name)
             {
                 impl_ = &d->implementations[i];
                 if (d->abi_version >= 2 && d->contracts != nullptr)
                     contract_ = &d->contracts[i];
+                if (clauses != nullptr)
+                    depth_ = &clauses[i];
             }
         if (!impl_)
             throw std::runtime_error(path + " has no implementation " + name);
@@ -68,6 +73,8 @@ class Plugin
     const gjk2d_implementation& implementation() const { return *impl_; }
     // The implementation's declared contract (ABI version 2); nullptr: gjk2d's own.
     const gjk2d_contract* contract() const { return contract_; }
+    // Its depth clause (gjk2d_plugin_depth); nullptr when the plugin does not export one.
+    const gjk2d_depth_contract* depth() const { return depth_; }
     const std::string& library() const { return library_; }
 
     // The case in the implementation's scalar type (a float implementation gets it rounded).
@@ -107,6 +114,7 @@ class Plugin
     void* handle_ = nullptr;
     const gjk2d_implementation* impl_ = nullptr;
     const gjk2d_contract* contract_ = nullptr;
+    const gjk2d_depth_contract* depth_ = nullptr;
     std::string library_;
 };
 

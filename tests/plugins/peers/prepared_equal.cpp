@@ -15,6 +15,13 @@
 // that under the sanitize preset LeakSanitizer checks that release frees what prepare took.
 //
 //     prepared_equal --plugin PATH [--family SPEC]... [--cases FILE]... [--seed N]
+//                    [--within NAME TOL]
+//
+// --within NAME TOL: implementation NAME's distance and points are compared within TOL * max(1,
+// |value|) each, not bit for bit (status and iterations still exactly), and the largest difference
+// is printed: for a library whose answer is not a function of its inputs alone. FCL's signed
+// distance (fcl-0.7-libccd-signed) is one: its EPA's pair moves in the last bits with the heap
+// addresses its polytope gets (the same case queried twice in one process, docs/peers.md, "FCL").
 //
 // Exit 0: every case equal; 1: a difference (the first few printed) or a plugin without the
 // prepared entry point; 2: bad arguments.
@@ -27,6 +34,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -51,6 +59,21 @@ struct Answer
 bool sameBits(double x, double y)
 {
     return std::memcmp(&x, &y, sizeof x) == 0;
+}
+
+// The largest |x - y| / max(1, |x|) over an answer's five numbers (0 when either status is not OK
+// and both are the same).
+double relativeGap(const Answer& x, const Answer& y)
+{
+    if (x.status != GJK2D_STATUS_OK || y.status != GJK2D_STATUS_OK)
+        return x.status == y.status ? 0 : INFINITY;
+    double gap = 0;
+    const double xs[] = {x.distance, x.ax, x.ay, x.bx, x.by};
+    const double ys[] = {y.distance, y.ax, y.ay, y.bx, y.by};
+    for (int i = 0; i < 5; ++i)
+        if (!sameBits(xs[i], ys[i]))
+            gap = std::max(gap, std::abs(xs[i] - ys[i]) / std::max(1.0, std::abs(xs[i])));
+    return std::isnan(gap) ? INFINITY : gap;
 }
 
 bool operator==(const Answer& x, const Answer& y)
@@ -255,19 +278,25 @@ bool answerInChild(const gjk2d_implementation& im, const gjk2d_prepared& pr, int
 
 int main(int argc, char** argv)
 {
-    std::string plugin;
+    std::string plugin, withinName;
+    double withinTolerance = 0;
     std::vector<std::string> families, files;
     std::uint64_t seed = 1;
     for (int i = 1; i < argc; ++i)
     {
         const std::string arg = argv[i];
-        if (i + 1 >= argc)
+        if (i + 1 >= argc || (arg == "--within" && i + 2 >= argc))
         {
             std::fprintf(stderr, "prepared_equal: %s needs a value\n", arg.c_str());
             return 2;
         }
         const std::string value = argv[++i];
-        if (arg == "--plugin")
+        if (arg == "--within")
+        {
+            withinName = value;
+            withinTolerance = std::stod(argv[++i]);
+        }
+        else if (arg == "--plugin")
             plugin = value;
         else if (arg == "--family")
             families.push_back(value);
@@ -349,6 +378,8 @@ int main(int argc, char** argv)
                     ++crashed;
         }
         std::size_t compared = 0;
+        const bool within = withinName == im.name;
+        double largestGap = 0;
         for (std::size_t k = 0; k < cases.size(); ++k)
         {
             if (!answered[k])
@@ -364,11 +395,21 @@ int main(int argc, char** argv)
                          {"prepared, queried again", a.again},
                          {"prepared elsewhere (shape scope)", a.moved}};
             for (const auto& form : forms)
-                if (!(form.answer == a.plain) && ++failures <= 10)
+            {
+                const double gap = within ? relativeGap(a.plain, form.answer) : 0;
+                largestGap = std::max(largestGap, gap);
+                const bool equal =
+                    within ? gap <= withinTolerance && form.answer.iterations == a.plain.iterations
+                           : form.answer == a.plain;
+                if (!equal && ++failures <= 10)
                     std::printf("%s, case %s: %s differs:\n  plain:    %s\n  %s: %s\n", im.name,
                                 cases[k]->name.c_str(), form.what, show(a.plain).c_str(), form.what,
                                 show(form.answer).c_str());
+            }
         }
+        if (within)
+            std::printf("%s: compared within %g: the largest difference %.3g\n", im.name,
+                        withinTolerance, largestGap);
         std::printf(
             "%s (scope %s): %zu cases compared, %zu refused by the description, %zu brought "
             "the library down\n",

@@ -156,7 +156,8 @@
     'double-warm': '#ad1457', 'float-warm': '#f48fb1',
     'double-every-start': '#7a7a12', 'float-every-start': '#cfd250',
     'double-batch': '#00695c', 'float-batch': '#80cbc4',
-    'double-correct': '#c62828'
+    'double-correct': '#c62828',
+    'double-signed': '#791571', 'float-signed': '#ea86e1'
   };
   var BUILTIN_MARKER = 'circle';
   // RGB distances: at least 48 from every built-in colour, at least 72 from each other (docs/report.md).
@@ -1162,14 +1163,69 @@
     return h('div', {class: 'table-wrap'}, h('table', {class: 'data summary'}, h('thead', {}, head1, head2), body));
   }
 
+  // --- Families: penetration -------------------------------------------------------------------------
+
+  // A family x variant's penetration block (report.json families[].variants[].penetration: a
+  // contract whose overlap answer is penetration, its depths on overlapping shapes), or null.
+  function penetrationOf(st) { return st && st.penetration && typeof st.penetration === 'object' ? st.penetration : null; }
+
+  // "x (case)" for a penetration histogram's largest value.
+  function largestCell(hh, bad) {
+    var has1 = hh && num(hh.count) > 0;
+    return h('td', {class: 'num' + (bad ? ' bad' : ''), title: has1 && has(hh.max_case) ? String(hh.max_case) : null},
+      has1 ? fmt(hh.max) : '—', has1 && has(hh.max_case) ? h('div', {class: 'small muted case-name'}, String(hh.max_case)) : null);
+  }
+
+  // The penetration verdict in words: gjk2d's own contract pass / FAIL; a declared one breaks it,
+  // keeps it outside gjk2d's depth bound, or keeps it.
+  function penetrationVerdict(p, vn) {
+    var broken = num(p.contract_violations) > 0, outside = num(p.beyond_bound_keeping_contract) > 0;
+    if (ownContract(vn)) return broken ? (isJudged(vn) ? 'FAIL' : 'fails (not judged)') : 'pass';
+    return broken ? 'breaks its contract' : outside ? 'outside gjk2d\'s depth bound' : 'keeps its contract';
+  }
+
+  // Beside the distance's table and histogram: the depth of each variant whose contract says
+  // penetration, on the family's overlapping cases (exact signed distance < 0), against the exact
+  // signed distance; a table and the histogram of error / gjk2d's depth bound. Null when no
+  // variant of the family has the block.
+  function penetrationBlock(f, present) {
+    var fv = familyVariants(f);
+    var names = present.filter(function (n) { return penetrationOf(fv[n]); });
+    if (!names.length) return null;
+    var head = h('tr', {}, ['Variant', 'Overlapping cases', 'Breaks contract', 'Outside depth bound', 'Max |d − s|', 'Max rel. error', 'Max error / depth bound', 'p99 error / depth bound', 'Result']
+      .map(function (t, i) { return h('th', {class: i > 0 && i < 8 ? 'num' : null}, t); }));
+    var body = h('tbody', {});
+    var pseudo = {variants: {}}; // the histogram reads errors[metric], as the distance's does
+    names.forEach(function (vn) {
+      var p = penetrationOf(fv[vn]), verdict = penetrationVerdict(p, vn);
+      var bad = verdict === 'FAIL' || verdict === 'breaks its contract';
+      pseudo.variants[vn] = {errors: {bound_ratio: p.bound_ratio, abs: p.abs, rel: p.rel}};
+      var w = p.worst_contract_violation;
+      body.appendChild(h('tr', {'data-variant': vn, class: 'penetration-row'},
+        h('td', {class: 'variant-cell'}, variantDot(vn), vn),
+        h('td', {class: 'num'}, fmtInt(p.cases)),
+        h('td', {class: 'num' + (num(p.contract_violations) > 0 && isJudged(vn) ? ' bad' : ''), title: w ? w.reason + ' on ' + w.case : null},
+          fmtInt(p.contract_violations), w ? h('div', {class: 'small'}, w.reason + ' (' + w.case + ')') : null),
+        h('td', {class: 'num'}, fmtInt(p.beyond_bound_keeping_contract)),
+        largestCell(p.abs), largestCell(p.rel),
+        largestCell(p.bound_ratio, p.bound_ratio && num(p.bound_ratio.max) > 1),
+        h('td', {class: 'num'}, fmt(p.bound_ratio && p.bound_ratio.p99)),
+        h('td', {class: 'penetration-verdict' + (bad ? ' bad' : '')}, verdict)));
+    });
+    var metric = {key: 'bound_ratio', label: 'depth error / depth bound', axis: '|d − s| / gjk2d\'s depth bound  [s: exact signed distance; ≤ 1 within]'};
+    return h('div', {class: 'penetration-block'},
+      h('div', {class: 'plot-title'}, 'Penetration: the depth on overlapping cases, against the exact signed distance'),
+      h('div', {class: 'table-wrap'}, h('table', {class: 'data summary penetration'}, h('thead', {}, head), body)),
+      h('div', {class: 'plot-box'}, errorHistogram(pseudo, metric, names),
+        h('div', {class: 'legend'}, names.map(function (n) { return h('span', {class: 'legend-item'}, variantDot(n), n); }), legendItem('#555', 'p99', 'dash'))));
+  }
+
   // The answers that break their implementation's contract (gjk2d's own: failures, with their kinds
   // below); for an implementation with a contract of its own, the reasons and the answers outside
   // gjk2d's bound that keep it.
   function violationCell(st, vn, tip, failDetail) {
     var n = violationsOf(st), own = ownContract(vn);
-    var unjudged = st && isNum(st.depth_unjudged) ? num(st.depth_unjudged) : 0;
-    var below = own ? failDetail : violationReasons(st).concat(outsideBoundOf(st) > 0 ? [fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound'] : [],
-      unjudged > 0 ? [fmtInt(unjudged) + ' penetration depth' + (unjudged === 1 ? '' : 's') + ' not judged yet'] : []);
+    var below = own ? failDetail : violationReasons(st).concat(outsideBoundOf(st) > 0 ? [fmtInt(outsideBoundOf(st)) + ' outside gjk2d\'s bound'] : []);
     return h('td', {class: 'num' + (n > 0 && isJudged(vn) ? ' bad' : ''), title: (own ? tip : below).join(', ') || null},
       fmtInt(n), below.length ? h('div', {class: 'small'}, below.join(', ')) : null);
   }
@@ -1369,6 +1425,8 @@
       })));
     }
     card.appendChild(familyTable(f, report));
+    var pen = penetrationBlock(f, present);
+    if (pen) card.appendChild(pen);
     var metrics = METRICS.filter(function (m) { return present.some(function (n) { return hist(fv[n], m.key); }); });
     var histHolder = h('div', {class: 'hist-holder'});
     var current = metrics.length ? metrics[0] : METRICS[0];
@@ -1764,9 +1822,16 @@
 
   Viewer.prototype.closestPoints = function () {
     var ex = this.d.exact || {}, vd = this.vdata();
+    // On overlap, where the run judged a penetration depth (exact "signed_distance" < 0): the exact
+    // penetration pair, and the variant's own when it answered one (a negative distance).
+    var overlap = isNum(ex.signed_distance) && num(ex.signed_distance) < 0;
+    var signedAnswer = vd.penetration && isNum(vd.distance) && num(vd.distance) < 0;
     return {
       ea: finitePoint(ex.witnessA) ? pt(ex.witnessA) : null, eb: finitePoint(ex.witnessB) ? pt(ex.witnessB) : null,
-      ga: finitePoint(vd.pointA) ? pt(vd.pointA) : null, gb: finitePoint(vd.pointB) ? pt(vd.pointB) : null
+      ga: finitePoint(vd.pointA) ? pt(vd.pointA) : null, gb: finitePoint(vd.pointB) ? pt(vd.pointB) : null,
+      pa: overlap && finitePoint(ex.penetrationA) ? pt(ex.penetrationA) : null,
+      pb: overlap && finitePoint(ex.penetrationB) ? pt(ex.penetrationB) : null,
+      signedAnswer: !!signedAnswer
     };
   };
 
@@ -1785,7 +1850,7 @@
     var fullS = bbox([]);
     A.pts.forEach(function (p) { growBox(fullS, p, A.r); });
     B.pts.forEach(function (p) { growBox(fullS, p, B.r); });
-    [cp.ea, cp.eb, cp.ga, cp.gb].forEach(function (p) { if (p) growBox(fullS, p, 0); });
+    [cp.ea, cp.eb, cp.ga, cp.gb, cp.pa, cp.pb].forEach(function (p) { if (p) growBox(fullS, p, 0); });
     var Z = pts(this.d.minkowski), rz = A.r + B.r;
     var fullM = bbox([[0, 0]]);
     Z.forEach(function (p) { growBox(fullM, p, rz); });
@@ -1799,7 +1864,7 @@
     var zE = cp.ea && cp.eb ? [cp.ea[0] - cp.eb[0], cp.ea[1] - cp.eb[1]] : null;
     var zG = cp.ga && cp.gb ? [cp.ga[0] - cp.gb[0], cp.ga[1] - cp.gb[1]] : null;
     var spanS = Math.max(fullS.x1 - fullS.x0, fullS.y1 - fullS.y0), spanM = Math.max(fullM.x1 - fullM.x0, fullM.y1 - fullM.y0);
-    var zs = zoomBox([cp.ea, cp.eb, cp.ga, cp.gb], spanS), zm = zoomBox([[0, 0], zE, zG], spanM);
+    var zs = zoomBox([cp.ea, cp.eb, cp.ga, cp.gb, cp.pa, cp.pb], spanS), zm = zoomBox([[0, 0], zE, zG], spanM);
     var PW = this.PW, PH = this.PH;
     var vS = makeView(this.zoom && zs ? zs : fullS, PW, PH, 28);
     var vM = makeView(this.zoom && zm ? zm : fullM, PW, PH, 28);
@@ -1860,6 +1925,20 @@
     var e = sv('path', a, title ? svgTitle(title) : null);
     g.appendChild(e);
     return e;
+  }
+
+  // An arrow from p to q (world points; clipped to the view, its head drawn when q is inside):
+  // the minimal translation of a penetration pair.
+  function arrow(g, v, p, q, color, title, cls) {
+    if (!p || !q) return;
+    var a = v.p(p), b = v.p(q), dx = b[0] - a[0], dy = b[1] - a[1], L = Math.hypot(dx, dy);
+    var s = clipSeg(a, b, v.rect);
+    if (!s || !(L > 0)) return;
+    var ux = dx / L, uy = dy / L, hx = -uy, hy = ux, k = Math.min(11, L / 2);
+    var kids = [sv('path', {d: pathOf(s, false), fill: 'none', stroke: color, 'stroke-width': 2.2})];
+    if (v.inside(b)) kids.push(sv('path', {d: 'M' + b[0] + ' ' + b[1] + 'L' + (b[0] - ux * k + hx * k * 0.45) + ' ' + (b[1] - uy * k + hy * k * 0.45) +
+      'L' + (b[0] - ux * k - hx * k * 0.45) + ' ' + (b[1] - uy * k - hy * k * 0.45) + 'Z', fill: color}));
+    g.appendChild(sv('g', {class: cls || 'arrow'}, svgTitle(title), kids));
   }
 
   function cross(g, v, p, size, color, title) {
@@ -1933,6 +2012,16 @@
     seg(g, v, cp.ea, cp.eb, {stroke: GEO.exact, 'stroke-width': 1.2}, 'exact closest points');
     cross(g, v, cp.ea, 5, GEO.exact, 'exact witness on A: ' + fmtPt(cp.ea));
     cross(g, v, cp.eb, 5, GEO.exact, 'exact witness on B: ' + fmtPt(cp.eb));
+    // The minimal translation of B to contact, pA − pB: an arrow from B's point to A's, exact in
+    // black, the variant's own (a penetration answer) in its colour.
+    if (cp.pa && cp.pb) {
+      arrow(g, v, cp.pb, cp.pa, GEO.exact, 'exact minimal translation of B: pA − pB, from ' + fmtPt(cp.pb) + ' to ' + fmtPt(cp.pa) +
+        ', depth ' + fmtFull(-num(this.d.exact.signed_distance)), 'translation-arrow exact-translation');
+      cross(g, v, cp.pa, 4, GEO.exact, 'exact penetration point on A: ' + fmtPt(cp.pa));
+      cross(g, v, cp.pb, 4, GEO.exact, 'exact penetration point on B: ' + fmtPt(cp.pb));
+    }
+    if (cp.signedAnswer) arrow(g, v, cp.gb, cp.ga, col, this.variant + ' minimal translation of B: pointA − pointB, depth ' + fmtFull(-num(this.vdata().distance)),
+      'translation-arrow variant-translation');
     dot(g, v, cp.ga, 4, {fill: 'white', stroke: col, 'stroke-width': 2.5}, this.variant + ' GJK point on A: ' + fmtPt(cp.ga));
     dot(g, v, cp.gb, 4, {fill: 'white', stroke: col, 'stroke-width': 2.5}, this.variant + ' GJK point on B: ' + fmtPt(cp.gb));
     // Vertex indices (they name iA, iB in the trace) when there is room.

@@ -25,7 +25,8 @@
 // Contracts: the bridge answers the hosted plugin's ABI version as its protocol version, so that
 // the bridged plugin is held to what the plugin itself is. A version-2 plugin with contracts
 // gets, after each implementation line, its three `contract` lines (overlap, tolerance, margin,
-// each with its source); a version-1 plugin, or a version-2 one whose contracts are NULL, gets
+// each with its source), and a fourth, `depth`, when the plugin exports gjk2d_plugin_depth; a
+// version-1 plugin, or a version-2 one whose contracts are NULL, gets
 // none: gjk2d's own contract, as when the host loads the plugin itself.
 //
 // Prepared shapes: when the plugin exports gjk2d_plugin_prepared, the bridge speaks protocol
@@ -66,7 +67,8 @@ void say(const std::string& line)
 }
 
 const gjk2d_plugin* g_plugin = nullptr;
-const gjk2d_prepared* g_prepared = nullptr; // the optional gjk2d_plugin_prepared table
+const gjk2d_prepared* g_prepared = nullptr;    // the optional gjk2d_plugin_prepared table
+const gjk2d_depth_contract* g_depth = nullptr; // the optional gjk2d_plugin_depth clauses
 std::string g_library;
 std::string g_suffix; // appended to every implementation's name (the second argument)
 
@@ -98,6 +100,9 @@ void openPlugin(const char* path)
             die(std::string(path) + ": " GJK2D_PLUGIN_PREPARED_ENTRY
                                     " returns a table without its four functions");
     }
+    auto depth = reinterpret_cast<gjk2d_plugin_depth_fn>(::dlsym(h, GJK2D_PLUGIN_DEPTH_ENTRY));
+    if (depth != nullptr && (g_depth = depth()) == nullptr)
+        die(std::string(path) + ": " GJK2D_PLUGIN_DEPTH_ENTRY " returns NULL");
 }
 
 // The index of the implementation called `name` (suffix included); -1 when none is.
@@ -140,8 +145,10 @@ std::string tolerance(double x)
     return x < 0 ? std::string("none") : num(x);
 }
 
-// The version-2 `contract` lines of implementation `name` (gjk2d_contract's three clauses).
-void sayContract(const std::string& name, const gjk2d_contract& c)
+// The version-2 `contract` lines of implementation `name` (gjk2d_contract's three clauses, and
+// the depth clause when the plugin states one: `depth` may be NULL).
+void sayContract(const std::string& name, const gjk2d_contract& c,
+                 const gjk2d_depth_contract* depth)
 {
     static const char* const kOverlap[] = {"common-point", "zero", "midpoint", "penetration",
                                            "perimeter"}; // gjk2d_overlap's order
@@ -152,6 +159,9 @@ void sayContract(const std::string& name, const gjk2d_contract& c)
     say("contract " + name + " tolerance " + tolerance(c.distance_abs_tolerance) + " " +
         tolerance(c.distance_rel_tolerance) + sourceText(c.tolerance_source));
     say("contract " + name + " margin " + num(c.margin) + sourceText(c.margin_source));
+    if (depth != nullptr)
+        say("contract " + name + " depth " + tolerance(depth->abs_tolerance) + " " +
+            tolerance(depth->rel_tolerance) + sourceText(depth->source));
 }
 
 void handshake()
@@ -178,7 +188,7 @@ void handshake()
             ((im.accepts & GJK2D_ACCEPTS_RADIUS) ? "radius" : "no-radius") + " " +
             std::to_string(im.max_vertices) + " " + (im.description ? im.description : ""));
         if (contracts != nullptr)
-            sayContract(name, contracts[i]);
+            sayContract(name, contracts[i], g_depth ? &g_depth[i] : nullptr);
         const int32_t scope = scopeOf(i);
         if (g_prepared && scope != GJK2D_PREPARED_SHAPE && scope != GJK2D_PREPARED_CASE)
             die("implementation " + name + ": prepared scope " + std::to_string(scope) +

@@ -46,7 +46,13 @@
 //   promise no accuracy of the answer;
 // - margin 0: the adapter sets each shape's margin to the case's radius, so there is no skin
 //   beyond the case's shape; Bullet's default is CONVEX_DISTANCE_MARGIN = 0.04
-//   (btCollisionMargin.h:19-22), which the adapter does not use.
+//   (btCollisionMargin.h:19-22), which the adapter does not use;
+// - depth (gjk2d_plugin_depth, kDepth below): none stated. EPA_ACCURACY (btGjkEpa2.cpp:63, 1e-12
+//   in double; :67, 1e-4 in float; Bullet 3.24's src/, not installed by Debian) is EPA's stopping
+//   rule, tested at :698 (stop when the support along the best face's normal is within it of the
+//   face): it bounds the depth only when EPA ends there (AccuraryReached), not when it ends on
+//   InvalidHull or OutOfVertices (:716, :728), whose last face is answered all the same (:734);
+//   and no header or document of Bullet's promises it to users.
 //
 // Findings (docs/peers.md, "## Bullet"; validation/plugins/bullet/tests/test_bullet.cpp): in double
 // every separated random case is within gjk2d's bound. In float the default equal-vertex threshold
@@ -99,21 +105,31 @@ double extent(const Shape& s)
     return double(s.radius) + m;
 }
 
-// The prisms' half height h, one per case: h = 2 (eA + eB) in double, then rounded to btScalar; 1
-// when it is 0 (two bare points at their local origins). The distance and the nearest points' x, y
-// do not depend on h (docs/peers.md, "The prism reduction"), but a penetration does: two prisms of
-// the same [-h, h] are also separated by a translation of 2h along z, and EPA answers the smallest
-// translation it finds, so its depth is the 2D one only while that is below 2h (with h = 1, a
-// segment crossing a 10 x 10 square 4 deep is answered depth 2, along z: test_prism_height.cpp).
-// Every point of a shape, radius included, lies within e of its position (for a unit (c, s)), so
-// its width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most 2
-// min(eA, eB) <= eA + eB < 2h: the minimal translation never runs along z. The same rule in fcl.cpp
-// and in the programs of `gjk-validate repro`, so that they answer as this adapter. At most the
-// largest btScalar / 8, so that h, 2h and the prisms' vertices stay finite in btScalar (beyond it
-// the shapes themselves are near btScalar's range).
+// The prisms' half height h, one per case: h = k (eA + eB) in double, then rounded to btScalar
+// (k = kHeightFactor below); 1 when it is 0 (two bare points at their local origins). The distance
+// and the nearest points' x, y do not depend on h (docs/peers.md, "The prism reduction"), but a
+// penetration does, twice:
+// - Exactly: two prisms of the same [-h, h] are also separated by a translation of 2h along z, so
+//   the 3D minimal translation is min(2D depth, 2h) (+ the radii). Every point of a shape, radius
+//   included, lies within e of its position (for a unit (c, s)), so its width is at most 2e, and
+//   the 2D depth, at most the smaller shape's width, is at most 2 min(eA, eB) <= eA + eB: any
+//   k >= 1 keeps the z translation out, by at least (2k - 1) times the depth (with h = 1, a segment
+//   crossing a 10 x 10 square 4 deep is answered depth 2, along z: test_prism_height.cpp).
+// - As Bullet computes it: its EPA (btGjkEpa2.cpp) often ends on InvalidHull (the prisms' side
+//   faces are flat, four coplanar vertices each) and answers its last face, which spans the prisms'
+//   height and is tilted in z by about (the shapes' width) / h: the depth comes out short by a
+//   factor cos(tilt), falling as 1 / k^2. Taller is better until btScalar's rounding of the tall
+//   faces makes EPA fail outright (depth 0) more often: from about k = 2^8 in float and 2^18 in
+//   double on random:2000 (seed 1). kHeightFactor sits 16 times below that, 2^4 in float and 2^14
+//   in double (the figures at both heights: docs/peers.md, "The prism reduction";
+//   tests/bullet_depth_height_{float,double} measures them).
+// The same rule in the programs of `gjk-validate repro` and in the direct loop, so that they answer
+// as this adapter. At most the largest btScalar / 8, so that h, 2h and the prisms' vertices stay
+// finite in btScalar (beyond it the shapes themselves are near btScalar's range).
+constexpr double kHeightFactor = sizeof(btScalar) == sizeof(double) ? 16384 : 16;
 btScalar prismHalfHeight(const Shape& a, const Shape& b)
 {
-    const double h = 2 * (extent(a) + extent(b));
+    const double h = kHeightFactor * (extent(a) + extent(b));
     const double most = double(std::numeric_limits<btScalar>::max()) / 8;
     return btScalar(h == 0 ? 1.0 : std::min(h, most));
 }
@@ -265,6 +281,18 @@ const gjk2d_contract kContract = {
     "shape; Bullet's default, not used: CONVEX_DISTANCE_MARGIN 0.04, "
     "BulletCollision/CollisionShapes/btCollisionMargin.h:19-22, Bullet 3.24"};
 
+// The depth clause: none stated (the header comment), the constant cited for the report's reader.
+#ifdef BT_USE_DOUBLE_PRECISION
+#define GJK2D_BULLET_EPA_ACCURACY "btGjkEpa2.cpp:63, EPA_ACCURACY 1e-12 (double)"
+#else
+#define GJK2D_BULLET_EPA_ACCURACY "btGjkEpa2.cpp:67, EPA_ACCURACY 1e-4 (float)"
+#endif
+const gjk2d_depth_contract kDepth = {
+    -1, -1,
+    "none: " GJK2D_BULLET_EPA_ACCURACY " is EPA's stopping rule (btGjkEpa2.cpp:698), not a "
+    "promise: EPA also ends on InvalidHull or OutOfVertices (btGjkEpa2.cpp:716, 728) "
+    "and answers its last face; src/BulletCollision/NarrowPhaseCollision/, Bullet 3.24"};
+
 const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kImplementations, &kContract};
 
 } // namespace
@@ -277,6 +305,12 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return "Bullet " GJK2D_BULLET_VERSION " (Debian libbullet-dev)";
+}
+
+// The depth clause (the optional export of gjk2d/plugin.h): none stated, EPA's constant cited.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_depth_contract* gjk2d_plugin_depth(void)
+{
+    return &kDepth;
 }
 
 // Shapes prepared once (the optional export of gjk2d/plugin.h): each case's btConvexHullShapes.

@@ -1,7 +1,9 @@
 // The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h, ABI version 2): fcl::distance between two
 // prisms, with both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD,
-// FCL's default) and "fcl-0.7-indep" (GST_INDEP). Built against Debian's libfcl-dev (FCL 0.7.0,
-// whose headers are upstream's tag 0.7.0 unchanged); docs/peers.md, "## FCL".
+// FCL's default) and "fcl-0.7-indep" (GST_INDEP), and a third, "fcl-0.7-libccd-signed":
+// GST_LIBCCD with DistanceRequest::enable_signed_distance = true (issue 51). Built against Debian's
+// libfcl-dev (FCL 0.7.0, whose headers are upstream's tag 0.7.0 unchanged); docs/peers.md, "##
+// FCL".
 //
 // The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
 // prism P x [-h, h], the same h for both shapes, chosen per case (prismHalfHeight, below); the
@@ -24,11 +26,22 @@
 //   capsule are the 2D point and segment swept by r in 3D, whose distance to a prism is again the
 //   2D one. Any other shape with radius > 0 is refused (GJK2D_STATUS_REFUSED): FCL has no
 //   rounded polytope, and approximating one would judge our approximation, not FCL.
-// - Overlap: unsigned distance (enable_signed_distance = false, FCL's default). FCL's answer is
-//   reported as it is: in collision its min_distance is "implementation defined" and negative
-//   (mostly -1), and it sets no nearest points (both stay the origin). Signed distance is not used:
-//   with GST_INDEP it hits an assert compiled into Debian's libfcl (distance-inl.h:177) on
-//   overlapping convexes.
+// - Overlap: the first two variants ask for unsigned distance (enable_signed_distance = false,
+//   FCL's default). FCL's answer is reported as it is: in collision its min_distance is
+//   "implementation defined" and negative (mostly -1), and it sets no nearest points (both stay
+//   the origin). fcl-0.7-libccd-signed asks for signed distance: on overlap FCL's libccd path
+//   (primitive shapes: "SD_1, NP", distance_request.h:64-76) runs libccd's GJK then its EPA
+//   (gjk_libccd-inl.h:2186-2210, ccdGJKSignedDist) and answers minus the penetration depth and the
+//   EPA's pair, each point on its own shape's surface; its x, y are reported, as for a distance.
+//   Signed distance with GST_INDEP is not offered: it hits an assert compiled into Debian's libfcl
+//   (distance-inl.h:177) on overlapping convexes. Asserts inside libccd's EPA
+//   (ComputeVisiblePatch, gjk_libccd-inl.h:1315-1340) abort the process: the runner calls a plugin
+//   in a child process, so an abort costs that one case, counted as a crash.
+// - Exceptions: FCL reports some failures by throwing (FCL_THROW_FAILED_AT_THIS_CONFIGURATION, a
+//   std::logic_error: libccd's EPA on a degenerate face, gjk_libccd-inl.h:994, "Cannot compute
+//   face normal for a degenerate (zero-area) triangle"). A user catches it; the adapter does, and
+//   answers GJK2D_STATUS_ERROR ("tried and failed", counted as an error), the message in the
+//   plugin's log. An exception must not cross the plugin's C functions.
 // - Shapes prepared once (gjk2d_plugin_prepared, scope `case`): a prepared shape is the
 //   fcl::CollisionObject of its geometry, built from the case's world points with the case's half
 //   height; a query is fcl::distance on two objects with the request below. distance_d is
@@ -63,6 +76,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <exception>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -196,9 +211,21 @@ struct Prepared
     std::unique_ptr<fcl::CollisionObject<double>> object;
 };
 
+// The variants, in kImplementations' order: FCL's solver and whether signed distance is asked.
+struct Variant
+{
+    const char* name;
+    fcl::GJKSolverType solver;
+    bool signedDistance;
+};
+constexpr Variant kVariants[] = {{"fcl-0.7-libccd", fcl::GST_LIBCCD, false},
+                                 {"fcl-0.7-indep", fcl::GST_INDEP, false},
+                                 {"fcl-0.7-libccd-signed", fcl::GST_LIBCCD, true}};
+constexpr int32_t kVariantCount = int32_t(sizeof(kVariants) / sizeof(kVariants[0]));
+
 void* prepare(int32_t implementation, const void* shape, const void* other)
 {
-    if (implementation < 0 || implementation > 1 || other == nullptr)
+    if (implementation < 0 || implementation >= kVariantCount || other == nullptr)
         return nullptr;
     const auto& s = *static_cast<const gjk2d_shape_d*>(shape);
     const auto& o = *static_cast<const gjk2d_shape_d*>(other);
@@ -217,9 +244,9 @@ void release(int32_t /*implementation*/, void* prepared)
     delete static_cast<Prepared*>(prepared);
 }
 
-// The query, what an FCL user pays for one on two kept objects: the request (nearest points,
-// unsigned distance, the implementation's solver), fcl::distance, the result copied out. The case's
-// shapes are not read (their transforms are in the objects' points).
+// The query, what an FCL user pays for one on two kept objects: the request (nearest points, the
+// implementation's solver and signed distance or not), fcl::distance, the result copied out. The
+// case's shapes are not read (their transforms are in the objects' points).
 int32_t distance(int32_t implementation, const void* preparedA, const void* /*a*/,
                  const void* preparedB, const void* /*b*/, void* /*cache*/, void* result)
 {
@@ -229,14 +256,24 @@ int32_t distance(int32_t implementation, const void* preparedA, const void* /*a*
         return GJK2D_STATUS_REFUSED;
     fcl::DistanceRequest<double> request;
     request.enable_nearest_points = true;
-    request.enable_signed_distance = false;
-    request.gjk_solver_type = implementation == 0 ? fcl::GST_LIBCCD : fcl::GST_INDEP;
+    request.enable_signed_distance = kVariants[implementation].signedDistance;
+    request.gjk_solver_type = kVariants[implementation].solver;
     fcl::DistanceResult<double> r; // its nearest points start unwritten (Eigen)
     const double none = std::numeric_limits<double>::quiet_NaN();
     r.nearest_points[0] = r.nearest_points[1] = Vec3(none, none, none);
-    const double d = fcl::distance(pa.object.get(), pb.object.get(), request, r);
+    double d = 0;
+    try
+    {
+        d = fcl::distance(pa.object.get(), pb.object.get(), request, r);
+    }
+    catch (const std::exception& e) // FCL's own report of a failure (the header comment)
+    {
+        std::fprintf(stderr, "gjk2d-fcl: %s: FCL threw: %s\n", kVariants[implementation].name,
+                     e.what());
+        return GJK2D_STATUS_ERROR;
+    }
     auto* out = static_cast<gjk2d_result_d*>(result);
-    out->distance = d; // negative: FCL's "in collision", as it is (overlap `zero`)
+    out->distance = d; // negative: "in collision" (overlap `zero`), or minus the depth (signed)
     out->point_a[0] = r.nearest_points[0].x();
     out->point_a[1] = r.nearest_points[0].y();
     out->point_b[0] = r.nearest_points[1].x();
@@ -273,18 +310,28 @@ int32_t indepDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk
     return fclDistance(1, a, b, out);
 }
 
+int32_t signedDistance(const gjk2d_shape_d* a, const gjk2d_shape_d* b, void*, gjk2d_result_d* out)
+{
+    return fclDistance(2, a, b, out);
+}
+
 const gjk2d_prepared kPrepared = {&scope, &prepare, &distance, &release};
 
 const gjk2d_implementation kImplementations[] = {
-    {"fcl-0.7-libccd",
+    {kVariants[0].name,
      "FCL " GJK2D_FCL_VERSION " fcl::distance, GST_LIBCCD, prisms of Convex (Sphere, Capsule for "
      "rounded points, segments)",
      GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &libccdDistance},
-    {"fcl-0.7-indep",
+    {kVariants[1].name,
      "FCL " GJK2D_FCL_VERSION " fcl::distance, GST_INDEP, prisms of Convex (Sphere, Capsule for "
      "rounded points, segments)",
      GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &indepDistance},
+    {kVariants[2].name,
+     "FCL " GJK2D_FCL_VERSION " fcl::distance, GST_LIBCCD, enable_signed_distance (EPA on "
+     "overlap), prisms of Convex (Sphere, Capsule for rounded points, segments)",
+     GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &signedDistance},
 };
+static_assert(sizeof(kImplementations) / sizeof(kImplementations[0]) == kVariantCount);
 
 // The sources: FCL 0.7.0's headers (Debian's /usr/include/fcl = upstream's include/fcl at tag
 // 0.7.0), as read for this contract; a new FCL needs them read again.
@@ -294,25 +341,54 @@ const gjk2d_implementation kImplementations[] = {
     "(enable_signed_distance false, the default: \"implementation defined (mostly -1)\"), "        \
     "FCL 0.7.0"
 
+#define GJK2D_FCL_LIBCCD_TOLERANCE_SOURCE                                                          \
+    "none: DistanceRequest::distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: "   \
+    "1e-6) is GST_LIBCCD's stopping rule (fcl/narrowphase/distance-inl.h:234; "                    \
+    "fcl/narrowphase/detail/convexity_based_algorithm/gjk_libccd-inl.h:2081, 2105), which \"does " \
+    "NOT necessarily mean that the computed distance is within\" it "                              \
+    "(gjk_libccd-inl.h:2693-2696), "                                                               \
+    "FCL 0.7.0"
+
 const gjk2d_contract kContracts[] = {
-    {-1, -1,
-     "none: DistanceRequest::distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: "
-     "1e-6) is GST_LIBCCD's stopping rule (fcl/narrowphase/distance-inl.h:234; "
-     "fcl/narrowphase/detail/convexity_based_algorithm/gjk_libccd-inl.h:2081, 2105), which \"does "
-     "NOT necessarily mean that the computed distance is within\" it (gjk_libccd-inl.h:2693-2696), "
-     "FCL 0.7.0",
-     GJK2D_OVERLAP_ZERO, GJK2D_FCL_OVERLAP_SOURCE, 0, ""},
+    {-1, -1, GJK2D_FCL_LIBCCD_TOLERANCE_SOURCE, GJK2D_OVERLAP_ZERO, GJK2D_FCL_OVERLAP_SOURCE, 0,
+     ""},
     {1e-6, 1e-6,
      "DistanceRequest::distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: 1e-6), "
      "GST_INDEP's gjk_tolerance (fcl/narrowphase/distance-inl.h:240): contact when the simplex is "
      "within it of the origin (fcl/narrowphase/detail/convexity_based_algorithm/gjk-inl.h:115), "
      "stop when the duality gap is within it times the distance (gjk-inl.h:147), FCL 0.7.0",
      GJK2D_OVERLAP_ZERO, GJK2D_FCL_OVERLAP_SOURCE, 0, ""},
+    {-1, -1, GJK2D_FCL_LIBCCD_TOLERANCE_SOURCE, GJK2D_OVERLAP_PENETRATION,
+     "fcl/narrowphase/distance_request.h:57-92 (enable_signed_distance: \"the exact negative "
+     "distance, which is the negated penetration depth\"; GST_LIBCCD on primitive shapes: \"SD_1, "
+     "NP\", \"The pair of nearest points are guaranteed to be on the surface of objects\"), "
+     "fcl/narrowphase/distance_result.h:55-64, FCL 0.7.0",
+     0, ""},
 };
 static_assert(sizeof(kContracts) / sizeof(kContracts[0]) ==
               sizeof(kImplementations) / sizeof(kImplementations[0]));
 
-const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations, kContracts};
+// The depth clauses (gjk2d_plugin_depth): only the signed variant answers a depth. FCL states its
+// accuracy in the doc of GJKSignedDistance, the function its libccd signed distance calls
+// (gjk_solver_libccd-inl.h:563-570, with DistanceRequest::distance_tolerance, 1e-6 by default):
+// "the EPA algorithm terminates when the difference between the upper bound and the lower bound of
+// the penetration depth is smaller than @p tolerance. Hence the computed penetration depth is
+// within @p tolerance to the true depth" (gjk_libccd-inl.h:2697-2700): abs 1e-6, rel none.
+const gjk2d_depth_contract kDepth[] = {
+    {-1, -1, nullptr},
+    {-1, -1, nullptr},
+    {1e-6, -1,
+     "fcl/narrowphase/detail/convexity_based_algorithm/gjk_libccd-inl.h:2697-2700 (EPA stops when "
+     "the depth's upper and lower bounds are within the tolerance: \"the computed penetration "
+     "depth "
+     "is within @p tolerance to the true depth\"), the tolerance DistanceRequest::"
+     "distance_tolerance (fcl/narrowphase/distance_request.h:98-99, 109: 1e-6; "
+     "fcl/narrowphase/detail/gjk_solver_libccd-inl.h:569), FCL 0.7.0"},
+};
+static_assert(sizeof(kDepth) / sizeof(kDepth[0]) == kVariantCount);
+
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, kVariantCount, kImplementations,
+                              kContracts};
 
 } // namespace
 
@@ -324,6 +400,13 @@ extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)
 extern "C" GJK2D_PLUGIN_EXPORT const char* gjk2d_plugin_library(void)
 {
     return "FCL " GJK2D_FCL_VERSION " (Debian libfcl-dev)";
+}
+
+// The depth clauses (the optional export of gjk2d/plugin.h): FCL's stated EPA tolerance for the
+// signed variant.
+extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_depth_contract* gjk2d_plugin_depth(void)
+{
+    return kDepth;
 }
 
 // Shapes prepared once (the optional export of gjk2d/plugin.h): each case's fcl::CollisionObjects.

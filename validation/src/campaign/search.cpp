@@ -333,17 +333,25 @@ const char* failureKind(const VariantOutcome& v)
         return "certified interval misses the truth";
     if (v.invalid != Invalid::None)
         return invalidName(v.invalid);
+    if (v.beyondDepthBound && !v.beyondBound)
+        return "penetration depth beyond the depth bound";
     return "error beyond the bound";
 }
 
 // The objective of one answer: error / bound, or the witness points' error / the witness bound
-// when larger (each point's distance to its shape, and the gap ||pB - pA|| against d). A witness
-// bound within 1024 subnormals of its floor measures resolution (as for the distance, below).
+// when larger (each point's distance to its shape, and the gap ||pB - pA|| against d), or, for a
+// penetration answer on overlapping shapes (a variant whose contract says penetration: the
+// signed variants), the depth error / gjk2d's depth bound when larger: on overlap the distance's
+// ratio is 0 (the answer is measured on max(d, 0)), so the search climbs the depth's there. A
+// witness bound within 1024 subnormals of its floor measures resolution (as for the distance,
+// below).
 double answerRatio(const VariantOutcome& v, Scalar scalar)
 {
+    const double depth = v.depthJudged && !std::isnan(v.depthRatio) ? v.depthRatio : 0;
+    const double distance = std::max(v.boundRatio, depth);
     if (v.witnessBound < 1024 * smallestSubnormal(scalar))
-        return v.boundRatio;
-    return std::isnan(v.witnessRatio) ? v.boundRatio : std::max(v.boundRatio, v.witnessRatio);
+        return distance;
+    return std::isnan(v.witnessRatio) ? distance : std::max(distance, v.witnessRatio);
 }
 
 class Search
@@ -570,7 +578,7 @@ class Search
             t.limit |= v.iterationLimit;
             t.mis |= v.mis == Misclass::FalseOverlap || v.mis == Misclass::FalseSeparation;
             t.interval |= v.certified && !v.intervalContains;
-            t.beyond |= v.beyondBound && !v.nonfinite;
+            t.beyond |= (v.beyondBound || v.beyondDepthBound) && !v.nonfinite;
             t.invalid |= v.invalid != Invalid::None;
             if (sc.failure.empty())
                 sc.failure = fmt::format("{}: {}", ctx_.variants[k]->name, failureKind(v));

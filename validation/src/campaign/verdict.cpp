@@ -149,6 +149,8 @@ Json variantsJson(const CampaignState& state, const EvalContext& ctx)
         }
         j["bound"] = {{"formula", boundFormula(*v)}, {"unit_roundoff", unitRoundoff(v->scalar)}};
         j["witness_bound"] = {{"formula", witnessBoundFormula(*v)}};
+        if (contractOf(*v).overlap == Overlap::Penetration) // its depth is judged
+            j["depth_bound"] = {{"formula", depthBoundFormula(*v)}};
         j["contract"] = contractJson(*v);
         j["timing"] = timingJson(*v);
         j["worst_contract_violation"] = worstViolationJson(state, k);

@@ -1,4 +1,5 @@
-// gjk-validate bench: the variants timed on given cases (no exact side).
+// gjk-validate bench: the variants timed on given cases (no exact side, but for --overlapping's
+// choice of cases, made before any timing).
 #include "timing/bench.hpp"
 #include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
@@ -9,7 +10,10 @@
 #include "implementations/peers.hpp"
 #include "implementations/plugins.hpp"
 #include "implementations/variants.hpp"
+#include "inputs/cases.hpp"
 #include "report/report.hpp"
+
+#include <gjk2d/exact.hpp>
 
 #include <fmt/format.h>
 
@@ -25,8 +29,44 @@ struct Options
     BenchConfig bcfg;
     std::vector<std::string> benchFamilies, benchFiles;
     std::string benchVariants = "all", benchJson, benchSeed = "1", against;
+    bool overlapping = false;
     PluginOptions plugins;
 };
+
+// --overlapping: each input keeps the cases whose shapes overlap or touch, as the exact side says
+// (exact::distance on the case's numbers as given: the exact distance, radii included, is 0), and
+// its rejected entries (still reported as such). Decided before any timing, never timed; a case
+// the exact side cannot take (it throws on it) is left out. For `double-signed` against a peer's
+// penetration depth (docs/speed.md, "Signed distance against Bullet's EPA").
+void keepOverlapping(std::vector<FamilyData>& inputs)
+{
+    for (FamilyData& f : inputs)
+    {
+        const bool labelled = f.labels.size() == f.cases.size();
+        FamilyData kept = f;
+        kept.cases.clear(), kept.labels.clear(), kept.rejected.clear();
+        for (std::size_t i = 0; i < f.cases.size(); ++i)
+        {
+            bool keep = !f.rejected[i].empty();
+            if (!keep)
+                try
+                {
+                    keep = exact::distance(toExact(f.cases[i].a), toExact(f.cases[i].b)).upper == 0;
+                }
+                catch (const std::exception&)
+                {
+                    keep = false;
+                }
+            if (!keep)
+                continue;
+            kept.cases.push_back(f.cases[i]);
+            kept.rejected.push_back(f.rejected[i]);
+            if (labelled)
+                kept.labels.push_back(f.labels[i]);
+        }
+        f = std::move(kept);
+    }
+}
 
 // --against NAME: a shipped peer's name for it (ShippedPeer::againstName), loaded here whatever
 // --no-default-plugins says, or a loaded plugin variant's name; its plugin must have its own
@@ -78,8 +118,10 @@ int benchCommand(Options& o, const CommandLine& line, CLI::App& sub)
     testFault();
     o.bcfg.families = o.benchFamilies;
     o.bcfg.caseFiles = o.benchFiles;
-    const BenchResult res =
-        runBench(o.bcfg, collectInputs(o.benchFamilies, o.benchFiles, o.bcfg.seed));
+    std::vector<FamilyData> inputs = collectInputs(o.benchFamilies, o.benchFiles, o.bcfg.seed);
+    if (o.overlapping)
+        keepOverlapping(inputs);
+    const BenchResult res = runBench(o.bcfg, inputs);
     std::fputs(benchTable(res.json).c_str(), stdout);
     for (const auto& r : res.json["rejected"])
         std::fprintf(stderr, "gjk-validate: rejected %s: %s\n",
@@ -119,6 +161,9 @@ Subcommand addBench(CLI::App& app, const CommandLine& line)
                       "without --variants, the variants are " +
                           std::string(kAgainstVariants));
     addPluginOptions(*bench, o->plugins, ShippedPlugins::OnlyNamed, Judging::RefusesJudge);
+    bench->add_flag("--overlapping", o->overlapping,
+                    "time only the cases whose shapes overlap or touch, as the exact side says "
+                    "(decided before timing): signed distance and penetration depths");
     bench->add_option("--passes", o->bcfg.passes, "timed passes per variant, 1..1000")
         ->capture_default_str();
     bench->add_option("--json", o->benchJson, "write the timings as JSON to this file");

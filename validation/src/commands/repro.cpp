@@ -17,6 +17,10 @@
 //                                                the variant's answer as gjk-validate reports it
 //   EXACT_DISTANCE EXACT_OVERLAP EXACT_SQUARED EXACT_AX EXACT_AY EXACT_BX EXACT_BY
 //                                                the exact truth of the inputs the variant is given
+//   EXACT_SIGNED EXACT_SIGNED_DISTANCE EXACT_PAX EXACT_PAY EXACT_PBX EXACT_PBY
+//                                                its signed distance and penetration pair, for a
+//                                                variant whose contract says penetration
+//                                                (EXACT_SIGNED true; else false and zeros)
 // and the NAME=VALUE pairs of the template's peer.txt line. One name is the command's own:
 // WHEN=overlap writes the template only for a case whose shapes overlap (planck's bug report is
 // about its overlap answers). An unknown placeholder in a shipped template is our bug
@@ -190,6 +194,16 @@ Values valuesFor(const FoundRepro& t, const VariantInfo& v, const Case& c, const
     out["EXACT_AY"] = shown(e["witnessA"][1]);
     out["EXACT_BX"] = shown(e["witnessB"][0]);
     out["EXACT_BY"] = shown(e["witnessB"][1]);
+    // The exact signed distance and penetration pair (issue 51), where the detail has them (a
+    // variant whose contract says penetration): EXACT_SIGNED "false" and zeros otherwise.
+    const bool hasSigned = e.contains("signed_distance") && e["signed_distance"].is_number();
+    out["EXACT_SIGNED"] = hasSigned ? "true" : "false";
+    out["EXACT_SIGNED_DISTANCE"] = hasSigned ? shown(e["signed_distance"]) : "0";
+    for (const auto& [key, field, i] : {std::tuple{"EXACT_PAX", "penetrationA", 0},
+                                        {"EXACT_PAY", "penetrationA", 1},
+                                        {"EXACT_PBX", "penetrationB", 0},
+                                        {"EXACT_PBY", "penetrationB", 1}})
+        out[key] = hasSigned && e.contains(field) ? shown(e[field][i]) : "0";
     std::istringstream extra(t.line->values);
     for (std::string pair; extra >> pair;)
         out[pair.substr(0, pair.find('='))] = pair.substr(pair.find('=') + 1);

@@ -1,11 +1,13 @@
 // The derived error bounds (evaluate/bounds.hpp): the distance's errorBound() and the witness
-// points' witnessBound(), each with its formula's text (docs/error-bound.md).
+// points' witnessBound() and the penetration depth's depthBound(), each with its formula's text
+// (docs/error-bound.md).
 #include "evaluate/bounds.hpp"
 
 #include "gjk2d/math.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <iterator>
 
 namespace gjkval
@@ -115,6 +117,30 @@ constexpr BoundTerm kWitnessTerms[] = {
     {12, "M", metricM},         {26.5, "W", metricW},
     {9.5, "d", metricDistance}, {18.5, "(rA + rB)", metricRadii},
 };
+
+double metricAbsDistance(const CaseMetrics& m)
+{
+    return std::abs(m.exactDistance);
+}
+
+// The depth bound derived in docs/error-bound.md ("Penetration depth"), to first order in u, for
+// the reference options with Options::signedDistance on overlapping shapes, world lengths, d the
+// exact signed distance (< 0). Term by term:
+//   15 B + 10.2 D + 1.5 B~ + 1.5 W  mapping B into A's frame, w = a - b~: the perturbed hull Z~
+//   4 A + 28 B                      choosing the support points (as the distance's term 3)
+//   2 W                             the polygon's convexity decided by rounded orientations
+//   3.5 W + 3 |d|                   the edge distance cross(v, e) / |e|
+//   7 W + 4 |d|                     GapClosed: Tolerances::expandGap = 4u of the support value,
+//                                   and the rounding of the gap dot(n, w - v) itself
+//   2.5 |d|                         back to world lengths: times |qA|
+//   |d| + 7.5 (rA + rB)             adding the radii; cores apart (radii overlapping): the
+//                                   distance's terms with a core distance below rA + rB
+constexpr BoundTerm kDepthTerms[] = {
+    {4, "A", metricA},          {43, "B", metricB},
+    {10.2, "D", metricD},       {1.5, "B~", metricBMapped},
+    {14, "W", metricW},         {10.5, "|d|", metricAbsDistance},
+    {7.5, "(rA + rB)", metricRadii},
+};
 } // namespace
 
 // Every variant is judged against the reference bound (kErrorTerms), computed in A's local frame
@@ -157,4 +183,24 @@ std::string witnessBoundFormula(const VariantInfo&)
            "points\")";
 }
 
+// Plus the duality-gap term for a variant that stops GJK by it (the cores-apart case is a GJK
+// distance), and the answer's subnormal resolution, as errorBound.
+double depthBound(const VariantInfo& variant, const CaseMetrics& m)
+{
+    double terms = sumTerms(kDepthTerms, m);
+    if (variant.options.stopping == gjk::StoppingRule::DualityGap)
+        terms += kDualityGapTerm.coefficient * kDualityGapTerm.value(m);
+    return m.unitRoundoff * terms + smallestSubnormal(variant.scalar);
+}
+
+std::string depthBoundFormula(const VariantInfo& variant)
+{
+    std::string f = "u (" + termsText(kDepthTerms) +
+                    ") + the type's smallest subnormal, d the exact signed distance, A's local frame";
+    if (variant.options.stopping == gjk::StoppingRule::DualityGap)
+        f += fmt::format(" + {} u {}", kDualityGapTerm.coefficient, kDualityGapTerm.symbol);
+    return f + " (docs/error-bound.md, \"Penetration depth\")";
+}
+
 } // namespace gjkval
+

@@ -100,6 +100,14 @@ Json exactDetail(const exact::Result& r)
     e["witnessB"] = pt(r.witnessB.x, r.witnessB.y);
     e["lower"] = num(r.lower);
     e["upper"] = num(r.upper);
+    if (r.hasSigned) // a run that judges a penetration depth (EvalContext::truthOptions)
+    {
+        e["signed_distance"] = num(r.signedDistance);
+        e["signed_lower"] = num(r.signedLower);
+        e["signed_upper"] = num(r.signedUpper);
+        e["penetrationA"] = pt(r.penetrationA.x, r.penetrationA.y);
+        e["penetrationB"] = pt(r.penetrationB.x, r.penetrationB.y);
+    }
     return e;
 }
 
@@ -113,8 +121,22 @@ Json contractVerdictJson(const VariantInfo& vi, const VariantOutcome& v)
                 {"violation", why ? Json(why) : Json(nullptr)},
                 {"excess", why ? num(v.violationExcess) : Json(nullptr)},
                 {"tolerance", num(v.tolerance)},
-                {"witness_tolerance", num(v.witnessTolerance)},
-                {"depth_unjudged", v.depthUnjudged}};
+                {"witness_tolerance", num(v.witnessTolerance)}};
+}
+
+// A penetration answer's depth on overlapping shapes (docs/report-schema.md, CaseDetail
+// "penetration"): the exact signed distance, the answer's, its errors, gjk2d's depth bound and
+// what the contract holds the depth to.
+Json penetrationJson(const VariantOutcome& v)
+{
+    return Json{{"exact", num(v.signedTruth)},
+                {"distance", num(v.distance)},
+                {"abs", num(v.depthAbs)},
+                {"rel", num(v.depthRel)},
+                {"bound", num(v.depthBound)},
+                {"bound_ratio", num(v.depthRatio)},
+                {"tolerance", num(v.depthTolerance)},
+                {"beyond_bound", v.beyondDepthBound}};
 }
 
 // One variant's result on a case, as the case JSON gives it (CaseDetail adds the trace).
@@ -165,13 +187,15 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
         vj["path"] = gjk::correctPathName(v.path);
         vj["bit_mismatch"] = v.bitMismatch;
     }
-    if (vi.options.certify)
+    if (vi.options.certify || vi.options.signedDistance) // the expansion certifies the depth
     {
         vj["certified"] = v.certified;
         vj["lower"] = num(v.lower);
         vj["upper"] = num(v.upper);
         vj["interval_contains"] = v.intervalContains;
     }
+    if (v.depthJudged)
+        vj["penetration"] = penetrationJson(v);
     vj["failed"] = v.failed;
     vj["contract"] = contractVerdictJson(vi, v);
     return vj;
@@ -188,7 +212,7 @@ Json truthDetail(const Case& c, const EvalContext& ctx, const exact::Result& r, 
 {
     if (!r.squaredNum.empty())
         return exactDetail(r);
-    exact::Options o = ctx.exactOptions;
+    exact::Options o = ctx.truthOptions();
     o.squaredRational = true;
     const exact::PreparedShape a(toExact(c.a, floatInput), "shape A");
     const exact::PreparedShape b(toExact(c.b, floatInput), "shape B");

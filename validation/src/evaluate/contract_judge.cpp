@@ -32,12 +32,14 @@ void breaks(VariantOutcome& v, Violation why, double excess = kInf)
 
 // gjk2d's own contract: failedAnswer's reasons, the first that applies in the enum's order (a
 // plugin's status, non-finite, invalid, then the distance's own: misclassified or beyond the bound,
-// then gjk2d's special variants' iteration limit, interval and bits). The excess of a distance
-// reason is the error over the bound, of a witness reason the witness ratio.
+// the signed variants' depth beyond the depth bound, then gjk2d's special variants' iteration
+// limit, interval and bits). The excess of a distance reason is the error over the bound, of a
+// depth reason the depth error over the depth bound, of a witness reason the witness ratio.
 void judgeOwn(VariantOutcome& v)
 {
     v.tolerance = v.bound;
     v.witnessTolerance = v.witnessBound;
+    v.depthTolerance = v.depthBound;
     if (!v.failed)
         return;
     if (v.plugin == PluginStatus::Error || v.plugin == PluginStatus::Crashed ||
@@ -60,6 +62,8 @@ void judgeOwn(VariantOutcome& v)
         return breaks(v, Violation::FalseSeparation, v.boundRatio);
     if (judged && v.beyondBound)
         return breaks(v, Violation::Distance, v.boundRatio);
+    if (judged && v.beyondDepthBound)
+        return breaks(v, Violation::DepthOff, v.depthRatio);
     if (judged && v.iterationLimit)
         return breaks(v, Violation::IterationLimit);
     if (v.certified && !v.intervalContains)
@@ -125,9 +129,29 @@ template <class ToCores> void judgeMidpoint(VariantOutcome& v, ToCores&& toCores
         breaks(v, Violation::MidpointOff, excessOf(worst, allowed));
 }
 
+// The depth tolerance Td of a penetration contract on a case whose depth is judged: its depth
+// clause, abs + rel x the exact depth |s| (a clause not stated counting 0), when it states one;
+// else gjk2d's depth bound, as T stands in for the distance.
+bool statesDepth(const Contract& c)
+{
+    return c.depthAbsTolerance >= 0 || c.depthRelTolerance >= 0;
+}
+
+void setDepthTolerance(VariantOutcome& v, const Contract& c)
+{
+    v.depthTolerance = statesDepth(c) ? std::max(c.depthAbsTolerance, 0.0) +
+                                            std::max(c.depthRelTolerance, 0.0) * -v.signedTruth
+                                      : v.depthBound;
+}
+
 // Penetration on overlap: each point on its own shape within W, and ||pA - pB|| the depth |d|
-// within W. The depth itself is not judged until the exact side computes it (issue 51).
-void judgePenetration(VariantOutcome& v)
+// within W; then, where the exact signed distance s is < 0 (v.depthJudged), the depth. The
+// contract promises minus the depth ("a negative distance", gjk2d/plugin.h): a distance of 0 or
+// more breaks it unless the exact depth |s| is within Td (touching, to the contract's precision:
+// 0 is then within Td of -|s|); a depth off by more than a stated Td breaks it (`depth_off`); with
+// none stated, a depth beyond gjk2d's depth bound keeps the contract, a measured accuracy
+// (v.beyondDepthBound, shown apart).
+void judgePenetration(VariantOutcome& v, const Contract& c)
 {
     const double W = v.witnessTolerance;
     if (!(v.witness <= W))
@@ -136,7 +160,13 @@ void judgePenetration(VariantOutcome& v)
                                 std::abs(v.distance));
     if (!(gap <= W))
         return breaks(v, Violation::PenetrationGap, excessOf(gap, W));
-    v.depthUnjudged = true;
+    if (!v.depthJudged)
+        return;
+    const double Td = v.depthTolerance, depth = -v.signedTruth;
+    if (v.distance >= 0 && !(depth <= Td))
+        return breaks(v, Violation::NoDepth, excessOf(depth, Td));
+    if (statesDepth(c) && !(v.depthAbs <= Td))
+        breaks(v, Violation::DepthOff, excessOf(v.depthAbs, Td));
 }
 
 // Perimeter on overlap (Box2D v3: "Keep closest points on perimeter even if overlapped"): where the
@@ -206,6 +236,8 @@ class Cores
 template <class GetCores> void judgeDeclared(VariantOutcome& v, const Contract& c, GetCores&& cores)
 {
     setTolerances(v, c);
+    if (v.depthJudged)
+        setDepthTolerance(v, c);
     if (v.plugin == PluginStatus::Error)
         return breaks(v, Violation::Error);
     if (v.plugin == PluginStatus::Crashed)
@@ -240,7 +272,7 @@ template <class GetCores> void judgeDeclared(VariantOutcome& v, const Contract& 
             v, [&](const std::array<double, 2>& p) { return k.to(p); }, k.distance());
     }
     case Overlap::Penetration:
-        return judgePenetration(v);
+        return judgePenetration(v, c);
     case Overlap::Perimeter:
     {
         const Cores& k = cores();
@@ -262,7 +294,6 @@ void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         VariantOutcome& v = out.variants[k];
         v.violation = Violation::None;
         v.violationExcess = 0;
-        v.depthUnjudged = false;
         if (v.skipped)
             continue;
         const VariantInfo& vi = *ctx.variants[k];

@@ -85,7 +85,7 @@ double worstKey(const VariantOutcome& v)
     return (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit ||
             (v.certified && !v.intervalContains))
                ? kInf
-               : v.normalized;
+               : std::max(v.normalized, v.depthJudged ? v.depthNormalized : 0.0);
 }
 
 double CaseOutcome::worstKey() const
@@ -111,6 +111,21 @@ bool EvalContext::hasPlugins() const
         if (v->plugin)
             return true;
     return false;
+}
+
+bool EvalContext::needPenetration() const
+{
+    for (auto* v : variants)
+        if (contractOf(*v).overlap == Overlap::Penetration)
+            return true;
+    return false;
+}
+
+exact::Options EvalContext::truthOptions() const
+{
+    exact::Options o = exactOptions;
+    o.penetration = o.penetration || needPenetration();
+    return o;
 }
 
 bool EvalContext::needFloatTruth() const
@@ -142,10 +157,11 @@ void prepareShapes(const Case& c, bool isFloat, TruthShapes& s)
 void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     auto shapes = std::make_shared<TruthShapes>();
+    const exact::Options options = ctx.truthOptions();
     try
     {
         prepareShapes(c, false, *shapes);
-        out.exact = ctx.truth(*shapes->a[0], *shapes->b[0], ctx.exactOptions);
+        out.exact = ctx.truth(*shapes->a[0], *shapes->b[0], options);
     }
     catch (const std::invalid_argument& e)
     {
@@ -160,7 +176,7 @@ void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     if (ctx.needFloatTruth() && representableInFloat(c))
     {
         prepareShapes(c, true, *shapes);
-        out.exactFloat = ctx.truth(*shapes->a[1], *shapes->b[1], ctx.exactOptions);
+        out.exactFloat = ctx.truth(*shapes->a[1], *shapes->b[1], options);
         out.hasFloatTruth = true;
         out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
     }
@@ -198,11 +214,12 @@ class CaseScales
     bool haveFloatShapes_ = false;
 };
 
-// The bounds a variant's answer is judged against (distance, witness points): the reference
-// variant's (A's local frame scales `sc`), what the library promises for this input, so that a
-// variant that computes differently (world frame) fails where it breaks that promise.
-void boundsOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, double exactDistance,
-              VariantOutcome& v)
+// The bounds a variant's answer is judged against (distance, witness points, and the depth where
+// its contract says Penetration and the exact signed distance is < 0): the reference variant's
+// (A's local frame scales `sc`), what the library promises for this input, so that a variant that
+// computes differently (world frame) fails where it breaks that promise.
+void boundsOf(const VariantInfo& vi, const Case& c, const FrameScales& sc,
+              const exact::Result& truth, VariantOutcome& v)
 {
     const bool isFloat = vi.scalar == Scalar::Float;
     CaseMetrics m;
@@ -212,7 +229,7 @@ void boundsOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, doubl
     m.radiusB = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
     m.countA = int(c.a.points.size());
     m.countB = int(c.b.points.size());
-    m.exactDistance = exactDistance;
+    m.exactDistance = truth.distance;
     m.maxA = sc.A;
     m.maxB = sc.B;
     m.maxBMapped = sc.Bmapped;
@@ -221,6 +238,11 @@ void boundsOf(const VariantInfo& vi, const Case& c, const FrameScales& sc, doubl
     m.worldExtent = sc.M;
     v.bound = errorBound(vi, m);
     v.witnessBound = witnessBound(vi, m);
+    if (contractOf(vi).overlap == Overlap::Penetration && overlapsBySigned(truth))
+    {
+        m.exactDistance = truth.signedDistance;
+        v.depthBound = depthBound(vi, m);
+    }
 }
 
 template <class T> bool sameBits(T a, T b)
@@ -275,8 +297,10 @@ namespace
 // bound, and the witness gap ||pB - pA|| - distance; all infinite for a non-finite answer.
 // `signedOverlap`: the implementation answers overlap with a distance of 0 or below (Overlap::Zero,
 // Penetration), so its negative distance is gjk2d's 0 in that convention, and the distance errors
-// (beyond_bound among them) are measured on max(d, 0); the witness gap keeps the raw d.
-void measureErrors(VariantOutcome& v, double td, Scalar scalar, bool signedOverlap)
+// (beyond_bound among them) are measured on max(d, 0); the witness gap keeps the raw d, or for a
+// penetration pair (`penetration`) |d|: its points are |d| apart.
+void measureErrors(VariantOutcome& v, double td, Scalar scalar, bool signedOverlap,
+                   bool penetration)
 {
     if (v.nonfinite)
     {
@@ -294,13 +318,28 @@ void measureErrors(VariantOutcome& v, double td, Scalar scalar, bool signedOverl
     v.ulps = td > 0 ? v.abs / ulpOf(scalar, td) : kNaN;
     v.normalized = v.abs == 0 ? 0 : (v.R > 0 ? v.abs / (u * v.R) : kInf);
     v.boundRatio = v.abs == 0 ? 0 : (v.bound > 0 ? v.abs / v.bound : kInf);
-    v.witnessGap =
-        std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) - v.distance);
+    v.witnessGap = std::abs(std::hypot(v.pointB[0] - v.pointA[0], v.pointB[1] - v.pointA[1]) -
+                            (penetration ? std::abs(v.distance) : v.distance));
     v.beyondBound = !(v.abs <= v.bound);
 }
 
-// A finite answer in range: its claim of overlap against the truth's, and its own contract.
-void classifyAnswer(VariantOutcome& v, bool truthZero)
+// Penetration on shapes whose exact signed distance s is < 0 (v.depthBound set): the answer's
+// signed distance against s, whatever its sign (a distance of 0 or more on overlap is |s| off).
+void measureDepth(VariantOutcome& v, double s, Scalar scalar)
+{
+    v.depthJudged = true;
+    v.signedTruth = s;
+    v.depthAbs = v.nonfinite ? kInf : std::abs(v.distance - s);
+    v.depthRel = v.depthAbs / -s;
+    v.depthRatio = v.depthAbs == 0 ? 0 : (v.depthBound > 0 ? v.depthAbs / v.depthBound : kInf);
+    v.depthNormalized =
+        v.depthAbs == 0 ? 0 : (v.R > 0 ? v.depthAbs / (unitRoundoff(scalar) * v.R) : kInf);
+    v.beyondDepthBound = !(v.depthAbs <= v.depthBound);
+}
+
+// A finite answer in range: its claim of overlap against the truth's, and its own contract (a
+// penetration answer's negative distance is minus its depth, not invalid).
+void classifyAnswer(VariantOutcome& v, bool truthZero, bool penetration)
 {
     // A negative distance claims overlap (and is not a distance): on separated shapes a false
     // overlap whatever its error.
@@ -308,11 +347,13 @@ void classifyAnswer(VariantOutcome& v, bool truthZero)
         v.mis = Misclass::FalseSeparation;
     else if (!truthZero && v.distance <= 0)
         v.mis = Misclass::FalseOverlap;
-    if (v.mis != Misclass::None && !v.beyondBound && v.distance >= 0)
+    // Within the bound the claim is undecidable at this precision; a penetration answer's negative
+    // distance is a claim like any other (minus its depth), not an invalid one.
+    if (v.mis != Misclass::None && !v.beyondBound && (v.distance >= 0 || penetration))
         v.mis = Misclass::Undecidable;
     // The answer's own contract, first part (the witness points' distances to their shapes are
     // measured in phase 3, checkWitnesses, which may replace WitnessGap).
-    if (v.distance < 0)
+    if (v.distance < 0 && !penetration)
         v.invalid = Invalid::NegativeDistance;
     else if (!(v.witnessGap <= v.witnessBound))
         v.invalid = Invalid::WitnessGap;
@@ -321,8 +362,8 @@ void classifyAnswer(VariantOutcome& v, bool truthZero)
 
 bool failedAnswer(const VariantOutcome& v)
 {
-    return (!v.outOfRange &&
-            (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit || v.beyondBound)) ||
+    return (!v.outOfRange && (v.nonfinite || v.invalid != Invalid::None || v.iterationLimit ||
+                              v.beyondBound || v.beyondDepthBound)) ||
            (v.certified && !v.intervalContains) || v.bitMismatch;
 }
 
@@ -336,14 +377,22 @@ void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool ze
                   !std::isfinite(v.pointB[1]) || !std::isfinite(v.normal[0]) ||
                   !std::isfinite(v.normal[1]);
     v.iterationLimit = v.stop == gjk::StopReason::IterationLimit;
-    measureErrors(v, truth.distance, scalar,
-                  overlap == Overlap::Zero || overlap == Overlap::Penetration);
+    const bool penetration = overlap == Overlap::Penetration;
+    measureErrors(v, truth.distance, scalar, overlap == Overlap::Zero || penetration, penetration);
+    v.depthJudged = false;
+    v.beyondDepthBound = false;
+    if (penetration && overlapsBySigned(truth))
+        measureDepth(v, truth.signedDistance, scalar);
     if (!v.nonfinite && !v.outOfRange)
-        classifyAnswer(v, exactIsZero(truth));
+        classifyAnswer(v, exactIsZero(truth), penetration);
     // The exact value lies in [truth.lower, truth.upper] (equal, or adjacent doubles with the
     // value strictly between): the double interval [lower, upper] contains it iff it contains
-    // that enclosure.
-    v.intervalContains = v.certified && v.lower <= truth.lower && truth.upper <= v.upper;
+    // that enclosure. A penetration answer's interval encloses its signed distance: it is held
+    // to the exact signed distance's enclosure (the distance's where the shapes are apart).
+    const bool bySigned = penetration && truth.hasSigned;
+    const double lo = bySigned ? truth.signedLower : truth.lower,
+                 hi = bySigned ? truth.signedUpper : truth.upper;
+    v.intervalContains = v.certified && v.lower <= lo && hi <= v.upper;
     v.witness = v.witnessRatio = kNaN;
     // Options::correctlyRounded: the distance must be the exact side's, bit for bit, on every
     // case (out of range ones too: the exact completion answers them).
@@ -431,7 +480,7 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
             runQuery(c, p, vi, truth.distance, v);
         // The normalised error uses the scale of the variant's own compute frame.
         v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
-        boundsOf(vi, c, scales.get(false, isFloat), truth.distance, v);
+        boundsOf(vi, c, scales.get(false, isFloat), truth, v);
         judge(v, truth, vi.scalar, vi.options.correctlyRounded, contractOf(vi).overlap);
     }
 }

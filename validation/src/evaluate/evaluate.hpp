@@ -153,10 +153,19 @@ struct VariantOutcome
     // A declared contract's distance tolerance T and witness tolerance W for this case (gjk2d's
     // own: bound and witnessBound).
     double tolerance = 0, witnessTolerance = 0;
-    // A penetration answer on overlapping shapes that keeps every clause judged so far: its depth
-    // is not judged (the exact penetration depth is issue 51's).
-    bool depthUnjudged = false;
-    bool truthZero = false; // the exact distance is 0 (exactIsZero), set by judge()
+    // Penetration (an implementation whose contract's overlap is Penetration: gjk2d's signed
+    // variants, plugins that declare it) on shapes whose exact signed distance s is < 0, set by
+    // judge() (docs/validation.md, "Penetration"): the answer's signed distance d against s.
+    // depthBound is gjk2d's depth bound for the case (evaluate/bounds.hpp), depthTolerance what the
+    // contract holds the depth to (its depth clause abs + rel |s| when stated, else depthBound;
+    // judgeContracts sets it). depthAbs = |d - s| (+inf for a non-finite answer), depthRel =
+    // depthAbs / |s|, depthRatio = depthAbs / depthBound.
+    bool depthJudged = false;
+    double signedTruth = 0, depthBound = 0, depthTolerance = 0;
+    double depthAbs = 0, depthRel = 0, depthRatio = 0;
+    double depthNormalized = 0;    // depthAbs / (u R): ranks the worst cases beside `normalized`
+    bool beyondDepthBound = false; // depthAbs > depthBound (or not finite)
+    bool truthZero = false;        // the exact distance is 0 (exactIsZero), set by judge()
     bool keepsContract() const { return violation == Violation::None; }
 };
 
@@ -189,7 +198,8 @@ struct CaseOutcome
 
 // How bad one variant's result is, for ranking the worst cases: -1 when it is not judged (not run,
 // or flagged out of range by GJK without failing), +inf for a non-finite or invalid result, an
-// iteration limit or a certified interval that misses the truth, else the normalised error.
+// iteration limit or a certified interval that misses the truth, else the normalised error (for a
+// judged penetration depth, the larger of it and the depth's: depthNormalized).
 double worstKey(const VariantOutcome& v);
 
 struct EvalContext
@@ -206,6 +216,12 @@ struct EvalContext
     std::shared_ptr<PluginServers> pluginServers;
     bool needFloatTruth() const;
     bool hasPlugins() const;
+    // Some variant's contract says Penetration: the truth then carries the exact signed distance.
+    bool needPenetration() const;
+    // The options every truth of the context is computed with: exactOptions, with
+    // exact::Options::penetration set when needPenetration() (the exact depth costs only the runs
+    // that judge one).
+    exact::Options truthOptions() const;
 };
 
 // The judgement of one answer v (v.R, v.bound and v.witnessBound set) against the exact `truth`:
@@ -213,7 +229,10 @@ struct EvalContext
 // witness points' distances to their shapes come in phase 3), whether its certified interval holds
 // the truth, and whether it failed (docs/validation.md, "Failures"). runVariants calls it.
 // `overlap`: what the implementation answers on overlap; for Zero and Penetration a negative
-// distance is their way to say 0, and the errors are measured on max(d, 0).
+// distance is their way to say 0, and the errors are measured on max(d, 0). For Penetration a
+// negative distance is not invalid, the witness gap is | ||pB - pA|| - |d| |, a certified
+// interval is held to the exact signed distance, and on shapes whose exact signed distance is < 0
+// the depth is judged (v.depthBound set): beyond it, the answer fails.
 void judge(VariantOutcome& v, const exact::Result& truth, Scalar scalar, bool zeroTolerance,
            Overlap overlap = Overlap::CommonPoint);
 // Whether a judged answer fails: the one rule, for judge() and for the witness verdict (phase 3).
@@ -252,13 +271,20 @@ inline const char* answerClassName(const VariantOutcome& v)
         return "breaks_contract";
     if (v.outOfRange)
         return "out_of_range";
-    return v.beyondBound ? "outside_bound" : "within_bound";
+    return v.beyondBound || v.beyondDepthBound ? "outside_bound" : "within_bound";
 }
 
 // Exact distance is 0: the (rounded) shapes touch or overlap.
 inline bool exactIsZero(const exact::Result& r)
 {
     return r.overlap || r.upper == 0;
+}
+
+// The exact signed distance is known and < 0: the rounded shapes overlap with a depth > 0 (the
+// cases whose penetration depth is judged; touching shapes, depth 0, are not among them).
+inline bool overlapsBySigned(const exact::Result& r)
+{
+    return r.hasSigned && r.signedUpper < 0;
 }
 
 // Unit in the last place of the variant's type at x > 0.

@@ -27,8 +27,15 @@ enum class Violation
     IterationLimit,   // gjk2d's own: the iteration limit was reached
     Interval,         // gjk2d's own: the certified interval misses the exact distance
     BitMismatch,      // gjk2d's own: a correctly rounded distance that is not the exact side's
+    // Penetration on overlapping shapes (exact signed distance < 0). Added after the others (the
+    // state of shards and checkpoints numbers the reasons; an older state has fewer, which count
+    // 0).
+    DepthOff, // |d - exact signed distance| beyond a stated depth tolerance (gjk2d's own: beyond
+              // its depth bound)
+    NoDepth,  // a distance of 0 or more on shapes overlapping deeper than the depth tolerance,
+              // where the contract promises minus the depth
 };
-inline constexpr int kViolationReasons = int(Violation::BitMismatch); // the reasons after None
+inline constexpr int kViolationReasons = int(Violation::NoDepth); // the reasons after None
 
 // The report's name of a reason (report.json contract_violations.reasons, cases.jsonl); null for
 // None.
@@ -50,7 +57,9 @@ inline const char* violationName(Violation r)
                                                           "perimeter_off",
                                                           "iteration_limit",
                                                           "interval",
-                                                          "bit_mismatch"};
+                                                          "bit_mismatch",
+                                                          "depth_off",
+                                                          "no_depth"};
     return names[int(r)];
 }
 

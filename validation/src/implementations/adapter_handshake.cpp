@@ -93,6 +93,7 @@ bool toleranceToken(const std::string& t, double& x)
 //   contract NAME overlap common-point|zero|midpoint|penetration|perimeter SOURCE...
 //   contract NAME tolerance ABS|none REL|none SOURCE...
 //   contract NAME margin M SOURCE...
+//   contract NAME depth ABS|none REL|none SOURCE...   (the depth clause, for overlap penetration)
 // SOURCE: where the library says so (file:line or its documentation, and its version); "" for a
 // clause it does not state.
 void contractLine(const std::string& line, std::vector<AdapterImplementation>& impls)
@@ -101,7 +102,7 @@ void contractLine(const std::string& line, std::vector<AdapterImplementation>& i
     auto bad = [&](const std::string& why)
     { return AdapterFailure(fmt::format("bad description: {}: {}", quoted80(line), why)); };
     if (t.size() < 4)
-        throw bad("a contract line is `contract NAME overlap|tolerance|margin ...`");
+        throw bad("a contract line is `contract NAME overlap|tolerance|margin|depth ...`");
     auto it = std::find_if(impls.begin(), impls.end(),
                            [&](const AdapterImplementation& a) { return a.name == t[1]; });
     if (it == impls.end())
@@ -128,8 +129,28 @@ void contractLine(const std::string& line, std::vector<AdapterImplementation>& i
             throw bad("the margin is not a finite number >= 0");
         c.marginSource = restAfter(line, 4);
     }
+    else if (t[2] == "depth")
+    {
+        if (t.size() < 5 || !toleranceToken(t[3], c.depthAbsTolerance) ||
+            !toleranceToken(t[4], c.depthRelTolerance))
+            throw bad("a depth tolerance is `depth ABS REL SOURCE...`, each a number >= 0 or none");
+        c.depthSource = restAfter(line, 5);
+    }
     else
-        throw bad("the clause is none of overlap, tolerance, margin");
+        throw bad("the clause is none of overlap, tolerance, margin, depth");
+}
+
+// The contracts as a whole, once every line is read (a depth line may come before its overlap
+// line): checkContract's refusals, e.g. a depth tolerance on an overlap that answers no depth.
+void checkContracts(const std::vector<AdapterImplementation>& impls)
+{
+    for (const AdapterImplementation& a : impls)
+    {
+        const std::string problem = checkContract(a.contract);
+        if (!problem.empty())
+            throw AdapterFailure(
+                fmt::format("bad description: implementation {}: {}", a.name, problem));
+    }
 }
 
 // One `prepared NAME shape|case` line (version 2), for the implementation NAME declared before:
@@ -214,6 +235,7 @@ AdapterDescription handshake(Process& p, double limit)
         throw AdapterFailure("bad description: no 'library' line before 'ready'");
     if (d.implementations.empty())
         throw AdapterFailure("bad description: no 'implementation' line before 'ready'");
+    checkContracts(d.implementations);
     return d;
 }
 

@@ -43,13 +43,14 @@ bool parseOverlap(const std::string& word, Overlap& out)
     return false;
 }
 
-Contract ownContract()
+Contract ownContract(const gjk::Options& options)
 {
     Contract c;
     c.own = true;
-    c.overlap = Overlap::CommonPoint;
+    c.overlap = options.signedDistance ? Overlap::Penetration : Overlap::CommonPoint;
     c.toleranceSource = "gjk2d's a-priori bound (docs/error-bound.md)";
-    c.overlapSource = "gjk2d/distance.hpp, DistanceOutput";
+    c.overlapSource = options.signedDistance ? "gjk2d/types.hpp, Options::signedDistance"
+                                             : "gjk2d/distance.hpp, DistanceOutput";
     return c;
 }
 
@@ -63,13 +64,21 @@ std::string checkContract(const Contract& c)
         return "a distance tolerance is not finite (negative: none stated)";
     if (!std::isfinite(c.margin) || c.margin < 0)
         return fmt::format("margin {} is not a finite number >= 0", c.margin);
+    if (!std::isfinite(c.depthAbsTolerance) || !std::isfinite(c.depthRelTolerance))
+        return "a depth tolerance is not finite (negative: none stated)";
+    if (c.statesDepthTolerance() && c.overlap != Overlap::Penetration)
+        return fmt::format("a depth tolerance is stated, but the overlap is {}, which answers no "
+                           "depth (only penetration does)",
+                           overlapName(c.overlap));
     return "";
 }
 
 const Contract& contractOf(const VariantInfo& v)
 {
-    static const Contract own = ownContract();
-    return v.plugin ? v.plugin->contract : own;
+    static const Contract own = ownContract(), ownSigned = ownContract({.signedDistance = true});
+    if (v.plugin)
+        return v.plugin->contract;
+    return v.options.signedDistance ? ownSigned : own;
 }
 
 std::string judgedBy(const VariantInfo& v)
@@ -85,6 +94,23 @@ std::string judgedBy(const VariantInfo& v)
                        c.toleranceSource);
 }
 
+std::string judgedByDepth(const VariantInfo& v)
+{
+    const Contract& c = contractOf(v);
+    if (c.overlap != Overlap::Penetration)
+        return fmt::format("no depth answered (overlap {})", overlapName(c.overlap));
+    if (c.own)
+        return fmt::format("gjk2d's own contract: gjk2d's depth bound for {}",
+                           scalarName(v.scalar));
+    if (!c.statesDepthTolerance())
+        return fmt::format("no depth tolerance stated: gjk2d's depth bound for {}",
+                           scalarName(v.scalar));
+    return fmt::format("its stated tolerance: abs {}, rel {} ({})",
+                       c.depthAbsTolerance >= 0 ? fmt::format("{:g}", c.depthAbsTolerance) : "none",
+                       c.depthRelTolerance >= 0 ? fmt::format("{:g}", c.depthRelTolerance) : "none",
+                       c.depthSource);
+}
+
 Json contractJson(const VariantInfo& v)
 {
     const Contract& c = contractOf(v);
@@ -97,7 +123,12 @@ Json contractJson(const VariantInfo& v)
                   {"source", c.toleranceSource}}},
                 {"margin", c.margin},
                 {"margin_source", c.marginSource},
-                {"judged_by", judgedBy(v)}};
+                {"depth",
+                 {{"abs", orNull(c.depthAbsTolerance)},
+                  {"rel", orNull(c.depthRelTolerance)},
+                  {"source", c.depthSource}}},
+                {"judged_by", judgedBy(v)},
+                {"judged_by_depth", judgedByDepth(v)}};
 }
 
 } // namespace gjkval

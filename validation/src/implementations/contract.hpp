@@ -53,24 +53,34 @@ struct Contract
     std::string depthSource; // "" none stated
 
     bool statesTolerance() const { return absTolerance >= 0 || relTolerance >= 0; }
+    bool statesDepthTolerance() const { return depthAbsTolerance >= 0 || depthRelTolerance >= 0; }
     bool operator==(const Contract&) const = default;
 };
 
-// gjk2d's own: what its variants, version-1 plugins and version-1 adapters are held to.
-Contract ownContract();
+// gjk2d's own: what its variants, version-1 plugins and version-1 adapters are held to. With
+// Options::signedDistance its overlap answer is Penetration (minus the depth, a penetration pair),
+// the depth held to gjk2d's depth bound (evaluate/bounds.hpp, depthBound): no depth clause stated.
+Contract ownContract(const gjk::Options& options = {});
 // A plugin's declared contract (version 2), checked: InputError-worthy problems are returned as
 // one line ("" when it is sound): an unknown overlap kind, a non-finite or negative margin, a
-// NaN tolerance.
+// NaN tolerance, a non-finite depth tolerance, or a depth tolerance on a contract whose overlap is
+// not `penetration` (only a penetration answers a depth).
 std::string checkContract(const Contract& c);
 // The contract a variant is held to: its plugin's, or gjk2d's own.
 const Contract& contractOf(const VariantInfo& v);
 // report.json's variants[].contract: {"own", "overlap", "overlap_source", "tolerance": {"abs",
-// "rel", "source"} (null members: not stated), "margin", "margin_source", "judged_by"} where
-// judged_by says in words what the distance is held to ("FCL's stated tolerance ..." or "gjk2d's
-// bound for double: no tolerance stated").
+// "rel", "source"} (null members: not stated), "margin", "margin_source", "depth": {"abs", "rel",
+// "source"} (null members: not stated), "judged_by", "judged_by_depth"} where judged_by says in
+// words what the distance is held to ("FCL's stated tolerance ..." or "gjk2d's bound for double:
+// no tolerance stated") and judged_by_depth what the depth is held to (judgedByDepth).
 Json contractJson(const VariantInfo& v);
 // In words, what the variant's distance is held to: "its stated tolerance: abs 1e-06, rel none
 // (SOURCE)", "no tolerance stated: gjk2d's bound for double", "gjk2d's own contract: ...".
 std::string judgedBy(const VariantInfo& v);
+// In words, what the variant's penetration depth is held to: "its stated tolerance: abs 0.0001, rel
+// none (SOURCE)", "no depth tolerance stated: gjk2d's depth bound for double", "gjk2d's own
+// contract: gjk2d's depth bound for double" (double-signed), or, for an overlap kind that answers
+// no depth, "no depth answered (overlap zero)" (gjk2d's double: "... (overlap common-point)").
+std::string judgedByDepth(const VariantInfo& v);
 
 } // namespace gjkval

@@ -93,14 +93,16 @@ std::string pluginFile(const std::string& path)
     return std::filesystem::canonical(path).string();
 }
 
-// A shared library's description, its optional gjk2d_plugin_library() ("" without it) and its
-// optional gjk2d_plugin_timing() (null without it).
+// A shared library's description, its optional gjk2d_plugin_library() ("" without it), its
+// optional gjk2d_plugin_timing() and gjk2d_plugin_prepared() tables and its optional
+// gjk2d_plugin_depth() clauses (null without them).
 struct OpenedPlugin
 {
     const gjk2d_plugin* description = nullptr;
     std::string library;
     const gjk2d_timing* timing = nullptr;
     const gjk2d_prepared* prepared = nullptr;
+    const gjk2d_depth_contract* depth = nullptr; // description->count clauses
 };
 
 // Opens the plugin and reads its description, of this ABI version and with 1 .. 64
@@ -155,7 +157,13 @@ OpenedPlugin openPlugin(const std::string& path)
                      prepared->distance == nullptr || prepared->release == nullptr))
         throw InputError(fmt::format("plugin {}: {}() returned a table with a NULL function", path,
                                      GJK2D_PLUGIN_PREPARED_ENTRY));
-    return {d, text ? text : "", loop, prepared};
+    const auto depthEntry =
+        reinterpret_cast<gjk2d_plugin_depth_fn>(::dlsym(handle, GJK2D_PLUGIN_DEPTH_ENTRY));
+    const gjk2d_depth_contract* depth = depthEntry ? depthEntry() : nullptr;
+    if (depthEntry && depth == nullptr)
+        throw InputError(
+            fmt::format("plugin {}: {}() returned NULL", path, GJK2D_PLUGIN_DEPTH_ENTRY));
+    return {d, text ? text : "", loop, prepared, depth};
 }
 
 // Every implementation well described, under a name no variant and no other implementation has.
@@ -257,6 +265,28 @@ Contract declaredContract(const std::string& path, int i, const gjk2d_contract& 
     c.overlapSource = text(d.overlap_source);
     c.margin = d.margin;
     c.marginSource = text(d.margin_source);
+    return c;
+}
+
+// Implementation i's depth clause (gjk2d_plugin_depth), into its contract: negative tolerances
+// are not stated, a NaN is kept for checkContract to refuse.
+void declaredDepth(Contract& c, const gjk2d_depth_contract& d)
+{
+    c.depthAbsTolerance = d.abs_tolerance < 0 ? -1 : d.abs_tolerance;
+    c.depthRelTolerance = d.rel_tolerance < 0 ? -1 : d.rel_tolerance;
+    c.depthSource = d.source ? d.source : "";
+}
+
+// The contract of implementation i as the plugin declares it (gjk2d's own without contracts),
+// with its depth clause; InputError when it is unsound.
+Contract pluginContract(const std::string& path, int i, const OpenedPlugin& opened)
+{
+    const gjk2d_plugin& d = *opened.description;
+    Contract c = d.abi_version >= 2 && d.contracts != nullptr
+                     ? declaredContract(path, i, d.contracts[i])
+                     : ownContract();
+    if (opened.depth != nullptr)
+        declaredDepth(c, opened.depth[i]);
     const std::string problem = checkContract(c);
     if (!problem.empty())
         throw InputError(
@@ -278,8 +308,7 @@ std::vector<PluginImpl> describePlugin(const std::string& path, const std::strin
     {
         PluginImpl p;
         p.impl = d.implementations[i];
-        if (d.abi_version >= 2 && d.contracts != nullptr)
-            p.contract = declaredContract(path, i, d.contracts[i]);
+        p.contract = pluginContract(path, i, opened);
         p.library = opened.library;
         p.timing = opened.timing;
         p.index = i;

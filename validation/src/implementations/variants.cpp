@@ -121,6 +121,19 @@ const std::vector<VariantInfo>& variantTable()
          .description = "every start in single precision",
          .judged = true,
          .start = Start::EveryStart},
+        {.name = "double-signed",
+         .scalar = Scalar::Double,
+         .options = Options{.signedDistance = true},
+         .description = "reference options plus the signed distance: minus the penetration depth "
+                        "on overlap (EPA, gjk2d/expand.hpp), judged against the exact depth",
+         .judged = true,
+         .start = Start::Cold},
+        {.name = "float-signed",
+         .scalar = Scalar::Float,
+         .options = Options{.signedDistance = true},
+         .description = "signed distance in single precision",
+         .judged = true,
+         .start = Start::Cold},
         {.name = "double-batch",
          .scalar = Scalar::Double,
          .options = gjk::referenceOptions,
@@ -230,6 +243,7 @@ Json optionsJson(const gjk::Options& o)
     j["max_iterations"] = o.maxIterations;
     j["use_radii"] = o.useRadii;
     j["correctly_rounded"] = o.correctlyRounded;
+    j["signed_distance"] = o.signedDistance;
     return j;
 }
 

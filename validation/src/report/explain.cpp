@@ -44,13 +44,50 @@ std::string shapeText(const char* k, const Json& sh)
     return s;
 }
 
+// The exact signed distance where the run judges a penetration depth (CaseDetail exact
+// "signed_distance"): on overlap the exact depth and the minimal translation pA -> pB.
+std::string signedText(const Json& e)
+{
+    if (!e.contains("signed_distance"))
+        return {};
+    const double s = e["signed_distance"].is_number() ? e["signed_distance"].get<double>() : 0;
+    std::string t =
+        fmt::format("     signed distance {} in [{}, {}]", fmtFull(e["signed_distance"]),
+                    fmtFull(e["signed_lower"]), fmtFull(e["signed_upper"]));
+    if (s < 0)
+        t += fmt::format(": the shapes overlap, exact depth {}\n     penetration pair A {} B {} "
+                         "(moving B by A - B brings it to contact)",
+                         fmtFull(Json(-s)), fmtPt(e["penetrationA"]), fmtPt(e["penetrationB"]));
+    return t + "\n";
+}
+
 // An exact result: its distance interval, overlap, squared distance and witness points.
 std::string exactText(const char* label, const Json& e)
 {
-    return fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label, fmtFull(e["distance"]),
+    return signedText(e).insert(
+        0, fmt::format("  {}: distance {} in [{}, {}], overlap {}\n", label, fmtFull(e["distance"]),
                        fmtFull(e["lower"]), fmtFull(e["upper"]), e["overlap"].get<bool>()) +
-           fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
-                       e["squared"].get<std::string>(), fmtPt(e["witnessA"]), fmtPt(e["witnessB"]));
+               fmt::format("     squared distance (before radii) {}\n     witnesses A {} B {}\n",
+                           e["squared"].get<std::string>(), fmtPt(e["witnessA"]),
+                           fmtPt(e["witnessB"])));
+}
+
+// A penetration answer's depth on overlapping shapes (CaseDetail variants[].penetration): the
+// exact depth, the answer's, the error, and what it was held to.
+std::string penetrationText(const Json& v)
+{
+    if (!v.contains("penetration"))
+        return {};
+    const Json& p = v["penetration"];
+    const double d = p["distance"].is_number() ? p["distance"].get<double>() : 0;
+    return fmt::format("     penetration: exact depth {}, its depth {}: error {} (relative {}), "
+                       "gjk2d's depth bound {} (ratio {}), held to {}{}\n",
+                       fmtFull(Json(-p["exact"].get<double>())),
+                       d < 0 ? fmtFull(Json(-d))
+                             : fmt::format("none (distance {})", fmtFull(p["distance"])),
+                       fmtNum(p["abs"]), fmtNum(p["rel"]), fmtNum(p["bound"]),
+                       fmtNum(p["bound_ratio"]), fmtNum(p["tolerance"]),
+                       p.value("beyond_bound", false) ? "  ** beyond gjk2d's depth bound **" : "");
 }
 
 // The answer's verdict by its implementation's contract (CaseDetail "contract"; older details
@@ -69,8 +106,6 @@ std::string contractText(const Json& v)
     if (c["violation"].is_string())
         words += fmt::format(" ({}, {} times what it allows)", c["violation"].get<std::string>(),
                              fmtNum(c["excess"]));
-    if (c.value("depth_unjudged", false))
-        words += "; its penetration depth is not judged yet (no exact depth)";
     std::string s = fmt::format("     contract: {}\n", words);
     s += fmt::format("     held to: distance within {}, points within {}{}\n",
                      fmtNum(c["tolerance"]), fmtNum(c["witness_tolerance"]),
@@ -118,7 +153,7 @@ std::string answerText(const std::string& name, const Json& v)
         s += fmt::format("     certified interval [{}, {}], contains the exact distance: {}\n",
                          fmtFull(v["lower"]), fmtFull(v["upper"]),
                          v["interval_contains"].get<bool>() ? "yes" : "NO");
-    return s + contractText(v);
+    return s + penetrationText(v) + contractText(v);
 }
 
 // A variant's iteration trace, one step per block: simplex, closest point, direction, support.

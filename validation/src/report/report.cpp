@@ -220,6 +220,76 @@ VariantTotals variantTotals(const Json& r, const std::string& name)
     return t;
 }
 
+// A variant's penetration blocks over the families (families[].variants[].penetration: a
+// penetration contract's depths on overlapping shapes): counts summed, each largest error with its
+// case and family. `any`: some family has the block.
+struct PenetrationTotals
+{
+    bool any = false;
+    std::uint64_t cases = 0, violations = 0, outsideBound = 0;
+    struct Largest
+    {
+        double value = std::nan("");
+        std::string caseName;
+    } abs, rel, ratio;
+};
+
+PenetrationTotals penetrationTotals(const Json& r, const std::string& name)
+{
+    PenetrationTotals t;
+    for (const auto& f : r["families"])
+    {
+        if (!f["variants"].contains(name) || !f["variants"][name].contains("penetration"))
+            continue;
+        const Json& p = f["variants"][name]["penetration"];
+        t.any = true;
+        t.cases += count(p, "cases");
+        t.violations += count(p, "contract_violations");
+        t.outsideBound += count(p, "beyond_bound_keeping_contract");
+        for (auto [key, largest] : {std::pair{"abs", &t.abs}, std::pair{"rel", &t.rel},
+                                    std::pair{"bound_ratio", &t.ratio}})
+        {
+            const Json& h = p[key];
+            if (count(h, "count") == 0 ||
+                !(numberOf(h["max"]) > largest->value || std::isnan(largest->value)))
+                continue;
+            largest->value = numberOf(h["max"]);
+            largest->caseName = h.value("max_case", "");
+        }
+    }
+    return t;
+}
+
+// The penetration verdict in words, first on its line: by gjk2d's own contract "pass" or "FAIL"
+// ("fails" for a comparison variant); by a declared one "breaks its contract", "outside gjk2d's
+// depth bound" (keeping it) or "keeps its contract".
+std::string penetrationVerdict(const PenetrationTotals& t, bool judgedVariant, bool ownContract)
+{
+    if (ownContract)
+        return t.violations > 0 ? (judgedVariant ? "FAIL" : "fails")
+                                : (judgedVariant ? "pass" : "passes");
+    if (t.violations > 0)
+        return judgedVariant ? "FAIL: breaks its contract" : "breaks its contract";
+    return t.outsideBound > 0 ? "outside gjk2d's depth bound" : "keeps its contract";
+}
+
+// "x (case)", or "-" without one.
+std::string largestText(const PenetrationTotals::Largest& l)
+{
+    return std::isnan(l.value) ? "-" : fmt::format("{:.3g} ({})", l.value, l.caseName);
+}
+
+// The penetration line of a variant that has the block, verdict first (the terminal and report.md).
+std::string penetrationWords(const PenetrationTotals& t, bool judgedVariant, bool ownContract)
+{
+    return fmt::format("penetration: {}: {} overlapping case(s), {} contract violation(s), {} "
+                       "outside gjk2d's depth bound keeping it; largest depth error/bound {}, "
+                       "error {}, relative error {}",
+                       penetrationVerdict(t, judgedVariant, ownContract), t.cases, t.violations,
+                       t.outsideBound, largestText(t.ratio), largestText(t.abs),
+                       largestText(t.rel));
+}
+
 // What a variant's ns/query includes (variants[].timing, docs/report-schema.md), in words; "" for a
 // report written before the field. gjk2d's own variants have nothing to prepare.
 std::string timingWords(const Json& v)
@@ -302,11 +372,6 @@ std::string contractsMarkdown(const Json& r)
         const Json& c = v["contract"];
         const Json& w =
             v.contains("worst_contract_violation") ? v["worst_contract_violation"] : Json(nullptr);
-        std::uint64_t unjudged = 0; // penetration depths not judged yet, over the families
-        for (const auto& f : r["families"])
-            if (f["variants"].contains(v["name"].get<std::string>()))
-                unjudged += f["variants"][v["name"].get<std::string>()].value("depth_unjudged",
-                                                                              std::uint64_t(0));
         s += fmt::format("- **{}**: on overlap `{}` ({}); judged by {}; worst contract violation: "
                          "{}\n",
                          v["name"].get<std::string>(), c["overlap"].get<std::string>(),
@@ -317,13 +382,29 @@ std::string contractsMarkdown(const Json& r)
                                            w["family"].get<std::string>(),
                                            w["reason"].get<std::string>(), g(w["excess"]))
                              : "none");
-        if (unjudged > 0)
-            s +=
-                fmt::format("  - {} penetration answer(s) keep every clause judged; their depth is "
-                            "not judged yet (the exact penetration depth is issue 51's)\n",
-                            unjudged);
     }
     return s.empty() ? s : "\n### Contracts\n\n" + s;
+}
+
+// Each variant whose contract says penetration: its depths over the families, verdict first.
+std::string penetrationMarkdown(const Json& r, const std::map<std::string, bool>& judged)
+{
+    const auto own = ownMap(r);
+    std::string s;
+    for (const auto& v : r["variants"])
+    {
+        const std::string name = v["name"].get<std::string>();
+        const PenetrationTotals t = penetrationTotals(r, name);
+        if (t.any)
+            s += fmt::format("- **{}**: {}\n", mdEscape(name),
+                             mdEscape(penetrationWords(t, isJudged(judged, name),
+                                                       !own.count(name) || own.at(name))));
+    }
+    return s.empty() ? s
+                     : "\n### Penetration\n\nThe depth on overlapping shapes (exact signed "
+                       "distance < 0) against the exact signed distance, per variant whose "
+                       "contract says `penetration`.\n\n" +
+                           s;
 }
 
 // What each variant's ns/query includes and who timed it (variants[].timing), and its preparation
@@ -407,7 +488,7 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
         "within gjk2d's bound. `false ovl`, `false sep`, `undecid.` and `invalid` are gjk2d's own "
         "rules applied to every answer (for an implementation with a contract of its own, a "
         "measure, not its verdict).\n";
-    return s + contractsMarkdown(r) + timingMarkdown(r);
+    return s + contractsMarkdown(r) + penetrationMarkdown(r, judged) + timingMarkdown(r);
 }
 
 // One row of a family's table: one variant's counts, errors, iterations and speed.
@@ -656,9 +737,6 @@ std::string contractLine(const std::string& family, const std::string& name, con
                                              : "breaks its contract";
     std::string detail = fmt::format("{} contract violation(s)", violationCounts(st));
     detail += fmt::format(", {} outside gjk2d's bound keeping its contract", outsideBound(st));
-    if (count(st, "depth_unjudged") > 0)
-        detail +=
-            fmt::format(", {} penetration depth(s) not judged yet", count(st, "depth_unjudged"));
     std::string fam = family.size() > 28 ? family.substr(0, 25) + "..." : family;
     return fmt::format("  {:<28} {:<21} {:<19} {}\n", fam, name, what, detail);
 }
@@ -856,6 +934,9 @@ std::string variantTable(const Json& r)
             rows += fmt::format(
                 fmt::runtime(row), name.size() > 21 ? name.substr(0, 18) + "..." : name, t.cases,
                 fails, worstText(v, t, o), nsCell(v, t), variantVerdict(t, group, o));
+            const PenetrationTotals p = penetrationTotals(r, name);
+            if (p.any)
+                rows += wrap(penetrationWords(p, group, o), "    ", 100);
         }
         if (!rows.empty())
             s += (group ? "judged (they decide the result):\n"

@@ -272,6 +272,57 @@ WorstViolation WorstViolation::fromState(const Json& j)
     return w;
 }
 
+void PenetrationStats::merge(const PenetrationStats& o)
+{
+    any = any || o.any;
+    for (const PenetrationCountField& f : kPenetrationCounts)
+        this->*f.member += o.*f.member;
+    for (const PenetrationHistField& f : kPenetrationHists)
+        (this->*f.member).merge(o.*f.member);
+    worstViolation.merge(o.worstViolation);
+}
+
+// report.json's families[].variants[].penetration (docs/report-schema.md): the counts, the worst
+// violation, and the histograms (the error over gjk2d's depth bound last).
+Json PenetrationStats::toJson() const
+{
+    Json j = Json::object();
+    for (const PenetrationCountField& f : kPenetrationCounts)
+        j[f.name] = this->*f.member;
+    j["worst_contract_violation"] = worstViolation.toJson();
+    for (const PenetrationHistField& f : kPenetrationHists)
+        j[f.name] = (this->*f.member).toJson();
+    return j;
+}
+
+Json PenetrationStats::state() const
+{
+    if (!any)
+        return nullptr;
+    Json counts = Json::object(), histograms = Json::object();
+    for (const PenetrationCountField& f : kPenetrationCounts)
+        counts[f.name] = this->*f.member;
+    for (const PenetrationHistField& f : kPenetrationHists)
+        histograms[f.name] = (this->*f.member).state();
+    return Json{{"counts", std::move(counts)},
+                {"histograms", std::move(histograms)},
+                {"worst_violation", worstViolation.state()}};
+}
+
+PenetrationStats PenetrationStats::fromState(const Json& j)
+{
+    PenetrationStats p;
+    if (j.is_null())
+        return p;
+    p.any = true;
+    for (const PenetrationCountField& f : kPenetrationCounts)
+        p.*f.member = j.at("counts").at(f.name).get<std::uint64_t>();
+    for (const PenetrationHistField& f : kPenetrationHists)
+        p.*f.member = Hist::fromState(j.at("histograms").at(f.name));
+    p.worstViolation = WorstViolation::fromState(j.at("worst_violation"));
+    return p;
+}
+
 namespace
 {
 template <typename T, std::size_t N>
@@ -287,6 +338,18 @@ void copyExactly(std::array<T, N>& to, const Json& j, const char* what)
     const auto v = j.get<std::vector<T>>();
     if (v.size() != N)
         throw std::runtime_error(std::string("stats state: the number of ") + what + " differs");
+    std::copy(v.begin(), v.end(), to.begin());
+}
+
+// The contract violations' reasons of a state: an older state has fewer (the reasons added since,
+// at the end of Violation, count 0 there).
+void readReasons(std::array<std::uint64_t, kViolationReasons>& to, const Json& j)
+{
+    const auto v = j.get<std::vector<std::uint64_t>>();
+    if (v.size() > to.size())
+        throw std::runtime_error("stats state: more contract violation reasons than this release "
+                                 "knows");
+    to.fill(0);
     std::copy(v.begin(), v.end(), to.begin());
 }
 } // namespace
@@ -307,6 +370,7 @@ void Stats::merge(const Stats& o)
     addEach(violationReasons, o.violationReasons);
     worstViolation.merge(o.worstViolation);
     addEach(stops, o.stops);
+    penetration.merge(o.penetration);
 }
 
 // The state: StatsState (docs/report-schema.md), each table's rows in their order.
@@ -334,7 +398,8 @@ Json Stats::state() const
                 {"violation_reasons", violationReasons},
                 {"worst_violation", worstViolation.state()},
                 {"stops", stops},
-                {"iterations", iterations.state()}};
+                {"iterations", iterations.state()},
+                {"penetration", penetration.state()}};
 }
 
 Stats Stats::fromState(const Json& j)
@@ -356,10 +421,12 @@ Stats Stats::fromState(const Json& j)
             s.*kPathFields[i].member = p[i];
     }
     copyExactly(s.invalidReasons, j.at("invalid_reasons"), "invalid reasons");
-    copyExactly(s.violationReasons, j.at("violation_reasons"), "contract violation reasons");
+    readReasons(s.violationReasons, j.at("violation_reasons"));
     s.worstViolation = WorstViolation::fromState(j.at("worst_violation"));
     copyExactly(s.stops, j.at("stops"), "stop reasons");
     s.iterations = IterHist::fromState(j.at("iterations"));
+    // Absent from a state written before penetration was judged: none.
+    s.penetration = PenetrationStats::fromState(j.value("penetration", Json()));
     return s;
 }
 
@@ -463,6 +530,8 @@ Json Stats::toJson() const
         j["interval"] = intervalJson(*this);
     if (hasPaths)
         j["correct"] = correctJson(*this);
+    if (penetration.any)
+        j["penetration"] = penetration.toJson();
     Json st = Json::object();
     for (int i = 0; i < kStopReasons; ++i)
         st[gjk::stopReasonName(gjk::StopReason(i))] = stops[std::size_t(i)];
@@ -520,7 +589,7 @@ void addJudged(Stats& s, const VariantOutcome& v, const std::string& name, std::
 }
 
 // The answer's class by its implementation's contract: a violation (by reason, the worst kept),
-// or, keeping it, judged and beyond gjk2d's bound; and a penetration depth left unjudged.
+// or, keeping it, judged and beyond gjk2d's bound.
 void addContract(Stats& s, const VariantOutcome& v, const std::string& name, std::uint64_t index)
 {
     if (!v.keepsContract())
@@ -531,7 +600,6 @@ void addContract(Stats& s, const VariantOutcome& v, const std::string& name, std
     }
     else if (!v.outOfRange && v.beyondBound)
         ++s.beyondBoundKeepingContract;
-    s.depthUnjudged += v.depthUnjudged ? 1 : 0;
 }
 
 // Certified variants: the interval given, whether it holds the truth, its width.
@@ -551,9 +619,31 @@ void addInterval(Stats& s, const VariantOutcome& v, const std::string& name, std
 }
 } // namespace
 
+// One answer of a penetration contract on shapes whose exact signed distance is < 0.
+void PenetrationStats::add(const VariantOutcome& v, const std::string& name, std::uint64_t index)
+{
+    ++cases;
+    if (!v.keepsContract())
+    {
+        ++contractViolations;
+        worstViolation.add(v.violationExcess, name, index, v.violation);
+    }
+    beyondBound += v.beyondDepthBound ? 1 : 0;
+    beyondBoundKeepingContract += v.beyondDepthBound && v.keepsContract() ? 1 : 0;
+    if (v.nonfinite)
+    {
+        ++nonfinite;
+        return;
+    }
+    abs.add(v.depthAbs, name, index);
+    rel.add(v.depthRel, name, index);
+    boundRatio.add(v.depthRatio, name, index);
+}
+
 void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t index,
                 const VariantInfo& vi, const CaseOutcome& o)
 {
+    penetration.any = penetration.any || contractOf(vi).overlap == Overlap::Penetration;
     if (v.plugin == PluginStatus::Refused)
     {
         ++refused;
@@ -583,6 +673,8 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
     iterationLimit += v.iterationLimit ? 1 : 0;
     if (!v.outOfRange) // cases GJK flags out of range are counted apart, not judged
         addJudged(*this, v, name, index);
+    if (!v.outOfRange && v.depthJudged)
+        penetration.add(v, name, index);
     if (vi.scalar == Scalar::Float)
     {
         hasInputRounding = true;

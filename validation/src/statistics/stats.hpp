@@ -94,6 +94,55 @@ struct VariantOutcome; // evaluate/evaluate.hpp (below statistics/ in the pipeli
 struct VariantInfo;
 struct CaseOutcome;
 
+// A family x variant's penetration block (report.json families[].variants[].penetration), for an
+// implementation whose contract's overlap is Penetration: its answers on the cases whose exact
+// signed distance is < 0 (VariantOutcome::depthJudged, not out of range), their depth errors and
+// their verdict. Its members are data as Stats' are (kPenetrationCounts, kPenetrationHists below).
+// The state of shards and checkpoints holds it under "penetration", null without it: a state
+// written before it (gjk-shard/3 of an earlier revision) reads as a variant without penetration
+// answers, so it needs no new version.
+struct PenetrationStats
+{
+    bool any = false;        // the variant's contract says Penetration: the block is written
+    std::uint64_t cases = 0; // overlapping cases whose depth was judged
+    std::uint64_t contractViolations = 0; // of which: answers that break the contract (any reason)
+    std::uint64_t beyondBound = 0;        // of which: |d - s| beyond gjk2d's depth bound
+    std::uint64_t beyondBoundKeepingContract = 0; // of which: keeping the contract (class 2)
+    std::uint64_t nonfinite = 0;                  // of which: a non-finite answer (no error)
+    WorstViolation worstViolation;                // the worst of contractViolations
+    // |d - s|, |d - s| / |s| and |d - s| / gjk2d's depth bound.
+    Hist abs{-40, 40}, rel{-20, 40}, boundRatio{-20, 40};
+
+    void add(const VariantOutcome& v, const std::string& name, std::uint64_t index);
+    void merge(const PenetrationStats& other);
+    Json toJson() const;
+    Json state() const; // null when !any; fromState(state()) == *this
+    static PenetrationStats fromState(const Json& j);
+};
+
+struct PenetrationCountField
+{
+    const char* name; // the report's and the state's key
+    std::uint64_t PenetrationStats::*member;
+};
+inline constexpr PenetrationCountField kPenetrationCounts[] = {
+    {"cases", &PenetrationStats::cases},
+    {"contract_violations", &PenetrationStats::contractViolations},
+    {"beyond_bound", &PenetrationStats::beyondBound},
+    {"beyond_bound_keeping_contract", &PenetrationStats::beyondBoundKeepingContract},
+    {"nonfinite", &PenetrationStats::nonfinite},
+};
+struct PenetrationHistField
+{
+    const char* name;
+    Hist PenetrationStats::*member;
+};
+inline constexpr PenetrationHistField kPenetrationHists[] = {
+    {"abs", &PenetrationStats::abs},
+    {"rel", &PenetrationStats::rel},
+    {"bound_ratio", &PenetrationStats::boundRatio},
+};
+
 // One family x one variant.
 struct Stats
 {
@@ -109,9 +158,9 @@ struct Stats
     // The verdict by each implementation's own contract (evaluate/contract_judge.cpp; for gjk2d's
     // own contract the same answers as `failures`): answers that break it, by reason (Violation:
     // [r - 1] for reason r), and the worst; judged answers that keep it but are beyond gjk2d's
-    // bound (class 2, a measured accuracy: of `beyond_bound`); penetration answers on overlap that
-    // keep every judged clause, whose depth is not judged yet (issue 51).
-    std::uint64_t contractViolations = 0, beyondBoundKeepingContract = 0, depthUnjudged = 0;
+    // bound (class 2, a measured accuracy: of `beyond_bound`; the distance's only: a depth beyond
+    // gjk2d's depth bound is counted in `penetration`).
+    std::uint64_t contractViolations = 0, beyondBoundKeepingContract = 0;
     std::array<std::uint64_t, kViolationReasons> violationReasons{};
     WorstViolation worstViolation;
     std::uint64_t skipped = 0;       // not run: input not representable, or not applicable
@@ -145,6 +194,7 @@ struct Stats
     bool hasInputRounding = false;
     IterHist iterations;
     std::array<std::uint64_t, kStopReasons> stops{};
+    PenetrationStats penetration; // a penetration contract's depths (its own block)
 
     // Timing (not merged: measured once per family and variant).
     double nsPerQuery = -1, nsMin = -1, nsMax = -1, ratioToBaseline = -1;
@@ -207,7 +257,6 @@ inline constexpr CountField kCountFields[] = {
     // numbers there), flagging any increase.
     {"contract_violations", &Stats::contractViolations, Section::Contract, true},
     {"beyond_bound_keeping_contract", &Stats::beyondBoundKeepingContract, Section::Contract, false},
-    {"depth_unjudged", &Stats::depthUnjudged, Section::Contract, false},
     {"not_applicable", &Stats::notApplicable, Section::Top, false},
     {"refused", &Stats::refused, Section::Top, false},
     {"plugin_errors", &Stats::pluginErrors, Section::Top, false},

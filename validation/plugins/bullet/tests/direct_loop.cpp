@@ -57,8 +57,8 @@ ScalarShape scalarShape(const directloop::Shape& s)
                        btScalar(s.s)};
 }
 
-// The adapter's prism reduction (bullet.cpp: extent, prismHalfHeight, buildPrism), the same rule,
-// so that both sides query the same shapes.
+// The adapter's prism reduction (bullet.cpp: extent, prismHalfHeight with its kHeightFactor,
+// buildPrism), the same rule, so that both sides query the same shapes.
 double extent(const ScalarShape& s)
 {
     double m = 0;
@@ -69,7 +69,7 @@ double extent(const ScalarShape& s)
 
 btScalar prismHalfHeight(const ScalarShape& a, const ScalarShape& b)
 {
-    const double h = 2 * (extent(a) + extent(b));
+    const double h = (sizeof(btScalar) == sizeof(double) ? 16384 : 16) * (extent(a) + extent(b));
     const double most = double(std::numeric_limits<btScalar>::max()) / 8;
     return btScalar(h == 0 ? 1.0 : std::min(h, most));
 }

@@ -95,8 +95,28 @@ TEMPLATE_TEST_CASE("the contract: penetration on overlap, no tolerance stated, m
     CHECK(std::string(c->margin_source).find("CONVEX_DISTANCE_MARGIN 0.04") != std::string::npos);
 }
 
+// The depth clause the module exports (bullet.cpp, kDepth; gjk2d_plugin_depth): none stated,
+// both tolerances negative, and its source names the stopping constant it does not promise,
+// EPA_ACCURACY, at its line for the module's btScalar (btGjkEpa2.cpp:63 in double, :67 in float,
+// Bullet 3.24).
+TEMPLATE_TEST_CASE("the depth clause: none stated, EPA_ACCURACY cited as a stopping rule", "",
+                   float, double)
+{
+    const gjk2d_depth_contract* d = bullet<TestType>().depth();
+    REQUIRE(d != nullptr);
+    CHECK(d->abs_tolerance < 0);
+    CHECK(d->rel_tolerance < 0);
+    const std::string source = d->source;
+    CHECK(source.rfind("none: ", 0) == 0);
+    CHECK(source.find(std::is_same_v<TestType, double> ? "btGjkEpa2.cpp:63, EPA_ACCURACY 1e-12"
+                                                       : "btGjkEpa2.cpp:67, EPA_ACCURACY 1e-4") !=
+          std::string::npos);
+    CHECK(source.find("Bullet 3.24") != std::string::npos);
+}
+
 // The overlap clause (`penetration`) through Bullet, on A = [0, 10]^2 (prism half heights from
-// bullet.cpp's prismHalfHeight: 60.6 and 54.3 here, far above the depths).
+// bullet.cpp's prismHalfHeight: 2^14 (eA + eB) in double, 2^4 (eA + eB) in float, eA = 20, eB = 21
+// and 17: far above the depths).
 // - B the segment (6, -5)-(6, 15), crossing A: the smallest translation that separates them moves
 //   B to x = 10 (4; to x = 0 it is 6, along y 15 or more): depth 4, pA on A's face x = 10, pB on
 //   the segment, at one height y in [0, 10], 4 apart;
@@ -129,16 +149,18 @@ TEMPLATE_TEST_CASE("a segment and a diamond through a 10 x 10 square: depths 4 a
 }
 
 // A finding, not a prism effect (docs/peers.md, "## Bullet"): two 10 x 10 squares, B = A placed at
-// (5, 0), overlap by 5 along x and 10 along y, depth 5. Bullet's EPA answers -3.5321, pA
-// (7.495, 0) on A's bottom edge and pB (5, 2.495) on B's left edge: each point on its own shape,
-// but 29% short of the depth, along a diagonal that separates nothing (the squares' projections on
-// it overlap by 15 / sqrt(2)), and the 3D pair is tilted (its z differ by about 0.16): their x, y
-// are 3.5286 apart, not 3.5321 (with the adapter's half height h = 2 (20 + 20) = 80). Not the
-// prisms: measured outside the adapter, half height 1 gives -0.962, 100 gives -3.5333, 1000
-// -3.5355, tending to 5 / sqrt(2). The same in float and double (to 1e-4). The depth is judged once
-// the exact side computes it (issue 49); until then this pins what Bullet answers.
-TEMPLATE_TEST_CASE("10 x 10 squares overlapping by 5: EPA answers -3.53, a pair 29% short of the "
-                   "depth",
+// (5, 0), overlap by 5 along x and 10 along y, depth 5. Bullet's EPA answers 5 / sqrt(2) =
+// 3.5355: pA (7.5, 0) on A's bottom edge and pB (5, 2.5) on B's left edge, each point on its own
+// shape, but 29% short of the depth, along a diagonal that separates nothing (the squares'
+// projections on it overlap by 15 / sqrt(2)). EPA ends on InvalidHull there (btGjkEpa2.cpp) and
+// answers its last face. The prisms only tilt that face: at the adapter's former half height
+// h = 2 (20 + 20) = 80 the answer was -3.5321, its pair tilted in z (x, y 3.5286 apart); at half
+// height 1, -0.962; at the adapter's (bullet.cpp, prismHalfHeight: 2^14 (eA + eB) in double, 2^4
+// in float) and above it tends to 5 / sqrt(2). Measured: double -3.5355339059, float -3.53548 with
+// the pair's x, y 3.53543 apart (1.1e-4 short: the checks' 2e-4).
+// The depth is judged against the exact one in a campaign; this pins what Bullet answers.
+TEMPLATE_TEST_CASE("10 x 10 squares overlapping by 5: EPA answers -3.5355 = -5 / sqrt(2), a pair "
+                   "29% short of the depth",
                    "", float, double)
 {
     const peers::Shape a{{0, 0, 10, 0, 10, 10, 0, 10}, 0};
@@ -147,10 +169,12 @@ TEMPLATE_TEST_CASE("10 x 10 squares overlapping by 5: EPA answers -3.53, a pair 
     REQUIRE(r.status == GJK2D_STATUS_OK);
     INFO("distance " << r.distance << ", pA (" << r.ax << ", " << r.ay << "), pB (" << r.bx << ", "
                      << r.by << ")");
-    CHECK(r.distance == within(-3.5321, 1e-4));
-    CHECK(std::hypot(r.ax - r.bx, r.ay - r.by) == within(3.5286, 1e-4));
-    CHECK(r.ay == within(0, 1e-4));
-    CHECK(r.bx == within(5, 1e-4));
+    CHECK(r.distance == within(-5 / std::sqrt(2.0), 2e-4));
+    CHECK(std::hypot(r.ax - r.bx, r.ay - r.by) == within(5 / std::sqrt(2.0), 2e-4));
+    CHECK(r.ax == within(7.5, 2e-4));
+    CHECK(r.ay == within(0, 2e-4));
+    CHECK(r.bx == within(5, 2e-4));
+    CHECK(r.by == within(2.5, 2e-4));
 }
 
 // Margins as radii: [3, 4] x [0, 1] with radius 0.25 and A with radius 0.25: 2 - 0.5 = 1.5, the

@@ -6,8 +6,8 @@
 //
 // A = [0, 10]^2 (eA = max |x| + |y| = 20). Two hand-derived cases (depths derived in
 // test_bullet.cpp):
-// - B the segment (6, -5)-(6, 15): depth 4 along x; eB = 21, h = 2 (eA + eB) = 82;
-// - B the diamond (12, 5), (7, 10), (2, 5), (7, 0): depth 8 along x; eB = 17, h = 74.
+// - B the segment (6, -5)-(6, 15): depth 4 along x; eB = 21, h = 2^14 (eA + eB) = 671744;
+// - B the diamond (12, 5), (7, 10), (2, 5), (7, 0): depth 8 along x; eB = 17, h = 606208.
 // With h = 1 the prisms are also separated by 2 along z, less than either depth: Bullet answers
 // -2, both points at one x, y (the translation runs along z). With the adapter's h it answers the
 // 2D depth, its points' x, y apart by it; and the adapter answers bit for bit what the direct
@@ -111,7 +111,7 @@ TEST_CASE("penetrating cases: half height 1 answers the z translation 2, the ada
         CHECK(low.distance == within(-2, tol));
         CHECK(std::hypot(low.ax - low.bx, low.ay - low.by) == within(0, tol));
 
-        const double h = 2 * (extent(square) + extent(c.b));
+        const double h = 16384 * (extent(square) + extent(c.b)); // bullet.cpp, kHeightFactor
         const peers::Answer tall = direct(square, c.b, h);
         REQUIRE(tall.status == GJK2D_STATUS_OK);
         CHECK(tall.distance == within(-c.depth, tol));

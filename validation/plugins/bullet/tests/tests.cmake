@@ -71,6 +71,21 @@ foreach(_precision float double)
   target_compile_options(${_target} PRIVATE ${GJK2D_BULLET_DIRECT_${_precision}_CFLAGS_OTHER})
   target_link_libraries(${_target} PRIVATE gjk2d_plugin nlohmann_json::nlohmann_json
                         ${GJK2D_BULLET_DIRECT_${_precision}_LINK_LIBRARIES} ${CMAKE_DL_LIBS})
+  # Bullet's depth against the prisms' half height (depth_height.cpp; docs/peers.md, "The prism
+  # reduction"): a measuring program; its CTest checks the adapter's rule on a few cases.
+  set(_depth bullet_depth_height_${_precision})
+  add_executable(${_depth} ${CMAKE_CURRENT_LIST_DIR}/depth_height.cpp)
+  target_include_directories(${_depth} PRIVATE ${PROJECT_SOURCE_DIR}/tests/plugins/peers)
+  target_include_directories(${_depth} SYSTEM PRIVATE
+                             ${GJK2D_BULLET_DIRECT_${_precision}_INCLUDE_DIRS})
+  target_compile_options(${_depth} PRIVATE ${GJK2D_BULLET_DIRECT_${_precision}_CFLAGS_OTHER})
+  target_link_libraries(${_depth} PRIVATE gjk2d_plugin nlohmann_json::nlohmann_json
+                        ${GJK2D_BULLET_DIRECT_${_precision}_LINK_LIBRARIES} ${CMAKE_DL_LIBS})
+  add_test(NAME "plugins: bullet: ${_precision}: the depth-height program answers as the adapter at its half height"
+           COMMAND ${_depth} ${GJK2D_DIRECT_LOOP_CASES} --check 50
+                   --plugin $<TARGET_FILE:gjk2d_bullet_${_precision}_plugin>)
+  set_tests_properties("plugins: bullet: ${_precision}: the depth-height program answers as the adapter at its half height"
+                       PROPERTIES FIXTURES_REQUIRED gjk2d_direct_loop_cases)
   add_test(NAME "plugins: bullet: ${_precision}: the direct loop runs, its distances are the adapter's"
            COMMAND ${_target} ${GJK2D_DIRECT_LOOP_CASES} --check 50
                    --plugin $<TARGET_FILE:gjk2d_bullet_${_precision}_plugin>)

@@ -13,7 +13,8 @@
 //     validation/gjk-validate generate --family random:20000 --seed 1 --out /tmp/r.json
 //     tests/plugins/fcl_direct_loop /tmp/r.json --plugin validation/plugins/gjk2d-fcl.so
 //
-// (GST_LIBCCD; add --variant fcl-0.7-indep for GST_INDEP.)
+// (GST_LIBCCD; add --variant fcl-0.7-indep for GST_INDEP, --variant fcl-0.7-libccd-signed for
+// GST_LIBCCD with enable_signed_distance.)
 //
 // Cases FCL cannot take (a radius on more than two points: the adapter refuses them) are left out.
 #include "direct_loop.hpp"
@@ -30,7 +31,8 @@ namespace
 using Vec3 = fcl::Vector3<double>;
 
 const char* const kUsage =
-    "usage: fcl_direct_loop CASES.json [--variant fcl-0.7-libccd|fcl-0.7-indep] [--passes N]\n"
+    "usage: fcl_direct_loop CASES.json [--variant fcl-0.7-libccd|fcl-0.7-indep|"
+    "fcl-0.7-libccd-signed] [--passes N]\n"
     "                       [--plugin gjk2d-fcl.so] [--check N]\n";
 
 // The adapter's prism reduction (fcl.cpp: extent, prismHalfHeight, worldPoints, capsule, prism),
@@ -112,8 +114,8 @@ int main(int argc, char** argv)
     const directloop::Options o = directloop::parseOptions(argc, argv, kUsage, "fcl-0.7-libccd");
     fcl::DistanceRequest<double> request;
     request.enable_nearest_points = true;
-    request.enable_signed_distance = false;
-    if (o.variant == "fcl-0.7-libccd")
+    request.enable_signed_distance = o.variant == "fcl-0.7-libccd-signed";
+    if (o.variant == "fcl-0.7-libccd" || o.variant == "fcl-0.7-libccd-signed")
         request.gjk_solver_type = fcl::GST_LIBCCD;
     else if (o.variant == "fcl-0.7-indep")
         request.gjk_solver_type = fcl::GST_INDEP;
@@ -139,8 +141,16 @@ int main(int argc, char** argv)
                            [&](std::size_t k)
                            {
                                fcl::DistanceResult<double> result;
-                               const double d = fcl::distance(
-                                   objects[2 * k].get(), objects[2 * k + 1].get(), request, result);
+                               double d = 0;
+                               try // FCL throws on some configurations, as the adapter catches
+                               {
+                                   d = fcl::distance(objects[2 * k].get(), objects[2 * k + 1].get(),
+                                                     request, result);
+                               }
+                               catch (const std::exception&)
+                               {
+                                   return directloop::Answer{GJK2D_STATUS_ERROR};
+                               }
                                return directloop::Answer{GJK2D_STATUS_OK,
                                                          d,
                                                          result.nearest_points[0].x(),

@@ -40,6 +40,12 @@ const peers::Plugin& indep()
     return p;
 }
 
+const peers::Plugin& signedLibccd()
+{
+    static const peers::Plugin p(GJK2D_FCL_PLUGIN, "fcl-0.7-libccd-signed");
+    return p;
+}
+
 } // namespace
 
 TEST_CASE("the library names FCL and its pkg-config version, both solvers are double")
@@ -244,4 +250,92 @@ TEST_CASE("a huge case: GST_INDEP leaves its result unwritten (numeric max, NaN 
         CHECK(r.distance == std::numeric_limits<double>::max());
         CHECK((std::isnan(r.ax) && std::isnan(r.ay) && std::isnan(r.bx) && std::isnan(r.by)));
     }
+}
+
+// fcl-0.7-libccd-signed (issue 51): GST_LIBCCD with enable_signed_distance. Its contract: overlap
+// `penetration` (distance_request.h:57-92), the distance tolerance as GST_LIBCCD's (none stated),
+// and the depth clause FCL states for its EPA: within distance_tolerance, 1e-6
+// (gjk_libccd-inl.h:2697-2700).
+TEST_CASE("signed: a double variant with radii, its contract penetration, its depth within 1e-6")
+{
+    CHECK(signedLibccd().implementation().scalar == GJK2D_SCALAR_DOUBLE);
+    CHECK((signedLibccd().implementation().accepts & GJK2D_ACCEPTS_RADIUS) != 0);
+    const gjk2d_contract* c = signedLibccd().contract();
+    REQUIRE(c != nullptr);
+    CHECK(c->overlap == GJK2D_OVERLAP_PENETRATION);
+    CHECK(std::string(c->overlap_source).find("distance_request.h:57-92") != std::string::npos);
+    CHECK(std::string(c->overlap_source).find("FCL 0.7.0") != std::string::npos);
+    CHECK((c->distance_abs_tolerance < 0 && c->distance_rel_tolerance < 0));
+    const gjk2d_depth_contract* d = signedLibccd().depth();
+    REQUIRE(d != nullptr);
+    CHECK(d->abs_tolerance == 1e-6);
+    CHECK(d->rel_tolerance < 0);
+    CHECK(std::string(d->source).find("gjk_libccd-inl.h:2697-2700") != std::string::npos);
+    for (const peers::Plugin* p : {&libccd(), &indep()}) // no depth answered: no clause stated
+    {
+        REQUIRE(p->depth() != nullptr);
+        CHECK((p->depth()->abs_tolerance < 0 && p->depth()->rel_tolerance < 0));
+    }
+}
+
+// Penetration pairs on A = [0, 10]^2 (depths derived in validation/plugins/bullet/tests/
+// test_bullet.cpp): the segment (6, -5)-(6, 15) is 4 deep along x, pA on A's face x = 10, pB on
+// the segment; the diamond (12, 5), (7, 10), (2, 5), (7, 0) 8 deep, pA (10, 5), pB (2, 5); A and
+// A placed at (5, 0) 5 deep along x (where Bullet's EPA answers 5 / sqrt(2)). pA - pB is the
+// translation of B that separates them. Held to FCL's stated 1e-6; measured: exact.
+TEST_CASE("signed: a segment, a diamond and a square through a 10 x 10 square: depths 4, 8, 5")
+{
+    const double tol = 1e-6; // FCL's stated depth tolerance (the contract above)
+    const peers::Shape a{{0, 0, 10, 0, 10, 10, 0, 10}, 0};
+    const peers::Answer r = signedLibccd().distance(a, peers::Shape{{6, -5, 6, 15}, 0});
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(-4, tol));
+    CHECK(r.ax == within(10, tol));
+    CHECK(r.bx == within(6, tol));
+    CHECK(r.ay == within(r.by, tol));
+    CHECK((r.ay >= -tol && r.ay <= 10 + tol));
+    const peers::Answer d = signedLibccd().distance(a, peers::Shape{{12, 5, 7, 10, 2, 5, 7, 0}, 0});
+    REQUIRE(d.status == GJK2D_STATUS_OK);
+    CHECK(d.distance == within(-8, tol));
+    CHECK(d.ax == within(10, tol));
+    CHECK(d.ay == within(5, tol));
+    CHECK(d.bx == within(2, tol));
+    CHECK(d.by == within(5, tol));
+    const peers::Answer q =
+        signedLibccd().distance(a, peers::Shape{{0, 0, 10, 0, 10, 10, 0, 10}, 0, 5, 0});
+    REQUIRE(q.status == GJK2D_STATUS_OK);
+    CHECK(q.distance == within(-5, tol));
+    CHECK(q.ax - q.bx == within(5, tol));
+    CHECK(q.ay == within(q.by, tol));
+}
+
+// Separated shapes: the signed request answers as the unsigned one (unit squares 3 apart).
+TEST_CASE("signed: two unit squares 3 apart: distance 3, as without signed distance")
+{
+    const peers::Answer r = signedLibccd().distance(peers::unitSquare(), peers::unitSquare(4, 0));
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(3, kPolygon));
+    CHECK(r.ax == within(1, kPolygon));
+    CHECK(r.bx == within(4, kPolygon));
+}
+
+// Rounded shapes through FCL's Sphere and Capsule: a disc of radius 0.5 at (0.8, 0.5) in the unit
+// square is freed by moving the square 0.7 to the left (its edge x = 1 to the disc's leftmost
+// point x = 0.3; every other way is longer), depth 0.7, pA (0.3, 0.5) on the disc, pB (1, 0.5) on
+// the square; the capsule around (0, 0.5)-(2, 0.5) of radius 0.25 leaves it by moving
+// the square 0.75 up or down (along x: 2.25 or 1.25), depth 0.75. Curved: within kRounded, FCL's
+// threshold (measured 4.6e-8 and 3e-9).
+TEST_CASE("signed: a disc and a capsule in the unit square: depths 0.7 and 0.75")
+{
+    const peers::Answer r =
+        signedLibccd().distance(peers::Shape{{0, 0}, 0.5, 0.8, 0.5}, peers::unitSquare());
+    REQUIRE(r.status == GJK2D_STATUS_OK);
+    CHECK(r.distance == within(-0.7, kRounded));
+    CHECK(r.ax == within(0.3, kRounded));
+    CHECK(r.bx == within(1, kRounded));
+    const peers::Answer c =
+        signedLibccd().distance(peers::Shape{{0, 0, 2, 0}, 0.25, 0, 0.5}, peers::unitSquare());
+    REQUIRE(c.status == GJK2D_STATUS_OK);
+    CHECK(c.distance == within(-0.75, kRounded));
+    CHECK(std::abs(c.ay - c.by) == within(0.75, kRounded));
 }
