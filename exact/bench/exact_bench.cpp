@@ -11,7 +11,7 @@
 //     Counter "gmp": the share of cases that took the GMP route. Small/edge-merge+gmp is the
 //     default route without its filter (Options::filter = false); Small/edge-merge-no-squared
 //     leaves the squared rational out (Options::squaredRational = false).
-//   Overlap/<options>: the same kind of pairs with centres within 1/2 of each other (about 85%
+//   Overlap/<options>: the same kind of pairs with centres within 1/2 of each other (about 82%
 //     overlapping), with and without Options::penetration (the signed distance and the
 //     penetration pair, docs/exact.md "Penetration depth"): "plain" (the default), "penetration",
 //     "penetration+gmp" (no filter), "no-squared" and "penetration-no-squared" (the runner's
@@ -75,7 +75,7 @@ void pair(benchmark::State& state, exact::Route route)
     state.SetLabel(transformed ? "transformed" : "identity");
 }
 
-// Offsets in [-spread, spread]: 2.5 gives about 15% overlapping, 0.5 about 85%.
+// Offsets in [-spread, spread]: 2.5 gives about 15% overlapping, 0.5 about 82%.
 std::vector<std::pair<exact::Shape, exact::Shape>> smallCases(double spread = 2.5)
 {
     std::mt19937_64 rng(2024);

@@ -483,16 +483,17 @@ class Solver
             return;
         }
         const int k = static_cast<int>(za.size());
-        VertexArray<Point> as(k), bs(k);
-        for (int t = 0; t < k; ++t)
+        const int chosen = closestEdge(r.fallbacks.depthTies);
+        const int ids[2] = {chosen, chosen + 1 == k ? 0 : chosen + 1};
+        const int count = k == 1 ? 1 : 2;
+        Point as[2], bs[2];
+        for (int t = 0; t < count; ++t)
         {
-            as[t] = a_.points[za[t]];
-            bs[t] = b_.points[zb[t]];
+            as[t] = a_.points[za[ids[t]]];
+            bs[t] = b_.points[zb[ids[t]]];
         }
-        ExactTies ties(*this);
-        int chosen = 0;
         Result s;
-        if (filteredDepth(k, a_, b_, as.data(), bs.data(), ties, chosen, s))
+        if (filteredDepth(count, a_, b_, as, bs, s))
         {
             r.hasSigned = true;
             r.signedDistance = s.signedDistance;
@@ -515,7 +516,63 @@ class Solver
             finishSigned(e, a_.radius, b_.radius, r);
             r.fallbacks.depth = true;
         }
-        r.fallbacks.depthTies += ties.exact;
+    }
+
+    // The closest edge of Z to O (inside or on Z), as penetration.cpp's deepest() chooses it: each
+    // edge's squared line distance C^2 / L (C = P x Q, L = |Q - P|^2) enclosed from merge()'s
+    // interval vertices; the least upper end m, and every edge whose enclosure starts at or below m
+    // is a candidate; one candidate is the answer, several (near or exact ties) are compared
+    // exactly (edgeExact: the least squared distance, then the least outward-normal angle), each
+    // comparison counted in `exactCount`. Z a point (k = 1): 0.
+    int closestEdge(int& exactCount)
+    {
+        const int k = static_cast<int>(za.size());
+        if (k == 1)
+            return 0;
+        VertexArray<double> lo(k), hi(k);
+        double least = HUGE_VAL;
+        {
+            I::Protector protect; // round upward for the intervals
+            for (int e = 0; e < k; ++e)
+            {
+                const int g = e + 1 == k ? 0 : e + 1;
+                const I dx = zx[g] - zx[e], dy = zy[g] - zy[e];
+                const I C = zx[e] * zy[g] - zy[e] * zx[g];
+                const I L = CGAL::square(dx) + CGAL::square(dy);
+                if (L.inf() > 0)
+                {
+                    const I dd = CGAL::square(C) / L;
+                    lo[e] = dd.inf();
+                    hi[e] = dd.sup();
+                }
+                else
+                { // an edge too short for its interval: a candidate, decided exactly
+                    lo[e] = 0;
+                    hi[e] = HUGE_VAL;
+                }
+                least = std::min(least, hi[e]);
+            }
+        }
+        VertexArray<int> near;
+        for (int e = 0; e < k; ++e)
+            if (!(lo[e] > least)) // NaN ends too
+                near.push_back(e);
+        if (near.size() == 1)
+            return near[0];
+        int best = near[0];
+        EdgeExact b = edgeExact(best);
+        for (std::size_t t = 1; t < near.size(); ++t)
+        {
+            EdgeExact c = edgeExact(near[t]);
+            ++exactCount;
+            const int o = cmp(c.squared, b.squared);
+            if (o < 0 || (o == 0 && angleLess(c, b)))
+            {
+                best = near[t];
+                b = std::move(c);
+            }
+        }
+        return best;
     }
 
     // Edge e of Z (vertex e to e + 1), exactly: its squared line distance from O and its outward
@@ -536,45 +593,18 @@ class Solver
         return {toQ(C * C, D.x * D.x + D.y * D.y, 2 * D.e, true), D.y, -D.x};
     }
 
-    // filteredDepth()'s near ties, decided as penetration.cpp's deepest() decides: the least
-    // squared distance, then the least outward-normal angle in [0, 2 pi).
-    class ExactTies final : public DepthTies
+    // Outward normals (up to positive factors) by angle in [0, 2 pi), as penetration.cpp's.
+    static int halfOf(const EdgeExact& n)
     {
-      public:
-        explicit ExactTies(Solver& s) : s_(s) {}
-        int exact = 0; // comparisons made
-        int choose(const int* edges, int n) override
-        {
-            int best = edges[0];
-            EdgeExact b = s_.edgeExact(best);
-            for (int t = 1; t < n; ++t)
-            {
-                EdgeExact c = s_.edgeExact(edges[t]);
-                ++exact;
-                const int o = cmp(c.squared, b.squared);
-                if (o < 0 || (o == 0 && angleLess(c, b)))
-                {
-                    best = edges[t];
-                    b = std::move(c);
-                }
-            }
-            return best;
-        }
-
-      private:
-        Solver& s_;
-        static int half(const EdgeExact& n)
-        {
-            return (sgn(n.ny) > 0 || (sgn(n.ny) == 0 && sgn(n.nx) > 0)) ? 0 : 1;
-        }
-        static bool angleLess(const EdgeExact& n, const EdgeExact& m)
-        {
-            const int hn = half(n), hm = half(m);
-            if (hn != hm)
-                return hn < hm;
-            return cmp(n.nx * m.ny, n.ny * m.nx) > 0;
-        }
-    };
+        return (sgn(n.ny) > 0 || (sgn(n.ny) == 0 && sgn(n.nx) > 0)) ? 0 : 1;
+    }
+    static bool angleLess(const EdgeExact& n, const EdgeExact& m)
+    {
+        const int hn = halfOf(n), hm = halfOf(m);
+        if (hn != hm)
+            return hn < hm;
+        return cmp(n.nx * m.ny, n.ny * m.nx) > 0;
+    }
 
     // The whole of Z with its provenance, exactly (Options::penetration with overlapping cores).
     Polygon polygon()

@@ -10,8 +10,6 @@
 #include "expansion.hpp"
 #include "internal.hpp"
 
-#include <boost/container/small_vector.hpp>
-
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -876,73 +874,37 @@ bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Poin
 // ---------------------------------------------------------------- penetration depth
 //
 // filteredDepth (docs/exact.md, "Penetration depth", "The filter"): the signed distance and the
-// penetration pair of overlapping cores from the whole of Z, in the double-double operations
-// above. Each edge P -> Q (D = Q - P) has its squared line distance C^2 / L (C = P x D, L = |D|^2)
-// as a V with its bound; the least is chosen when its interval lies below every other edge's, else
-// among the edges whose intervals reach it by the caller's exact comparison (ties). Then, for the
-// chosen edge: the signed value -(C / sqrt(L) + rA + rB), the foot parameter t = -(P . D) / L, the
-// hull points a + t (a' - a) and b + t (b' - b), and the pair moved by the radii along
-// N / sqrt(L), N = (D.y, -D.x): each rounded by roundTo() as above, so equal to penetration.cpp's
-// MPFR roundings of the same reals wherever decided.
+// penetration pair of overlapping cores, in the double-double operations above, for the closest
+// edge P -> Q of Z (D = Q - P) the caller chose (edge_merge.cpp: interval enclosures of every
+// edge's squared line distance C^2 / L, C = P x D, L = |D|^2, and exact comparisons among the
+// edges whose enclosures reach the least): the signed value -(C / sqrt(L) + rA + rB), the foot
+// parameter t = -(P . D) / L, the hull points a + t (a' - a) and b + t (b' - b), and the pair moved
+// by the radii along N / sqrt(L), N = (D.y, -D.x): each rounded by roundTo() as above, so equal
+// to penetration.cpp's MPFR roundings of the same reals wherever decided.
 
-namespace
-{
-// [lo, hi] holding the exact value of v (its rounding, |l| and e, with a relative margin).
-void bounds(const V& v, double& lo, double& hi)
-{
-    const double spread = (std::fabs(v.l) + v.e) * kUp + 0x1p-50 * std::fabs(v.h);
-    lo = v.h - spread;
-    hi = v.h + spread;
-}
-} // namespace
-
-bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const Point* bs,
-                   DepthTies& ties, int& chosen, Result& r)
+bool filteredDepth(int count, const Shape& A, const Shape& B, const Point* as, const Point* bs,
+                   Result& r)
 {
     const double rA = A.radius, rB = B.radius;
     const V radii = add(exactly(rA), exactly(rB)); // exact: two doubles' sum
-    boost::container::small_vector<P2, 16> a(k), b(k), z(k);
-    for (int t = 0; t < k; ++t)
+    P2 a[2], b[2], z[2];
+    for (int t = 0; t < count; ++t)
     {
         a[t] = transform(A, as[t]);
         b[t] = transform(B, bs[t]);
         z[t] = sub(a[t], b[t]);
     }
-    if (k == 1)
+    if (count == 1)
     { // Z = {O}: depth 0, n = (1, 0)
-        chosen = 0;
         return roundEnclosed(neg(radii), r.signedDistance, r.signedLower, r.signedUpper) &&
                roundTo(add(a[0].x, exactly(rA)), r.penetrationA.x) &&
                roundTo(a[0].y, r.penetrationA.y) &&
                roundTo(sub(b[0].x, exactly(rB)), r.penetrationB.x) &&
                roundTo(b[0].y, r.penetrationB.y);
     }
-    boost::container::small_vector<double, 16> lo(k), hi(k);
-    int best = 0;
-    double bestH = 0;
-    for (int e = 0; e < k; ++e)
-    {
-        const P2 d = sub(z[e + 1 == k ? 0 : e + 1], z[e]);
-        const V C = cross(z[e], d);
-        const V dd = div(mul(C, C), dot(d, d));
-        bounds(dd, lo[e], hi[e]);
-        if (!std::isfinite(lo[e]) || !std::isfinite(hi[e]))
-            return false;
-        if (e == 0 || dd.h < bestH)
-        {
-            best = e;
-            bestH = dd.h;
-        }
-    }
-    boost::container::small_vector<int, 16> near;
-    for (int e = 0; e < k; ++e)
-        if (lo[e] <= hi[best])
-            near.push_back(e);
-    chosen = near.size() == 1 ? best : ties.choose(near.data(), static_cast<int>(near.size()));
-    const int e = chosen, g = e + 1 == k ? 0 : e + 1;
-    const P2 d = sub(z[g], z[e]);
+    const P2 d = sub(z[1], z[0]);
     const V L = dot(d, d);
-    const V C = cross(z[e], d); // >= 0: O is inside or on the edge's left
+    const V C = cross(z[0], d); // >= 0: O is inside or on the edge's left
     V depth;
     if (isExact(C) && C.h == 0)
         depth = exactly(0);
@@ -952,8 +914,8 @@ bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const
         return false; // within its bound of 0 (touching): the GMP route
     if (!roundEnclosed(neg(add(depth, radii)), r.signedDistance, r.signedLower, r.signedUpper))
         return false;
-    const V t = div(neg(dot(z[e], d)), L);
-    const P2 wa = along(a[e], a[g], t), wb = along(b[e], b[g], t);
+    const V t = div(neg(dot(z[0], d)), L);
+    const P2 wa = along(a[0], a[1], t), wb = along(b[0], b[1], t);
     const V s = sqrtV(L), nx = d.y, ny = neg(d.x);
     return roundShifted(wa.x, rA, nx, s, r.penetrationA.x) &&
            roundShifted(wa.y, rA, ny, s, r.penetrationA.y) &&

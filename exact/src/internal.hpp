@@ -221,23 +221,13 @@ template <class Pr> Feature locate(int k, Pr& pr)
 bool filteredFinish(const Feature& f, const Shape& A, const Shape& B, const Point* as,
                     const Point* bs, Result& r, bool penetration = false);
 
-// The caller's exact choice among near-tied edges of filteredDepth(): edges[0..n) (edge e runs from
-// Z vertex e to e + 1), the one penetration.cpp's deepest() would choose (least squared distance,
-// then least outward-normal angle).
-class DepthTies
-{
-  public:
-    virtual int choose(const int* edges, int n) = 0;
-
-  protected:
-    ~DepthTies() = default;
-};
-// filter.cpp: overlapping cores, Z's k vertices (counterclockwise, as merge() made them) the
-// differences of input points as[t] of A and bs[t] of B: the signed distance, its enclosure and
-// the penetration pair of r, in double-double with error bounds; `chosen` the closest edge (0 when
-// k = 1). True when every rounding is decided (r's other fields untouched); false: the GMP route.
-bool filteredDepth(int k, const Shape& A, const Shape& B, const Point* as, const Point* bs,
-                   DepthTies& ties, int& chosen, Result& r);
+// filter.cpp: overlapping cores, the closest edge of Z chosen (count = 2: its two vertices, the
+// differences of input points as[t] of A and bs[t] of B, in Z's counterclockwise order) or Z a
+// single point (count = 1): the signed distance, its enclosure and the penetration pair of r, in
+// double-double with error bounds. True when every rounding is decided (r's other fields
+// untouched); false: the GMP route.
+bool filteredDepth(int count, const Shape& A, const Shape& B, const Point* as, const Point* bs,
+                   Result& r);
 
 // filter.cpp: max(0, dist(p, hull(B)) - B.radius), correctly rounded to nearest, for the located
 // feature f of Z = {p} - hull(B) (p in the world frame; bs: B's input points of the feature's Z

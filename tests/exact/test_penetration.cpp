@@ -152,8 +152,9 @@ Result checkSigned(const Shape& a, const Shape& b, bool withBruteForce, Counts* 
         CHECK(std::fabs(len + def.signedDistance) <= 8 * ulpOf(S));
         // Translating B by pA - pB brings the rounded shapes to contact: the exact signed distance
         // is 1-Lipschitz in B's translation, and B's translated position is off the exact one by
-        // at most 2 ulp(S') a coordinate (pA, pB, the subtraction, the addition to B's position),
-        // so |signed| <= 2 sqrt(2) ulp(S') after; bound 4 ulp(S').
+        // at most 2.5 ulp(S') a coordinate (pA and pB half an ulp(S) each, the subtraction ulp(S),
+        // the addition to B's position half an ulp(S')), so |signed| <= 2.5 sqrt(2) ulp(S') < 4
+        // ulp(S') after; bound 4 ulp(S').
         Shape moved = b;
         moved.px += pA.x - pB.x;
         moved.py += pA.y - pB.y;
@@ -462,7 +463,7 @@ TEST_CASE("penetration: bruteForceSigned fields")
     CHECK_THROWS_AS(exact::bruteForceSigned(Shape{}, square(0, 0, 1, 1)), std::invalid_argument);
 }
 
-TEST_CASE("penetration: the filter decides plain overlaps; the depth rational only when asked for")
+TEST_CASE("penetration: the filter decides plain overlaps, the depth rational only when asked for")
 {
     // The first case again under an inexact rotation (0.6, 0.8) of both shapes: the filter is to
     // decide it (no GMP), and with Options::squaredRational = false leave both rationals out.
