@@ -1,8 +1,8 @@
 // The signed distance (Options::signedDistance): when GJK ends with the origin in the Minkowski
 // difference Z = A - B (the shapes overlap), the penetration depth is the origin's distance to Z's
-// boundary, found by an expanding polygon (EPA) seeded by GJK's final simplex. The talk stops at
-// overlap ("the shapes overlap: distance 0"); this is the step after it, in its vocabulary:
-// simplex, support point, Minkowski difference, search direction. docs/gjk.md, "Signed distance".
+// boundary, found by an expanding polygon (EPA) seeded by GJK's final simplex. The talk's GJK
+// ends at overlap with distance 0; this is the step after it, in its vocabulary: simplex, support
+// point, Minkowski difference, search direction. docs/gjk.md, "Signed distance".
 //
 //   1. Seed.     GJK's final simplex: a triangle containing the origin (containment), or an edge
 //                or a vertex with the origin on it (a zero direction, or a final distance 0).
@@ -382,8 +382,7 @@ template <class T> double depthLowerFromPolygon(const DistanceInput<T>& in, cons
         if (!(c > 0))
             return -1;
         const BoundedVec e = {Wn.x - Wk.x, Wn.y - Wk.y};
-        const BoundedVec e0 = {e.x, e.y};
-        const double len = upperNorm(e0, exactly(1.0));
+        const double len = upperNorm(e, exactly(1.0)); // |e| rounded up
         least = std::min(least, down(c / len));
         Wk = Wn;
     }
