@@ -147,10 +147,10 @@ bool useFloat(const py::object& dtype, const py::handle& pointsA, const py::hand
 Result distanceFunction(const py::object& pointsA, const py::object& pointsB, double radiusA,
                         double radiusB, const py::object& positionA, const py::object& rotationA,
                         const py::object& positionB, const py::object& rotationB,
-                        const py::object& dtype, bool certify, bool correctlyRounded,
-                        bool isSigned, std::optional<gjk::SimplexCache> cache)
+                        const py::object& dtype, bool certify, bool correctlyRounded, bool isSigned,
+                        std::optional<gjk::SimplexCache> cache)
 {
-    const QueryArgs q{pointsA,   pointsB,   radiusA,          radiusB,  positionA, rotationA,
+    const QueryArgs q{pointsA,   pointsB,   radiusA, radiusB,          positionA, rotationA,
                       positionB, rotationB, certify, correctlyRounded, isSigned,  cache};
     if (isSigned && correctlyRounded)
         badArgument("signed", "not with correctly_rounded (the correctly rounded distance is the "

@@ -369,8 +369,8 @@ TEMPLATE_TEST_CASE("signed distance: a point inside a polygon", "[gjk][expand]",
     }
 }
 
-TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth",
-                   "[gjk][expand]", float, double)
+TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth", "[gjk][expand]",
+                   float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(51);
@@ -440,8 +440,8 @@ TEMPLATE_TEST_CASE("signed distance: the SIMD batch runs the scalar query", "[gj
     std::vector<SimplexCache> caches(inputs.size());
     std::vector<DistanceOutput<T>> outputs(inputs.size());
     BatchStats stats;
-    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs,
-                       signedOptions(), BatchIsa::Best, &stats);
+    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs, signedOptions(),
+                       BatchIsa::Best, &stats);
     int negative = 0;
     for (std::size_t i = 0; i < inputs.size(); ++i)
     {

@@ -47,8 +47,8 @@
 #pragma once
 
 #include "gjk2d/certify.hpp"
-#include "gjk2d/distance.hpp"
 #include "gjk2d/detail/macros.hpp"
+#include "gjk2d/distance.hpp"
 #include "gjk2d/math.hpp"
 #include "gjk2d/simplex.hpp"
 #include "gjk2d/support.hpp"
@@ -303,8 +303,7 @@ GJK_INLINE void expandPolygon(Shape& A, Shape& B, ExpandPolygon<T>& P, int limit
 // and the core points from the barycentric weights of the origin's projection on the edge.
 // `weights` receives the edge as a two-vertex simplex with those weights (the certified interval's
 // point of Z).
-template <class T>
-Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
+template <class T> Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
 {
     const SimplexVertex<T>& v1 = P.v[k];
     const SimplexVertex<T>& v2 = P.v[P.next(k)];
@@ -339,7 +338,8 @@ Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
     return a;
 }
 
-// --- The certified interval of a signed answer ----------------------------------------------------
+// --- The certified interval of a signed answer
+// ----------------------------------------------------
 
 namespace certify
 {
@@ -364,7 +364,8 @@ template <class T> double signedLowerCore(const DistanceInput<T>& in, Vec2<T> no
 // Lower end of the depth from the polygon's index pairs: the least distance from the origin to
 // the lines of its edges, with every vertex W = xfA a - xfB b recomputed with error bounds, when
 // every orientation cross(W_k, W_k+1) is certainly positive; else -1 (not certified).
-template <class T> double depthLowerFromPolygon(const DistanceInput<T>& in, const ExpandPolygon<T>& P)
+template <class T>
+double depthLowerFromPolygon(const DistanceInput<T>& in, const ExpandPolygon<T>& P)
 {
     auto world = [&](int k)
     {
@@ -409,17 +410,17 @@ inline void setSignedInterval(double lowerCore, double upperCore, double rA, dou
     }
 }
 
-// --- The signed answer ----------------------------------------------------------------------------
+// --- The signed answer
+// ----------------------------------------------------------------------------
 
 // Replaces `out` (the unsigned answer of a query that found overlap or rounded overlap) with the
 // signed one. A and B: the query's shapes in its compute frame; `world` and `scale` its map to
 // world (toWorldFrame). Returns whether the expansion left the safe range (a support point beyond
 // Tolerances<T>::maxCoordinate, a support scan's overflow, or a non-finite answer).
 template <class T, bool Scaled, class Shape>
-[[gnu::noinline]] bool signedAnswer(const DistanceInput<T>& input, const Options& options,
-                                    Shape& A, Shape& B, const Transform<T>& world, int scale,
-                                    StopReason stop, const Simplex<T>& simplex, int edgeBase,
-                                    DistanceOutput<T>& out)
+[[gnu::noinline]] bool signedAnswer(const DistanceInput<T>& input, const Options& options, Shape& A,
+                                    Shape& B, const Transform<T>& world, int scale, StopReason stop,
+                                    const Simplex<T>& simplex, int edgeBase, DistanceOutput<T>& out)
 {
     const T rA = options.useRadii ? input.proxyA.radius : T(0);
     const T rB = options.useRadii ? input.proxyB.radius : T(0);
