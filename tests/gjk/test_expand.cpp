@@ -16,6 +16,7 @@
 #include <limits>
 #include <random>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 using namespace gjk;
@@ -368,8 +369,8 @@ TEMPLATE_TEST_CASE("signed distance: a point inside a polygon", "[gjk][expand]",
     }
 }
 
-TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth",
-                   "[gjk][expand]", float, double)
+TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth", "[gjk][expand]",
+                   float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(51);
@@ -439,8 +440,8 @@ TEMPLATE_TEST_CASE("signed distance: the SIMD batch runs the scalar query", "[gj
     std::vector<SimplexCache> caches(inputs.size());
     std::vector<DistanceOutput<T>> outputs(inputs.size());
     BatchStats stats;
-    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs,
-                       signedOptions(), BatchIsa::Best, &stats);
+    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs, signedOptions(),
+                       BatchIsa::Best, &stats);
     int negative = 0;
     for (std::size_t i = 0; i < inputs.size(); ++i)
     {
@@ -451,4 +452,30 @@ TEMPLATE_TEST_CASE("signed distance: the SIMD batch runs the scalar query", "[gj
     }
     CHECK(stats.laneQueries == 0);
     CHECK(negative > 0);
+}
+
+TEMPLATE_TEST_CASE("signed distance: tiny and huge shapes run rescaled, the depth scales exactly",
+                   "[gjk][expand][range]", float, double)
+{
+    using T = TestType;
+    // The two squares of the first case scaled by 2^k, beyond Tolerances<T>'s safe range (double:
+    // 2^-700 and 2^520, outside [2^-484, ~2^509]; float: 2^-60 and 2^70, outside
+    // [2^-51, ~2^61]). Scaling by a power of two is exact, so the depth is 0.5 * 2^k and the
+    // query, rescaled, answers it to the same relative accuracy as at scale 1.
+    const bool isDouble = std::is_same_v<T, double>;
+    for (const int k : {isDouble ? -700 : -60, isDouble ? 520 : 70})
+    {
+        INFO("k = " << k);
+        const T s2 = std::ldexp(T(1), k);
+        Scene<T> s;
+        s.a = {{0, 0}, {2 * s2, 0}, {2 * s2, 2 * s2}, {0, 2 * s2}};
+        s.b = s.a;
+        s.xfB.p = {T(1.5) * s2, T(0.5) * s2};
+        const auto out = signedQuery(s);
+        CHECK(out.rescaled);
+        CHECK(!out.outOfRange);
+        CHECK(double(out.distance) / double(s2) == within(-0.5, tol<T>()));
+        CHECK(out.normal.x == within(1.0, tol<T>()));
+        CHECK(out.expand != ExpandStop::None);
+    }
 }

@@ -136,9 +136,12 @@ double metricAbsDistance(const CaseMetrics& m)
 //   |d| + 7.5 (rA + rB)             adding the radii; cores apart (radii overlapping): the
 //                                   distance's terms with a core distance below rA + rB
 constexpr BoundTerm kDepthTerms[] = {
-    {4, "A", metricA},          {43, "B", metricB},
-    {10.2, "D", metricD},       {1.5, "B~", metricBMapped},
-    {14, "W", metricW},         {10.5, "|d|", metricAbsDistance},
+    {4, "A", metricA},
+    {43, "B", metricB},
+    {10.2, "D", metricD},
+    {1.5, "B~", metricBMapped},
+    {14, "W", metricW},
+    {10.5, "|d|", metricAbsDistance},
     {7.5, "(rA + rB)", metricRadii},
 };
 } // namespace
@@ -195,12 +198,12 @@ double depthBound(const VariantInfo& variant, const CaseMetrics& m)
 
 std::string depthBoundFormula(const VariantInfo& variant)
 {
-    std::string f = "u (" + termsText(kDepthTerms) +
-                    ") + the type's smallest subnormal, d the exact signed distance, A's local frame";
+    std::string f =
+        "u (" + termsText(kDepthTerms) +
+        ") + the type's smallest subnormal, d the exact signed distance, A's local frame";
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         f += fmt::format(" + {} u {}", kDualityGapTerm.coefficient, kDualityGapTerm.symbol);
     return f + " (docs/error-bound.md, \"Penetration depth\")";
 }
 
 } // namespace gjkval
-
