@@ -299,6 +299,36 @@ GJK_INLINE void expandPolygon(Shape& A, Shape& B, ExpandPolygon<T>& P, int limit
     }
 }
 
+// The weight of the second vertex in the origin's projection on the line of edge k (unclamped):
+// in [0, 1] when the foot lies on the edge. dot(-v1, e12) / |e12|^2, with readEdge's scaled e in
+// numerator and denominator (edgeOfSafeSize's power of two cancels; a tiny edge's own square would
+// underflow).
+template <class T> T footWeight(const ExpandPolygon<T>& P, int k)
+{
+    const Vec2<T> v1 = P.v[k].w;
+    const Vec2<T> e12 = P.v[P.next(k)].w - v1;
+    const Vec2<T> e = edgeOfSafeSize(e12);
+    const T ee = dot(e, e12);
+    return ee > T(0) ? dot(-v1, e) / ee : T(0);
+}
+
+// The edge the answer is read from: the closest edge k, or, when the origin's foot on k's line
+// falls off the edge, the neighbour on that side if the foot on its line falls on it. Two nearly
+// collinear edges have nearly equal line distances, so rounding may make either the closest while
+// the foot lies on only one of them, up to the length of the other away (search: a touching
+// edge's mutation, depth 5.3e-12, with the foot 5e-12 beyond the chosen edge's end, which read the
+// shared vertex as the pair: |pA - pB| = 7.3e-12). The depth changes by the two lines' difference
+// only; the pair then lies on its edge, |pA - pB| = depth.
+template <class T> int answerEdge(const ExpandPolygon<T>& P, int k)
+{
+    const T t = footWeight(P, k);
+    const int j = t < T(0) ? (k == 0 ? P.count - 1 : k - 1) : t > T(1) ? P.next(k) : k;
+    if (j == k)
+        return k;
+    const T tj = footWeight(P, j);
+    return tj >= T(0) && tj <= T(1) ? j : k;
+}
+
 // The penetration answer in the compute frame from the closest edge k: depth, unit outward normal,
 // and the core points from the barycentric weights of the origin's projection on the edge.
 // `weights` receives the edge as a two-vertex simplex with those weights (the certified interval's
@@ -307,14 +337,9 @@ template <class T> Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<
 {
     const SimplexVertex<T>& v1 = P.v[k];
     const SimplexVertex<T>& v2 = P.v[P.next(k)];
-    const Vec2<T> e12 = v2.w - v1.w;
-    const Vec2<T> e = edgeOfSafeSize(e12); // e12 times a power of two
+    const Vec2<T> e = edgeOfSafeSize(v2.w - v1.w); // the edge times a power of two
     const T len = length(e);
-    // The projection's weight dot(-v1, e12) / |e12|^2, with the scaled e in both numerator and
-    // denominator (the power of two cancels; a tiny edge's own square would underflow).
-    const T ee = dot(e, e12);
-    T t = ee > T(0) ? dot(-v1.w, e) / ee : T(0);
-    t = std::clamp(t, T(0), T(1));
+    const T t = std::clamp(footWeight(P, k), T(0), T(1));
     Answer<T> a;
     if (!(len > T(0))) // every edge of length 0 (the polygon collapsed to a point): depth 0
     {
@@ -458,6 +483,7 @@ template <class T, bool Scaled, class Shape>
     {
         expandPolygon<T>(A, B, P, expandIterationLimit(input.proxyA.count, input.proxyB.count),
                          end);
+        end.edge = answerEdge(P, end.edge);
         a = readEdge(P, end.edge, foot);
         if (!(a.distance > T(0)) && end.stop != ExpandStop::IterationLimit)
             end.stop = ExpandStop::Touching;
