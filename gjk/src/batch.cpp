@@ -97,8 +97,9 @@ constexpr int kMaxLanePoints = 64;
 
 // Whether the lanes run this pair with these options (docs/gjk.md, "Batches in SIMD lanes"):
 // the default search direction and stopping rule, A's local frame, no signed distance, the linear
-// scan (a binary search on small shapes is the linear scan too: usesBinarySearch). Inputs that break the input
-// contract (meetsInputContract, asserted by distance()) run the scalar query, which asserts.
+// scan (a binary search on small shapes is the linear scan too: usesBinarySearch). Inputs that
+// break the input contract (meetsInputContract, asserted by distance()) run the scalar query, which
+// asserts.
 template <class T> bool runsInLanes(const DistanceInput<T>& in, const Options& options)
 {
     if (options.direction != SearchDirection::EdgePerpendicular ||

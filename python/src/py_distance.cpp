@@ -56,14 +56,16 @@ struct Result
     double distance;
     std::pair<double, double> pointA, pointB, normal;
     int iterations;
-    std::string stop, path;
-    std::optional<std::pair<double, double>> interval; // certify only
+    std::string stop, path, expand;
+    // certify, or signed on overlap (gjk::DistanceOutput's certified interval)
+    std::optional<std::pair<double, double>> interval;
     bool outOfRange, rescaled;
     gjk::SimplexCache cache;
 };
 
 template <class T>
-Result resultOf(const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& cache, bool certify)
+Result resultOf(const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& cache, bool certify,
+                bool isSigned)
 {
     Result r{double(o.distance),
              {double(o.pointA.x), double(o.pointA.y)},
@@ -72,11 +74,12 @@ Result resultOf(const gjk::DistanceOutput<T>& o, const gjk::SimplexCache& cache,
              o.iterations,
              gjk::stopReasonName(o.stop),
              gjk::correctPathName(o.path),
+             gjk::expandStopName(o.expand),
              std::nullopt,
              o.outOfRange,
              o.rescaled,
              cache};
-    if (certify)
+    if (certify || (isSigned && o.certified))
         r.interval = std::pair{o.lower, o.upper};
     return r;
 }
@@ -99,7 +102,7 @@ struct QueryArgs
     py::handle pointsA, pointsB;
     double radiusA, radiusB;
     py::handle positionA, rotationA, positionB, rotationB;
-    bool certify, correctlyRounded;
+    bool certify, correctlyRounded, isSigned;
     std::optional<gjk::SimplexCache> cache;
 };
 
@@ -111,13 +114,14 @@ template <class T> Result query(const QueryArgs& q)
     gjk::Options options;
     options.certify = q.certify;
     options.correctlyRounded = q.correctlyRounded;
+    options.signedDistance = q.isSigned;
     gjk::SimplexCache cache = q.cache.value_or(gjk::SimplexCache{});
     checkCache(cache, in.proxyA.count, in.proxyB.count);
     py::gil_scoped_release release;
     gjk::DistanceOutput<T> out = gjk::distance(in, cache, options);
     if constexpr (std::is_same_v<T, double>)
         exact::completeCorrectlyRounded(in, options, out); // only when out.path == NeedsExact
-    return resultOf(out, cache, q.certify);
+    return resultOf(out, cache, q.certify, q.isSigned);
 }
 
 // float32 or float64: dtype if given, else the points' (float32 only when both are float32).
@@ -143,11 +147,14 @@ bool useFloat(const py::object& dtype, const py::handle& pointsA, const py::hand
 Result distanceFunction(const py::object& pointsA, const py::object& pointsB, double radiusA,
                         double radiusB, const py::object& positionA, const py::object& rotationA,
                         const py::object& positionB, const py::object& rotationB,
-                        const py::object& dtype, bool certify, bool correctlyRounded,
+                        const py::object& dtype, bool certify, bool correctlyRounded, bool isSigned,
                         std::optional<gjk::SimplexCache> cache)
 {
     const QueryArgs q{pointsA,   pointsB,   radiusA, radiusB,          positionA, rotationA,
-                      positionB, rotationB, certify, correctlyRounded, cache};
+                      positionB, rotationB, certify, correctlyRounded, isSigned,  cache};
+    if (isSigned && correctlyRounded)
+        badArgument("signed", "not with correctly_rounded (the correctly rounded distance is the "
+                              "unsigned one)");
     if (useFloat(dtype, pointsA, pointsB))
     {
         if (correctlyRounded)
@@ -177,6 +184,7 @@ void bindResult(py::module_& m)
         .def_readonly("iterations", &Result::iterations)
         .def_readonly("stop", &Result::stop)
         .def_readonly("path", &Result::path)
+        .def_readonly("expand", &Result::expand)
         .def_readonly("interval", &Result::interval)
         .def_readonly("out_of_range", &Result::outOfRange)
         .def_readonly("rescaled", &Result::rescaled)
@@ -201,10 +209,11 @@ void bindDistance(py::module_& m)
           "radius_a"_a = 0.0, "radius_b"_a = 0.0, "position_a"_a = py::make_tuple(0.0, 0.0),
           "rotation_a"_a = py::make_tuple(1.0, 0.0), "position_b"_a = py::make_tuple(0.0, 0.0),
           "rotation_b"_a = py::make_tuple(1.0, 0.0), "dtype"_a = py::none(), "certify"_a = false,
-          "correctly_rounded"_a = false, "cache"_a = py::none(),
+          "correctly_rounded"_a = false, "signed"_a = false, "cache"_a = py::none(),
           "The distance between two convex shapes (the hulls of (n, 2) point arrays, grown by "
           "their radii, placed by position and rotation (c, s)): gjk::distance<float> for "
-          "float32 points, <double> otherwise.");
+          "float32 points, <double> otherwise. signed=True: minus the penetration depth on "
+          "overlap (gjk::Options::signedDistance).");
     bindBatch(m);
 }
 

@@ -76,6 +76,42 @@ def test_radii_rotation_certify_and_correct_rounding():
     assert r.path != "plain"
 
 
+def test_signed_distance_on_overlap_separation_and_touching():
+    square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    # B = the unit square moved by (0.75, 0.5): they overlap by 0.25 along x and 0.5 along y, so
+    # the depth is 0.25 and B leaves A along +x: pA on A's side x = 1, pB on B's side x = 0.75.
+    r = gjk2d.distance(square, square, position_b=(0.75, 0.5), signed=True)
+    assert r.distance == pytest.approx(-0.25, abs=1e-15)
+    assert r.normal == pytest.approx((1.0, 0.0), abs=1e-15)
+    assert r.point_a[0] == pytest.approx(1.0, abs=1e-15)
+    assert r.point_b[0] == pytest.approx(0.75, abs=1e-15)
+    assert r.point_a[1] == pytest.approx(r.point_b[1], abs=1e-15)
+    assert r.expand in ("gap-closed", "repeated-support")
+    lower, upper = r.interval
+    assert lower <= -0.25 <= upper
+    # Without signed: the overlap is distance 0, no expansion.
+    plain = gjk2d.distance(square, square, position_b=(0.75, 0.5))
+    assert plain.distance == 0.0 and plain.expand == "none" and plain.interval is None
+    # Capsules: parallel cores 0.75 apart, radii 0.5 each: 0.75 - 1 = -0.25, B leaves along +y,
+    # pA on A's rounded surface y = 0.5, pB on B's y = 0.75 - 0.5 = 0.25.
+    segment = np.array([[-1.0, 0.0], [1.0, 0.0]])
+    c = gjk2d.distance(segment, segment, radius_a=0.5, radius_b=0.5, position_b=(0.5, 0.75),
+                       signed=True, dtype="float32")
+    assert c.distance == pytest.approx(-0.25, abs=1e-6)
+    assert c.normal == pytest.approx((0.0, 1.0), abs=1e-6)
+    assert c.point_a[1] == pytest.approx(0.5, abs=1e-6)
+    assert c.point_b[1] == pytest.approx(0.25, abs=1e-6)
+    assert c.expand == "none"
+    # Touching edge to edge (B = the square moved by exactly 1): depth 0.
+    t = gjk2d.distance(square, square, position_b=(1.0, 0.0), signed=True)
+    assert t.distance == 0.0 and t.expand == "touching"
+    # Separated: the very bits of the unsigned query.
+    s = gjk2d.distance(square, square, position_b=(3.0, 0.5), signed=True)
+    u = gjk2d.distance(square, square, position_b=(3.0, 0.5))
+    assert bits(s.distance) == bits(u.distance) == bits(2.0)
+    assert s.point_a == u.point_a and s.point_b == u.point_b and s.expand == "none"
+
+
 def test_a_warm_query_gives_the_cold_bits_in_fewer_iterations():
     rng = np.random.default_rng(5)
     a, b = rng.normal(size=(12, 2)), rng.normal(size=(9, 2)) + [6, 1]
@@ -117,6 +153,7 @@ def test_dtype_chooses_the_scalar_type():
         (dict(position_b=(1, 2, 3)), "position_b"),
         (dict(dtype="int32"), "dtype"),
         (dict(dtype="float32", correctly_rounded=True), "correctly_rounded"),
+        (dict(signed=True, correctly_rounded=True), "signed"),
     ],
 )
 def test_bad_input_raises_a_value_error_naming_the_argument(kwargs, argument):

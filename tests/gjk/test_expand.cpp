@@ -16,6 +16,7 @@
 #include <limits>
 #include <random>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 using namespace gjk;
@@ -368,8 +369,8 @@ TEMPLATE_TEST_CASE("signed distance: a point inside a polygon", "[gjk][expand]",
     }
 }
 
-TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth",
-                   "[gjk][expand]", float, double)
+TEMPLATE_TEST_CASE("signed distance: random overlaps against a brute-force depth", "[gjk][expand]",
+                   float, double)
 {
     using T = TestType;
     std::mt19937_64 rng(51);
@@ -439,8 +440,8 @@ TEMPLATE_TEST_CASE("signed distance: the SIMD batch runs the scalar query", "[gj
     std::vector<SimplexCache> caches(inputs.size());
     std::vector<DistanceOutput<T>> outputs(inputs.size());
     BatchStats stats;
-    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs,
-                       signedOptions(), BatchIsa::Best, &stats);
+    distanceBatchLanes(std::span<const DistanceInput<T>>(inputs), caches, outputs, signedOptions(),
+                       BatchIsa::Best, &stats);
     int negative = 0;
     for (std::size_t i = 0; i < inputs.size(); ++i)
     {
@@ -451,4 +452,67 @@ TEMPLATE_TEST_CASE("signed distance: the SIMD batch runs the scalar query", "[gj
     }
     CHECK(stats.laneQueries == 0);
     CHECK(negative > 0);
+}
+
+TEMPLATE_TEST_CASE("signed distance: tiny and huge shapes run rescaled, the depth scales exactly",
+                   "[gjk][expand][range]", float, double)
+{
+    using T = TestType;
+    // The two squares of the first case scaled by 2^k, beyond Tolerances<T>'s safe range (double:
+    // 2^-700 and 2^520, outside [2^-484, ~2^509]; float: 2^-60 and 2^70, outside
+    // [2^-51, ~2^61]). Scaling by a power of two is exact, so the depth is 0.5 * 2^k and the
+    // query, rescaled, answers it to the same relative accuracy as at scale 1.
+    const bool isDouble = std::is_same_v<T, double>;
+    for (const int k : {isDouble ? -700 : -60, isDouble ? 520 : 70})
+    {
+        INFO("k = " << k);
+        const T s2 = std::ldexp(T(1), k);
+        Scene<T> s;
+        s.a = {{0, 0}, {2 * s2, 0}, {2 * s2, 2 * s2}, {0, 2 * s2}};
+        s.b = s.a;
+        s.xfB.p = {T(1.5) * s2, T(0.5) * s2};
+        const auto out = signedQuery(s);
+        CHECK(out.rescaled);
+        CHECK(!out.outOfRange);
+        CHECK(double(out.distance) / double(s2) == within(-0.5, tol<T>()));
+        CHECK(out.normal.x == within(1.0, tol<T>()));
+        CHECK(out.expand != ExpandStop::None);
+    }
+}
+
+TEMPLATE_TEST_CASE("signed distance: the pair lies on its edge when two edges are nearly collinear",
+                   "[gjk][expand][regression]", float, double)
+{
+    using T = TestType;
+    // gjk-validate search (double-signed, from hard/scale-sweep/98-touching-edge-x1, mutated:
+    // search/12216): B holds two of A's vertices, so Z has two nearly collinear edges meeting at
+    // a vertex 7.3e-12 from the origin, both lines 5.26e-12 from it. Rounding made the one whose
+    // foot lies 5e-12 beyond its end the closest (the line distances differ by 3e-18), and the
+    // clamped foot read the shared vertex as the pair: |pA - pB| = 7.3e-12 for a depth of
+    // 5.26e-12 (witness gap 2e-12, 200 times the witness bound). The answer is now read from the
+    // neighbour on whose line the foot falls (answerEdge). Exact depth (exact side, explain):
+    // 5.2567428407330149e-12; the depth's error is unchanged (4.8e-17).
+    Scene<T> s;
+    s.a = {{T(0.3702469970423971), T(-0.3357146361559567)},
+           {T(0.3183393218407997), T(0.38661755848642726)},
+           {T(-0.3277301071516858), T(0.393985217258568)},
+           {T(-0.1572474375739205), T(-0.4812110282292808)}};
+    s.b = {{T(0.3183393218407997), T(0.386617558486428)},
+           {T(0.3702469970423971), T(-0.3357146361559567)},
+           {T(0.8022419210229663), T(-0.358465950755043)},
+           {T(0.3183393218407997), T(0.386617558486428)}};
+    s.xfA = {{T(-0.6488079320650453), T(0.7331423557741962)},
+             {T(-0.19408624808338204), T(0.9809844689417442)}};
+    s.xfB = {{T(-0.6488079320650506), T(0.7331423557741943)},
+             {T(-0.19408624806911381), T(0.9809844689445671)}};
+    const auto out = signedQuery(s);
+    // |pA - pB| = -distance to the answer's own rounding (a few u times the points' size 1.2).
+    CHECK(double(length(out.pointA - out.pointB)) ==
+          within(-double(out.distance), 16 * Tolerances<T>::unitRoundoff));
+    if constexpr (std::is_same_v<T, double>)
+    {
+        CHECK(out.distance == within(-5.2567428407330149e-12, 1e-15));
+        CHECK(out.lower <= -5.2567428407330149e-12);
+        CHECK(out.upper >= -5.2567428407330149e-12);
+    }
 }

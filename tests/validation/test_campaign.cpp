@@ -827,9 +827,10 @@ TEST_CASE("penetration: report.json's block, the terminal's line, report.md and 
     CHECK(camp.exitCode == kExitPass);
     const std::string summary = terminalSummary(r);
     CHECK_THAT(summary,
-               Catch::Contains(fmt::format(
-                   "    penetration: pass: {} overlapping case(s), 0 contract violation(s)",
-                   p["cases"].get<std::uint64_t>())));
+               Catch::Contains(fmt::format("\n    penetration: pass: {} overlapping, 0 broke, 0 "
+                                           "outside, worst {:.3g}\n",
+                                           p["cases"].get<std::uint64_t>(),
+                                           p["bound_ratio"]["max"].get<double>())));
     CHECK_THAT(renderMarkdown(r), Catch::Contains("### Penetration") &&
                                       Catch::Contains("- **double-signed**: penetration: pass"));
 }

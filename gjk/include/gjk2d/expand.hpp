@@ -1,8 +1,8 @@
 // The signed distance (Options::signedDistance): when GJK ends with the origin in the Minkowski
 // difference Z = A - B (the shapes overlap), the penetration depth is the origin's distance to Z's
-// boundary, found by an expanding polygon (EPA) seeded by GJK's final simplex. The talk stops at
-// overlap ("the shapes overlap: distance 0"); this is the step after it, in its vocabulary:
-// simplex, support point, Minkowski difference, search direction. docs/gjk.md, "Signed distance".
+// boundary, found by an expanding polygon (EPA) seeded by GJK's final simplex. The talk's GJK
+// ends at overlap with distance 0; this is the step after it, in its vocabulary: simplex, support
+// point, Minkowski difference, search direction. docs/gjk.md, "Signed distance".
 //
 //   1. Seed.     GJK's final simplex: a triangle containing the origin (containment), or an edge
 //                or a vertex with the origin on it (a zero direction, or a final distance 0).
@@ -47,8 +47,8 @@
 #pragma once
 
 #include "gjk2d/certify.hpp"
-#include "gjk2d/distance.hpp"
 #include "gjk2d/detail/macros.hpp"
+#include "gjk2d/distance.hpp"
 #include "gjk2d/math.hpp"
 #include "gjk2d/simplex.hpp"
 #include "gjk2d/support.hpp"
@@ -299,23 +299,47 @@ GJK_INLINE void expandPolygon(Shape& A, Shape& B, ExpandPolygon<T>& P, int limit
     }
 }
 
+// The weight of the second vertex in the origin's projection on the line of edge k (unclamped):
+// in [0, 1] when the foot lies on the edge. dot(-v1, e12) / |e12|^2, with readEdge's scaled e in
+// numerator and denominator (edgeOfSafeSize's power of two cancels; a tiny edge's own square would
+// underflow).
+template <class T> T footWeight(const ExpandPolygon<T>& P, int k)
+{
+    const Vec2<T> v1 = P.v[k].w;
+    const Vec2<T> e12 = P.v[P.next(k)].w - v1;
+    const Vec2<T> e = edgeOfSafeSize(e12);
+    const T ee = dot(e, e12);
+    return ee > T(0) ? dot(-v1, e) / ee : T(0);
+}
+
+// The edge the answer is read from: the closest edge k, or, when the origin's foot on k's line
+// falls off the edge, the neighbour on that side if the foot on its line falls on it. Two nearly
+// collinear edges have nearly equal line distances, so rounding may make either the closest while
+// the foot lies on only one of them, up to the length of the other away (search: a touching
+// edge's mutation, depth 5.3e-12, with the foot 5e-12 beyond the chosen edge's end, which read the
+// shared vertex as the pair: |pA - pB| = 7.3e-12). The depth changes by the two lines' difference
+// only; the pair then lies on its edge, |pA - pB| = depth.
+template <class T> int answerEdge(const ExpandPolygon<T>& P, int k)
+{
+    const T t = footWeight(P, k);
+    const int j = t < T(0) ? (k == 0 ? P.count - 1 : k - 1) : t > T(1) ? P.next(k) : k;
+    if (j == k)
+        return k;
+    const T tj = footWeight(P, j);
+    return tj >= T(0) && tj <= T(1) ? j : k;
+}
+
 // The penetration answer in the compute frame from the closest edge k: depth, unit outward normal,
 // and the core points from the barycentric weights of the origin's projection on the edge.
 // `weights` receives the edge as a two-vertex simplex with those weights (the certified interval's
 // point of Z).
-template <class T>
-Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
+template <class T> Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
 {
     const SimplexVertex<T>& v1 = P.v[k];
     const SimplexVertex<T>& v2 = P.v[P.next(k)];
-    const Vec2<T> e12 = v2.w - v1.w;
-    const Vec2<T> e = edgeOfSafeSize(e12); // e12 times a power of two
+    const Vec2<T> e = edgeOfSafeSize(v2.w - v1.w); // the edge times a power of two
     const T len = length(e);
-    // The projection's weight dot(-v1, e12) / |e12|^2, with the scaled e in both numerator and
-    // denominator (the power of two cancels; a tiny edge's own square would underflow).
-    const T ee = dot(e, e12);
-    T t = ee > T(0) ? dot(-v1.w, e) / ee : T(0);
-    t = std::clamp(t, T(0), T(1));
+    const T t = std::clamp(footWeight(P, k), T(0), T(1));
     Answer<T> a;
     if (!(len > T(0))) // every edge of length 0 (the polygon collapsed to a point): depth 0
     {
@@ -339,7 +363,8 @@ Answer<T> readEdge(const ExpandPolygon<T>& P, int k, Simplex<T>& weights)
     return a;
 }
 
-// --- The certified interval of a signed answer ----------------------------------------------------
+// --- The certified interval of a signed answer
+// ----------------------------------------------------
 
 namespace certify
 {
@@ -364,7 +389,8 @@ template <class T> double signedLowerCore(const DistanceInput<T>& in, Vec2<T> no
 // Lower end of the depth from the polygon's index pairs: the least distance from the origin to
 // the lines of its edges, with every vertex W = xfA a - xfB b recomputed with error bounds, when
 // every orientation cross(W_k, W_k+1) is certainly positive; else -1 (not certified).
-template <class T> double depthLowerFromPolygon(const DistanceInput<T>& in, const ExpandPolygon<T>& P)
+template <class T>
+double depthLowerFromPolygon(const DistanceInput<T>& in, const ExpandPolygon<T>& P)
 {
     auto world = [&](int k)
     {
@@ -382,8 +408,7 @@ template <class T> double depthLowerFromPolygon(const DistanceInput<T>& in, cons
         if (!(c > 0))
             return -1;
         const BoundedVec e = {Wn.x - Wk.x, Wn.y - Wk.y};
-        const BoundedVec e0 = {e.x, e.y};
-        const double len = upperNorm(e0, exactly(1.0));
+        const double len = upperNorm(e, exactly(1.0)); // |e| rounded up
         least = std::min(least, down(c / len));
         Wk = Wn;
     }
@@ -410,17 +435,17 @@ inline void setSignedInterval(double lowerCore, double upperCore, double rA, dou
     }
 }
 
-// --- The signed answer ----------------------------------------------------------------------------
+// --- The signed answer
+// ----------------------------------------------------------------------------
 
 // Replaces `out` (the unsigned answer of a query that found overlap or rounded overlap) with the
 // signed one. A and B: the query's shapes in its compute frame; `world` and `scale` its map to
 // world (toWorldFrame). Returns whether the expansion left the safe range (a support point beyond
 // Tolerances<T>::maxCoordinate, a support scan's overflow, or a non-finite answer).
 template <class T, bool Scaled, class Shape>
-[[gnu::noinline]] bool signedAnswer(const DistanceInput<T>& input, const Options& options,
-                                    Shape& A, Shape& B, const Transform<T>& world, int scale,
-                                    StopReason stop, const Simplex<T>& simplex, int edgeBase,
-                                    DistanceOutput<T>& out)
+[[gnu::noinline]] bool signedAnswer(const DistanceInput<T>& input, const Options& options, Shape& A,
+                                    Shape& B, const Transform<T>& world, int scale, StopReason stop,
+                                    const Simplex<T>& simplex, int edgeBase, DistanceOutput<T>& out)
 {
     const T rA = options.useRadii ? input.proxyA.radius : T(0);
     const T rB = options.useRadii ? input.proxyB.radius : T(0);
@@ -458,6 +483,7 @@ template <class T, bool Scaled, class Shape>
     {
         expandPolygon<T>(A, B, P, expandIterationLimit(input.proxyA.count, input.proxyB.count),
                          end);
+        end.edge = answerEdge(P, end.edge);
         a = readEdge(P, end.edge, foot);
         if (!(a.distance > T(0)) && end.stop != ExpandStop::IterationLimit)
             end.stop = ExpandStop::Touching;

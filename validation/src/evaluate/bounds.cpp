@@ -132,13 +132,20 @@ double metricAbsDistance(const CaseMetrics& m)
 //   3.5 W + 3 |d|                   the edge distance cross(v, e) / |e|
 //   7 W + 4 |d|                     GapClosed: Tolerances::expandGap = 4u of the support value,
 //                                   and the rounding of the gap dot(n, w - v) itself
+//   2 |d|                           the answer read from a nearly collinear neighbour edge (three
+//                                   edge distances' rounding on that side, see the doc)
 //   2.5 |d|                         back to world lengths: times |qA|
 //   |d| + 7.5 (rA + rB)             adding the radii; cores apart (radii overlapping): the
 //                                   distance's terms with a core distance below rA + rB
+// Each coefficient is the larger of the answer's two sides (too deep, too shallow): W 14 and |d|
+// 12.5 (docs/error-bound.md, "Penetration depth").
 constexpr BoundTerm kDepthTerms[] = {
-    {4, "A", metricA},          {43, "B", metricB},
-    {10.2, "D", metricD},       {1.5, "B~", metricBMapped},
-    {14, "W", metricW},         {10.5, "|d|", metricAbsDistance},
+    {4, "A", metricA},
+    {43, "B", metricB},
+    {10.2, "D", metricD},
+    {1.5, "B~", metricBMapped},
+    {14, "W", metricW},
+    {12.5, "|d|", metricAbsDistance},
     {7.5, "(rA + rB)", metricRadii},
 };
 } // namespace
@@ -195,12 +202,12 @@ double depthBound(const VariantInfo& variant, const CaseMetrics& m)
 
 std::string depthBoundFormula(const VariantInfo& variant)
 {
-    std::string f = "u (" + termsText(kDepthTerms) +
-                    ") + the type's smallest subnormal, d the exact signed distance, A's local frame";
+    std::string f =
+        "u (" + termsText(kDepthTerms) +
+        ") + the type's smallest subnormal, d the exact signed distance, A's local frame";
     if (variant.options.stopping == gjk::StoppingRule::DualityGap)
         f += fmt::format(" + {} u {}", kDualityGapTerm.coefficient, kDualityGapTerm.symbol);
     return f + " (docs/error-bound.md, \"Penetration depth\")";
 }
 
 } // namespace gjkval
-

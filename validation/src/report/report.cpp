@@ -279,7 +279,19 @@ std::string largestText(const PenetrationTotals::Largest& l)
     return std::isnan(l.value) ? "-" : fmt::format("{:.3g} ({})", l.value, l.caseName);
 }
 
-// The penetration line of a variant that has the block, verdict first (the terminal and report.md).
+// The terminal's one line under a variant that has the block, verdict first, at most 100 wide: the
+// overlapping cases, the answers that broke the contract, those outside gjk2d's depth bound keeping
+// it, the worst depth error / depth bound (the table's legend says so).
+std::string penetrationLine(const PenetrationTotals& t, bool judgedVariant, bool ownContract)
+{
+    return fmt::format("    penetration: {}: {} overlapping, {} broke, {} outside, worst {}\n",
+                       penetrationVerdict(t, judgedVariant, ownContract), t.cases, t.violations,
+                       t.outsideBound,
+                       std::isnan(t.ratio.value) ? "-" : fmt::format("{:.3g}", t.ratio.value));
+}
+
+// The penetration words of a variant that has the block, verdict first, with each largest error's
+// case (report.md).
 std::string penetrationWords(const PenetrationTotals& t, bool judgedVariant, bool ownContract)
 {
     return fmt::format("penetration: {}: {} overlapping case(s), {} contract violation(s), {} "
@@ -936,7 +948,7 @@ std::string variantTable(const Json& r)
                 fails, worstText(v, t, o), nsCell(v, t), variantVerdict(t, group, o));
             const PenetrationTotals p = penetrationTotals(r, name);
             if (p.any)
-                rows += wrap(penetrationWords(p, group, o), "    ", 100);
+                rows += penetrationLine(p, group, o);
         }
         if (!rows.empty())
             s += (group ? "judged (they decide the result):\n"
@@ -946,7 +958,11 @@ std::string variantTable(const Json& r)
     return s + wrap("failures: failed cases (wrong overlap answers); a contract of its own: its "
                     "violations. worst: the largest error / gjk2d's bound, or a broken contract's "
                     "worst excess and why. mean ns/q: the timed families' figures weighted by "
-                    "their cases; a: timed by the adapter; +: includes the shapes' set-up.",
+                    "their cases; a: timed by the adapter; +: includes the shapes' set-up. "
+                    "penetration (a contract whose overlap answer is minus the depth): its "
+                    "verdict, the overlapping cases, the answers that broke the contract and "
+                    "those outside gjk2d's depth bound keeping it, the worst depth error / depth "
+                    "bound (report.md: with their cases).",
                     "", 100);
 }
 } // namespace
