@@ -516,3 +516,34 @@ TEMPLATE_TEST_CASE("signed distance: the pair lies on its edge when two edges ar
         CHECK(out.upper >= -5.2567428407330149e-12);
     }
 }
+
+TEST_CASE("signed distance: deep overlap behind a GJK distance within rounding of 0",
+          "[gjk][expand][regression]")
+{
+    // gjk-validate search (double-signed, from hard/identical-nested/14-nested-half, mutated:
+    // search/265194): B is A's hexagon halved, on the same transform, so Z holds the origin 3.9
+    // deep; GJK's last edge passes 7.4e-17 from the origin and its side test rounded the wrong way:
+    // it stops apart at 7.4e-17 (within the distance's bound, the exact distance being 0). The
+    // signed query then expands too (Tolerances::expandNearZero: 64 u times the simplex's size,
+    // here ~5e-14) and finds the origin inside. Exact signed distance (exact side, explain):
+    // -3.9087648763546006. double only: the case is the search's double input.
+    using T = double;
+    Scene<T> s;
+    s.a = {{2.8584639912161975, 0.939721062491304},    {0.6154096830193261, 2.9453629634419376},
+           {-2.243054308196872, 2.0056419009506343},   {-2.8584639912161975, -0.9397210624913037},
+           {-0.6154096830193283, -2.9453629634419376}, {2.2430543081968715, -2.0056419009506348},
+           {2.30579541107123, -1.7054739801751113}};
+    s.b = {{1.4292319956080988, 0.469860531245652},     {0.30770484150966304, 1.4726814817209688},
+           {-1.121527154098436, 1.0028209504753172},    {-1.4292319956080988, -0.46986053124565186},
+           {-0.30770484150966415, -1.4726814817209688}, {1.1215271540984357, -1.0028209504753174}};
+    s.xfA = {{-6.002052997121733, -6.592293901233031}, {0.6529492920104807, 0.7574016253369226}};
+    s.xfB = s.xfA;
+    SimplexCache cache;
+    const auto plain = distance(s.input(), cache);
+    CHECK(plain.distance > 0); // the mechanism: GJK alone answers apart
+    const auto out = signedQuery(s);
+    CHECK(out.distance == within(-3.9087648763546006, 1e-13));
+    CHECK(length(out.pointA - out.pointB) == within(3.9087648763546006, 1e-13));
+    CHECK(out.lower <= -3.9087648763546006);
+    CHECK(out.upper >= -3.9087648763546006);
+}

@@ -584,11 +584,11 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
         A.overflowed() || B.overflowed() || (Scaled && (A.inexact || B.inexact));
     DistanceOutput<T> out =
         finishQuery<T, Scaled>(input, cache, options, trace, scale, world, stop, simplex, end);
-    // Options::signedDistance on overlap (distance 0 after the radii), when this pass's answer
-    // stands (not replaced by the rescaled retry, which makes this step itself). Out of range, the
-    // query runs again rescaled, as finishQuery's own check does.
-    if (options.signedDistance && (Scaled || !out.rescaled) && out.distance == T(0) &&
-        !out.outOfRange) [[unlikely]]
+    // Options::signedDistance (on overlap, distance 0 after the radii, or a distance within
+    // rounding of 0: signedAnswer decides), when this pass's answer stands (not replaced by the
+    // rescaled retry, which makes this step itself). Out of range, the query runs again rescaled,
+    // as finishQuery's own check does.
+    if (options.signedDistance && (Scaled || !out.rescaled) && !out.outOfRange) [[unlikely]]
     {
         const bool exceeded = signedAnswer<T, Scaled>(input, options, A, B, world, scale, stop,
                                                       simplex, end.edgeBase, out);

@@ -450,11 +450,57 @@ template <class T, bool Scaled, class Shape>
     const T rA = options.useRadii ? input.proxyA.radius : T(0);
     const T rB = options.useRadii ? input.proxyB.radius : T(0);
     Answer<T> core = readSimplex(simplex, edgeBase);
-    const bool coresOverlap = stop == StopReason::Containment ||
-                              stop == StopReason::ZeroDirection || !(core.distance > T(0));
-    if (!coresOverlap)
+    // GJK's own verdict of overlap; or a distance within rounding of 0 (Tolerances<T>::
+    // expandNearZero times the final simplex's size), where the last side test of an edge through
+    // the origin may have been rounded the wrong way: the expansion then decides (gjk-validate
+    // search: nested shapes, GJK distance 7.4e-17 for a depth of 3.9).
+    const bool gjkOverlap = stop == StopReason::Containment || stop == StopReason::ZeroDirection ||
+                            !(core.distance > T(0));
+    T size = T(0);
+    for (int i = 0; i < simplex.count; ++i)
+        size = std::max({size, std::abs(simplex.v[i].w.x), std::abs(simplex.v[i].w.y)});
+    const bool nearZero = !gjkOverlap && core.distance <= Tolerances<T>::expandNearZero * size;
+
+    ExpandPolygon<T> P(gjkOverlap || nearZero
+                           ? expandIterationLimit(input.proxyA.count, input.proxyB.count) + 4
+                           : 0);
+    ExpandEnd end;
+    Answer<T> a;
+    Simplex<T> foot; // the point of Z the upper end falls back to
+    T maxAbs = T(0);
+    bool expanded = false;
+    if (gjkOverlap || nearZero)
     {
-        // Cores apart: only the radii overlap (the caller saw distance 0 after the radii).
+        Vec2<T> flatNormal{};
+        if (seedPolygon<T>(A, B, simplex, P, end, flatNormal))
+        {
+            expandPolygon<T>(A, B, P, expandIterationLimit(input.proxyA.count, input.proxyB.count),
+                             end);
+            end.edge = answerEdge(P, end.edge);
+            a = readEdge(P, end.edge, foot);
+            if (!(a.distance > T(0)) && end.stop != ExpandStop::IterationLimit)
+                end.stop = ExpandStop::Touching;
+            for (int k = 0; k < P.count; ++k)
+                maxAbs = std::max({maxAbs, std::abs(P.v[k].w.x), std::abs(P.v[k].w.y)});
+        }
+        else
+        {
+            // Z has no interior: depth 0, the penetration pair GJK's own common point.
+            end.stop = ExpandStop::Touching;
+            end.degenerate = true;
+            foot = simplex;
+            computeWitnessPoints(simplex, a.pointA, a.pointB);
+            a.distance = T(0);
+            a.normal = (T(1) / length(flatNormal)) * flatNormal;
+        }
+        // Near zero, the expansion's verdict: the origin strictly inside its polygon.
+        expanded = gjkOverlap || a.distance > T(0);
+    }
+    if (!expanded)
+    {
+        // Cores apart: the answer stands unless the radii overlap (distance 0 after the radii).
+        if (!(out.distance == T(0)))
+            return false;
         toWorldFrame<T, Scaled>(core, world, scale);
         const T d = core.distance - (rA + rB);
         if (!(d < T(0)))
@@ -471,34 +517,6 @@ template <class T, bool Scaled, class Shape>
         return !(std::isfinite(out.distance) && std::isfinite(out.pointA.x) &&
                  std::isfinite(out.pointA.y) && std::isfinite(out.pointB.x) &&
                  std::isfinite(out.pointB.y));
-    }
-
-    ExpandPolygon<T> P(expandIterationLimit(input.proxyA.count, input.proxyB.count) + 4);
-    ExpandEnd end;
-    Vec2<T> flatNormal{};
-    Answer<T> a;
-    Simplex<T> foot; // the point of Z the upper end falls back to
-    T maxAbs = T(0);
-    if (seedPolygon<T>(A, B, simplex, P, end, flatNormal))
-    {
-        expandPolygon<T>(A, B, P, expandIterationLimit(input.proxyA.count, input.proxyB.count),
-                         end);
-        end.edge = answerEdge(P, end.edge);
-        a = readEdge(P, end.edge, foot);
-        if (!(a.distance > T(0)) && end.stop != ExpandStop::IterationLimit)
-            end.stop = ExpandStop::Touching;
-        for (int k = 0; k < P.count; ++k)
-            maxAbs = std::max({maxAbs, std::abs(P.v[k].w.x), std::abs(P.v[k].w.y)});
-    }
-    else
-    {
-        // Z has no interior: depth 0, the penetration pair GJK's own common point.
-        end.stop = ExpandStop::Touching;
-        end.degenerate = true;
-        foot = simplex;
-        computeWitnessPoints(simplex, a.pointA, a.pointB);
-        a.distance = T(0);
-        a.normal = (T(1) / length(flatNormal)) * flatNormal;
     }
     toWorldFrame<T, Scaled>(a, world, scale);
     const Vec2<T> zero{};

@@ -96,6 +96,14 @@ template <class T> struct Tolerances
     // cannot be resolved by expanding further; 4u is the next power-of-two multiple. Its share of
     // the depth bound is 4u times the depth (docs/error-bound.md).
     static constexpr T expandGap = T(4) * unitRoundoff;
+    // Options::signedDistance also expands when GJK ends apart at a distance of at most
+    // expandNearZero times the final simplex's largest coordinate: there the last side test of an
+    // edge through the origin (a cross product, rounded by ~2u of that size) may have sent the
+    // search the wrong way, on shapes that overlap deeply (gjk-validate search: nested shapes,
+    // distance 7.4e-17 for a depth of 3.9). The expansion's own verdict then decides (origin
+    // strictly inside its polygon: overlap; else the distance stands). 64u: well above the cross
+    // product's 2u, still 7.6e-6 of the size in float.
+    static constexpr T expandNearZero = T(64) * unitRoundoff;
     // Range in which the query's products neither overflow nor lose precision to underflow.
     // The largest products are dots and crosses of two simplex vertices, at most ~8 R^2 for
     // coordinates of magnitude R: R <= sqrt(max)/8 keeps them finite (float: 2.3e18). Below
