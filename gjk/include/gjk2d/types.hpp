@@ -322,8 +322,8 @@ template <class T> constexpr bool meetsInputContract(const DistanceInput<T>& in)
 
 template <class T> struct DistanceOutput
 {
-    Vec2<T> pointA{};   // closest point on A (world), on the rounded surface when radii are used
-    Vec2<T> pointB{};   // closest point on B (world)
+    Vec2<T> pointA{}; // closest point on A (world), on the rounded surface when radii are used
+    Vec2<T> pointB{}; // closest point on B (world)
     // Unit, from pointA towards pointB when distance > 0; zero otherwise. With
     // Options::signedDistance and distance < 0: the unit direction in which B leaves A,
     // (pointA - pointB) / |pointA - pointB| (moving B by pointA - pointB brings it to contact).

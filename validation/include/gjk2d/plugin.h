@@ -202,14 +202,16 @@ extern "C"
     } gjk2d_contract;
 
     /* The optional depth clause (GJK2D_PLUGIN_DEPTH_ENTRY), one per implementation: on
-     * overlapping shapes |depth - exact depth| <= abs + rel * exact depth. Negative: none stated. */
+     * overlapping shapes |depth - exact depth| <= abs + rel * exact depth. Negative: none stated.
+     */
     typedef struct gjk2d_depth_contract
     {
         double abs_tolerance;
         double rel_tolerance;
         const char* source; /* file and line or documentation, and version; NULL: none stated */
     } gjk2d_depth_contract;
-    typedef const gjk2d_depth_contract* (*gjk2d_plugin_depth_fn)(void); /* GJK2D_PLUGIN_DEPTH_ENTRY */
+    typedef const gjk2d_depth_contract* (*gjk2d_plugin_depth_fn)(
+        void); /* GJK2D_PLUGIN_DEPTH_ENTRY */
 
     typedef struct gjk2d_plugin
     {

@@ -307,8 +307,9 @@ int checkAdapter(const std::vector<Overlapping>& cases, std::size_t n, const std
 
 int main(int argc, char** argv)
 {
-    const char* usage = "usage: bullet_depth_height_{float,double} CASES.json [--depths | --check N "
-                        "--plugin gjk2d-bullet-{float,double}.so]\n";
+    const char* usage =
+        "usage: bullet_depth_height_{float,double} CASES.json [--depths | --check N "
+        "--plugin gjk2d-bullet-{float,double}.so]\n";
     const bool depths = argc == 3 && std::string(argv[2]) == "--depths";
     if (argc != 2 && argc != 6 && !depths)
     {
