@@ -15,10 +15,11 @@
 // collision pipeline runs a convex pair: each 2D shape (points in its local frame, a radius,
 // world = R * local + p with R = [[c, -s], [s, c]]) becomes the prism P x [-h, h], a
 // btConvexHullShape of its 2n vertices placed in the world frame here in btScalar, with the case's
-// radius as its collision margin (setMargin, also for 0); identity transforms. h = 2 * (eA + eB),
-// e = radius + max_i (|x_i| + |y_i|) over the shape's local points, computed in double and
-// then rounded to btScalar (1 when it is 0): far taller than any depth of the case, so that a
-// minimal translation never runs along z. Then btGjkPairDetector with a btVoronoiSimplexSolver
+// radius as its collision margin (setMargin, also for 0); identity transforms. h = k * (eA + eB),
+// k = 2^14 in double, 2^4 in float, e = radius + max_i (|x_i| + |y_i|) over the shape's local
+// points, computed in double and then rounded to btScalar (1 when it is 0): far taller than any
+// depth of the case, so that a minimal translation never runs along z, and EPA's faces are tilted
+// little in z (the adapter's rule, bullet.cpp: prismHalfHeight). Then btGjkPairDetector with a btVoronoiSimplexSolver
 // (built in zeroed storage: Bullet reads members its constructor leaves unwritten on degenerate
 // paths) and a btGjkEpaPenetrationDepthSolver, into a btPointCollector. gjk-validate reports
 // distance m_distance (negative: minus the penetration depth), the point on B m_pointInWorld and
@@ -52,6 +53,11 @@ const Shape B = {{0.0f, 0.0f, 0.000296f, -0.000111f, 0.000185f, 0.000259f}, 0.0f
 const double exactDistance = 0;
 const bool exactOverlap = true;
 const double exactA[2] = {-0.0008272727282685323, -0.0004737608142937863}, exactB[2] = {-0.0008272727282685323, -0.0004737608142937863};
+// The exact signed distance (minus the penetration depth on overlap) and penetration pair, where
+// gjk-validate computed them (a variant whose contract says penetration).
+const bool exactSigned = true;
+const double exactSignedDistance = -9.80174978771787e-11;
+const double exactPA[2] = {-0.0008272727188467579, -0.00047376075710322185}, exactPB[2] = {-0.000827272811992066, -0.00047376078762176484};
 
 // The shape's reach from its own origin, in double: radius + the largest |x| + |y| of its points.
 double reach(const Shape& s)
@@ -81,7 +87,7 @@ void buildPrism(const Shape& s, btScalar h, btConvexHullShape& hull)
 
 int main()
 {
-    double hd = 2 * (reach(A) + reach(B));
+    double hd = (sizeof(btScalar) == sizeof(double) ? 16384 : 16) * (reach(A) + reach(B));
     if (hd == 0)
         hd = 1;
     hd = std::min(hd, double(std::numeric_limits<btScalar>::max()) / 8);
@@ -121,6 +127,10 @@ int main()
     std::printf("exact distance %.17g%s\n", exactDistance, exactOverlap ? " (the shapes overlap)" : "");
     std::printf("exact pointA %.17g %.17g%s\n", exactA[0], exactA[1], exactOverlap ? " (a common point)" : "");
     std::printf("exact pointB %.17g %.17g\n", exactB[0], exactB[1]);
+    if (exactSigned && exactSignedDistance < 0)
+        std::printf("exact signed distance %.17g (minus the depth), penetration pair (%.17g, "
+                    "%.17g) (%.17g, %.17g)\n",
+                    exactSignedDistance, exactPA[0], exactPA[1], exactPB[0], exactPB[1]);
     simplex->~btVoronoiSimplexSolver();
     return 0;
 }

@@ -5,7 +5,8 @@
 // so that it wins; -O3 -ffp-contract=off as gjk2d builds its adapter, so that no a*b+c is fused):
 //   g++ fcl-0.7-libccd-hard-extreme-scale-168-deep-overlap-1e160.cpp $(pkg-config --cflags --libs fcl) -std=c++17 -O3 -ffp-contract=off -o fcl-0.7-libccd-hard-extreme-scale-168-deep-overlap-1e160 && ./fcl-0.7-libccd-hard-extreme-scale-168-deep-overlap-1e160
 //
-// The case: hard/extreme-scale/168-deep-overlap-1e160 (family hard/extreme-scale), variant fcl-0.7-libccd (request.gjk_solver_type = GST_LIBCCD). Each
+// The case: hard/extreme-scale/168-deep-overlap-1e160 (family hard/extreme-scale), variant fcl-0.7-libccd (request.gjk_solver_type = GST_LIBCCD,
+// request.enable_signed_distance = false). Each
 // number is the shortest decimal that reads back as the same double: the compiler reads a decimal
 // literal correctly rounded to the nearest double, so FCL gets the very bits gjk-validate gave it.
 //
@@ -17,8 +18,9 @@
 //   that is 0, at most the largest double / 8): far taller than any depth of the case, so a
 //   nearest pair never runs along z;
 // - radius r > 0: one point is an fcl::Sphere, two points an fcl::Capsule around the segment.
-// Then fcl::distance with enable_nearest_points = true and unsigned distance; a negative
-// min_distance is FCL's "in collision", which gjk-validate reports as it is (overlap `zero`).
+// Then fcl::distance with enable_nearest_points = true and enable_signed_distance = false; a
+// negative min_distance is, unsigned, FCL's "in collision" (overlap `zero`), signed, minus the
+// penetration depth (overlap `penetration`): gjk-validate reports it as it is.
 #include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
@@ -45,6 +47,11 @@ const Shape B = {{1.0578501939336833e+160, 1.0880155708452244e+160, -6.011345108
 const double exactDistance = 0;
 const bool exactOverlap = true;
 const double exactA[2] = {-1.886958747825194e+160, -8.085696602902303e+159}, exactB[2] = {-1.886958747825194e+160, -8.085696602902303e+159};
+// The exact signed distance (minus the penetration depth on overlap) and penetration pair, where
+// gjk-validate computed them (a variant whose contract says penetration).
+const bool exactSigned = false;
+const double exactSignedDistance = 0;
+const double exactPA[2] = {0, 0}, exactPB[2] = {0, 0};
 
 // The shape's reach from its own origin: radius + the largest |x| + |y| of its local points.
 double reach(const Shape& s)
@@ -144,8 +151,8 @@ int main()
     std::printf("FCL fcl::distance, GST_LIBCCD, on hard/extreme-scale/168-deep-overlap-1e160 (half-height h = %.17g):\n", h);
     std::printf("fcl    min_distance %.17g  nearest_points (%.17g, %.17g, %.17g) (%.17g, %.17g, %.17g)\n",
                 d, pa.x(), pa.y(), pa.z(), pb.x(), pb.y(), pb.z());
-    // As gjk-validate reports it: min_distance as it is (negative: FCL's "in collision"), the
-    // points' x and y.
+    // As gjk-validate reports it: min_distance as it is (negative: FCL's "in collision", or minus
+    // the depth when signed), the points' x and y.
     const double reported = d;
     std::printf("answer distance %.17g %a\n", reported, reported);
     std::printf("answer pointA %.17g %.17g %a %a\n", pa.x(), pa.y(), pa.x(), pa.y());
@@ -153,5 +160,9 @@ int main()
     std::printf("exact distance %.17g%s\n", exactDistance, exactOverlap ? " (the shapes overlap)" : "");
     std::printf("exact pointA %.17g %.17g%s\n", exactA[0], exactA[1], exactOverlap ? " (a common point)" : "");
     std::printf("exact pointB %.17g %.17g\n", exactB[0], exactB[1]);
+    if (exactSigned && exactSignedDistance < 0)
+        std::printf("exact signed distance %.17g (minus the depth), penetration pair (%.17g, "
+                    "%.17g) (%.17g, %.17g)\n",
+                    exactSignedDistance, exactPA[0], exactPA[1], exactPB[0], exactPB[1]);
     return 0;
 }
