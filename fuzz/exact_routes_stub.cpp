@@ -9,12 +9,12 @@
 namespace exact::detail
 {
 
-ExactResult hullOfDifferences(const Shape&, const Shape&)
+ExactResult hullOfDifferences(const Shape&, const Shape&, bool)
 {
     throw std::logic_error("fuzz build: the hull-of-differences route is not built in");
 }
 
-ExactResult minkowskiSum2(const Shape&, const Shape&)
+ExactResult minkowskiSum2(const Shape&, const Shape&, bool)
 {
     throw std::logic_error("fuzz build: the minkowski-sum-2 route is not built in");
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Installs the npm packages of the planck.js adapter (validation/plugins/planck/package-lock.json)
-# into build/npm/planck/, outside the source tree, only when the lockfile differs from the copy
-# installed last. CMake (validation/plugins/planck/CMakeLists.txt) builds the adapter when
-# build/npm/planck/node_modules/planck exists. Called by scripts/setup.sh; runs alone too.
+# Installs the npm packages of each JavaScript peer's adapter: every folder
+# validation/plugins/<peer>/ with a package-lock.json (planck.js, Rapier, Jolt), into
+# build/npm/<peer>/, outside the source tree, each only when its lockfile differs from the copy
+# installed last. Each peer's CMakeLists.txt builds its adapter when
+# build/npm/<peer>/node_modules/<package> exists. Called by scripts/setup.sh; runs alone too.
 #
 # Node: the node and npm found on PATH (a NodeSource Node 20 here, whose package conflicts with
 # Debian's npm: `apt-get install npm` fails there). Only when there is none, Debian's nodejs (18
@@ -12,13 +13,11 @@
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-src=$root/validation/plugins/planck
-dest=$root/build/npm/planck
 
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
   cmd="apt-get update && apt-get install -y --no-install-recommends nodejs npm"
   if [[ $(id -u) -ne 0 ]] || ! command -v apt-get >/dev/null; then
-    echo "setup_npm: node or npm not found on PATH (the planck.js adapter needs them)" >&2
+    echo "setup_npm: node or npm not found on PATH (the JavaScript peers' adapters need them)" >&2
     echo "setup_npm: run as root:  $cmd" >&2
     exit 3
   fi
@@ -28,17 +27,27 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then
   apt-get install -y -qq --no-install-recommends nodejs npm >/dev/null
 fi
 
-if [[ -d $dest/node_modules/planck ]] && cmp -s "$src/package-lock.json" "$dest/package-lock.json" \
-   && cmp -s "$src/package.json" "$dest/package.json"; then
-  exit 0
-fi
-mkdir -p "$dest"
-cp "$src/package.json" "$src/package-lock.json" "$dest/"
-echo "setup_npm: npm ci in $dest (node $(node --version), npm $(npm --version))" >&2
-# planck 1.5.0 declares engines node >= 24; npm only warns (EBADENGINE), and the adapter's path
-# runs on Node 18 and 20 (docs/peers.md, "## planck.js"). --ignore-scripts: no package code runs.
-if ! (cd "$dest" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error); then
-  rm -f "$dest/package-lock.json" # the next run tries again
-  echo "setup_npm: npm ci failed in $dest" >&2
-  exit 1
-fi
+# One peer's folder: npm ci into build/npm/<peer>/ unless its lockfile is the one installed there.
+install_peer() {
+  local src=$1 dest=$root/build/npm/$(basename "$1")
+  if [[ -d $dest/node_modules ]] && cmp -s "$src/package-lock.json" "$dest/package-lock.json" \
+     && cmp -s "$src/package.json" "$dest/package.json"; then
+    return 0
+  fi
+  mkdir -p "$dest"
+  cp "$src/package.json" "$src/package-lock.json" "$dest/"
+  echo "setup_npm: npm ci in $dest (node $(node --version), npm $(npm --version))" >&2
+  # planck 1.5.0 declares engines node >= 24; npm only warns (EBADENGINE), and the adapter's path
+  # runs on Node 18 and 20 (docs/peers.md, "## planck.js"). --ignore-scripts: no package code runs.
+  if ! (cd "$dest" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error); then
+    rm -f "$dest/package-lock.json" # the next run tries again
+    echo "setup_npm: npm ci failed in $dest" >&2
+    return 1
+  fi
+}
+
+status=0
+for lock in "$root"/validation/plugins/*/package-lock.json; do
+  install_peer "$(dirname "$lock")" || status=1
+done
+exit $status
