@@ -175,6 +175,11 @@ def main():
     check_sent(distance[0][3:], "the distance request")
     check_cases(out)
     check_report(r)
+    with open(os.path.join(out, "report.md")) as f:
+        md = f.read()
+    check("- **toy-world**: on overlap `common-point` (gjk2d/distance.hpp, DistanceOutput); given "
+          "world points rounded to float (" in md, "report.md's contracts do not say what "
+          "toy-world is given")
     # Timed: every case of a `time` request (time ID NAME K M, then M cases) is the world case.
     _, requests = campaign(a, out + "-timed", state, ["--passes", "1"])
     timed = [t for t in requests if t[0] == "time"]
