@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""An adapter given world points (protocol 2's `input NAME world SOURCE`; tests/plugins/CMakeLists.txt).
+"""An adapter given world points (`input NAME world SOURCE`; tests/plugins/CMakeLists.txt).
 
   world_check.py --exe E --adapter A --cases C --work W
 
@@ -20,7 +20,9 @@ points rounded to float, bit for bit, and no request carries the overflowing cas
 judges toy-world on the world case's truth (its key, the exact distance above, the input change
 |world - case|) and says why it skipped the other; report.json's variants[] gives the contract's
 input clause and variants[].input with the count; a timed run's `time` requests carry the same
-world points; `explain` (text and --json) shows the world case and says toy-world is judged on it. Exit 0 when every check holds; else a message and exit 1.
+world points; `explain` (text and --json) shows the world case and says toy-world is judged on
+it; report.md's contracts say what toy-world is given. Exit 0 when every check holds; else a
+message and exit 1.
 """
 import argparse
 import json
