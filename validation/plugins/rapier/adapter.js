@@ -56,7 +56,10 @@
 // shape.ts:432-433, this.intoRaw(), and frees it after): the hull is computed per query, inside the
 // timed loop, because that is what every contactShape call costs its user.
 // null within the prediction (parry's GJK stops after 100 iterations with NoIntersection, gjk.rs:
-// 449-450, or EPA finds nothing, contact_support_map_support_map.rs:69-76) is answered `error`.
+// 449-450, or EPA finds nothing, contact_support_map_support_map.rs:69-76) is answered `error`, as
+// is a throw: 3 or more coincident points make parry's hull panic (COINCIDENT below, answered
+// without running the trap), and any other trap is answered and followed by a fresh instance of
+// the bindings (freshRapier()).
 //
 // Prepared shapes: `prepared NAME case` (the world points baked in). A `time` request builds its 2m
 // shapes once, timed apart, before its timed loop of queries, and answers both figures; a
@@ -82,8 +85,24 @@
 // build/<preset>/validation/plugins/gjk2d-rapier sets (CMakeLists.txt here).
 "use strict";
 
-const RAPIER = require("@dimforge/rapier2d-compat");
 const readline = require("readline");
+
+// The bindings' module. A Rust panic inside it is a WebAssembly trap (RuntimeError: unreachable)
+// that leaves its shadow stack pointer where the panic left it: measured, some tens of thousands
+// of traps later a query fails with "memory access out of bounds", so earlier answers after a trap
+// cannot be trusted either. After a trap the adapter evaluates the package again (a fresh
+// instance, its own memory: about 80 ms) before it answers the next request.
+const PACKAGE = "@dimforge/rapier2d-compat";
+let RAPIER = require(PACKAGE);
+function freshRapier() {
+  // Forgotten by the cache and by this module's children, the old instance and its memory can be
+  // collected (measured: 100 fresh instances, 142 MB resident; 1.4 GB for 300 while the children
+  // kept them).
+  for (const key of Object.keys(require.cache)) if (key.includes("rapier2d-compat")) delete require.cache[key];
+  module.children = module.children.filter((child) => !child.id.includes("rapier2d-compat"));
+  RAPIER = require(PACKAGE);
+  return RAPIER.init();
+}
 
 const F32_EPSILON = 1.1920928955078125e-7; // 2^-23
 const EPS_TOL = Math.fround(10 * F32_EPSILON); // gjk.rs:141-144, exact in f32
@@ -183,6 +202,7 @@ function shapeRefusal(sh) {
       `(Capsule(halfHeight, radius) lies along y and needs an f32 rotation angle)`
     );
   if (n >= 3) {
+    if (coincident(sh.points)) return null; // answered `error` by answer(): Rapier panics (COINCIDENT)
     const shape = build(sh);
     const raw = shape.intoRaw();
     if (!raw)
@@ -198,6 +218,23 @@ function shapeRefusal(sh) {
 
 function refusal(c) {
   return shapeRefusal(c.a) || shapeRefusal(c.b);
+}
+
+// 3 or more points, all the same point (an f32 world point: tiny shapes far from the origin round
+// to one): parry's 2D convex hull asserts two distinct support points and panics ("Failed to build
+// the 2d convex hull of this point cloud.", src/transformation/convex_hull2.rs:107-110), where
+// ConvexPolygon::from_convex_hull promises an Option (convex_polygon.rs:139-142): a user's
+// ConvexPolygon of them throws RuntimeError: unreachable on its first use. The adapter answers
+// that error without running the trap (tested against the bindings: rapier_driver.py).
+const COINCIDENT =
+  "Rapier throws RuntimeError: unreachable on a ConvexPolygon of 3 or more coincident points: parry's convex " +
+  `hull asserts two distinct points (src/transformation/convex_hull2.rs:107-110, ${PARRY})`;
+function coincident(points) {
+  for (let k = 2; k < points.length; k += 2) if (points[k] !== points[0] || points[k + 1] !== points[1]) return false;
+  return true;
+}
+function panics(c) {
+  return [c.a, c.b].some((sh) => sh.points.length >= 6 && coincident(sh.points));
 }
 
 // Shape `sh` (world points, f32) as Rapier's JavaScript Shape, and where it is placed.
@@ -241,6 +278,7 @@ function answer(t) {
       if (c.next !== t.length) throw new RequestError(`${t.length - c.next} tokens after shape B`);
       const why = refusal(c);
       if (why) return say(`refused ${id} ${why}`);
+      if (panics(c)) return say(`error ${id} ${COINCIDENT}`);
       const o = query(prepare(c.a), prepare(c.b));
       if (!o)
         return say(
@@ -259,7 +297,7 @@ function answer(t) {
       let i = 5;
       for (let k = 0; k < m; ++k) {
         const c = readCase(t, i);
-        const why = refusal(c);
+        const why = refusal(c) || (panics(c) && COINCIDENT);
         if (why) return say(`refused ${id} case ${k + 1}: ${why}`);
         cases.push(c);
         i = c.next;
@@ -288,9 +326,18 @@ function answer(t) {
     return say(`error ${id} unknown request "${t[0]}"`);
   } catch (e) {
     // Rapier threw (a JavaScript error or a WebAssembly trap): the case is an error, the stream
-    // goes on.
+    // goes on, on a fresh instance after a trap.
     const what = e instanceof RequestError ? e.message : `Rapier threw ${e.name}: ${e.message}`;
-    return say(`error ${id} ${String(what).replace(/\s+/g, " ")}`);
+    say(`error ${id} ${String(what).replace(/\s+/g, " ")}`);
+    if (e instanceof WebAssembly.RuntimeError) {
+      ready = false;
+      freshRapier()
+        .then(resume)
+        .catch((err) => {
+          process.stderr.write(`gjk2d-rapier: a fresh instance of ${PACKAGE} failed: ${err}\n`);
+          process.exit(1);
+        });
+    }
   }
 }
 
@@ -317,6 +364,11 @@ function handshake() {
 const lines = [];
 let ready = false;
 let handshaken = false;
+// Takes the lines that waited for an instance, in order, until one of them needs a fresh one.
+function resume() {
+  ready = true;
+  while (ready && lines.length) take(lines.shift());
+}
 function take(line) {
   const t = line.trim().split(/ +/);
   if (t.length === 1 && t[0] === "") return;
@@ -335,8 +387,7 @@ RAPIER.init()
   .then(() => {
     VERSION = RAPIER.version();
     IMPL = `rapier2d-${VERSION}`;
-    ready = true;
-    lines.splice(0).forEach(take);
+    resume();
   })
   .catch((e) => {
     process.stderr.write(`gjk2d-rapier: RAPIER.init() failed: ${e}\n`);

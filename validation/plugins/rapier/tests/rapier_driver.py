@@ -232,6 +232,32 @@ def check_refusals(ad):
     check_case(ad, 'squares-3-apart', rid=99)  # still answering
 
 
+def check_coincident(ad):
+    """3 points, all (1, 1): parry's convex hull asserts two distinct points and panics
+    (convex_hull2.rs:107-110); the adapter answers that error for the id without running the trap
+    (direct_check.py checks, on generated cases, that the bindings throw wherever it says so)."""
+    answer = ad.ask(f'distance 3 {VARIANT} {fmt_case(shape([(1.0, 1.0)] * 3), shape([(3.0, 0.0)]))}')
+    if not re.fullmatch(r'error 3 Rapier throws RuntimeError: unreachable on a ConvexPolygon of 3 or more '
+                        r'coincident points.*convex_hull2\.rs:107-110.*', answer):
+        fail(f'coincident points: {answer!r}')
+    print(f'coincident: {answer[:120]}')
+    check_case(ad, 'squares-3-apart', rid=4)
+
+
+def check_trap(ad):
+    """A triangle of side 1e-25 (f32): its squared edge lengths underflow f32 to 0, parry's hull
+    finds no two distinct points and panics, a WebAssembly trap. The adapter answers the error for
+    the id, takes a fresh instance of the bindings, and answers the next request as before."""
+    t1, t2 = f32(1e-25), f32(2e-25)
+    answer = ad.ask(f'distance 3 {VARIANT} {fmt_case(shape([(t1, 0.0), (t2, 0.0), (t1, t1)]), shape([(3.0, 0.0)]))}')
+    if answer != 'error 3 Rapier threw RuntimeError: unreachable':
+        fail(f'a trap: {answer!r}')
+    print(f'trap: {answer}')
+    for rid in (4, 5):  # the next requests, on the fresh instance
+        check_case(ad, 'squares-3-apart', rid=rid)
+    check_case(ad, 'dropped-vertex', rid=6)
+
+
 def check_bad_requests(ad):
     """What the adapter cannot read gets an error for that id, and the stream goes on."""
     good = fmt_case(*CASES['squares-3-apart'][:2])
@@ -300,7 +326,8 @@ def measure(ad):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument('--adapter', required=True)
-    ap.add_argument('--check', choices=['handshake', 'refusals', 'bad-requests', 'nonfinite', 'time'] + sorted(CASES))
+    ap.add_argument('--check', choices=['handshake', 'refusals', 'coincident', 'trap', 'bad-requests', 'nonfinite', 'time']
+                    + sorted(CASES))
     ap.add_argument('--measure', action='store_true')
     a = ap.parse_args()
     if not os.access(a.adapter, os.X_OK):
@@ -316,8 +343,8 @@ def main():
     elif a.check in CASES:
         check_case(ad, a.check)
     elif a.check:
-        {'refusals': check_refusals, 'bad-requests': check_bad_requests, 'nonfinite': check_nonfinite,
-         'time': check_time}.get(a.check, lambda ad: None)(ad)
+        {'refusals': check_refusals, 'coincident': check_coincident, 'trap': check_trap,
+         'bad-requests': check_bad_requests, 'nonfinite': check_nonfinite, 'time': check_time}.get(a.check, lambda ad: None)(ad)
     ad.close()
     print('PASS')
 

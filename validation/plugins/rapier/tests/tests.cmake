@@ -19,6 +19,8 @@ set(_rapier_checks
     "beyond-sqrt-f32-max|a point 2^64 away reads as touching (f32 overflow, pinned)"
     "dropped-vertex|a vertex turning by 0.57 degrees is dropped by parry (pinned)"
     "refusals|a transform other than the identity, no polygon, a rounded segment are refused"
+    "coincident|3 coincident points get the error Rapier's hull throws there"
+    "trap|a WebAssembly trap gets error for its id, a fresh instance the next request"
     "bad-requests|a bad request gets error for its id and the stream goes on"
     "nonfinite|nan and inf in a case are refused for its id"
     "time|a time request gives timed with positive totals for the loop and the preparation")
