@@ -21,7 +21,8 @@ set(_repros
     "bullet-3.24-double|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-float|random:2000|random/1,random/2|random/1 and random/2"
     "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2${_box2d3_env}"
-    "geos-*|random:2000|random/1,random/2|random/1 and random/2")
+    "geos-*|random:2000|random/1,random/2|random/1 and random/2"
+    "rapier2d-0.21.0|random:2000|random/1,random/2|random/1, a penetration, and random/2, on their world points")
 set(_k 0)
 foreach(entry IN LISTS _repros)
   math(EXPR _k "${_k} + 1")

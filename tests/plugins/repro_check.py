@@ -73,7 +73,7 @@ def program_output(path, node_path, env):
         m = re.search(r'NODE_PATH=build/npm/([A-Za-z0-9_-]+)/node_modules node ', text)
         if not m:
             fail(f'{path.name}: its comment does not say how it finds its library')
-        where = pathlib.Path(node_path).parent.parent / m.group(1) / 'node_modules'
+        where = pathlib.Path(node_path).resolve().parent.parent / m.group(1) / 'node_modules'
         env = dict(os.environ, NODE_PATH=str(where))
         return run(['node', path.name], cwd=path.parent, env=env)
     if path.suffix == '.py':

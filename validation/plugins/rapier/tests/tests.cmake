@@ -32,3 +32,12 @@ foreach(entry IN LISTS _rapier_checks)
            COMMAND Python3::Interpreter ${_rapier_driver} --adapter ${_rapier_adapter} --check ${check})
   set_tests_properties("plugins: rapier: ${what}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 60)
 endforeach()
+# Done when (docs/peers.md, "## Rapier (parry)"): on cases generated now with a seed drawn now,
+# the report's Rapier answers are those of direct.js, a program of Rapier's own API alone, on the
+# world points the protocol's rule gives, bit for bit (direct_check.py).
+add_test(NAME "plugins: rapier: the report's answers are Rapier's own API's on cases made now, bit for bit"
+         COMMAND Python3::Interpreter ${CMAKE_CURRENT_LIST_DIR}/direct_check.py --exe $<TARGET_FILE:gjk-validate>
+                 --adapter ${_rapier_adapter} --node-path ${PROJECT_SOURCE_DIR}/build/npm/rapier/node_modules
+                 --work ${CMAKE_CURRENT_BINARY_DIR}/ci/rapier-direct --family random:1000)
+set_tests_properties("plugins: rapier: the report's answers are Rapier's own API's on cases made now, bit for bit"
+                     PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
