@@ -45,9 +45,10 @@
 // ball-ball compares with the radii plus it, contact_ball_ball.rs:20). PREDICTION is f32's largest
 // value, 3.4028234663852886e38: every finite distance is within it, and the prediction only decides
 // whether to answer, never the answer (gjk.rs:409-410 is its one use in GJK; the test "a far-apart
-// case is answered" checks squares 1e30 apart). A distance bound from the case's points would do
-// as well but costs a computation per case; infinity is not used since the WebAssembly side takes an
-// f32 and `min_bound > inf` is never true anyway, so the largest finite value says the same plainly.
+// case is answered" checks squares 999999 apart). A distance bound from the case's points would do
+// as well but costs a computation per case and must stay above every f32 rounding of the distance;
+// infinity would do as well, but a finite f32 keeps every comparison and sum with it plain
+// (contact_ball_ball.rs:20 adds the radii to it).
 // The answer is in world coordinates: "The result is given in world-space" (gen2d/geometry/
 // shape.ts:416; parry src/query/contact/contact_shape_shape.rs:130-137, transform_by_mut(pos1,
 // pos2)), checked by the tests with shapes placed away from the origin. distance = contact.distance
