@@ -61,7 +61,7 @@ def main():
     check(c["overlap"] == "penetration", "toy-depth overlap {}".format(c["overlap"]))
     check(c["depth"] == {"abs": 1e-3, "rel": None, "source": source},
           "toy-depth contract.depth {}".format(c["depth"]))
-    want = "its stated tolerance: abs 0.001, rel none ({})".format(source)
+    want = "its stated tolerance: abs 0.001, rel none ({}), plus gjk2d's depth bound for double".format(source)
     check(c["judged_by_depth"] == want,
           "toy-depth judged_by_depth {!r} != {!r}".format(c["judged_by_depth"], want))
     d = v["double"]["contract"]

@@ -117,7 +117,8 @@ TEST_CASE(
     "a declared contract on separated shapes: the tolerance, the claim of overlap, the points",
     "[contract]")
 {
-    // A the point (0, 0), B the point (3, 0): exact 3. T = 1e-6 (abs), W = max(2^-2, T) = 2^-2.
+    // A the point (0, 0), B the point (3, 0): exact 3. T = 1e-6 (abs) + gjk2d's bound 2^-30,
+    // W = max(2^-2, T) = 2^-2.
     const Case c = caseOf(point(0, 0), point(3, 0));
     const exact::Result t = truthOf(3);
     for (Scalar s : kScalars)
@@ -126,20 +127,20 @@ TEST_CASE(
         const Implementation im(s, declared(Overlap::Zero, 1e-6));
         // Within T but beyond gjk2d's bound (2^-30): keeps it, outside the bound (class 2).
         const VariantOutcome near = judged(im, c, t, 3 + 5e-7, {0, 0}, {3, 0});
-        CHECK(near.tolerance == 1e-6);
+        CHECK(near.tolerance == 1e-6 + 0x1p-30);
         CHECK(near.witnessTolerance == 0.25);
         CHECK(near.keepsContract());
         CHECK(near.beyondBound);
         CHECK(std::string(answerClassName(near)) == "outside_bound");
-        // 2e-6 off: beyond T, a violation by distance of excess 2e-6 / 1e-6.
+        // 2e-6 off: beyond T, a violation by distance of excess 2e-6 / T.
         const VariantOutcome off = judged(im, c, t, 3 + 2e-6, {0, 0}, {3, 0});
         CHECK(reason(off) == "distance");
-        CHECK(off.violationExcess == Approx(2).epsilon(1e-6));
+        CHECK(off.violationExcess == Approx(2e-6 / (1e-6 + 0x1p-30)).epsilon(1e-6));
         CHECK(std::string(answerClassName(off)) == "breaks_contract");
-        // A claim of overlap (-1) on shapes 3 apart: false_overlap, excess 3 / 1e-6.
+        // A claim of overlap (-1) on shapes 3 apart: false_overlap, excess 3 / T.
         const VariantOutcome claim = judged(im, c, t, -1, {0, 0}, {0, 0});
         CHECK(reason(claim) == "false_overlap");
-        CHECK(claim.violationExcess == Approx(3e6));
+        CHECK(claim.violationExcess == Approx(3 / (1e-6 + 0x1p-30)));
         // A's point 0.5 off A (W = 0.25): witness_off_shape, excess 0.5 / 0.25; on W: keeps it.
         CHECK(reason(judged(im, c, t, 3, {0, 0.5}, {3, 0.5})) == "witness_off_shape");
         CHECK(judged(im, c, t, 3, {0, 0.5}, {3, 0.5}).violationExcess == 2);
@@ -157,7 +158,7 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("a declared contract's tolerance: abs + rel * exact, either alone, or gjk2d's bound",
+TEST_CASE("a declared contract's tolerance: abs + rel * exact + gjk2d's bound, or the bound alone",
           "[contract]")
 {
     const Case c = caseOf(point(0, 0), point(4, 0));
@@ -165,13 +166,14 @@ TEST_CASE("a declared contract's tolerance: abs + rel * exact, either alone, or 
     for (Scalar s : kScalars)
     {
         INFO(scalarName(s));
-        // rel 1e-6 alone: T = 4e-6; abs 1e-6 + rel 1e-6: T = 5e-6.
+        // rel 1e-6 alone: T = 4e-6 + 2^-30; abs 1e-6 + rel 1e-6: T = 5e-6 + 2^-30 (gjk2d's bound
+        // added: the rounding a stopping rule's tolerance does not cover).
         const VariantOutcome rel =
             judged(Implementation(s, declared(Overlap::Zero, -1, 1e-6)), c, t, 4, {0, 0}, {4, 0});
-        CHECK(rel.tolerance == Approx(4e-6));
+        CHECK(rel.tolerance == Approx(4e-6 + 0x1p-30).epsilon(1e-12));
         const VariantOutcome both =
             judged(Implementation(s, declared(Overlap::Zero, 1e-6, 1e-6)), c, t, 4, {0, 0}, {4, 0});
-        CHECK(both.tolerance == Approx(5e-6));
+        CHECK(both.tolerance == Approx(5e-6 + 0x1p-30).epsilon(1e-12));
         // Nothing stated: gjk2d's bound (2^-30) and witness bound hold it.
         const Implementation none(s, declared(Overlap::Zero));
         const VariantOutcome in = judged(none, c, t, 4 + 0x1p-31, {0, 0}, {4, 0});

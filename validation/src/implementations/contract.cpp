@@ -102,10 +102,10 @@ std::string judgedBy(const VariantInfo& v)
         return fmt::format("gjk2d's own contract: gjk2d's bound for {}", scalarName(v.scalar));
     if (!c.statesTolerance())
         return fmt::format("no tolerance stated: gjk2d's bound for {}", scalarName(v.scalar));
-    return fmt::format("its stated tolerance: abs {}, rel {} ({})",
+    return fmt::format("its stated tolerance: abs {}, rel {} ({}), plus gjk2d's bound for {}",
                        c.absTolerance >= 0 ? fmt::format("{:g}", c.absTolerance) : "none",
                        c.relTolerance >= 0 ? fmt::format("{:g}", c.relTolerance) : "none",
-                       c.toleranceSource);
+                       c.toleranceSource, scalarName(v.scalar));
 }
 
 std::string judgedByDepth(const VariantInfo& v)
@@ -119,10 +119,10 @@ std::string judgedByDepth(const VariantInfo& v)
     if (!c.statesDepthTolerance())
         return fmt::format("no depth tolerance stated: gjk2d's depth bound for {}",
                            scalarName(v.scalar));
-    return fmt::format("its stated tolerance: abs {}, rel {} ({})",
+    return fmt::format("its stated tolerance: abs {}, rel {} ({}), plus gjk2d's depth bound for {}",
                        c.depthAbsTolerance >= 0 ? fmt::format("{:g}", c.depthAbsTolerance) : "none",
                        c.depthRelTolerance >= 0 ? fmt::format("{:g}", c.depthRelTolerance) : "none",
-                       c.depthSource);
+                       c.depthSource, scalarName(v.scalar));
 }
 
 Json contractJson(const VariantInfo& v)

@@ -50,8 +50,10 @@ struct Contract
     // gjk2d's own contract: every failure of gjk2d's judge (evaluate/evaluate.hpp, failedAnswer)
     // breaks it; the rest of the struct is its description (common-point, gjk2d's bound).
     bool own = true;
-    // On separated shapes: |distance - exact| <= abs + rel * exact. Negative: not stated; both
-    // not stated: gjk2d's bound for the scalar type stands in, and the report says so.
+    // On separated shapes: |distance - exact| <= abs + rel * exact, plus gjk2d's bound for the
+    // scalar type (the rounding a stopping rule does not cover: evaluate/contract_judge.cpp,
+    // setTolerances). Negative: not stated; both not stated: gjk2d's bound alone stands in, and
+    // the report says so.
     double absTolerance = -1, relTolerance = -1;
     std::string toleranceSource; // "" none stated
     Overlap overlap = Overlap::CommonPoint;
@@ -90,12 +92,14 @@ const Contract& contractOf(const VariantInfo& v);
 // depth is held to (judgedByDepth).
 Json contractJson(const VariantInfo& v);
 // In words, what the variant's distance is held to: "its stated tolerance: abs 1e-06, rel none
-// (SOURCE)", "no tolerance stated: gjk2d's bound for double", "gjk2d's own contract: ...".
+// (SOURCE), plus gjk2d's bound for double", "no tolerance stated: gjk2d's bound for double",
+// "gjk2d's own contract: ...".
 std::string judgedBy(const VariantInfo& v);
 // In words, what the variant's penetration depth is held to: "its stated tolerance: abs 0.0001, rel
-// none (SOURCE)", "no depth tolerance stated: gjk2d's depth bound for double", "gjk2d's own
-// contract: gjk2d's depth bound for double" (double-signed), or, for an overlap kind that answers
-// no depth, "no depth answered (overlap zero)" (gjk2d's double: "... (overlap common-point)").
+// none (SOURCE), plus gjk2d's depth bound for double", "no depth tolerance stated: gjk2d's depth
+// bound for double", "gjk2d's own contract: gjk2d's depth bound for double" (double-signed), or,
+// for an overlap kind that answers no depth, "no depth answered (overlap zero)" (gjk2d's double:
+// "... (overlap common-point)").
 std::string judgedByDepth(const VariantInfo& v);
 // In words, what the variant is given of each case: "the case as given", or "world points rounded
 // to float (SOURCE)" ("world points in double (SOURCE)" for a double implementation).
