@@ -47,8 +47,8 @@
 //    from GJK, else EPA, on the prisms themselves;
 // 2. no hit: again with mMaxSeparationDistance = U, at least the case's distance (else a separated
 //    pair answers nothing: CollideShape.h:98-100), U the distance of the nearest pair of points,
-//    one of each shape (computed in prepare(), outside the timed loop), times 1 + 1/1024, rounded
-//    up to float.
+//    one of each shape (computed in prepare(), outside the timed loop), times 1 + 1/8, rounded up
+//    to float.
 // Why two: sCollideConvexVsConvex inflates shape 1 by mMaxSeparationDistance as a convex radius
 // (at most 1 in EPA) and subtracts it again from |point2 - point1| in float (ConvexShape.cpp:93,
 // 113-121, 134, 141), so with one query at U for every case EPA's overlap depths were taken on a
@@ -96,9 +96,11 @@ const JOLT_VERSION = "5.6.0";
 const IMPL = "jolt-" + PACKAGE_VERSION;
 // The prisms' half height over eA + eB (docs/peers.md, "## Jolt": measured).
 const HEIGHT_FACTOR = 1;
-// mMaxSeparationDistance over U, the upper bound of the distance: room for the float rounding of
-// U and of Jolt's inflated support points.
-const MAX_SEPARATION_SLACK = 1 + 1 / 1024;
+// mMaxSeparationDistance over U, the upper bound of the distance: room for Jolt's own error, so
+// that an answer a little above U is still given (docs/peers.md, "## Jolt": with 1 + 1/1024, 3 of
+// 3153 separated random cases got no contact, Jolt's distance being up to 0.5 % above U, which is
+// at least the exact one; with 1 + 1/8 they are answered, and the median error is the same).
+const MAX_SEPARATION_SLACK = 1 + 1 / 8;
 
 const JOLT_SRC = `JoltPhysics v${JOLT_VERSION} (jolt-physics ${PACKAGE_VERSION}, npm, WebAssembly)`;
 const INPUT = `input ${IMPL} world Jolt takes a rotation as a float quaternion (Jolt/Math/Quat.h) and places a ConvexHullShape by its centre of mass, storing its points relative to it in float (Jolt/Physics/Collision/Shape/ConvexHullShape.cpp:82-83, 153; ConvexHullShape.h:54), ${JOLT_SRC}`;
