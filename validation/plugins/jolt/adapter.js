@@ -14,8 +14,9 @@
 //   3 FLT_EPSILON (max|x| + max|y| + max|z|) (ConvexHullBuilder.cpp:240-247, 313-317).
 // - h = HEIGHT_FACTOR (eA + eB), e the shape's bounding box width plus its height (at least its
 //   diameter, so at least any 2D depth d, and independent of where the shape is), in double, then
-//   rounded up to float (prismHalfHeight below). With HEIGHT_FACTOR 1, 2h >= 2 (eA + eB) >= 4 d:
-//   the cap-to-cap translation 2h never competes with the in-plane one. Taller is worse in float:
+//   rounded up to float (prismHalfHeight below). With HEIGHT_FACTOR 2 (FCL's), 2h >= 4 (eA + eB)
+//   >= 8 d: the cap-to-cap translation 2h never competes with the in-plane one. Factors 0.5 to 4
+//   measured alike, 2 a little the best (docs/peers.md, "## Jolt"); taller is worse in float:
 //   GJK calls shapes touching when |v|^2 <= FLT_EPSILON max|y|^2 over its simplex
 //   (GJKClosestPoint.h:442), and the hull builder's coplanar distance grows with max|z|
 //   (ConvexHullBuilder.cpp:240-247): measured in docs/peers.md, "## Jolt".
@@ -95,7 +96,7 @@ const PACKAGE_VERSION = JSON.parse(fs.readFileSync(path.join(PACKAGE, "package.j
 const JOLT_VERSION = "5.6.0";
 const IMPL = "jolt-" + PACKAGE_VERSION;
 // The prisms' half height over eA + eB (docs/peers.md, "## Jolt": measured).
-const HEIGHT_FACTOR = 1;
+const HEIGHT_FACTOR = 2;
 // mMaxSeparationDistance over U, the upper bound of the distance: room for Jolt's own error, so
 // that an answer a little above U is still given (docs/peers.md, "## Jolt": with 1 + 1/1024, 3 of
 // 3153 separated random cases got no contact, Jolt's distance being up to 0.5 % above U, which is

@@ -115,7 +115,7 @@ def check_overlap(ad):
 def check_deep_in_plane(ad):
     # The prism reduction for penetration: two 10 x 10 squares, B shifted by (5, 0), overlap by 5:
     # the 2D depth is 5 (B moves by 5 along +x; along y it would take 10). The prisms'
-    # half height is eA + eB = 40, so the cap-to-cap translation 2h = 80 is far above 5: the
+    # half height is 2 (eA + eB) = 80, so the cap-to-cap translation 2h = 160 is far above 5: the
     # answer must be 5 in the plane, not along z. (Bullet's EPA answers 5 / sqrt 2 here along a
     # diagonal: docs/peers.md, "## Bullet".) Tolerance 1e-5: a float EPA on numbers of size 10.
     check_penetration(ad, square(0, 0, 10), square(5, 0, 10), 5.0, (1.0, 0.0), 1e-5)
@@ -141,8 +141,10 @@ def check_hull_tolerance(ad):
     # mHullTolerance 0 keeps a nearly collinear point: the triangle (-1, 0), (1, 0), (0, eps),
     # eps = 2^-11 = 4.9e-4, below the default hull tolerance 1e-3 (ConvexHullShape.h:36), under the
     # square [-0.5, 0.5] x [0.01, 1.01] (0.01 as a float, F). With the apex kept the distance is
-    # F - eps = 0.0095117...; a hull without it (a flat segment) would give F. Jolt's own coplanar
-    # distance here is 3 FLT_EPSILON (1 + 1.01 + h), h = eA + eB = (2 + eps) + 2: 2.5e-6, far below eps
+    # F - eps = 0.0095117...; a hull without it (a flat segment) would give F (with the default
+    # tolerance Jolt answered 0.0097558). Jolt's own coplanar distance for the triangle's prism is
+    # 3 FLT_EPSILON (max|x| + max|y| + max|z|) = 3 FLT_EPSILON (1 + eps + h), h = 2 (eA + eB) =
+    # 2 ((2 + eps) + 2) = 8.002: 3.2e-6, far below eps
     # (ConvexHullBuilder.cpp:240-247). Tolerance 1e-6.
     eps = 2.0 ** -11
     f = 0.009999999776482582  # float(0.01)
@@ -267,7 +269,7 @@ def check_time(ad):
 def measure(ad):
     """Per-query round trip and the time loop's ns/query, on a separated case (two queries) and an
     overlapping one (one query)."""
-    for what, a, b in [('separated', square(0, 0), square(4, 0.3)), ('overlapping', square(0, 0), square(0.5, 0.25))]:
+    for what, a, b in [('separated', square(0, 0), square(4, 0.25)), ('overlapping', square(0, 0), square(0.5, 0.25))]:
         body = fmt_case(shape(a), shape(b))
         n = 2000
         start = time.perf_counter_ns()
