@@ -23,7 +23,7 @@
 //
 // What it takes (the handshake's lines):
 // - `input jolt-1.1.0 world`: the host sends each case as world points rounded to float with the
-//   identity transform. Jolt takes a rotation as a float quaternion (Quat, Math/Quat.h) and, more
+//   identity transform. Jolt takes a rotation as a float quaternion (Quat, Math/Quat.h:264) and, more
 //   to the point, places a ConvexHullShape by its centre of mass: the constructor computes it and
 //   stores the points relative to it, in float (ConvexHullShape.cpp:82-83, 153), so even an exact
 //   input is recentred by Jolt's own arithmetic. The adapter hands Jolt the world points as they
@@ -104,8 +104,8 @@ const HEIGHT_FACTOR = 2;
 // same; with 2 the median error grows by half).
 const MAX_SEPARATION_SLACK = 1 + 1 / 8;
 
-const JOLT_SRC = `JoltPhysics v${JOLT_VERSION} (jolt-physics ${PACKAGE_VERSION}, npm, WebAssembly)`;
-const INPUT = `input ${IMPL} world Jolt takes a rotation as a float quaternion (Jolt/Math/Quat.h) and places a ConvexHullShape by its centre of mass, storing its points relative to it in float (Jolt/Physics/Collision/Shape/ConvexHullShape.cpp:82-83, 153; ConvexHullShape.h:54), ${JOLT_SRC}`;
+const JOLT_SRC = `JoltPhysics read at 3b47ec39 (2026-06-30; jolt-physics ${PACKAGE_VERSION}, npm, builds v${JOLT_VERSION})`;
+const INPUT = `input ${IMPL} world Jolt takes a rotation as a float quaternion (Jolt/Math/Quat.h:264, a Vec4) and places a shape by its centre of mass (Jolt/Physics/Collision/TransformedShape.h:99-101), a ConvexHullShape storing its points relative to it in float (Jolt/Physics/Collision/Shape/ConvexHullShape.cpp:82-83, 153), ${JOLT_SRC}`;
 const CONTRACT = [
   `contract ${IMPL} overlap penetration Jolt/Physics/Collision/CollideShape.h:59-62 (mPenetrationDepth: "move shape 2 by this distance to resolve the collision"; with mMaxSeparationDistance > 0 "negative to indicate that the objects are separated by -mPenetrationDepth. The contact points are the closest points in that case"), ${JOLT_SRC}`,
   `contract ${IMPL} tolerance 0.0001 none Jolt/Physics/Collision/CollideShape.h:82-83 (mCollisionTolerance: "If objects are closer than this distance, they are considered to be colliding (used for GJK)"), Jolt/Physics/PhysicsSettings.h:9-10 (cDefaultCollisionTolerance = 1.0e-4f), ${JOLT_SRC}`,
