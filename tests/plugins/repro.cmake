@@ -11,7 +11,8 @@ if(TARGET gjk2d_box2d3_plugin)
   set(_box2d3_env "|--env|BOX2D3=${GJK2D_BOX2D3_SOURCE}")
 endif()
 # variant|family|cases|what the cases are|more arguments (a variant ending in * is the first
-# listed variant of that prefix: GEOS's name carries the installed GEOS version)
+# listed variant of that prefix: GEOS's name carries the installed GEOS version; a later --node-path
+# replaces planck's)
 set(_repros
     "planck-1.5.0|random:2000|random/1,random/2|random/1 (its overlap points) and random/2, and the bug report on the overlap|--expect-on-overlap|.md"
     "fcl-0.7-libccd|random:2000|random/1,random/2|random/1 and random/2"
@@ -21,7 +22,8 @@ set(_repros
     "bullet-3.24-double|random:2000|random/1,random/2|random/1 and random/2"
     "bullet-3.24-float|random:2000|random/1,random/2|random/1 and random/2"
     "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2${_box2d3_env}"
-    "geos-*|random:2000|random/1,random/2|random/1 and random/2")
+    "geos-*|random:2000|random/1,random/2|random/1 and random/2"
+    "jolt-1.1.0|random:2000|random/1,random/2|random/1 and random/2|--node-path|${PROJECT_SOURCE_DIR}/build/npm/jolt/node_modules")
 set(_k 0)
 foreach(entry IN LISTS _repros)
   math(EXPR _k "${_k} + 1")

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """CTest "plugins: repro: <variant> ..." (docs/peers.md, "Repro programs"): `gjk-validate repro`
 writes a peer's standalone program for each given case; the program is built with the command its
-own comment gives (C and C++) or run by its language's interpreter (node with the project's planck,
-Debian's python3 for GEOS), and its printed answer ("answer distance|pointA|pointB ... HEX...")
+own comment gives (C and C++) or run by its language's interpreter (node with the project's npm
+package of the peer, Debian's python3 for GEOS), and its printed answer ("answer
+distance|pointA|pointB ... HEX...")
 must equal the answer `gjk-validate explain --json` gives for the case, bit for bit. The cases must
 hold an overlapping and a separated one (by the exact truth), so that the check cannot drift to
 one kind.
@@ -68,8 +69,8 @@ def program_output(path, node_path, env):
             fail(f'{path.name}: no one-line compile command in its comment')
         return run(['bash', '-c', m.group(1)], cwd=path.parent, env=dict(os.environ, **env))
     if path.suffix == '.js':
-        if not re.search(r'NODE_PATH=build/npm/planck/node_modules node ', text):
-            fail(f'{path.name}: its comment does not say how it finds planck')
+        if not re.search(r'NODE_PATH=build/npm/[a-z0-9-]+/node_modules node ', text):
+            fail(f'{path.name}: its comment does not say how it finds its package')
         env = dict(os.environ, NODE_PATH=node_path)
         return run(['node', path.name], cwd=path.parent, env=env)
     if path.suffix == '.py':
@@ -99,7 +100,8 @@ def main():
     ap.add_argument('--seed', default='1')
     ap.add_argument('--cases', required=True, help='case names, separated by commas')
     ap.add_argument('--work', required=True)
-    ap.add_argument('--node-path', default='', help="the project's planck: build/npm/planck/node_modules")
+    ap.add_argument('--node-path', default='',
+                    help="the project's npm packages of the peer: build/npm/<peer>/node_modules")
     ap.add_argument('--env', action='append', default=[],
                     help='NAME=VALUE for the compile command (BOX2D3: the Box2D v3 sources)')
     ap.add_argument('--expect-on-overlap', action='append', default=[],
