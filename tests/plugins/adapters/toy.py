@@ -35,6 +35,14 @@ query. The misbehaving ones answer right but time wrong, or describe themselves 
 prepared-missing declares `prepared ... shape` and answers one figure; timed-extra declares none
 and answers two; too-fast answers `timed ID 1` (below 1 ns a query); prepared-bad-scope declares
 the scope `world`; prepared-v1 gives a prepared line in a version-1 handshake.
+
+The `input NAME world SOURCE` line (protocol version 2): world.py is a float implementation that
+declares `input toy-world world ...`, so the host sends it every case as its world points rounded
+to float with identity transforms (tests/plugins/world_check.py checks what it was sent); it
+appends every request line it reads to $TOY_STATE_DIR/requests and answers like good on what it
+was given. The malformed ones are refused at the handshake: world-bad-form (`input NAME local`),
+world-twice (two input lines for one name), world-unknown (a name no implementation has),
+world-v1 (an input line in a version-1 handshake).
 """
 import os
 import select
@@ -208,6 +216,18 @@ def serve_watching():
         say(timed(tok, "pipeline") if tok[0] == "time" else answer(tok, "pipeline"))
 
 
+def input_lines(behaviour):
+    """The `input` lines of world.py and its malformed kin (protocol version 2)."""
+    name = "toy-" + behaviour
+    source = "tests/plugins/adapters/toy.py (a float library that takes world points)"
+    if behaviour == "world-unknown":
+        name = "toy-nobody"
+    form = "local" if behaviour == "world-bad-form" else "world"
+    say("input {} {} {}".format(name, form, source))
+    if behaviour == "world-twice":
+        say("input {} world {}".format(name, source))
+
+
 def main(behaviour):
     if sys.stdin.readline().split() != ["gjk2d-adapter", "1"]:
         sys.exit(1)
@@ -219,11 +239,12 @@ def main(behaviour):
     if behaviour in ("fork-hang", "setsid"):
         spawn_sleeper(behaviour == "setsid")
     version = {"version": 3, "contract": 2, "prepared": 2, "prepared-missing": 2,
-               "prepared-bad-scope": 2, "depth": 2, "depth-bad": 2,
-               "depth-zero": 2}.get(behaviour, 1)
+               "prepared-bad-scope": 2, "depth": 2, "depth-bad": 2, "depth-zero": 2,
+               "world": 2, "world-bad-form": 2, "world-twice": 2,
+               "world-unknown": 2}.get(behaviour, 1)
     say("gjk2d-adapter {}".format(version))
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
-    scalar = "quad" if behaviour == "bad-description" else "double"
+    scalar = {"bad-description": "quad", "world": "float"}.get(behaviour, "double")
     say("implementation toy-{} {} radius 0 vertex-edge brute force".format(behaviour, scalar))
     if behaviour == "contract":
         say("contract toy-contract overlap zero tests/plugins/adapters/toy.py, answer()")
@@ -238,11 +259,19 @@ def main(behaviour):
              "prepared-v1": "case"}.get(behaviour)
     if scope:
         say("prepared toy-{} {}".format(behaviour, scope))
+    if behaviour.startswith("world"):
+        input_lines(behaviour)
     say("ready")
     print("toy adapter {}: ready".format(behaviour), file=sys.stderr)  # into the plugin's log
     if behaviour == "pipeline":
         return serve_watching()
+    requests = None
+    if behaviour == "world":
+        requests = open(os.path.join(os.environ["TOY_STATE_DIR"], "requests"), "a")
     for line in sys.stdin:
+        if requests:
+            requests.write(line)
+            requests.flush()
         tok = line.split()
         if tok and tok[0] == "distance":
             say(answer(tok, behaviour))

@@ -125,6 +125,21 @@ Json worstViolationJson(const CampaignState& state, std::size_t k)
     return j;
 }
 
+// report.json's variants[].input: what the variant was given of each case, in its contract's words
+// ({"form", "source"}), with "given" (givenInput's words) and "cases": how many of the campaign's
+// cases it ran on (Stats::cases, every family), each given in that form.
+Json inputJson(const CampaignState& state, std::size_t k, const VariantInfo& v)
+{
+    std::uint64_t cases = 0;
+    for (const auto& f : state.families)
+        cases += f.stats[k].cases;
+    const Contract& c = contractOf(v);
+    return Json{{"form", inputFormName(c.input)},
+                {"source", c.inputSource},
+                {"given", givenInput(v)},
+                {"cases", cases}};
+}
+
 Json variantsJson(const CampaignState& state, const EvalContext& ctx)
 {
     Json out = Json::array();
@@ -152,6 +167,7 @@ Json variantsJson(const CampaignState& state, const EvalContext& ctx)
         if (contractOf(*v).overlap == Overlap::Penetration) // its depth is judged
             j["depth_bound"] = {{"formula", depthBoundFormula(*v)}};
         j["contract"] = contractJson(*v);
+        j["input"] = inputJson(state, k, *v);
         j["timing"] = timingJson(*v);
         j["worst_contract_violation"] = worstViolationJson(state, k);
         out.push_back(std::move(j));

@@ -10,7 +10,9 @@
 //                                                the written file's name and its name without the
 //                                                extension, float or double
 //   A_COUNT A_POINTS A_PAIRS A_RADIUS A_PX A_PY A_C A_S
-//                                                shape A as the variant is given it (B_... for B):
+//                                                shape A as the variant is given it (B_... for B;
+//                                                a variant given world points: its world case's,
+//                                                inputs/geometry.hpp, worldCase):
 //                                                A_POINTS is "x0, y0, x1, y1, ...", A_PAIRS
 //                                                "{x0, y0}, {x1, y1}, ..." (C and C++)
 //   REPORT_STATUS REPORT_DISTANCE REPORT_AX REPORT_AY REPORT_BX REPORT_BY REPORT_INVALID
@@ -43,6 +45,7 @@
 #include "implementations/plugins.hpp"
 #include "implementations/prepared.hpp"
 #include "implementations/variants.hpp"
+#include "inputs/geometry.hpp"
 #include "report/report.hpp"
 
 #include <fmt/format.h>
@@ -53,6 +56,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -167,8 +171,13 @@ Values valuesFor(const FoundRepro& t, const VariantInfo& v, const Case& c, const
     out["STEM"] = fs::path(file).stem().string();
     out["SCALAR"] = scalarName(v.scalar);
     // The inputs, as the host hands them to the plugin (implementations/servers.cpp: the prepared
-    // case's double or float copies). The float copies are the doubles rounded; literal() rounds.
-    const PreparedCase p = prepare(c);
+    // case's double or float copies; adapter.cpp, adapterCaseText: a variant given world points
+    // gets the world case). The float copies are the doubles rounded; literal() rounds.
+    const bool world = contractOf(v).input == InputForm::World;
+    const std::optional<Case> w = world ? worldCase(c, v.scalar == Scalar::Float) : std::nullopt;
+    if (world && !w) // the variant was not skipped (reproCommand): its world case fits
+        throw std::logic_error("repro: the world case of a case the variant ran on does not fit");
+    const PreparedCase p = prepare(world ? *w : c);
     shapeValues(out, "A", p.ad, p.xad, p.rad, v.scalar, cFamily);
     shapeValues(out, "B", p.bd, p.xbd, p.rbd, v.scalar, cFamily);
     const Json& a = detail["variants"][v.name];
@@ -184,9 +193,10 @@ Values valuesFor(const FoundRepro& t, const VariantInfo& v, const Case& c, const
         out[key] = answered ? shown(a[field][i]) : "none";
     out["REPORT_INVALID"] =
         answered && a["invalid"].is_string() ? a["invalid"].get<std::string>() : "none";
-    const Json& e = detail[v.scalar == Scalar::Float && detail.contains("exact_float_input")
-                               ? "exact_float_input"
-                               : "exact"];
+    const Json& e = world ? detail["world_input"][scalarName(v.scalar)]["exact"]
+                          : detail[v.scalar == Scalar::Float && detail.contains("exact_float_input")
+                                       ? "exact_float_input"
+                                       : "exact"];
     out["EXACT_DISTANCE"] = shown(e["distance"]);
     out["EXACT_OVERLAP"] = e["overlap"].get<bool>() ? "true" : "false";
     out["EXACT_SQUARED"] = e["squared"].get<std::string>();

@@ -4,6 +4,8 @@
 
 #include "inputs/geometry.hpp"
 
+#include <fmt/format.h>
+
 namespace gjkval
 {
 namespace
@@ -146,9 +148,7 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     vj["type"] = scalarName(vi.scalar);
     if (v.skipped)
     {
-        vj["skipped"] = v.plugin == PluginStatus::Refused ? kSkipRefused
-                        : v.notApplicable                 ? kSkipNotConvexOrder
-                                                          : kSkipNotRepresentable;
+        vj["skipped"] = v.skipWhy ? v.skipWhy : kSkipNotRepresentable;
         return vj;
     }
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
@@ -165,7 +165,12 @@ Json variantResultJson(const VariantInfo& vi, const VariantOutcome& v)
     vj["normal"] = pt(v.normal[0], v.normal[1]);
     vj["iterations"] = v.iterations;
     vj["stop"] = vi.plugin ? "plugin" : gjk::stopReasonName(v.stop); // a plugin gives no reason
-    vj["truth"] = vi.scalar == Scalar::Float ? "exact_float_input" : "exact";
+    // The key of the truth it was judged on; a variant given world points, its world case's.
+    vj["truth"] = v.worldInput ? fmt::format("world_input.{}.exact", scalarName(vi.scalar))
+                  : vi.scalar == Scalar::Float ? "exact_float_input"
+                                               : "exact";
+    if (v.worldInput) // given the world case, not the case (the detail's world_input)
+        vj["input"] = "world";
     vj["R"] = num(v.R);
     vj["bound"] = num(v.bound);
     vj["witness_bound"] = num(v.witnessBound);
@@ -239,6 +244,11 @@ Json perCaseJson(const Case& c, const std::string& family, const EvalContext& ct
         j["exact_float_input"] = truthDetail(c, ctx, o.exactFloat, true);
         j["input_rounding"] = num(o.inputRounding);
     }
+    for (const bool isFloat : {false, true}) // the world cases variants were given, with truths
+        if (const auto& w = o.world[isFloat ? 1 : 0])
+            j["world_input"][isFloat ? "float" : "double"] = {
+                {"exact", truthDetail(w->c, ctx, w->exact, false)},
+                {"input_rounding", num(w->inputRounding)}};
     Json vs = Json::object();
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
         vs[ctx.variants[k]->name] = variantResultJson(*ctx.variants[k], o.variants[k]);
@@ -263,6 +273,13 @@ Json caseDetail(const Case& c, const std::string& family, const EvalContext& ctx
     j["minkowski"] = std::move(mk);
     if (!o.rejected.empty())
         return j;
+    for (const bool isFloat : {false, true}) // the shapes those variants were given
+        if (const auto& w = o.world[isFloat ? 1 : 0])
+        {
+            Json& wj = j["world_input"][isFloat ? "float" : "double"];
+            wj["a"] = shapeDetail(w->c.a);
+            wj["b"] = shapeDetail(w->c.b);
+        }
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];

@@ -197,9 +197,11 @@ void judgePerimeter(VariantOutcome& v, ToCores&& toCores, double dc, double rA, 
 class Cores
 {
   public:
-    Cores(const Case& c, bool isFloat, const TruthShapes* truth)
+    // c: the view's case (viewCase); t: the view (inputView). A world case's numbers are in their
+    // scalar type already: rounding them to float again changes none.
+    Cores(const Case& c, int t, const TruthShapes* truth)
     {
-        const int t = isFloat ? 1 : 0;
+        const bool isFloat = viewIsFloat(t);
         exact::Shape a = toExact(c.a, isFloat), b = toExact(c.b, isFloat);
         radiusA_ = isFloat ? roundToFloat(c.a.radius) : c.a.radius;
         radiusB_ = isFloat ? roundToFloat(c.b.radius) : c.b.radius;
@@ -288,7 +290,7 @@ void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     if (!out.rejected.empty())
         return;
-    std::optional<Cores> cores[2]; // by input type: double, float-rounded
+    std::optional<Cores> cores[kInputViews]; // by view (inputView)
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         VariantOutcome& v = out.variants[k];
@@ -303,12 +305,12 @@ void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out)
             judgeOwn(v);
             continue;
         }
-        const bool isFloat = vi.scalar == Scalar::Float;
+        const int view = inputView(vi);
         auto getCores = [&]() -> const Cores&
         {
-            std::optional<Cores>& slot = cores[isFloat ? 1 : 0];
+            std::optional<Cores>& slot = cores[view];
             if (!slot)
-                slot.emplace(c, isFloat, out.shapes.get());
+                slot.emplace(viewCase(c, out, view), view, out.shapes.get());
             return *slot;
         };
         judgeDeclared(v, contract, getCores);

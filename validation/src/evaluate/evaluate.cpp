@@ -62,6 +62,8 @@ const char* misclassName(Misclass m)
 const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput)
 {
     const bool isFloat = v.scalar == Scalar::Float;
+    if (contractOf(v).input == InputForm::World) // gjk2d's own variants are never given it
+        return p.worldOk[isFloat ? 1 : 0] ? nullptr : kSkipWorldNotRepresentable;
     if (isFloat && !floatInput)
         return kSkipNotRepresentable;
     if (needsConvexOrder(v) && !p.binaryOk[isFloat ? 1 : 0])
@@ -131,9 +133,43 @@ exact::Options EvalContext::truthOptions() const
 bool EvalContext::needFloatTruth() const
 {
     for (auto* v : variants)
-        if (v->scalar == Scalar::Float)
+        if (v->scalar == Scalar::Float && contractOf(*v).input == InputForm::Case)
             return true;
     return false;
+}
+
+bool EvalContext::needWorldTruth(bool isFloat) const
+{
+    for (auto* v : variants)
+        if ((v->scalar == Scalar::Float) == isFloat && contractOf(*v).input == InputForm::World)
+            return true;
+    return false;
+}
+
+int inputView(const VariantInfo& v)
+{
+    return (contractOf(v).input == InputForm::World ? 2 : 0) + (v.scalar == Scalar::Float ? 1 : 0);
+}
+
+const Case& viewCase(const Case& c, const CaseOutcome& out, int view)
+{
+    if (!viewIsWorld(view))
+        return c;
+    const std::optional<WorldTruth>& w = out.world[view - 2];
+    if (!w)
+        throw std::logic_error("viewCase: the world case of '" + c.name + "' was not computed");
+    return w->c;
+}
+
+const exact::Result& viewTruth(const CaseOutcome& out, int view)
+{
+    if (viewIsWorld(view))
+    {
+        if (!out.world[view - 2])
+            throw std::logic_error("viewTruth: a world case's truth was not computed");
+        return out.world[view - 2]->exact;
+    }
+    return viewIsFloat(view) ? out.exactFloat : out.exact;
 }
 
 // Two kinds of failure, never mixed (hostile-input hardening: a broken invariant of the truth
@@ -144,13 +180,44 @@ bool EvalContext::needFloatTruth() const
 // code 4), never a "rejected" case.
 namespace
 {
-// The case's shapes on the exact side for one input type, prepared (validated:
-// std::invalid_argument names "shape A" or "shape B", as exact::distance does).
-void prepareShapes(const Case& c, bool isFloat, TruthShapes& s)
+// The shapes of a view's case (viewCase) on the exact side, prepared (validated:
+// std::invalid_argument names "shape A" or "shape B", as exact::distance does). A world case's
+// numbers are already in its scalar type: rounding them to float again changes none.
+void prepareShapes(const Case& c, int view, TruthShapes& s)
 {
-    const int t = isFloat ? 1 : 0;
-    s.a[t].emplace(toExact(c.a, isFloat), "shape A");
-    s.b[t].emplace(toExact(c.b, isFloat), "shape B");
+    const bool isFloat = viewIsFloat(view) && !viewIsWorld(view);
+    s.a[view].emplace(toExact(c.a, isFloat), "shape A");
+    s.b[view].emplace(toExact(c.b, isFloat), "shape B");
+}
+
+// The world cases' truths (CaseOutcome::world), for the scalar types whose variants need them and
+// whose world case fits (the condition of PreparedCase::worldOk: worldCase has a value). The world
+// case of a case the exact side took is one it takes (finite points, radius >= 0): its
+// std::invalid_argument would be a broken invariant of ours (std::logic_error).
+void computeWorldTruths(const Case& c, const EvalContext& ctx, const exact::Options& options,
+                        TruthShapes& shapes, CaseOutcome& out)
+{
+    for (const bool isFloat : {false, true})
+    {
+        if (!ctx.needWorldTruth(isFloat))
+            continue;
+        std::optional<Case> w = worldCase(c, isFloat);
+        if (!w)
+            continue;
+        const int view = 2 + (isFloat ? 1 : 0);
+        WorldTruth& t = out.world[view - 2].emplace();
+        t.c = std::move(*w);
+        try
+        {
+            prepareShapes(t.c, view, shapes);
+        }
+        catch (const std::invalid_argument& e)
+        {
+            throw std::logic_error(fmt::format("case '{}': its world case: {}", c.name, e.what()));
+        }
+        t.exact = ctx.truth(*shapes.a[view], *shapes.b[view], options);
+        t.inputRounding = std::abs(t.exact.distance - out.exact.distance);
+    }
 }
 } // namespace
 
@@ -160,7 +227,7 @@ void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     const exact::Options options = ctx.truthOptions();
     try
     {
-        prepareShapes(c, false, *shapes);
+        prepareShapes(c, 0, *shapes);
         out.exact = ctx.truth(*shapes->a[0], *shapes->b[0], options);
     }
     catch (const std::invalid_argument& e)
@@ -175,11 +242,12 @@ void computeTruth(const Case& c, const EvalContext& ctx, CaseOutcome& out)
     // nothing is caught here.
     if (ctx.needFloatTruth() && representableInFloat(c))
     {
-        prepareShapes(c, true, *shapes);
+        prepareShapes(c, 1, *shapes);
         out.exactFloat = ctx.truth(*shapes->a[1], *shapes->b[1], options);
         out.hasFloatTruth = true;
         out.inputRounding = std::abs(out.exactFloat.distance - out.exact.distance);
     }
+    computeWorldTruths(c, ctx, options, *shapes, out);
 }
 
 namespace
@@ -212,6 +280,29 @@ class CaseScales
     bool have_[2][2] = {{false, false}, {false, false}};
     ShapeIn fa_, fb_;
     bool haveFloatShapes_ = false;
+};
+
+// The frame scales of the case each view gives (inputView): the case's (CaseScales, its numbers
+// rounded to float for view 1), or the world case's (its numbers already in their scalar type).
+class ViewScales
+{
+  public:
+    ViewScales(const Case& c, const CaseOutcome& out) : c_(c), out_(out), own_(c) {}
+    const FrameScales& get(int view, bool worldFrame)
+    {
+        if (!viewIsWorld(view))
+            return own_.get(worldFrame, viewIsFloat(view));
+        std::optional<CaseScales>& w = world_[view - 2];
+        if (!w)
+            w.emplace(viewCase(c_, out_, view));
+        return w->get(worldFrame, false);
+    }
+
+  private:
+    const Case& c_;
+    const CaseOutcome& out_;
+    CaseScales own_;
+    std::optional<CaseScales> world_[2];
 };
 
 // The bounds a variant's answer is judged against (distance, witness points, and the depth where
@@ -419,6 +510,7 @@ bool takePluginAnswer(const CaseOutcome& out, std::size_t k, const VariantInfo& 
     if (a.status == PluginStatus::Refused)
     {
         v.skipped = true;
+        v.skipWhy = kSkipRefused;
         return false;
     }
     if (a.status != PluginStatus::Ok)
@@ -461,26 +553,29 @@ void runVariants(const Case& c, const PreparedCase& p, const EvalContext& ctx, C
     out.variants.assign(ctx.variants.size(), {});
     if (!out.rejected.empty())
         return;
-    CaseScales scales(c);
+    ViewScales scales(c, out);
     for (std::size_t k = 0; k < ctx.variants.size(); ++k)
     {
         const VariantInfo& vi = *ctx.variants[k];
         VariantOutcome& v = out.variants[k];
-        const bool isFloat = vi.scalar == Scalar::Float;
         if (const char* why = skipReason(vi, p, out.hasFloatTruth))
         {
             v.skipped = true;
+            v.skipWhy = why;
             v.notApplicable = why == kSkipNotConvexOrder;
             continue;
         }
-        const exact::Result& truth = isFloat ? out.exactFloat : out.exact;
+        // The variant's view: the case, or the world case it was given (its truth, its scales).
+        const int view = inputView(vi);
+        v.worldInput = viewIsWorld(view);
+        const exact::Result& truth = viewTruth(out, view);
         if (vi.plugin && !takePluginAnswer(out, k, vi, v))
             continue;
         if (!vi.plugin)
             runQuery(c, p, vi, truth.distance, v);
         // The normalised error uses the scale of the variant's own compute frame.
-        v.R = scales.get(vi.options.frame == gjk::Frame::World, isFloat).R;
-        boundsOf(vi, c, scales.get(false, isFloat), truth, v);
+        v.R = scales.get(view, vi.options.frame == gjk::Frame::World).R;
+        boundsOf(vi, viewCase(c, out, view), scales.get(view, false), truth, v);
         judge(v, truth, vi.scalar, vi.options.correctlyRounded, contractOf(vi).overlap);
     }
 }

@@ -26,9 +26,13 @@ namespace gjkval
 {
 
 // Why a variant does not run on a case (skipped, not a failure), or null. floatInput: the case's
-// float-rounded input is usable (finite, with an exact truth when one is needed).
+// float-rounded input is usable (finite, with an exact truth when one is needed). A variant given
+// world points (InputForm::World) runs where its world case fits its scalar type
+// (PreparedCase::worldOk), whatever the case's own float rounding.
 const char* skipReason(const VariantInfo& v, const PreparedCase& p, bool floatInput);
 inline constexpr const char* kSkipNotRepresentable = "input not representable in float";
+inline constexpr const char* kSkipWorldNotRepresentable =
+    "world points not representable in the implementation's scalar type";
 inline constexpr const char* kSkipRefused = "refused by the implementation (plugin)";
 inline constexpr const char* kSkipNotConvexOrder =
     "not applicable: binary-search support needs each shape's points in convex order";
@@ -106,6 +110,10 @@ struct VariantOutcome
 {
     bool skipped = false;       // not run: skipReason() (not representable, or not applicable)
     bool notApplicable = false; // skipped because the variant's precondition fails (convex order)
+    const char* skipWhy = nullptr; // skipped: skipReason()'s, or kSkipRefused
+    // Given the case's world case (InputForm::World), not the case: judged on it
+    // (CaseOutcome::world)
+    bool worldInput = false;
     double distance = 0;
     std::array<double, 2> pointA{}, pointB{}, normal{};
     int iterations = 0;
@@ -169,12 +177,36 @@ struct VariantOutcome
     bool keepsContract() const { return violation == Violation::None; }
 };
 
+// The inputs a variant may be given of a case, its views: 0 the case as given, 1 its numbers
+// rounded to float (a float variant), 2 its world case in double, 3 its world case rounded to float
+// (a variant whose contract's input is InputForm::World; inputs/geometry.hpp, worldCase).
+inline constexpr int kInputViews = 4;
+int inputView(const VariantInfo& v);
+inline bool viewIsFloat(int view)
+{
+    return view % 2 == 1;
+}
+inline bool viewIsWorld(int view)
+{
+    return view >= 2;
+}
+
 // A case's shapes on the exact side, prepared once (hull and interval world points) by
-// computeTruth for its truths and kept for the witness checks, which read the same hulls: index 0
-// the input, 1 the input rounded to float (when the float truth was computed).
+// computeTruth for its truths and kept for the witness checks, which read the same hulls: by view
+// (inputView), each when its truth was computed.
 struct TruthShapes
 {
-    std::optional<exact::PreparedShape> a[2], b[2];
+    std::optional<exact::PreparedShape> a[kInputViews], b[kInputViews];
+};
+
+// The world case a variant given world points runs on (InputForm::World), for one scalar type:
+// the case, its exact truth, and |exact.distance - the case's exact distance| (its input change,
+// the report's input_rounding).
+struct WorldTruth
+{
+    Case c;
+    exact::Result exact;
+    double inputRounding = 0;
 };
 
 struct CaseOutcome
@@ -186,6 +218,9 @@ struct CaseOutcome
     bool hasFloatTruth = false;
     exact::Result exactFloat; // exact truth of the float-rounded input
     double inputRounding = 0; // |exactFloat.distance - exact.distance|
+    // The world cases, [0] double and [1] float, computed when some variant of that scalar type is
+    // given world points and the world case fits (PreparedCase::worldOk); else empty.
+    std::optional<WorldTruth> world[2];
     std::vector<VariantOutcome> variants;
     // The plugin variants' answers (answerPluginVariants), by variant index; empty without them.
     std::vector<ExternalAnswer> external;
@@ -214,7 +249,10 @@ struct EvalContext
     // The children that answer shared-library plugins for a campaign, kept from chunk to chunk
     // (used between parallel phases only); null: children for each call only.
     std::shared_ptr<PluginServers> pluginServers;
+    // Some variant given the case as it is (InputForm::Case) is float: the float truth is needed.
     bool needFloatTruth() const;
+    // Some variant of that scalar type is given world points: the world case's truth is needed.
+    bool needWorldTruth(bool isFloat) const;
     bool hasPlugins() const;
     // Some variant's contract says Penetration: the truth then carries the exact signed distance.
     bool needPenetration() const;
@@ -286,6 +324,12 @@ inline bool overlapsBySigned(const exact::Result& r)
 {
     return r.hasSigned && r.signedUpper < 0;
 }
+
+// The case of a view (inputView): c for 0 and 1 (1 rounded to float where it is read), the world
+// case (out.world) for 2 and 3; std::logic_error when that world case was not computed.
+const Case& viewCase(const Case& c, const CaseOutcome& out, int view);
+// The exact truth a view is judged on: out.exact, out.exactFloat, or the world case's.
+const exact::Result& viewTruth(const CaseOutcome& out, int view);
 
 // Unit in the last place of the variant's type at x > 0.
 double ulpOf(Scalar s, double x);

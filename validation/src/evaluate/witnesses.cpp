@@ -16,18 +16,20 @@ namespace
 {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// A case's shapes on the exact side, as given and rounded to float: computeTruth's prepared shapes
-// (TruthShapes), or prepared here when a caller gave none.
+// A case's shapes on the exact side, by view (inputView: as given, rounded to float, its world
+// cases): computeTruth's prepared shapes (TruthShapes), or prepared here when a caller gave none.
 class ExactShapes
 {
   public:
-    ExactShapes(const Case& c, const TruthShapes* truth) : c_(c), truth_(truth) {}
+    ExactShapes(const Case& c, const CaseOutcome& out) : c_(c), out_(out), truth_(out.shapes.get())
+    {
+    }
     // max(0, dist(p, shape) - radius), correctly rounded: exact::pointToShapeDistance's value
     // (decided in floating point or by its GMP route); `exactCount` counts the points the GMP
     // route measured.
-    double distance(bool isFloat, bool ofA, const std::array<double, 2>& p, int& exactCount)
+    double distance(int view, bool ofA, const std::array<double, 2>& p, int& exactCount)
     {
-        Pair& s = get(isFloat);
+        Pair& s = get(view);
         const exact::Point q{p[0], p[1]};
         bool gmp = false;
         const double d = exact::pointToShapeDistance(ofA ? *s.pa : *s.pb, q, &gmp);
@@ -40,9 +42,8 @@ class ExactShapes
     {
         const exact::PreparedShape *pa = nullptr, *pb = nullptr;
     };
-    Pair& get(bool isFloat)
+    Pair& get(int t)
     {
-        const int t = isFloat ? 1 : 0;
         if (!have_[t])
         {
             Pair& s = shapes_[t];
@@ -53,8 +54,11 @@ class ExactShapes
             }
             else
             {
-                own_.a[t].emplace(toExact(c_.a, isFloat), "shape A");
-                own_.b[t].emplace(toExact(c_.b, isFloat), "shape B");
+                // A world case's numbers are in their scalar type already.
+                const Case& c = viewCase(c_, out_, t);
+                const bool isFloat = viewIsFloat(t) && !viewIsWorld(t);
+                own_.a[t].emplace(toExact(c.a, isFloat), "shape A");
+                own_.b[t].emplace(toExact(c.b, isFloat), "shape B");
                 s.pa = &*own_.a[t];
                 s.pb = &*own_.b[t];
             }
@@ -63,10 +67,11 @@ class ExactShapes
         return shapes_[t];
     }
     const Case& c_;
+    const CaseOutcome& out_;
     const TruthShapes* truth_;
     TruthShapes own_;
-    Pair shapes_[2];
-    bool have_[2] = {false, false};
+    Pair shapes_[kInputViews];
+    bool have_[kInputViews] = {};
 };
 
 // The witness verdict (judge() left the rest): off its shape comes before the gap.
@@ -77,11 +82,11 @@ class ExactShapes
 // clause, contract_judge.cpp.) Then the witness gap is how far
 // the points are from the other shape, and within the witness bound the answer is valid: the
 // failure WitnessGap set from ||pB - pA|| is withdrawn (the other reasons stand).
-void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, bool isFloat)
+void acceptTwoCommonPoints(VariantOutcome& v, ExactShapes& shapes, int view)
 {
     v.witnessPoints += 2;
-    const double aInB = shapes.distance(isFloat, false, v.pointA, v.witnessExact);
-    const double bInA = shapes.distance(isFloat, true, v.pointB, v.witnessExact);
+    const double aInB = shapes.distance(view, false, v.pointA, v.witnessExact);
+    const double bInA = shapes.distance(view, true, v.pointB, v.witnessExact);
     const double gap = std::max(aInB, bInA);
     if (!(gap <= v.witnessBound))
         return;
@@ -108,7 +113,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
 {
     if (!out.rejected.empty())
         return;
-    ExactShapes shapes(c, out.shapes.get());
+    ExactShapes shapes(c, out);
     const std::size_t nv = ctx.variants.size();
     struct Measured // a variant's two points' distances, and whether the GMP route measured each
     {
@@ -122,14 +127,15 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         if (v.skipped || v.nonfinite ||
             (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok))
             continue;
-        const bool isFloat = ctx.variants[k]->scalar == Scalar::Float;
-        // Variants often return the very same witness points (same scalar type): each distinct
-        // point is measured once per case; a variant's counts include the points it shares.
+        // The shapes the variant was given: the case (rounded to float) or its world case.
+        const int view = inputView(*ctx.variants[k]);
+        // Variants often return the very same witness points (same view): each distinct point is
+        // measured once per case; a variant's counts include the points it shares.
         double wa = -1, wb = -1;
         Measured& mk = m[k];
         for (std::size_t j = 0; j < k && (wa < 0 || wb < 0); ++j)
         {
-            if (m[j].done == 0 || (ctx.variants[j]->scalar == Scalar::Float) != isFloat)
+            if (m[j].done == 0 || inputView(*ctx.variants[j]) != view)
                 continue;
             const VariantOutcome& u = out.variants[j];
             if (wa < 0 && u.pointA == v.pointA)
@@ -146,13 +152,13 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         int n = 0;
         if (wa < 0)
         {
-            wa = shapes.distance(isFloat, true, v.pointA, n);
+            wa = shapes.distance(view, true, v.pointA, n);
             mk.exactA = char(n);
         }
         n = 0;
         if (wb < 0)
         {
-            wb = shapes.distance(isFloat, false, v.pointB, n);
+            wb = shapes.distance(view, false, v.pointB, n);
             mk.exactB = char(n);
         }
         v.witnessPoints += 2;
@@ -161,7 +167,7 @@ void checkWitnesses(const Case& c, const EvalContext& ctx, CaseOutcome& out)
         mk.b = wb;
         mk.done = 1;
         if (v.invalid == Invalid::WitnessGap && v.distance == 0)
-            acceptTwoCommonPoints(v, shapes, isFloat);
+            acceptTwoCommonPoints(v, shapes, view);
         judgeWitnesses(v, wa, wb);
     }
     judgeContracts(c, ctx, out); // the verdict by each implementation's contract, on the measures

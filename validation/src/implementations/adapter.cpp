@@ -9,6 +9,7 @@
 #include "implementations/containment.hpp"
 #include "implementations/plugins.hpp"
 #include "implementations/prepared.hpp"
+#include "inputs/geometry.hpp"
 
 #include <fmt/format.h>
 
@@ -23,6 +24,7 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -379,17 +381,60 @@ AdapterDescription describeAdapter(const std::string& path, const std::string& c
     }
 }
 
+namespace
+{
+// The case of p's double inputs (the numbers prepare() copied from it, bit for bit).
+ShapeIn shapeOf(const CasePoints<double>& pts, double radius, const gjk::Transform<double>& xf)
+{
+    ShapeIn s;
+    for (const auto& q : pts)
+        s.points.push_back({q.x, q.y});
+    s.radius = radius;
+    s.px = xf.p.x;
+    s.py = xf.p.y;
+    s.c = xf.q.c;
+    s.s = xf.q.s;
+    return s;
+}
+
+// An implementation that takes the world case (InputForm::World): its world points in its scalar
+// type, identity transforms (inputs/geometry.hpp, worldCase). Only cases whose world case fits
+// are sent (skipReason, PreparedCase::worldOk).
+void appendWorldCase(std::string& out, const VariantInfo& v, const PreparedCase& p)
+{
+    Case c;
+    c.a = shapeOf(p.ad, p.rad, p.xad);
+    c.b = shapeOf(p.bd, p.rbd, p.xbd);
+    const std::optional<Case> w = worldCase(c, v.scalar == Scalar::Float);
+    if (!w)
+        throw std::logic_error(fmt::format(
+            "variant {}: a case whose world case does not fit its scalar type was sent", v.name));
+    for (const ShapeIn* s : {&w->a, &w->b})
+    {
+        CasePoints<double> pts;
+        for (const auto& q : s->points)
+            pts.push_back({q[0], q[1]});
+        out += s == &w->a ? "A " : " B ";
+        appendShape(out, pts, s->radius, gjk::Transform<double>{{0, 0}, {1, 0}});
+    }
+}
+} // namespace
+
 std::string adapterCaseText(const VariantInfo& v, const PreparedCase& p)
 {
-    std::string out = "A ";
-    if (v.scalar == Scalar::Float)
+    std::string out;
+    if (contractOf(v).input == InputForm::World)
+        appendWorldCase(out, v, p);
+    else if (v.scalar == Scalar::Float)
     {
+        out = "A ";
         appendShape(out, p.af, p.raf, p.xaf);
         out += " B ";
         appendShape(out, p.bf, p.rbf, p.xbf);
     }
     else
     {
+        out = "A ";
         appendShape(out, p.ad, p.rad, p.xad);
         out += " B ";
         appendShape(out, p.bd, p.rbd, p.xbd);

@@ -1,6 +1,6 @@
 // The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md,
 // "Executable adapters"): the host's version line, then the adapter's library, implementation,
-// contract and prepared lines, each checked, to its `ready`.
+// contract, prepared and input lines, each checked, to its `ready`.
 #include "implementations/adapter_wire.hpp"
 
 namespace gjkval::adapterwire
@@ -181,6 +181,33 @@ void preparedLine(const std::string& line, int version, std::vector<AdapterImple
         throw bad(fmt::format("the scope '{}' is neither shape nor case", t[2].substr(0, 80)));
 }
 
+// One `input NAME world SOURCE...` line (version 2), for the implementation NAME declared before:
+// the library cannot take the case's transform exactly, so the host sends that implementation every
+// case as its world case (inputs/geometry.hpp, worldCase) and judges it on that. SOURCE: why (the
+// library's file:line).
+void inputLine(const std::string& line, int version, std::vector<AdapterImplementation>& impls)
+{
+    const std::vector<std::string> t = tokens(line);
+    auto bad = [&](const std::string& why)
+    { return AdapterFailure(fmt::format("bad description: {}: {}", quoted80(line), why)); };
+    if (version < 2)
+        throw bad("an input line needs protocol version 2 (the adapter answered "
+                  "'gjk2d-adapter 1')");
+    if (t.size() < 3)
+        throw bad("an input line is `input NAME world SOURCE...`");
+    auto it = std::find_if(impls.begin(), impls.end(),
+                           [&](const AdapterImplementation& a) { return a.name == t[1]; });
+    if (it == impls.end())
+        throw bad("no implementation of that name before it");
+    if (it->contract.input != InputForm::Case)
+        throw bad("a second input line for that implementation");
+    if (t[2] != "world")
+        throw bad(fmt::format("the input form '{}' is not world", t[2].substr(0, 80)));
+    it->contract.input = InputForm::World; // beside its contract lines, own or declared
+
+    it->contract.inputSource = restAfter(line, 3);
+}
+
 // Why the handshake stopped short: the adapter's exit, or the limit.
 [[noreturn]] void handshakeCut(Process& p, Io io, double limit)
 {
@@ -225,6 +252,8 @@ AdapterDescription handshake(Process& p, double limit)
             contractLine(line, d.implementations);
         else if (t[0] == "prepared")
             preparedLine(line, d.version, d.implementations);
+        else if (t[0] == "input")
+            inputLine(line, d.version, d.implementations);
         else
             throw AdapterFailure(fmt::format(
                 "bad description: unexpected line {} (a second library, a 65th implementation, "

@@ -43,6 +43,20 @@ bool parseOverlap(const std::string& word, Overlap& out)
     return false;
 }
 
+const char* inputFormName(InputForm f)
+{
+    return f == InputForm::World ? "world" : "case";
+}
+
+std::string givenInput(const VariantInfo& v)
+{
+    const Contract& c = contractOf(v);
+    if (c.input == InputForm::Case)
+        return "the case as given";
+    return fmt::format("world points {} ({})",
+                       v.scalar == Scalar::Float ? "rounded to float" : "in double", c.inputSource);
+}
+
 Contract ownContract(const gjk::Options& options)
 {
     Contract c;
@@ -127,6 +141,7 @@ Json contractJson(const VariantInfo& v)
                  {{"abs", orNull(c.depthAbsTolerance)},
                   {"rel", orNull(c.depthRelTolerance)},
                   {"source", c.depthSource}}},
+                {"input", {{"form", inputFormName(c.input)}, {"source", c.inputSource}}},
                 {"judged_by", judgedBy(v)},
                 {"judged_by_depth", judgedByDepth(v)}};
 }

@@ -33,6 +33,18 @@ const char* overlapName(Overlap o);
 // The kind a word names; false for none.
 bool parseOverlap(const std::string& word, Overlap& out);
 
+// What an implementation is given of each case: the case as it is (its points and transforms),
+// or its world case (inputs/geometry.hpp, worldCase: world points in the implementation's scalar
+// type, identity transforms), for a library that cannot take the case's transform exactly (an
+// adapter's `input NAME world` line; not in the C plugin ABI). Its truth, bounds and every
+// judgement are then on the world case (evaluate/evaluate.hpp, CaseOutcome::world).
+enum class InputForm
+{
+    Case,
+    World,
+};
+const char* inputFormName(InputForm f); // "case", "world": the report's and the protocol's words
+
 struct Contract
 {
     // gjk2d's own contract: every failure of gjk2d's judge (evaluate/evaluate.hpp, failedAnswer)
@@ -51,6 +63,8 @@ struct Contract
     // Negative: not stated: gjk2d's depth bound for the scalar type stands in.
     double depthAbsTolerance = -1, depthRelTolerance = -1;
     std::string depthSource; // "" none stated
+    InputForm input = InputForm::Case;
+    std::string inputSource; // why the library cannot take the case as given ("" for Case)
 
     bool statesTolerance() const { return absTolerance >= 0 || relTolerance >= 0; }
     bool statesDepthTolerance() const { return depthAbsTolerance >= 0 || depthRelTolerance >= 0; }
@@ -70,7 +84,8 @@ std::string checkContract(const Contract& c);
 const Contract& contractOf(const VariantInfo& v);
 // report.json's variants[].contract: {"own", "overlap", "overlap_source", "tolerance": {"abs",
 // "rel", "source"} (null members: not stated), "margin", "margin_source", "depth": {"abs", "rel",
-// "source"} (null members: not stated), "judged_by", "judged_by_depth"} where judged_by says in
+// "source"} (null members: not stated), "input": {"form": "case"|"world", "source"}, "judged_by",
+// "judged_by_depth"} where judged_by says in
 // words what the distance is held to ("FCL's stated tolerance ..." or "gjk2d's bound for double:
 // no tolerance stated") and judged_by_depth what the depth is held to (judgedByDepth).
 Json contractJson(const VariantInfo& v);
@@ -82,5 +97,8 @@ std::string judgedBy(const VariantInfo& v);
 // contract: gjk2d's depth bound for double" (double-signed), or, for an overlap kind that answers
 // no depth, "no depth answered (overlap zero)" (gjk2d's double: "... (overlap common-point)").
 std::string judgedByDepth(const VariantInfo& v);
+// In words, what the variant is given of each case: "the case as given", or "world points rounded
+// to float (SOURCE)" ("world points in double (SOURCE)" for a double implementation).
+std::string givenInput(const VariantInfo& v);
 
 } // namespace gjkval

@@ -37,6 +37,8 @@ PreparedCase prepare(const Case& c)
     p.raf = float(c.a.radius);
     p.rbf = float(c.b.radius);
     p.floatOk = representableInFloat(c);
+    p.worldOk[0] = worldCaseFits(c, false);
+    p.worldOk[1] = worldCaseFits(c, true);
     auto convex = [](const auto& pts)
     {
         if (int(pts.size()) <= kLinearSupportMaxPoints)

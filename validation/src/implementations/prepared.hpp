@@ -35,6 +35,9 @@ struct PreparedCase
     // Both shapes' points in convex order (or at most kLinearSupportMaxPoints of them), as double
     // [0] and as float-rounded [1]: the precondition of SupportStrategy::BinarySearch.
     bool binaryOk[2] = {true, true};
+    // The case's world case (inputs/geometry.hpp, worldCase) fits double [0] and float [1]: what
+    // an implementation given world points (InputForm::World) needs to run on it.
+    bool worldOk[2] = {true, true};
 
     template <class T> gjk::DistanceInput<T> input() const
     {

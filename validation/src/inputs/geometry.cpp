@@ -66,6 +66,57 @@ std::vector<P2> worldPoints(const ShapeIn& s)
     return out;
 }
 
+namespace
+{
+// A number of the world case in the implementation's scalar type (as a double).
+double inScalar(double v, bool toFloat)
+{
+    return toFloat ? roundToFloat(v) : v;
+}
+
+// Each world point of s (worldCase) through f in order; false as soon as one, or the radius, is
+// not finite.
+template <class F> bool forWorldPoints(const ShapeIn& s, bool toFloat, F&& f)
+{
+    for (const auto& p : s.points)
+    {
+        const P2 w = applyTransform(s, p);
+        const P2 q{inScalar(w[0], toFloat), inScalar(w[1], toFloat)};
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1]))
+            return false;
+        f(q);
+    }
+    return std::isfinite(inScalar(s.radius, toFloat));
+}
+
+std::optional<ShapeIn> worldShape(const ShapeIn& s, bool toFloat)
+{
+    ShapeIn w; // the transform: the identity (ShapeIn's defaults)
+    w.points.reserve(s.points.size());
+    if (!forWorldPoints(s, toFloat, [&](const P2& q) { w.points.push_back(q); }))
+        return std::nullopt;
+    w.radius = inScalar(s.radius, toFloat);
+    return w;
+}
+} // namespace
+
+std::optional<Case> worldCase(const Case& c, bool toFloat)
+{
+    std::optional<ShapeIn> a = worldShape(c.a, toFloat), b = worldShape(c.b, toFloat);
+    if (!a || !b)
+        return std::nullopt;
+    Case w = c;
+    w.a = std::move(*a);
+    w.b = std::move(*b);
+    return w;
+}
+
+bool worldCaseFits(const Case& c, bool toFloat)
+{
+    auto none = [](const P2&) {};
+    return forWorldPoints(c.a, toFloat, none) && forWorldPoints(c.b, toFloat, none);
+}
+
 bool inConvexOrder(const std::vector<P2>& p)
 {
     const std::size_t n = p.size();

@@ -5,6 +5,7 @@
 #include "inputs/cases.hpp"
 
 #include <array>
+#include <optional>
 #include <vector>
 
 namespace gjkval
@@ -14,6 +15,20 @@ using P2 = std::array<double, 2>;
 
 P2 applyTransform(const ShapeIn& s, P2 p); // c*x - s*y + px, s*x + c*y + py
 std::vector<P2> worldPoints(const ShapeIn& s);
+
+// The world case of a case, for an implementation that cannot take its transforms exactly (the
+// adapter protocol's `input NAME world` line, docs/validate-your-gjk.md): each point mapped by its
+// shape's transform in double, x' = (c*x - s*y) + px, y' = (s*x + c*y) + py, each operation
+// rounded to double (applyTransform; the project builds with -ffp-contract=off: no FMA), then,
+// for a float implementation (toFloat), rounded to float; the radius rounded to float likewise;
+// the transform the identity (p = (0, 0), c = 1, s = 0). Name, source and comment are kept. The
+// one home of what such an implementation is given, judged on and reproduced with. Empty when a
+// number of it is not finite (a point that overflows in double, or in float for toFloat): the
+// variant skips that case (kSkipWorldNotRepresentable, evaluate/evaluate.hpp).
+std::optional<Case> worldCase(const Case& c, bool toFloat);
+// worldCase(c, toFloat) has a value: the same numbers checked, nothing built (prepare() asks it
+// of every case).
+bool worldCaseFits(const Case& c, bool toFloat);
 // Counter-clockwise convex hull (Andrew's monotone chain, collinear points dropped); fewer than 3
 // points for degenerate sets.
 std::vector<P2> convexHull(std::vector<P2> pts);

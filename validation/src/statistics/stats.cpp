@@ -656,7 +656,9 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
         return;
     }
     ++cases;
-    addTruth(*this, vi.scalar == Scalar::Float ? o.exactFloat.fallbacks : o.exact.fallbacks);
+    // The truth the answer was judged on: the case's, its float rounding's, or its world case's.
+    const int view = inputView(vi);
+    addTruth(*this, viewTruth(o, view).fallbacks);
     failures += v.failed ? 1 : 0;
     addContract(*this, v, name, index);
     if (v.plugin != PluginStatus::NotRun && v.plugin != PluginStatus::Ok)
@@ -675,7 +677,12 @@ void Stats::add(const VariantOutcome& v, const std::string& name, std::uint64_t 
         addJudged(*this, v, name, index);
     if (!v.outOfRange && v.depthJudged)
         penetration.add(v, name, index);
-    if (vi.scalar == Scalar::Float)
+    if (viewIsWorld(view)) // |exact(world case) - exact(case)|, double or float
+    {
+        hasInputRounding = true;
+        inputRounding.add(o.world[view - 2]->inputRounding, name, index);
+    }
+    else if (vi.scalar == Scalar::Float)
     {
         hasInputRounding = true;
         inputRounding.add(o.inputRounding, name, index);
