@@ -23,8 +23,8 @@
 //
 // What it takes (the handshake's lines):
 // - `input jolt-1.1.0 world`: the host sends each case as world points rounded to float with the
-//   identity transform. Jolt takes a rotation as a float quaternion (Quat, Math/Quat.h:264) and, more
-//   to the point, places a ConvexHullShape by its centre of mass: the constructor computes it and
+//   identity transform. Jolt takes a rotation as a float quaternion (Math/Quat.h:264) and, more to
+//   the point, places a ConvexHullShape by its centre of mass: the constructor computes it and
 //   stores the points relative to it, in float (ConvexHullShape.cpp:82-83, 153), so even an exact
 //   input is recentred by Jolt's own arithmetic. The adapter hands Jolt the world points as they
 //   come (body position 0, rotation the identity): what Jolt then does with them (the recentring)
@@ -53,25 +53,27 @@
 // Why two: sCollideConvexVsConvex inflates shape 1 by mMaxSeparationDistance as a convex radius
 // (at most 1 in EPA) and subtracts it again from |point2 - point1| in float (ConvexShape.cpp:93,
 // 113-121, 134, 141), so with one query at U for every case EPA's overlap depths were taken on a
-// rounded shape: measured (docs/peers.md, "## Jolt") a median relative depth error of 6e-6 and at
-// most 1.7e-3, against 4e-9 and 9e-6 in two steps; and the cancellation costs about an ulp of U on
-// a separated distance, hence U as small as a cheap bound allows.
-// The answer: CollideShapeResult's mPenetrationDepth ("If CollideShapeSettings::mMaxSeparationDistance
-// > 0 this number can be negative to indicate that the objects are separated by -mPenetrationDepth.
-// The contact points are the closest points in that case", CollideShape.h:62), so the distance is
-// -mPenetrationDepth, and the x, y of mContactPointOn1 and mContactPointOn2 (world space with base
-// offset 0, CollideShape.h:59-60); iterations -1 (Jolt does not report them).
+// rounded shape: measured (docs/peers.md, "## Jolt") a median relative depth error of 2.3e-6 and
+// at most 0.027, against 4.9e-9 and 1.8e-4 in two steps; and the cancellation costs about an ulp
+// of U on a separated distance, hence U as small as a cheap bound allows.
+// The answer: CollideShapeResult's mPenetrationDepth ("If
+// CollideShapeSettings::mMaxSeparationDistance > 0 this number can be negative to indicate that
+// the objects are separated by -mPenetrationDepth. The contact points are the closest points in
+// that case", CollideShape.h:62), so the distance is -mPenetrationDepth, and the x, y of
+// mContactPointOn1 and mContactPointOn2 (world space with base offset 0, CollideShape.h:59-60);
+// iterations -1 (Jolt does not report them).
 //
 // Prepared shapes (`prepared jolt-1.1.0 case`): each shape's ConvexHullShape is built once from the
-// case's (world) points with the case's h, with its TransformedShape; a query is one CollideShape
-// on them (query() below). A `time` request prepares its 2m shapes once, timed apart, before its
-// timed loop; a `distance` request goes through the same prepare() and query().
+// case's (world) points with the case's h, with its TransformedShape; a query is the one or two
+// CollideShape calls on them (query() below). A `time` request prepares its 2m shapes once, timed
+// apart, before its timed loop; a `distance` request goes through the same prepare() and query().
 //
 // The contract (the `contract` lines, CONTRACT below), read in Jolt's sources (JoltPhysics at the
-// snapshot of 2026-06-30, 3b47ec39, whose collision files are the same since 34d7cf8b of
-// 2026-04-30; v5.6.0 followed on 2026-07-11):
+// snapshot of 2026-06-30, 3b47ec39, where the files cited last changed on 2026-06-13 at the
+// latest, c799c896; the release v5.6.0 that jolt-physics 1.1.0 builds followed):
 // - overlap `penetration`: mPenetrationDepth, "move shape 2 by this distance to resolve the
-//   collision" (CollideShape.h:62), with the two contact points on their shapes (CollideShape.h:59-60);
+//   collision" (CollideShape.h:62), with the two contact points on their shapes
+//   (CollideShape.h:59-60);
 // - tolerance abs 1e-4: "If objects are closer than this distance, they are considered to be
 //   colliding (used for GJK)" (CollideSettingsBase::mCollisionTolerance, CollideShape.h:82-83;
 //   cDefaultCollisionTolerance = 1.0e-4f, PhysicsSettings.h:9-10);
@@ -204,8 +206,8 @@ function prismHalfHeight(a, b) {
 }
 
 // The distance of the nearest pair of points, one of each shape: at least the shapes' distance, so
-// an mMaxSeparationDistance that reaches every separated case (n m operations, in prepare(): outside
-// the timed loop).
+// an mMaxSeparationDistance that reaches every separated case (n m operations, in prepare():
+// outside the timed loop).
 function nearestPointPair(a, b) {
   let best = Infinity;
   for (const [ax, ay] of a) for (const [bx, by] of b) best = Math.min(best, Math.hypot(bx - ax, by - ay));
