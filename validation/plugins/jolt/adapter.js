@@ -49,7 +49,7 @@
 // 2. no hit: again with mMaxSeparationDistance = U, at least the case's distance (else a separated
 //    pair answers nothing: CollideShape.h:98-100), U the distance of the nearest pair of points,
 //    one of each shape (computed in prepare(), outside the timed loop), times 1 + 1/8, rounded up
-//    to float.
+//    to float, and at least h / 2^20 (shapes that share a point have U = 0).
 // Why two: sCollideConvexVsConvex inflates shape 1 by mMaxSeparationDistance as a convex radius
 // (at most 1 in EPA) and subtracts it again from |point2 - point1| in float (ConvexShape.cpp:93,
 // 113-121, 134, 141), so with one query at U for every case EPA's overlap depths were taken on a
@@ -105,6 +105,12 @@ const HEIGHT_FACTOR = 2;
 // where U and the exact distance are 2.6155; with 1 + 1/8 they are answered, the median error the
 // same; with 2 the median error grows by half).
 const MAX_SEPARATION_SLACK = 1 + 1 / 8;
+// The least mMaxSeparationDistance over h, 8 float ulps of h: shapes that share a point (U = 0)
+// touch, and Jolt answers them no contact at distance 0 (nor does the first query: EPA finds no
+// penetration); a little more reaches them (docs/peers.md, "## Jolt": of 208 such cases of the hard
+// families, without it all no contact, 180 are then answered within gjk2d's bound; h / 4096 got
+// 183 but made two near-touching answers with a small U worse, h / 2^20 none).
+const MIN_SEPARATION = 2 ** -20;
 
 const JOLT_SRC = `JoltPhysics read at 3b47ec39 (2026-06-30; jolt-physics ${PACKAGE_VERSION}, npm, builds v${JOLT_VERSION})`;
 const INPUT = `input ${IMPL} world Jolt takes a rotation as a float quaternion (Jolt/Math/Quat.h:264, a Vec4) and places a shape by its centre of mass (Jolt/Physics/Collision/TransformedShape.h:99-101), a ConvexHullShape storing its points relative to it in float (Jolt/Physics/Collision/Shape/ConvexHullShape.cpp:82-83, 153), ${JOLT_SRC}`;
@@ -293,7 +299,8 @@ function prepare(c) {
     return { error: `Jolt cannot build shape B's prism (ConvexHullShapeSettings::Create): ${b.error}` };
   }
   const settings = new J.CollideShapeSettings();
-  settings.mMaxSeparationDistance = floatUp(nearestPointPair(c.a.points, c.b.points) * MAX_SEPARATION_SLACK);
+  const u = nearestPointPair(c.a.points, c.b.points);
+  settings.mMaxSeparationDistance = floatUp(Math.max(u * MAX_SEPARATION_SLACK, h * MIN_SEPARATION));
   return { a, b, comA: a.ts.GetCenterOfMassTransform(), settings };
 }
 
