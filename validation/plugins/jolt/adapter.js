@@ -47,15 +47,17 @@
 //    CollideShape.h:100): a hit is an overlap (or a contact within mCollisionTolerance), its depth
 //    from GJK, else EPA, on the prisms themselves;
 // 2. no hit: again with mMaxSeparationDistance = U, at least the case's distance (else a separated
-//    pair answers nothing: CollideShape.h:98-100), U the distance of the nearest pair of points,
-//    one of each shape (computed in prepare(), outside the timed loop), times 1 + 1/8, rounded up
-//    to float, and at least h / 2^20 (shapes that share a point have U = 0).
+//    pair answers nothing: CollideShape.h:98-100), U the least distance from a point of one shape
+//    to an edge of the other (reachBound, in prepare(), outside the timed loop), times 1 + 1/8,
+//    rounded up to float, and at least h / 2^20 (for shapes that touch U is 0).
 // Why two: sCollideConvexVsConvex inflates shape 1 by mMaxSeparationDistance as a convex radius
 // (at most 1 in EPA) and subtracts it again from |point2 - point1| in float (ConvexShape.cpp:93,
 // 113-121, 134, 141), so with one query at U for every case EPA's overlap depths were taken on a
 // rounded shape: measured (docs/peers.md, "## Jolt") a median relative depth error of 2.3e-6 and
 // at most 0.027, against 4.9e-9 and 1.8e-4 in two steps; and the cancellation costs about an ulp
-// of U on a separated distance, hence U as small as a cheap bound allows.
+// of U on a separated distance, and Jolt's contact points move off their shapes as
+// mMaxSeparationDistance grows (measured on a case 0.0009999 apart: a point on its vertex at 0.0011,
+// 9.5e-4 off at 0.89), hence U as small as a bound allows.
 // The answer: CollideShapeResult's mPenetrationDepth ("If
 // CollideShapeSettings::mMaxSeparationDistance > 0 this number can be negative to indicate that
 // the objects are separated by -mPenetrationDepth. The contact points are the closest points in
@@ -211,13 +213,28 @@ function prismHalfHeight(a, b) {
   return Math.min(floatUp(h), Math.fround(3.4028234663852886e38 / 8));
 }
 
-// The distance of the nearest pair of points, one of each shape: at least the shapes' distance, so
-// an mMaxSeparationDistance that reaches every separated case (n m operations, in prepare():
-// outside the timed loop).
-function nearestPointPair(a, b) {
-  let best = Infinity;
-  for (const [ax, ay] of a) for (const [bx, by] of b) best = Math.min(best, Math.hypot(bx - ax, by - ay));
-  return best;
+// The least distance from a point of one shape to a segment between consecutive points of the
+// other, both ways: each is the distance of a point of A to a point of B (the segments lie in the
+// hull), so at least the shapes' distance, and for separated shapes whose points come in convex
+// order the distance itself (a vertex and an edge hold a nearest pair). n m operations, in prepare():
+// outside the timed loop.
+function reachBound(a, b) {
+  const toSegments = (p, q) => {
+    let best = Infinity;
+    for (const [px, py] of p) {
+      for (let k = 0; k < q.length; ++k) {
+        const [x0, y0] = q[k];
+        const [x1, y1] = q[(k + 1) % q.length];
+        const dx = x1 - x0;
+        const dy = y1 - y0;
+        const len2 = dx * dx + dy * dy;
+        const t = len2 > 0 ? Math.min(1, Math.max(0, ((px - x0) * dx + (py - y0) * dy) / len2)) : 0;
+        best = Math.min(best, Math.hypot(x0 + t * dx - px, y0 + t * dy - py));
+      }
+    }
+    return best;
+  };
+  return Math.min(toSegments(a, b), toSegments(b, a));
 }
 
 let J = null; // the Jolt module, once loaded
@@ -299,7 +316,7 @@ function prepare(c) {
     return { error: `Jolt cannot build shape B's prism (ConvexHullShapeSettings::Create): ${b.error}` };
   }
   const settings = new J.CollideShapeSettings();
-  const u = nearestPointPair(c.a.points, c.b.points);
+  const u = reachBound(c.a.points, c.b.points);
   settings.mMaxSeparationDistance = floatUp(Math.max(u * MAX_SEPARATION_SLACK, h * MIN_SEPARATION));
   return { a, b, comA: a.ts.GetCenterOfMassTransform(), settings };
 }
