@@ -8,7 +8,8 @@
 // docs/peers.md: the prisms' 3D distance is the 2D one, and their penetration depth is the 2D one
 // while 2h exceeds it):
 // - ConvexHullShapeSettings.mMaxConvexRadius = 0: no convex radius, the hull is the points' hull
-//   (a convex radius would shrink the hull and round it back: ConvexHullShape.h:25-26, 34);
+//   (a convex radius would shrink the hull and round it back: ConvexHullShape.h:25-26, 34; 0 is
+//   the member's default, the constructors that take points default to 0.05, h:27-28);
 // - mHullTolerance = 0: its default 1e-3 lets points up to 1e-3 outside the hull be dropped
 //   (ConvexHullShape.h:36); Jolt still raises it to its coplanar distance
 //   3 FLT_EPSILON (max|x| + max|y| + max|z|) (ConvexHullBuilder.cpp:240-247, 313-317).
@@ -119,7 +120,7 @@ const INPUT = `input ${IMPL} world Jolt takes a rotation as a float quaternion (
 const CONTRACT = [
   `contract ${IMPL} overlap penetration Jolt/Physics/Collision/CollideShape.h:59-62 (mPenetrationDepth: "move shape 2 by this distance to resolve the collision"; with mMaxSeparationDistance > 0 "negative to indicate that the objects are separated by -mPenetrationDepth. The contact points are the closest points in that case"), ${JOLT_SRC}`,
   `contract ${IMPL} tolerance 0.0001 none Jolt/Physics/Collision/CollideShape.h:82-83 (mCollisionTolerance: "If objects are closer than this distance, they are considered to be colliding (used for GJK)"), Jolt/Physics/PhysicsSettings.h:9-10 (cDefaultCollisionTolerance = 1.0e-4f), ${JOLT_SRC}`,
-  `contract ${IMPL} margin 0 the adapter sets ConvexHullShapeSettings::mMaxConvexRadius = 0 (Jolt/Physics/Collision/Shape/ConvexHullShape.h:34; the default cDefaultConvexRadius 0.05, PhysicsSettings.h:15-16, is not used), ${JOLT_SRC}`,
+  `contract ${IMPL} margin 0 the adapter sets ConvexHullShapeSettings::mMaxConvexRadius = 0 (Jolt/Physics/Collision/Shape/ConvexHullShape.h:34, the member's default too; the constructors that take points default to cDefaultConvexRadius 0.05, ConvexHullShape.h:27-28, PhysicsSettings.h:15-16), ${JOLT_SRC}`,
   `contract ${IMPL} depth none none no depth tolerance stated: mPenetrationTolerance (Jolt/Physics/Collision/CollideShape.h:85-86, default 1e-4, PhysicsSettings.h:12-13) stops EPA when the squared depth changes by less than it times the squared depth (Jolt/Geometry/EPAPenetrationDepth.h:140): a stopping rule, not a bound on the depth, ${JOLT_SRC}`,
 ];
 
