@@ -19,6 +19,7 @@ import re
 import sys
 import time
 
+sys.dont_write_bytecode = True  # importing adapter_driver leaves no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', '..', '..',
                                 'tests', 'plugins'))
 from adapter_driver import Adapter, fail, fmt_case, shape  # noqa: E402

@@ -27,6 +27,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.join(HERE, '..', '..', '..', '..')
+sys.dont_write_bytecode = True  # importing adapter_driver leaves no __pycache__ in the source tree
 sys.path.insert(0, os.path.join(ROOT, 'tests', 'plugins'))
 from adapter_driver import Adapter, fmt_case, shape  # noqa: E402
 
