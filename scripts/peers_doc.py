@@ -170,17 +170,21 @@ def contract_table(report, peers):
            "Each implementation is judged by what it promises, each clause with where its library "
            "says so (declared by its adapter: gjk2d/plugin.h, `gjk2d_contract`). Where a library "
            "states no tolerance, its distance is held to gjk2d's own a-priori bound in its scalar "
-           "type, and the table says so.", "",
-           "| variant | type | on overlap | source | its distance is held to | margin | its "
-           "depth is held to |",
-           "|---|---|---|---|---|---|---|"]
+           "type, and the table says so. *It is given*: the case as given, or, for a library "
+           "that cannot take the case's transform exactly, the case's world points (in double, "
+           "then rounded to its scalar type) with identity transforms, and it is judged on "
+           "exactly those (its adapter's `input NAME world` line, docs/validate-your-gjk.md).", "",
+           "| variant | type | it is given | on overlap | source | its distance is held to | "
+           "margin | its depth is held to |",
+           "|---|---|---|---|---|---|---|---|"]
     info = {v["name"]: v for v in report["variants"]}
     for name in [v for v in GJK2D_ROWS if v in info] + peers:
         v = info[name]
         c = v.get("contract") or {}
         margin = c.get("margin", 0)
         msrc = c.get("margin_source") or ""
-        out.append(f"| {name} | {v.get('type', '?')} | {c.get('overlap', '?')} | "
+        given = (v.get("input") or {}).get("given", "the case as given")
+        out.append(f"| {name} | {v.get('type', '?')} | {given} | {c.get('overlap', '?')} | "
                    f"{c.get('overlap_source') or 'none stated'} | {c.get('judged_by', '?')} | "
                    f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} | "
                    f"{c.get('judged_by_depth', '?')} |")
@@ -331,9 +335,13 @@ def pts(xs):
 
 
 def exact_for(detail, variant):
-    """The exact answer a variant is judged against: of the float-rounded input for a float one
-    (docs/report-schema.md, CaseDetail)."""
+    """The exact answer a variant is judged against: of the float-rounded input for a float one,
+    of its world case for one given world points (docs/report-schema.md, CaseDetail: its
+    "truth" key)."""
     ans = detail.get("variants", {}).get(variant, {})
+    if ans.get("input") == "world":
+        return (detail.get("world_input", {}).get(ans.get("type"), {}).get("exact")
+                or detail.get("exact", {}))
     if ans.get("type") == "float" and detail.get("exact_float_input"):
         return detail["exact_float_input"]
     return detail.get("exact", {})

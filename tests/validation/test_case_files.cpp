@@ -1,5 +1,6 @@
 // The gjk-cases/1 format: bit-exact round trip, refused files, rejected cases.
 #include "inputs/cases.hpp"
+#include "inputs/geometry.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <random>
 #include <thread>
 
@@ -308,6 +310,60 @@ TEST_CASE("float rounding survives the optimiser: a point's x and y together", "
     CHECK(r.points[1][0] == double(1e30f));
     CHECK(r.points[1][1] == double(-0.3f));
     CHECK(r.points[0][0] != 0.1);
+}
+
+TEST_CASE("the world case of a case: world points in double, rounded to float for float", "[cases]")
+{
+    // B's point (0.1, 0.3) under the rotation (0.6, 0.8) and the translation (2, 1): in double,
+    // x' = (0.6 * 0.1 - 0.8 * 0.3) + 2 and y' = (0.8 * 0.1 + 0.6 * 0.3) + 1, each operation
+    // rounded, are the doubles nearest 1.82 and 1.26 (Python's IEEE doubles give the same:
+    // (0.6*0.1 - 0.8*0.3) + 2.0 == 1.82); in float, 1.8200000524520874 and 1.2599999904632568
+    // (struct.pack('f', 1.82)). The exact image, with the doubles 0.6, 0.8, 0.1, 0.3 taken
+    // exactly, is neither (0.6 and 0.8 are no unit rotation in binary).
+    Case c;
+    c.name = "w";
+    c.a.points = {{0.0, 0.0}};
+    c.b.points = {{0.1, 0.3}};
+    c.b.radius = 0.1;
+    c.b.px = 2.0;
+    c.b.py = 1.0;
+    c.b.c = 0.6;
+    c.b.s = 0.8;
+    const std::optional<Case> d = worldCase(c, false), f = worldCase(c, true);
+    REQUIRE(d);
+    REQUIRE(f);
+    CHECK(d->name == "w");
+    CHECK(d->b.points[0][0] == 1.82);
+    CHECK(d->b.points[0][1] == 1.26);
+    CHECK(d->b.radius == 0.1);
+    CHECK(f->b.points[0][0] == 1.8200000524520874);
+    CHECK(f->b.points[0][1] == 1.2599999904632568);
+    CHECK(f->b.radius == 0.10000000149011612);
+    for (const Case* w : {&*d, &*f})
+        for (const ShapeIn* s : {&w->a, &w->b})
+            CHECK((s->px == 0 && s->py == 0 && s->c == 1 && s->s == 0));
+    CHECK(f->a.points[0] == P2{0.0, 0.0});
+    CHECK(worldCaseFits(c, false));
+    CHECK(worldCaseFits(c, true));
+    // 3e38 + 1e38 = 4e38: a double, beyond float's 3.4e38, though 3e38 and 1e38 are floats.
+    c.b.points = {{3e38, 0.0}};
+    c.b.c = 1.0;
+    c.b.s = 0.0;
+    c.b.px = 1e38;
+    CHECK(worldCase(c, false));
+    CHECK_FALSE(worldCase(c, true));
+    CHECK_FALSE(worldCaseFits(c, true));
+    // 1e308 + 1e308 overflows double too; a radius beyond float does not fit float.
+    c.b.points = {{1e308, 0.0}};
+    c.b.px = 1e308;
+    CHECK_FALSE(worldCase(c, false));
+    CHECK_FALSE(worldCaseFits(c, false));
+    c.b.points = {{1.0, 0.0}};
+    c.b.px = 0;
+    c.b.radius = 1e39;
+    CHECK(worldCaseFits(c, false));
+    CHECK_FALSE(worldCase(c, true));
+    CHECK_FALSE(worldCaseFits(c, true));
 }
 
 // ---- Hostile files (the reader's part of the hostile-input hardening) ----

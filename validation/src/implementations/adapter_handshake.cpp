@@ -204,7 +204,6 @@ void inputLine(const std::string& line, int version, std::vector<AdapterImplemen
     if (t[2] != "world")
         throw bad(fmt::format("the input form '{}' is not world", t[2].substr(0, 80)));
     it->contract.input = InputForm::World; // beside its contract lines, own or declared
-
     it->contract.inputSource = restAfter(line, 3);
 }
 

@@ -187,10 +187,38 @@ std::string variantText(const std::string& name, const Json& v)
                            v["plugin_status"].get<std::string>(),
                            v["plugin_detail"].get<std::string>()) +
                contractText(v);
-    const std::string s = answerText(name, v);
+    std::string s = answerText(name, v);
+    if (v.value("input", "") == "world") // judged on the world case it was given (worldText)
+        s += fmt::format("     given the world case in {}: judged on its exact result\n",
+                         v["type"].get<std::string>());
     if (!v.contains("trace"))
         return s + "     (no trace: the implementation is a plugin's)\n";
     return s + traceText(v["trace"]);
+}
+} // namespace
+
+namespace
+{
+// The world cases variants given world points were given (CaseDetail "world_input", per scalar
+// type): their shapes (identity transforms) and exact truth, which those variants are judged on.
+std::string worldText(const Json& d)
+{
+    if (!d.contains("world_input"))
+        return {};
+    std::string s;
+    for (const auto& [scalar, w] : d["world_input"].items())
+    {
+        s += fmt::format("  world case in {} (what a variant given world points gets: each point "
+                         "mapped in double, rounded to {}, identity transforms):\n",
+                         scalar, scalar);
+        for (const char* k : {"a", "b"})
+            if (w.contains(k))
+                s += shapeText(k, w[k]);
+        const std::string label = fmt::format("exact (world case, {})", scalar);
+        s += exactText(label.c_str(), w["exact"]);
+        s += fmt::format("     input change |world - exact| {}\n", fmtNum(w["input_rounding"]));
+    }
+    return s;
 }
 } // namespace
 
@@ -212,6 +240,7 @@ std::string explainText(const Json& d)
         s += exactText("exact (float-rounded input)", d["exact_float_input"]);
         s += fmt::format("     input rounding error {}\n", fmtNum(d["input_rounding"]));
     }
+    s += worldText(d);
     for (const auto& [name, v] : d["variants"].items())
         s += variantText(name, v);
     return s;

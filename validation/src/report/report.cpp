@@ -371,23 +371,32 @@ std::string contextMarkdown(const Json& r, const std::map<std::string, bool>& ju
     return s + "\n";
 }
 
-// Each implementation with a contract of its own: what it promises (its overlap answer and
-// tolerance, with their sources), what its distance is held to, and its worst contract violation
-// (the case to give `gjk-validate explain` or `repro`).
+// "; given world points rounded to float (SOURCE)" for a variant given its cases' world points
+// (variants[].input), else "".
+std::string givenWorld(const Json& v)
+{
+    if (!v.contains("input") || !v["input"].is_object() || v["input"].value("form", "") != "world")
+        return "";
+    return "; given " + mdEscape(v["input"].value("given", std::string("world points")));
+}
+
+// Each implementation with a contract of its own, or given world points: what it promises (its
+// overlap answer and tolerance, with their sources), what it is given, what its distance is held
+// to, and its worst contract violation (the case to give `gjk-validate explain` or `repro`).
 std::string contractsMarkdown(const Json& r)
 {
     std::string s;
     for (const auto& v : r["variants"])
     {
-        if (!v.contains("contract") || v["contract"].value("own", true))
+        if (!v.contains("contract") || (v["contract"].value("own", true) && givenWorld(v).empty()))
             continue;
         const Json& c = v["contract"];
         const Json& w =
             v.contains("worst_contract_violation") ? v["worst_contract_violation"] : Json(nullptr);
-        s += fmt::format("- **{}**: on overlap `{}` ({}); judged by {}; worst contract violation: "
-                         "{}\n",
+        s += fmt::format("- **{}**: on overlap `{}` ({}){}; judged by {}; worst contract "
+                         "violation: {}\n",
                          v["name"].get<std::string>(), c["overlap"].get<std::string>(),
-                         mdEscape(c["overlap_source"].get<std::string>()),
+                         mdEscape(c["overlap_source"].get<std::string>()), givenWorld(v),
                          mdEscape(c["judged_by"].get<std::string>()),
                          w.is_object()
                              ? fmt::format("`{}` ({}, {}, excess {})", w["case"].get<std::string>(),
