@@ -162,7 +162,8 @@ def check_centre_of_mass(ad):
     # (1/3, 1/3), not a float, so its corner (1, 0) goes in as 1 - float(1/3) rounded and comes
     # back as float(1/3) + that: a few ulps off. Against the square [2, 3] x [0, 1] the nearest pair
     # is (1, 0)-(2, 0)... (any (1 - t, t) is further), distance 1. Allowed: 4 ulps of 1 (4.8e-7)
-    # on the distance and the point: what the recentring can move a vertex by here.
+    # on the distance and the point: what the recentring can move a vertex by here (for the square
+    # below, 4 ulps of 2).
     tol = 4 * FLT_EPS
     d, pa, pb = ask_ok(ad, [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)], square(2.5, 0.5))
     expect('distance', d, 1.0, tol)
@@ -170,6 +171,17 @@ def check_centre_of_mass(ad):
     expect('pA.y', pa[1], 0.0, tol)
     expect('pB.x', pb[0], 2.0, tol)
     print(f'centre of mass: pA is ({pa[0] - 1.0:+.3g}, {pa[1]:+.3g}) from (1, 0)')
+    # A square whose centre of mass is not a float either: corners 1 + 2^-23 and 3 on both axes,
+    # centre 2 + 2^-24 (floats from 2 to 4 are 2^-22 apart). Against the square [5, 6] x [1.5, 2.5]
+    # the nearest pairs are (3, y), (5, y), y in [1.5, 2.5]: distance 2. Same allowance.
+    e = FLT_EPS
+    d, pa, pb = ask_ok(ad, [(1 + e, 1 + e), (3.0, 1 + e), (3.0, 3.0), (1 + e, 3.0)], square(5.5, 2.0),
+                       rid=2)
+    expect('distance', d, 2.0, 2 * tol)
+    expect('pA.x', pa[0], 3.0, 2 * tol)
+    expect('pB.x', pb[0], 5.0, 2 * tol)
+    if not (1.5 - tol <= pa[1] <= 2.5 + tol and abs(pa[1] - pb[1]) <= 2 * tol):
+        fail(f'witness points {pa}, {pb}: expected (3, y), (5, y), y in [1.5, 2.5]')
 
 
 def check_segment(ad):

@@ -11,7 +11,7 @@ set(_jolt_checks
     "deep-in-plane|the prisms keep a deep penetration in the plane: depths 5 and 10"
     "far-apart|squares 999 apart are answered within the contract's 1e-4"
     "hull-tolerance|mHullTolerance 0 keeps a point 4.9e-4 off its hull's edge"
-    "centre-of-mass|a triangle whose centre of mass is not a float: within 4 ulps"
+    "centre-of-mass|a triangle and a square whose centres of mass are not floats: within a few ulps"
     "segment|a segment's flat prism is answered"
     "refusals|a transform, a point, a radius, 129 points, a non-float are refused with the reason"
     "bad-requests|a bad request gets error or refused for its id and the stream goes on"
