@@ -267,7 +267,7 @@ async function loadJolt() {
   J.destroy(settings);
   unitScale = new J.Vec3(1, 1, 1);
   origin = new J.RVec3(0, 0, 0);
-  identity = J.Quat.prototype.sIdentity();
+  identity = new J.Quat(0, 0, 0, 1); // owned: sIdentity() returns the glue's static
   filter = new J.ShapeFilter();
   collector = new J.CollideShapeClosestHitCollisionCollector();
   overlapSettings = new J.CollideShapeSettings(); // Jolt's defaults: mMaxSeparationDistance 0
@@ -305,6 +305,15 @@ function prepareShape(s, h) {
   return { shape, ts };
 }
 
+// A [Value] result of the bindings is a static of the glue code, overwritten by the next call of
+// the same function (and not to be destroyed): a prepared case keeps its own copy.
+function ownedCopy(m) {
+  const copy = new J.RMat44();
+  for (let c = 0; c < 3; ++c) copy.SetColumn4(c, m.GetColumn4(c));
+  copy.SetTranslation(m.GetTranslation());
+  return copy;
+}
+
 // The case prepared: both shapes, shape A's centre-of-mass transform and the query's settings.
 // Returns {a, b, comA, settings} or {error}.
 function prepare(c) {
@@ -319,7 +328,7 @@ function prepare(c) {
   const settings = new J.CollideShapeSettings();
   const u = reachBound(c.a.points, c.b.points);
   settings.mMaxSeparationDistance = floatUp(Math.max(u * MAX_SEPARATION_SLACK, h * MIN_SEPARATION));
-  return { a, b, comA: a.ts.GetCenterOfMassTransform(), settings };
+  return { a, b, comA: ownedCopy(a.ts.GetCenterOfMassTransform()), settings };
 }
 
 function release(p) {
