@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""An adapter given world points (protocol 2's `input NAME world SOURCE`; tests/plugins/CMakeLists.txt).
+"""An adapter given world points (`input NAME world SOURCE`; tests/plugins/CMakeLists.txt).
 
   world_check.py --exe E --adapter A --cases C --work W
 
@@ -20,7 +20,9 @@ points rounded to float, bit for bit, and no request carries the overflowing cas
 judges toy-world on the world case's truth (its key, the exact distance above, the input change
 |world - case|) and says why it skipped the other; report.json's variants[] gives the contract's
 input clause and variants[].input with the count; a timed run's `time` requests carry the same
-world points. Exit 0 when every check holds; else a message and exit 1.
+world points; `explain` (text and --json) shows the world case and says toy-world is judged on
+it; report.md's contracts say what toy-world is given. Exit 0 when every check holds; else a
+message and exit 1.
 """
 import argparse
 import json
@@ -142,6 +144,24 @@ def check_report(r):
           "toy-world's input_rounding {}".format(ir))
 
 
+def check_explain(a, state):
+    """`explain` shows the world case toy-world was given, and says it is judged on it."""
+    detail = os.path.join(a.work, "detail.json")
+    cmd = [a.exe, "explain", a.cases, "world/rotated", "--variants", "toy-world",
+           "--no-default-plugins", "--plugin", a.adapter, "--json", detail]
+    p = subprocess.run(cmd, capture_output=True, text=True,
+                       env=dict(os.environ, TOY_STATE_DIR=state))
+    check(p.returncode == 0, "{} exited {}: {}".format(" ".join(cmd), p.returncode, p.stderr))
+    for text in ("world case in float", "[0] local ({!r}, {!r})".format(WX, WY),
+                 "exact (world case, float): distance {!r}".format(WORLD_EXACT),
+                 "given the world case in float: judged on its exact result"):
+        check(text in p.stdout, "explain does not say {!r}:\n{}".format(text, p.stdout))
+    with open(detail) as f:
+        w = json.load(f)["world_input"]["float"]
+    check(w["b"]["transform"] == {"p": [0.0, 0.0], "q": [1.0, 0.0]} and
+          w["b"]["points"] == [[WX, WY]], "explain --json world_input.float.b {}".format(w["b"]))
+
+
 def main():
     ap = argparse.ArgumentParser()
     for k in ("--exe", "--adapter", "--cases", "--work"):
@@ -157,6 +177,11 @@ def main():
     check_sent(distance[0][3:], "the distance request")
     check_cases(out)
     check_report(r)
+    with open(os.path.join(out, "report.md")) as f:
+        md = f.read()
+    check("- **toy-world**: on overlap `common-point` (gjk2d/distance.hpp, DistanceOutput); given "
+          "world points rounded to float (" in md, "report.md's contracts do not say what "
+          "toy-world is given")
     # Timed: every case of a `time` request (time ID NAME K M, then M cases) is the world case.
     _, requests = campaign(a, out + "-timed", state, ["--passes", "1"])
     timed = [t for t in requests if t[0] == "time"]
@@ -167,6 +192,7 @@ def main():
         step = len(body) // m
         for k in range(m):
             check_sent(body[k * step:(k + 1) * step], "a time request's case")
+    check_explain(a, state)
     print("world_check: ok: toy-world was sent ({!r}, {!r}) with identity transforms and judged "
           "on the world case's exact distance {!r} (the case's: {!r})".format(
               WX, WY, WORLD_EXACT, CASE_EXACT))

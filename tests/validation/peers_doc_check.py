@@ -91,12 +91,15 @@ def main():
                 if not (t / "peers" / f"{v}.svg").is_file():
                     errors.append(f"no drawing peers/{v}.svg")
         errors += worst_case_commands(text, plugins, a.script)
-        # Every variant's contract has a row of the contract table, which names its overlap kind.
+        # Every variant's contract has a row of the contract table, which names what it is given
+        # (variants[].input.given) and its overlap kind.
         for v in report["variants"]:
             kind = (v.get("contract") or {}).get("overlap")
+            given = (v.get("input") or {}).get("given")
             if v["name"] in ("double", "float") or "plugin" in v:
-                if not kind or not any(l.startswith(f"| {v['name']} | {v['type']} | {kind} | ")
-                                       for l in rows):
+                if not kind or not given or not any(
+                        l.startswith(f"| {v['name']} | {v['type']} | {given} | {kind} | ")
+                        for l in rows):
                     errors.append(f"no contract row for {v['name']} (overlap {kind})")
         if "### Each peer's worst contract violation, with a repro" not in text:
             errors.append("no section of the peers' contract violations")

@@ -49,8 +49,8 @@ struct AdapterImplementation
     bool radius = false; // `radius`: takes radius > 0
     int maxVertices = 0; // 0: no limit
     std::string description;
-    // Version 2's `contract NAME ...` lines, and its `input NAME world SOURCE` line (Contract::input);
-    // version 1: gjk2d's own.
+    // Version 2's `contract NAME ...` lines, and its `input NAME world SOURCE` line
+    // (Contract::input); version 1: gjk2d's own.
     Contract contract = ownContract();
     // Version 2's optional `prepared NAME shape|case` line: Shape or Case; InCall without it.
     Preparation preparation = Preparation::InCall;

@@ -85,9 +85,9 @@ const Contract& contractOf(const VariantInfo& v);
 // report.json's variants[].contract: {"own", "overlap", "overlap_source", "tolerance": {"abs",
 // "rel", "source"} (null members: not stated), "margin", "margin_source", "depth": {"abs", "rel",
 // "source"} (null members: not stated), "input": {"form": "case"|"world", "source"}, "judged_by",
-// "judged_by_depth"} where judged_by says in
-// words what the distance is held to ("FCL's stated tolerance ..." or "gjk2d's bound for double:
-// no tolerance stated") and judged_by_depth what the depth is held to (judgedByDepth).
+// "judged_by_depth"} where judged_by says in words what the distance is held to ("FCL's stated
+// tolerance ..." or "gjk2d's bound for double: no tolerance stated") and judged_by_depth what the
+// depth is held to (judgedByDepth).
 Json contractJson(const VariantInfo& v);
 // In words, what the variant's distance is held to: "its stated tolerance: abs 1e-06, rel none
 // (SOURCE)", "no tolerance stated: gjk2d's bound for double", "gjk2d's own contract: ...".

@@ -483,10 +483,12 @@ std::string variantsMarkdown(const Json& r, const std::map<std::string, bool>& j
                 v.contains("contract")
                     ? "; judged by " + v["contract"]["judged_by"].get<std::string>()
                     : "";
-            s += fmt::format("| {} | {} | {} | plugin `{}` | - | - | - | cold | {}{} |\n", name,
+            // Its frame: the case's transforms as given, or the world points it is given.
+            const std::string frame = givenWorld(v).empty() ? "-" : "world points";
+            s += fmt::format("| {} | {} | {} | plugin `{}` | - | {} | - | cold | {}{} |\n", name,
                              isJudged(judged, name) ? "judged (--judge)" : "comparison",
                              v["type"].get<std::string>(),
-                             mdEscape(v["plugin"]["path"].get<std::string>()),
+                             mdEscape(v["plugin"]["path"].get<std::string>()), frame,
                              mdEscape(v["bound"]["formula"].get<std::string>()), mdEscape(held));
             continue;
         }
