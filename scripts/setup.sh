@@ -16,8 +16,8 @@ set -euo pipefail
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).
 # The peers (docs/peers.md): each folder of validation/plugins/ names its Debian packages in its
-# peer.txt (`package` lines: FCL, Bullet, GEOS through shapely); planck.js comes from the npm
-# registry (scripts/setup_npm.sh, below).
+# peer.txt (`package` lines: FCL, Bullet, GEOS through shapely); planck.js and Jolt
+# (jolt-physics) come from the npm registry (scripts/setup_npm.sh, below).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
           openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
@@ -60,5 +60,6 @@ if [[ ${#missing[@]} -gt 0 ]]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# planck.js (a peer, docs/peers.md) from the npm registry, pinned by its lockfile, into build/npm/.
+# planck.js and Jolt (peers, docs/peers.md) from the npm registry, each pinned by its lockfile, into
+# build/npm/.
 exec "$(dirname "$0")/setup_npm.sh"

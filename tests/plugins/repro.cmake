@@ -23,7 +23,8 @@ set(_repros
     "bullet-3.24-float|random:2000|random/1,random/2|random/1 and random/2"
     "${_box2d3_variant}|random:2000|random/1,random/2|random/1 and random/2${_box2d3_env}"
     "geos-*|random:2000|random/1,random/2|random/1 and random/2"
-    "rapier2d-0.21.0|random:2000|random/1,random/2|random/1, a penetration, and random/2, on their world points|--node-path|${PROJECT_SOURCE_DIR}/build/npm/rapier/node_modules")
+    "rapier2d-0.21.0|random:2000|random/1,random/2|random/1, a penetration, and random/2, on their world points|--node-path|${PROJECT_SOURCE_DIR}/build/npm/rapier/node_modules"
+    "jolt-1.1.0|random:2000|random/1,random/2|random/1 and random/2|--node-path|${PROJECT_SOURCE_DIR}/build/npm/jolt/node_modules")
 set(_k 0)
 foreach(entry IN LISTS _repros)
   math(EXPR _k "${_k} + 1")
