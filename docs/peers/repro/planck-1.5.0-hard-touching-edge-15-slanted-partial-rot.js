@@ -1,6 +1,6 @@
 // planck.js's Distance on one case: a standalone reproduction, with nothing of gjk2d in it.
 // Written by gjk2d's `gjk-validate repro` (docs/peers.md, "Repro programs"):
-//   gjk-validate repro --family hard/touching-edge:24 --seed 1 hard/touching-edge/15-slanted-partial-rot --variants planck-1.5.0 --no-default-plugins --plugin /work/main/build/release/validation/plugins/gjk2d-box2d.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-float.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-double.so --plugin /work/main/build/release/validation/plugins/gjk2d-fcl.so --plugin /work/main/build/release/validation/plugins/gjk2d-geos --plugin /work/main/build/release/validation/plugins/gjk2d-planck --out /work/main/docs/peers/repro
+//   gjk-validate repro --family hard/touching-edge:24 --seed 1 hard/touching-edge/15-slanted-partial-rot --variants planck-1.5.0 --no-default-plugins --plugin build/release/validation/plugins/gjk2d-box2d.so --plugin build/release/validation/plugins/gjk2d-bullet-float.so --plugin build/release/validation/plugins/gjk2d-bullet-double.so --plugin build/release/validation/plugins/gjk2d-fcl.so --plugin build/release/validation/plugins/gjk2d-geos --plugin build/release/validation/plugins/gjk2d-planck --out docs/peers/repro
 // Run it with planck 1.5.0 where Node's require("planck") finds it; from a gjk2d checkout, whose
 // scripts/setup_npm.sh installs planck into build/npm/planck/node_modules:
 //   NODE_PATH=build/npm/planck/node_modules node planck-1.5.0-hard-touching-edge-15-slanted-partial-rot.js
