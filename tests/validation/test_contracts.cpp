@@ -209,7 +209,7 @@ TEST_CASE("zero: on overlap only the sign is judged, and the error is measured o
         CHECK(judged(im, c, t, 5e-7, {0, 0}, {0, 0}).keepsContract());
         const VariantOutcome sep = judged(im, c, t, 0.5, {2, 1}, {2.5, 1});
         CHECK(reason(sep) == "false_separation");
-        CHECK(sep.violationExcess == Approx(5e5));
+        CHECK(sep.violationExcess == Approx(0.5 / (1e-6 + 0x1p-30))); // T with gjk2d's bound
     }
 }
 
@@ -413,8 +413,8 @@ TEST_CASE("penetration: touching shapes may answer 0", "[contract][penetration]"
     // A = [0, 1]^2, B = [1, 2] x [0, 1] touch along x = 1: exact signed distance 0, no depth to
     // judge; the common point (1, 0.5) with d = 0 keeps the contract. The same shapes with a
     // truth (by hand) of depth 2^-40, below Td = gjk2d's depth bound 2^-30: touching to the
-    // contract's precision, so 0 still keeps it; a stated clause of abs 2^-45 makes that depth a
-    // real one: no_depth.
+    // contract's precision, so 0 still keeps it; a stated clause of abs 2^-45 adds to the bound
+    // (Td = 2^-45 + 2^-30): 2^-40 is still touching, a depth of 2^-29 is a real one: no_depth.
     const Case c = caseOf(square(0, 0, 1), square(1, 0, 1));
     for (Scalar s : kScalars)
     {
@@ -428,8 +428,10 @@ TEST_CASE("penetration: touching shapes may answer 0", "[contract][penetration]"
         CHECK(shallow.depthJudged);
         CHECK(shallow.depthAbs == 0x1p-40);
         CHECK(shallow.keepsContract());
-        CHECK(reason(judged(Implementation(s, declaredDepth(0x1p-45)), c, signedTruthOf(-0x1p-40),
-                            0, {1, 0.5}, {1, 0.5})) == "no_depth");
+        const Implementation clause(s, declaredDepth(0x1p-45));
+        CHECK(judged(clause, c, signedTruthOf(-0x1p-40), 0, {1, 0.5}, {1, 0.5}).keepsContract());
+        CHECK(reason(judged(clause, c, signedTruthOf(-0x1p-29), 0, {1, 0.5}, {1, 0.5})) ==
+              "no_depth");
     }
 }
 
