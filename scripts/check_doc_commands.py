@@ -217,6 +217,8 @@ def scratch_dir(build):
     (d / "reports").mkdir()  # its own: the repository's reports/ is a person's
     (d / "build").mkdir()
     (d / "build" / "release").symlink_to(build)
+    if (ROOT / "build" / "npm").is_dir():  # the JavaScript peers' packages (scripts/setup_npm.sh)
+        (d / "build" / "npm").symlink_to(ROOT / "build" / "npm")
     return d
 
 
