@@ -2,7 +2,7 @@
 """GEOS's distance and nearest points (through shapely) on one case: a standalone reproduction,
 with nothing of gjk2d in it. Written by gjk2d's `gjk-validate repro` (docs/peers.md, "Repro
 programs"):
-  gjk-validate repro --family hard/extreme-scale:244 --seed 1 hard/extreme-scale/168-deep-overlap-1e160 --variants geos-3.11.1 --no-default-plugins --plugin build/release/validation/plugins/gjk2d-box2d.so --plugin build/release/validation/plugins/gjk2d-bullet-float.so --plugin build/release/validation/plugins/gjk2d-bullet-double.so --plugin build/release/validation/plugins/gjk2d-fcl.so --plugin build/release/validation/plugins/gjk2d-geos --plugin build/release/validation/plugins/gjk2d-planck --out docs/peers/repro
+  gjk-validate repro --family hard/extreme-scale:244 --seed 1 hard/extreme-scale/168-deep-overlap-1e160 --variants geos-3.11.1 --no-default-plugins --plugin /work/main/build/release/validation/plugins/gjk2d-box2d.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-float.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-double.so --plugin /work/main/build/release/validation/plugins/gjk2d-fcl.so --plugin /work/main/build/release/validation/plugins/gjk2d-geos --plugin /work/main/build/release/validation/plugins/gjk2d-jolt --plugin /work/main/build/release/validation/plugins/gjk2d-planck --plugin /work/main/build/release/validation/plugins/gjk2d-rapier --out /work/main/docs/peers/repro
 Run it with Debian's python3 and python3-shapely (shapely 1.8, GEOS 3.11 on Debian 12):
   /usr/bin/python3 geos-3.11.1-hard-extreme-scale-168-deep-overlap-1e160.py
 

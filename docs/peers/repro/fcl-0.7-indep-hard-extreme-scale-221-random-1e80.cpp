@@ -1,12 +1,12 @@
 // FCL's fcl::distance on one case: a standalone reproduction, with nothing of gjk2d in it.
 // Written by gjk2d's `gjk-validate repro` (docs/peers.md, "Repro programs"):
-//   gjk-validate repro --family hard/extreme-scale:244 --seed 1 hard/extreme-scale/98-penetration-1e70 --variants fcl-0.7-libccd-signed --no-default-plugins --plugin build/release/validation/plugins/gjk2d-box2d.so --plugin build/release/validation/plugins/gjk2d-bullet-float.so --plugin build/release/validation/plugins/gjk2d-bullet-double.so --plugin build/release/validation/plugins/gjk2d-fcl.so --plugin build/release/validation/plugins/gjk2d-geos --plugin build/release/validation/plugins/gjk2d-planck --out docs/peers/repro
+//   gjk-validate repro --family hard/extreme-scale:244 --seed 1 hard/extreme-scale/221-random-1e80 --variants fcl-0.7-indep --no-default-plugins --plugin /work/main/build/release/validation/plugins/gjk2d-box2d.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-float.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-double.so --plugin /work/main/build/release/validation/plugins/gjk2d-fcl.so --plugin /work/main/build/release/validation/plugins/gjk2d-geos --plugin /work/main/build/release/validation/plugins/gjk2d-jolt --plugin /work/main/build/release/validation/plugins/gjk2d-planck --plugin /work/main/build/release/validation/plugins/gjk2d-rapier --out /work/main/docs/peers/repro
 // Build and run it against Debian's libfcl-dev (FCL 0.7; -std=c++17 after pkg-config's -std=c++11
 // so that it wins; -O3 -ffp-contract=off as gjk2d builds its adapter, so that no a*b+c is fused):
-//   g++ fcl-0.7-libccd-signed-hard-extreme-scale-98-penetration-1e70.cpp $(pkg-config --cflags --libs fcl) -std=c++17 -O3 -ffp-contract=off -o fcl-0.7-libccd-signed-hard-extreme-scale-98-penetration-1e70 && ./fcl-0.7-libccd-signed-hard-extreme-scale-98-penetration-1e70
+//   g++ fcl-0.7-indep-hard-extreme-scale-221-random-1e80.cpp $(pkg-config --cflags --libs fcl) -std=c++17 -O3 -ffp-contract=off -o fcl-0.7-indep-hard-extreme-scale-221-random-1e80 && ./fcl-0.7-indep-hard-extreme-scale-221-random-1e80
 //
-// The case: hard/extreme-scale/98-penetration-1e70 (family hard/extreme-scale), variant fcl-0.7-libccd-signed (request.gjk_solver_type = GST_LIBCCD,
-// request.enable_signed_distance = true). Each
+// The case: hard/extreme-scale/221-random-1e80 (family hard/extreme-scale), variant fcl-0.7-indep (request.gjk_solver_type = GST_INDEP,
+// request.enable_signed_distance = false). Each
 // number is the shortest decimal that reads back as the same double: the compiler reads a decimal
 // literal correctly rounded to the nearest double, so FCL gets the very bits gjk-validate gave it.
 //
@@ -18,7 +18,7 @@
 //   that is 0, at most the largest double / 8): far taller than any depth of the case, so a
 //   nearest pair never runs along z;
 // - radius r > 0: one point is an fcl::Sphere, two points an fcl::Capsule around the segment.
-// Then fcl::distance with enable_nearest_points = true and enable_signed_distance = true; a
+// Then fcl::distance with enable_nearest_points = true and enable_signed_distance = false; a
 // negative min_distance is, unsigned, FCL's "in collision" (overlap `zero`), signed, minus the
 // penetration depth (overlap `penetration`): gjk-validate reports it as it is.
 #include <fcl/narrowphase/distance.h>
@@ -38,20 +38,20 @@ struct Shape
     double radius, px, py, c, s;
 };
 
-const Shape A = {{-2.3899247844472418e+69, 1.6408081943179662e+70, 1.2432325535692535e+70, -1.0971516545308629e+70, 1.6357804796559408e+70, -2.712769022064304e+69}, 0.0, 3.4874049465445065e+70, 1.4838517971417878e+70, 0.06637007531789271, 0.9977950757055766};
-const Shape B = {{1.131448114389156e+70, 4.753677746117976e+69, 1.0179183376158539e+70, 6.8555934436015546e+69, -9.533309018927996e+69, 7.728580388340479e+69, -2.371849571957678e+69, -1.2041148835448349e+70}, 0.0, 2.243602835561256e+70, 3.093924239957657e+70, 0.9294390695262821, 0.36897563068327277};
+const Shape A = {{1.5534358683491851e+80, 7.750486449842708e+79, 8.231199584816636e+79, 1.5285080742720615e+80, -1.2831608848330728e+79, 1.7312996218454172e+80, -8.308281166683527e+79, 1.524331997866298e+80, -1.700627237354121e+80, 3.4889883739421045e+79, 1.1663310142093654e+80, -1.2858986602602453e+80, 1.5710084390490613e+80, -7.38779996753007e+79}, 0.0, 1.0144736378604016e+80, -2.2128757897075237e+80, -0.20815800676434623, 0.9780952122466884};
+const Shape B = {{3.6271215347059646e+79, 7.496158737155564e+79, 3.4223954768221536e+79, 7.591812408140016e+79, -7.77406381070186e+78, 8.291202913861944e+79, -9.19471914175944e+78, 8.276652574513629e+79, 7.867923435794972e+79, -2.7284037913457176e+79}, 0.0, 2.3284840068382247e+80, -1.7054000649658897e+80, 0.6013451664368226, 0.7989893558759529};
 
 // The exact answer for these inputs (gjk2d's CGAL/GMP ground truth), correctly rounded to double.
 // On overlap the shapes share points: no pair of nearest points is unique, and the exact side's
 // witness is one common point.
 const double exactDistance = 0;
 const bool exactOverlap = true;
-const double exactA[2] = {2.471872801693384e+70, 1.9012861439714407e+70}, exactB[2] = {2.471872801693384e+70, 1.9012861439714407e+70};
+const double exactA[2] = {1.611896276779844e+80, -1.281152390215171e+80}, exactB[2] = {1.611896276779844e+80, -1.281152390215171e+80};
 // The exact signed distance (minus the penetration depth on overlap) and penetration pair, where
 // gjk-validate computed them (a variant whose contract says penetration).
-const bool exactSigned = true;
-const double exactSignedDistance = -7.762270853945712e+67;
-const double exactPA[2] = {2.4623883516715293e+70, 1.89314838139998e+70}, exactPB[2] = {2.4674429182106613e+70, 1.8872573538231048e+70};
+const bool exactSigned = false;
+const double exactSignedDistance = 0;
+const double exactPA[2] = {0, 0}, exactPB[2] = {0, 0};
 
 // The shape's reach from its own origin: radius + the largest |x| + |y| of its local points.
 double reach(const Shape& s)
@@ -140,15 +140,15 @@ int main()
     const Placed ga = geometryOf(A, h), gb = geometryOf(B, h);
     fcl::DistanceRequest<double> request;
     request.enable_nearest_points = true;
-    request.enable_signed_distance = true;
-    request.gjk_solver_type = fcl::GST_LIBCCD;
+    request.enable_signed_distance = false;
+    request.gjk_solver_type = fcl::GST_INDEP;
     fcl::DistanceResult<double> result;
     const double none = std::numeric_limits<double>::quiet_NaN(); // FCL may leave them unwritten
     result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
     const double d =
         fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
     const Vec3 &pa = result.nearest_points[0], &pb = result.nearest_points[1];
-    std::printf("FCL fcl::distance, GST_LIBCCD, on hard/extreme-scale/98-penetration-1e70 (half-height h = %.17g):\n", h);
+    std::printf("FCL fcl::distance, GST_INDEP, on hard/extreme-scale/221-random-1e80 (half-height h = %.17g):\n", h);
     std::printf("fcl    min_distance %.17g  nearest_points (%.17g, %.17g, %.17g) (%.17g, %.17g, %.17g)\n",
                 d, pa.x(), pa.y(), pa.z(), pb.x(), pb.y(), pb.z());
     // As gjk-validate reports it: min_distance as it is (negative: FCL's "in collision", or minus

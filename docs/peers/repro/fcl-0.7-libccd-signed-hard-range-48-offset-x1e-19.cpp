@@ -1,12 +1,12 @@
 // FCL's fcl::distance on one case: a standalone reproduction, with nothing of gjk2d in it.
 // Written by gjk2d's `gjk-validate repro` (docs/peers.md, "Repro programs"):
-//   gjk-validate repro --family hard/extreme-scale:244 --seed 1 hard/extreme-scale/98-penetration-1e70 --variants fcl-0.7-indep --no-default-plugins --plugin build/release/validation/plugins/gjk2d-box2d.so --plugin build/release/validation/plugins/gjk2d-bullet-float.so --plugin build/release/validation/plugins/gjk2d-bullet-double.so --plugin build/release/validation/plugins/gjk2d-fcl.so --plugin build/release/validation/plugins/gjk2d-geos --plugin build/release/validation/plugins/gjk2d-planck --out docs/peers/repro
+//   gjk-validate repro --family hard/range:72 --seed 1 hard/range/48-offset-x1e+19 --variants fcl-0.7-libccd-signed --no-default-plugins --plugin /work/main/build/release/validation/plugins/gjk2d-box2d.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-float.so --plugin /work/main/build/release/validation/plugins/gjk2d-bullet-double.so --plugin /work/main/build/release/validation/plugins/gjk2d-fcl.so --plugin /work/main/build/release/validation/plugins/gjk2d-geos --plugin /work/main/build/release/validation/plugins/gjk2d-jolt --plugin /work/main/build/release/validation/plugins/gjk2d-planck --plugin /work/main/build/release/validation/plugins/gjk2d-rapier --out /work/main/docs/peers/repro
 // Build and run it against Debian's libfcl-dev (FCL 0.7; -std=c++17 after pkg-config's -std=c++11
 // so that it wins; -O3 -ffp-contract=off as gjk2d builds its adapter, so that no a*b+c is fused):
-//   g++ fcl-0.7-indep-hard-extreme-scale-98-penetration-1e70.cpp $(pkg-config --cflags --libs fcl) -std=c++17 -O3 -ffp-contract=off -o fcl-0.7-indep-hard-extreme-scale-98-penetration-1e70 && ./fcl-0.7-indep-hard-extreme-scale-98-penetration-1e70
+//   g++ fcl-0.7-libccd-signed-hard-range-48-offset-x1e-19.cpp $(pkg-config --cflags --libs fcl) -std=c++17 -O3 -ffp-contract=off -o fcl-0.7-libccd-signed-hard-range-48-offset-x1e-19 && ./fcl-0.7-libccd-signed-hard-range-48-offset-x1e-19
 //
-// The case: hard/extreme-scale/98-penetration-1e70 (family hard/extreme-scale), variant fcl-0.7-indep (request.gjk_solver_type = GST_INDEP,
-// request.enable_signed_distance = false). Each
+// The case: hard/range/48-offset-x1e+19 (family hard/range), variant fcl-0.7-libccd-signed (request.gjk_solver_type = GST_LIBCCD,
+// request.enable_signed_distance = true). Each
 // number is the shortest decimal that reads back as the same double: the compiler reads a decimal
 // literal correctly rounded to the nearest double, so FCL gets the very bits gjk-validate gave it.
 //
@@ -18,7 +18,7 @@
 //   that is 0, at most the largest double / 8): far taller than any depth of the case, so a
 //   nearest pair never runs along z;
 // - radius r > 0: one point is an fcl::Sphere, two points an fcl::Capsule around the segment.
-// Then fcl::distance with enable_nearest_points = true and enable_signed_distance = false; a
+// Then fcl::distance with enable_nearest_points = true and enable_signed_distance = true; a
 // negative min_distance is, unsigned, FCL's "in collision" (overlap `zero`), signed, minus the
 // penetration depth (overlap `penetration`): gjk-validate reports it as it is.
 #include <fcl/narrowphase/distance.h>
@@ -38,20 +38,20 @@ struct Shape
     double radius, px, py, c, s;
 };
 
-const Shape A = {{-2.3899247844472418e+69, 1.6408081943179662e+70, 1.2432325535692535e+70, -1.0971516545308629e+70, 1.6357804796559408e+70, -2.712769022064304e+69}, 0.0, 3.4874049465445065e+70, 1.4838517971417878e+70, 0.06637007531789271, 0.9977950757055766};
-const Shape B = {{1.131448114389156e+70, 4.753677746117976e+69, 1.0179183376158539e+70, 6.8555934436015546e+69, -9.533309018927996e+69, 7.728580388340479e+69, -2.371849571957678e+69, -1.2041148835448349e+70}, 0.0, 2.243602835561256e+70, 3.093924239957657e+70, 0.9294390695262821, 0.36897563068327277};
+const Shape A = {{-0.9420361503355652, 0.027923572749687597, 0.5932483412594818, -0.7323033797867058, 0.7889248817643468, -0.5155670328747467, 0.9358726536374528, -0.11114949674987742}, 0.0, -7.493979782493007e+18, -6.621198306921948e+18, 0.11673639293301871, 0.9931629345505136};
+const Shape B = {{-0.475552247406243, 1.4213411108029987, -1.0743233487445618, 1.045078865738898, -0.7014170210939988, -1.3245280879586705, -0.580968877799903, -1.3816061871241574, -0.39669267229471217, -1.4453357454306286, -0.39234273155261445, -1.4465226145033696}, 0.0, -7.493979782493007e+18, -6.621198306921948e+18, 0.48820073755293797, 0.8727313675196781};
 
 // The exact answer for these inputs (gjk2d's CGAL/GMP ground truth), correctly rounded to double.
 // On overlap the shapes share points: no pair of nearest points is unique, and the exact side's
 // witness is one common point.
 const double exactDistance = 0;
 const bool exactOverlap = true;
-const double exactA[2] = {2.471872801693384e+70, 1.9012861439714407e+70}, exactB[2] = {2.471872801693384e+70, 1.9012861439714407e+70};
+const double exactA[2] = {-7.493979782493007e+18, -6.621198306921948e+18}, exactB[2] = {-7.493979782493007e+18, -6.621198306921948e+18};
 // The exact signed distance (minus the penetration depth on overlap) and penetration pair, where
 // gjk-validate computed them (a variant whose contract says penetration).
-const bool exactSigned = false;
-const double exactSignedDistance = 0;
-const double exactPA[2] = {0, 0}, exactPB[2] = {0, 0};
+const bool exactSigned = true;
+const double exactSignedDistance = -0.4561198835536618;
+const double exactPA[2] = {-7.493979782493007e+18, -6.621198306921948e+18}, exactPB[2] = {-7.493979782493007e+18, -6.621198306921948e+18};
 
 // The shape's reach from its own origin: radius + the largest |x| + |y| of its local points.
 double reach(const Shape& s)
@@ -140,15 +140,15 @@ int main()
     const Placed ga = geometryOf(A, h), gb = geometryOf(B, h);
     fcl::DistanceRequest<double> request;
     request.enable_nearest_points = true;
-    request.enable_signed_distance = false;
-    request.gjk_solver_type = fcl::GST_INDEP;
+    request.enable_signed_distance = true;
+    request.gjk_solver_type = fcl::GST_LIBCCD;
     fcl::DistanceResult<double> result;
     const double none = std::numeric_limits<double>::quiet_NaN(); // FCL may leave them unwritten
     result.nearest_points[0] = result.nearest_points[1] = Vec3(none, none, none);
     const double d =
         fcl::distance(ga.geometry.get(), ga.pose, gb.geometry.get(), gb.pose, request, result);
     const Vec3 &pa = result.nearest_points[0], &pb = result.nearest_points[1];
-    std::printf("FCL fcl::distance, GST_INDEP, on hard/extreme-scale/98-penetration-1e70 (half-height h = %.17g):\n", h);
+    std::printf("FCL fcl::distance, GST_LIBCCD, on hard/range/48-offset-x1e+19 (half-height h = %.17g):\n", h);
     std::printf("fcl    min_distance %.17g  nearest_points (%.17g, %.17g, %.17g) (%.17g, %.17g, %.17g)\n",
                 d, pa.x(), pa.y(), pa.z(), pb.x(), pb.y(), pb.z());
     // As gjk-validate reports it: min_distance as it is (negative: FCL's "in collision", or minus
