@@ -3,8 +3,8 @@
 #   scripts/setup.sh          packages to build and run the validation campaign
 #   scripts/setup.sh --tests  also what the test suite alone needs: Chromium and Python for the browser
 #                             tests, clang (clang++) for the flag builds (CTest label flags),
-#                             clang-format (14, Debian 12's) for the format check, pybind11, NumPy
-#                             and pytest for the Python package gjk2d (docs/python.md)
+#                             clang-format (14, Debian 12's) and black for the format checks,
+#                             pybind11, NumPy and pytest for the Python package gjk2d (docs/python.md)
 #   scripts/setup.sh --fuzz   also what the fuzz targets need (clang 14 and its libFuzzer/sanitizer runtimes)
 # Exit codes: 0 everything present (or installed), 3 packages missing and we cannot install them
 # (not root, or no apt-get): the exact command to run is printed.
@@ -31,6 +31,8 @@ for peer in "$(dirname "$0")"/../validation/plugins/*/peer.txt; do
 done
 if [[ "${1:-}" == "--tests" ]]; then
   packages+=(chromium python3 clang clang-format)
+  # The Python formatter (scripts/check_format.sh python): black 23.1.
+  packages+=(black)
   # The Python package (python/, docs/python.md): built against Debian's /usr/bin/python3.
   packages+=(python3-dev pybind11-dev python3-numpy python3-pytest)
   # The cross-platform check (CTest label cross, docs/gjk.md): cross g++ and qemu-user.

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the npm packages of each JavaScript peer's adapter: every folder
 # validation/plugins/<peer>/ with a package-lock.json (planck.js, Rapier, Jolt), into
-# build/npm/<peer>/, outside the source tree, each only when its lockfile differs from the copy
+# build/npm/<peer>/, outside the source tree, and the JavaScript formatter (scripts/format/, into
+# build/npm/format/), each only when its lockfile differs from the copy
 # installed last. Each peer's CMakeLists.txt builds its adapter when
 # build/npm/<peer>/node_modules/<package> exists. Called by scripts/setup.sh; runs alone too.
 #
@@ -47,7 +48,8 @@ install_peer() {
 }
 
 status=0
-for lock in "$root"/validation/plugins/*/package-lock.json; do
+# scripts/format/: the JavaScript formatter of scripts/check_format.sh (prettier), into build/npm/format/.
+for lock in "$root"/validation/plugins/*/package-lock.json "$root"/scripts/format/package-lock.json; do
   install_peer "$(dirname "$lock")" || status=1
 done
 exit $status
