@@ -34,5 +34,5 @@ for label, fn, batch in (("per pair, constant answer", constant, False),
                          ("per pair, gjk2d.distance", gjk2d.distance, False),
                          ("per batch, gjk2d.distance_batch", gjk2d.distance_batch, True)):
     t = ns_per_query(fn, batch)
-    print("{:34} {:9.0f} ns per query (gjk2d's double in the same run: {:.0f} ns)".format(
-        label, t["overhead"], t["double"]))
+    print(f"{label:34} {t['overhead']:9.0f} ns per query "
+          f"(gjk2d's double in the same run: {t['double']:.0f} ns)")

@@ -114,21 +114,21 @@ def summary(report, name):
     failing = [r for r in rows if r["failures"] > 0]
     cases = sum(r["cases"] for r in rows)
     failures = sum(r["failures"] for r in rows)
-    lines.append("{}: {} failures in {} cases ({} of {} families); exit code {}".format(
-        name, failures, cases, len(failing), len(rows), report["exit_code"]))
-    lines.append("  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9}".format(
-        "family", "failed", "beyond", "f.o+s", "inval.", "nonfin", "raised", "err/bound"))
+    lines.append(f"{name}: {failures} failures in {cases} cases ({len(failing)} of {len(rows)} "
+                 f"families); exit code {report['exit_code']}")
+    header = ("family", "failed", "beyond", "f.o+s", "inval.", "nonfin", "raised", "err/bound")
+    lines.append("  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9}".format(*header))
     for r in sorted(failing, key=lambda r: (-r["failures"], r["family"])):
         lines.append("  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9.3g}".format(
-            r["family"], "{}/{}".format(r["failures"], r["cases"]), r["beyond_bound"],
+            r["family"], f"{r['failures']}/{r['cases']}", r["beyond_bound"],
             r["false_separation"] + r["false_overlap"], r["invalid"], r["nonfinite"],
             r["plugin_errors"], r["bound_ratio_max"] or 0.0))
     timed = [r["ns_per_query"] for r in rows if r["ns_per_query"]]
     double = [r["ns_per_query"] for r in report.rows()
               if r["variant"] == "double" and r["ns_per_query"]]
     if timed and double:
-        lines.append("  time per query: median over families {:.1f} us (gjk2d's double: "
-                     "{:.2f} us)".format(np.median(timed) / 1e3, np.median(double) / 1e3))
+        lines.append(f"  time per query: median over families {np.median(timed) / 1e3:.1f} us "
+                     f"(gjk2d's double: {np.median(double) / 1e3:.2f} us)")
     return "\n".join(lines)
 
 
@@ -141,9 +141,9 @@ def main():
     parser.add_argument("--engine", type=int, default=200, help="cases of each engine family")
     parser.add_argument("--passes", type=int, default=None, help="timed passes (run --passes)")
     args = parser.parse_args()
-    families = ["random:{}".format(args.random),
-                "hard" if args.hard is None else "hard:{}".format(args.hard),
-                "engine:{}".format(args.engine)]
+    families = [f"random:{args.random}",
+                "hard" if args.hard is None else f"hard:{args.hard}",
+                f"engine:{args.engine}"]
     common = dict(families=families, passes=args.passes, progress=False)
     np.seterr(over="ignore", invalid="ignore")  # the extreme-scale family overflows: counted
     per_pair = gjk2d.validate(gjk, out=args.out + "/numpy-gjk", name="numpy-gjk", **common)

@@ -32,7 +32,7 @@ def _source(fn):
     qualname = getattr(fn, "__qualname__", None) or type(fn).__qualname__
     if qualname.startswith("PyCapsule."):  # a function of an extension module (pybind11)
         qualname = getattr(fn, "__name__", qualname)
-    return "python:{}.{}".format(module, qualname)
+    return f"python:{module}.{qualname}"
 
 
 def _specs(value, name):
@@ -43,7 +43,7 @@ def _specs(value, name):
         return [os.fspath(value)]
     items = [os.fspath(v) for v in value]
     if not all(isinstance(v, str) for v in items):
-        raise ValueError("{}: expected a string or a list of strings".format(name))
+        raise ValueError(f"{name}: expected a string or a list of strings")
     return items
 
 
@@ -58,7 +58,7 @@ def _run_arguments(name, families, cases, out, options):
         args.append("--default-cases")
     variants = _specs(options["variants"], "variants")
     if name in variants:
-        raise ValueError("variants: name only gjk2d's variants; {!r} is the callable".format(name))
+        raise ValueError(f"variants: name only gjk2d's variants; {name!r} is the callable")
     args += ["--variants", ",".join(variants + [name])]
     if options["judge"]:
         args += ["--judge", name]
@@ -109,7 +109,7 @@ def validate(fn, families=None, cases=None, out=None, *, name=None, batch=False,
                    worst=worst, chunk=chunk, exact_route=exact_route, timing=timing,
                    per_case=per_case, verbose=verbose, progress=progress)
     if library is None:
-        library = "Python {}, NumPy {}".format(platform.python_version(), numpy.__version__)
+        library = f"Python {platform.python_version()}, NumPy {numpy.__version__}"
     made = tempfile.mkdtemp(prefix="gjk2d-validate-") if out is None else None
     out = os.path.abspath(os.path.join(made, "report") if made else os.fspath(out))
     try:
@@ -168,10 +168,10 @@ def load_report(directory):
         try:
             data = json.load(f)
         except ValueError as e:
-            raise ValueError("{}: not JSON: {}".format(path, e)) from None
-    if not isinstance(data, dict) or data.get("schema") != REPORT_SCHEMA:
-        raise ValueError("{}: not a {} report (its schema: {!r})".format(
-            path, REPORT_SCHEMA, data.get("schema") if isinstance(data, dict) else None))
+            raise ValueError(f"{path}: not JSON: {e}") from None
+    schema = data.get("schema") if isinstance(data, dict) else None
+    if schema != REPORT_SCHEMA:
+        raise ValueError(f"{path}: not a {REPORT_SCHEMA} report (its schema: {schema!r})")
     report = Report(data)
     report.path = directory
     return report
