@@ -1438,7 +1438,7 @@ TEST_CASE("the duality-gap rule stops early on near-parallel edges (why it is no
     // 1e-12 (exact distance 9.9999477915425188e-13, from the exact side). Mechanism: with a gap
     // of 1e-12, v.v ~ 1e-24 while the rounding of v.w is about u |v| |w|, so
     // v.v - v.w <= 16 u v.v is met by rounding noise and the loop stops on an interior diagonal:
-    // the runner measured an error of 8.8e-10. The reference rule (repeated support) reaches the
+    // the runner found an error of 8.8e-10. The reference rule (repeated support) reaches the
     // closest edges: error 2e-17. Double only: in float the gap is below the input's rounding.
     using T = double;
     Scene<T> s;
