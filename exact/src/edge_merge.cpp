@@ -33,16 +33,15 @@ using I = CGAL::Interval_nt<false>; // needs the FPU in round-upward mode: see t
 
 // Per-point and per-vertex arrays stored inline up to a shape of kInline points (Box2D's polygons
 // have at most 8; the random family 3 to 8), on the heap beyond: a truth then allocates nothing
-// here on the common path (docs/speed.md, "Allocations, transforms and the fold", issue 34). 16
-// made the exact phase 12 % slower than 8 in wall time, for fewer instructions: a prepared shape
-// twice the memory.
+// here on the common path. 16 was slower than 8 in wall time, for fewer instructions: a prepared
+// shape twice the memory (docs/speed.md, "Allocations, transforms and the fold").
 constexpr std::size_t kInline = 8;
 template <class T> using PointArray = boost::container::small_vector<T, kInline>;
 template <class T> using VertexArray = boost::container::small_vector<T, 2 * kInline>; // Z, chains
 
 // The interval of the product of two doubles, [RD(a b), RU(a b)], in the round-upward mode the
 // Protector sets: CGAL's product of the point intervals I(a) and I(b), whose bounds are these same
-// correctly rounded doubles, without its general case (issue 34: fewer instructions a shape). The
+// correctly rounded doubles, without its general case (fewer instructions a shape). The
 // operands go through CGAL's own IA_opacify and IA_up, as in CGAL_IA_MUL: without them the
 // compiler, which assumes round-to-nearest, may fold -((-a) b) into a b. A zero's sign may differ
 // from CGAL's, which no comparison sees.
@@ -136,7 +135,7 @@ struct DecShape
 
 // A shape's transform as dyadic integers: made only where an exact value is needed (a predicate
 // the intervals left undecided, a construction), not with every shape (four frexp/ldexp pairs a
-// shape; issue 34).
+// shape).
 DecShape decShapeOf(const Shape& s)
 {
     return {decompose(s.c), decompose(s.s), decompose(s.px), decompose(s.py)};

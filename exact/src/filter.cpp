@@ -243,8 +243,8 @@ bool roundTo(const V& v, double& out, int* side = nullptr)
             *side = l > 0 ? 1 : l < 0 ? -1 : 0;
         return true;
     }
-    // The gaps to h's neighbours, std::nextafter's without its calls (issue 34: 1 % of a case's
-    // instructions): |h| is a normal double here, so its neighbours are its bit patterns +- 1.
+    // The gaps to h's neighbours, std::nextafter's without its calls (fewer instructions): |h| is
+    // a normal double here, so its neighbours are its bit patterns +- 1.
     const std::uint64_t bits = std::bit_cast<std::uint64_t>(a);
     const double away = std::bit_cast<double>(bits + 1) - a,
                  toward = a - std::bit_cast<double>(bits - 1);
@@ -318,8 +318,8 @@ bool valueOf(const double* g, int m, V& out)
 // p == 0 with a zero factor, or |p| >= 2^-960, mul()'s test), their four parts summed as one
 // expansion; when that fits in two doubles (add()'s exact route), renormalised and e added as a
 // second expansion, else e added to the first. Where the sum is not exact its bound is about u^2
-// of it, inside the 2^-98 relative bound of the operations this replaces. Issue 34: one
-// coordinate in about a third of their instructions. False when a product may have underflowed
+// of it, inside the 2^-98 relative bound of the operations this replaces, in fewer instructions.
+// False when a product may have underflowed
 // or a value is not finite: the caller takes transformByOperations().
 bool productSum(double a, double b, double c, double d, double e, V& out)
 {

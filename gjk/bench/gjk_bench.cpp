@@ -146,8 +146,8 @@ template <class T> void BM_RandomFloatRotations(benchmark::State& state)
 // The same cold query, but cycling over only the first `pairs` pairs (20,000 queries per pass, as
 // BM_Random). The work per query is the same on average; what changes is that the branch
 // predictor can learn a few hundred queries' branch patterns by heart (the data stay in cache in
-// both: BM_Random's 20,000 pairs take about 6 MB, and a 20,000-pair set whose points come from 500
-// pairs measured the same as BM_Random). The difference to BM_Random is therefore the cost of
+// both: a 20,000-pair set whose points come from 500 pairs times as BM_Random does, docs/speed.md,
+// "Where the time goes"). The difference to BM_Random is therefore the cost of
 // mispredicted branches in a cold query (docs/speed.md, "Where the time goes").
 template <class T> void BM_RandomLearned(benchmark::State& state)
 {

@@ -124,9 +124,8 @@ constexpr int kIdle = -3; // a lane with no query (LaneState::stop)
 constexpr bool kSortBySize = GJK_BATCH_SORT;
 constexpr std::size_t kSortBlock = 1024;
 // The lanes return to the scalar side (ends, refills) once this share of them has stopped: the
-// lanes then idle for a while (lane utilisation 0.75-0.83 instead of 0.9995), but the ends and
-// refills of several lanes share one return, and that was faster: 1 % (return when any lane
-// stops), 50 % and 75 % measured in docs/speed.md, "Batches in SIMD lanes".
+// lanes then idle for a while, but the ends and refills of several lanes share one return, which
+// costs less than a return at every stop (docs/speed.md, "Batches in SIMD lanes").
 #ifndef GJK_BATCH_STOPPED_PERCENT
 #define GJK_BATCH_STOPPED_PERCENT 75
 #endif
@@ -202,7 +201,7 @@ template <class T, int W, class State> class LaneBatch
     // Within each block of kSortBlock pairs, the pairs in order of their larger shape (a stable
     // counting sort): lanes running at once then hold shapes of about one size, and the scans
     // visit fewer padding points, while the pairs' memory is still visited block by block.
-    // Measured and left off (GJK_BATCH_SORT 0): slower, docs/speed.md, "Batches in SIMD lanes".
+    // Left off (GJK_BATCH_SORT 0): slower, docs/speed.md, "Tried and rejected".
     void sortBySize(int cap)
     {
         std::vector<std::size_t> sorted(order_.size());
@@ -443,13 +442,11 @@ void runLaneBatch(std::span<const DistanceInput<T>> inputs, std::span<SimplexCac
 }
 
 // Whether the lanes pay for this batch, chosen once from its shapes' point counts (BatchIsa::Best
-// only: an instruction set asked for by name runs as asked). Measured with `gjk-validate bench` on
-// 20,000 `random` pairs, on subsets of `random:100000` by shape size and on the 6,000 `engine`
-// pairs (docs/speed.md, "Against Box2D v3 in one command (issue 33)"): float lanes beat the scalar
-// loop everywhere (0.61x-0.85x); double lanes only where the shapes are small, as the engine's
-// boxes against edges and circles (mean 3.52 points per shape: 0.81x-0.86x), and lose from a mean
-// of 4 points (1.08x-1.13x; 5.5 on `random`: 1.01x-1.08x; 3.5, shapes of 3 and 4 points: 0.96x and
-// 1.03x, a tie). So double runs in lanes when the mean is at most 3.75 points per shape.
+// only: an instruction set asked for by name runs as asked). Float lanes beat the scalar loop on
+// every set timed; double lanes only where the shapes are small, as the engine's boxes against
+// edges and circles, and they lose from a mean of 4 points per shape (a mean of 3.5 ties). So
+// double runs in lanes when the mean is at most 3.75 points per shape (the figures:
+// docs/speed.md, "Batches in SIMD lanes").
 constexpr double kDoubleLanesMaxMeanPoints = 3.75;
 
 template <class T> bool lanesPay(std::span<const DistanceInput<T>> inputs)

@@ -179,9 +179,9 @@ TEST_CASE("pointToShapeDistance in floating point equals the GMP route on hostil
                 }
     INFO("GMP route for " << all.gmp << " of " << all.points << " points, " << ordinary.gmp
                           << " of " << ordinary.points << " on random shapes");
-    // Measured at the change: 850 of 28,911 points (2.9 %; mostly points far outside a 2^-498
-    // shape, whose products underflow, and values within the bound of a midpoint), 6 of 1,563 on
-    // the random shapes under an inexact rotation.
+    // The points left to GMP are mostly far outside a 2^-498 shape, whose products underflow, or
+    // within the bound of a midpoint; on random shapes they are rare. Both checks leave a wide
+    // margin above what the filter reaches (the INFO line prints the counts).
     CHECK(all.gmp * 4 < all.points);
     CHECK(ordinary.gmp * 20 < ordinary.points);
 }
@@ -217,7 +217,7 @@ TEST_CASE("pointToShapeDistance at exact vertices and on axis-aligned edges",
 
 TEST_CASE("pointToShapeDistance falls back where a product underflows", "[exact][filter][point]")
 {
-    // fuzz_truth's finding (crash-375a138d): a rotation of size 95 and subnormal x coordinates.
+    // fuzz_truth's finding: a rotation of size 95 and subnormal x coordinates.
     // c x_j underflows, so the edge vector's expansion is refused; the filter read its empty
     // component list as "d.x = 0" (an axis-aligned edge) and answered 266.4 where the exact
     // distance rounds to 259.3. Now a refused expansion sends the point to the GMP route.
@@ -275,7 +275,7 @@ TEMPLATE_TEST_CASE("pointToShapeDistance decides GJK's witness points", "[exact]
         filteredEqualsGmp(s[1], {double(out.pointB.x), double(out.pointB.y)}, t);
     }
     INFO("GMP route for " << t.gmp << " of " << t.points << " witness points");
-    // Measured at the change: 0 of 3,000 witness points, float and double.
+    // A witness point lies about u R from its shape, which the expansions decide: GMP is rare.
     CHECK(t.gmp * 100 < t.points);
 }
 
@@ -390,9 +390,9 @@ TEST_CASE("zSignExact: the predicates' exact signs by expansions equal the ratio
                         }
             }
     INFO(decided << " of " << asked << " signs decided, " << zeros << " of them exactly 0");
-    // Measured at the change: 469,667 of 479,724 decided (the rest refused: a product of expansion
-    // components below expansion.hpp's 2^-960, or a coordinate scaling would cut), 83,503 exact
-    // zeros, the case a bound alone never decides.
+    // The signs left undecided are refusals (a product of expansion components below
+    // expansion.hpp's 2^-960, or a coordinate scaling would cut); the exact zeros are the case a
+    // bound alone never decides, so they must be many (the INFO line prints the counts).
     CHECK(decided * 20 > asked * 19);
     CHECK(zeros > 1000);
 }
@@ -444,8 +444,8 @@ TEST_CASE("distance of prepared shapes equals distance of the shapes, fallback c
                 }
     INFO(cases << " results, " << exactHull << " with hull decisions left to exact integers, "
                << gmp << " filtered ones on the GMP route");
-    // The counts must be exercised for the fallback comparison to mean anything: measured at the
-    // change, 1,152 results, 105 with exact hull decisions (collinear and duplicate points),
-    // 492 filtered ones on the GMP route (extreme scales, touching shapes).
+    // The counts must be exercised for the fallback comparison to mean anything: exact hull
+    // decisions come from collinear and duplicate points, the GMP route from extreme scales and
+    // touching shapes (the INFO line prints the counts).
     CHECK(exactHull > 50);
 }

@@ -493,7 +493,7 @@ TEMPLATE_TEST_CASE("rounded shapes: radii subtracted at the end", "[gjk][radius]
     {
         // Core distance 2 < 1 + 2: overlap; the point rA / (rA + rB) = 1/3 of the way from A's core
         // point to B's, (2/3, 0): within 1 of A and 4/3 <= 2 of B, in both rounded shapes (the
-        // midpoint (1, 0) was before issue 30: it is in both here, not when one radius is small).
+        // midpoint (1, 0) would be in both here too, but not when one radius is small).
         Scene<T> s;
         s.a = {{0, 0}};
         s.b = {{2, 0}};
@@ -634,10 +634,10 @@ TEMPLATE_TEST_CASE("transforms as given: a float engine's rotation near unit siz
     using T = TestType;
     // qA = (1 + 2^-20, 0): |qA| is not 1 in float or double. The square [-1, 1]^2 then has the
     // world half-width 1 + 2^-20 exactly, and the point (4, 0) is at distance 3 - 2^-20, exact in
-    // both types (by hand). Transposing qA instead of inverting it (as up to d8e13d7) put B at
-    // 4 (1 + 2^-20)^2 in A's frame: an error of 4.77e-6 in both types (measured). The bound
-    // of docs/error-bound.md for this case is u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d) with
-    // A ~ 1.41, B = 0, D = 4, B~ ~ 4, W ~ 5.4, d ~ 3: about 100 u.
+    // both types (by hand). Transposing qA instead of inverting it (as an earlier version did) put
+    // B at 4 (1 + 2^-20)^2 in A's frame: an error of about 4.8e-6 in both types. The bound of
+    // docs/error-bound.md for this case is u (4 A + 43 B + 10.2 D + 1.5 B~ + 5 W + 6.5 d) with A
+    // ~ 1.41, B = 0, D = 4, B~ ~ 4, W ~ 5.4, d ~ 3: about 100 u.
     const T k = T(1) + std::ldexp(T(1), -20);
     Scene<T> s;
     s.a = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
@@ -1200,8 +1200,8 @@ TEMPLATE_TEST_CASE("tiny simplex edges: answered exactly, never flagged or non-f
     // The tiny-edge reproducers (validation/cases/tiny-edges.json, from an adversarial search), in
     // T. Each has a vertical edge of A, x = xe, whose y range contains the point B = (x0, y0): the
     // distance is xe - x0 by hand, a subtraction that is exact in T (Sterbenz, or x0 = 0). The
-    // edge's squared length is subnormal, or below 1/max. At c925c49 (before tiny edges were scaled
-    // up) the inf-weights cases came out flagged outOfRange with NaN witness points (the weights'
+    // edge's squared length is subnormal, or below 1/max. Before tiny edges were scaled up, the
+    // inf-weights cases came out flagged outOfRange with NaN witness points (the weights'
     // reciprocal overflowed, and the rescaled retry could not help: the problem's extent is already
     // ~1), and the subnormal-edge cases were answered only by the rescaled retry.
     struct Case
@@ -1438,7 +1438,7 @@ TEST_CASE("the duality-gap rule stops early on near-parallel edges (why it is no
     // 1e-12 (exact distance 9.9999477915425188e-13, from the exact side). Mechanism: with a gap
     // of 1e-12, v.v ~ 1e-24 while the rounding of v.w is about u |v| |w|, so
     // v.v - v.w <= 16 u v.v is met by rounding noise and the loop stops on an interior diagonal:
-    // the runner measured an error of 8.8e-10. The reference rule (repeated support) reaches the
+    // the runner found an error of 8.8e-10. The reference rule (repeated support) reaches the
     // closest edges: error 2e-17. Double only: in float the gap is below the input's rounding.
     using T = double;
     Scene<T> s;

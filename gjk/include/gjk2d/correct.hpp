@@ -16,7 +16,8 @@
 //      double-double (stage 4's first steps, below); then the square root, the quotient, the radii
 //      and the rounding decision in 80-bit extended precision (long double, where it is that
 //      format), with a static error bound: about 2^-61 of the distance. A distance within that of
-//      a rounding midpoint goes on to stage 4's double-double tail (0.37 % of `random`).
+//      a rounding midpoint goes on to stage 4's double-double tail (rare: docs/gjk.md,
+//      "Correctly rounded distance").
 //   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
 //      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
 //      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
@@ -365,11 +366,11 @@ GJK_CORRECT_INLINE double roundInterval(const Approx& xl, const Approx& xh)
 //
 // Float-engine data make exact ties common: a distance whose exact value has few bits (sums of
 // products of floats) can sit exactly on a midpoint between two doubles, where no bound can
-// decide (5 % of engine/pyramid-toi). When the features are the closest ones and the interval
-// around X = U - rA - rB straddles one midpoint T, the sign of U* - (T + rA + rB) is computed
-// exactly with expansions (gjk2d/exact_arithmetic.hpp); a guard that fails leaves the query to the
-// exact side. Vertex: U*^2 = |W1|^2; edge: U* = |C| / |e| with C = cross(e, W1), compared as
-// C^2 against T'^2 |e|^2 (T' = T + rA + rB > 0).
+// decide (common on engine/pyramid-toi: docs/gjk.md, "Correctly rounded distance"). When the
+// features are the closest ones and the interval around X = U - rA - rB straddles one midpoint T,
+// the sign of U* - (T + rA + rB) is computed exactly with expansions (gjk2d/exact_arithmetic.hpp);
+// a guard that fails leaves the query to the exact side. Vertex: U*^2 = |W1|^2; edge: U* = |C| /
+// |e| with C = cross(e, W1), compared as C^2 against T'^2 |e|^2 (T' = T + rA + rB > 0).
 
 // The exact point W(i, j) of Z, both coordinates: the exact pieces of Terms (addWorldPoint), summed
 // into expansions.
@@ -472,11 +473,12 @@ inline double roundAtMidpoint(const DistanceInput<double>& in, const SimplexCach
 // the square root, the quotient, the radii and the rounding decision. Unit roundoff u = 2^-64 per
 // operation, and no operation can underflow or overflow: products and sums of doubles stay far
 // inside its exponent range (+-16382). Its error, about 2^-61 of the distance, leaves undecided
-// only distances that close to a rounding midpoint (0.37 % of `random`, which go on to the
+// only distances that close to a rounding midpoint (a small share, which go on to the
 // double-double tail), at a fraction of that tail's chains of dependent operations. Computing the
 // points of Z in extended precision too was tried: each coordinate then errs by u times its
-// terms' magnitudes, not its own, which left a quarter of `random` undecided. Elsewhere (long
-// double is double with MSVC, binary128 in software on AArch64) the stage is skipped.
+// terms' magnitudes, not its own, which left far more of `random` undecided (docs/gjk.md).
+// Elsewhere (long double is double with MSVC, binary128 in software on AArch64) the stage is
+// skipped.
 using Ext = long double;
 inline constexpr bool kExtended = std::numeric_limits<Ext>::digits == 64;
 inline constexpr Ext uExt = 0x1p-64L;

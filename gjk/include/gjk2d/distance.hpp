@@ -198,8 +198,7 @@ GJK_INLINE int startSimplex(const SimplexCache& cache, Shape& A, Shape& B, Simpl
 // The loop's state besides the simplex (startLoop sets it up, runLoop updates it), from which
 // finishQuery makes the output and the cache. Shared by the query below and the SIMD batch
 // (gjk2d/batch.hpp), whose lanes run the loop and end here. (The simplex is passed by reference:
-// copied into this struct, it cost the scalar query 6-20 %, docs/speed.md, "Batches in SIMD
-// lanes".)
+// a copy in this struct slowed the scalar query, docs/speed.md, "Tried and rejected".)
 template <class T> struct QueryEnd
 {
     int edgeBase;

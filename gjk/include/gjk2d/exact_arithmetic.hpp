@@ -12,9 +12,10 @@
 
 #include "gjk2d/detail/fp_begin.hpp" // no contraction into FMA, whatever the user's flags
 
-// The steps below are forced inline in optimised builds (the speed measured in docs/gjk.md), and
-// only `inline` in checked builds (GJK2D_CHECKED: the sanitizer and fuzzing builds), where forcing
-// them nearly doubles the compile time of every translation unit that instantiates the query.
+// The steps below are forced inline in optimised builds (for speed: docs/speed.md, "double-correct
+// at 1.5x"), and only `inline` in checked builds (GJK2D_CHECKED: the sanitizer and fuzzing
+// builds), where forcing them nearly doubles the compile time of every translation unit that
+// instantiates the query.
 // Spelled as GJK_INLINE (gjk2d/detail/macros.hpp) is, so that this header needs no other gjk
 // header.
 #if defined(GJK2D_CHECKED) || !defined(__GNUC__)

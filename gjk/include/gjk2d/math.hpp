@@ -110,20 +110,18 @@ template <class T> struct Tolerances
     // R = sqrt(min_normal / u) the products R^2 fall under min_normal/u and lose relative accuracy
     // to gradual underflow (float: 4.4e-16, double: 1.5e-146). A query whose support points leave
     // [minCoordinate, maxCoordinate] runs again rescaled, and is flagged DistanceOutput::outOfRange
-    // only when that cannot help (distance.hpp, "Rescaling").
+    // only when that cannot help (gjk2d/rescale.hpp; docs/gjk.md, "Range").
     static inline const T maxCoordinate = std::sqrt(std::numeric_limits<T>::max()) / T(8);
     static inline const T minCoordinate = std::sqrt(std::numeric_limits<T>::min() / unitRoundoff);
     // A rotation whose computed squared size c^2 + s^2 is within this of 1 is used as a unit one:
     // A's frame inverts it by transposing it and skips the division by |qA|^2 and the final
     // multiplication by |qA| (docs/gjk.md, "Transforms"). The computed size carries 2u, so the true
     // |qA|^2 is then within 4u of 1, and the transpose within 4u of the inverse:
-    // docs/error-bound.md, term 1 (6u instead of the division's 5u). Why not exactly 1: a double
-    // (cos t, sin t) pair has c^2 + s^2 != 1 in 22 % of random angles, and a test against exactly 1
-    // made the branch unpredictable (gjk_bench's warm double query: 1.9 more mispredicted branches
-    // per query, docs/speed.md, "Transforms as given"). Within 2u, glibc's (cos t, sin t) is a unit
-    // rotation for all of 1e7 random angles, in double and in float, and a float pair seen in
-    // double
-    // (|c^2 + s^2 - 1| ~ 1e-8 .. 1e-7) for none of them.
+    // docs/error-bound.md, term 1 (6u instead of the division's 5u). Why not exactly 1: a computed
+    // (cos t, sin t) pair often has c^2 + s^2 != 1, and a test against exactly 1 made the branch
+    // unpredictable; within 2u a double or float (cos t, sin t) is a unit rotation and a float pair
+    // seen in double (|c^2 + s^2 - 1| ~ 1e-8 .. 1e-7) is not (docs/speed.md, "Transforms as
+    // given").
     static constexpr T unitRotation = T(2) * unitRoundoff;
 };
 

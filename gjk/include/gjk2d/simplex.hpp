@@ -25,8 +25,8 @@ namespace gjk
 // Tolerances<T>::minCoordinate) in both components is multiplied by the power of two that brings
 // it to size ~1, exactly, and nothing else changes in exact arithmetic. Unscaled, such an edge
 // lost the query (validation/cases/tiny-edges.json): its
-// squared length went subnormal (a 3.5e-162 edge in double, 5.9e-23 in float: a distance 10 % off),
-// or below 1/max, where the weights' reciprocal 1/(u + v) overflowed (inf weights, NaN
+// squared length went subnormal (a 3.5e-162 edge in double, 5.9e-23 in float: the distance far
+// off), or below 1/max, where the weights' reciprocal 1/(u + v) overflowed (inf weights, NaN
 // witness points, flagged outOfRange with no answer). Scaled, u + v = |e|^2 ~ 1 and the products
 // with in-range points stay normal.
 template <class T> [[gnu::noinline]] Vec2<T> scaleUpEdge(Vec2<T> e)

@@ -99,7 +99,7 @@ enum class SupportStrategy : std::uint8_t
 };
 
 // Shapes of at most this many points use the linear scan under SupportStrategy::BinarySearch too:
-// the scan is faster there (docs/speed.md).
+// the scan is faster there (docs/speed.md, "Tried and rejected").
 inline constexpr int linearScanMaxCount = 16;
 
 constexpr bool usesBinarySearch(SupportStrategy s, int count)

@@ -7,9 +7,8 @@
 // batch) all assume that no a*b + c is contracted into a fused multiply-add. The project builds
 // with -ffp-contract=off, but a user's build need not: GCC contracts by default whenever the target
 // has FMA (-march=native, -march=x86-64-v3), in ISO mode too for C++, and Clang contracts within an
-// expression by default. Measured before this prologue (docs/gjk.md, "Compiler flags"): every
-// such build gave other output bits than the project's, and gjk tests failed (GCC: 7 of 62 test
-// cases, Clang: 3).
+// expression by default. Before this prologue every such build gave other output bits than the
+// project's, and gjk tests failed (docs/gjk.md, "Compiler flags").
 //
 // GCC: `optimize("fp-contract=off")` gives every function defined in the region (templates,
 // lambdas and their instantiations included) the option, whatever the command line says. GCC does
