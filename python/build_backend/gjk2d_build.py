@@ -115,7 +115,9 @@ def _stage(module, stage):
     # The stub of the extension, from its pybind11 signatures; the .py files are their own types.
     stubs = stage.parent / "stubs"
     env = dict(os.environ, PYTHONPATH=str(stage), PYTHONDONTWRITEBYTECODE="1")
-    _run([sys.executable, "-m", "mypy.stubgen", "-q", "-m", "gjk2d._gjk2d", "-o", stubs],
+    # Debian's mypy is compiled (mypyc): `-m mypy.stubgen` finds no code object, main() runs.
+    _run([sys.executable, "-c", "from mypy.stubgen import main; main()", "-q", "-m",
+          "gjk2d._gjk2d", "-o", stubs],
          env=env, cwd=stage.parent)
     shutil.copyfile(stubs / "gjk2d" / "_gjk2d.pyi", package / "_gjk2d.pyi")
     (package / "py.typed").write_text("")  # PEP 561: the package carries its types
