@@ -4,7 +4,8 @@
 #   scripts/setup.sh --tests  also what the test suite alone needs: Chromium and Python for the browser
 #                             tests, clang (clang++) for the flag builds (CTest label flags),
 #                             clang-format (14, Debian 12's) and black for the format checks,
-#                             pybind11, NumPy and pytest for the Python package gjk2d (docs/python.md)
+#                             pybind11, NumPy and pytest for the Python package gjk2d
+#                             (docs/python.md), venv, pip, build, wheel and mypy for its wheel
 #   scripts/setup.sh --fuzz   also what the fuzz targets need (clang 14 and its libFuzzer/sanitizer runtimes)
 # Exit codes: 0 everything present (or installed), 3 packages missing and we cannot install them
 # (not root, or no apt-get): the exact command to run is printed.
@@ -35,6 +36,9 @@ if [[ "${1:-}" == "--tests" ]]; then
   packages+=(black)
   # The Python package (python/, docs/python.md): built against Debian's /usr/bin/python3.
   packages+=(python3-dev pybind11-dev python3-numpy python3-pytest)
+  # Its wheel (pyproject.toml): venv and pip to install it, python3-build and python3-wheel to
+  # make it, mypy's stubgen for its type stubs.
+  packages+=(python3-venv python3-pip python3-build python3-wheel mypy)
   # The cross-platform check (CTest label cross, docs/gjk.md): cross g++ and qemu-user.
   packages+=(g++-aarch64-linux-gnu g++-riscv64-linux-gnu g++-s390x-linux-gnu qemu-user)
 fi

@@ -1,5 +1,8 @@
 """gjk2d: 2D GJK distance, its exact ground truth, cases and validation (docs/python.md)."""
 
+import os as _os
+
+from . import _gjk2d
 from ._gjk2d import (
     STOP_REASONS,
     DistanceResult,
@@ -14,6 +17,12 @@ from ._gjk2d import (
     write_cases,
 )
 from ._validate import Report, load_report, validate
+
+# The runner finds the default campaign's case files beside its program, which is Python here:
+# the package's own cases/ (the wheel's copy, or the build tree's link) is given instead.
+_CASES = _os.path.join(_os.path.dirname(_os.path.abspath(__file__)), "cases")
+if _os.path.isdir(_CASES):
+    _gjk2d._set_case_dir(_CASES)
 
 
 def case_args(case):

@@ -8,6 +8,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 
+#include "campaign/campaign.hpp"
 #include "commands/command_line.hpp"
 #include "common/output.hpp"
 #include "evaluate/evaluate.hpp"
@@ -358,6 +359,9 @@ void bindValidate(py::module_& m)
           "gjk2d.validate's campaign (python/gjk2d/_validate.py builds the arguments of `run`): "
           "fn registered as the in-process variant `name`, then `gjk-validate run` with args, in "
           "this process; returns the exit code (0 or 1), raises the runner's errors.");
+    m.def("_set_case_dir", &gjkval::setDefaultCaseDir, "dir"_a,
+          "Where the default campaign's case files are (the runner looks beside its program, "
+          "which is Python here): python/gjk2d/__init__.py gives its package's cases/ at import.");
 }
 
 } // namespace gjk2d_python

@@ -60,10 +60,15 @@ struct CampaignConfig
 std::vector<std::string> defaultFamilies();
 // defaultFamilies() as run's options: "--family random:200000 --family hard --family engine".
 std::string defaultFamilyOptions();
-// Every *.json of the default campaign's case files, sorted, found relative to the program: in
-// <dir>/cases (the build tree, a link to validation/cases) or <dir>/../<datadir>/gjk2d/cases (an
-// installed prefix). InputError, one line naming both places, when neither exists.
+// Every *.json of the default campaign's case files, sorted: in the directory given to
+// setDefaultCaseDir when one was, else found relative to the program: in <dir>/cases (the build
+// tree, a link to validation/cases) or <dir>/../<datadir>/gjk2d/cases (an installed prefix).
+// InputError, one line naming the places looked in, when none exists.
 std::vector<std::string> defaultCaseFiles();
+// Where a program that is not gjk-validate keeps the default case files: the Python module, whose
+// program is the Python interpreter, gives its package's cases/ (python/gjk2d/__init__.py).
+// An empty string goes back to the places beside the program. Set before a campaign runs.
+void setDefaultCaseDir(std::string dir);
 
 // The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
 std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);

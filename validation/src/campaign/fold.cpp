@@ -14,13 +14,20 @@
 #include <filesystem>
 #include <future>
 #include <ostream>
+#include <utility>
 
 namespace gjkval
 {
 namespace
 {
 namespace fs = std::filesystem;
+std::string g_defaultCaseDir; // setDefaultCaseDir's; empty: beside the program
 } // namespace
+
+void setDefaultCaseDir(std::string dir)
+{
+    g_defaultCaseDir = std::move(dir);
+}
 
 std::vector<std::string> defaultFamilies()
 {
@@ -38,13 +45,22 @@ std::string defaultFamilyOptions()
 std::vector<std::string> defaultCaseFiles()
 {
     std::error_code ec;
-    const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
-    const fs::path build = exeDir / "cases", installed = exeDir / ".." / GJK2D_INSTALL_CASE_DIR;
-    const fs::path dir = fs::is_directory(build, ec) ? build : installed;
-    if (!fs::is_directory(dir, ec))
-        throw InputError(fmt::format(
-            "the default campaign's case files are in neither {} nor {}: give --family or --cases",
-            excerpt(build.string()), excerpt(installed.lexically_normal().string())));
+    fs::path dir = g_defaultCaseDir;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        throw InputError(
+            fmt::format("the default campaign's case files are not in {}: give --family or --cases",
+                        excerpt(dir.string())));
+    if (dir.empty())
+    {
+        const fs::path exeDir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+        const fs::path build = exeDir / "cases", installed = exeDir / ".." / GJK2D_INSTALL_CASE_DIR;
+        dir = fs::is_directory(build, ec) ? build : installed;
+        if (!fs::is_directory(dir, ec))
+            throw InputError(fmt::format("the default campaign's case files are in neither {} nor "
+                                         "{}: give --family or --cases",
+                                         excerpt(build.string()),
+                                         excerpt(installed.lexically_normal().string())));
+    }
     std::vector<std::string> files;
     for (const auto& e : fs::directory_iterator(dir, ec))
         if (e.is_regular_file() && e.path().extension() == ".json")
