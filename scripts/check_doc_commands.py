@@ -328,7 +328,7 @@ def main():
     if not exe.exists():
         print(f"check_doc_commands: no {exe}: build gjk-validate first", file=sys.stderr)
         return 2
-    # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/validation.md, "MPI").
+    # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/cli.md, "Shards, merge, MPI, resume").
     env = dict(os.environ, PATH=f"{build / 'validation'}:{os.environ['PATH']}",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     errors = []

@@ -17,7 +17,7 @@
 namespace gjkval
 {
 
-// Ranges of the numeric options (docs/validation.md).
+// Ranges of the numeric options (docs/cli.md).
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxPasses = 1000;
 inline constexpr int kMaxWorst = 1000;

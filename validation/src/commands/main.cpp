@@ -1,4 +1,4 @@
-// gjk-validate: the validation runner (docs/validation.md).
+// gjk-validate: the validation runner (docs/campaign.md, docs/cli.md).
 //   run       a campaign: families and case files -> exact truth, GJK variants -> reports
 //   generate  write a family's cases to a gjk-cases/1 file
 //   explain   one case in detail: inputs, each variant's result and trace, the exact result

@@ -10,7 +10,7 @@
 namespace gjkval
 {
 
-// What a bound may depend on, for one case and one variant (docs/validation.md, "Metrics"). All
+// What a bound may depend on, for one case and one variant (docs/judgement.md, "Truth and metrics"). All
 // computed in double from the input the variant sees (float-rounded for float variants), in the
 // variant's compute frame: A's local frame (Frame::LocalA) or the world (Frame::World).
 struct CaseMetrics

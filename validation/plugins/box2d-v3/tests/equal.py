@@ -55,7 +55,7 @@ def shape_line(tag, s):
 
 
 def write_text(cases_json, out):
-    """Streams the case file (one case per line, docs/validation.md) into box2d3_direct's format."""
+    """Streams the case file (one case per line, docs/case-files.md) into box2d3_direct's format."""
     names = []
     with open(cases_json) as f, open(out, "w") as o:
         for line in f:

@@ -1,7 +1,7 @@
 # The Box2D v3 adapter's own tests, included by tests/plugins/CMakeLists.txt (the adapter is built
 # when GJK2D_BOX2D3_SOURCE names a Box2D v3 tree): hand-derived cases (hand.py), and its answers
 # against b2ShapeDistance called directly by direct.c, linked with the adapter's own Box2D objects, on every case of the
-# default campaign's families (docs/validation.md, `run`: random:200000, hard, engine).
+# default campaign's families (docs/cli.md, `run`: random:200000, hard, engine).
 if(TARGET gjk2d_box2d3_plugin)
   enable_language(C)
   add_executable(box2d3_direct ${CMAKE_CURRENT_LIST_DIR}/direct.c)
