@@ -44,8 +44,8 @@ extern "C"
  *
  *     const gjk2d_timing* gjk2d_plugin_timing(void);
  *
- * the plugin's own timing loop, for `gjk-validate bench --against` (docs/validate-your-gjk.md,
- * "Timing loop"): the library timed the way its own benchmark would time it, over inputs it
+ * the plugin's own timing loop, for `gjk-validate bench --against` (docs/plugin-abi.md,
+ * "Optional exports"): the library timed the way its own benchmark would time it, over inputs it
  * prepared once in its own types, rather than call by call through distance_f/distance_d. The
  * runner calls prepare once, then pass once per timed pass (alternated with gjk2d's passes), then
  * release, all in one child process; the table lives as long as the library. */
