@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A timing through the executable-adapter protocol agrees with the shared library's (issue 32).
+"""A timing through the executable-adapter protocol agrees with the shared library's.
 
   scripts/adapter_timing_check.py [--build build/release] [--rounds 6] [--cases 2000]
 

@@ -31,7 +31,7 @@ extern "C"
 #define GJK2D_PLUGIN_ABI_MIN_VERSION 1
 #define GJK2D_PLUGIN_ENTRY_POINT "gjk2d_plugin_describe"
 
-/* Optional, since issue 32 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const char* gjk2d_plugin_library(void);
  *
@@ -40,7 +40,7 @@ extern "C"
  * variants (variants[].plugin.library; "" when the plugin does not export it). */
 #define GJK2D_PLUGIN_LIBRARY_ENTRY "gjk2d_plugin_library"
 
-/* Optional, since issue 33 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_timing* gjk2d_plugin_timing(void);
  *
@@ -51,7 +51,7 @@ extern "C"
  * release, all in one child process; the table lives as long as the library. */
 #define GJK2D_PLUGIN_TIMING_ENTRY "gjk2d_plugin_timing"
 
-/* Optional, since issue 50 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_prepared* gjk2d_plugin_prepared(void);
  *
@@ -63,7 +63,7 @@ extern "C"
  * shape set-up. The table (below) lives as long as the library. */
 #define GJK2D_PLUGIN_PREPARED_ENTRY "gjk2d_plugin_prepared"
 
-/* Optional, since issue 51 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_depth_contract* gjk2d_plugin_depth(void);
  *

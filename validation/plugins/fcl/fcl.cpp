@@ -1,7 +1,7 @@
 // The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h, ABI version 2): fcl::distance between two
 // prisms, with both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD,
 // FCL's default) and "fcl-0.7-indep" (GST_INDEP), and a third, "fcl-0.7-libccd-signed":
-// GST_LIBCCD with DistanceRequest::enable_signed_distance = true (issue 51). Built against Debian's
+// GST_LIBCCD with DistanceRequest::enable_signed_distance = true. Built against Debian's
 // libfcl-dev (FCL 0.7.0, whose headers are upstream's tag 0.7.0 unchanged); docs/peers.md, "##
 // FCL".
 //

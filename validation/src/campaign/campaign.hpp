@@ -127,8 +127,8 @@ inline constexpr OldStateVersion kOldStateVersions[] = {
 };
 
 // One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,
-// docs/cli.md, "Shards, merge, MPI, resume"). Exact: histogram sums are exact, every tie is broken by
-// case order, so merging the shards gives the one-process report, timing fields aside.
+// docs/cli.md, "Shards, merge, MPI, resume"). Exact: histogram sums are exact, every tie is broken
+// by case order, so merging the shards gives the one-process report, timing fields aside.
 Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,
               std::ostream* perCase = nullptr);
 

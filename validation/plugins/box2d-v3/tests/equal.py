@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The shipped Box2D v3 adapter adds nothing and loses nothing (issue 32, a Done-when):
+"""The shipped Box2D v3 adapter adds nothing and loses nothing:
 
   equal.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --direct BOX2D3_DIRECT
                   --work DIR --family SPEC [--family SPEC ...]

@@ -24,7 +24,7 @@ if(TARGET gjk2d_box2d3_plugin)
   # release-only: scripts/test.sh leaves it out of the sanitize run, where it would repeat the
   # release comparison at several times the cost (214,000 cases) with Box2D's C files, which the
   # sanitize preset's CMAKE_CXX_FLAGS do not instrument, compiled alike.
-  # `bench --against box2d-v3` (issue 33): the adapter's own timing loop runs, cold and warm, and
+  # `bench --against box2d-v3`: the adapter's own timing loop runs, cold and warm, and
   # the table has its two rows and the ratio column, the JSON their numbers (null when the loop
   # failed); no timing is asserted.
   add_test(NAME "plugins: box2d-v3: bench --against box2d-v3 prints its cold and warm rows"

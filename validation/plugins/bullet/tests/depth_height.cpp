@@ -33,11 +33,11 @@
 // errors of double from the exact one (sums and products of the case's numbers, one square root):
 // far below the errors measured, which are Bullet's.
 //
-// The half-height rules: h = 1 (the issue's prism), h = k (eA + eB) for k = 2 (the adapter's rule
-// before issue 51), then powers of two to 2^20, among them the adapter's (bullet.cpp,
-// kHeightFactor: 2^4 in float, 2^14 in double; e: bullet.cpp's extent). The 3D minimal translation
-// of two prisms P x [-h, h], Q x [-h, h] is min(2D depth, 2h) in exact arithmetic (the Minkowski
-// difference is M x [-2h, 2h], whose nearest face is an edge of M or a cap).
+// The half-height rules: h = 1, h = k (eA + eB) for k = 2 (FCL's rule), then powers of two to 2^20,
+// among them the adapter's (bullet.cpp, kHeightFactor: 2^4 in float, 2^14 in double; e:
+// bullet.cpp's extent). The 3D minimal translation of two prisms P x [-h, h], Q x [-h, h] is min(2D
+// depth, 2h) in exact arithmetic (the Minkowski difference is M x [-2h, 2h], whose nearest face is
+// an edge of M or a cap).
 #include "direct_loop.hpp"
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>

@@ -276,7 +276,7 @@ TEST_CASE("the answer does not depend on memory left by earlier calls (hard/extr
     const peers::Answer second = bullet<double>().distance(a, b);
     REQUIRE(first.status == second.status);
     // Field by field, bit for bit (NaN == NaN): the struct's padding after `status` is not part of
-    // the answer, and a memcmp of it failed once in CI (fresh clone at 4a33df8, sanitize preset).
+    // the answer, and a memcmp of it failed once in CI (a fresh clone, sanitize preset).
     const auto bits = [](const peers::Answer& r)
     {
         return std::array<std::uint64_t, 5>{
