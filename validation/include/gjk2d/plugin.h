@@ -71,7 +71,7 @@ extern "C"
  * exact penetration depth an implementation whose contract says GJK2D_OVERLAP_PENETRATION
  * promises its depth to be, and where the library says so. Without it (or with both tolerances
  * negative) the depth is held to gjk2d's depth bound for the scalar type, and the report says that
- * no tolerance is stated (docs/peers.md, "Contracts"). */
+ * no tolerance is stated (docs/peers.md, "What each peer promises (its contract)"). */
 #define GJK2D_PLUGIN_DEPTH_ENTRY "gjk2d_plugin_depth"
 
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
@@ -184,7 +184,8 @@ extern "C"
      * its file and line or its documentation, and its version, e.g. "fcl/narrowphase/
      * distance_request.h:63, FCL 0.7.0". A clause the library does not state has a NULL or empty
      * source and says "none stated"; the runner then holds it to gjk2d's own bound for the
-     * implementation's scalar type, and says so (docs/peers.md, "Contracts"). */
+     * implementation's scalar type, and says so (docs/peers.md, "What each peer promises (its
+     * contract)"). */
     typedef struct gjk2d_contract
     {
         /* The distance on separated shapes is within abs + rel * exact of the exact distance; a

@@ -1,12 +1,12 @@
-// Bullet's penetration depth against the prisms' half height (docs/peers.md, "The prism
-// reduction"; validation/plugins/bullet/bullet.cpp, prismHalfHeight): Bullet 3.24 called through
-// its own API only (a btConvexHullShape per prism, margin = radius, a btVoronoiSimplexSolver in
-// zeroed storage, btGjkEpaPenetrationDepthSolver, btGjkPairDetector with identity transforms, as
-// the adapter and direct_loop.cpp build them), on every overlapping case of a case file, once per
-// half-height rule, its depth set against the 2D depth. Not a test: its figures go into
-// docs/peers.md with the command. Its CTest (--check N --plugin P) checks that it runs and that,
-// on the file's first N overlapping cases, the adapter's prepared queries answer bit for bit what
-// this program answers at the adapter's rule (so that the figures are the adapter's).
+// Bullet's penetration depth against the prisms' half height (docs/peers/prisms.md;
+// validation/plugins/bullet/bullet.cpp, prismHalfHeight): Bullet 3.24 called through its own API
+// only (a btConvexHullShape per prism, margin = radius, a btVoronoiSimplexSolver in zeroed storage,
+// btGjkEpaPenetrationDepthSolver, btGjkPairDetector with identity transforms, as the adapter and
+// direct_loop.cpp build them), on every overlapping case of a case file, once per half-height rule,
+// its depth set against the 2D depth. Not a test: its figures go into docs/peers.md with the
+// command. Its CTest (--check N --plugin P) checks that it runs and that, on the file's first N
+// overlapping cases, the adapter's prepared queries answer bit for bit what this program answers at
+// the adapter's rule (so that the figures are the adapter's).
 //
 //     cd build/release
 //     validation/gjk-validate generate --family random:2000 --seed 1 --out /tmp/r.json

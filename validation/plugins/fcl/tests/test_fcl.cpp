@@ -1,6 +1,6 @@
-// The FCL 0.7 adapter (validation/plugins/fcl/fcl.cpp) on hand-derived cases; docs/peers.md,
-// "## FCL", states the findings these tests reproduce. Unit squares are [0, 1]^2 placed by their
-// case's transform.
+// The FCL 0.7 adapter (validation/plugins/fcl/fcl.cpp) on hand-derived cases; docs/peers/fcl.md,
+// states the findings these tests reproduce. Unit squares are [0, 1]^2 placed by their case's
+// transform.
 //
 // Tolerances (each derived here, checked against what FCL 0.7.0 answered):
 // - kPolygon = 64 u S with S = 5, the largest coordinate: the adapter rounds the world points
