@@ -12,7 +12,7 @@
 #   lib/cmake/gjk2d/         gjk2d-config.cmake, its version file and the exported targets
 #   lib/pkgconfig/gjk2d.pc   for pkg-config (cflags of the headers, libs of the exact side)
 # ("lib" is GNUInstallDirs' CMAKE_INSTALL_LIBDIR.) CPack makes the Debian package gjk2d from the
-# same rules (docs/validate-your-gjk.md, "Install").
+# same rules (docs/validate-your-gjk.md, "1. Install the SDK").
 include(CMakePackageConfigHelpers)
 
 # `cpack` (and `make install`) install what is built, without building every target first: the

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""A timing through the executable-adapter protocol agrees with the shared library's (issue 32).
+"""A timing through the executable-adapter protocol agrees with the shared library's.
 
   scripts/adapter_timing_check.py [--build build/release] [--rounds 6] [--cases 2000]
 
@@ -9,7 +9,7 @@ same .so, its names suffixed -bridge) started by a two-line wrapper script; the 
 alternate between rounds, so that a drift of the machine's speed falls on both. Prints each
 round's ratio bridge / shared library and their median; exit 0 when the median is within 15%,
 1 otherwise. A bench check, not a unit test: its figures depend on the machine (run it on a quiet
-one; docs/validate-your-gjk.md gives a measurement).
+one; docs/plugin-abi.md, "gjk2d-adapter-bridge").
 """
 import argparse
 import json

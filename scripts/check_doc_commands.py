@@ -17,8 +17,8 @@ Where commands run:
     so do `scripts/run.sh ARGS` and `gjk-validate run ARGS`, since the script sets up, builds and
     then runs exactly that); the files a command writes (hard.json, ...) stay there, so later
     commands can read them. reports/ there is the scratch directory's own: the repository's
-    reports/latest/ (the default campaign of a person's `scripts/run.sh`) is never written (issue
-    30: the tests replaced it with a docs command's 32-case report). Docs run in the order
+    reports/latest/ (the default campaign of a person's `scripts/run.sh`) is never written (a docs
+    command's small report would replace a person's default campaign). Docs run in the order
     README.md, then docs/ by name.
   - `scripts/*.sh` and `cmake --preset`/`--build --preset` change to the repository root
     themselves; they run there, against the build under test (only when it is build/release).
@@ -333,7 +333,7 @@ def main():
     if not exe.exists():
         print(f"check_doc_commands: no {exe}: build gjk-validate first", file=sys.stderr)
         return 2
-    # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/validation.md, "MPI").
+    # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/cli.md, "Shards, merge, MPI, resume").
     env = dict(os.environ, PATH=f"{build / 'validation'}:{os.environ['PATH']}",
                OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     errors = []

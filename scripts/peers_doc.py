@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the generated part of docs/peers.md: how the shipped peers (and any plugin) did.
+"""Writes the generated parts of docs/peers.md (the overview) and docs/peers/<peer>.md (one page per
+plugin): how the shipped peers (and any plugin) did.
 
     python3 scripts/peers_doc.py                  # after scripts/run.sh: runs the peers' campaign
     python3 scripts/peers_doc.py --report DIR/report.json   # from a report of run --peers
@@ -7,14 +8,16 @@
 
 It runs `build/release/validation/gjk-validate run --peers` on the default campaign (its options
 as `gjk-validate list` prints them on its first line) into reports/peers/, reads
-its report.json and rewrites only the part of the document between the markers
+its report.json and rewrites only the part of each document between the markers
 `<!-- peers_doc.py: begin -->` and `<!-- peers_doc.py: end -->` (created with the title when the
-document does not exist; the hand-written sections around it are kept). It gives each variant's
-contract, its contract violations and its accuracy against gjk2d's bound. Each plugin variant's
-worst contract violation gets a standalone program from `gjk-validate repro`, kept in
-<doc's folder>/peers/repro/ (emptied first), and its largest error against gjk2d's bound is drawn to
-<doc's folder>/peers/<variant>.svg from `gjk-validate explain --json` of that case (the folder's
-other .svg files are removed: it holds only this script's drawings).
+document does not exist; the hand-written sections around it are kept). The overview gives each
+variant's contract and one row of its verdict; the page of a plugin (<doc's folder>/peers/<peer>.md,
+<peer> its file's name without `gjk2d-`, `.so` and a `-float`/`-double` ending) gives its variants'
+rows per family group, its timing, its penetration depths, its worst contract violation with a
+standalone program from `gjk-validate repro` (kept in <doc's folder>/peers/repro/, emptied first)
+and its largest error against gjk2d's bound, drawn to <doc's folder>/peers/<variant>.svg from
+`gjk-validate explain --json` of that case (the folder's other .svg files are removed: it holds only
+this script's drawings).
 Only Python's standard library. Exit codes: 0 written, 1 a command failed, 2 bad usage.
 """
 import argparse
@@ -34,8 +37,8 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 TITLE = "# How accurate are the distance queries people use?"
 BEGIN, END = "<!-- peers_doc.py: begin -->", "<!-- peers_doc.py: end -->"
 DEFAULT_CAMPAIGN = "default campaign (run without --family and --cases): "  # `list`'s line
-# gjk2d's reference variants, and its signed ones (issue 51: a penetration contract, beside the
-# peers' EPA), shown beside the peers
+# gjk2d's reference variants, and its signed ones (a penetration contract, beside the peers' EPA),
+# shown beside the peers
 GJK2D_ROWS = ["double", "float", "double-signed", "float-signed"]
 
 
@@ -173,7 +176,7 @@ def contract_table(report, peers):
            "type, and the table says so. *It is given*: the case as given, or, for a library "
            "that cannot take the case's transform exactly, the case's world points (in double, "
            "then rounded to its scalar type) with identity transforms, and it is judged on "
-           "exactly those (its adapter's `input NAME world` line, docs/validate-your-gjk.md).", "",
+           "exactly those (its adapter's `input NAME world` line, docs/plugin-abi.md).", "",
            "| variant | type | it is given | on overlap | source | its distance is held to | "
            "margin | its depth is held to |",
            "|---|---|---|---|---|---|---|---|"]
@@ -203,7 +206,7 @@ def timing_table(report, peers):
            "| variant | ns/query | ns to prepare a shape | what ns/query includes | timed by |",
            "|---|---|---|---|---|"]
     info = {v["name"]: v for v in report["variants"]}
-    for name in [v for v in GJK2D_ROWS if v in info] + peers:
+    for name in peers:
         t = info[name].get("timing") or {}
         sts = [f["variants"][name] for f in report["families"] if name in f["variants"]]
         timed = [(st["cases"], num(st["ns_per_query"]), st.get("prepare_ns_per_shape"))
@@ -218,18 +221,60 @@ def timing_table(report, peers):
     return out
 
 
+def weighted_ns(report, name, key):
+    """A variant's ns/query (key "ns_per_query") or ns to prepare a shape ("prepare_ns_per_shape"),
+    the timed families' figures weighted by their cases; None when not timed."""
+    timed = [(f["variants"][name]["cases"], num(f["variants"][name].get(key)))
+             for f in report["families"] if name in f["variants"]
+             and f["variants"][name].get("ns_per_query") is not None
+             and f["variants"][name].get(key) is not None]
+    weight = sum(c for c, _ in timed)
+    return sum(c * x for c, x in timed) / weight if weight > 0 else None
+
+
+def summary_table(report, names, page_of_variant, command):
+    """One row per variant over the whole campaign: its verdict, accuracy and speed, and its page."""
+    out = ["### Verdict, accuracy and speed", "",
+           f"One row per variant over the whole campaign, `{command}`; per family group, and why: "
+           "each peer's page. Rows of gjk2d's reference and signed variants are there to compare "
+           "with.", "",
+           "| variant | page | cases | refused | breaks its contract | why | outside gjk2d's bound, "
+           "keeps its contract | false overlaps | false separations | largest error / gjk2d's "
+           "bound | ns/query | ns to prepare a shape |",
+           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|"]
+    for v in names:
+        rows = group_rows(report, v)
+        s = lambda k: sum(r[k] for r in rows)
+        reasons = {}
+        for r in rows:
+            for k, n in r["reasons"].items():
+                reasons[k] = reasons.get(k, 0) + n
+        ratios = [r["ratio"][0] for r in rows if r["ratio"][0] is not None]
+        page = page_of_variant.get(v)
+        link = f"[{os.path.basename(page)}]({page}.md)" if page else "-"
+        out.append(f"| {v} | {link} | {s('cases')} | {s('refused')} | {s('violations')} | "
+                   f"{reasons_text(reasons)} | {s('outside')} | {s('false_overlap')} | "
+                   f"{s('false_separation')} | {g(max(ratios) if ratios else None)} | "
+                   f"{g(weighted_ns(report, v, 'ns_per_query'), '.0f')} | "
+                   f"{g(weighted_ns(report, v, 'prepare_ns_per_shape'), '.0f')} |")
+    out += ["", "Columns as on the peers' pages (docs/report-schema.md, Stats): *breaks its "
+            "contract*: answers that break what the implementation promises (the table above), a "
+            "bug of that implementation (for gjk2d's variants, a failure); *outside gjk2d's bound, "
+            "keeps its contract*: a measured accuracy, not a failure; error / bound: |d - d_exact| "
+            "over gjk2d's a-priori bound (docs/error-bound.md); ns/query: single-threaded, the "
+            "timed families weighted by cases (- when not timed)."]
+    return out
+
+
 def verdict_table(report, peers, command):
     out = ["### Contract violations and accuracy", "",
-           f"Per variant and family group, from `{command}`. Rows of gjk2d's reference variants "
-           "(double, float) and signed ones (double-signed, float-signed) are there to compare "
-           "with.", "",
+           f"Per variant and family group, from `{command}`.", "",
            "| variant | family group | cases | refused | breaks its contract | why | outside "
            "gjk2d's bound, keeps its contract | false overlaps | false "
            "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
            "p99 error / bound | ns/query |",
            "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
-    names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
-    for v in names:
+    for v in peers:
         for r in group_rows(report, v):
             out.append(f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
                        f"{r['violations']} | {reasons_text(r['reasons'])} | {r['outside']} | "
@@ -238,8 +283,8 @@ def verdict_table(report, peers, command):
                        f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |")
     out += ["", "Columns (docs/report-schema.md, Stats): *cases* answered; *refused* by the "
             "implementation (not in cases); *breaks its contract*: answers that break what the "
-            "implementation promises (the table above): a bug of that implementation; for gjk2d's "
-            "variants, a failure; *why*: the reasons, with their counts (docs/report-schema.md, "
+            "implementation promises (the contract table of docs/peers.md): a bug of that "
+            "implementation; *why*: the reasons, with their counts (docs/report-schema.md, "
             "`contract_violations`); *outside gjk2d's bound, keeps its contract*: answers further "
             "from the exact distance than gjk2d's a-priori bound in the variant's precision "
             "(docs/error-bound.md) that keep the implementation's own contract: a measured "
@@ -255,8 +300,7 @@ def verdict_table(report, peers, command):
 def depth_table(report, peers):
     """The penetration depth beside the distance (report.json Stats `penetration`): each variant
     whose contract says penetration, per family group."""
-    names = [v for v in GJK2D_ROWS + peers if any(x["name"] == v for x in report["variants"])]
-    rows = [(v, r) for v in names for r in group_rows(report, v) if r["penetration"]]
+    rows = [(v, r) for v in peers for r in group_rows(report, v) if r["penetration"]]
     if not rows:
         return []
     out = ["### Penetration depth (contracts that say `penetration`)", "",
@@ -274,7 +318,7 @@ def depth_table(report, peers):
                    f"{g(p['ratio'][0])} |")
     out += ["", "Columns (docs/report-schema.md, `penetration`): *overlapping cases* judged (exact "
             "signed distance below 0); *breaks its contract*: the depth beyond its stated "
-            "tolerance (or gjk2d's depth bound where none is stated: the contract table above), "
+            "tolerance (or gjk2d's depth bound where none is stated: the contract table), "
             "or a point off its shape; *beyond gjk2d's depth bound*: |depth - exact depth| over "
             "gjk2d's a-priori depth bound (docs/error-bound.md), *of them keeping its contract*: "
             "a measured accuracy; rel. error = |depth - exact depth| / exact depth."]
@@ -441,9 +485,6 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
            "or not it keeps its contract (a non-finite answer is not here), drawn by this script "
            "from the command under it."]
     plugins = report["context"].get("plugins", [])
-    svg_dir.mkdir(parents=True, exist_ok=True)
-    for old in svg_dir.glob("*.svg"):  # the drawings of peers no longer in the report go too
-        old.unlink()
     for v in peers:
         w = worst_of(report, v)
         if w is None:
@@ -481,10 +522,6 @@ def violation_section(report, peers, gjk, shown_gjk, repro_dir, doc):
            "report's `variants[].worst_contract_violation`), and a program that shows it with the "
            "library alone: `gjk-validate repro` writes it, the command under each."]
     plugins = report["context"].get("plugins", [])
-    repro_dir.mkdir(parents=True, exist_ok=True)
-    for old in repro_dir.iterdir():  # the programs of peers no longer in the report go too
-        if old.is_file():
-            old.unlink()
     for v in peers:
         w = worst_violation(report, v)
         if not w:
@@ -503,25 +540,65 @@ def violation_section(report, peers, gjk, shown_gjk, repro_dir, doc):
     return out
 
 
-def generated(report, gjk, shown_gjk, command, doc, svg_dir, work):
+def page_name(plugin_file):
+    """The page of a plugin: its file's name without `gjk2d-`, `.so` and a `-float`/`-double`
+    ending (Bullet's two modules share one page)."""
+    name = os.path.basename(plugin_file)
+    name = name[len("gjk2d-"):] if name.startswith("gjk2d-") else name
+    name = name[:-len(".so")] if name.endswith(".so") else name
+    for end in ("-float", "-double"):
+        if name.endswith(end):
+            name = name[:-len(end)]
+    return name
+
+
+def pages_of(report):
+    """{page: (title, [variants])} in the order of the report's plugins."""
+    pages = {}
+    for p in report["context"].get("plugins", []):
+        title = p.get("library") or os.path.basename(p["file"])
+        pages.setdefault(page_name(p["file"]), (title, []))[1].extend(p.get("variants", []))
+    return pages
+
+
+def stamp(command, ctx):
+    return (f"Generated by `{command}`; edit nothing between these markers. The campaign: git "
+            f"{ctx.get('git_revision', '?')}, {ctx.get('date', '?')}, "
+            f"{ctx.get('cases_total', '?')} cases on {ctx.get('threads', '?')} threads of "
+            f"{ctx.get('host', '?')}.")
+
+
+def generated(report, shown_gjk, command, pages_dir):
+    """The overview's generated part: the plugins, every variant's contract and its verdict."""
     ctx = report["context"]
     peers = [v["name"] for v in report["variants"] if "plugin" in v]
-    out = [BEGIN, "",
-           f"Generated by `{command}`; edit nothing between these markers. The campaign (its "
-           f"command is above the table): git {ctx.get('git_revision', '?')}, "
-           f"{ctx.get('date', '?')}, {ctx.get('cases_total', '?')} cases on "
-           f"{ctx.get('threads', '?')} threads of {ctx.get('host', '?')}.", "",
-           "Plugins loaded (the report's `context.plugins`):", ""]
+    pages = pages_of(report)
+    page_of_variant = {v: page for page, (_, vs) in pages.items() for v in vs}
+    out = [BEGIN, "", stamp(command, ctx), "", "Plugins loaded (the report's `context.plugins`), "
+           "each with its page:", ""]
     for p in ctx.get("plugins", []):
         lib = f", {p['library']}" if p.get("library") else ""
-        out.append(f"- `{os.path.basename(p['file'])}` ({p.get('kind', '?')}{lib}): "
-                   + ", ".join(p.get("variants", [])))
-    out += [""] + contract_table(report, peers) + [""] + timing_table(report, peers) + [""]
-    out += verdict_table(report, peers, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
-    depth = depth_table(report, peers)
+        page = page_name(p["file"])
+        out.append(f"- [{page}]({pages_dir}/{page}.md): `{os.path.basename(p['file'])}` "
+                   f"({p.get('kind', '?')}{lib}): " + ", ".join(p.get("variants", [])))
+    names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
+    out += [""] + contract_table(report, peers) + [""]
+    out += summary_table(report, names, {v: f"{pages_dir}/{p}" for v, p in page_of_variant.items()},
+                         f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    return "\n".join(out + ["", END]) + "\n"
+
+
+def generated_page(report, variants, gjk, shown_gjk, command, page, svg_dir, work):
+    """A plugin's page's generated part: its variants per family group, timing, depths, worst
+    contract violation with its repro, and largest error against gjk2d's bound, drawn."""
+    ctx = report["context"]
+    out = [BEGIN, "", stamp(command, ctx), ""]
+    out += timing_table(report, variants) + [""]
+    out += verdict_table(report, variants, f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    depth = depth_table(report, variants)
     out += [""] + depth if depth else []
-    out += violation_section(report, peers, gjk, shown_gjk, svg_dir / "repro", doc)
-    out += worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work)
+    out += violation_section(report, variants, gjk, shown_gjk, svg_dir / "repro", page)
+    out += worst_section(report, variants, gjk, shown_gjk, svg_dir, page, work)
     return "\n".join(out + ["", END]) + "\n"
 
 
@@ -531,9 +608,11 @@ def ctx_args(ctx):
     return [rel(w) for w in (words[1:] if words and words[0].endswith("gjk-validate") else words)]
 
 
-def splice(doc, block):
-    text = doc.read_text() if doc.exists() else TITLE + "\n"
-    if not text.startswith(TITLE):
+def splice(doc, block, title=TITLE):
+    """The document with its generated part replaced by block (the title forced at its top for the
+    overview; a page's first line is kept as written once it exists)."""
+    text = doc.read_text() if doc.exists() else title + "\n"
+    if title == TITLE and not text.startswith(TITLE):
         text = TITLE + "\n\n" + text
     if BEGIN in text and END in text:
         head, rest = text.split(BEGIN, 1)
@@ -573,10 +652,22 @@ def main():
     except (OSError, ValueError) as e:
         fail(2, f"{report_path}: cannot read the report: {e}")
     me = "python3 scripts/peers_doc.py" + (" " + shlex.join(sys.argv[1:]) if sys.argv[1:] else "")
+    (svg_dir / "repro").mkdir(parents=True, exist_ok=True)
+    # The drawings and programs of peers no longer in the report go too.
+    for old in list(svg_dir.glob("*.svg")) + [f for f in (svg_dir / "repro").iterdir()
+                                              if f.is_file()]:
+        old.unlink()
+    written = {}
     with tempfile.TemporaryDirectory(prefix="peers_doc.") as work:
-        block = generated(report, gjk, shown_gjk, me, doc, svg_dir, pathlib.Path(work))
+        for name, (title, variants) in pages_of(report).items():
+            page = svg_dir / f"{name}.md"
+            block = generated_page(report, variants, gjk, shown_gjk, me, page, svg_dir,
+                                   pathlib.Path(work))
+            written[page] = splice(page, block, f"# {title}: how gjk-validate judges it")
+    written[doc] = splice(doc, generated(report, shown_gjk, me, os.path.relpath(svg_dir, doc.parent)))
     doc.parent.mkdir(parents=True, exist_ok=True)
-    doc.write_text(splice(doc, block))
+    for path, text in written.items():
+        path.write_text(text)
     print(f"peers_doc.py: wrote {doc} and {svg_dir}/")
     return 0
 

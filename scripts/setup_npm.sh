@@ -39,7 +39,7 @@ install_peer() {
   cp "$src/package.json" "$src/package-lock.json" "$dest/"
   echo "setup_npm: npm ci in $dest (node $(node --version), npm $(npm --version))" >&2
   # planck 1.5.0 declares engines node >= 24; npm only warns (EBADENGINE), and the adapter's path
-  # runs on Node 18 and 20 (docs/peers.md, "## planck.js"). --ignore-scripts: no package code runs.
+  # runs on Node 18 and 20 (docs/peers/planck.md). --ignore-scripts: no package code runs.
   if ! (cd "$dest" && npm ci --no-audit --no-fund --ignore-scripts --loglevel=error); then
     rm -f "$dest/package-lock.json" # the next run tries again
     echo "setup_npm: npm ci failed in $dest" >&2

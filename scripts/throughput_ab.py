@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Two gjk-validate builds' campaign throughput, alternated in one run (issue 34's measurement).
+"""Two gjk-validate builds' campaign throughput, alternated in one run.
 
     scripts/throughput_ab.py OLD_EXE NEW_EXE [--family F ...] [--variants V] [--threads N]
                              [--rounds R] [--out DIR]

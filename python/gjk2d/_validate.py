@@ -48,7 +48,7 @@ def _specs(value, name):
 
 
 def _run_arguments(name, families, cases, out, options):
-    """The argument vector of `gjk-validate run` (docs/validation.md, "run") for validate()."""
+    """The argument vector of `gjk-validate run` (docs/cli.md, "`run`") for validate()."""
     args = ["run", "--out", out, "--no-default-plugins" if not options["default_plugins"] else None]
     for f in _specs(families, "families"):
         args += ["--family", f]

@@ -48,7 +48,7 @@ foreach(entry IN LISTS _repros)
                    --work ${_ci}/repro-${_k}-${shown} ${more})
   set_tests_properties("${name}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
 endforeach()
-# What repro refuses, each with exit 2 and one line (docs/validate-your-gjk.md, "Exit codes"): a
+# What repro refuses, each with exit 2 and one line (docs/cli.md, "Exit codes"): a
 # user's plugin, which has no template, and one of gjk2d's own variants.
 add_test(NAME "plugins: repro: a plugin without a repro template is refused (exit 2)"
          COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:gjk-validate> -DEXPECT=2

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The layer order of validation/src/ (docs/validation.md, "Layers"), checked: every
+"""The layer order of validation/src/ (docs/judgement.md, "Layers"), checked: every
 `#include "LAYER/..."` in validation/src/<layer>/ names its own layer or one below it; every layer
 library of validation/CMakeLists.txt links only layers below it; and the docs draw the same order.
 
@@ -38,10 +38,10 @@ def check_links(cmake_text, layers):
 
 
 def check_docs(docs_text, layers):
-    """The drawing in docs/validation.md lists the layers top down, one per line."""
+    """The drawing in docs/judgement.md lists the layers top down, one per line."""
     drawn = [w for w in re.findall(r"^([a-z]+) {2,}", docs_text, re.M) if w in layers]
     if drawn != list(reversed(layers)):
-        return [f"docs/validation.md: the layer drawing ({' > '.join(drawn)}) differs from "
+        return [f"docs/judgement.md: the layer drawing ({' > '.join(drawn)}) differs from "
                 f"GJK2D_VALIDATION_LAYERS ({' < '.join(layers)})"]
     return []
 
@@ -89,7 +89,7 @@ def main():
     cmake_text = (root / "validation" / "CMakeLists.txt").read_text()
     layers = cmake_layers(cmake_text)
     problems = check(src, layers) + check_links(cmake_text, layers)
-    problems += check_docs((root / "docs" / "validation.md").read_text(), layers)
+    problems += check_docs((root / "docs" / "judgement.md").read_text(), layers)
     for p in problems:
         print(p, file=sys.stderr)
     for (rel, other), reason in EXCEPTIONS.items():

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """CTest "docs: peers.md generator runs on a small campaign": scripts/peers_doc.py on a tiny
 campaign, into a temporary document seeded with hand-written text around the markers. Checks:
-the generated part has a table row for every variant of every plugin the report's context lists
-(and one per family group), its largest and p99 errors those of the report (one family per group
-here), an SVG per plugin variant, the title, and the hand-written text kept byte for byte. Each
+the overview has a contract row and a verdict row for every variant of every plugin the report's
+context lists, each linking its page (peers/<peer>.md); the pages have a table row per family
+group, its largest and p99 errors those of the report (one family per group here), and an SVG per
+plugin variant; the title, and the hand-written text kept byte for byte (the overview's, and a
+page's). Each
 worst case's command loads every plugin the README's first command builds, and an optional one
 (the Box2D v3 adapter, check_doc_commands.OPTIONAL) only in its own variant's paragraph, which says
 what it needs. The default campaign the script runs without options is the one `gjk-validate list`
@@ -61,6 +63,8 @@ def main():
         doc.write_text(before + BEGIN + "\nstale\n" + END + after)
         (t / "peers").mkdir()
         (t / "peers" / "gone-peer.svg").write_text("<svg/>")  # a peer no longer in the report
+        page_before, page_after = "# Box2D: a hand-written title\n\n", "\n\n## Hand-written\n"
+        (t / "peers" / "box2d.md").write_text(page_before + BEGIN + "\nstale\n" + END + page_after)
         # Two family groups (hard, random), no timing: seconds.
         cmd = [sys.executable, a.script, "--gjk-validate", a.exe, "--doc", str(doc),
                "--out", str(t / "run"), "--", "--family", "hard/near-parallel:20",
@@ -69,14 +73,25 @@ def main():
         if done.returncode != 0:
             print(f"FAIL: {cmd} exited {done.returncode}")
             return 1
-        text = doc.read_text()
+        overview = doc.read_text()
         report = json.loads((t / "run" / "report.json").read_text())
         plugins = report["context"]["plugins"]
         errors = []
+        pages = {p: (t / "peers" / p).read_text() for p in sorted(
+            f.name for f in (t / "peers").glob("*.md"))}
+        box2d = pages.get("box2d.md", "")
+        if not box2d.startswith(page_before + BEGIN) or not box2d.endswith(END + page_after):
+            errors.append("the text around the markers of peers/box2d.md was not kept as it was")
+        for p in plugins:
+            for v in p["variants"]:
+                if not any(l.startswith(f"| {v} | [") and "](peers/" in l
+                           for l in overview.splitlines()):
+                    errors.append(f"no verdict row linking a page for {v} in the overview")
+        text = "\n".join([overview] + list(pages.values()))
         if not plugins:
             errors.append("the report's context lists no plugin: the shipped Box2D 2.4.1 "
                           "adapter should be loaded")
-        if not text.startswith(before + BEGIN) or not text.endswith(END + after):
+        if not overview.startswith(before + BEGIN) or not overview.endswith(END + after):
             errors.append("the text around the markers was not kept as it was")
         if "stale" in text:
             errors.append("the old generated part was not replaced")

@@ -1,4 +1,4 @@
-# Resume (docs/validation.md, "Resume"), in one test: ARGS ('|'-separated) run with the test hook
+# Resume (docs/cli.md, "Shards, merge, MPI, resume"), in one test: ARGS ('|'-separated) run with the test hook
 # GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=3 exits 4 leaving CHECKPOINT_DIR/checkpoint.json, then ARGS
 # with --resume exits 0 with a last line "report:", writes REPORT and removes the checkpoint. Each
 # run is checked by expect_exit.cmake (EXPECT_SCRIPT). One script, not two tests sharing a fixture:

@@ -212,10 +212,10 @@ TEST_CASE("cli top-level handlers give exit codes 4 and 5", "[cli]")
     CHECK(!fs::exists(d));
 }
 
-// Defect D: the exit codes have one home, kExitCodeTable; docs/validation.md holds its table.
+// Defect D: the exit codes have one home, kExitCodeTable; docs/cli.md holds its table.
 TEST_CASE("docs list every exit code as kExitCodeTable says", "[cli]")
 {
-    const std::string docs = slurp(fs::path(GJK2D_SOURCE_DIR) / "docs" / "validation.md");
+    const std::string docs = slurp(fs::path(GJK2D_SOURCE_DIR) / "docs" / "cli.md");
     CHECK(contains(docs, exitCodesMarkdown()));
     const std::string help = exitCodesHelp();
     for (const auto& e : kExitCodeTable)

@@ -1,4 +1,4 @@
-// gjk-validate compare (docs/validation.md, "`compare`: gate a change on two reports"): the
+// gjk-validate compare (docs/cli.md, "`compare`: gate a change on two reports"): the
 // comparison of two reports (compareReports) on a real report and copies of it with planted
 // changes, and the program's exit codes and messages. The real report comes from one small
 // campaign per test process: `gjk-validate run --family random:300 --family hard/near-parallel

@@ -201,7 +201,7 @@ TEST_CASE("reaching the iteration limit fails, even with the right distance", "[
 {
     // A square [-1, 1]^2 against the point (0, 5): the first support pair gives a top corner, the
     // second the other top corner, and that edge already holds the answer 4. With one iteration
-    // allowed GJK stops there on the limit (docs/validation.md: an iteration limit is a failure).
+    // allowed GJK stops there on the limit (docs/judgement.md: an iteration limit is a failure).
     static const VariantInfo limited{"double-one-iteration", Scalar::Double,
                                      gjk::Options{.maxIterations = 1}, "test", true};
     Case c;

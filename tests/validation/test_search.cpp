@@ -1,4 +1,4 @@
-// `gjk-validate search` in process (docs/validation.md, "Adversarial search"): the same seed and
+// `gjk-validate search` in process (docs/cli.md, "`search`"): the same seed and
 // budget give the same search whatever the thread count, the search raises the ratio above its
 // start cases', what it writes is valid input, and a variant known to fail is reported as failing.
 #include "campaign/search.hpp"

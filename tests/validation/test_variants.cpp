@@ -377,10 +377,10 @@ TEST_CASE("every variant of the table has its own colour on the report page", "[
 TEST_CASE("docs list every variant of the table once, with its type and judged flag",
           "[variants][docs]")
 {
-    // docs/validation.md, "Variants", lists the table by hand: `| names | type | judged | options
+    // docs/campaign.md, "Variants", lists the table by hand: `| names | type | judged | options
     // |`, a row naming one variant or a double/float pair (type "both"). A variant added to the
     // table, renamed or made a comparison one without the docs following fails here.
-    std::ifstream in(std::filesystem::path(GJK2D_SOURCE_DIR) / "docs" / "validation.md");
+    std::ifstream in(std::filesystem::path(GJK2D_SOURCE_DIR) / "docs" / "campaign.md");
     REQUIRE(in);
     std::string line;
     bool inSection = false;

@@ -2,8 +2,8 @@
 # "<12 hex digits>", with " (dirty)" when tracked files differ from HEAD, or "unknown" outside a
 # git checkout (a tarball) or without git. Run by the gjk2d_git_revision target on every build
 # (validation/CMakeLists.txt): the file is rewritten only when its text changes, so an unchanged
-# revision recompiles nothing. gjk-validate itself never runs git (issue 30: a run in a user's
-# checkout raced their `git commit` on .git/index.lock). --no-optional-locks keeps `git status`
+# revision recompiles nothing. gjk-validate itself never runs git (a run in a user's checkout
+# would race their `git commit` on .git/index.lock). --no-optional-locks keeps `git status`
 # from refreshing the index here too.
 #   cmake -DSOURCE_DIR=<checkout> -DOUT=<header> -P git_revision.cmake
 set(revision "unknown")

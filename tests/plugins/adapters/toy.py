@@ -1,5 +1,5 @@
 """Test adapters of the executable-adapter protocol, version 1 (tests/plugins/CMakeLists.txt,
-docs/validate-your-gjk.md "Executable adapters (any language)"): good.py, crash.py, hang.py,
+docs/plugin-abi.md, "Executable adapters"): good.py, crash.py, hang.py,
 garbage.py, version.py, bad-description.py, crash-once-more.py, pipeline.py, fork-hang.py and
 setsid.py each call main() with their behaviour.
 

@@ -44,7 +44,7 @@ struct Case
     Shape a, b;
 };
 
-// The cases of a gjk-cases/1 file (docs/validation.md, "Case files"); throws on a file that is not.
+// The cases of a gjk-cases/1 file (docs/case-files.md, "Case files"); throws on a file that is not.
 inline std::vector<Case> readCases(const std::string& path)
 {
     std::ifstream in(path);

@@ -21,7 +21,7 @@
 // |value|) each, not bit for bit (status and iterations still exactly), and the largest difference
 // is printed: for a library whose answer is not a function of its inputs alone. FCL's signed
 // distance (fcl-0.7-libccd-signed) is one: its EPA's pair moves in the last bits with the heap
-// addresses its polytope gets (the same case queried twice in one process, docs/peers.md, "FCL").
+// addresses its polytope gets (the same case queried twice in one process, docs/peers/fcl.md).
 //
 // Exit 0: every case equal; 1: a difference (the first few printed) or a plugin without the
 // prepared entry point; 2: bad arguments.

@@ -1,4 +1,4 @@
-// The prism reduction (docs/peers.md, "The prism reduction (FCL, Bullet)"): FCL and Bullet are
+// The prism reduction (docs/peers/prisms.md): FCL and Bullet are
 // handed each 2D shape as the prism P x [-h, h] (a Sphere or Capsule for FCL's rounded points and
 // segments, a margin for Bullet's radius) and their 3D distance must be the exact 2D distance,
 // max(0, d2(P, Q) - rA - rB) on separated shapes (0 or below on overlapping ones), their nearest

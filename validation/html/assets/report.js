@@ -529,7 +529,7 @@
         h('a', {href: '#rejected'}, 'Rejected inputs')));
   }
 
-  // How the truths and the witness distances were decided (issue 34): the exact side's GMP route
+  // How the truths and the witness distances were decided: the exact side's GMP route
   // against its floating-point filter, summed over the families per input type (a float variant's
   // truth is that of the input rounded to float), as the terminal summary gives them
   // (validation/src/report/report.cpp, truthLines and witnessFallbackLine). Nothing for a report
@@ -832,7 +832,7 @@
     if (!fams.length || !names.length) { wrap.appendChild(h('p', {class: 'note'}, 'No families or variants: nothing to map.')); return wrap; }
     var nJudged = names.filter(isJudged).length, gap = nJudged && nJudged < names.length ? 8 : 0;
     // Columns 24 px wide up to 18 variants; narrower beyond (to 16 px), so that the grid of the
-    // default campaign's 22 variants (issue 32's peers) keeps the speed plot beside it.
+    // default campaign's variants, the default peers' included, keeps the speed plot beside it.
     var cw = Math.max(16, Math.min(24, Math.floor(432 / names.length))), ch = 16, labelW = 12 + Math.max.apply(null, fams.map(function (f) { return textWidth(f.name, 12); }).concat([60]));
     var headH = 14 + Math.max.apply(null, names.map(function (n) { return textWidth(n, 11.5); })) * Math.sin(Math.PI / 3);
     var x0 = labelW, y0 = headH, gridW = names.length * cw + gap, gridH = fams.length * ch;

@@ -31,7 +31,7 @@ extern "C"
 #define GJK2D_PLUGIN_ABI_MIN_VERSION 1
 #define GJK2D_PLUGIN_ENTRY_POINT "gjk2d_plugin_describe"
 
-/* Optional, since issue 32 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const char* gjk2d_plugin_library(void);
  *
@@ -40,18 +40,18 @@ extern "C"
  * variants (variants[].plugin.library; "" when the plugin does not export it). */
 #define GJK2D_PLUGIN_LIBRARY_ENTRY "gjk2d_plugin_library"
 
-/* Optional, since issue 33 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_timing* gjk2d_plugin_timing(void);
  *
- * the plugin's own timing loop, for `gjk-validate bench --against` (docs/validate-your-gjk.md,
- * "Timing loop"): the library timed the way its own benchmark would time it, over inputs it
+ * the plugin's own timing loop, for `gjk-validate bench --against` (docs/plugin-abi.md,
+ * "Optional exports"): the library timed the way its own benchmark would time it, over inputs it
  * prepared once in its own types, rather than call by call through distance_f/distance_d. The
  * runner calls prepare once, then pass once per timed pass (alternated with gjk2d's passes), then
  * release, all in one child process; the table lives as long as the library. */
 #define GJK2D_PLUGIN_TIMING_ENTRY "gjk2d_plugin_timing"
 
-/* Optional, since issue 50 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_prepared* gjk2d_plugin_prepared(void);
  *
@@ -63,7 +63,7 @@ extern "C"
  * shape set-up. The table (below) lives as long as the library. */
 #define GJK2D_PLUGIN_PREPARED_ENTRY "gjk2d_plugin_prepared"
 
-/* Optional, since issue 51 (the ABI version is unchanged: a plugin without it loads as before):
+/* Optional (the ABI version is unchanged: a plugin without it loads as before):
  *
  *     const gjk2d_depth_contract* gjk2d_plugin_depth(void);
  *
@@ -71,7 +71,7 @@ extern "C"
  * exact penetration depth an implementation whose contract says GJK2D_OVERLAP_PENETRATION
  * promises its depth to be, and where the library says so. Without it (or with both tolerances
  * negative) the depth is held to gjk2d's depth bound for the scalar type, and the report says that
- * no tolerance is stated (docs/peers.md, "Contracts"). */
+ * no tolerance is stated (docs/peers.md, "What each peer promises (its contract)"). */
 #define GJK2D_PLUGIN_DEPTH_ENTRY "gjk2d_plugin_depth"
 
     /* The scalar type the implementation computes in: the runner gives it the case's inputs rounded
@@ -184,7 +184,8 @@ extern "C"
      * its file and line or its documentation, and its version, e.g. "fcl/narrowphase/
      * distance_request.h:63, FCL 0.7.0". A clause the library does not state has a NULL or empty
      * source and says "none stated"; the runner then holds it to gjk2d's own bound for the
-     * implementation's scalar type, and says so (docs/peers.md, "Contracts"). */
+     * implementation's scalar type, and says so (docs/peers.md, "What each peer promises (its
+     * contract)"). */
     typedef struct gjk2d_contract
     {
         /* The distance on separated shapes is within abs + rel * exact of the exact distance; a

@@ -1,6 +1,6 @@
 /* The Box2D v3 adapter (a shipped plugin, gjk2d/plugin.h, ABI version 2): b2ShapeDistance, the GJK
  * of Erin Catto's current engine, compiled from the Box2D v3 source tree GJK2D_BOX2D3_SOURCE names
- * (validation/plugins/box2d-v3/CMakeLists.txt; docs/peers.md, "Box2D v3").
+ * (validation/plugins/box2d-v3/CMakeLists.txt; docs/peers/box2d3.md).
  *
  * Called as Box2D calls itself (b2TimeOfImpact in its src/distance.c; the anchors'
  * harness_box2d.c): float proxies from b2MakeProxy in each shape's local frame, world transforms
@@ -34,7 +34,7 @@
  * - tolerance: none stated;
  * - margin 0: a b2ShapeProxy from b2MakeProxy has the case's radius only.
  *
- * Findings (docs/peers.md, "Box2D v3", with the command): its distances leave gjk2d's bound only
+ * Findings (docs/peers/box2d3.md, with the command): its distances leave gjk2d's bound only
  * at the ends of the float range (hard/tiny-scale, hard/extreme-scale, hard/range). */
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 

@@ -1,5 +1,5 @@
-// gjk2d-adapter-bridge: an executable adapter (protocol version 1 or 2, docs/validate-your-gjk.md
-// "Executable adapters (any language)") that hosts a shared-library plugin (gjk2d/plugin.h, ABI
+// gjk2d-adapter-bridge: an executable adapter (protocol version 1 or 2, docs/plugin-abi.md,
+// "Executable adapters") that hosts a shared-library plugin (gjk2d/plugin.h, ABI
 // version 1 or 2).
 //
 //   gjk2d-adapter-bridge PLUGIN.so [SUFFIX]  (or GJK2D_BRIDGE_PLUGIN=PLUGIN.so
@@ -15,7 +15,7 @@
 //   exec /path/to/gjk2d-adapter-bridge /path/to/gjk2d-box2d.so
 //
 // It is the reference C++ adapter (C++17, only gjk2d/plugin.h and dlopen) and the check that a
-// timing through the protocol agrees with the shared library's own (docs/validate-your-gjk.md):
+// timing through the protocol agrees with the shared library's own (docs/plugin-abi.md):
 // its `time` loop is the runner's (timing.cpp timePassPlugin): each case's shapes built before
 // the clock starts, per call the cache zeroed, one call, the result read. It takes what the
 // hosted plugin takes (radius, max_vertices), always cold (protocol 1 has no warm start), and

@@ -3,10 +3,10 @@
 // btVoronoiSimplexSolver for GJK, a btGjkEpaPenetrationDepthSolver for overlapping cores. One
 // source, two modules built against Debian's libbullet-dev: gjk2d-bullet-float.so
 // ("bullet-3.24-float", btScalar = float, `pkg-config bullet`) and gjk2d-bullet-double.so
-// ("bullet-3.24-double", BT_USE_DOUBLE_PRECISION, `pkg-config bullet-float64`). docs/peers.md,
-// "## Bullet".
+// ("bullet-3.24-double", BT_USE_DOUBLE_PRECISION, `pkg-config bullet-float64`).
+// docs/peers/bullet.md.
 //
-// The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
+// The 2D case as a 3D one (docs/peers/prisms.md): a shape of points P becomes the
 // prism P x [-h, h], the same h for both shapes, chosen per case (prismHalfHeight, below), a
 // btConvexHullShape of its 2n vertices (any order: Bullet's support scans them, the shape is their
 // hull). The case's radius is the shape's collision margin, setMargin(r), also for r = 0:
@@ -54,7 +54,7 @@
 //   InvalidHull or OutOfVertices (:716, :728), whose last face is answered all the same (:734);
 //   and no header or document of Bullet's promises it to users.
 //
-// Findings (docs/peers.md, "## Bullet"; validation/plugins/bullet/tests/test_bullet.cpp): in double
+// Findings (docs/peers/bullet.md; validation/plugins/bullet/tests/test_bullet.cpp): in double
 // every separated random case is within gjk2d's bound. In float the default equal-vertex threshold
 // (1e-4) stops GJK early: random/192 is answered 7.8% off.
 #include <gjk2d/plugin.h>
@@ -107,7 +107,7 @@ double extent(const Shape& s)
 
 // The prisms' half height h, one per case: h = k (eA + eB) in double, then rounded to btScalar
 // (k = kHeightFactor below); 1 when it is 0 (two bare points at their local origins). The distance
-// and the nearest points' x, y do not depend on h (docs/peers.md, "The prism reduction"), but a
+// and the nearest points' x, y do not depend on h (docs/peers/prisms.md), but a
 // penetration does, twice:
 // - Exactly: two prisms of the same [-h, h] are also separated by a translation of 2h along z, so
 //   the 3D minimal translation is min(2D depth, 2h) (+ the radii). Every point of a shape, radius
@@ -121,7 +121,7 @@ double extent(const Shape& s)
 //   factor cos(tilt), falling as 1 / k^2. Taller is better until btScalar's rounding of the tall
 //   faces makes EPA fail outright (depth 0) more often: from about k = 2^8 in float and 2^18 in
 //   double on random:2000 (seed 1). kHeightFactor sits 16 times below that, 2^4 in float and 2^14
-//   in double (the figures at both heights: docs/peers.md, "The prism reduction";
+//   in double (the figures at both heights: docs/peers/prisms.md;
 //   tests/bullet_depth_height_{float,double} measures them).
 // The same rule in the programs of `gjk-validate repro` and in the direct loop, so that they answer
 // as this adapter. At most the largest btScalar / 8, so that h, 2h and the prisms' vertices stay

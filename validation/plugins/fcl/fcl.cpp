@@ -1,11 +1,10 @@
 // The FCL 0.7 adapter (a shipped peer, gjk2d/plugin.h, ABI version 2): fcl::distance between two
 // prisms, with both of FCL's GJK solvers as two double variants, "fcl-0.7-libccd" (GST_LIBCCD,
 // FCL's default) and "fcl-0.7-indep" (GST_INDEP), and a third, "fcl-0.7-libccd-signed":
-// GST_LIBCCD with DistanceRequest::enable_signed_distance = true (issue 51). Built against Debian's
-// libfcl-dev (FCL 0.7.0, whose headers are upstream's tag 0.7.0 unchanged); docs/peers.md, "##
-// FCL".
+// GST_LIBCCD with DistanceRequest::enable_signed_distance = true. Built against Debian's
+// libfcl-dev (FCL 0.7.0, whose headers are upstream's tag 0.7.0 unchanged); docs/peers/fcl.md.
 //
-// The 2D case as a 3D one (docs/peers.md, "The prism reduction"): a shape of points P becomes the
+// The 2D case as a 3D one (docs/peers/prisms.md): a shape of points P becomes the
 // prism P x [-h, h], the same h for both shapes, chosen per case (prismHalfHeight, below); the
 // distance of two prisms is the 2D distance of their polygons, and their nearest points can be
 // taken at z = 0. The adapter returns FCL's nearest points' x and y.
@@ -64,7 +63,7 @@
 //   (gjk_libccd-inl.h:2693-2696): none stated;
 // - margin 0: FCL keeps no skin around its shapes.
 //
-// Findings (docs/peers.md, "## FCL"; validation/plugins/fcl/tests/test_fcl.cpp): GST_LIBCCD answers
+// Findings (docs/peers/fcl.md; validation/plugins/fcl/tests/test_fcl.cpp): GST_LIBCCD answers
 // a vertex-to-vertex distance when the nearest feature is an edge (FCL issue #508: 3.6048 for two
 // squares 3.57 apart); GST_INDEP answers the edge distance but calls shapes closer than its
 // distance_tolerance (1e-6) colliding; GST_LIBCCD aborts on an assertion (doSimplex2, "A is not in
@@ -108,7 +107,7 @@ double extent(const gjk2d_shape_d& s)
 // The prisms' half height h, one per case: h = 2 (eA + eB), 1 when that is 0 (two bare points at
 // their local origins), at most kMaxHalfHeight (the largest double / 8, so that 2h and the prisms'
 // vertices stay finite). The distance and the nearest points' x, y do not depend on h
-// (docs/peers.md, "The prism reduction"), but a minimal translation does: two prisms of the same
+// (docs/peers/prisms.md), but a minimal translation does: two prisms of the same
 // [-h, h] are also separated by 2h along z, so a penetration depth is the 2D one only while that is
 // below 2h. Every point of a shape lies within e of its position (for a unit (c, s)), so the
 // shape's width is at most 2e, and the 2D depth, at most the smaller shape's width, is at most

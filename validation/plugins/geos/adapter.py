@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The GEOS adapter: an executable adapter (protocol version 2, docs/peers.md "## GEOS (shapely)")
+"""The GEOS adapter: an executable adapter (protocol version 2, docs/peers/geos.md)
 for GEOS's distance through shapely, run by Debian's /usr/bin/python3 (python3-shapely 1.8.5,
 GEOS 3.11.1 on Debian 12).
 

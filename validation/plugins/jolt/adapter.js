@@ -1,4 +1,4 @@
-// The Jolt Physics adapter: an executable adapter (protocol version 2, docs/peers.md "## Jolt")
+// The Jolt Physics adapter: an executable adapter (protocol version 2, docs/peers/jolt.md)
 // around Jolt's shape-vs-shape collision query (TransformedShape::CollideShape), through the
 // WebAssembly build of the npm package jolt-physics 1.1.0 (JoltPhysics.js, which builds Jolt
 // Physics v5.6.0: its CMakeLists.txt, FetchContent GIT_TAG "v5.6.0"), run by Node.
@@ -17,10 +17,10 @@
 //   diameter, so at least any 2D depth d, and independent of where the shape is), in double, then
 //   rounded up to float (prismHalfHeight below). With HEIGHT_FACTOR 2 (FCL's), 2h >= 4 (eA + eB)
 //   >= 8 d: the cap-to-cap translation 2h never competes with the in-plane one. Factors 0.5 to 4
-//   measured alike, 2 a little the best (docs/peers.md, "## Jolt"); taller is worse in float:
+//   measured alike, 2 a little the best (docs/peers/jolt.md); taller is worse in float:
 //   GJK calls shapes touching when |v|^2 <= FLT_EPSILON max|y|^2 over its simplex
 //   (GJKClosestPoint.h:442), and the hull builder's coplanar distance grows with max|z|
-//   (ConvexHullBuilder.cpp:240-247): measured in docs/peers.md, "## Jolt".
+//   (ConvexHullBuilder.cpp:240-247): measured in docs/peers/jolt.md.
 //
 // What it takes (the handshake's lines):
 // - `input jolt-1.1.0 world`: the host sends each case as world points rounded to float with the
@@ -54,7 +54,7 @@
 // Why two: sCollideConvexVsConvex inflates shape 1 by mMaxSeparationDistance as a convex radius
 // (at most 1 in EPA) and subtracts it again from |point2 - point1| in float (ConvexShape.cpp:93,
 // 113-121, 134, 141), so with one query at U for every case EPA's overlap depths were taken on a
-// rounded shape: measured (docs/peers.md, "## Jolt") a median relative depth error of 6.1e-7 and
+// rounded shape: measured (docs/peers/jolt.md) a median relative depth error of 6.1e-7 and
 // at most 0.44, against 4.9e-9 and 1.8e-4 in two steps; and the cancellation costs about an ulp
 // of U on a separated distance, and Jolt's contact points move off their shapes as
 // mMaxSeparationDistance grows (measured on a case 0.0009999 apart: a point on its vertex at 0.0011,
@@ -100,17 +100,17 @@ const PACKAGE_VERSION = JSON.parse(fs.readFileSync(path.join(PACKAGE, "package.j
 // The Jolt Physics release the package builds (JoltPhysics.js CMakeLists.txt, GIT_TAG "v5.6.0").
 const JOLT_VERSION = "5.6.0";
 const IMPL = "jolt-" + PACKAGE_VERSION;
-// The prisms' half height over eA + eB (docs/peers.md, "## Jolt": measured).
+// The prisms' half height over eA + eB (docs/peers/jolt.md: measured).
 const HEIGHT_FACTOR = 2;
 // mMaxSeparationDistance over U, the upper bound of the distance: room for Jolt's own error, so
-// that an answer a little above U is still given (docs/peers.md, "## Jolt": with 1 + 1/1024, 3 of
+// that an answer a little above U is still given (docs/peers/jolt.md: with 1 + 1/1024, 3 of
 // 3153 separated random cases got no contact, e.g. 2.62042 answered with more room where U and the
 // exact distance are 2.61549; with 1 + 1/8 all are answered, the median error the same; with 2
 // it grows from 7.3e-8 to 9.5e-8).
 const MAX_SEPARATION_SLACK = 1 + 1 / 8;
 // The least mMaxSeparationDistance over h, 8 float ulps of h: shapes that share a point (U = 0)
 // touch, and Jolt answers them no contact at distance 0 (nor does the first query: EPA finds no
-// penetration); a little more reaches them (docs/peers.md, "## Jolt": of 208 such cases of the hard
+// penetration); a little more reaches them (docs/peers/jolt.md: of 208 such cases of the hard
 // families, without it all no contact, 180 are then answered within gjk2d's bound; h / 4096 got
 // 183 but made two near-touching answers with a small U worse, h / 2^20 none).
 const MIN_SEPARATION = 2 ** -20;

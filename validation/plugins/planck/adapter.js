@@ -1,4 +1,4 @@
-// The planck.js adapter: an executable adapter (protocol version 2, docs/peers.md "## planck.js")
+// The planck.js adapter: an executable adapter (protocol version 2, docs/peers/planck.md)
 // around planck.js's Distance, the JavaScript port of Box2D 2.x's b2Distance, run by Node.
 //
 // What it takes, checked in planck 1.5.0's sources (src/collision/Distance.ts):

@@ -1,4 +1,4 @@
-// The Rapier adapter: an executable adapter (protocol version 2, docs/peers.md "## Rapier (parry)")
+// The Rapier adapter: an executable adapter (protocol version 2, docs/peers/rapier.md)
 // around Rapier's Shape.contactShape, the official JavaScript bindings (@dimforge/rapier2d-compat,
 // WebAssembly built from rapier.js over parry2d, in f32), run by Node.
 //

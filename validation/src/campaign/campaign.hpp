@@ -45,7 +45,7 @@ struct CampaignConfig
     bool perCase = false;
     std::size_t chunkCases = kDefaultChunkCases;
     std::string command; // for the report's context
-    // Checkpoints (docs/validation.md, "Resume"): the fold's state is written to
+    // Checkpoints (docs/cli.md, "Shards, merge, MPI, resume"): the fold's state is written to
     // checkpointDir/checkpoint.json at most every checkpointSeconds; `resume` starts from it.
     std::string checkpointDir;
     double checkpointSeconds = 60;
@@ -132,8 +132,8 @@ inline constexpr OldStateVersion kOldStateVersions[] = {
 };
 
 // One shard of the campaign, folded and timed: the state that `merge` reads (shard.json,
-// docs/validation.md "Shards and merge"). Exact: histogram sums are exact, every tie is broken by
-// case order, so merging the shards gives the one-process report, timing fields aside.
+// docs/cli.md, "Shards, merge, MPI, resume"). Exact: histogram sums are exact, every tie is broken
+// by case order, so merging the shards gives the one-process report, timing fields aside.
 Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,
               std::ostream* perCase = nullptr);
 

@@ -1,5 +1,5 @@
 // Checkpoints: the fold's state every checkpointSeconds, so that a run can resume
-// (docs/validation.md, "Resume").
+// (docs/cli.md, "Shards, merge, MPI, resume").
 #include "campaign/state.hpp"
 
 #include "common/output.hpp"
@@ -59,8 +59,9 @@ ChunkPosition resumeFrom(CampaignState& state, const CampaignConfig& config, Sha
 
 namespace
 {
-// The test hook of docs/validation.md, "Resume": GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=K stops a
-// checkpointed run after its K-th chunk, its checkpoint written, as an interruption would.
+// The test hook of docs/cli.md, "Shards, merge, MPI, resume":
+// GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS=K stops a checkpointed run after its K-th chunk, its
+// checkpoint written, as an interruption would.
 std::size_t testStopAfterChunks()
 {
     const char* v = std::getenv("GJK2D_VALIDATE_TEST_STOP_AFTER_CHUNKS");

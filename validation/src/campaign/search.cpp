@@ -597,7 +597,7 @@ class Search
         // A bound within 1024 subnormals of its floor (bounds.cpp: + T's smallest subnormal)
         // measures the answer's resolution, not the derived bound: such a case is judged (a
         // failure above counts) but is no ratio to climb; otherwise the search settles on one
-        // rounding of a subnormal distance, ratio 1 (a 300 s run did, in both types).
+        // rounding of a subnormal distance, ratio 1.
         if (v.bound < 1024 * smallestSubnormal(ctx_.variants[k]->scalar))
         {
             t.counted = false;

@@ -5,7 +5,7 @@
 // float) and keeps the K best by the objective: the largest bound_ratio (or witness error / witness
 // bound, when larger) over the chosen variants, measured by the campaign's own phases
 // (computeTruth, runVariants, checkWitnesses: the same truth, queries, errorBound and
-// witnessBound). docs/validation.md, "Adversarial search".
+// witnessBound). docs/cli.md, "`search`".
 #pragma once
 
 #include "campaign/campaign.hpp"
@@ -79,7 +79,7 @@ struct SearchResult
     SearchFailures failures;
     std::vector<SearchCase> population; // best first; passing cases only
     std::vector<SearchCase> failing;    // the first kMaxFailingKept failing cases, in order found
-    Json json;                          // the --json summary (docs/validation.md)
+    Json json;                          // the --json summary (docs/cli.md, `search`)
     int exitCode = kExitPass;
 };
 
@@ -87,7 +87,7 @@ inline constexpr std::size_t kMaxFailingKept = 100;
 
 SearchResult runSearch(const SearchConfig& config, const std::vector<FamilyData>& inputs);
 
-// The --json summary (docs/validation.md), from the result; runSearch puts it in result.json.
+// The --json summary (docs/cli.md, `search`), from the result; runSearch puts it in result.json.
 Json searchJson(const SearchConfig& config, const SearchResult& result,
                 const std::vector<FamilyData>& inputs);
 // A bound ratio as the summaries print it: 4 significant digits, "n/a" for NaN.

@@ -144,7 +144,7 @@ std::string searchCaseFileText(const SearchConfig& config, const SearchResult& r
     std::vector<std::string> comments = {
         fmt::format("written by `{}` (seed {}) on {}, git {}", config.command, config.seed,
                     isoDateUtc(), gitRevision()),
-        fmt::format("adversarial search (docs/validation.md): {} evaluations ({} start cases, {} "
+        fmt::format("adversarial search (docs/cli.md): {} evaluations ({} start cases, {} "
                     "mutated) in {:.1f} s on {} thread(s), stopped by {}",
                     r.evaluations, r.startCases, r.mutated, r.seconds, r.threads,
                     r.stoppedBy.empty() ? "the end of the start cases" : r.stoppedBy)};

@@ -1,5 +1,5 @@
 // Shards: a shard's state (what `run --shard` writes and `merge` reads), and the merge of every
-// shard's state into the campaign (docs/validation.md, "Shards and merge").
+// shard's state into the campaign (docs/cli.md, "Shards, merge, MPI, resume").
 #include "campaign/state.hpp"
 
 #include "common/output.hpp"

@@ -17,7 +17,7 @@
 namespace gjkval
 {
 
-// Ranges of the numeric options (docs/validation.md).
+// Ranges of the numeric options (docs/cli.md).
 inline constexpr int kMaxThreads = 256;
 inline constexpr int kMaxPasses = 1000;
 inline constexpr int kMaxWorst = 1000;
@@ -28,12 +28,11 @@ inline constexpr std::uint64_t kMaxSearchEvaluations = 1000000000,
 inline constexpr std::size_t kMaxChunkCases = 1000000;
 inline constexpr std::size_t kMaxShards = 100000; // run --shard I/N
 
-// Memory a command needs per case it holds, measured as peak RSS growth over 5000 .. 40000
-// `random` cases (GCC 12 release build, every variant): generate 1.4 KB, bench 1.5 KB (rounded
-// up). `run` streams its cases and holds only the engine families whole. A `hard/many-vertices`
-// case (up to 2 x 4096 points, their exact hulls and float copies) is counted as 1 MB. A guard
-// against commands that cannot fit, not a prediction: a command is refused when its estimate
-// exceeds the machine's physical memory.
+// Memory a command needs per case it holds: above the peak RSS growth per `random` case that
+// generate and bench show (every variant), with a margin. `run` streams its cases and holds only
+// the engine families whole. A `hard/many-vertices` case (up to 2 x 4096 points, their exact hulls
+// and float copies) is counted as 1 MB. A guard against commands that cannot fit, not a prediction:
+// a command is refused when its estimate exceeds the machine's physical memory.
 inline constexpr double kHeldBytesPerCase = 5e3, kLargeCaseBytes = 1e6;
 
 // The program's command line, as the report's context quotes it.

@@ -85,7 +85,7 @@ Subcommand addCompare(CLI::App& app, const CommandLine&)
     auto* cmp = app.add_subcommand(
         "compare", "Compare two reports of the same campaign (OLD, NEW: report directories or "
                    "report.json files): every family x variant statistic that got worse or "
-                   "better; exit 1 when one regressed beyond its tolerance (docs/validation.md, "
+                   "better; exit 1 when one regressed beyond its tolerance (docs/cli.md, "
                    "'compare').");
     cmp->footer(exitCodesHelp());
     cmp->add_option("OLD", o->oldPath, "the report before the change")

@@ -1,4 +1,4 @@
-// gjk-validate: the validation runner (docs/validation.md).
+// gjk-validate: the validation runner (docs/campaign.md, docs/cli.md).
 //   run       a campaign: families and case files -> exact truth, GJK variants -> reports
 //   generate  write a family's cases to a gjk-cases/1 file
 //   explain   one case in detail: inputs, each variant's result and trace, the exact result
@@ -32,12 +32,10 @@ namespace
 // freed at the end of each chunk and asked for again by the next one. With glibc's defaults the
 // freed top of the heap is handed back to the kernel (above 128 KB, M_TRIM_THRESHOLD) and blocks
 // of a chunk's size are mmap'd and munmap'd one by one (M_MMAP_THRESHOLD, 128 KB, raised by glibc
-// up to 32 MB as such blocks are freed), so every chunk faults its pages in again: 38,154 page
-// faults and 15 % of a `run --family random:100000 --variants double --no-timing
-// --no-default-plugins --threads 1` spent in the kernel (perf). Keeping up to 256 MB of freed
-// memory and serving blocks below 32 MB (glibc's largest mmap threshold) from the heap takes that
-// to 3,796 faults and the run from 5.9 to 4.9 us a case; the peak memory, 22.5 MB before, is
-// 23.4 MB, still a chunk's and not the count's (docs/speed.md, "Page faults between chunks").
+// up to 32 MB as such blocks are freed), so every chunk faults its pages in again, and a run spends
+// a good part of its time in the kernel. Keeping up to 256 MB of freed memory and serving blocks
+// below 32 MB (glibc's largest mmap threshold) from the heap avoids those faults; the peak memory
+// stays a chunk's and not the count's (docs/speed.md gives the measurement).
 // Set here, not in the library: a host process (the Python package) keeps its own allocator.
 void keepFreedMemory()
 {

@@ -23,7 +23,7 @@ void addPluginOptions(CLI::App& sub, PluginOptions& o, ShippedPlugins shipped, J
     sub.add_option("--plugin", o.paths,
                    "a shared library implementing gjk2d/plugin.h, or an executable adapter (any "
                    "executable file speaking the gjk2d-adapter protocol 1 over its stdin and "
-                   "stdout: docs/validate-your-gjk.md, \"Executable adapters\"): each "
+                   "stdout: docs/plugin-abi.md, \"Executable adapters\"): each "
                    "implementation it describes becomes a comparison variant (evaluated in a child "
                    "process); repeatable, each file once")
         ->allow_extra_args(false);

@@ -204,7 +204,7 @@ Values valuesFor(const FoundRepro& t, const VariantInfo& v, const Case& c, const
     out["EXACT_AY"] = shown(e["witnessA"][1]);
     out["EXACT_BX"] = shown(e["witnessB"][0]);
     out["EXACT_BY"] = shown(e["witnessB"][1]);
-    // The exact signed distance and penetration pair (issue 51), where the detail has them (a
+    // The exact signed distance and penetration pair, where the detail has them (a
     // variant whose contract says penetration): EXACT_SIGNED "false" and zeros otherwise.
     const bool hasSigned = e.contains("signed_distance") && e["signed_distance"].is_number();
     out["EXACT_SIGNED"] = hasSigned ? "true" : "false";

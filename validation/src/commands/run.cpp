@@ -330,7 +330,7 @@ int runAsLaunched(RunOptions& o, const CommandLine& line)
 #else
         throw InputError(fmt::format(
             "started as one of {} processes (mpirun?), but this gjk-validate is built without "
-            "MPI (GJK2D_WITH_MPI, docs/validation.md): each would run the whole campaign",
+            "MPI (GJK2D_WITH_MPI, docs/cli.md): each would run the whole campaign",
             worldSize()));
 #endif
     }

@@ -24,7 +24,7 @@ class InputError : public std::runtime_error
 };
 
 // Exit codes of gjk-validate: the one home of their meanings. The --help footer and the table
-// in docs/validation.md are written from kExitCodeTable (a test compares the docs with it).
+// in docs/cli.md are written from kExitCodeTable (a test compares the docs with it).
 inline constexpr int kExitPass = 0;  // every case within its variant's bound
 inline constexpr int kExitFail = 1;  // some case failed (error beyond bound, non-finite, limit)
 inline constexpr int kExitInput = 2; // usage or input error (bad file, bad option, rejected case)
@@ -66,7 +66,7 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
                      "a previous report or output file stays in place, whole."},
 };
 
-// Why an answer is not a valid answer (docs/validation.md, "Failures"): one reason per answer, the
+// Why an answer is not a valid answer (docs/judgement.md, "Failures"): one reason per answer, the
 // first that applies in this order (evaluate.cpp decides; Stats counts them by name). A non-finite
 // distance or witness point is `nonfinite` instead, never Invalid.
 enum class Invalid

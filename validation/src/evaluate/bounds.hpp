@@ -10,9 +10,10 @@
 namespace gjkval
 {
 
-// What a bound may depend on, for one case and one variant (docs/validation.md, "Metrics"). All
-// computed in double from the input the variant sees (float-rounded for float variants), in the
-// variant's compute frame: A's local frame (Frame::LocalA) or the world (Frame::World).
+// What a bound may depend on, for one case and one variant (docs/judgement.md, "Truth and
+// metrics"). All computed in double from the input the variant sees (float-rounded for float
+// variants), in the variant's compute frame: A's local frame (Frame::LocalA) or the world
+// (Frame::World).
 struct CaseMetrics
 {
     double R = 0; // scale: max |coordinate| of A plus of B~ (infinity norm), plus rA + rB

@@ -1,5 +1,5 @@
 // Each answer judged by its implementation's own contract (implementations/contract.hpp; docs/
-// validation.md, "Contracts"): the first of three classes of an answer (a contract violation, with
+// judgement.md, "Contracts"): the first of three classes of an answer (a contract violation, with
 // its reason; then keeping the contract but beyond gjk2d's bound; then within it). gjk2d's own
 // contract is gjk2d's judge: a violation is exactly `failed` (failedAnswer), named by its first
 // reason. A declared contract (a version-2 plugin's) is held clause by clause, in this file's

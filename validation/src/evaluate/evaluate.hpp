@@ -163,7 +163,7 @@ struct VariantOutcome
     double tolerance = 0, witnessTolerance = 0;
     // Penetration (an implementation whose contract's overlap is Penetration: gjk2d's signed
     // variants, plugins that declare it) on shapes whose exact signed distance s is < 0, set by
-    // judge() (docs/validation.md, "Penetration"): the answer's signed distance d against s.
+    // judge() (docs/judgement.md, "Penetration"): the answer's signed distance d against s.
     // depthBound is gjk2d's depth bound for the case (evaluate/bounds.hpp), depthTolerance what the
     // contract holds the depth to (its depth clause abs + rel |s| when stated, else depthBound;
     // judgeContracts sets it). depthAbs = |d - s| (+inf for a non-finite answer), depthRel =
@@ -265,7 +265,7 @@ struct EvalContext
 // The judgement of one answer v (v.R, v.bound and v.witnessBound set) against the exact `truth`:
 // its errors, its misclassification, whether it is invalid (negative distance, witness gap; the
 // witness points' distances to their shapes come in phase 3), whether its certified interval holds
-// the truth, and whether it failed (docs/validation.md, "Failures"). runVariants calls it.
+// the truth, and whether it failed (docs/judgement.md, "Failures"). runVariants calls it.
 // `overlap`: what the implementation answers on overlap; for Zero and Penetration a negative
 // distance is their way to say 0, and the errors are measured on max(d, 0). For Penetration a
 // negative distance is not invalid, the witness gap is | ||pB - pA|| - |d| |, a certified
@@ -297,7 +297,7 @@ void judgeContracts(const Case& c, const EvalContext& ctx, CaseOutcome& out);
 // All of them.
 CaseOutcome evaluateCase(const Case& c, const EvalContext& ctx);
 
-// An answer's class (docs/validation.md, "Contracts"): "breaks_contract" (a violation of its
+// An answer's class (docs/judgement.md, "Contracts"): "breaks_contract" (a violation of its
 // implementation's contract), "out_of_range" (gjk2d's own, flagged by GJK: not judged),
 // "outside_bound" (keeps its contract, beyond gjk2d's bound: a measured accuracy, not a failure),
 // "within_bound"; "skipped" when it did not run.

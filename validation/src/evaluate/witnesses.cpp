@@ -76,7 +76,7 @@ class ExactShapes
 
 // The witness verdict (judge() left the rest): off its shape comes before the gap.
 // An answer of overlap (distance 0) may give two points that each lie in both shapes instead of
-// one (docs/validate-your-gjk.md, "The whole answer is judged"), e.g. Box2D v3's points on each
+// one (docs/judgement.md, "Failures"), e.g. Box2D v3's points on each
 // outline. Either point proves the overlap. (A penetration pair is not such a pair: each of its
 // points is on its own shape only; a contract that declares penetration is judged by its own
 // clause, contract_judge.cpp.) Then the witness gap is how far

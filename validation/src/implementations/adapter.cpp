@@ -1,4 +1,4 @@
-// The host side of the executable-adapter protocol (versions 1 and 2, docs/validate-your-gjk.md,
+// The host side of the executable-adapter protocol (versions 1 and 2, docs/plugin-abi.md,
 // "Executable adapters"): the handshake, requests and answers, pipelining and a lost answer
 // recovered, over the process and pipes of implementations/adapter_process.hpp.
 #include "implementations/adapter.hpp"

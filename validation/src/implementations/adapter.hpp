@@ -1,5 +1,5 @@
 // Executable adapters: the host side of the gjk2d executable-adapter protocol, versions 1
-// and 2 (docs/validate-your-gjk.md, "Executable adapters (any language)"). An adapter is any
+// and 2 (docs/plugin-abi.md, "Executable adapters"). An adapter is any
 // executable file gjk-validate starts and talks to over its stdin and stdout, one line per
 // message: a handshake (its library and implementations), then `distance` and `time` requests,
 // one answer each. Contained like a shared-library plugin: a crash, a hang or a malformed answer

@@ -1,4 +1,4 @@
-// The executable-adapter protocol's handshake (versions 1 and 2, docs/validate-your-gjk.md,
+// The executable-adapter protocol's handshake (versions 1 and 2, docs/plugin-abi.md,
 // "Executable adapters"): the host's version line, then the adapter's library, implementation,
 // contract, prepared and input lines, each checked, to its `ready`.
 #include "implementations/adapter_wire.hpp"

@@ -1,5 +1,5 @@
 // The processes gjk-validate starts (executable adapters, shared-library plugins' children) and
-// the ones they start: none outlives the run (docs/validate-your-gjk.md, "Executable adapters").
+// the ones they start: none outlives the run (docs/plugin-abi.md, "Its process tree").
 // Each child leads a process group of its own, which is ended with it; gjk-validate is the child
 // subreaper of its descendants, so that one that left its group (setsid) comes back to it when its
 // parent ends, and is ended at the end of the run (sweepInherited).

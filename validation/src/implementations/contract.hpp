@@ -1,7 +1,7 @@
 // What an implementation under test promises (gjk2d/plugin.h, gjk2d_contract; the adapter
-// protocol's `contract` lines; docs/peers.md, "Contracts"): one plain struct, every clause with
-// where the library says so. The judge (evaluate/) holds each answer to it; gjk2d's own variants,
-// and version-1 plugins, have gjk2d's own contract (ownContract()).
+// protocol's `contract` lines; docs/peers.md, "What each peer promises (its contract)"): one plain
+// struct, every clause with where the library says so. The judge (evaluate/) holds each answer to
+// it; gjk2d's own variants, and version-1 plugins, have gjk2d's own contract (ownContract()).
 //
 // One meaning of "contract" in the runner: what an implementation promises about its answers.
 // (plugin.h's rules for a call, the status codes and the result's fields, are "the ABI".)

@@ -1,5 +1,5 @@
 // Distance routines that are not gjk2d's, loaded from shared libraries (gjk2d/plugin.h,
-// docs/validate-your-gjk.md): each implementation a plugin describes becomes a variant
+// docs/plugin-abi.md): each implementation a plugin describes becomes a variant
 // (VariantInfo::plugin), evaluated in a child process so that a crash or a hang costs one case.
 // A third kind answers in this process, from a callback registered at run time
 // (implementations/in_process.hpp: the Python package's gjk2d.validate).
@@ -29,7 +29,7 @@ inline constexpr double kDefaultPluginTimeoutSeconds = 5;
 
 // The two kinds of plugin `--plugin FILE` takes, told apart by the file's content: a shared
 // library exporting gjk2d_plugin_describe (gjk2d/plugin.h), or an executable adapter spoken to
-// over pipes (implementations/adapter.hpp, protocol version 1, docs/validate-your-gjk.md); and the
+// over pipes (implementations/adapter.hpp, protocol versions 1 and 2, docs/plugin-abi.md); and the
 // kind no file gives, a callback of this process (registerInProcessVariant,
 // implementations/in_process.hpp).
 enum class PluginKind

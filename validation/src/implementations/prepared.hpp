@@ -18,8 +18,7 @@ namespace gjkval
 {
 
 // A shape's points, inline up to 8 (Box2D's polygon limit; the random family's 3 to 8): preparing
-// a case allocates nothing on the common path (docs/speed.md, "Allocations, transforms and the
-// fold", issue 34).
+// a case allocates nothing on the common path (docs/speed.md).
 template <class T> using CasePoints = boost::container::small_vector<gjk::Vec2<T>, 8>;
 
 // A case's inputs converted once to both scalar types (the timing loop reuses them).

@@ -139,9 +139,8 @@ namespace
 {
 // Shared-library plugins answer in server children (PluginServers): each is forked once, on a
 // campaign's first chunk with plugin tasks, and answers the tasks of every later chunk sent to it
-// through a pipe. Forking a child per chunk cost the default campaign 5.4 s of system time on 2
-// threads: the fork's copy of the page tables and then a copy-on-write fault on every page the
-// campaign wrote after it, 1.1 million of them (docs/speed.md, "Plugins in server children").
+// through a pipe. Forking a child per chunk costs the fork's copy of the page tables and then a
+// copy-on-write fault on every page the campaign writes after it (docs/speed.md gives the cost).
 // Its answers come back in blocks: one write and one read a block, not a record. A block is
 // written when it holds kBlockRecords records, kBlockSeconds after its first record (a slow
 // plugin's answers still reach the parent well within --plugin-timeout, whose least is 0.01 s),

@@ -1,4 +1,4 @@
-// Cases and the case-file format `gjk-cases/1` (docs/validation.md, "Case files").
+// Cases and the case-file format `gjk-cases/1` (docs/case-files.md, "Case files").
 #pragma once
 
 #include "common/common.hpp"
@@ -33,7 +33,7 @@ struct Case
 {
     std::string name;
     ShapeIn a, b;
-    // Optional provenance (docs/validation.md, "Case files"): where the case comes from (a URL or
+    // Optional provenance (docs/case-files.md, "Case files"): where the case comes from (a URL or
     // a citation) and what it is. Empty when the file gives none; never read by an evaluation.
     std::string source, comment;
 };
@@ -55,7 +55,7 @@ struct CaseFile
 
 inline constexpr const char* kCaseFormat = "gjk-cases/1";
 
-// Limits of the reader (docs/validation.md, "Case files"): what a hostile file can cost in memory
+// Limits of the reader (docs/case-files.md, "Case files"): what a hostile file can cost in memory
 // is bounded by these, not by what the file claims. Files and JSON beyond them are refused, cases
 // beyond them are rejected.
 inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 MiB

@@ -17,7 +17,7 @@ P2 applyTransform(const ShapeIn& s, P2 p); // c*x - s*y + px, s*x + c*y + py
 std::vector<P2> worldPoints(const ShapeIn& s);
 
 // The world case of a case, for an implementation that cannot take its transforms exactly (the
-// adapter protocol's `input NAME world` line, docs/validate-your-gjk.md): each point mapped by its
+// adapter protocol's `input NAME world` line, docs/plugin-abi.md): each point mapped by its
 // shape's transform in double, x' = (c*x - s*y) + px, y' = (s*x + c*y) + py, each operation
 // rounded to double (applyTransform; the project builds with -ffp-contract=off: no FMA), then,
 // for a float implementation (toFloat), rounded to float; the radius rounded to float likewise;

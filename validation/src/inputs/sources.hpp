@@ -1,6 +1,6 @@
 // The campaign's inputs as streams: each generated family and each case file yields its cases in
 // case order, in chunks of bounded size, so that a campaign's memory does not grow with its number
-// of cases (docs/validation.md, "Memory").
+// of cases (docs/judgement.md, "Statistics").
 #pragma once
 
 #include "common/common.hpp"

@@ -1,8 +1,8 @@
 // gjk-validate compare: two report.json files (OLD, NEW) of the same campaign, every family x
 // variant statistic that got worse or better, and whether a change beyond its tolerance fails
-// the comparison (docs/validation.md, "`compare`: gate a change on two reports").
+// the comparison (docs/cli.md, "`compare`: gate a change on two reports").
 //
-// The tolerance rule (one home; docs/validation.md states it with the reasons):
+// The tolerance rule (one home; docs/cli.md states it with the reasons):
 //   counts (failures, misclassifications, non-finite, ..., iterations.max, the exit code, and a
 //   family's make-up and pass flags read as 1/0) regress on any change for the worse;
 //   an error statistic regresses when NEW > OLD * (1 + tol) + floor, tol = relTol for the exact

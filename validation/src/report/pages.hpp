@@ -22,9 +22,8 @@ struct CampaignReport
 
 // A report (or any of the runner's JSON) as the HTML renderer takes it: nlohmann::json, keys
 // sorted, the very value nlohmann::json::parse(j.dump()) gives, without the text between (a
-// non-finite double dumps as null, a nonnegative integer parses as unsigned). On the default
-// campaign's 28 MB report the compact dump and its parse took 0.14 s; `run`'s wall time outside the
-// campaign's clock went from 0.79-0.83 s to 0.72-0.79 s (three alternated rounds). Throws
+// non-finite double dumps as null, a nonnegative integer parses as unsigned): cheaper than a
+// pretty dump and its parse, which the report's size made visible in `run`'s wall time. Throws
 // std::logic_error on a binary value, which the runner never makes.
 nlohmann::json forHtmlRenderer(const Json& j);
 

@@ -149,7 +149,7 @@ std::string pluginCounts(const Json& st)
     return out.empty() ? out : " (" + out + ")";
 }
 
-// Invalid answers (docs/validation.md, "Failures"): "N (k reason, ...)", "0" when none; "-" for a
+// Invalid answers (docs/judgement.md, "Failures"): "N (k reason, ...)", "0" when none; "-" for a
 // report written before the witness judgement.
 std::string invalidCounts(const Json& st)
 {

@@ -26,7 +26,7 @@ std::string terminalSummary(const Json& report, bool verbose = false);
 std::string resultText(const Json& report);
 
 // kExitCodeTable (common.hpp) rendered: the --help footer (plain text, lines of at most `width`
-// characters) and the Markdown table of docs/validation.md (a test checks the docs hold it).
+// characters) and the Markdown table of docs/cli.md (a test checks the docs hold it).
 std::string exitCodesHelp(std::size_t width = 80);
 std::string exitCodesMarkdown();
 

@@ -34,7 +34,7 @@ struct BenchConfig
 };
 
 // The variants `bench --against` times when --variants is not given: the columns of the
-// comparison table of issue 33 (docs/speed.md, "Against Box2D v3 in one command").
+// comparison table against Box2D v3 (docs/speed.md).
 inline constexpr const char* kAgainstVariants =
     "double,float,double-warm,float-warm,double-correct,float-batch,double-batch";
 

@@ -320,7 +320,7 @@ TimedLoop ownLoopT(const std::vector<const PreparedCase*>& cases, const VariantI
 // The chunk size: a pass sends every chunk as one `time` request with K = the pass's reps, so the
 // adapter repeats a chunk K times where a shared library's pass repeats the whole sample; with
 // the sample in one chunk up to this size, the two loops are the same (see
-// docs/validate-your-gjk.md for the bridge's timing against the shared library's). A chunk of
+// scripts/adapter_timing_check.py for the bridge's timing against the shared library's). A chunk of
 // 2,048 cases of 8 points is a line of about 1.5 MB.
 constexpr std::size_t kAdapterTimeChunkCases = 2048;
 

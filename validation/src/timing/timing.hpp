@@ -70,7 +70,7 @@ std::vector<TimingResult> timeAlternated(const std::vector<std::vector<const Pre
 // An executable adapter's and an in-process variant's loops time the first kAdapterTimingCases of
 // the sample only (TimingResult::cases says how many): every pass sends the cases' text again and
 // the adapter parses it outside its timed loop, which in a slow language costs far more than the
-// loop; GEOS through shapely takes about 250 us a query. One chunk (2,048 cases) is still a
+// loop (GEOS through shapely: hundreds of microseconds a query). One chunk (2,048 cases) is still a
 // sample of the random family as the others are.
 inline constexpr std::size_t kAdapterTimingCases = 2048;
 

@@ -1,6 +1,6 @@
 // The Box2D 2.4.1 adapter (validation/plugins/box2d-2.4/box2d.cpp) on hand-derived cases: its
 // declared contract, and the overlap clause (`midpoint`) through b2Distance itself (float,
-// useRadii = true). docs/peers.md, "## Box2D 2.4.1".
+// useRadii = true). docs/peers/box2d.md.
 #include "peer_plugin.hpp"
 
 #include "within.hpp"

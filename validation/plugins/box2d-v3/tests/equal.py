@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The shipped Box2D v3 adapter adds nothing and loses nothing (issue 32, a Done-when):
+"""The shipped Box2D v3 adapter adds nothing and loses nothing:
 
   equal.py --exe GJK_VALIDATE --plugin gjk2d-box2d3.so --variant NAME --direct BOX2D3_DIRECT
                   --work DIR --family SPEC [--family SPEC ...]
@@ -55,7 +55,7 @@ def shape_line(tag, s):
 
 
 def write_text(cases_json, out):
-    """Streams the case file (one case per line, docs/validation.md) into box2d3_direct's format."""
+    """Streams the case file (one case per line, docs/case-files.md) into box2d3_direct's format."""
     names = []
     with open(cases_json) as f, open(out, "w") as o:
         for line in f:

@@ -1,7 +1,7 @@
 # The Box2D v3 adapter's own tests, included by tests/plugins/CMakeLists.txt (the adapter is built
 # when GJK2D_BOX2D3_SOURCE names a Box2D v3 tree): hand-derived cases (hand.py), and its answers
 # against b2ShapeDistance called directly by direct.c, linked with the adapter's own Box2D objects, on every case of the
-# default campaign's families (docs/validation.md, `run`: random:200000, hard, engine).
+# default campaign's families (docs/cli.md, `run`: random:200000, hard, engine).
 if(TARGET gjk2d_box2d3_plugin)
   enable_language(C)
   add_executable(box2d3_direct ${CMAKE_CURRENT_LIST_DIR}/direct.c)
@@ -24,7 +24,7 @@ if(TARGET gjk2d_box2d3_plugin)
   # release-only: scripts/test.sh leaves it out of the sanitize run, where it would repeat the
   # release comparison at several times the cost (214,000 cases) with Box2D's C files, which the
   # sanitize preset's CMAKE_CXX_FLAGS do not instrument, compiled alike.
-  # `bench --against box2d-v3` (issue 33): the adapter's own timing loop runs, cold and warm, and
+  # `bench --against box2d-v3`: the adapter's own timing loop runs, cold and warm, and
   # the table has its two rows and the ratio column, the JSON their numbers (null when the loop
   # failed); no timing is asserted.
   add_test(NAME "plugins: box2d-v3: bench --against box2d-v3 prints its cold and warm rows"

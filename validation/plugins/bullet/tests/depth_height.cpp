@@ -1,12 +1,12 @@
-// Bullet's penetration depth against the prisms' half height (docs/peers.md, "The prism
-// reduction"; validation/plugins/bullet/bullet.cpp, prismHalfHeight): Bullet 3.24 called through
-// its own API only (a btConvexHullShape per prism, margin = radius, a btVoronoiSimplexSolver in
-// zeroed storage, btGjkEpaPenetrationDepthSolver, btGjkPairDetector with identity transforms, as
-// the adapter and direct_loop.cpp build them), on every overlapping case of a case file, once per
-// half-height rule, its depth set against the 2D depth. Not a test: its figures go into
-// docs/peers.md with the command. Its CTest (--check N --plugin P) checks that it runs and that,
-// on the file's first N overlapping cases, the adapter's prepared queries answer bit for bit what
-// this program answers at the adapter's rule (so that the figures are the adapter's).
+// Bullet's penetration depth against the prisms' half height (docs/peers/prisms.md;
+// validation/plugins/bullet/bullet.cpp, prismHalfHeight): Bullet 3.24 called through its own API
+// only (a btConvexHullShape per prism, margin = radius, a btVoronoiSimplexSolver in zeroed storage,
+// btGjkEpaPenetrationDepthSolver, btGjkPairDetector with identity transforms, as the adapter and
+// direct_loop.cpp build them), on every overlapping case of a case file, once per half-height rule,
+// its depth set against the 2D depth. Not a test: its figures go into docs/peers.md with the
+// command. Its CTest (--check N --plugin P) checks that it runs and that, on the file's first N
+// overlapping cases, the adapter's prepared queries answer bit for bit what this program answers at
+// the adapter's rule (so that the figures are the adapter's).
 //
 //     cd build/release
 //     validation/gjk-validate generate --family random:2000 --seed 1 --out /tmp/r.json
@@ -33,11 +33,11 @@
 // errors of double from the exact one (sums and products of the case's numbers, one square root):
 // far below the errors measured, which are Bullet's.
 //
-// The half-height rules: h = 1 (the issue's prism), h = k (eA + eB) for k = 2 (the adapter's rule
-// before issue 51), then powers of two to 2^20, among them the adapter's (bullet.cpp,
-// kHeightFactor: 2^4 in float, 2^14 in double; e: bullet.cpp's extent). The 3D minimal translation
-// of two prisms P x [-h, h], Q x [-h, h] is min(2D depth, 2h) in exact arithmetic (the Minkowski
-// difference is M x [-2h, 2h], whose nearest face is an edge of M or a cap).
+// The half-height rules: h = 1, h = k (eA + eB) for k = 2 (FCL's rule), then powers of two to 2^20,
+// among them the adapter's (bullet.cpp, kHeightFactor: 2^4 in float, 2^14 in double; e:
+// bullet.cpp's extent). The 3D minimal translation of two prisms P x [-h, h], Q x [-h, h] is min(2D
+// depth, 2h) in exact arithmetic (the Minkowski difference is M x [-2h, 2h], whose nearest face is
+// an edge of M or a cap).
 #include "direct_loop.hpp"
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>

@@ -1,6 +1,6 @@
 // Bullet called directly, beside the Bullet adapter (validation/plugins/bullet/bullet.cpp): each
 // case's two shapes built once as Bullet's users build them, btConvexHullShapes of the adapter's
-// prisms (docs/peers.md, "The prism reduction") with margin = radius, then passes of the pair
+// prisms (docs/peers/prisms.md) with margin = radius, then passes of the pair
 // detector as its users call it on two convex shapes: a btVoronoiSimplexSolver and a
 // btGjkEpaPenetrationDepthSolver on the stack, a btGjkPairDetector over the two shapes,
 // getClosestPoints with identity transforms into a btPointCollector. Prints the median ns/query;

@@ -1,5 +1,5 @@
 // The Bullet 3.24 adapter (validation/plugins/bullet/bullet.cpp) on hand-derived cases, in float
-// (gjk2d-bullet-float.so) and double (gjk2d-bullet-double.so); docs/peers.md, "## Bullet". Unit
+// (gjk2d-bullet-float.so) and double (gjk2d-bullet-double.so); docs/peers/bullet.md. Unit
 // squares are [0, 1]^2 placed by their case's transform.
 //
 // Tolerance kPolygon<T> = 64 u S with S = 5, the largest coordinate, u the type's unit roundoff:
@@ -148,7 +148,7 @@ TEMPLATE_TEST_CASE("a segment and a diamond through a 10 x 10 square: depths 4 a
     CHECK(d.by == within(5, tol));
 }
 
-// A finding, not a prism effect (docs/peers.md, "## Bullet"): two 10 x 10 squares, B = A placed at
+// A finding, not a prism effect (docs/peers/bullet.md): two 10 x 10 squares, B = A placed at
 // (5, 0), overlap by 5 along x and 10 along y, depth 5. Bullet's EPA answers 5 / sqrt(2) =
 // 3.5355: pA (7.5, 0) on A's bottom edge and pB (5, 2.5) on B's left edge, each point on its own
 // shape, but 29% short of the depth, along a diagonal that separates nothing (the squares'
@@ -211,7 +211,7 @@ TEMPLATE_TEST_CASE("the case's (c, s) is applied as given: (2, 0) scales the squ
     CHECK(r.ax == within(2, tol));
 }
 
-// The finding of docs/peers.md, "## Bullet": the random family's case random/192 (gjk-validate
+// The finding of docs/peers/bullet.md: the random family's case random/192 (gjk-validate
 // generate --family random:200, seed 1), whose exact distance is 0.0151064404 on its float inputs
 // and 0.0151063987 on its double inputs (the exact side's values in that run's cases.jsonl). In
 // float, btVoronoiSimplexSolver's default equal-vertex threshold (1e-4) stops GJK one iteration
@@ -276,7 +276,7 @@ TEST_CASE("the answer does not depend on memory left by earlier calls (hard/extr
     const peers::Answer second = bullet<double>().distance(a, b);
     REQUIRE(first.status == second.status);
     // Field by field, bit for bit (NaN == NaN): the struct's padding after `status` is not part of
-    // the answer, and a memcmp of it failed once in CI (fresh clone at 4a33df8, sanitize preset).
+    // the answer, and a memcmp of it failed once in CI (a fresh clone, sanitize preset).
     const auto bits = [](const peers::Answer& r)
     {
         return std::array<std::uint64_t, 5>{

@@ -1,5 +1,5 @@
 // The prisms' half height on penetrating cases (validation/plugins/bullet/bullet.cpp,
-// prismHalfHeight; docs/peers.md, "The prism reduction"): Bullet in double called directly, with
+// prismHalfHeight; docs/peers/prisms.md): Bullet in double called directly, with
 // the adapter's construction (world points, prisms of btConvexHullShape, margin 0, a zeroed
 // btVoronoiSimplexSolver, btGjkEpaPenetrationDepthSolver), once with h = 1 and once with the
 // adapter's h = 2 (eA + eB); then the adapter itself (gjk2d-bullet-double.so) on the same case.

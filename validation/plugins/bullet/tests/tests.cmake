@@ -1,4 +1,4 @@
-# The Bullet adapters' own tests (docs/peers.md, "Bullet"): hand-derived cases, included by
+# The Bullet adapters' own tests (docs/peers/bullet.md): hand-derived cases, included by
 # tests/plugins/CMakeLists.txt.
 if(TARGET gjk2d_bullet_float_plugin AND TARGET gjk2d_bullet_double_plugin)
   add_executable(bullet_peer_tests ${CMAKE_CURRENT_LIST_DIR}/test_bullet.cpp)
@@ -46,7 +46,7 @@ endif()
 
 # The direct loops (direct_loop.cpp, built once per precision as the adapter): Bullet called on
 # shapes built once, timed beside the adapter's prepared queries by hand (the command is in the
-# source's header comment; docs/peers.md, "Bullet"). Their CTests only check that they run and that
+# source's header comment; docs/peers/bullet.md). Their CTests only check that they run and that
 # their distances on 50 cases are the adapter's.
 find_package(nlohmann_json 3 REQUIRED) # the case file (its imported target is validation/'s)
 find_package(PkgConfig QUIET)
@@ -71,8 +71,7 @@ foreach(_precision float double)
   target_compile_options(${_target} PRIVATE ${GJK2D_BULLET_DIRECT_${_precision}_CFLAGS_OTHER})
   target_link_libraries(${_target} PRIVATE gjk2d_plugin nlohmann_json::nlohmann_json
                         ${GJK2D_BULLET_DIRECT_${_precision}_LINK_LIBRARIES} ${CMAKE_DL_LIBS})
-  # Bullet's depth against the prisms' half height (depth_height.cpp; docs/peers.md, "The prism
-  # reduction"): a measuring program; its CTest checks the adapter's rule on a few cases.
+  # Bullet's depth against the prisms' half height (depth_height.cpp; docs/peers/prisms.md): a measuring program; its CTest checks the adapter's rule on a few cases.
   set(_depth bullet_depth_height_${_precision})
   add_executable(${_depth} ${CMAKE_CURRENT_LIST_DIR}/depth_height.cpp)
   target_include_directories(${_depth} PRIVATE ${PROJECT_SOURCE_DIR}/tests/plugins/peers)

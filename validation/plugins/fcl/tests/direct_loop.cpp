@@ -1,6 +1,6 @@
 // FCL called directly, beside the FCL adapter (validation/plugins/fcl/fcl.cpp): each case's two
 // shapes built once as FCL's users build them, fcl::CollisionObjects of the adapter's geometry (a
-// prism of a Convex, a Sphere, a Capsule: docs/peers.md, "The prism reduction"), then passes of
+// prism of a Convex, a Sphere, a Capsule: docs/peers/prisms.md), then passes of
 // fcl::distance(o1, o2, request, result), FCL's "Main distance interface"
 // (fcl/narrowphase/distance.h:49), with one DistanceRequest and a fresh DistanceResult per query
 // (a result keeps the smallest distance it was given, so a user does not reuse one). Prints the

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """FCL's signed distance aborts on an assertion: one case counted as a crash, the campaign goes on
-(validation/plugins/fcl/tests/tests.cmake; docs/peers.md, "FCL").
+(validation/plugins/fcl/tests/tests.cmake; docs/peers/fcl.md).
 
   signed_crash_check.py --exe E --plugin gjk2d-fcl.so --cases signed-assert-cases.json --work W
 

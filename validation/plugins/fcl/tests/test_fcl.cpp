@@ -1,6 +1,6 @@
-// The FCL 0.7 adapter (validation/plugins/fcl/fcl.cpp) on hand-derived cases; docs/peers.md,
-// "## FCL", states the findings these tests reproduce. Unit squares are [0, 1]^2 placed by their
-// case's transform.
+// The FCL 0.7 adapter (validation/plugins/fcl/fcl.cpp) on hand-derived cases; docs/peers/fcl.md,
+// states the findings these tests reproduce. Unit squares are [0, 1]^2 placed by their case's
+// transform.
 //
 // Tolerances (each derived here, checked against what FCL 0.7.0 answered):
 // - kPolygon = 64 u S with S = 5, the largest coordinate: the adapter rounds the world points
@@ -252,7 +252,7 @@ TEST_CASE("a huge case: GST_INDEP leaves its result unwritten (numeric max, NaN 
     }
 }
 
-// fcl-0.7-libccd-signed (issue 51): GST_LIBCCD with enable_signed_distance. Its contract: overlap
+// fcl-0.7-libccd-signed: GST_LIBCCD with enable_signed_distance. Its contract: overlap
 // `penetration` (distance_request.h:57-92), the distance tolerance as GST_LIBCCD's (none stated),
 // and the depth clause FCL states for its EPA: within distance_tolerance, 1e-6
 // (gjk_libccd-inl.h:2697-2700).

@@ -1,4 +1,4 @@
-# The FCL adapter's own tests (docs/peers.md, "FCL"): hand-derived cases, included by
+# The FCL adapter's own tests (docs/peers/fcl.md): hand-derived cases, included by
 # tests/plugins/CMakeLists.txt.
 if(TARGET gjk2d_fcl_plugin)
   add_executable(fcl_peer_tests ${CMAKE_CURRENT_LIST_DIR}/test_fcl.cpp)
@@ -14,7 +14,7 @@ endif()
 # (tests/plugins/peers/prepared_equal.cpp; GST_LIBCCD's aborts on some hard cases are counted), but
 # the signed one's distance and points within 1e-13 relative: FCL's EPA pair moves in its last bits
 # with the heap addresses of its polytope (the largest difference measured on these families:
-# 4.3e-15; docs/peers.md, "FCL").
+# 4.3e-15; docs/peers/fcl.md).
 if(TARGET gjk2d_fcl_plugin AND TARGET prepared_equal)
   add_test(NAME "plugins: fcl: prepared shapes answer as distance_d, bit for bit"
            COMMAND prepared_equal --plugin $<TARGET_FILE:gjk2d_fcl_plugin>
@@ -23,7 +23,7 @@ if(TARGET gjk2d_fcl_plugin AND TARGET prepared_equal)
 endif()
 
 # The direct loop (direct_loop.cpp): FCL called on shapes built once, timed beside the adapter's
-# prepared queries by hand (its command is in its header comment; docs/peers.md, "FCL"). Its CTest
+# prepared queries by hand (its command is in its header comment; docs/peers/fcl.md). Its CTest
 # only checks that it runs and that its distances on 50 cases are the adapter's, both solvers.
 if(TARGET gjk2d_fcl_plugin)
   find_package(nlohmann_json 3 REQUIRED) # the case file (its imported target is validation/'s)

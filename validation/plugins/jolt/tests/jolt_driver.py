@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Tests of the Jolt Physics executable adapter gjk2d-jolt (docs/peers.md, "## Jolt") without
+"""Tests of the Jolt Physics executable adapter gjk2d-jolt (docs/peers/jolt.md) without
 gjk-validate: the protocol's host side of tests/plugins/adapter_driver.py (its Adapter class)
 sends hand-made requests, as the host sends an `input NAME world` variant its cases (world points,
 floats, the identity transform), and each answer is checked against values derived by hand.
@@ -118,7 +118,7 @@ def check_deep_in_plane(ad):
     # the 2D depth is 5 (B moves by 5 along +x; along y it would take 10). The prisms'
     # half height is 2 (eA + eB) = 80, so the cap-to-cap translation 2h = 160 is far above 5: the
     # answer must be 5 in the plane, not along z. (Bullet's EPA answers 5 / sqrt 2 here along a
-    # diagonal: docs/peers.md, "## Bullet".) Tolerance 1e-5: a float EPA on numbers of size 10.
+    # diagonal: docs/peers/bullet.md.) Tolerance 1e-5: a float EPA on numbers of size 10.
     check_penetration(ad, square(0, 0, 10), square(5, 0, 10), 5.0, (1.0, 0.0), 1e-5)
     # Concentric 10 x 10 squares: depth 10 (the side) along x or y. A half height of 1 would
     # have answered the cap-to-cap 2h = 2.

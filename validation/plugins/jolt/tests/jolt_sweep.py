@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The measurements behind the Jolt adapter's choices (docs/peers.md, "## Jolt"): the prisms' half
+"""The measurements behind the Jolt adapter's choices (docs/peers/jolt.md): the prisms' half
 height factor, one query or two, the slack of mMaxSeparationDistance, the scale of the shapes.
 Not a test: a tool, run by hand.
 

@@ -1,4 +1,4 @@
-# The Jolt Physics executable adapter gjk2d-jolt (docs/peers.md, "## Jolt"), driven by
+# The Jolt Physics executable adapter gjk2d-jolt (docs/peers/jolt.md), driven by
 # jolt_driver.py (adapter_driver.py's host side of the protocol): the handshake with its input line
 # and contract, hand-derived cases (apart, overlapping, deep in the plane, far apart, a nearly
 # collinear point, a centre of mass that is not a float, a segment), refusals, bad requests, nan

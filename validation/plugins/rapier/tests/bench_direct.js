@@ -1,5 +1,4 @@
-// What a Rapier contact query costs its user, measured with Rapier's API alone (docs/peers.md,
-// "## Rapier (parry)", "Cost"): Shape.contactShape, which the adapter calls, beside its parts and
+// What a Rapier contact query costs its user, measured with Rapier's API alone (docs/peers/rapier.md, "Cost"): Shape.contactShape, which the adapter calls, beside its parts and
 // beside Collider.contactCollider, which answers the same query on shapes a World keeps. Two unit
 // squares 3 apart (world points, angle 0), as the adapter's time request builds them; each figure
 // the median of 5 runs of N calls after 2000 warm-up calls.

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The Rapier executable adapter gjk2d-rapier (docs/peers.md, "## Rapier (parry)") driven without
+"""The Rapier executable adapter gjk2d-rapier (docs/peers/rapier.md) driven without
 gjk-validate, through tests/plugins/adapter_driver.py's Adapter (a small host side of the protocol):
 its handshake (the `input ... world` line, the contract, `prepared ... case`), hand-derived cases
 given as world points with the identity transform, as the host gives them to an adapter that

@@ -1,4 +1,4 @@
-# The Rapier executable adapter gjk2d-rapier (docs/peers.md, "## Rapier (parry)"), driven by
+# The Rapier executable adapter gjk2d-rapier (docs/peers/rapier.md), driven by
 # rapier_driver.py here (a small host side of the protocol, tests/plugins/adapter_driver.py's):
 # its handshake with the `input ... world` line and the contract, hand-derived cases in world
 # points, what it refuses and why, bad requests, nan and inf, a time request. 77 (skipped) when
@@ -32,7 +32,7 @@ foreach(entry IN LISTS _rapier_checks)
            COMMAND Python3::Interpreter ${_rapier_driver} --adapter ${_rapier_adapter} --check ${check})
   set_tests_properties("plugins: rapier: ${what}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 60)
 endforeach()
-# Done when (docs/peers.md, "## Rapier (parry)"): on cases generated now with a seed drawn now,
+# Done when (docs/peers/rapier.md): on cases generated now with a seed drawn now,
 # the report's Rapier answers are those of direct.js, a program of Rapier's own API alone, on the
 # world points the protocol's rule gives, bit for bit (direct_check.py).
 add_test(NAME "plugins: rapier: the report's answers are Rapier's own API's on cases made now, bit for bit"
