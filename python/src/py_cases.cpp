@@ -100,7 +100,7 @@ py::list generate(const std::string& family, std::uint64_t seed, std::optional<l
 }
 
 // Every case of a file, or InputError: the file's own error, or its first rejected case's
-// (the runner exits 2 on either: docs/validation.md, "Case files").
+// (the runner exits 2 on either: docs/case-files.md, "Case files").
 py::list readCases(const std::string& path)
 {
     gjkval::CaseFile file;
