@@ -4,6 +4,8 @@
 #include "inputs/cases.hpp"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <unistd.h>
 
 #include <bit>
 #include <cmath>
@@ -51,13 +53,15 @@ std::vector<Case> awkwardCases(std::size_t n, bool asFloat)
 {
     std::mt19937_64 rng(n * 2 + asFloat);
     std::uniform_int_distribution<std::uint64_t> anyBits;
+    // Any finite value of the type, from its bits: a float as the double it converts to exactly.
     const auto number = [&]
     {
         double v;
         do
-            v = std::bit_cast<double>(anyBits(rng));
-        while (!std::isfinite(v) || (asFloat && !std::isfinite(float(v))));
-        return asFloat ? double(float(v)) : v;
+            v = asFloat ? double(std::bit_cast<float>(std::uint32_t(anyBits(rng))))
+                        : std::bit_cast<double>(anyBits(rng));
+        while (!std::isfinite(v));
+        return v;
     };
     std::vector<Case> cases;
     for (std::size_t i = 0; i < n; ++i)
@@ -73,6 +77,8 @@ std::vector<Case> awkwardCases(std::size_t n, bool asFloat)
             s.radius = i % 4 == 0 ? 0.0 : i % 4 == 1 ? -0.0 : std::fabs(number());
             if (i % 5 != 0)
                 s.px = number(), s.py = number(), s.c = number(), s.s = number();
+            if (s.c == 0 && s.s == 0) // not a rotation: the reader rejects it (tested below)
+                s.c = 1;
         }
         c.a.points[0] = {std::numeric_limits<double>::denorm_min(), -0.0};
         if (i % 2 == 0)
@@ -135,8 +141,8 @@ TEST_CASE("binary case files: the same cases as the JSON form, bit for bit", "[c
         {
             REQUIRE(back.entries[i].rejected.empty());
             requireSameCase(back.entries[i].c, cases[i]);
-            CHECK(back.entries[i].label == "r.bin#" + std::to_string(i) + " (case '" +
-                                               excerpt(cases[i].name) + "')");
+            CHECK(back.entries[i].label ==
+                  "r.bin#" + std::to_string(i) + " (case '" + excerpt(cases[i].name) + "')");
         }
         // ... and back to the same JSON text.
         std::vector<Case> again;
@@ -148,10 +154,11 @@ TEST_CASE("binary case files: the same cases as the JSON form, bit for bit", "[c
 
 TEST_CASE("binary case files: recognised by content, streamed in blocks", "[cases][binary]")
 {
-    // More cases than a block holds, so that the reader crosses blocks; one case of many points
-    // closes a block early.
+    // More cases than a block holds, so that the reader crosses blocks; two cases of many points
+    // close a block early.
     std::vector<Case> cases = awkwardCases(kWriterBlockCases + 300, false);
-    cases[17].a.points.assign(kWriterBlockPoints, {1.0, 2.0});
+    cases[17].a.points.assign(kWriterBlockPoints / 2 + 1, {1.0, 2.0});
+    cases[18].b.points.assign(kWriterBlockPoints / 2 + 1, {3.0, 2.0});
     const std::string bytes = binaryCaseFileBytes({"c"}, cases);
     const std::string path = tempPath("named.json"); // the extension does not matter
     writeBytes(path, bytes);
@@ -172,6 +179,7 @@ TEST_CASE("binary case files: recognised by content, streamed in blocks", "[case
                                        std::to_string(i) + " (case '" + cases[i].name + "')");
     }
     requireSameCase(streamed[17].c, cases[17]);
+    requireSameCase(streamed[18].c, cases[18]);
     // A JSON file named .bin is read as JSON.
     writeBytes(path, caseFileText({"c"}, {cases[0]}));
     CHECK_FALSE(isBinaryCaseFile(path));

@@ -366,7 +366,8 @@ class Block
   private:
     [[noreturn]] void fail(const std::string& what) const
     {
-        throw InputError(fmt::format("{}: block {} (cases {}..): {}", shown_, index_, first_, what));
+        throw InputError(
+            fmt::format("{}: block {} (cases {}..): {}", shown_, index_, first_, what));
     }
 
     Column bin(const msgpack::object& map, const std::string& name, const char* key,
@@ -535,9 +536,9 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
     base = excerpt(base);
     // Limits: the block bound is enforced below (nonparsed_size), these keep one object's claims
     // within it (a length field of 4 GB is refused before anything is allocated).
-    msgpack::unpacker unp(nullptr, nullptr, MSGPACK_UNPACKER_INIT_BUFFER_SIZE,
-                          msgpack::unpack_limit(kMaxBlockCases, 64, kMaxBlockBytes,
-                                                kMaxBlockBytes, 0, 4));
+    msgpack::unpacker unp(
+        nullptr, nullptr, MSGPACK_UNPACKER_INIT_BUFFER_SIZE,
+        msgpack::unpack_limit(kMaxBlockCases, 64, kMaxBlockBytes, kMaxBlockBytes, 0, 4));
     constexpr std::size_t kRead = std::size_t(1) << 20;
     CaseFileSummary summary;
     bool header = false, end = false;
@@ -548,14 +549,18 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
         return header ? fmt::format("in block {} (after case {})", blocks, summary.entries)
                       : std::string("in the header");
     };
+    // The unpacker consumes a value's bytes as they come, so the bytes of a value not yet complete
+    // are those read past the end of the last complete one.
+    std::size_t fed = 0, complete = 0;
     while (!end)
     {
-        if (unp.nonparsed_size() > kMaxBlockBytes)
+        if (fed - complete > kMaxBlockBytes)
             throw InputError(fmt::format("{}: {}: a block larger than {} bytes", shown, where(),
                                          kMaxBlockBytes));
         unp.reserve_buffer(kRead);
         const std::size_t got = read(unp.buffer(), kRead);
         unp.buffer_consumed(got);
+        fed += got;
         end = got == 0;
         msgpack::object_handle oh;
         while (true)
@@ -570,6 +575,7 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
                 throw InputError(
                     fmt::format("{}: {}: invalid MessagePack: {}", shown, where(), e.what()));
             }
+            complete = fed - unp.nonparsed_size(); // next() resets parsed_size()
             if (!header)
             {
                 summary.comments = readHeader(oh.get(), shown);
@@ -583,8 +589,9 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
             ++blocks;
         }
     }
-    if (unp.nonparsed_size() > 0)
-        throw InputError(fmt::format("{}: {}: the file ends inside it (truncated)", shown, where()));
+    if (fed != complete)
+        throw InputError(
+            fmt::format("{}: {}: the file ends inside it (truncated)", shown, where()));
     if (!header)
         throw InputError(fmt::format("{}: not a {} file: empty", shown, kBinaryCaseFormat));
     return summary;

@@ -19,7 +19,7 @@ inline constexpr const char* kBinaryCaseFormat = "gjk-cases-msgpack/1";
 
 // Limits of the binary reader, beside the per-case ones of cases.hpp (kMaxCaseNameBytes,
 // kMaxShapePoints, kMaxCommentBytes, kMaxComments): what one block can cost in memory.
-inline constexpr std::size_t kMaxBlockCases = 65'536;              // entries of a block
+inline constexpr std::size_t kMaxBlockCases = 65'536;                // entries of a block
 inline constexpr std::size_t kMaxBlockBytes = std::size_t(96) << 20; // one block's MessagePack
 // The writer closes a block at kWriterBlockCases cases or kWriterBlockPoints points of one shape
 // column, whichever comes first: a block stays far below kMaxBlockBytes (a single case of two
