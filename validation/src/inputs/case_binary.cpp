@@ -418,16 +418,16 @@ class Block
         return t;
     }
 
-    static double number(double v, const std::string& field)
+    // A finite value, or the field's error; the field is named only on an error (this runs for
+    // every number of the file).
+    template <class Name> static double number(double v, const Name& field)
     {
-        if (std::isnan(v))
-            fieldError(fmt::format("{} is NaN", field));
-        if (std::isinf(v))
-            fieldError(fmt::format("{} is infinite", field));
-        return v;
+        if (std::isfinite(v)) [[likely]]
+            return v;
+        fieldError(fmt::format("{} is {}", field(), std::isnan(v) ? "NaN" : "infinite"));
     }
 
-    static ShapeIn shapeAt(const ShapeColumns& c, std::size_t i, const std::string& k)
+    static ShapeIn shapeAt(const ShapeColumns& c, std::size_t i, const char* k)
     {
         ShapeIn s;
         const std::size_t n = c.counts.count(i);
@@ -439,22 +439,23 @@ class Block
         for (std::size_t j = 0; j < n; ++j)
             for (std::size_t d = 0; d < 2; ++d)
                 s.points[j][d] = number(c.points.at(2 * (c.first[i] + j) + d),
-                                        fmt::format("{}.points[{}][{}]", k, j, d));
+                                        [&] { return fmt::format("{}.points[{}][{}]", k, j, d); });
+        const auto named = [k](const char* f) { return [k, f] { return std::string(k) + f; }; };
         if (c.hasRadius)
         {
-            s.radius = number(c.radius.at(i), k + ".radius");
+            s.radius = number(c.radius.at(i), named(".radius"));
             if (s.radius < 0)
                 fieldError(fmt::format("{}.radius is negative ({})", k, s.radius));
         }
         if (c.hasP)
         {
-            s.px = number(c.p.at(2 * i), k + ".transform.p[0]");
-            s.py = number(c.p.at(2 * i + 1), k + ".transform.p[1]");
+            s.px = number(c.p.at(2 * i), named(".transform.p[0]"));
+            s.py = number(c.p.at(2 * i + 1), named(".transform.p[1]"));
         }
         if (c.hasQ)
         {
-            s.c = number(c.q.at(2 * i), k + ".transform.q[0]");
-            s.s = number(c.q.at(2 * i + 1), k + ".transform.q[1]");
+            s.c = number(c.q.at(2 * i), named(".transform.q[0]"));
+            s.s = number(c.q.at(2 * i + 1), named(".transform.q[1]"));
             // As case_fields.cpp: any finite (c, s) but (0, 0) is a transform.
             if (s.c == 0 && s.s == 0)
                 fieldError(fmt::format("{}.transform.q is (0, 0): not a rotation", k));
