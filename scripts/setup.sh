@@ -13,6 +13,7 @@ set -euo pipefail
 
 # catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 # libbox2d-dev (Box2D 2.4.1): the runner's engine families step Box2D worlds.
+# libmsgpack-cxx-dev (header only): binary case files, gjk-cases-msgpack/1 (docs/validation.md).
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).
@@ -21,7 +22,7 @@ set -euo pipefail
 # (jolt-physics) come from the npm registry (scripts/setup_npm.sh, below).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
           nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
-          openmpi-bin libopenmpi-dev dpkg-dev pkgconf)
+          openmpi-bin libopenmpi-dev dpkg-dev pkgconf libmsgpack-cxx-dev)
 for peer in "$(dirname "$0")"/../validation/plugins/*/peer.txt; do
   while read -r word rest; do
     if [[ "$word" == package ]]; then
@@ -35,7 +36,7 @@ if [[ "${1:-}" == "--tests" ]]; then
   # The Python formatter (scripts/check_format.sh python): black 23.1.
   packages+=(black)
   # The Python package (python/, docs/python.md): built against Debian's /usr/bin/python3.
-  packages+=(python3-dev pybind11-dev python3-numpy python3-pytest)
+  packages+=(python3-dev pybind11-dev python3-numpy python3-pytest python3-msgpack)
   # Its wheel (pyproject.toml): venv and pip to install it, python3-build and python3-wheel to
   # make it, mypy's stubgen for its type stubs.
   packages+=(python3-venv python3-pip python3-build python3-wheel mypy)

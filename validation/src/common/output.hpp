@@ -19,7 +19,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <vector>
@@ -144,17 +146,36 @@ inline void checkOutputFile(const std::string& option, const std::string& path)
 // Writes text to path whole or not at all: a temporary file beside it, then rename(2). A path
 // that exists and is not a regular file (a terminal, /dev/null, /dev/full, a pipe) is written in
 // place, every write checked; "-" is stdout. Throws OutputError.
-inline void writeFileAtomic(const std::string& path, const std::string& text)
+// The streamed form: `produce` hands the bytes to its argument piece by piece, in order (a file
+// larger than memory); the pieces go to the file as they come.
+using ByteSink = std::function<void(std::string_view)>;
+inline void writeFileAtomic(const std::string& path,
+                            const std::function<void(const ByteSink&)>& produce)
 {
     namespace fs = std::filesystem;
     using namespace output_detail;
     if (path == "-")
     {
-        if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size() ||
-            std::fflush(stdout) != 0)
+        produce(
+            [](std::string_view text)
+            {
+                if (std::fwrite(text.data(), 1, text.size(), stdout) != text.size())
+                    throw OutputError(
+                        fmt::format("standard output: write failed: {}", errnoText(errno)));
+            });
+        if (std::fflush(stdout) != 0)
             throw OutputError(fmt::format("standard output: write failed: {}", errnoText(errno)));
         return;
     }
+    const auto toFd = [&](int fd)
+    {
+        return [fd, &path](std::string_view text)
+        {
+            if (!writeAllBytes(fd, text.data(), text.size()))
+                throw OutputError(
+                    fmt::format("{}: write failed: {}", excerpt(path), errnoText(errno)));
+        };
+    };
     std::error_code ec;
     const auto st = fs::status(path, ec);
     if (fs::exists(st) && !fs::is_regular_file(st) && !fs::is_directory(st))
@@ -164,7 +185,7 @@ inline void writeFileAtomic(const std::string& path, const std::string& text)
             throw OutputError(fmt::format("{}: cannot open: {}", excerpt(path), errnoText(errno)));
         try
         {
-            writeAll(fd, text, excerpt(path));
+            produce(toFd(fd));
         }
         catch (...)
         {
@@ -185,7 +206,7 @@ inline void writeFileAtomic(const std::string& path, const std::string& text)
     try
     {
         ::fchmod(fd, defaultMode(0666));
-        writeAll(fd, text, excerpt(path));
+        produce(toFd(fd));
         if (::fsync(fd) != 0 && errno != EINVAL)
             throw OutputError(fmt::format("{}: write failed: {}", excerpt(path), errnoText(errno)));
         open = false;
@@ -203,6 +224,11 @@ inline void writeFileAtomic(const std::string& path, const std::string& text)
         throw;
     }
     fsyncPath(target.parent_path());
+}
+
+inline void writeFileAtomic(const std::string& path, const std::string& text)
+{
+    writeFileAtomic(path, [&](const ByteSink& sink) { sink(text); });
 }
 
 // The absolute path of a report directory as it will be replaced: normalised, without a trailing

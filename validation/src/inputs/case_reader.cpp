@@ -1,6 +1,7 @@
 // Reading gjk-cases/1 files: the file checked and read within the reader's limits, its JSON
 // streamed through nlohmann's SAX interface, each case handed to readCase (case_fields.hpp) when
 // complete.
+#include "inputs/case_binary.hpp"
 #include "inputs/case_fields.hpp"
 #include "inputs/cases.hpp"
 
@@ -536,18 +537,24 @@ CaseFile collect(std::streambuf& in, const std::string& sourceName)
 
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName)
 {
+    if (!text.empty() && isBinaryCaseFileStart(static_cast<unsigned char>(text[0])))
+        return parseBinaryCaseFile(text, sourceName); // the binary form: case_binary.hpp
     MemoryBuffer in(text);
     return collect(in, sourceName);
 }
 
 CaseFile readCaseFile(const std::string& path)
 {
+    if (isBinaryCaseFile(path)) // recognised by its first byte: case_binary.hpp
+        return readBinaryCaseFile(path);
     return parseCaseFile(readFile(path), path);
 }
 
 CaseFileSummary streamCaseFile(const std::string& path,
                                const std::function<void(CaseEntry&&)>& consume)
 {
+    if (isBinaryCaseFile(path)) // recognised by its first byte: case_binary.hpp
+        return streamBinaryCaseFile(path, consume);
     if (openedType(path) == fs::file_type::fifo) // read once, whole: at most kMaxCaseFileBytes
     {
         const std::string text = readFile(path);
