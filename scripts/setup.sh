@@ -13,7 +13,7 @@ set -euo pipefail
 
 # catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 # libbox2d-dev (Box2D 2.4.1): the runner's engine families step Box2D worlds.
-# libmsgpack-cxx-dev (header only): binary case files, gjk-cases-msgpack/1 (docs/validation.md).
+# libmsgpack-cxx-dev (header only): binary case files, gjk-cases-msgpack/1 (docs/case-files.md).
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).

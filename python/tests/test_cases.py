@@ -146,7 +146,7 @@ def test_numpy_columns_write_the_same_cases_as_dicts(tmp_path, fmt):
 
 
 def test_binary_file_layout_read_independently(tmp_path):
-    """The documented layout (docs/validation.md, "Binary case files"), decoded by python3-msgpack
+    """The documented layout (docs/case-files.md, "Binary case files"), decoded by python3-msgpack
     and NumPy alone, gives the cases of the JSON file that gjk-validate writes for the same seed."""
     msgpack = pytest.importorskip("msgpack")
     js, mp = tmp_path / "r.json", tmp_path / "r.bin"

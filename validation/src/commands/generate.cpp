@@ -109,7 +109,7 @@ Subcommand addGenerate(CLI::App& app, const CommandLine& line)
         ->required();
     gen->add_option("--format", o->format,
                     "json (gjk-cases/1, readable) or msgpack (gjk-cases-msgpack/1: the same "
-                    "cases, compact and fast to read; docs/validation.md, \"Binary case files\")")
+                    "cases, compact and fast to read; docs/case-files.md, \"Binary case files\")")
         ->capture_default_str();
     gen->add_option("--comment", o->genComments,
                     "extra provenance comment (at most 1000 bytes); repeatable")

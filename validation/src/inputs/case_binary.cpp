@@ -1,8 +1,8 @@
 // gjk-cases-msgpack/1: case files as MessagePack (Debian's libmsgpack-cxx-dev, header only). A
 // header map, then blocks of up to kMaxBlockCases cases stored by column; each number column is
 // a MessagePack bin of little-endian IEEE doubles (or uint32 counts), so that a block is read with
-// a copy per column and written from NumPy arrays as they are. docs/validation.md, "Binary case
-// files", is the reference; docs/speed.md, "Binary case files", says why this format.
+// a copy per column and written from NumPy arrays as they are. docs/case-files.md, "Binary case
+// files", is the reference; docs/speed.md, "Case files", says why this format.
 #include "inputs/case_binary.hpp"
 
 #define MSGPACK_NO_BOOST

@@ -1,4 +1,4 @@
-// The binary form of case files, `gjk-cases-msgpack/1` (docs/validation.md, "Binary case files"):
+// The binary form of case files, `gjk-cases-msgpack/1` (docs/case-files.md, "Binary case files"):
 // the same cases as a gjk-cases/1 file, bit for bit, as a MessagePack stream of a header and
 // blocks of columns, for traces of millions of queries. Read by the readers of cases.hpp, which
 // recognise it by its first byte; written here.
