@@ -3,7 +3,10 @@
 // written by ../shared/anchors/json2txt.py, REPS times. Built and run by stage_profile.sh; the
 // query is behind a noinline function so that callgrind attributes it. Not part of the build: Box2D
 // v3's sources live beside the repository (../shared/anchors), not in it.
-//   stage_driver d|f|b CASES.txt REPS
+//   stage_driver d|f|b[p][w] CASES.txt REPS
+//     p: gjk2d's query on prepared shapes (gjk2d/prepared.hpp, prepared once before the queries;
+//        the answers are checked against the plain query's, bit for bit);
+//     w: warm, each case's query from the cache its previous query left (seeded by one query)
 //   stage_driver time CASES.txt ROUNDS   (wall time: per round and query kind, 41 passes over all
 //                                         cases, each pass timed alone; prints the fastest and the
 //                                         median pass in ns per cold query)
@@ -58,24 +61,87 @@ template <class T> [[gnu::noinline]] gjk::DistanceOutput<T> query(const gjk::Dis
     gjk::SimplexCache cache;
     return gjk::distance(in, cache);
 }
+template <class T>
+[[gnu::noinline]] gjk::DistanceOutput<T> queryWarm(const gjk::DistanceInput<T>& in,
+                                                   gjk::SimplexCache& cache)
+{
+    return gjk::distance(in, cache);
+}
+template <class T>
+[[gnu::noinline]] void seedWarm(const gjk::DistanceInput<T>& in, gjk::SimplexCache& cache)
+{
+    gjk::distance(in, cache);
+}
+template <class T>
+[[gnu::noinline]] gjk::DistanceOutput<T>
+queryPrepared(const gjk::PreparedShape<T>& a, const gjk::PreparedShape<T>& b,
+              const gjk::DistanceInput<T>& in, gjk::SimplexCache& cache)
+{
+    return gjk::distance(a, in.transformA, b, in.transformB, cache);
+}
+template <class T> [[gnu::noinline]] gjk::PreparedShape<T> prepareShape(const gjk::Polygon<T>& poly)
+{
+    return gjk::prepare(poly);
+}
 
 [[gnu::noinline]] b2DistanceOutput bquery(const b2DistanceInput* in)
 {
     b2SimplexCache cache = {};
     return b2ShapeDistance(in, &cache, nullptr, 0);
 }
+[[gnu::noinline]] b2DistanceOutput bqueryWarm(const b2DistanceInput* in, b2SimplexCache* cache)
+{
+    return b2ShapeDistance(in, cache, nullptr, 0);
+}
+[[gnu::noinline]] void bseedWarm(const b2DistanceInput* in, b2SimplexCache* cache)
+{
+    b2ShapeDistance(in, cache, nullptr, 0);
+}
 
-template <class T> double runGjk(const hcases& cs, int reps, long& steps)
+template <class T> bool sameAnswer(const gjk::DistanceOutput<T>& x, const gjk::DistanceOutput<T>& y)
+{
+    return std::memcmp(&x.distance, &y.distance, sizeof(T)) == 0 && x.pointA == y.pointA &&
+           x.pointB == y.pointB && x.normal == y.normal && x.iterations == y.iterations &&
+           x.outOfRange == y.outOfRange && x.rescaled == y.rescaled;
+}
+
+template <class T> double runGjk(const hcases& cs, int reps, long& steps, bool prepared, bool warm)
 {
     const QuerySet<T> set = gjkInputs<T>(cs);
-    double sum = 0;
-    for (int r = 0; r < reps; ++r)
+    std::vector<gjk::PreparedShape<T>> shapes;
+    if (prepared)
         for (const auto& in : set.inputs)
         {
-            const gjk::DistanceOutput<T> o = query(in);
+            shapes.push_back(prepareShape(in.proxyA));
+            shapes.push_back(prepareShape(in.proxyB));
+        }
+    std::vector<gjk::SimplexCache> caches(set.inputs.size());
+    if (warm) // seed every case's cache (out of the query functions callgrind counts)
+        for (std::size_t i = 0; i < set.inputs.size(); ++i)
+            seedWarm(set.inputs[i], caches[i]);
+    double sum = 0;
+    long mismatches = 0;
+    for (int r = 0; r < reps; ++r)
+        for (std::size_t i = 0; i < set.inputs.size(); ++i)
+        {
+            const auto& in = set.inputs[i];
+            gjk::SimplexCache cold;
+            gjk::SimplexCache& cache = warm ? caches[i] : cold;
+            gjk::DistanceOutput<T> o;
+            if (prepared)
+            {
+                gjk::SimplexCache plainCache = cache;
+                o = queryPrepared(shapes[2 * i], shapes[2 * i + 1], in, cache);
+                if (r == 0 && !sameAnswer(o, gjk::distance(in, plainCache)))
+                    ++mismatches;
+            }
+            else
+                o = warm ? queryWarm(in, cache) : query(in);
             sum += double(o.distance);
             steps += o.iterations;
         }
+    if (mismatches > 0)
+        std::printf("prepared: %ld answers differ from the plain query's\n", mismatches);
     return sum;
 }
 
@@ -95,7 +161,7 @@ b2ShapeProxy b2Proxy(const hshape& s)
     return b2MakeProxy(pts, s.n, float(s.radius));
 }
 
-double runBox2d(const hcases& cs, int reps, long& steps)
+double runBox2d(const hcases& cs, int reps, long& steps, bool warm)
 {
     std::vector<b2DistanceInput> inputs;
     for (int i = 0; i < cs.n; ++i)
@@ -111,11 +177,16 @@ double runBox2d(const hcases& cs, int reps, long& steps)
         in.useRadii = true;
         inputs.push_back(in);
     }
+    std::vector<b2SimplexCache> caches(inputs.size(), b2SimplexCache{});
+    if (warm) // seed every case's cache, as the harness does
+        for (std::size_t i = 0; i < inputs.size(); ++i)
+            bseedWarm(&inputs[i], &caches[i]);
     double sum = 0;
     for (int r = 0; r < reps; ++r)
-        for (const auto& in : inputs)
+        for (std::size_t i = 0; i < inputs.size(); ++i)
         {
-            const b2DistanceOutput o = bquery(&in);
+            const b2DistanceOutput o =
+                warm ? bqueryWarm(&inputs[i], &caches[i]) : bquery(&inputs[i]);
             sum += double(o.distance);
             steps += o.iterations;
         }
@@ -131,12 +202,25 @@ template <class Fn> double timePass(std::size_t count, Fn query)
     return std::chrono::duration<double, std::nano>(t1 - t0).count() / double(count);
 }
 
-// The three kinds alternate pass by pass, so that a loaded machine slows them alike; the fastest
-// pass is the least disturbed one.
+template <class T> std::vector<gjk::PreparedShape<T>> preparedShapes(const QuerySet<T>& set)
+{
+    std::vector<gjk::PreparedShape<T>> shapes;
+    for (const auto& in : set.inputs)
+    {
+        shapes.push_back(gjk::prepare(in.proxyA));
+        shapes.push_back(gjk::prepare(in.proxyB));
+    }
+    return shapes;
+}
+
+// The kinds alternate pass by pass, so that a loaded machine slows them alike; the fastest pass is
+// the least disturbed one. Warm kinds start each case from the cache its previous query left.
 int timeAll(const hcases& cs, int rounds)
 {
     const QuerySet<double> sd = gjkInputs<double>(cs);
     const QuerySet<float> sf = gjkInputs<float>(cs);
+    const auto pd = preparedShapes(sd);
+    const auto pf = preparedShapes(sf);
     std::vector<b2DistanceInput> sb;
     for (int i = 0; i < cs.n; ++i)
     {
@@ -155,11 +239,22 @@ int timeAll(const hcases& cs, int rounds)
         in.useRadii = true;
         sb.push_back(in);
     }
-    volatile double sink = 0;
     const std::size_t n = std::size_t(cs.n);
+    std::vector<gjk::SimplexCache> cw(n), cpw(n);
+    std::vector<b2SimplexCache> cb(n, b2SimplexCache{});
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        queryWarm(sd.inputs[i], cw[i]);
+        queryPrepared(pd[2 * i], pd[2 * i + 1], sd.inputs[i], cpw[i]);
+        bqueryWarm(&sb[i], &cb[i]);
+    }
+    volatile double sink = 0;
+    constexpr int kinds = 8;
+    const char* names[kinds] = {"double",     "float",       "box2d-v3",      "double-prep",
+                                "float-prep", "double-warm", "dbl-prep-warm", "box2d-v3-warm"};
     for (int r = 0; r < rounds; ++r)
     {
-        std::vector<double> t[3];
+        std::vector<double> t[kinds];
         for (int p = 0; p < 41; ++p)
         {
             t[0].push_back(
@@ -168,12 +263,35 @@ int timeAll(const hcases& cs, int rounds)
                 timePass(n, [&](std::size_t i) { sink = sink + query(sf.inputs[i]).distance; }));
             t[2].push_back(
                 timePass(n, [&](std::size_t i) { sink = sink + bquery(&sb[i]).distance; }));
+            t[3].push_back(timePass(
+                n,
+                [&](std::size_t i)
+                {
+                    gjk::SimplexCache c;
+                    sink = sink + queryPrepared(pd[2 * i], pd[2 * i + 1], sd.inputs[i], c).distance;
+                }));
+            t[4].push_back(timePass(
+                n,
+                [&](std::size_t i)
+                {
+                    gjk::SimplexCache c;
+                    sink = sink + queryPrepared(pf[2 * i], pf[2 * i + 1], sf.inputs[i], c).distance;
+                }));
+            t[5].push_back(timePass(n, [&](std::size_t i)
+                                    { sink = sink + queryWarm(sd.inputs[i], cw[i]).distance; }));
+            t[6].push_back(timePass(
+                n,
+                [&](std::size_t i) {
+                    sink = sink +
+                           queryPrepared(pd[2 * i], pd[2 * i + 1], sd.inputs[i], cpw[i]).distance;
+                }));
+            t[7].push_back(timePass(n, [&](std::size_t i)
+                                    { sink = sink + bqueryWarm(&sb[i], &cb[i]).distance; }));
         }
-        const char* names[3] = {"double", "float", "box2d-v3"};
-        for (int k = 0; k < 3; ++k)
+        for (int k = 0; k < kinds; ++k)
         {
             std::sort(t[k].begin(), t[k].end());
-            std::printf("round %d %-9s fastest %7.1f median %7.1f ns/query\n", r + 1, names[k],
+            std::printf("round %d %-13s fastest %7.1f median %7.1f ns/query\n", r + 1, names[k],
                         t[k].front(), t[k][t[k].size() / 2]);
         }
     }
@@ -185,7 +303,7 @@ int main(int argc, char** argv)
 {
     if (argc != 4 || std::strchr("dfbt", argv[1][0]) == nullptr)
     {
-        std::fprintf(stderr, "usage: %s d|f|b|time CASES.txt REPS|ROUNDS\n", argv[0]);
+        std::fprintf(stderr, "usage: %s d|f|b[p][w]|time CASES.txt REPS|ROUNDS\n", argv[0]);
         return 2;
     }
     const hcases cs = hload(argv[2]);
@@ -193,9 +311,11 @@ int main(int argc, char** argv)
         return timeAll(cs, std::atoi(argv[3]));
     const int reps = std::atoi(argv[3]);
     long steps = 0;
-    const double sum = argv[1][0] == 'd'   ? runGjk<double>(cs, reps, steps)
-                       : argv[1][0] == 'f' ? runGjk<float>(cs, reps, steps)
-                                           : runBox2d(cs, reps, steps);
+    const bool prepared = std::strchr(argv[1] + 1, 'p') != nullptr;
+    const bool warm = std::strchr(argv[1] + 1, 'w') != nullptr;
+    const double sum = argv[1][0] == 'd'   ? runGjk<double>(cs, reps, steps, prepared, warm)
+                       : argv[1][0] == 'f' ? runGjk<float>(cs, reps, steps, prepared, warm)
+                                           : runBox2d(cs, reps, steps, warm);
     // iterations: gjk2d's count the loop's support steps (the cold start's is one more), Box2D's
     // every support step.
     std::printf("%d cases, checksum %.17g, iterations per query %.3f\n", cs.n, sum,

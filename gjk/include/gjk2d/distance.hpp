@@ -21,6 +21,7 @@
 // ConvexSupport.h and GJKClosestPoint.h); including this header includes them all:
 //   gjk2d/types.hpp    the plain structs: shapes, Options, simplex, cache, input, output, trace
 //   gjk2d/support.hpp  support points and transforms: TransformedShape, the compute frame
+//   gjk2d/prepared.hpp prepared shapes: what a query learns about a shape once (PreparedShape)
 //   gjk2d/rescale.hpp  the rescaled retry's exact scaling by powers of two
 //   gjk2d/simplex.hpp  the simplex solvers solve2 and solve3, with their derivations
 //   gjk2d/certify.hpp  the certified interval (Options::certify)
@@ -33,6 +34,7 @@
 #include "gjk2d/correct.hpp"
 #include "gjk2d/detail/macros.hpp"
 #include "gjk2d/math.hpp"
+#include "gjk2d/prepared.hpp"
 #include "gjk2d/rescale.hpp"
 #include "gjk2d/simplex.hpp"
 #include "gjk2d/support.hpp"
@@ -41,8 +43,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -154,12 +158,13 @@ void distanceRescaled(const DistanceInput<T>& input, SimplexCache& cache, const 
                       Trace<T>* trace, DistanceOutput<T>& out, bool onlyZeroSupports);
 
 // Whether a cache's indices fit shapes of these sizes (a warm start), else a cold start.
+// Each range test is one unsigned compare: a negative index converts to a value above any count.
 GJK_INLINE bool cacheFits(const SimplexCache& cache, int countA, int countB)
 {
-    bool fits = cache.count >= 1 && cache.count <= 3;
+    bool fits = unsigned(cache.count - 1) < 3u;
     for (int i = 0; fits && i < cache.count; ++i)
-        fits = cache.indexA[i] >= 0 && cache.indexA[i] < countA && cache.indexB[i] >= 0 &&
-               cache.indexB[i] < countB;
+        fits = unsigned(cache.indexA[i]) < unsigned(countA) &&
+               unsigned(cache.indexB[i]) < unsigned(countB);
     return fits;
 }
 
@@ -521,7 +526,8 @@ GJK_INLINE StopReason runLoop(Shape& A, Shape& B, const Options& options, Trace<
         end.searchB = B.last;
         const SimplexVertex<T> w = findMinkowskiSupport<T>(A, B, d);
         ++end.iteration;
-        end.maxAbs = std::max({end.maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
+        if constexpr (Shape::checked) // else decided before the loop (gjk2d/prepared.hpp)
+            end.maxAbs = std::max({end.maxAbs, std::abs(w.w.x), std::abs(w.w.y)});
         if (trace)
             trace->steps.push_back({simplex, closestPoint(simplex), d, true, w});
 
@@ -557,16 +563,32 @@ bool signedAnswer(const DistanceInput<T>& input, const Options& options, Shape& 
                   const Transform<T>& world, int scale, StopReason stop, const Simplex<T>& simplex,
                   int edgeBase, DistanceOutput<T>& out);
 
+// The plain query with the reference options and no trace, out of line: a prepared query's way
+// back when its shapes or transforms do not let it skip the range checks (below).
+template <class T>
+[[gnu::noinline]] DistanceOutput<T> distanceUnprepared(const DistanceInput<T>& input,
+                                                       SimplexCache& cache);
+
 // The query. `Scaled`: the rescaled retry (gjk2d/rescale.hpp), a second instantiation kept out of
-// line (distanceRescaled), so that the common query carries no test for it.
-template <class T, bool Scaled>
+// line (distanceRescaled), so that the common query carries no test for it. `Checked` false: a
+// query on prepared shapes (preparedA and preparedB) with the reference options and no trace,
+// whose range checks are decided before the loop (gjk2d/prepared.hpp); where they cannot be, it
+// runs as the plain query.
+template <class T, bool Scaled, bool Checked = true>
 GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, SimplexCache& cache,
-                                          const Options& options, Trace<T>* trace, int scale)
+                                          const Options& options, Trace<T>* trace, int scale,
+                                          const PreparedShape<T>* preparedA = nullptr,
+                                          const PreparedShape<T>* preparedB = nullptr)
 {
     GJK_ASSERT(meetsInputContract(input));
-    TransformedShape<T, Scaled> A{.poly = input.proxyA};
-    TransformedShape<T, Scaled> B{.poly = input.proxyB};
+    TransformedShape<T, Scaled, Checked> A{.poly = input.proxyA};
+    TransformedShape<T, Scaled, Checked> B{.poly = input.proxyB};
     const Transform<T> world = setUpShapes(input, options, scale, A, B);
+    if constexpr (!Checked)
+    {
+        if (!preparedQueryInRange(*preparedA, *preparedB, B.xf)) [[unlikely]]
+            return distanceUnprepared(input, cache);
+    }
     if (trace)
     {
         trace->frame = world;
@@ -576,6 +598,11 @@ GJK_INLINE DistanceOutput<T> distanceImpl(const DistanceInput<T>& input, Simplex
     Simplex<T> simplex;
     QueryEnd<T> end;
     startLoop<T>(cache, A, B, simplex, end);
+    if constexpr (!Checked) // the range check's lower side (preparedQueryInRange)
+    {
+        if (!(end.maxAbs >= Tolerances<T>::minCoordinate)) [[unlikely]]
+            return distanceUnprepared(input, cache);
+    }
     const StopReason stop =
         runLoop<T>(A, B, options, trace,
                    iterationLimit(options, input.proxyA.count, input.proxyB.count), simplex, end);
@@ -620,6 +647,23 @@ template <class T>
 }
 
 template <class T>
+[[gnu::noinline]] DistanceOutput<T> distanceUnprepared(const DistanceInput<T>& input,
+                                                       SimplexCache& cache)
+{
+    return distanceImpl<T, false>(input, cache, referenceOptions, nullptr, 0);
+}
+
+// Whether `options` are the reference ones: their twelve bytes compared at once, where Options'
+// defaulted == compares member by member, a branch each, at every query (docs/speed.md, "Prepared
+// shapes and the warm path (issue 54)").
+GJK_INLINE bool isReferenceOptions(const Options& options)
+{
+    static_assert(std::has_unique_object_representations_v<Options>,
+                  "Options: every byte must be a member's (no padding) to compare them at once");
+    return std::memcmp(&options, &referenceOptions, sizeof(Options)) == 0;
+}
+
+template <class T>
 DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
                            const Options& options = referenceOptions, Trace<T>* trace = nullptr)
 {
@@ -627,9 +671,34 @@ DistanceOutput<T> distance(const DistanceInput<T>& input, SimplexCache& cache,
     // every option is a constant: GCC folds the per-step tests of the search direction, the
     // stopping rule, the support strategy, the frame and the trace away (docs/speed.md, "The
     // cold query on engine data"). The same code, so the same bits.
-    if (trace == nullptr && options == referenceOptions)
+    if (trace == nullptr && isReferenceOptions(options))
         return distanceImpl<T, false>(input, cache, referenceOptions, nullptr, 0);
     return distanceImpl<T, false>(input, cache, options, trace, 0);
+}
+
+// The query on prepared shapes (gjk2d/prepared.hpp): the same answer and cache as
+// distance({A.polygon, B.polygon, xfA, xfB}, cache, options, trace), bit for bit (test "prepared
+// shapes"). With the reference options and no trace it runs without the per-step range checks
+// where the shapes' bounds and the transforms decide them before the loop.
+template <class T>
+DistanceOutput<T> distance(const PreparedShape<T>& A, const Transform<T>& xfA,
+                           const PreparedShape<T>& B, const Transform<T>& xfB, SimplexCache& cache,
+                           const Options& options = referenceOptions, Trace<T>* trace = nullptr)
+{
+    const DistanceInput<T> input{A.polygon, B.polygon, xfA, xfB};
+    if (trace == nullptr && isReferenceOptions(options))
+        return distanceImpl<T, false, false>(input, cache, referenceOptions, nullptr, 0, &A, &B);
+    return distanceImpl<T, false>(input, cache, options, trace, 0);
+}
+
+// Convenience: a cold query on prepared shapes (value-initialised cache).
+template <class T>
+DistanceOutput<T> distance(const PreparedShape<T>& A, const Transform<T>& xfA,
+                           const PreparedShape<T>& B, const Transform<T>& xfB,
+                           const Options& options = referenceOptions)
+{
+    SimplexCache cache;
+    return distance(A, xfA, B, xfB, cache, options);
 }
 
 // Batch entry point for many pairs at once (e.g. a broad phase's output): outputs[i] is

@@ -127,9 +127,14 @@ template <class T> int findSupportFrom(const Polygon<T>& poly, Vec2<T> d, int s)
 // In A's frame, A itself needs no transform: `identity` skips it (bit-identical result, since
 // the identity transform is exact, but faster). `Scaled`: the rescaled retry's shapes
 // (gjk2d/rescale.hpp); a separate type, so that the common query carries no test for it.
+// `Checked`: the range checks run as the loop goes (the scans' overflow check here, the largest
+// coordinate in runLoop); false only where a prepared query decided them before the loop
+// (gjk2d/prepared.hpp, preparedQueryInRange).
 // Made with designated initialisers, e.g. TransformedShape<T>{.poly = p, .identity = true}.
-template <class T, bool Scaled = false> struct TransformedShape
+template <class T, bool Scaled = false, bool Checked = true> struct TransformedShape
 {
+    static constexpr bool checked = Checked;
+
     Polygon<T> poly;
     Transform<T> xf{};
     bool identity = false;
@@ -157,7 +162,8 @@ template <class T, bool Scaled = false> struct TransformedShape
         {
             T sum;
             const int i = findSupportSum(poly, local, sum);
-            scanCheck += sum - sum;
+            if constexpr (Checked) // else the sum is dead code, and the compiler drops it
+                scanCheck += sum - sum;
             return i;
         }
         last = findSupportFrom(poly, local, last);
@@ -244,10 +250,10 @@ setUpScaledShapes(const DistanceInput<T>& input, const Options& options, int sca
 // conventions of gjk2d/distance.hpp) or the world itself; for a rescaled query (Scaled) the scaled
 // shapes above. A and B arrive made with their polygons only. Returns the transform from the
 // compute frame to world coordinates.
-template <class T, bool Scaled>
+template <class T, bool Scaled, bool Checked>
 GJK_INLINE Transform<T> setUpShapes(const DistanceInput<T>& input, const Options& options,
-                                    int scale, TransformedShape<T, Scaled>& A,
-                                    TransformedShape<T, Scaled>& B)
+                                    int scale, TransformedShape<T, Scaled, Checked>& A,
+                                    TransformedShape<T, Scaled, Checked>& B)
 {
     Transform<T> world;
     if constexpr (Scaled)
