@@ -673,8 +673,8 @@ TEST_CASE("a pipe's copy is read twice and named as the pipe", "[cases][files][p
         const CaseFileSummary s =
             streamCaseFile(copy.path(), fifo, [&](CaseEntry&& e) { labels.push_back(e.label); });
         CHECK(s.entries == 2);
-        CHECK(labels == std::vector<std::string>{"copied.fifo#0 (case 'c0')",
-                                                 "copied.fifo#1 (case 'c1')"});
+        CHECK(labels ==
+              std::vector<std::string>{"copied.fifo#0 (case 'c0')", "copied.fifo#1 (case 'c1')"});
     }
 }
 

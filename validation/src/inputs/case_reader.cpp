@@ -17,6 +17,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cstdlib>
@@ -526,33 +527,29 @@ class CaseStream
     {
         skipped_ = SkippedCase();
         std::size_t depth = 0;
-        bool inString = false, inNumber = false;
-        for (std::size_t i = 0;; ++i)
+        std::size_t i = 0;
+        const auto more = [&] // false when the case cannot be completed from here
+        { return !(i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_); };
+        for (;; ++i)
         {
-            if (begin_ + i == end_ &&
-                (i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_))
+            if (begin_ + i == end_ && !more())
                 return false;
-            const auto c = static_cast<unsigned char>(buf_[begin_ + i]);
-            if (c >= 0x80)
-                return false;
-            if (inString)
-            {
-                if (c == '"')
-                    inString = false;
-                else if (c == '\\' || c < 0x20)
-                    return false;
+            auto c = static_cast<unsigned char>(buf_[begin_ + i]);
+            if (kOutside[c] == 0)
                 continue;
-            }
-            const bool numeric =
-                std::isdigit(c) || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
-            if (numeric && !inNumber)
-                lastToken_ = i;
-            inNumber = numeric;
             switch (c)
             {
-            case '"':
-                inString = true;
-                lastToken_ = i;
+            case '"': // to the closing quote, each byte checked
+                for (++i;; ++i)
+                {
+                    if (begin_ + i == end_ && !more())
+                        return false;
+                    c = static_cast<unsigned char>(buf_[begin_ + i]);
+                    if (c == '"')
+                        break;
+                    if (c == '\\' || c < 0x20 || c >= 0x80)
+                        return false;
+                }
                 break;
             case '{':
             case '[':
@@ -563,6 +560,7 @@ class CaseStream
                 if (--depth == 0)
                 {
                     skipped_.bytes = i + 1;
+                    lastToken_ = lastTokenStart();
                     return true;
                 }
                 break;
@@ -571,12 +569,43 @@ class CaseStream
                 skipped_.prevNewline = skipped_.lastNewline;
                 skipped_.lastNewline = i;
                 break;
-            default:
-                if (c < 0x20 && c != '\t' && c != '\r') // not JSON white space
-                    return false;
-                break;
+            default: // not JSON white space, or above 0x7F
+                return false;
             }
         }
+    }
+
+    // Bytes the scan looks at outside strings: structure, newlines, and those it refuses (control
+    // characters other than JSON's white space, bytes above 0x7F).
+    static constexpr std::array<unsigned char, 256> kOutside = []
+    {
+        std::array<unsigned char, 256> t{};
+        for (int c = 0; c < 256; ++c)
+            t[std::size_t(c)] = (c < 0x20 && c != '\t' && c != '\r') || c >= 0x80 || c == '"' ||
+                                c == '{' || c == '[' || c == '}' || c == ']';
+        return t;
+    }();
+
+    // Where the last string or number of the case just scanned begins: after it come only white
+    // space and closing brackets (a case the fast path accepts has no true, false or null).
+    std::size_t lastTokenStart() const
+    {
+        const char* p = buf_.data() + begin_;
+        std::size_t i = skipped_.bytes;
+        while (i > 0 && std::strchr("}] \t\r\n", p[i - 1]) != nullptr)
+            --i;
+        if (i == 0)
+            return 0;
+        if (p[i - 1] == '"')
+        {
+            --i;
+            while (i > 0 && p[i - 1] != '"')
+                --i;
+            return i > 0 ? i - 1 : 0;
+        }
+        while (i > 0 && std::strchr("0123456789.eE+-", p[i - 1]) != nullptr)
+            --i;
+        return i;
     }
 
     ByteInput& in_;
