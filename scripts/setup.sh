@@ -14,6 +14,7 @@ set -euo pipefail
 # catch2 is in the base list: configuring the project (even to build only the runner) finds it.
 # libbox2d-dev (Box2D 2.4.1): the runner's engine families step Box2D worlds.
 # libmsgpack-cxx-dev (header only): binary case files, gjk-cases-msgpack/1 (docs/case-files.md).
+# libsimdjson-dev: the case-file reader parses cases with simdjson (docs/speed.md, "Case files").
 # openmpi-bin, libopenmpi-dev: `mpirun -n N gjk-validate run` (optional in the build, GJK2D_WITH_MPI).
 # dpkg-dev (dpkg-shlibdeps: the .deb's Depends) and pkgconf (the SDK's gjk2d.pc): `cpack` and the
 # install tests (docs/validate-your-gjk.md).
@@ -21,7 +22,7 @@ set -euo pipefail
 # peer.txt (`package` lines: FCL, Bullet, GEOS through shapely); planck.js and Jolt
 # (jolt-physics) come from the npm registry (scripts/setup_npm.sh, below).
 packages=(build-essential cmake libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-          nlohmann-json3-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
+          nlohmann-json3-dev libsimdjson-dev libcli11-dev libfmt-dev libbenchmark-dev catch2 libbox2d-dev
           openmpi-bin libopenmpi-dev dpkg-dev pkgconf libmsgpack-cxx-dev)
 for peer in "$(dirname "$0")"/../validation/plugins/*/peer.txt; do
   while read -r word rest; do

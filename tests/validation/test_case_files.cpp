@@ -1,10 +1,13 @@
 // The gjk-cases/1 format: bit-exact round trip, refused files, rejected cases.
+#include "inputs/case_fields.hpp"
 #include "inputs/cases.hpp"
 #include "inputs/geometry.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
@@ -556,7 +559,7 @@ TEST_CASE("comments and shapes have documented limits", "[cases][hostile]")
     CHECK(f.entries[1].rejected.empty());
 }
 
-TEST_CASE("what is read is bounded: devices, directories, large files, endless pipes",
+TEST_CASE("what is read is bounded: devices and directories are refused, not large files",
           "[cases][files]")
 {
     // Regression (hostile-input hardening): `--cases /dev/zero` read until bad_alloc.
@@ -581,48 +584,143 @@ TEST_CASE("what is read is bounded: devices, directories, large files, endless p
                                            "file or a pipe)");
     CHECK_THAT(readMessage(dir.string() + "/missing.json"),
                Catch::EndsWith("missing.json: cannot open the file: No such file or directory"));
-    // A regular file above 256 MiB is refused by its size, before it is read (a sparse file).
+    // No size limit: a regular file above the former 256 MiB cap is read, not refused by its
+    // size (a sparse file: "{" then zeros, refused at its second byte as not JSON).
     const std::string big = (dir / "big.json").string();
     {
         std::ofstream(big) << "{";
     }
     std::filesystem::resize_file(big, (std::uintmax_t(256) << 20) + 1);
-    CHECK(readMessage(big) == big + ": larger than 268435456 bytes, the limit for a case file");
+    CHECK_THAT(readMessage(big), Catch::StartsWith(big + ":1:2: invalid JSON: "));
     std::filesystem::remove(big);
 }
 
-TEST_CASE("an endless pipe is cut at the size limit", "[cases][files][pipe]")
+namespace
 {
-    const std::string fifo = std::string(VALIDATION_TEST_TMP) + "/case-files/endless.fifo";
+// A case file of n small cases named c0, c1, ..., one per line, as text; `extra` goes into every
+// case before its name.
+std::string smallCases(int n, const std::string& extra = "")
+{
+    std::string text = "{\"format\": \"gjk-cases/1\", \"cases\": [\n";
+    for (int i = 0; i < n; ++i)
+        text += (i > 0 ? ",\n{" : "{") + extra + "\"name\": \"c" + std::to_string(i) +
+                "\", \"a\": {\"points\": [[0, " + std::to_string(i) +
+                "]], \"radius\": 0.5}, \"b\": {\"points\": [[1.25, -2], [3, 4]], "
+                "\"transform\": {\"p\": [1, 2], \"q\": [0.6, 0.8]}}}";
+    return text + "\n]}\n";
+}
+} // namespace
+
+TEST_CASE("a pipe is read as it arrives, not whole first", "[cases][files][pipe]")
+{
+    // The writer sends the first case, then waits until the reader has passed it on before it
+    // sends the rest: a reader that read the pipe whole first would see the first case only
+    // after the writer gave up waiting.
+    const std::string fifo = std::string(VALIDATION_TEST_TMP) + "/case-files/stream.fifo";
     std::filesystem::create_directories(std::filesystem::path(fifo).parent_path());
     std::filesystem::remove(fifo);
     REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
-    const auto previous = std::signal(SIGPIPE, SIG_IGN); // the writer sees EPIPE instead
+    const std::string text = smallCases(3);
+    const std::size_t cut = text.find("},\n{\"name\": \"c1\"") + 3; // after the first case
+    std::atomic<bool> firstSeen{false}, waited{false};
     std::thread writer(
         [&]
         {
             const int fd = open(fifo.c_str(), O_WRONLY);
             if (fd < 0)
                 return;
-            const std::string block(1 << 16, ' ');
-            while (write(fd, block.data(), block.size()) > 0)
-            {
-            }
+            (void)!write(fd, text.data(), cut);
+            for (int i = 0; i < 1000 && !firstSeen; ++i) // up to 10 s
+                std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            waited = firstSeen.load();
+            (void)!write(fd, text.data() + cut, text.size() - cut);
             close(fd);
         });
-    std::string message = "(no error)";
-    try
-    {
-        readCaseFile(fifo);
-    }
-    catch (const InputError& e)
-    {
-        message = e.what();
-    }
+    std::vector<std::string> names;
+    streamCaseFile(fifo,
+                   [&](CaseEntry&& e)
+                   {
+                       names.push_back(e.c.name);
+                       firstSeen = true;
+                   });
     writer.join();
-    std::signal(SIGPIPE, previous);
     std::filesystem::remove(fifo);
-    CHECK(message == fifo + ": larger than 268435456 bytes, the limit for a case file");
+    CHECK(waited);
+    CHECK(names == std::vector<std::string>{"c0", "c1", "c2"});
+}
+
+TEST_CASE("a pipe's copy is read twice and named as the pipe", "[cases][files][pipe]")
+{
+    const std::string fifo = std::string(VALIDATION_TEST_TMP) + "/case-files/copied.fifo";
+    std::filesystem::create_directories(std::filesystem::path(fifo).parent_path());
+    std::filesystem::remove(fifo);
+    REQUIRE(mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string text = smallCases(2, "\"x\": 1, "); // "x": read and dropped
+    std::thread writer(
+        [&]
+        {
+            const int fd = open(fifo.c_str(), O_WRONLY);
+            if (fd >= 0)
+                (void)!write(fd, text.data(), text.size());
+            close(fd);
+        });
+    const PipeCopy copy(fifo);
+    writer.join();
+    std::filesystem::remove(fifo);
+    for (int pass = 0; pass < 2; ++pass)
+    {
+        std::vector<std::string> labels;
+        const CaseFileSummary s =
+            streamCaseFile(copy.path(), fifo, [&](CaseEntry&& e) { labels.push_back(e.label); });
+        CHECK(s.entries == 2);
+        CHECK(labels ==
+              std::vector<std::string>{"copied.fifo#0 (case 'c0')", "copied.fifo#1 (case 'c1')"});
+    }
+}
+
+TEST_CASE("the fast reader and the SAX reader give the same entries and messages", "[cases]")
+{
+    // An unknown field ("x": dropped by readCase) sends every case through the SAX path; without
+    // it the same cases take the fast path.
+    const CaseFile fast = parseCaseFile(smallCases(50), "f.json");
+    const CaseFile slow = parseCaseFile(smallCases(50, "\"x\": [true], "), "f.json");
+    REQUIRE(fast.entries.size() == 50);
+    REQUIRE(slow.entries.size() == 50);
+    for (std::size_t i = 0; i < 50; ++i)
+    {
+        CHECK(fast.entries[i].label == slow.entries[i].label);
+        CHECK(fast.entries[i].rejected.empty());
+        CHECK(slow.entries[i].rejected.empty());
+        CHECK(caseFileText({}, {fast.entries[i].c}) == caseFileText({}, {slow.entries[i].c}));
+    }
+    // A name seen before is rejected either way.
+    std::string twice = smallCases(2);
+    twice.replace(twice.find("\"c1\""), 4, "\"c0\"");
+    const CaseFile d = parseCaseFile(twice, "d.json");
+    REQUIRE(d.entries.size() == 2);
+    CHECK(d.entries[1].rejected == "duplicate case name 'c0'");
+    CHECK(d.entries[1].label == "d.json#1 (case 'c0')");
+    // An error after cases the fast path read: line, column and nlohmann's "last read" as main's
+    // SAX-only reader gave them (the characters from the last case's last number on).
+    const std::string late =
+        "{\"format\": \"gjk-cases/1\", \"cases\": [\n"
+        "{\"name\": \"a\", \"a\": {\"points\": [[0, 0]]}, \"b\": {\"points\": [[1, 1]]}},\n"
+        "{\"name\": \"b\", \"a\": {\"points\": [[0, 0]]}, \"b\": {\"points\": [[1, 1]]}} x\n]}\n";
+    CHECK(messageOf(late, "late.json") ==
+          "late.json:3:69: invalid JSON: syntax error while parsing array - invalid literal; "
+          "last read: '1]]}} x'; expected ']'");
+}
+
+TEST_CASE("duplicate names are found among many, in a few bytes a name", "[cases]")
+{
+    NameSet names;
+    for (int i = 0; i < 200'000; ++i)
+        REQUIRE(names.insert("random/" + std::to_string(i)));
+    for (int i = 0; i < 200'000; i += 997)
+        CHECK_FALSE(names.insert("random/" + std::to_string(i)));
+    CHECK(names.insert("random/200000"));
+    CHECK(names.insert(""));
+    CHECK_FALSE(names.insert(""));
 }
 
 TEST_CASE("the streaming reader reads from disk what the whole-file reader reads", "[cases][files]")

@@ -3,6 +3,7 @@
 // lines; then the timed passes.
 #include "campaign/state.hpp"
 
+#include "common/context.hpp"
 #include "common/output.hpp"
 #include "common/parallel.hpp"
 
@@ -243,11 +244,14 @@ class ChunkFolder
 
 void addSeconds(PhaseSeconds& to, const PhaseSeconds& s)
 {
+    to.setup += s.setup;
     to.inputs += s.inputs;
     to.exact += s.exact;
     to.gjk += s.gjk;
     to.witness += s.witness;
+    to.fold += s.fold;
     to.timing += s.timing;
+    to.report += s.report;
 }
 
 // One input (state.families[inputIndex]), streamed: its cases are generated or read chunk by
@@ -280,6 +284,7 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
             else
             {
                 EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, unsent);
+                const auto tFold = Clock::now();
                 // Everything by value or bound to objects that outlive the folder: the fold may
                 // still run after this input's stream has returned.
                 folder.submit(
@@ -293,6 +298,7 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
                             pl.afterChunk({inputIndex, j + 1});
                     });
                 unsent = {};
+                unsent.fold = elapsed(tFold, Clock::now()); // the next fold adds it
             }
             t = Clock::now();
         },
@@ -356,9 +362,12 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
         Progress progress(config.progress, "cases", total);
         PhaseSeconds unsent;
         ChunkFolder folder(threads >= 2);
+        unsent.setup = elapsed(commandStart(), Clock::now());
         for (std::size_t i = 0; i < state.inputs.size(); ++i)
             runInput(i, config, plan, ctx, threads, progress, state, folder, unsent, perCase);
+        const auto tLast = Clock::now();
         folder.finish();
+        unsent.fold += elapsed(tLast, Clock::now());
         addSeconds(state.seconds, unsent);
     }
     // A shard times only the inputs whose first chunk it holds: the merge takes those.
@@ -375,11 +384,10 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
 Campaign runCampaign(const CampaignConfig& config, std::vector<CampaignInput> inputs,
                      std::ostream* perCase)
 {
-    const auto tStart = Clock::now();
     const int threads = resolveThreads(config.threads);
     const EvalContext ctx = evalContext(config);
     CampaignState state = foldCampaign(config, std::move(inputs), Shard{}, ctx, threads, perCase);
-    return finishCampaign(state, config, ctx, threads, elapsed(tStart, Clock::now()));
+    return finishCampaign(state, config, ctx, threads, kSinceCommandStart);
 }
 
 Json runShard(const CampaignConfig& config, std::vector<CampaignInput> inputs, Shard shard,

@@ -62,14 +62,15 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
     for (const auto& r : state.rejected)
         rejected.push_back({{"input", r.input}, {"index", r.index}, {"entry", r.entry}});
     const PhaseSeconds& t = state.seconds;
-    return Json{{"schema", kShardSchema},
-                {"campaign", campaignIdentity(config)},
-                {"shard", {{"index", shard.index}, {"count", shard.count}}},
-                {"command", config.command},
-                {"threads", threads},
-                {"elapsed_s", {t.inputs, t.exact, t.gjk, t.witness, t.timing}},
-                {"families", std::move(families)},
-                {"rejected", std::move(rejected)}};
+    return Json{
+        {"schema", kShardSchema},
+        {"campaign", campaignIdentity(config)},
+        {"shard", {{"index", shard.index}, {"count", shard.count}}},
+        {"command", config.command},
+        {"threads", threads},
+        {"elapsed_s", {t.inputs, t.exact, t.gjk, t.witness, t.timing, t.setup, t.fold, t.report}},
+        {"families", std::move(families)},
+        {"rejected", std::move(rejected)}};
 }
 
 void checkStateSchema(const Json& j, const char* schema, const std::string& file, const char* redo)
@@ -186,6 +187,12 @@ void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalCont
     state.seconds.gjk += e[2].get<double>();
     state.seconds.witness += e[3].get<double>();
     state.seconds.timing += e[4].get<double>();
+    if (e.size() >= 8) // setup, fold, report
+    {
+        state.seconds.setup += e[5].get<double>();
+        state.seconds.fold += e[6].get<double>();
+        state.seconds.report += e[7].get<double>();
+    }
 }
 
 namespace

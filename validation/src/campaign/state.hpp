@@ -23,10 +23,15 @@ inline double elapsed(Clock::time_point a, Clock::time_point b)
 
 // --- The pipeline's state ---------------------------------------------------------------------
 
-// Seconds spent in each phase (the report's context.elapsed_s; volatile).
+// Seconds spent in each phase (the report's context.elapsed_s; volatile), wall time of the thread
+// that drives the campaign: together they are the command's time up to the report
+// (docs/report-schema.md, "context"). setup: from the command's start to the first case (the
+// command line, the case files' first read, the variants); inputs: making or reading the cases;
+// fold: folding each chunk's outcomes into the statistics (or waiting for the fold beside);
+// report: the verdict and the report up to elapsed_s.
 struct PhaseSeconds
 {
-    double inputs = 0, exact = 0, gjk = 0, witness = 0, timing = 0;
+    double setup = 0, inputs = 0, exact = 0, gjk = 0, witness = 0, fold = 0, timing = 0, report = 0;
 };
 
 // The valid cases of a family kept for the timed passes (the first kTimingSampleCases), and which
@@ -85,7 +90,10 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
 
 // --- The verdict and report.json (verdict.cpp) ------------------------------------------------
 
-// Judgement and the report, from the folded (or merged) state.
+// Judgement and the report, from the folded (or merged) state. `seconds`: the campaign's wall
+// time (a merge's), or kSinceCommandStart: from commandStart() to the report, with the time
+// finishCampaign takes as the phase "report".
+inline constexpr double kSinceCommandStart = -1;
 Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
                         int threads, double seconds);
 

@@ -1,6 +1,7 @@
 // The verdict and report.json: each family judged, the campaign's exit code, and the report
 // built from the folded (or merged) state.
 #include "campaign/state.hpp"
+#include "common/context.hpp"
 
 #include "implementations/peers.hpp"
 #include "report/report.hpp"
@@ -230,8 +231,9 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
     context["exact_route"] = exact::routeName(config.route);
     context["truth"] = config.truthFilter ? "filtered" : "exact";
     context["plugins"] = pluginsJson(config.variants);
-    context["elapsed_s"] = {{"generate", t.inputs}, {"exact", t.exact},   {"gjk", t.gjk},
-                            {"witness", t.witness}, {"timing", t.timing}, {"total", totalSeconds}};
+    context["elapsed_s"] = {{"setup", t.setup},   {"generate", t.inputs}, {"exact", t.exact},
+                            {"gjk", t.gjk},       {"witness", t.witness}, {"fold", t.fold},
+                            {"timing", t.timing}, {"report", t.report},   {"total", totalSeconds}};
     context["throughput"] = {
         {"exact_cases_per_s", perSecond(t.exact)},
         {"gjk_cases_per_s", perSecond(t.gjk)},
@@ -250,6 +252,7 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
 Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
                         int threads, double seconds)
 {
+    const auto tReport = Clock::now();
     const std::size_t baseline = baselineIndex(ctx);
     setTimingRatios(state, baseline);
 
@@ -283,6 +286,13 @@ Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, cons
     report["worst"] = std::move(worst);
     report["exit_code"] = camp.exitCode;
     report["passed"] = camp.exitCode == kExitPass;
+    if (seconds == kSinceCommandStart) // the phases and the total end now, together
+    {
+        const auto now = Clock::now();
+        Json& e = report["context"]["elapsed_s"];
+        e["report"] = state.seconds.report = elapsed(tReport, now);
+        e["total"] = elapsed(commandStart(), now);
+    }
     camp.report = std::move(report);
     return camp;
 }

@@ -1,5 +1,6 @@
 // The subcommands, parsed and dispatched: what gjk-validate's main() and gjk2d.validate share.
 #include "commands/command_line.hpp"
+#include "common/context.hpp"
 #include "report/report.hpp"
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,7 @@ namespace gjkval
 
 int runCommandLine(const CommandLine& line)
 {
+    markCommandStart();
     checkArgsUtf8(line.argc, line.argv);
     CLI::App app{"gjk-validate: checks the GJK distance library against an exact ground truth.\n"
                  "Runs case families and case files through the GJK variants and the exact\n"

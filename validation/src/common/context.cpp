@@ -39,6 +39,25 @@ std::string isoDateUtc()
     return isoDateUtcImpl();
 }
 
+namespace
+{
+std::chrono::steady_clock::time_point& startMark()
+{
+    static std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+    return t;
+}
+} // namespace
+
+void markCommandStart()
+{
+    startMark() = std::chrono::steady_clock::now();
+}
+
+std::chrono::steady_clock::time_point commandStart()
+{
+    return startMark();
+}
+
 Json contextJson(const std::string& date, const std::string& revision, const std::string& command,
                  std::uint64_t seed, int threads, Json inputs, std::size_t casesTotal,
                  std::size_t casesRejected)

@@ -4,6 +4,7 @@
 
 #include "common/common.hpp"
 
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -16,6 +17,11 @@ namespace gjkval
 // (src/common/build_info.cpp), never asked of git at run time.
 std::string gitRevision();
 std::string isoDateUtc();
+
+// When the command began (runCommandLine marks it): a campaign's elapsed_s counts its phases from
+// here (docs/report-schema.md, "context"). Before any mark, the time of the first call.
+void markCommandStart();
+std::chrono::steady_clock::time_point commandStart();
 
 // report.json's context block up to "cases_rejected" (date, host, compiler, flags, build_type,
 // gjk_checked, git_revision, command, seed, threads, inputs, cases_total, cases_rejected); `bench`

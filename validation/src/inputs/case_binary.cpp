@@ -630,11 +630,11 @@ std::ifstream openBinary(const std::string& path)
 }
 } // namespace
 
-CaseFileSummary streamBinaryCaseFile(const std::string& path,
+CaseFileSummary streamBinaryCaseFile(const std::string& path, const std::string& sourceName,
                                      const std::function<void(CaseEntry&&)>& consume)
 {
     std::ifstream in = openBinary(path);
-    return readBinary(fileReader(in, path), path, consume);
+    return readBinary(fileReader(in, sourceName), sourceName, consume);
 }
 
 CaseFile readBinaryCaseFile(const std::string& path)

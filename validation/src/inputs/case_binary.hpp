@@ -41,7 +41,8 @@ bool isBinaryCaseFile(const std::string& path);
 // InputError naming the file, the block, its cases and the field; a case with an invalid value
 // (NaN, a negative radius, a bad name, ...) is kept as a rejected entry with the message the JSON
 // reader gives for the same field.
-CaseFileSummary streamBinaryCaseFile(const std::string& path,
+// `sourceName`: how messages and labels name the file (a pipe's copy is read from another path).
+CaseFileSummary streamBinaryCaseFile(const std::string& path, const std::string& sourceName,
                                      const std::function<void(CaseEntry&&)>& consume);
 CaseFile readBinaryCaseFile(const std::string& path);
 CaseFile parseBinaryCaseFile(std::string_view bytes, const std::string& sourceName);

@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace gjkval
@@ -32,6 +33,71 @@ const char* typeName(const RJson& j)
     default:
         return "not a value";
     }
+}
+
+namespace
+{
+std::uint64_t load(const char* p, std::size_t n)
+{
+    std::uint64_t v = 0;
+    std::memcpy(&v, p, n);
+    return v;
+}
+
+// 64x64 -> 128-bit multiply folded to 64 bits: every input bit reaches every output bit.
+std::uint64_t mix(std::uint64_t a, std::uint64_t b)
+{
+    const unsigned __int128 r = static_cast<unsigned __int128>(a) * b;
+    return std::uint64_t(r) ^ std::uint64_t(r >> 64);
+}
+
+std::uint64_t nameHash(std::string_view s)
+{
+    constexpr std::uint64_t k0 = 0xa0761d6478bd642fULL, k1 = 0xe7037ed1a0b428dbULL,
+                            k2 = 0x8ebc6af09c88c6e3ULL;
+    std::uint64_t h = mix(s.size() ^ k0, k1);
+    std::size_t i = 0;
+    for (; i + 8 <= s.size(); i += 8)
+        h = mix(h ^ load(s.data() + i, 8), k1 ^ (h << 1 | 1));
+    if (i < s.size())
+        h = mix(h ^ load(s.data() + i, s.size() - i) ^ k2, k1);
+    return mix(h, k0) ^ h;
+}
+
+constexpr std::size_t kRecord = 6; // bytes a name takes in its bucket: the hash's low 48 bits
+
+std::uint64_t record(const unsigned char* p)
+{
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < kRecord; ++i)
+        v = v << 8 | p[i];
+    return v;
+}
+} // namespace
+
+NameSet::NameSet() : buckets_(std::size_t(1) << 16) {}
+
+bool NameSet::insert(std::string_view name)
+{
+    const std::uint64_t h = nameHash(name);
+    std::vector<unsigned char>& b = buckets_[h >> 48];
+    const std::uint64_t key = h & ((std::uint64_t(1) << 48) - 1);
+    std::size_t lo = 0, hi = b.size() / kRecord;
+    while (lo < hi)
+    {
+        const std::size_t mid = (lo + hi) / 2;
+        const std::uint64_t k = record(b.data() + mid * kRecord);
+        if (k == key)
+            return false;
+        (k < key ? lo = mid + 1 : hi = mid);
+    }
+    if (b.size() + kRecord > b.capacity()) // grow by an eighth: little unused room
+        b.reserve(b.size() + b.size() / 8 + 8 * kRecord);
+    unsigned char bytes[kRecord];
+    for (std::size_t i = 0; i < kRecord; ++i)
+        bytes[i] = static_cast<unsigned char>(key >> (8 * (kRecord - 1 - i)));
+    b.insert(b.begin() + std::ptrdiff_t(lo * kRecord), bytes, bytes + kRecord);
+    return true;
 }
 
 namespace
@@ -172,8 +238,35 @@ bool isControl(std::string_view s)
 }
 } // namespace
 
+namespace
+{
+std::string namedLabel(const std::string& base, std::size_t index, const std::string& name)
+{
+    return fmt::format("{}#{} (case '{}')", base, index, excerpt(name));
+}
+
+std::string duplicateName(const std::string& name)
+{
+    return fmt::format("duplicate case name '{}'", excerpt(name));
+}
+} // namespace
+
+CaseEntry acceptCase(Case&& c, std::size_t index, const std::string& base, NameSet& names)
+{
+    CaseEntry e;
+    e.label = namedLabel(base, index, c.name);
+    if (names.insert(c.name))
+        e.c = std::move(c);
+    else
+    {
+        e.rejected = duplicateName(c.name);
+        e.c.name = e.label;
+    }
+    return e;
+}
+
 CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std::string& base,
-                   std::set<std::string>& names)
+                   NameSet& names)
 {
     CaseEntry e;
     e.label = fmt::format("{}#{}", base, index);
@@ -192,14 +285,14 @@ CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std:
         // The name is quoted in labels, reports and terminals and looked up by `explain`: short,
         // printable, and (as every JSON string nlohmann reads) valid UTF-8.
         const std::string& name = c["name"].get_ref<const std::string&>();
-        e.label = fmt::format("{}#{} (case '{}')", base, index, excerpt(name));
+        e.label = namedLabel(base, index, name);
         if (name.size() > kMaxCaseNameBytes)
             fieldError(
                 fmt::format("name is {} bytes long, more than {}", name.size(), kMaxCaseNameBytes));
         if (!isValidUtf8(name) || isControl(name))
             fieldError("name contains a control character or is not valid UTF-8");
-        if (!names.insert(name).second)
-            fieldError(fmt::format("duplicate case name '{}'", excerpt(name)));
+        if (!names.insert(name))
+            fieldError(duplicateName(name));
         e.c.name = name;
         if (truncated) // named when the name came before the cut
             fieldError(tooLarge);

@@ -7,8 +7,10 @@
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
-#include <set>
+#include <cstdint>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace gjkval
 {
@@ -18,10 +20,31 @@ using RJson = nlohmann::json; // reading: key order does not matter
 // "an object", "a number", ...: what a JSON value is, as messages name it.
 const char* typeName(const RJson& j);
 
+// The case names of a file seen so far, for the duplicate check, in memory that grows by about
+// 6 bytes a case (a file of any number of cases is read in one process): a name is kept as its
+// 64-bit hash, the top 16 bits choosing one of 65,536 buckets that each hold the other 48 bits
+// sorted. Two different names are taken for the same when their hashes are equal: for n names a
+// chance of about n^2 / 2^65 in the whole file (the hash mixes every byte of the name).
+class NameSet
+{
+  public:
+    NameSet();
+    // True when `name` was not seen before (it is now).
+    bool insert(std::string_view name);
+
+  private:
+    std::vector<std::vector<unsigned char>> buckets_;
+};
+
 // One entry of "cases", from its JSON (at most kMaxCaseJsonValues values of it; `truncated` when
 // the rest was not kept). An invalid field rejects the entry, naming it; `names` holds the names
 // seen so far (a duplicate is rejected). `base` is the file as labels name it.
 CaseEntry readCase(const RJson& c, std::size_t index, bool truncated, const std::string& base,
-                   std::set<std::string>& names);
+                   NameSet& names);
+
+// A case whose every field was already found valid (the fast reader, case_reader.cpp) as entry
+// `index`: labelled as readCase labels it, and rejected as readCase rejects it when its name was
+// seen before.
+CaseEntry acceptCase(Case&& c, std::size_t index, const std::string& base, NameSet& names);
 
 } // namespace gjkval

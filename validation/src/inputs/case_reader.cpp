@@ -1,14 +1,28 @@
-// Reading gjk-cases/1 files: the file checked and read within the reader's limits, its JSON
-// streamed through nlohmann's SAX interface, each case handed to readCase (case_fields.hpp) when
-// complete.
+// Reading gjk-cases/1 files (a file in the binary form goes to case_binary.hpp instead): the file
+// checked, its JSON streamed through nlohmann's SAX interface (every message, every position it
+// names), each case handed to readCase (case_fields.hpp) when complete. A fast path reads most
+// cases instead: where an entry of "cases" begins, the case's bytes are found, parsed with simdjson
+// and checked field by field; a case that passes every check reaches the SAX parser as the one
+// token `null`, and the case itself, already converted, goes to acceptCase. Anything else the fast
+// path does not accept (an error of any kind, an unknown field, an escape in a string) it leaves to
+// the SAX path, byte for byte: the messages stay those of the SAX path (docs/speed.md, "Case
+// files").
 #include "inputs/case_binary.hpp"
 #include "inputs/case_fields.hpp"
 #include "inputs/cases.hpp"
 
-#include <fmt/format.h>
+#include "common/output.hpp"
 
+#include <fmt/format.h>
+#include <simdjson.h>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <array>
 #include <cctype>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -38,16 +52,7 @@ const char* fileTypeName(fs::file_type t)
     }
 }
 
-// The whole file, at most kMaxCaseFileBytes: a regular file is refused by its size before it is
-// read, a pipe once it has delivered more (an endless stream costs the cap, not all memory).
-// Devices (/dev/zero), directories and sockets are refused by their type.
-InputError tooLarge(const std::string& path)
-{
-    return InputError(fmt::format("{}: larger than {} bytes, the limit for a case file",
-                                  shownPath(path), kMaxCaseFileBytes));
-}
-
-// The type of a case file about to be read: a regular file (within kMaxCaseFileBytes) or a pipe.
+// The type of a case file about to be read: a regular file or a pipe.
 fs::file_type openedType(const std::string& path)
 {
     const std::string shown = shownPath(path);
@@ -58,41 +63,7 @@ fs::file_type openedType(const std::string& path)
     if (st.type() != fs::file_type::regular && st.type() != fs::file_type::fifo)
         throw InputError(fmt::format("{}: is {}, expected a case file (a regular file or a pipe)",
                                      shown, fileTypeName(st.type())));
-    if (st.type() == fs::file_type::regular)
-    {
-        const auto size = fs::file_size(path, ec);
-        if (!ec && size > kMaxCaseFileBytes)
-            throw tooLarge(path);
-    }
     return st.type();
-}
-
-std::string readFile(const std::string& path)
-{
-    const std::string shown = shownPath(path);
-    std::error_code ec;
-    std::string text;
-    if (openedType(path) == fs::file_type::regular)
-    {
-        const auto size = fs::file_size(path, ec);
-        if (!ec)
-            text.reserve(size);
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw InputError(fmt::format("{}: cannot open the file", shown));
-    std::vector<char> buffer(std::size_t(1) << 16);
-    while (in)
-    {
-        in.read(buffer.data(), std::streamsize(buffer.size()));
-        const auto got = std::size_t(in.gcount());
-        if (text.size() + got > kMaxCaseFileBytes)
-            throw tooLarge(path);
-        text.append(buffer.data(), got);
-    }
-    if (in.bad())
-        throw InputError(fmt::format("{}: read error", shown));
-    return text;
 }
 
 } // namespace
@@ -169,8 +140,494 @@ struct ReadPosition
     }
 };
 
-// An input iterator over a stream buffer that records the position of what it has read.
-struct TrackedIterator
+// The characters of a case that the SAX parser does not see (the fast path read them): where
+// its newlines are, so that positions after it stay right.
+struct SkippedCase
+{
+    std::size_t bytes = 0;
+    std::size_t newlines = 0;
+    std::size_t lastNewline = 0, prevNewline = 0; // offsets within the case
+};
+
+void skip(ReadPosition& pos, const SkippedCase& c)
+{
+    const std::size_t base = pos.offset;
+    if (c.newlines >= 2)
+        pos.prevLineStart = base + c.prevNewline + 1;
+    else if (c.newlines == 1)
+        pos.prevLineStart = pos.lineStart;
+    if (c.newlines >= 1)
+        pos.lineStart = base + c.lastNewline + 1;
+    pos.line += c.newlines;
+    pos.offset += c.bytes;
+    pos.last = '}';
+    pos.inString = pos.escaped = false;
+}
+
+// Where the bytes come from: a file descriptor (a regular file or a pipe, read as it is parsed)
+// or text in memory.
+class ByteInput
+{
+  public:
+    explicit ByteInput(int fd) : fd_(fd) {}
+    explicit ByteInput(std::string_view text) : text_(text) {}
+    ByteInput(const ByteInput&) = delete;
+    ByteInput& operator=(const ByteInput&) = delete;
+    ~ByteInput()
+    {
+        if (fd_ >= 0)
+            ::close(fd_);
+    }
+
+    // Up to n bytes into p; 0 at the end. Throws InputError on a read error.
+    std::size_t read(char* p, std::size_t n, const std::string& shown)
+    {
+        if (fd_ == kText)
+        {
+            const std::size_t got = std::min(n, text_.size());
+            std::memcpy(p, text_.data(), got);
+            text_.remove_prefix(got);
+            return got;
+        }
+        for (;;)
+        {
+            const ssize_t got = ::read(fd_, p, n);
+            if (got >= 0)
+                return std::size_t(got);
+            if (errno != EINTR)
+                throw InputError(fmt::format("{}: read error", shown));
+        }
+    }
+
+  private:
+    static constexpr int kText = -2;
+    int fd_ = kText;
+    std::string_view text_;
+};
+
+// One case checked and converted by simdjson's On-Demand parser, or refused (false) for the SAX
+// path to read: every field readCase (case_fields.cpp) accepts, nothing it rejects, no field it
+// drops (those the SAX path still checks as JSON), and no number it refuses.
+class FastCaseParser
+{
+  public:
+    bool parse(const char* json, std::size_t length, Case& out)
+    {
+        namespace od = simdjson::ondemand;
+        padded_.resize(length + simdjson::SIMDJSON_PADDING);
+        std::memcpy(padded_.data(), json, length);
+        od::document doc;
+        od::object o;
+        if (parser_.iterate(padded_.data(), length, padded_.size()).get(doc) ||
+            doc.get_object().get(o))
+            return false;
+        values_ = 1;
+        out = Case();
+        unsigned seen = 0;
+        for (auto field : o)
+        {
+            od::field f;
+            std::string_view key;
+            if (std::move(field).get(f) || f.unescaped_key().get(key))
+                return false;
+            od::value v = f.value();
+            const unsigned bit = key == "name"      ? 1
+                                 : key == "a"       ? 2
+                                 : key == "b"       ? 4
+                                 : key == "source"  ? 8
+                                 : key == "comment" ? 16
+                                                    : 0;
+            if (bit == 0 || (seen & bit) != 0 || !count())
+                return false;
+            seen |= bit;
+            const bool ok = bit == 1   ? name(v, out.name)
+                            : bit == 2 ? shape(v, out.a)
+                            : bit == 4 ? shape(v, out.b)
+                            : bit == 8 ? text(v, out.source)
+                                       : text(v, out.comment);
+            if (!ok)
+                return false;
+        }
+        return (seen & 7) == 7;
+    }
+
+  private:
+    using Value = simdjson::ondemand::value;
+
+    // Every JSON value of the case counted: at most kMaxCaseJsonValues (the SAX path rejects the
+    // case beyond).
+    bool count(std::size_t n = 1)
+    {
+        values_ += n;
+        return values_ <= kMaxCaseJsonValues;
+    }
+
+    // A string without escapes or control characters (the scan before made sure), printable ASCII
+    // as a name (readCase's isControl rejects DEL).
+    static bool name(Value& v, std::string& out)
+    {
+        std::string_view s;
+        if (v.get_string().get(s) || s.empty() || s.size() > kMaxCaseNameBytes ||
+            s.find('\x7f') != std::string_view::npos)
+            return false;
+        out = s;
+        return true;
+    }
+
+    static bool text(Value& v, std::string& out)
+    {
+        std::string_view s;
+        if (v.get_string().get(s) || s.size() > kMaxCommentBytes)
+            return false;
+        out = s;
+        return true;
+    }
+
+    // A number as nlohmann reads it: simdjson refuses overflow itself, and a literal that is not 0
+    // but rounds to 0 is left to the SAX path, which refuses it.
+    bool number(Value& v, double& out)
+    {
+        const std::string_view literal = v.raw_json_token();
+        if (v.get_double().get(out))
+            return false;
+        if (out == 0)
+        {
+            const std::string_view mantissa = literal.substr(0, literal.find_first_of("eE"));
+            if (mantissa.find_first_of("123456789") != std::string_view::npos)
+                return false;
+        }
+        return true;
+    }
+
+    bool pair(Value& v, std::array<double, 2>& out)
+    {
+        simdjson::ondemand::array a;
+        if (v.get_array().get(a))
+            return false;
+        std::size_t n = 0;
+        for (auto element : a)
+        {
+            Value x;
+            if (n == 2 || element.get(x) || !count() || !number(x, out[n]))
+                return false;
+            ++n;
+        }
+        return n == 2;
+    }
+
+    bool points(Value& v, std::vector<std::array<double, 2>>& out)
+    {
+        simdjson::ondemand::array a;
+        if (v.get_array().get(a))
+            return false;
+        for (auto element : a)
+        {
+            Value p;
+            if (out.size() == kMaxShapePoints || element.get(p) || !count())
+                return false;
+            out.emplace_back();
+            if (!pair(p, out.back()))
+                return false;
+        }
+        return !out.empty();
+    }
+
+    bool transform(Value& v, ShapeIn& s)
+    {
+        simdjson::ondemand::object o;
+        if (v.get_object().get(o))
+            return false;
+        unsigned seen = 0;
+        for (auto field : o)
+        {
+            simdjson::ondemand::field f;
+            std::string_view key;
+            if (std::move(field).get(f) || f.unescaped_key().get(key))
+                return false;
+            Value x = f.value();
+            const unsigned bit = key == "p" ? 1 : key == "q" ? 2 : 0;
+            if (bit == 0 || (seen & bit) != 0 || !count())
+                return false;
+            seen |= bit;
+            std::array<double, 2> xy{};
+            if (!pair(x, xy))
+                return false;
+            (bit == 1 ? s.px : s.c) = xy[0];
+            (bit == 1 ? s.py : s.s) = xy[1];
+        }
+        return !(s.c == 0 && s.s == 0);
+    }
+
+    bool shape(Value& v, ShapeIn& s)
+    {
+        simdjson::ondemand::object o;
+        if (v.get_object().get(o))
+            return false;
+        unsigned seen = 0;
+        for (auto field : o)
+        {
+            simdjson::ondemand::field f;
+            std::string_view key;
+            if (std::move(field).get(f) || f.unescaped_key().get(key))
+                return false;
+            Value x = f.value();
+            const unsigned bit = key == "points"      ? 1
+                                 : key == "radius"    ? 2
+                                 : key == "transform" ? 4
+                                                      : 0;
+            if (bit == 0 || (seen & bit) != 0 || !count())
+                return false;
+            seen |= bit;
+            const bool ok = bit == 1   ? points(x, s.points)
+                            : bit == 2 ? number(x, s.radius) && !(s.radius < 0)
+                                       : transform(x, s);
+            if (!ok)
+                return false;
+        }
+        return (seen & 1) != 0;
+    }
+
+    simdjson::ondemand::parser parser_;
+    std::vector<char> padded_;
+    std::size_t values_ = 0;
+};
+
+// The input as the SAX parser reads it, one character at a time, with its position recorded; and
+// the fast path. Where the handler expects an entry of "cases" (expectCase) and the next
+// character after white space (and the comma between entries) opens an object, the case is
+// scanned to its end and given to FastCaseParser. When it accepts the case, the SAX parser reads
+// a placeholder in its place, and the handler takes the case when the placeholder ends
+// (takeFastCase). The placeholder is valid JSON ending as the case ends, from the case's last
+// string or number on (`{"":{"":[[1]]}}` for a case ending `1]]}}`): nlohmann quotes the
+// characters from there on as "last read" in a message about what follows the case. A refused
+// case is read by the SAX parser as it is.
+class CaseStream
+{
+  public:
+    CaseStream(ByteInput& in, std::string shown) : in_(in), shown_(std::move(shown))
+    {
+        buf_.resize(std::size_t(1) << 20);
+    }
+
+    ReadPosition pos;
+
+    bool atEnd()
+    {
+        prepare();
+        return !inPlaceholder() && begin_ == end_;
+    }
+    char current()
+    {
+        prepare();
+        return inPlaceholder() ? placeholder_[placed_] : buf_[begin_];
+    }
+    void next()
+    {
+        if (inPlaceholder())
+        {
+            if (++placed_ == placeholder_.size())
+            {
+                begin_ += skipped_.bytes;
+                skip(pos, skipped_);
+                delta_ += skipped_.bytes - placeholder_.size();
+                fastReady_ = true;
+            }
+            return;
+        }
+        const char c = buf_[begin_++];
+        pos.advance(c);
+        if (c == ',' && expect_ == Expect::Comma)
+            expect_ = Expect::Case;
+        else if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
+            expect_ = Expect::Nothing;
+    }
+
+    // What comes next in "cases": an entry (after its '['), or a comma and an entry (after one).
+    void expectCase(bool first) { expect_ = first ? Expect::Case : Expect::Comma; }
+    bool inPlaceholder() const { return placed_ < placeholder_.size(); }
+    // True, once, right after the parser read the last character of a placeholder.
+    bool takeFastCase(Case& c)
+    {
+        if (!fastReady_)
+            return false;
+        fastReady_ = false;
+        c = std::move(fast_);
+        return true;
+    }
+    // The offset in the input of the parser's offset `read` (placeholders count as their case).
+    std::size_t inputOffset(std::size_t read) const { return read + delta_; }
+
+  private:
+    // The largest case the fast path reads at once; a larger one goes to the SAX path, which
+    // bounds it by kMaxCaseJsonValues.
+    static constexpr std::size_t kMaxFastCaseBytes = std::size_t(16) << 20;
+    enum class Expect
+    {
+        Nothing,
+        Comma,
+        Case
+    };
+
+    void prepare()
+    {
+        if (inPlaceholder() || (begin_ == end_ && !fill(0)) || expect_ != Expect::Case ||
+            buf_[begin_] != '{')
+            return;
+        expect_ = Expect::Nothing;
+        if (scan() && parser_.parse(buf_.data() + begin_, skipped_.bytes, fast_))
+            makePlaceholder();
+    }
+
+    // The placeholder of the case just scanned: openers for the closers after its last token,
+    // then that token and what follows it.
+    void makePlaceholder()
+    {
+        const std::string_view tail(buf_.data() + begin_ + lastToken_, skipped_.bytes - lastToken_);
+        std::size_t after = 1; // past the token: a string (no escapes) or a number
+        if (tail[0] == '"')
+            after = tail.find('"', 1) + 1;
+        else
+            while (after < tail.size() && std::strchr("0123456789.eE+-", tail[after]) != nullptr)
+                ++after;
+        placeholder_.clear();
+        for (std::size_t i = tail.size(); i-- > after;)
+            if (tail[i] == '}')
+                placeholder_ += "{\"\":";
+            else if (tail[i] == ']')
+                placeholder_ += '[';
+        placeholder_ += tail;
+        placed_ = 0;
+    }
+
+    // Makes at least `want` bytes from begin_ available unless the input ends first; false when
+    // none is left.
+    bool fill(std::size_t want)
+    {
+        while (end_ - begin_ < std::max<std::size_t>(want, 1) && !eof_)
+        {
+            if (begin_ > 0)
+            {
+                std::memmove(buf_.data(), buf_.data() + begin_, end_ - begin_);
+                end_ -= begin_;
+                begin_ = 0;
+            }
+            if (end_ == buf_.size())
+                buf_.resize(buf_.size() * 2);
+            const std::size_t got = in_.read(buf_.data() + end_, buf_.size() - end_, shown_);
+            eof_ = got == 0;
+            end_ += got;
+        }
+        return end_ > begin_;
+    }
+
+    // Finds the end of the object at begin_ (skipped_), reading more input as needed. False when
+    // the fast path leaves it to the SAX path: unbalanced before the input ends, larger than
+    // kMaxFastCaseBytes, with a control character outside JSON's white space, or with a string
+    // the scan does not vouch for (an escape, a control character or a byte above 0x7F: simdjson
+    // and nlohmann might differ on it).
+    bool scan()
+    {
+        skipped_ = SkippedCase();
+        std::size_t depth = 0;
+        std::size_t i = 0;
+        const auto more = [&] // false when the case cannot be completed from here
+        { return !(i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_); };
+        for (;; ++i)
+        {
+            if (begin_ + i == end_ && !more())
+                return false;
+            auto c = static_cast<unsigned char>(buf_[begin_ + i]);
+            if (kOutside[c] == 0)
+                continue;
+            switch (c)
+            {
+            case '"': // to the closing quote, each byte checked
+                for (++i;; ++i)
+                {
+                    if (begin_ + i == end_ && !more())
+                        return false;
+                    c = static_cast<unsigned char>(buf_[begin_ + i]);
+                    if (c == '"')
+                        break;
+                    if (c == '\\' || c < 0x20 || c >= 0x80)
+                        return false;
+                }
+                break;
+            case '{':
+            case '[':
+                ++depth;
+                break;
+            case '}':
+            case ']':
+                if (--depth == 0)
+                {
+                    skipped_.bytes = i + 1;
+                    lastToken_ = lastTokenStart();
+                    return true;
+                }
+                break;
+            case '\n':
+                ++skipped_.newlines;
+                skipped_.prevNewline = skipped_.lastNewline;
+                skipped_.lastNewline = i;
+                break;
+            default: // not JSON white space, or above 0x7F
+                return false;
+            }
+        }
+    }
+
+    // Bytes the scan looks at outside strings: structure, newlines, and those it refuses (control
+    // characters other than JSON's white space, bytes above 0x7F).
+    static constexpr std::array<unsigned char, 256> kOutside = []
+    {
+        std::array<unsigned char, 256> t{};
+        for (int c = 0; c < 256; ++c)
+            t[std::size_t(c)] = (c < 0x20 && c != '\t' && c != '\r') || c >= 0x80 || c == '"' ||
+                                c == '{' || c == '[' || c == '}' || c == ']';
+        return t;
+    }();
+
+    // Where the last string or number of the case just scanned begins: after it come only white
+    // space and closing brackets (a case the fast path accepts has no true, false or null).
+    std::size_t lastTokenStart() const
+    {
+        const char* p = buf_.data() + begin_;
+        std::size_t i = skipped_.bytes;
+        while (i > 0 && std::strchr("}] \t\r\n", p[i - 1]) != nullptr)
+            --i;
+        if (i == 0)
+            return 0;
+        if (p[i - 1] == '"')
+        {
+            --i;
+            while (i > 0 && p[i - 1] != '"')
+                --i;
+            return i > 0 ? i - 1 : 0;
+        }
+        while (i > 0 && std::strchr("0123456789.eE+-", p[i - 1]) != nullptr)
+            --i;
+        return i;
+    }
+
+    ByteInput& in_;
+    std::string shown_;
+    std::vector<char> buf_;
+    std::size_t begin_ = 0, end_ = 0;
+    bool eof_ = false;
+    Expect expect_ = Expect::Nothing;
+    std::string placeholder_;   // of the case the fast path read
+    std::size_t placed_ = 0;    // characters of placeholder_ the parser read
+    std::size_t lastToken_ = 0; // where the last string or number of the case scanned begins
+    SkippedCase skipped_;
+    bool fastReady_ = false;
+    std::size_t delta_ = 0;
+    FastCaseParser parser_;
+    Case fast_;
+};
+
+// An input iterator over a CaseStream, for nlohmann's sax_parse.
+struct StreamIterator
 {
     using iterator_category = std::input_iterator_tag;
     using value_type = char;
@@ -178,27 +635,16 @@ struct TrackedIterator
     using pointer = const char*;
     using reference = char;
 
-    std::streambuf* in = nullptr; // nullptr: the end
-    ReadPosition* pos = nullptr;
+    CaseStream* in = nullptr; // nullptr: the end
 
-    bool atEnd() const { return in == nullptr || in->sgetc() == std::char_traits<char>::eof(); }
-    reference operator*() const { return std::char_traits<char>::to_char_type(in->sgetc()); }
-    TrackedIterator& operator++()
+    bool atEnd() const { return in == nullptr || in->atEnd(); }
+    reference operator*() const { return in->current(); }
+    StreamIterator& operator++()
     {
-        pos->advance(std::char_traits<char>::to_char_type(in->sbumpc()));
+        in->next();
         return *this;
     }
-    bool operator==(const TrackedIterator& o) const { return atEnd() == o.atEnd(); }
-};
-
-// A stream buffer over text in memory (parseCaseFile, pipes), without a copy.
-struct MemoryBuffer : std::streambuf
-{
-    explicit MemoryBuffer(const std::string& text)
-    {
-        char* p = const_cast<char*>(text.data()); // read only: setg needs char*
-        setg(p, p, p + text.size());
-    }
+    bool operator==(const StreamIterator& o) const { return atEnd() == o.atEnd(); }
 };
 
 class CaseFileHandler
@@ -214,27 +660,33 @@ class CaseFileHandler
     }
 
     // Reads the whole input; returns the file's comments and number of entries.
-    CaseFileSummary parse(std::streambuf& in)
+    CaseFileSummary parse(ByteInput& input)
     {
-        TrackedIterator first{&in, &pos_}, last{nullptr, &pos_};
+        CaseStream in(input, shown_);
+        stream_ = &in;
+        StreamIterator first{&in}, last{nullptr};
         if (!RJson::sax_parse(first, last, this))
             throw InputError(error_.empty() ? shown_ + ": invalid JSON" : error_);
         return finish();
     }
 
     // nlohmann's SAX interface.
-    bool null() { return scalar(nullptr); }
-    bool boolean(bool v) { return scalar(v); }
+    bool null() { return placeholder(0) || scalar(nullptr); }
+    bool boolean(bool v) { return placeholder(0) || scalar(v); }
     bool number_integer(std::int64_t v)
     {
+        if (placeholder(0))
+            return true;
         // "-0" is read as the integer 0: keep its sign, as the writer's -0.0 does.
-        if (v == 0 && literalStart(1) > 0 && pos_.lastMinus == literalStart(1) - 1)
+        if (v == 0 && literalStart(1) > 0 && stream_->pos.lastMinus == literalStart(1) - 1)
             return scalar(-0.0);
         return scalar(v);
     }
-    bool number_unsigned(std::uint64_t v) { return scalar(v); }
+    bool number_unsigned(std::uint64_t v) { return placeholder(0) || scalar(v); }
     bool number_float(double v, const std::string& literal)
     {
+        if (placeholder(0))
+            return true;
         // nlohmann refuses overflow itself (parse_error 406); underflow to 0 it passes silently.
         if (v == 0)
         {
@@ -246,14 +698,16 @@ class CaseFileHandler
         }
         return scalar(v);
     }
-    bool string(std::string& v) { return scalar(std::move(v)); }
+    bool string(std::string& v) { return placeholder(0) || scalar(std::move(v)); }
     bool binary(RJson::binary_t&) { return fail(offset(), "binary value"); } // not in JSON text
-    bool start_object(std::size_t) { return open(RJson::object(), true); }
-    bool start_array(std::size_t) { return open(RJson::array(), false); }
-    bool end_object() { return close(); }
-    bool end_array() { return close(); }
+    bool start_object(std::size_t) { return placeholder(1) || open(RJson::object(), true); }
+    bool start_array(std::size_t) { return placeholder(1) || open(RJson::array(), false); }
+    bool end_object() { return placeholder(-1) || close(); }
+    bool end_array() { return placeholder(-1) || close(); }
     bool key(std::string& k)
     {
+        if (placeholder(0))
+            return true;
         Frame& f = frames_.back();
         if (!f.keys.insert(k).second)
             return fail(keyStart(), fmt::format("invalid JSON: duplicate key \"{}\"", excerpt(k)));
@@ -264,7 +718,7 @@ class CaseFileHandler
                      const nlohmann::detail::exception& ex)
     {
         if (ex.id == 406) // number overflow: position is just past the literal
-            return fail(position - std::min(position, lastToken.size()),
+            return fail(stream_->inputOffset(position) - std::min(position, lastToken.size()),
                         fmt::format("number {} overflows a double", excerpt(lastToken)));
         // nlohmann's message quotes the last token whole (a 200 MB string): quote an excerpt.
         std::string what = ex.what();
@@ -280,7 +734,8 @@ class CaseFileHandler
         else
             what = excerpt(what, 300);
         // nlohmann's position is one past the offending character.
-        return fail(position == 0 ? 0 : position - 1, "invalid JSON: " + what);
+        return fail(position == 0 ? 0 : stream_->inputOffset(position) - 1,
+                    "invalid JSON: " + what);
     }
 
   private:
@@ -302,7 +757,26 @@ class CaseFileHandler
         std::size_t count = 0;
     };
 
-    std::size_t offset() const { return pos_.offset; }
+    std::size_t offset() const { return stream_->pos.offset; }
+
+    // The events of a placeholder (CaseStream) stand for a case the fast path read: when the
+    // placeholder ends, that case is the next entry of "cases". `open`: +1 for the start of an
+    // object or array, -1 for its end, 0 otherwise.
+    bool placeholder(int open)
+    {
+        if (placeholderDepth_ == 0 && !(open > 0 && stream_->inPlaceholder()))
+            return false;
+        placeholderDepth_ += open;
+        Case fast;
+        if (placeholderDepth_ == 0 && stream_->takeFastCase(fast))
+        {
+            ++frames_.back().count; // as place() counts an entry
+            consume_(acceptCase(std::move(fast), entries_, base_, names_));
+            ++entries_;
+            stream_->expectCase(false);
+        }
+        return true;
+    }
 
     // Byte offset where the literal of `length` bytes just read starts. The lexer reads one
     // character past a number unless the text ends; a number literal ends with a digit and is
@@ -310,18 +784,18 @@ class CaseFileHandler
     std::size_t literalStart(std::size_t length) const
     {
         std::size_t end = offset();
-        if (end > 0 && !std::isdigit(static_cast<unsigned char>(pos_.last)))
+        if (end > 0 && !std::isdigit(static_cast<unsigned char>(stream_->pos.last)))
             --end;
         return end - std::min(end, length);
     }
 
     // Byte offset of the opening quote of the key just read (the lexer stopped at its closing
     // quote).
-    std::size_t keyStart() const { return pos_.stringStart; }
+    std::size_t keyStart() const { return stream_->pos.stringStart; }
 
     bool fail(std::size_t at, const std::string& message)
     {
-        const auto [line, column] = pos_.lineColumn(at);
+        const auto [line, column] = stream_->pos.lineColumn(at);
         error_ = fmt::format("{}:{}:{}: {}", shown_, line, column, message);
         return false;
     }
@@ -347,7 +821,7 @@ class CaseFileHandler
         case Role::Shallow:
             return placeComment(f, std::move(v));
         case Role::Cases:
-            return startCase(f, std::move(v), kept, role);
+            return startCase(std::move(v), kept, role);
         case Role::Kept:
             return placeKept(f, std::move(v), kept, role);
         }
@@ -395,12 +869,9 @@ class CaseFileHandler
         return true;
     }
 
-    // An entry of "cases" begins: kept apart until complete (afterValue), at most
-    // kMaxCasesPerFile of them.
-    bool startCase(const Frame& f, RJson&& v, RJson*& kept, Role& role)
+    // An entry of "cases" begins: kept apart until complete (afterValue).
+    bool startCase(RJson&& v, RJson*& kept, Role& role)
     {
-        if (f.count > kMaxCasesPerFile)
-            return fail(offset(), fmt::format("more than {} cases in one file", kMaxCasesPerFile));
         case_ = std::move(v);
         caseValues_ = 1;
         caseTruncated_ = false;
@@ -452,6 +923,8 @@ class CaseFileHandler
         f.role = kept || role == Role::Cases ? role : Role::Dropped;
         f.object = object;
         frames_.push_back(std::move(f));
+        if (frames_.back().role == Role::Cases)
+            stream_->expectCase(true);
         return true;
     }
 
@@ -470,6 +943,7 @@ class CaseFileHandler
             consume_(readCase(case_, entries_, caseTruncated_, base_, names_));
             ++entries_;
             case_ = RJson();
+            stream_->expectCase(false);
         }
     }
 
@@ -513,7 +987,8 @@ class CaseFileHandler
     std::string shown_; // the file as messages name it
     std::string base_;  // its last component as labels name it
     const std::function<void(CaseEntry&&)>& consume_;
-    ReadPosition pos_; // TrackedIterator's record
+    CaseStream* stream_ = nullptr; // the input being parsed, and its position
+    int placeholderDepth_ = 0;     // objects and arrays of a placeholder open
     std::string error_;
     std::vector<Frame> frames_;
     RJson top_;
@@ -521,10 +996,10 @@ class CaseFileHandler
     std::size_t caseValues_ = 0;
     bool caseTruncated_ = false;
     std::size_t entries_ = 0;
-    std::set<std::string> names_;
+    NameSet names_;
 };
 
-CaseFile collect(std::streambuf& in, const std::string& sourceName)
+CaseFile collect(ByteInput& in, const std::string& sourceName)
 {
     CaseFile file;
     file.path = sourceName;
@@ -533,13 +1008,23 @@ CaseFile collect(std::streambuf& in, const std::string& sourceName)
     file.comments = CaseFileHandler(sourceName, keep).parse(in).comments;
     return file;
 }
+
+// A case file opened for reading, its type checked first.
+int openCaseFile(const std::string& path)
+{
+    openedType(path);
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        throw InputError(fmt::format("{}: cannot open the file", shownPath(path)));
+    return fd;
+}
 } // namespace
 
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName)
 {
     if (!text.empty() && isBinaryCaseFileStart(static_cast<unsigned char>(text[0])))
         return parseBinaryCaseFile(text, sourceName); // the binary form: case_binary.hpp
-    MemoryBuffer in(text);
+    ByteInput in{std::string_view(text)};
     return collect(in, sourceName);
 }
 
@@ -547,24 +1032,56 @@ CaseFile readCaseFile(const std::string& path)
 {
     if (isBinaryCaseFile(path)) // recognised by its first byte: case_binary.hpp
         return readBinaryCaseFile(path);
-    return parseCaseFile(readFile(path), path);
+    ByteInput in(openCaseFile(path));
+    return collect(in, path);
 }
 
 CaseFileSummary streamCaseFile(const std::string& path,
                                const std::function<void(CaseEntry&&)>& consume)
 {
-    if (isBinaryCaseFile(path)) // recognised by its first byte: case_binary.hpp
-        return streamBinaryCaseFile(path, consume);
-    if (openedType(path) == fs::file_type::fifo) // read once, whole: at most kMaxCaseFileBytes
+    return streamCaseFile(path, path, consume);
+}
+
+CaseFileSummary streamCaseFile(const std::string& readPath, const std::string& sourceName,
+                               const std::function<void(CaseEntry&&)>& consume)
+{
+    if (isBinaryCaseFile(readPath)) // recognised by its first byte: case_binary.hpp
+        return streamBinaryCaseFile(readPath, sourceName, consume);
+    ByteInput in(openCaseFile(readPath));
+    return CaseFileHandler(sourceName, consume).parse(in);
+}
+
+PipeCopy::PipeCopy(const std::string& pipe)
+{
+    const char* dir = std::getenv("TMPDIR");
+    std::string name =
+        std::string(dir != nullptr && *dir != 0 ? dir : "/tmp") + "/gjk-validate-pipe-XXXXXX";
+    fd_ = ::mkostemp(name.data(), O_CLOEXEC);
+    if (fd_ < 0)
+        throw OutputError(fmt::format("{}: cannot make a copy of the pipe {}: {}", excerpt(name),
+                                      shownPath(pipe), std::strerror(errno)));
+    ::unlink(name.c_str()); // unnamed from now on: gone with the descriptor
+    path_ = fmt::format("/proc/self/fd/{}", fd_);
+    try
     {
-        const std::string text = readFile(path);
-        MemoryBuffer in(text);
-        return CaseFileHandler(path, consume).parse(in);
+        ByteInput in(openCaseFile(pipe));
+        std::vector<char> buffer(std::size_t(1) << 20);
+        while (const std::size_t got = in.read(buffer.data(), buffer.size(), shownPath(pipe)))
+            if (!writeAllBytes(fd_, buffer.data(), got))
+                throw OutputError(fmt::format("{}: cannot copy the pipe {}: {}", excerpt(name),
+                                              shownPath(pipe), std::strerror(errno)));
     }
-    std::filebuf in;
-    if (in.open(path, std::ios::in | std::ios::binary) == nullptr)
-        throw InputError(fmt::format("{}: cannot open the file", shownPath(path)));
-    return CaseFileHandler(path, consume).parse(in);
+    catch (...)
+    {
+        ::close(fd_);
+        throw;
+    }
+}
+
+PipeCopy::~PipeCopy()
+{
+    if (fd_ >= 0)
+        ::close(fd_);
 }
 
 } // namespace gjkval

@@ -56,32 +56,30 @@ struct CaseFile
 inline constexpr const char* kCaseFormat = "gjk-cases/1";
 
 // Limits of the reader (docs/case-files.md, "Case files"): what a hostile file can cost in memory
-// is bounded by these, not by what the file claims. Files and JSON beyond them are refused, cases
-// beyond them are rejected.
-inline constexpr std::size_t kMaxCaseFileBytes = std::size_t(256) << 20; // 256 MiB
-inline constexpr std::size_t kMaxJsonDepth = 64;           // a case file needs 6 levels
-inline constexpr std::size_t kMaxCasesPerFile = 1'000'000; // entries of "cases"
-inline constexpr std::size_t kMaxComments = 10'000;        // entries of "comments"
+// is bounded by these, not by what the file claims, nor by its size: a file of any number of cases
+// is read as a stream. JSON beyond them is refused, cases beyond them are rejected.
+inline constexpr std::size_t kMaxJsonDepth = 64;          // a case file needs 6 levels
+inline constexpr std::size_t kMaxComments = 10'000;       // entries of "comments"
 inline constexpr std::size_t kMaxCommentBytes = 64 << 10; // one comment, a case's source or comment
 inline constexpr std::size_t kMaxCaseNameBytes = 256;     // one case name
 inline constexpr std::size_t kMaxShapePoints = 1'000'000; // points of one shape
 inline constexpr std::size_t kMaxCaseJsonValues = 8'000'000; // JSON values of one case
 
-// Reads and checks a case file. A file that is unreadable, not a regular file or a pipe, larger
-// than kMaxCaseFileBytes, not JSON (also: nested deeper than kMaxJsonDepth, a duplicate key, a
-// number that overflows a double or is not 0 but rounds to 0) or not gjk-cases/1 throws InputError
-// naming the file (and line:column where the JSON is at fault). A case with an invalid field is
-// kept as a rejected entry naming file, case and field; the other cases are valid. Every string the
-// reader returns (names, labels, comments, reasons) is valid UTF-8; user strings in messages and
-// labels are quoted through excerpt().
+// Reads and checks a case file. A file that is unreadable, not a regular file or a pipe, not JSON
+// (also: nested deeper than kMaxJsonDepth, a duplicate key, a number that overflows a double or is
+// not 0 but rounds to 0) or not gjk-cases/1 throws InputError naming the file (and line:column
+// where the JSON is at fault). A case with an invalid field is kept as a rejected entry naming
+// file, case and field; the other cases are valid. Every string the reader returns (names,
+// labels, comments, reasons) is valid UTF-8; user strings in messages and labels are quoted
+// through excerpt().
 CaseFile readCaseFile(const std::string& path);
 CaseFile parseCaseFile(const std::string& text, const std::string& sourceName);
 
 // The same reader as a stream: each entry goes to `consume` in file order as soon as it is read,
-// and only the current case's JSON and the names seen (duplicates are rejected) are kept, so that
-// memory does not grow with the file. A regular file is read from disk as it is parsed; a pipe is
-// read whole first (within kMaxCaseFileBytes). Throws InputError as readCaseFile, possibly after
-// some entries were consumed (a file that is not JSON at its end).
+// and only the current case's JSON and the names seen (duplicates are rejected; NameSet,
+// case_fields.hpp) are kept, so that memory hardly grows with the file. A regular file or a pipe
+// is read as it is parsed. Throws InputError as readCaseFile, possibly after some entries were
+// consumed (a file that is not JSON at its end).
 struct CaseFileSummary
 {
     std::vector<std::string> comments;
@@ -89,6 +87,27 @@ struct CaseFileSummary
 };
 CaseFileSummary streamCaseFile(const std::string& path,
                                const std::function<void(CaseEntry&&)>& consume);
+// The same, reading `readPath` (a PipeCopy's) but naming `sourceName` in messages and labels.
+CaseFileSummary streamCaseFile(const std::string& readPath, const std::string& sourceName,
+                               const std::function<void(CaseEntry&&)>& consume);
+
+// A pipe read once and kept for more reads: its bytes copied, as they arrive, into an unnamed
+// temporary file (in TMPDIR, else /tmp) that lasts as long as this object, so that a campaign
+// can check a piped case file and then stream it without holding it in memory. InputError when
+// the pipe cannot be read, OutputError when the copy cannot be written.
+class PipeCopy
+{
+  public:
+    explicit PipeCopy(const std::string& pipe);
+    ~PipeCopy();
+    PipeCopy(const PipeCopy&) = delete;
+    PipeCopy& operator=(const PipeCopy&) = delete;
+    const std::string& path() const { return path_; } // /proc/self/fd/N: readable, not listed
+
+  private:
+    int fd_ = -1;
+    std::string path_;
+};
 
 // Writes a gjk-cases/1 file: one case per line, numbers in shortest round-trip form.
 std::string caseFileText(const std::vector<std::string>& comments, const std::vector<Case>& cases);

@@ -103,23 +103,28 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
     in.name = std::move(name);
     in.source = "file";
     // Read once up front: a file that is not a case file is refused before any work.
-    std::shared_ptr<CaseFile> whole; // a pipe cannot be read twice: it is kept
+    std::shared_ptr<CaseFile> whole;
+    std::shared_ptr<PipeCopy> copy; // a pipe cannot be read twice: its copy is
     CaseFileSummary summary;
     std::error_code ec;
-    if (hold || fs::status(path, ec).type() == fs::file_type::fifo)
+    if (hold)
     {
         whole = std::make_shared<CaseFile>(readCaseFile(path));
         summary.comments = whole->comments;
         summary.entries = whole->entries.size();
     }
     else
-        summary = streamCaseFile(path, [](CaseEntry&&) {});
+    {
+        if (fs::status(path, ec).type() == fs::file_type::fifo)
+            copy = std::make_shared<PipeCopy>(path);
+        summary = streamCaseFile(copy ? copy->path() : path, path, [](CaseEntry&&) {});
+    }
     in.reason = summary.comments.empty() ? "cases from " + path : summary.comments.front();
     in.count = summary.entries;
     in.input = {{"file", path}, {"count", summary.entries}};
-    in.stream = [path, whole](std::size_t chunkCases,
-                              const std::function<void(CaseChunk&)>& consume,
-                              const CampaignInput::SkipChunk&, int) // read in order, on one thread
+    in.stream = [path, whole, copy](std::size_t chunkCases,
+                                    const std::function<void(CaseChunk&)>& consume,
+                                    const CampaignInput::SkipChunk&, int) // in order, on one thread
     {
         chunked(
             [&](const std::function<void(CaseEntry &&)>& each)
@@ -128,7 +133,7 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
                     for (auto e : whole->entries)
                         each(std::move(e));
                 else
-                    streamCaseFile(path, each);
+                    streamCaseFile(copy ? copy->path() : path, path, each);
             },
             chunkCases, consume);
     };

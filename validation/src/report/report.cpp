@@ -863,6 +863,12 @@ std::string runLines(const Json& r)
         t["gjk_cases_per_s"].get<double>(), e["gjk"].get<double>(), r["variants"].size(),
         t["witness_cases_per_s"].get<double>(), e["witness"].get<double>(),
         e["timing"].get<double>());
+    // The other phases (docs/report-schema.md, "context"), when the report has them.
+    if (e.contains("setup"))
+        s += fmt::format("and setup {:.1f} s, cases made or read {:.1f} s, fold {:.1f} s, report "
+                         "{:.1f} s\n",
+                         e["setup"].get<double>(), e["generate"].get<double>(),
+                         e["fold"].get<double>(), e["report"].get<double>());
     s += witnessFallbackLine(r);
     std::vector<const Json*> families;
     for (const auto& f : r["families"])
