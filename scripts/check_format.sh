@@ -3,7 +3,7 @@
 # format some constructs differently:
 #   C and C++  .clang-format, with Debian 12's clang-format 14 (every C/C++ source git tracks,
 #              the .in templates too);
-#   Python     black 23.1 (Debian 12's), line length 100 as the C++;
+#   Python     black 23.1 (Debian 12's), line length 100 as the C++ (pyproject.toml, [tool.black]);
 #   JavaScript prettier, pinned by scripts/format/package-lock.json and installed into
 #              build/npm/format/ by scripts/setup_npm.sh (.prettierrc.json: width 100 as the C++).
 #   scripts/check_format.sh [--fix] [cpp|python|js ...]   (from anywhere; no language: all three;
@@ -63,13 +63,13 @@ check_python() {
   command -v black >/dev/null && black --version | grep -q ' 23\.1\.' || skip "black 23.1"
   mapfile -t files < <(git ls-files '*.py' '*.pyi' ':!docs/peers/repro/*')
   if [[ $fix == 1 ]]; then
-    black --quiet --line-length 100 "${files[@]}"
+    black --quiet "${files[@]}"
     echo "check_format: formatted ${#files[@]} Python files with black"
     return 0
   fi
   # black --check names each file it would change on stderr: "would reformat FILE".
   local out
-  if ! out=$(black --check --line-length 100 "${files[@]}" 2>&1); then
+  if ! out=$(black --check "${files[@]}" 2>&1); then
     grep '^would reformat ' <<<"$out" |
       sed 's/^would reformat \(.*\)$/black: \1: would reformat (scripts\/check_format.sh --fix python rewrites it)/'
     grep -v '^would reformat \|^Oh no\|files\? would be reformatted\|^All done' <<<"$out" >&2 || true
