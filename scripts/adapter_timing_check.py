@@ -21,9 +21,24 @@ import tempfile
 
 
 def bench(exe, plugin, order, cases, out):
-    subprocess.run([exe, "bench", "--family", "random:{}".format(cases), "--variants",
-                    ",".join(order), "--plugin", plugin, "--passes", "15", "--json", out],
-                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(
+        [
+            exe,
+            "bench",
+            "--family",
+            "random:{}".format(cases),
+            "--variants",
+            ",".join(order),
+            "--plugin",
+            plugin,
+            "--passes",
+            "15",
+            "--json",
+            out,
+        ],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
     v = json.load(open(out))["variants"]
     return v["box2d-2.4.1-bridge"]["ns_per_query"] / v["box2d-2.4.1"]["ns_per_query"]
 
@@ -39,17 +54,27 @@ def main():
     with tempfile.TemporaryDirectory() as tmp:
         wrapper = os.path.join(tmp, "box2d-bridge")
         with open(wrapper, "w") as f:
-            f.write("#!/bin/sh\nexec {0}/gjk2d-adapter-bridge {0}/gjk2d-box2d.so -bridge\n"
-                    .format(plugins))
+            f.write(
+                "#!/bin/sh\nexec {0}/gjk2d-adapter-bridge {0}/gjk2d-box2d.so -bridge\n".format(
+                    plugins
+                )
+            )
         os.chmod(wrapper, 0o755)
         orders = [["box2d-2.4.1", "box2d-2.4.1-bridge"], ["box2d-2.4.1-bridge", "box2d-2.4.1"]]
-        ratios = [bench(exe, wrapper, orders[r % 2], a.cases, os.path.join(tmp, "b.json"))
-                  for r in range(a.rounds)]
+        ratios = [
+            bench(exe, wrapper, orders[r % 2], a.cases, os.path.join(tmp, "b.json"))
+            for r in range(a.rounds)
+        ]
     median = statistics.median(ratios)
-    print("bridge / shared library, ns per query, per round: " +
-          " ".join("{:.3f}".format(r) for r in ratios))
-    print("median {:.3f} ({} rounds of {} random cases, 15 passes each)".format(
-        median, a.rounds, a.cases))
+    print(
+        "bridge / shared library, ns per query, per round: "
+        + " ".join("{:.3f}".format(r) for r in ratios)
+    )
+    print(
+        "median {:.3f} ({} rounds of {} random cases, 15 passes each)".format(
+            median, a.rounds, a.cases
+        )
+    )
     return 0 if 1 / 1.15 <= median <= 1.15 else 1
 
 

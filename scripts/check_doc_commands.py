@@ -63,53 +63,107 @@ RULES = [
     (r"^scripts/test\.sh\b", "ci", None, "the README's test command: .ci/run runs it"),
     (r"^ctest --preset", "ci", None, "scripts/test.sh runs it"),
     (r"(^|\s)scripts/fuzz\.sh\b", "ci", None, "scripts/test.sh runs `scripts/fuzz.sh 30`"),
-    (r"^cmake -S \. -B build/h20|^ctest --test-dir build/h20|^tests/consumer/flag_table\.sh",
-     "ci", None, "the flag matrix: the release build's `ctest -L flags` runs it"),
-    (r"^scripts/bench\.sh\b", "long", None,
-     "builds and runs every benchmark (minutes); speed.md's next commands run its parts"),
-    (r"^python3 scripts/adapter_timing_check\.py\b", "long", None,
-     "a timing comparison whose verdict depends on the machine's load"),
-    (r"^scripts/mutate\.py( --fast)?\s*$|^scripts/mutate\.py --(rev|only)\b", "long", None,
-     "the mutation run builds and tests every mutant (tens of minutes)"),
-    (r"^valgrind --tool=callgrind\b", "shrink", (r"random:\d+", "random:200"),
-     "callgrind runs the campaign some 50 times slower"),
-    (r"GJK2D_TRUTH_RANDOM_COUNT=\d{6,}", "shrink",
-     (r"GJK2D_TRUTH_RANDOM_COUNT=\d+", "GJK2D_TRUTH_RANDOM_COUNT=20000"), "1e6 cases both ways"),
+    (
+        r"^cmake -S \. -B build/h20|^ctest --test-dir build/h20|^tests/consumer/flag_table\.sh",
+        "ci",
+        None,
+        "the flag matrix: the release build's `ctest -L flags` runs it",
+    ),
+    (
+        r"^scripts/bench\.sh\b",
+        "long",
+        None,
+        "builds and runs every benchmark (minutes); speed.md's next commands run its parts",
+    ),
+    (
+        r"^python3 scripts/adapter_timing_check\.py\b",
+        "long",
+        None,
+        "a timing comparison whose verdict depends on the machine's load",
+    ),
+    (
+        r"^scripts/mutate\.py( --fast)?\s*$|^scripts/mutate\.py --(rev|only)\b",
+        "long",
+        None,
+        "the mutation run builds and tests every mutant (tens of minutes)",
+    ),
+    (
+        r"^valgrind --tool=callgrind\b",
+        "shrink",
+        (r"random:\d+", "random:200"),
+        "callgrind runs the campaign some 50 times slower",
+    ),
+    (
+        r"GJK2D_TRUTH_RANDOM_COUNT=\d{6,}",
+        "shrink",
+        (r"GJK2D_TRUTH_RANDOM_COUNT=\d+", "GJK2D_TRUTH_RANDOM_COUNT=20000"),
+        "1e6 cases both ways",
+    ),
     (r"--seconds \d+", "shrink", ("--seconds \\d+", "--seconds 2"), "search runs 600 s"),
     # Not repro or explain: they name one case of the family, which a smaller one may not hold.
-    (r"^(?!.*gjk-validate (repro|explain)\b).*random:\d{6,}", "shrink",
-     (r"random:\d{6,}", "random:3000"), "1e5 to 1e7 cases"),
-    (r"random:\d{5}\b.*--per-case", "shrink", (r"random:\d{5}\b", "random:3000"),
-     "every variant's answer of 1e4 to 1e5 cases written to cases.jsonl"),
-    (r"gjk-validate run --peers\b(?!.*--no-timing)(?!.*--passes)", "shrink", (r"$", " --passes 2"),
-     "the peers' timing phase: 15 passes of eight peers, 80 of the run's 90 s"),
-    (r"python/examples/numpy_gjk\.py --out \S+$", "shrink",
-     (r"$", " --random 300 --hard 10 --engine 30 --passes 1"),
-     "docs/python.md's worked example: two campaigns of a GJK in NumPy, 40 s"),
-    (r"pip install --no-build-isolation \.$", "shrink",
-     (r"$", " --config-settings build-dir=build/release"),
-     "the wheel's backend would build the module from scratch: the build under test's is packed"),
-    (r"-m build --wheel --no-isolation\b", "shrink", (r"$", " -C build-dir=build/release"),
-     "the wheel's backend would build the module from scratch: the build under test's is packed"),
-    (r"--benchmark_min_time=(0\.\d*[1-9]\d*[0-9]|0\.[0-9][1-9]|0\.[1-9]|[1-9])", "shrink",
-     (r"--benchmark_min_time=[0-9.]+", "--benchmark_min_time=0.001"),
-     "each Google Benchmark program runs for minutes"),
+    (
+        r"^(?!.*gjk-validate (repro|explain)\b).*random:\d{6,}",
+        "shrink",
+        (r"random:\d{6,}", "random:3000"),
+        "1e5 to 1e7 cases",
+    ),
+    (
+        r"random:\d{5}\b.*--per-case",
+        "shrink",
+        (r"random:\d{5}\b", "random:3000"),
+        "every variant's answer of 1e4 to 1e5 cases written to cases.jsonl",
+    ),
+    (
+        r"gjk-validate run --peers\b(?!.*--no-timing)(?!.*--passes)",
+        "shrink",
+        (r"$", " --passes 2"),
+        "the peers' timing phase: 15 passes of eight peers, 80 of the run's 90 s",
+    ),
+    (
+        r"python/examples/numpy_gjk\.py --out \S+$",
+        "shrink",
+        (r"$", " --random 300 --hard 10 --engine 30 --passes 1"),
+        "docs/python.md's worked example: two campaigns of a GJK in NumPy, 40 s",
+    ),
+    (
+        r"pip install --no-build-isolation \.$",
+        "shrink",
+        (r"$", " --config-settings build-dir=build/release"),
+        "the wheel's backend would build the module from scratch: the build under test's is packed",
+    ),
+    (
+        r"-m build --wheel --no-isolation\b",
+        "shrink",
+        (r"$", " -C build-dir=build/release"),
+        "the wheel's backend would build the module from scratch: the build under test's is packed",
+    ),
+    (
+        r"--benchmark_min_time=(0\.\d*[1-9]\d*[0-9]|0\.[0-9][1-9]|0\.[1-9]|[1-9])",
+        "shrink",
+        (r"--benchmark_min_time=[0-9.]+", "--benchmark_min_time=0.001"),
+        "each Google Benchmark program runs for minutes",
+    ),
 ]
 
 # The optional parts a documented command may need: (name, pattern on the command, the phrase that
 # marks it in the doc, the file of the build that is there when the part is built, how to get it).
 # A user's clone has no Box2D v3 sources (they are in no Debian package): README.md, "Box2D v3".
 OPTIONAL = [
-    ("box2d-v3", r"--against box2d-v3\b|gjk2d-box2d3\.so|\bbox2d-3-[0-9a-f]{6,}\b",
-     "needs the Box2D v3 sources",
-     "validation/plugins/gjk2d-box2d3.so",
-     "name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE (README.md, \"Box2D v3\")"),
+    (
+        "box2d-v3",
+        r"--against box2d-v3\b|gjk2d-box2d3\.so|\bbox2d-3-[0-9a-f]{6,}\b",
+        "needs the Box2D v3 sources",
+        "validation/plugins/gjk2d-box2d3.so",
+        'name a Box2D v3 source tree in GJK2D_BOX2D3_SOURCE (README.md, "Box2D v3")',
+    ),
 ]
 
 SUBCOMMANDS = ["run", "generate", "explain", "bench", "search", "list", "compare", "merge", "repro"]
 # A placeholder: <...>, [...], A|B, "...", or one of the upper-case names the docs use for one.
-PLACEHOLDER = re.compile(r"<[^>]*>|\[[^\]]*\]|\w\|\w|\.\.\.|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
-                         r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b")
+PLACEHOLDER = re.compile(
+    r"<[^>]*>|\[[^\]]*\]|\w\|\w|\.\.\.|\b(FILE|CASE|OUT|NAME|REV|ID|DIR|SPEC|N|"
+    r"SECONDS\w*|TARGET\w*|[A-Z]+_[A-Z_]+)\b"
+)
 COMMAND_WORD = re.compile(r"^(gjk-validate|build/|scripts/|cmake|ctest|python3)\b")
 # A fence opens or closes a code block: three or more backticks, an info string without backticks
 # (CommonMark; "```` ```sh ```` block" is inline code, not a fence).
@@ -144,8 +198,14 @@ def fenced_commands(path):
         comment = re.search(r"(^|\s)#(.*)$", text)
         command = re.sub(r"(^|\s)#.*$", "", text).strip()
         if command:
-            out.append((start, re.sub(r"\s+", " ", command), int(expect.group(1)) if expect else 0,
-                        comment.group(2) if comment else ""))
+            out.append(
+                (
+                    start,
+                    re.sub(r"\s+", " ", command),
+                    int(expect.group(1)) if expect else 0,
+                    comment.group(2) if comment else "",
+                )
+            )
     return out
 
 
@@ -250,19 +310,24 @@ def check_links(errors):
         for no, line in enumerate(path.read_text().splitlines(), 1):
             fenced = fenced != bool(FENCE.match(line))
             if not fenced and line.startswith("    ") and COMMAND_WORD.match(line.strip()):
-                errors.append(f"{path.relative_to(ROOT)}:{no}: a command in an indented block: "
-                              "put it in a ```sh block, where it is run")
+                errors.append(
+                    f"{path.relative_to(ROOT)}:{no}: a command in an indented block: "
+                    "put it in a ```sh block, where it is run"
+                )
             for target, _ in LINK.findall(line):
                 if re.match(r"^[a-z]+:", target):
                     continue
                 if not (path.parent / target).exists():
-                    errors.append(f"{path.relative_to(ROOT)}:{no}: link to '{target}', which is not "
-                                  "in the repository")
+                    errors.append(
+                        f"{path.relative_to(ROOT)}:{no}: link to '{target}', which is not "
+                        "in the repository"
+                    )
 
 
 def check_presets(build, errors):
     """The release preset's displayName names the -O level that CMAKE_CXX_FLAGS_RELEASE has."""
     import json
+
     presets = json.loads((ROOT / "CMakePresets.json").read_text())["configurePresets"]
     release = next(p for p in presets if p["name"] == "release")
     cache = (build / "CMakeCache.txt").read_text()
@@ -270,8 +335,10 @@ def check_presets(build, errors):
     said = re.findall(r"-O\d", release["displayName"])
     real = re.findall(r"-O\d", flags)
     if said != real[-1:]:
-        errors.append(f"CMakePresets.json: release displayName says {said}, the build uses "
-                      f"{real[-1:]} ({flags})")
+        errors.append(
+            f"CMakePresets.json: release displayName says {said}, the build uses "
+            f"{real[-1:]} ({flags})"
+        )
 
 
 def lacking_part(rel, no, command, marks, build, errors):
@@ -282,8 +349,10 @@ def lacking_part(rel, no, command, marks, build, errors):
         if not re.search(pattern, command):
             continue
         if phrase.lower() not in re.sub(r"\s+", " ", marks).lower():
-            errors.append(f"{rel}:{no}: `{command}` needs an optional part ({name}): say "
-                          f"\"{phrase}\" beside it (its # comment, or its paragraph)")
+            errors.append(
+                f"{rel}:{no}: `{command}` needs an optional part ({name}): say "
+                f'"{phrase}" beside it (its # comment, or its paragraph)'
+            )
         if not (build / built).exists():
             reason = f"{phrase}, not given to this build: {how}"
     return reason
@@ -334,8 +403,12 @@ def main():
         print(f"check_doc_commands: no {exe}: build gjk-validate first", file=sys.stderr)
         return 2
     # OpenMPI refuses to run as root (CI, containers) unless told twice (docs/cli.md, "Shards, merge, MPI, resume").
-    env = dict(os.environ, PATH=f"{build / 'validation'}:{os.environ['PATH']}",
-               OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    env = dict(
+        os.environ,
+        PATH=f"{build / 'validation'}:{os.environ['PATH']}",
+        OMPI_ALLOW_RUN_AS_ROOT="1",
+        OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+    )
     errors = []
     counts = {"run": 0, "shrink": 0, "ci": 0, "long": 0, "synopsis": 0, "repeat": 0, "skipped": 0}
     latest_before = repository_latest()
@@ -365,14 +438,19 @@ def main():
         print(f"{rel}:{no}: {status} in {took:.1f} s (exit {r.returncode}): {shown}", flush=True)
         if r.returncode != expect:
             tail = "\n".join((r.stdout + r.stderr).strip().splitlines()[-8:])
-            errors.append(f"{rel}:{no}: `{shown}` exited {r.returncode}, expected {expect}:\n"
-                          f"{tail}")
-    print("commands: {run} run as written, {shrink} shrunk, {ci} run by CI elsewhere, {long} not "
-          "run (long), {synopsis} synopses option-checked, {repeat} repeats, {skipped} skipped "
-          "(an optional part not built)".format(**counts))
+            errors.append(
+                f"{rel}:{no}: `{shown}` exited {r.returncode}, expected {expect}:\n" f"{tail}"
+            )
+    print(
+        "commands: {run} run as written, {shrink} shrunk, {ci} run by CI elsewhere, {long} not "
+        "run (long), {synopsis} synopses option-checked, {repeat} repeats, {skipped} skipped "
+        "(an optional part not built)".format(**counts)
+    )
     if repository_latest() != latest_before:
-        errors.append("a documented command replaced the repository's reports/latest/ (a "
-                      "person's default campaign): commands must write in the scratch directory")
+        errors.append(
+            "a documented command replaced the repository's reports/latest/ (a "
+            "person's default campaign): commands must write in the scratch directory"
+        )
     if errors:
         print("\n".join(errors), file=sys.stderr)
         return 1

@@ -94,7 +94,9 @@ def check_doc(path, snippets, strict, fix, used):
             out.append(line)
             fence = snippets[name][2] if name in snippets else "```cpp"
             if i + 1 >= len(lines) or lines[i + 1] != fence:
-                errors.append(f"{rel}:{i + 1}: snippet marker '{name}' not followed by a {fence} fence")
+                errors.append(
+                    f"{rel}:{i + 1}: snippet marker '{name}' not followed by a {fence} fence"
+                )
                 i += 1
                 continue
             j = i + 2
@@ -103,9 +105,11 @@ def check_doc(path, snippets, strict, fix, used):
             if j == len(lines):
                 errors.append(f"{rel}:{i + 2}: unterminated code block")
                 return errors, None
-            body = lines[i + 2:j]
+            body = lines[i + 2 : j]
             if name not in snippets:
-                errors.append(f"{rel}:{i + 1}: unknown snippet '{name}' (known: {', '.join(sorted(snippets))})")
+                errors.append(
+                    f"{rel}:{i + 1}: unknown snippet '{name}' (known: {', '.join(sorted(snippets))})"
+                )
                 new = body
             else:
                 used.add(name)
@@ -114,23 +118,31 @@ def check_doc(path, snippets, strict, fix, used):
                     if fix:
                         changed = True
                     else:
-                        errors.append(f"{rel}:{i + 3}: block '{name}' differs from {snippets[name][0]}:")
-                        errors.extend("    " + d for d in difflib.unified_diff(
-                            body, new, str(rel), str(snippets[name][0]), lineterm="", n=1))
+                        errors.append(
+                            f"{rel}:{i + 3}: block '{name}' differs from {snippets[name][0]}:"
+                        )
+                        errors.extend(
+                            "    " + d
+                            for d in difflib.unified_diff(
+                                body, new, str(rel), str(snippets[name][0]), lineterm="", n=1
+                            )
+                        )
             out.append(fence)
             out.extend(new if fix else body)
             out.append(lines[j])
             i = j + 1
             continue
         if strict and line.startswith("```cpp"):
-            errors.append(f"{rel}:{i + 1}: a ```cpp block without a '<!-- snippet: NAME -->' marker "
-                          "(doc code must come from examples/)")
+            errors.append(
+                f"{rel}:{i + 1}: a ```cpp block without a '<!-- snippet: NAME -->' marker "
+                "(doc code must come from examples/)"
+            )
         # Skip over any other fenced block so that its contents are not read as markers.
         if FENCE.match(line):
             j = i + 1
             while j < len(lines) and not FENCE.match(lines[j]):
                 j += 1
-            out.extend(lines[i:j + 1])
+            out.extend(lines[i : j + 1])
             i = j + 1
             continue
         out.append(line)
@@ -141,7 +153,9 @@ def check_doc(path, snippets, strict, fix, used):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--fix", action="store_true", help="rewrite the doc blocks from the examples")
+    parser.add_argument(
+        "--fix", action="store_true", help="rewrite the doc blocks from the examples"
+    )
     args = parser.parse_args()
 
     snippets = read_examples()
@@ -158,7 +172,10 @@ def main():
         print(f"note: snippet '{name}' ({snippets[name][0]}) is shown in no doc")
     if errors:
         print("\n".join(errors), file=sys.stderr)
-        print("run scripts/check_snippets.py --fix to copy the examples into the docs", file=sys.stderr)
+        print(
+            "run scripts/check_snippets.py --fix to copy the examples into the docs",
+            file=sys.stderr,
+        )
         return 1
     print(f"{len(used)} snippet(s) in the docs match examples/")
     return 0

@@ -56,10 +56,14 @@ def main():
         sys.exit(__doc__)
     old, new = sys.argv[1], sys.argv[2]
     load = lambda d, f: json.load(open(f"{d}/{f}"))
-    diffs = differences(stripped(load(old, "report.json")), stripped(load(new, "report.json")),
-                        "report.json")
-    diffs += differences(load(old, "worst-cases.json")["cases"],
-                         load(new, "worst-cases.json")["cases"], "worst-cases.json/cases")
+    diffs = differences(
+        stripped(load(old, "report.json")), stripped(load(new, "report.json")), "report.json"
+    )
+    diffs += differences(
+        load(old, "worst-cases.json")["cases"],
+        load(new, "worst-cases.json")["cases"],
+        "worst-cases.json/cases",
+    )
     for d in diffs[:40]:
         print(d)
     if diffs:

@@ -27,23 +27,27 @@ SECTION = "## `gjk/`: the talk's sections, one header each"
 
 # Includes of a header listed below the includer: (includer, included) -> the reason.
 UPWARD = {
-    ("distance.hpp", "expand.hpp"):
-        "distance.hpp includes expand.hpp at its end, after everything expand.hpp uses, so that "
-        "`#include \"gjk2d/distance.hpp\"` brings the signed distance too",
+    (
+        "distance.hpp",
+        "expand.hpp",
+    ): "distance.hpp includes expand.hpp at its end, after everything expand.hpp uses, so that "
+    '`#include "gjk2d/distance.hpp"` brings the signed distance too',
 }
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"gjk2d/([^"]+)"', re.M)
 ROW = re.compile(r"^\|\s*`([^`]+)`\s*\|", re.M)
-PATH = re.compile(r"`((?:gjk|exact|validation|python|tests|scripts|docs|examples|fuzz|cmake)/[^`\s]*)`")
+PATH = re.compile(
+    r"`((?:gjk|exact|validation|python|tests|scripts|docs|examples|fuzz|cmake)/[^`\s]*)`"
+)
 
 
 def table_order(doc_text):
     """The headers of the section's table, top down, as paths relative to gjk2d/."""
     start = doc_text.find(SECTION)
     if start < 0:
-        raise SystemExit(f"header_order_check: {DOC} has no section \"{SECTION[3:]}\"")
+        raise SystemExit(f'header_order_check: {DOC} has no section "{SECTION[3:]}"')
     end = doc_text.find("\n## ", start + 1)
-    section = doc_text[start:end if end >= 0 else len(doc_text)]
+    section = doc_text[start : end if end >= 0 else len(doc_text)]
     return [name for name in ROW.findall(section) if name.endswith((".hpp", ".h"))]
 
 
@@ -60,7 +64,9 @@ def check(root):
             problems.append(f"{INCLUDE_DIR}/{h}: not in the header table of {DOC}")
     for name in order:
         if name not in headers:
-            problems.append(f"{DOC}: the header table lists {name}, which {INCLUDE_DIR}/ does not hold")
+            problems.append(
+                f"{DOC}: the header table lists {name}, which {INCLUDE_DIR}/ does not hold"
+            )
     for h in headers:
         if h not in rank:
             continue
@@ -69,11 +75,15 @@ def check(root):
             other = m.group(1)
             line = text.count("\n", 0, m.start()) + 1
             if other not in rank:
-                problems.append(f"{INCLUDE_DIR}/{h}:{line}: includes gjk2d/{other}, "
-                                f"which the header table of {DOC} does not list")
+                problems.append(
+                    f"{INCLUDE_DIR}/{h}:{line}: includes gjk2d/{other}, "
+                    f"which the header table of {DOC} does not list"
+                )
             elif rank[other] >= rank[h] and (h, other) not in UPWARD:
-                problems.append(f"{INCLUDE_DIR}/{h}:{line}: includes gjk2d/{other}, which the "
-                                f"header table of {DOC} lists below it")
+                problems.append(
+                    f"{INCLUDE_DIR}/{h}:{line}: includes gjk2d/{other}, which the "
+                    f"header table of {DOC} lists below it"
+                )
     for m in PATH.finditer(doc_text):
         path = m.group(1).rstrip(".,;:")
         if "<" in path or "*" in path or "..." in path:
@@ -114,8 +124,13 @@ def self_test():
 
         def upward(tree):
             p = tree / INCLUDE_DIR / "types.hpp"
-            p.write_text(p.read_text().replace('#include "gjk2d/math.hpp"',
-                                               '#include "gjk2d/math.hpp"\n#include "gjk2d/distance.hpp"', 1))
+            p.write_text(
+                p.read_text().replace(
+                    '#include "gjk2d/math.hpp"',
+                    '#include "gjk2d/math.hpp"\n#include "gjk2d/distance.hpp"',
+                    1,
+                )
+            )
 
         def unlisted(tree):
             (tree / INCLUDE_DIR / "planted.hpp").write_text("#pragma once\n")
@@ -130,8 +145,10 @@ def self_test():
     for f in failures:
         print(f"header_order_check --self-test: {f}")
     if not failures:
-        print("header_order_check --self-test: the unchanged tree passes; the planted upward "
-              "include, unlisted header and missing path each fail")
+        print(
+            "header_order_check --self-test: the unchanged tree passes; the planted upward "
+            "include, unlisted header and missing path each fail"
+        )
     return 1 if failures else 0
 
 

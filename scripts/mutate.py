@@ -54,12 +54,23 @@ def run(cmd, cwd, timeout=None, quiet=True):
     """Runs cmd; returns (status, seconds, tail of output). status: 'ok', 'fail' or 'timeout'."""
     t0 = time.time()
     try:
-        p = subprocess.run(cmd, cwd=cwd, timeout=timeout, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, text=True, errors="replace")
+        p = subprocess.run(
+            cmd,
+            cwd=cwd,
+            timeout=timeout,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            errors="replace",
+        )
         out = p.stdout
         status = "ok" if p.returncode == 0 else "fail"
     except subprocess.TimeoutExpired as e:
-        out = (e.stdout or b"").decode("utf-8", "replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+        out = (
+            (e.stdout or b"").decode("utf-8", "replace")
+            if isinstance(e.stdout, bytes)
+            else (e.stdout or "")
+        )
         status = "timeout"
     if not quiet:
         sys.stdout.write(out)
@@ -96,14 +107,21 @@ def locate(m, root=None, repo=None, rev="HEAD"):
             with open(path) as f:
                 text = f.read()
         else:
-            p = subprocess.run(["git", "show", f"{rev}:{rel}"], cwd=repo, stdout=subprocess.PIPE,
-                               stderr=subprocess.DEVNULL, text=True)
+            p = subprocess.run(
+                ["git", "show", f"{rev}:{rel}"],
+                cwd=repo,
+                stdout=subprocess.PIPE,
+                stderr=subprocess.DEVNULL,
+                text=True,
+            )
             if p.returncode != 0:
                 continue
             text = p.stdout
         n = text.count(m["find"])
         if n != 1:
-            stale(f"mutant {m['id']}: the text to replace occurs {n} times in {rel} (must be exactly once)")
+            stale(
+                f"mutant {m['id']}: the text to replace occurs {n} times in {rel} (must be exactly once)"
+            )
         return rel, text
     stale(f"mutant {m['id']}: file {' or '.join(m['file'])} not found")
 
@@ -130,8 +148,10 @@ class Worktree:
             return
         bdir = os.path.join(self.path, "build", name)
         log(f"configure build/{name}")
-        st, _, tail = run(["cmake", "-S", self.path, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release"] + BUILD_DIRS[name],
-                          self.path)
+        st, _, tail = run(
+            ["cmake", "-S", self.path, "-B", bdir, "-DCMAKE_BUILD_TYPE=Release"] + BUILD_DIRS[name],
+            self.path,
+        )
         if st != "ok":
             die(f"configure of build/{name} failed:\n{tail}")
         self.configured.add(name)
@@ -156,13 +176,25 @@ class Worktree:
         if st != "ok":
             return "build-error", tb, tail
         bdir = os.path.join(self.path, "build", "full")
-        st, tt, tail = run(["ctest", "--test-dir", bdir, "-j", str(self.jobs), "--timeout", str(timeout)], bdir,
-                           timeout)
+        st, tt, tail = run(
+            ["ctest", "--test-dir", bdir, "-j", str(self.jobs), "--timeout", str(timeout)],
+            bdir,
+            timeout,
+        )
         if st != "ok":
             return "killed", tb + tt, tail
         out = os.path.join(bdir, "mutate-campaign")
-        st2, tc, tail = run([os.path.join(bdir, "validation", "gjk-validate"), "run", "--no-progress",
-                             "--out", out], bdir, timeout)
+        st2, tc, tail = run(
+            [
+                os.path.join(bdir, "validation", "gjk-validate"),
+                "run",
+                "--no-progress",
+                "--out",
+                out,
+            ],
+            bdir,
+            timeout,
+        )
         return ("survived" if st2 == "ok" else "killed"), tb + tt + tc, tail
 
     def ensure_baseline(self, stage, area, timeout):
@@ -195,23 +227,44 @@ def apply_and_test(wt, m, stage, timeout):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter
+    )
     ap.add_argument("--fast", action="store_true", help="the fast stage only (unit tests)")
     ap.add_argument("--full-all", action="store_true", help="run the full stage on every mutant")
-    ap.add_argument("--only", action="append", default=[], metavar="ID", help="only this mutant (repeatable)")
+    ap.add_argument(
+        "--only", action="append", default=[], metavar="ID", help="only this mutant (repeatable)"
+    )
     ap.add_argument("--list", action="store_true", help="list the mutants and exit")
-    ap.add_argument("--check", action="store_true",
-                    help="check the list against --rev (file found, text exactly once) and exit; no build")
-    ap.add_argument("--mutants", default=MUTANTS, help="the mutant list (default scripts/mutants.json)")
-    ap.add_argument("--workdir", help="where to create the worktree (default: a new directory in /tmp)")
+    ap.add_argument(
+        "--check",
+        action="store_true",
+        help="check the list against --rev (file found, text exactly once) and exit; no build",
+    )
+    ap.add_argument(
+        "--mutants", default=MUTANTS, help="the mutant list (default scripts/mutants.json)"
+    )
+    ap.add_argument(
+        "--workdir", help="where to create the worktree (default: a new directory in /tmp)"
+    )
     ap.add_argument("--keep", action="store_true", help="keep the worktree and its builds")
-    ap.add_argument("--rev", default="HEAD",
-                    help="the commit whose tree is mutated (default HEAD); the list is always this one")
-    ap.add_argument("--uncommitted", action="store_true",
-                    help="carry the working tree's uncommitted changes and untracked files over")
+    ap.add_argument(
+        "--rev",
+        default="HEAD",
+        help="the commit whose tree is mutated (default HEAD); the list is always this one",
+    )
+    ap.add_argument(
+        "--uncommitted",
+        action="store_true",
+        help="carry the working tree's uncommitted changes and untracked files over",
+    )
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
-    ap.add_argument("--timeout-fast", type=int, default=600, help="seconds per build or test run (fast)")
-    ap.add_argument("--timeout-full", type=int, default=3600, help="seconds per build or test run (full)")
+    ap.add_argument(
+        "--timeout-fast", type=int, default=600, help="seconds per build or test run (fast)"
+    )
+    ap.add_argument(
+        "--timeout-full", type=int, default=3600, help="seconds per build or test run (full)"
+    )
     args = ap.parse_args()
     if args.uncommitted and args.rev != "HEAD":
         die("--uncommitted carries changes against HEAD: not with --rev")
@@ -229,28 +282,50 @@ def main():
         log(f"{len(mutants)} mutants")
         return 0
 
-    repo = subprocess.run(["git", "rev-parse", "--show-toplevel"], cwd=HERE, stdout=subprocess.PIPE, text=True,
-                          check=True).stdout.strip()
+    repo = subprocess.run(
+        ["git", "rev-parse", "--show-toplevel"],
+        cwd=HERE,
+        stdout=subprocess.PIPE,
+        text=True,
+        check=True,
+    ).stdout.strip()
     if args.check:  # a stale entry exits 2 with its message (locate)
         for m in mutants:
             locate(m, repo=repo, rev=args.rev)
-        log(f"{len(mutants)} mutants: every file found at {args.rev}, every text occurs exactly once")
+        log(
+            f"{len(mutants)} mutants: every file found at {args.rev}, every text occurs exactly once"
+        )
         return 0
     base = args.workdir or tempfile.mkdtemp(prefix="gjk2d-mutate-")
     wtpath = os.path.join(base, "tree")  # only this is removed at the end (and base if we made it)
     if os.path.exists(wtpath):
         die(f"{wtpath} exists: pass another --workdir")
-    subprocess.run(["git", "worktree", "add", "--detach", wtpath, args.rev], cwd=repo, check=True,
-                   stdout=subprocess.DEVNULL)
+    subprocess.run(
+        ["git", "worktree", "add", "--detach", wtpath, args.rev],
+        cwd=repo,
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
     t_start = time.time()
     try:
         if args.uncommitted:
-            diff = subprocess.run(["git", "diff", "HEAD", "--binary"], cwd=repo, stdout=subprocess.PIPE,
-                                  check=True).stdout
+            diff = subprocess.run(
+                ["git", "diff", "HEAD", "--binary"], cwd=repo, stdout=subprocess.PIPE, check=True
+            ).stdout
             if diff:
-                subprocess.run(["git", "apply", "--whitespace=nowarn"], cwd=wtpath, input=diff, check=True)
-            untracked = subprocess.run(["git", "ls-files", "--others", "--exclude-standard", "-z"], cwd=repo,
-                                       stdout=subprocess.PIPE, check=True).stdout.decode().split("\0")
+                subprocess.run(
+                    ["git", "apply", "--whitespace=nowarn"], cwd=wtpath, input=diff, check=True
+                )
+            untracked = (
+                subprocess.run(
+                    ["git", "ls-files", "--others", "--exclude-standard", "-z"],
+                    cwd=repo,
+                    stdout=subprocess.PIPE,
+                    check=True,
+                )
+                .stdout.decode()
+                .split("\0")
+            )
             for rel in filter(None, untracked):
                 if rel.startswith("build/"):
                     continue
@@ -261,8 +336,10 @@ def main():
 
         wt = Worktree(repo, wtpath, args.jobs)
         results = {m["id"]: {"fast": None, "full": None, "seconds": 0.0} for m in mutants}
-        log(f"worktree {wtpath} ({args.rev}{' + uncommitted changes' if args.uncommitted else ''}); "
-            f"{len(mutants)} mutants")
+        log(
+            f"worktree {wtpath} ({args.rev}{' + uncommitted changes' if args.uncommitted else ''}); "
+            f"{len(mutants)} mutants"
+        )
 
         for m in mutants:
             # The baseline builds from scratch (the CGAL side takes many minutes): the long timeout.
@@ -291,28 +368,46 @@ def main():
         for m in mutants:
             r = results[m["id"]]
             eq = "  (equivalent)" if m.get("equivalent") else ""
-            log(f"{m['id']:40} {m['area']:7} {r['fast'] or '-':12} {r['full'] or '-':12} {r['seconds']:7.0f}{eq}")
+            log(
+                f"{m['id']:40} {m['area']:7} {r['fast'] or '-':12} {r['full'] or '-':12} {r['seconds']:7.0f}{eq}"
+            )
         real = [m for m in mutants if not m.get("equivalent")]
         fast_killed = [m for m in real if results[m["id"]]["fast"] == "killed"]
-        any_killed = [m for m in real if "killed" in (results[m["id"]]["fast"], results[m["id"]]["full"])]
-        broken = [m for m in mutants if "build-error" in (results[m["id"]]["fast"], results[m["id"]]["full"])]
+        any_killed = [
+            m for m in real if "killed" in (results[m["id"]]["fast"], results[m["id"]]["full"])
+        ]
+        broken = [
+            m
+            for m in mutants
+            if "build-error" in (results[m["id"]]["fast"], results[m["id"]]["full"])
+        ]
         survivors = [m for m in real if m not in any_killed and m not in broken]
-        eq_killed = [m for m in mutants if m.get("equivalent") and
-                     "killed" in (results[m["id"]]["fast"], results[m["id"]]["full"])]
+        eq_killed = [
+            m
+            for m in mutants
+            if m.get("equivalent")
+            and "killed" in (results[m["id"]]["fast"], results[m["id"]]["full"])
+        ]
         n = len(real)
         log("")
         log(f"non-equivalent mutants: {n}  (equivalent, not counted: {len(mutants) - n})")
         if n:
-            log(f"killed by the fast unit tests: {len(fast_killed)} of {n} ({100 * len(fast_killed) / n:.0f} %)")
+            log(
+                f"killed by the fast unit tests: {len(fast_killed)} of {n} ({100 * len(fast_killed) / n:.0f} %)"
+            )
             if not args.fast:
-                log(f"killed by the fast or the full stage: {len(any_killed)} of {n} "
-                    f"({100 * len(any_killed) / n:.0f} %)")
+                log(
+                    f"killed by the fast or the full stage: {len(any_killed)} of {n} "
+                    f"({100 * len(any_killed) / n:.0f} %)"
+                )
         for m in [m for m in mutants if m.get("equivalent")]:
             log(f"equivalent: {m['id']}: {m['equivalent']}")
         for m in broken:
             log(f"BUILD ERROR (fix the mutant): {m['id']}")
         for m in survivors:
-            log(f"SURVIVOR: {m['id']} ({m['file'][0]}): {m['find'].strip()!r} -> {m['replace'].strip()!r}")
+            log(
+                f"SURVIVOR: {m['id']} ({m['file'][0]}): {m['find'].strip()!r} -> {m['replace'].strip()!r}"
+            )
         for m in eq_killed:
             log(f"MARKED EQUIVALENT BUT KILLED: {m['id']}")
         log(f"total time {time.time() - t_start:.0f} s")

@@ -62,7 +62,7 @@ def default_campaign(gjk):
     line = next((l for l in done.stdout.splitlines() if l.startswith(DEFAULT_CAMPAIGN)), None)
     if done.returncode != 0 or line is None:
         fail(1, f"`{gjk} list` exited {done.returncode} without its '{DEFAULT_CAMPAIGN}' line")
-    return shlex.split(line[len(DEFAULT_CAMPAIGN):])
+    return shlex.split(line[len(DEFAULT_CAMPAIGN) :])
 
 
 def num(x):
@@ -128,19 +128,33 @@ def group_rows(report, variant):
                 reasons[k] = reasons.get(k, 0) + n
         rel = merge_hist([st.get("errors", {}).get("rel") for st in sts])
         ratio = merge_hist([st.get("errors", {}).get("bound_ratio") for st in sts])
-        timed = [(st["cases"], num(st["ns_per_query"])) for st in sts
-                 if st.get("ns_per_query") is not None]
+        timed = [
+            (st["cases"], num(st["ns_per_query"]))
+            for st in sts
+            if st.get("ns_per_query") is not None
+        ]
         weight = sum(c for c, _ in timed)
         ns = sum(c * t for c, t in timed) / weight if weight > 0 else None
-        rows.append({"group": name, "cases": s("cases"), "refused": s("refused"),
-                     "violations": sum((st.get("contract_violations") or {}).get("count", 0)
-                                       for st in sts),
-                     "reasons": reasons, "outside": s("beyond_bound_keeping_contract"),
-                     "penetration": penetration_rows(sts),
-                     "false_overlap": s("false_overlap"),
-                     "false_separation": s("false_separation"), "nonfinite": s("nonfinite"),
-                     "incidents": s("plugin_errors") + s("crashed") + s("hung"),
-                     "rel": rel, "ratio": ratio, "ns": ns})
+        rows.append(
+            {
+                "group": name,
+                "cases": s("cases"),
+                "refused": s("refused"),
+                "violations": sum(
+                    (st.get("contract_violations") or {}).get("count", 0) for st in sts
+                ),
+                "reasons": reasons,
+                "outside": s("beyond_bound_keeping_contract"),
+                "penetration": penetration_rows(sts),
+                "false_overlap": s("false_overlap"),
+                "false_separation": s("false_separation"),
+                "nonfinite": s("nonfinite"),
+                "incidents": s("plugin_errors") + s("crashed") + s("hung"),
+                "rel": rel,
+                "ratio": ratio,
+                "ns": ns,
+            }
+        )
     return rows
 
 
@@ -151,11 +165,16 @@ def penetration_rows(sts):
     if not blocks:
         return None
     s = lambda k: sum(b.get(k, 0) or 0 for b in blocks)
-    return {"cases": s("cases"), "violations": s("contract_violations"),
-            "beyond": s("beyond_bound"), "outside": s("beyond_bound_keeping_contract"),
-            "nonfinite": s("nonfinite"), "abs": merge_hist([b.get("abs") for b in blocks]),
-            "rel": merge_hist([b.get("rel") for b in blocks]),
-            "ratio": merge_hist([b.get("bound_ratio") for b in blocks])}
+    return {
+        "cases": s("cases"),
+        "violations": s("contract_violations"),
+        "beyond": s("beyond_bound"),
+        "outside": s("beyond_bound_keeping_contract"),
+        "nonfinite": s("nonfinite"),
+        "abs": merge_hist([b.get("abs") for b in blocks]),
+        "rel": merge_hist([b.get("rel") for b in blocks]),
+        "ratio": merge_hist([b.get("bound_ratio") for b in blocks]),
+    }
 
 
 def g(x, spec=".3g"):
@@ -169,17 +188,21 @@ def reasons_text(reasons):
 def contract_table(report, peers):
     """Each variant's contract (report.json variants[].contract), clause by clause with its
     source."""
-    out = ["### What each peer promises (its contract)", "",
-           "Each implementation is judged by what it promises, each clause with where its library "
-           "says so (declared by its adapter: gjk2d/plugin.h, `gjk2d_contract`). Where a library "
-           "states no tolerance, its distance is held to gjk2d's own a-priori bound in its scalar "
-           "type, and the table says so. *It is given*: the case as given, or, for a library "
-           "that cannot take the case's transform exactly, the case's world points (in double, "
-           "then rounded to its scalar type) with identity transforms, and it is judged on "
-           "exactly those (its adapter's `input NAME world` line, docs/plugin-abi.md).", "",
-           "| variant | type | it is given | on overlap | source | its distance is held to | "
-           "margin | its depth is held to |",
-           "|---|---|---|---|---|---|---|---|"]
+    out = [
+        "### What each peer promises (its contract)",
+        "",
+        "Each implementation is judged by what it promises, each clause with where its library "
+        "says so (declared by its adapter: gjk2d/plugin.h, `gjk2d_contract`). Where a library "
+        "states no tolerance, its distance is held to gjk2d's own a-priori bound in its scalar "
+        "type, and the table says so. *It is given*: the case as given, or, for a library "
+        "that cannot take the case's transform exactly, the case's world points (in double, "
+        "then rounded to its scalar type) with identity transforms, and it is judged on "
+        "exactly those (its adapter's `input NAME world` line, docs/plugin-abi.md).",
+        "",
+        "| variant | type | it is given | on overlap | source | its distance is held to | "
+        "margin | its depth is held to |",
+        "|---|---|---|---|---|---|---|---|",
+    ]
     info = {v["name"]: v for v in report["variants"]}
     for name in [v for v in GJK2D_ROWS if v in info] + peers:
         v = info[name]
@@ -187,61 +210,79 @@ def contract_table(report, peers):
         margin = c.get("margin", 0)
         msrc = c.get("margin_source") or ""
         given = (v.get("input") or {}).get("given", "the case as given")
-        out.append(f"| {name} | {v.get('type', '?')} | {given} | {c.get('overlap', '?')} | "
-                   f"{c.get('overlap_source') or 'none stated'} | {c.get('judged_by', '?')} | "
-                   f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} | "
-                   f"{c.get('judged_by_depth', '?')} |")
+        out.append(
+            f"| {name} | {v.get('type', '?')} | {given} | {c.get('overlap', '?')} | "
+            f"{c.get('overlap_source') or 'none stated'} | {c.get('judged_by', '?')} | "
+            f"{g(margin, 'g')}{' (' + msrc + ')' if msrc else ''} | "
+            f"{c.get('judged_by_depth', '?')} |"
+        )
     return out
 
 
 def timing_table(report, peers):
     """What each variant's ns/query includes (report.json variants[].timing), its ns/query and its
     preparation per shape, weighted by the timed families' cases."""
-    out = ["### What ns/query includes", "",
-           "Each implementation is timed as its users pay: where its adapter offers a preparation "
-           "step (gjk2d/plugin.h, `gjk2d_plugin_prepared`; an adapter's `prepared` line), shapes "
-           "are prepared once, outside the timed loop, and ns/query is the query alone; the "
-           "preparation is timed apart, per shape. Variants are timed in alternated passes, family "
-           "by family (docs/speed.md, \"What a variant's ns/query includes\").", "",
-           "| variant | ns/query | ns to prepare a shape | what ns/query includes | timed by |",
-           "|---|---|---|---|---|"]
+    out = [
+        "### What ns/query includes",
+        "",
+        "Each implementation is timed as its users pay: where its adapter offers a preparation "
+        "step (gjk2d/plugin.h, `gjk2d_plugin_prepared`; an adapter's `prepared` line), shapes "
+        "are prepared once, outside the timed loop, and ns/query is the query alone; the "
+        "preparation is timed apart, per shape. Variants are timed in alternated passes, family "
+        'by family (docs/speed.md, "What a variant\'s ns/query includes").',
+        "",
+        "| variant | ns/query | ns to prepare a shape | what ns/query includes | timed by |",
+        "|---|---|---|---|---|",
+    ]
     info = {v["name"]: v for v in report["variants"]}
     for name in peers:
         t = info[name].get("timing") or {}
         sts = [f["variants"][name] for f in report["families"] if name in f["variants"]]
-        timed = [(st["cases"], num(st["ns_per_query"]), st.get("prepare_ns_per_shape"))
-                 for st in sts if st.get("ns_per_query") is not None]
+        timed = [
+            (st["cases"], num(st["ns_per_query"]), st.get("prepare_ns_per_shape"))
+            for st in sts
+            if st.get("ns_per_query") is not None
+        ]
         weight = sum(c for c, _, _ in timed)
         ns = sum(c * x for c, x, _ in timed) / weight if weight > 0 else None
         prep = [(c, num(p)) for c, _, p in timed if p is not None]
         pw = sum(c for c, _ in prep)
         pns = sum(c * x for c, x in prep) / pw if pw > 0 else None
-        out.append(f"| {name} | {g(ns, '.0f')} | {g(pns, '.0f')} | {t.get('includes', '?')} | "
-                   f"{t.get('timed_by', '?')} |")
+        out.append(
+            f"| {name} | {g(ns, '.0f')} | {g(pns, '.0f')} | {t.get('includes', '?')} | "
+            f"{t.get('timed_by', '?')} |"
+        )
     return out
 
 
 def weighted_ns(report, name, key):
     """A variant's ns/query (key "ns_per_query") or ns to prepare a shape ("prepare_ns_per_shape"),
     the timed families' figures weighted by their cases; None when not timed."""
-    timed = [(f["variants"][name]["cases"], num(f["variants"][name].get(key)))
-             for f in report["families"] if name in f["variants"]
-             and f["variants"][name].get("ns_per_query") is not None
-             and f["variants"][name].get(key) is not None]
+    timed = [
+        (f["variants"][name]["cases"], num(f["variants"][name].get(key)))
+        for f in report["families"]
+        if name in f["variants"]
+        and f["variants"][name].get("ns_per_query") is not None
+        and f["variants"][name].get(key) is not None
+    ]
     weight = sum(c for c, _ in timed)
     return sum(c * x for c, x in timed) / weight if weight > 0 else None
 
 
 def summary_table(report, names, page_of_variant, command):
     """One row per variant over the whole campaign: its verdict, accuracy and speed, and its page."""
-    out = ["### Verdict, accuracy and speed", "",
-           f"One row per variant over the whole campaign, `{command}`; per family group, and why: "
-           "each peer's page. Rows of gjk2d's reference and signed variants are there to compare "
-           "with.", "",
-           "| variant | page | cases | refused | breaks its contract | why | outside gjk2d's bound, "
-           "keeps its contract | false overlaps | false separations | largest error / gjk2d's "
-           "bound | ns/query | ns to prepare a shape |",
-           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|"]
+    out = [
+        "### Verdict, accuracy and speed",
+        "",
+        f"One row per variant over the whole campaign, `{command}`; per family group, and why: "
+        "each peer's page. Rows of gjk2d's reference and signed variants are there to compare "
+        "with.",
+        "",
+        "| variant | page | cases | refused | breaks its contract | why | outside gjk2d's bound, "
+        "keeps its contract | false overlaps | false separations | largest error / gjk2d's "
+        "bound | ns/query | ns to prepare a shape |",
+        "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|",
+    ]
     for v in names:
         rows = group_rows(report, v)
         s = lambda k: sum(r[k] for r in rows)
@@ -252,48 +293,62 @@ def summary_table(report, names, page_of_variant, command):
         ratios = [r["ratio"][0] for r in rows if r["ratio"][0] is not None]
         page = page_of_variant.get(v)
         link = f"[{os.path.basename(page)}]({page}.md)" if page else "-"
-        out.append(f"| {v} | {link} | {s('cases')} | {s('refused')} | {s('violations')} | "
-                   f"{reasons_text(reasons)} | {s('outside')} | {s('false_overlap')} | "
-                   f"{s('false_separation')} | {g(max(ratios) if ratios else None)} | "
-                   f"{g(weighted_ns(report, v, 'ns_per_query'), '.0f')} | "
-                   f"{g(weighted_ns(report, v, 'prepare_ns_per_shape'), '.0f')} |")
-    out += ["", "Columns as on the peers' pages (docs/report-schema.md, Stats): *breaks its "
-            "contract*: answers that break what the implementation promises (the table above), a "
-            "bug of that implementation (for gjk2d's variants, a failure); *outside gjk2d's bound, "
-            "keeps its contract*: a measured accuracy, not a failure; error / bound: |d - d_exact| "
-            "over gjk2d's a-priori bound (docs/error-bound.md); ns/query: single-threaded, the "
-            "timed families weighted by cases (- when not timed)."]
+        out.append(
+            f"| {v} | {link} | {s('cases')} | {s('refused')} | {s('violations')} | "
+            f"{reasons_text(reasons)} | {s('outside')} | {s('false_overlap')} | "
+            f"{s('false_separation')} | {g(max(ratios) if ratios else None)} | "
+            f"{g(weighted_ns(report, v, 'ns_per_query'), '.0f')} | "
+            f"{g(weighted_ns(report, v, 'prepare_ns_per_shape'), '.0f')} |"
+        )
+    out += [
+        "",
+        "Columns as on the peers' pages (docs/report-schema.md, Stats): *breaks its "
+        "contract*: answers that break what the implementation promises (the table above), a "
+        "bug of that implementation (for gjk2d's variants, a failure); *outside gjk2d's bound, "
+        "keeps its contract*: a measured accuracy, not a failure; error / bound: |d - d_exact| "
+        "over gjk2d's a-priori bound (docs/error-bound.md); ns/query: single-threaded, the "
+        "timed families weighted by cases (- when not timed).",
+    ]
     return out
 
 
 def verdict_table(report, peers, command):
-    out = ["### Contract violations and accuracy", "",
-           f"Per variant and family group, from `{command}`.", "",
-           "| variant | family group | cases | refused | breaks its contract | why | outside "
-           "gjk2d's bound, keeps its contract | false overlaps | false "
-           "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
-           "p99 error / bound | ns/query |",
-           "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    out = [
+        "### Contract violations and accuracy",
+        "",
+        f"Per variant and family group, from `{command}`.",
+        "",
+        "| variant | family group | cases | refused | breaks its contract | why | outside "
+        "gjk2d's bound, keeps its contract | false overlaps | false "
+        "separations | largest rel. error | p99 rel. error | largest error / gjk2d's bound | "
+        "p99 error / bound | ns/query |",
+        "|---|---|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
     for v in peers:
         for r in group_rows(report, v):
-            out.append(f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
-                       f"{r['violations']} | {reasons_text(r['reasons'])} | {r['outside']} | "
-                       f"{r['false_overlap']} | {r['false_separation']} | "
-                       f"{g(r['rel'][0])} | {g(r['rel'][1])} | "
-                       f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |")
-    out += ["", "Columns (docs/report-schema.md, Stats): *cases* answered; *refused* by the "
-            "implementation (not in cases); *breaks its contract*: answers that break what the "
-            "implementation promises (the contract table of docs/peers.md): a bug of that "
-            "implementation; *why*: the reasons, with their counts (docs/report-schema.md, "
-            "`contract_violations`); *outside gjk2d's bound, keeps its contract*: answers further "
-            "from the exact distance than gjk2d's a-priori bound in the variant's precision "
-            "(docs/error-bound.md) that keep the implementation's own contract: a measured "
-            "accuracy, not a failure; *false overlaps and separations* "
-            "against the exact side, whatever the contract allows; rel. error = |d - d_exact| / "
-            "d_exact (separated cases); error / bound = |d - d_exact| over gjk2d's bound (a "
-            "negative distance of a zero or penetration contract counts as 0); p99 values are "
-            "histogram bin upper edges, at most the largest; ns/query: the families' "
-            "single-threaded timings, weighted by cases (- when not timed)."]
+            out.append(
+                f"| {v} | {r['group']} | {r['cases']} | {r['refused']} | "
+                f"{r['violations']} | {reasons_text(r['reasons'])} | {r['outside']} | "
+                f"{r['false_overlap']} | {r['false_separation']} | "
+                f"{g(r['rel'][0])} | {g(r['rel'][1])} | "
+                f"{g(r['ratio'][0])} | {g(r['ratio'][1])} | {g(r['ns'], '.0f')} |"
+            )
+    out += [
+        "",
+        "Columns (docs/report-schema.md, Stats): *cases* answered; *refused* by the "
+        "implementation (not in cases); *breaks its contract*: answers that break what the "
+        "implementation promises (the contract table of docs/peers.md): a bug of that "
+        "implementation; *why*: the reasons, with their counts (docs/report-schema.md, "
+        "`contract_violations`); *outside gjk2d's bound, keeps its contract*: answers further "
+        "from the exact distance than gjk2d's a-priori bound in the variant's precision "
+        "(docs/error-bound.md) that keep the implementation's own contract: a measured "
+        "accuracy, not a failure; *false overlaps and separations* "
+        "against the exact side, whatever the contract allows; rel. error = |d - d_exact| / "
+        "d_exact (separated cases); error / bound = |d - d_exact| over gjk2d's bound (a "
+        "negative distance of a zero or penetration contract counts as 0); p99 values are "
+        "histogram bin upper edges, at most the largest; ns/query: the families' "
+        "single-threaded timings, weighted by cases (- when not timed).",
+    ]
     return out
 
 
@@ -303,25 +358,34 @@ def depth_table(report, peers):
     rows = [(v, r) for v in peers for r in group_rows(report, v) if r["penetration"]]
     if not rows:
         return []
-    out = ["### Penetration depth (contracts that say `penetration`)", "",
-           "The depth of each overlapping case against the exact penetration depth (docs/exact.md, "
-           "\"Penetration depth\"), beside the distance above: what an engine resolving contacts "
-           "consumes.", "",
-           "| variant | family group | overlapping cases | breaks its contract | beyond gjk2d's "
-           "depth bound | of them keeping its contract | largest depth error | largest rel. "
-           "error | p99 rel. error | largest error / depth bound |",
-           "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    out = [
+        "### Penetration depth (contracts that say `penetration`)",
+        "",
+        "The depth of each overlapping case against the exact penetration depth (docs/exact.md, "
+        '"Penetration depth"), beside the distance above: what an engine resolving contacts '
+        "consumes.",
+        "",
+        "| variant | family group | overlapping cases | breaks its contract | beyond gjk2d's "
+        "depth bound | of them keeping its contract | largest depth error | largest rel. "
+        "error | p99 rel. error | largest error / depth bound |",
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|",
+    ]
     for v, r in rows:
         p = r["penetration"]
-        out.append(f"| {v} | {r['group']} | {p['cases']} | {p['violations']} | {p['beyond']} | "
-                   f"{p['outside']} | {g(p['abs'][0])} | {g(p['rel'][0])} | {g(p['rel'][1])} | "
-                   f"{g(p['ratio'][0])} |")
-    out += ["", "Columns (docs/report-schema.md, `penetration`): *overlapping cases* judged (exact "
-            "signed distance below 0); *breaks its contract*: the depth beyond its stated "
-            "tolerance (or gjk2d's depth bound where none is stated: the contract table), "
-            "or a point off its shape; *beyond gjk2d's depth bound*: |depth - exact depth| over "
-            "gjk2d's a-priori depth bound (docs/error-bound.md), *of them keeping its contract*: "
-            "a measured accuracy; rel. error = |depth - exact depth| / exact depth."]
+        out.append(
+            f"| {v} | {r['group']} | {p['cases']} | {p['violations']} | {p['beyond']} | "
+            f"{p['outside']} | {g(p['abs'][0])} | {g(p['rel'][0])} | {g(p['rel'][1])} | "
+            f"{g(p['ratio'][0])} |"
+        )
+    out += [
+        "",
+        "Columns (docs/report-schema.md, `penetration`): *overlapping cases* judged (exact "
+        "signed distance below 0); *breaks its contract*: the depth beyond its stated "
+        "tolerance (or gjk2d's depth bound where none is stated: the contract table), "
+        "or a point off its shape; *beyond gjk2d's depth bound*: |depth - exact depth| over "
+        "gjk2d's a-priori depth bound (docs/error-bound.md), *of them keeping its contract*: "
+        "a measured accuracy; rel. error = |depth - exact depth| / exact depth.",
+    ]
     return out
 
 
@@ -351,9 +415,12 @@ def explain_command(gjk, report, family, case, plugin_files, verb="explain", var
     cmd = [gjk, verb]
     inputs = report["context"]["inputs"]
     if family.startswith("file:"):
-        rest = family[len("file:"):]
-        files = [i["file"] for i in inputs if "file" in i and
-                 (i["file"] == rest or i["file"].endswith("/" + rest))]
+        rest = family[len("file:") :]
+        files = [
+            i["file"]
+            for i in inputs
+            if "file" in i and (i["file"] == rest or i["file"].endswith("/" + rest))
+        ]
         cmd += [files[0] if files else rest, case]
     else:
         spec = next((i for i in inputs if i.get("family") == family), None)
@@ -384,8 +451,9 @@ def exact_for(detail, variant):
     "truth" key)."""
     ans = detail.get("variants", {}).get(variant, {})
     if ans.get("input") == "world":
-        return (detail.get("world_input", {}).get(ans.get("type"), {}).get("exact")
-                or detail.get("exact", {}))
+        return detail.get("world_input", {}).get(ans.get("type"), {}).get("exact") or detail.get(
+            "exact", {}
+        )
     if ans.get("type") == "float" and detail.get("exact_float_input"):
         return detail["exact_float_input"]
     return detail.get("exact", {})
@@ -397,10 +465,12 @@ def svg_panel(detail, variant, box, ox, size, title):
     cx, cy, hw = box
     sc = size / (2 * hw)
     tx = lambda p: (ox + (p[0] - cx) * sc + size / 2, size / 2 - (p[1] - cy) * sc + 20)
-    out = [f'<rect x="{ox}" y="20" width="{size}" height="{size}" fill="white" stroke="#999"/>',
-           f'<text x="{ox + 4}" y="14" font-size="11">{title}</text>',
-           f'<clipPath id="c{ox}"><rect x="{ox}" y="20" width="{size}" height="{size}"/></clipPath>',
-           f'<g clip-path="url(#c{ox})">']
+    out = [
+        f'<rect x="{ox}" y="20" width="{size}" height="{size}" fill="white" stroke="#999"/>',
+        f'<text x="{ox + 4}" y="14" font-size="11">{title}</text>',
+        f'<clipPath id="c{ox}"><rect x="{ox}" y="20" width="{size}" height="{size}"/></clipPath>',
+        f'<g clip-path="url(#c{ox})">',
+    ]
     for key, colour in (("a", "#4a90c2"), ("b", "#d98c2b")):
         shape = detail.get(key, {})
         w = [tx(p) for p in pts(shape.get("world"))]
@@ -409,17 +479,23 @@ def svg_panel(detail, variant, box, ox, size, title):
             continue
         d = "M" + " L".join(f"{x:.2f} {y:.2f}" for x, y in w) + " Z"
         width = max(2 * r, 1.2)
-        out.append(f'<path d="{d}" fill="{colour}" fill-opacity="0.35" stroke="{colour}" '
-                   f'stroke-opacity="0.6" stroke-width="{width:.2f}" stroke-linejoin="round" '
-                   'stroke-linecap="round"/>')
+        out.append(
+            f'<path d="{d}" fill="{colour}" fill-opacity="0.35" stroke="{colour}" '
+            f'stroke-opacity="0.6" stroke-width="{width:.2f}" stroke-linejoin="round" '
+            'stroke-linecap="round"/>'
+        )
     ex = exact_for(detail, variant)
     ans = detail.get("variants", {}).get(variant, {})
-    for (a, b, colour) in ((ex.get("witnessA"), ex.get("witnessB"), "black"),
-                           (ans.get("pointA"), ans.get("pointB"), "#d0021b")):
+    for a, b, colour in (
+        (ex.get("witnessA"), ex.get("witnessB"), "black"),
+        (ans.get("pointA"), ans.get("pointB"), "#d0021b"),
+    ):
         p = [tx(q) for q in pts([a, b])]
         if len(p) == 2:
-            out.append(f'<line x1="{p[0][0]:.2f}" y1="{p[0][1]:.2f}" x2="{p[1][0]:.2f}" '
-                       f'y2="{p[1][1]:.2f}" stroke="{colour}" stroke-width="1.2"/>')
+            out.append(
+                f'<line x1="{p[0][0]:.2f}" y1="{p[0][1]:.2f}" x2="{p[1][0]:.2f}" '
+                f'y2="{p[1][1]:.2f}" stroke="{colour}" stroke-width="1.2"/>'
+            )
         for x, y in p:
             out.append(f'<circle cx="{x:.2f}" cy="{y:.2f}" r="3" fill="{colour}"/>')
     return out + ["</g>"]
@@ -443,12 +519,20 @@ def draw(detail, variant, path):
     zoom = (c[0], c[1], max(spread * 1.5, hw * 1e-12, 1e-300))
     size = 300
     body = svg_panel(detail, variant, whole, 0, size, "whole case") + svg_panel(
-        detail, variant, zoom, size + 10, size, f"zoom: half width {zoom[2]:.3g}")
-    legend = (f'<text x="0" y="{size + 36}" font-size="11">blue: shape A, orange: shape B, black: '
-              f'exact witness points, red: {variant}\'s</text>')
-    path.write_text(f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * size + 10}" '
-                    f'height="{size + 44}" font-family="sans-serif">\n' + "\n".join(body) +
-                    "\n" + legend + "\n</svg>\n")
+        detail, variant, zoom, size + 10, size, f"zoom: half width {zoom[2]:.3g}"
+    )
+    legend = (
+        f'<text x="0" y="{size + 36}" font-size="11">blue: shape A, orange: shape B, black: '
+        f"exact witness points, red: {variant}'s</text>"
+    )
+    path.write_text(
+        f'<svg xmlns="http://www.w3.org/2000/svg" width="{2 * size + 10}" '
+        f'height="{size + 44}" font-family="sans-serif">\n'
+        + "\n".join(body)
+        + "\n"
+        + legend
+        + "\n</svg>\n"
+    )
     return True
 
 
@@ -480,10 +564,14 @@ def plugins_for(plugins, variant):
 
 
 def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
-    out = ["", "### Each peer's largest error against gjk2d's bound", "",
-           "Each plugin variant's case with the largest error relative to gjk2d's bound, whether "
-           "or not it keeps its contract (a non-finite answer is not here), drawn by this script "
-           "from the command under it."]
+    out = [
+        "",
+        "### Each peer's largest error against gjk2d's bound",
+        "",
+        "Each plugin variant's case with the largest error relative to gjk2d's bound, whether "
+        "or not it keeps its contract (a non-finite answer is not here), drawn by this script "
+        "from the command under it.",
+    ]
     plugins = report["context"].get("plugins", [])
     for v in peers:
         w = worst_of(report, v)
@@ -497,18 +585,25 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
         code = run(cmd + ["--json", str(js)], must=False)
         shown = [shown_gjk] + [rel(x) for x in cmd[1:]] + ["--json", "case.json"]
         if code not in (0, 1) or not js.is_file():
-            print(f"peers_doc.py: {v}'s worst case not drawn: explain exited {code}",
-                  file=sys.stderr)
-            out += ["", f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
-                    f"`{shlex.join(shown)}` exited {code}."]
+            print(
+                f"peers_doc.py: {v}'s worst case not drawn: explain exited {code}", file=sys.stderr
+            )
+            out += [
+                "",
+                f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}; not drawn: "
+                f"`{shlex.join(shown)}` exited {code}.",
+            ]
             continue
         detail = json.loads(js.read_text())
         svg = svg_dir / f"{v}.svg"
         drawn = draw(detail, v, svg)
         ans = detail.get("variants", {}).get(v, {})
-        out += ["", f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
-                f"{g(num(exact_for(detail, v).get('distance')), '.17g')}, {v} "
-                f"{g(num(ans.get('distance')), '.17g')}. Command: `{shlex.join(shown)}`"]
+        out += [
+            "",
+            f"**{v}**{needs}: `{case}` ({family}), error / bound {ratio:.3g}: exact distance "
+            f"{g(num(exact_for(detail, v).get('distance')), '.17g')}, {v} "
+            f"{g(num(ans.get('distance')), '.17g')}. Command: `{shlex.join(shown)}`",
+        ]
         if drawn:
             out += ["", f"![{v} on {case}]({os.path.relpath(svg, doc.parent)})"]
     return out
@@ -517,10 +612,14 @@ def worst_section(report, peers, gjk, shown_gjk, svg_dir, doc, work):
 def violation_section(report, peers, gjk, shown_gjk, repro_dir, doc):
     """Each peer's worst contract violation, and the standalone program `gjk-validate repro` writes
     for it (in the peer's own language and API, no gjk2d in it), kept in repro_dir and linked."""
-    out = ["", "### Each peer's worst contract violation, with a repro", "",
-           "The case of each plugin variant whose answer breaks its own contract the most (the "
-           "report's `variants[].worst_contract_violation`), and a program that shows it with the "
-           "library alone: `gjk-validate repro` writes it, the command under each."]
+    out = [
+        "",
+        "### Each peer's worst contract violation, with a repro",
+        "",
+        "The case of each plugin variant whose answer breaks its own contract the most (the "
+        "report's `variants[].worst_contract_violation`), and a program that shows it with the "
+        "library alone: `gjk-validate repro` writes it, the command under each.",
+    ]
     plugins = report["context"].get("plugins", [])
     for v in peers:
         w = worst_violation(report, v)
@@ -535,8 +634,11 @@ def violation_section(report, peers, gjk, shown_gjk, repro_dir, doc):
         made = sorted(f.name for f in repro_dir.iterdir() if f.name not in before)
         links = ", ".join(f"[{m}]({os.path.relpath(repro_dir / m, doc.parent)})" for m in made)
         what = f"repro: {links}" if code == 0 and made else f"no repro: `repro` exited {code}"
-        out += ["", f"**{v}**{needs}: `{w['case']}` ({w['family']}), {w.get('reason', '?')}; "
-                f"{what}. Command: `{shlex.join(shown)}`"]
+        out += [
+            "",
+            f"**{v}**{needs}: `{w['case']}` ({w['family']}), {w.get('reason', '?')}; "
+            f"{what}. Command: `{shlex.join(shown)}`",
+        ]
     return out
 
 
@@ -544,11 +646,11 @@ def page_name(plugin_file):
     """The page of a plugin: its file's name without `gjk2d-`, `.so` and a `-float`/`-double`
     ending (Bullet's two modules share one page)."""
     name = os.path.basename(plugin_file)
-    name = name[len("gjk2d-"):] if name.startswith("gjk2d-") else name
-    name = name[:-len(".so")] if name.endswith(".so") else name
+    name = name[len("gjk2d-") :] if name.startswith("gjk2d-") else name
+    name = name[: -len(".so")] if name.endswith(".so") else name
     for end in ("-float", "-double"):
         if name.endswith(end):
-            name = name[:-len(end)]
+            name = name[: -len(end)]
     return name
 
 
@@ -562,10 +664,12 @@ def pages_of(report):
 
 
 def stamp(command, ctx):
-    return (f"Generated by `{command}`; edit nothing between these markers. The campaign: git "
-            f"{ctx.get('git_revision', '?')}, {ctx.get('date', '?')}, "
-            f"{ctx.get('cases_total', '?')} cases on {ctx.get('threads', '?')} threads of "
-            f"{ctx.get('host', '?')}.")
+    return (
+        f"Generated by `{command}`; edit nothing between these markers. The campaign: git "
+        f"{ctx.get('git_revision', '?')}, {ctx.get('date', '?')}, "
+        f"{ctx.get('cases_total', '?')} cases on {ctx.get('threads', '?')} threads of "
+        f"{ctx.get('host', '?')}."
+    )
 
 
 def generated(report, shown_gjk, command, pages_dir):
@@ -574,17 +678,29 @@ def generated(report, shown_gjk, command, pages_dir):
     peers = [v["name"] for v in report["variants"] if "plugin" in v]
     pages = pages_of(report)
     page_of_variant = {v: page for page, (_, vs) in pages.items() for v in vs}
-    out = [BEGIN, "", stamp(command, ctx), "", "Plugins loaded (the report's `context.plugins`), "
-           "each with its page:", ""]
+    out = [
+        BEGIN,
+        "",
+        stamp(command, ctx),
+        "",
+        "Plugins loaded (the report's `context.plugins`), " "each with its page:",
+        "",
+    ]
     for p in ctx.get("plugins", []):
         lib = f", {p['library']}" if p.get("library") else ""
         page = page_name(p["file"])
-        out.append(f"- [{page}]({pages_dir}/{page}.md): `{os.path.basename(p['file'])}` "
-                   f"({p.get('kind', '?')}{lib}): " + ", ".join(p.get("variants", [])))
+        out.append(
+            f"- [{page}]({pages_dir}/{page}.md): `{os.path.basename(p['file'])}` "
+            f"({p.get('kind', '?')}{lib}): " + ", ".join(p.get("variants", []))
+        )
     names = [v for v in GJK2D_ROWS if any(x["name"] == v for x in report["variants"])] + peers
     out += [""] + contract_table(report, peers) + [""]
-    out += summary_table(report, names, {v: f"{pages_dir}/{p}" for v, p in page_of_variant.items()},
-                         f"{shown_gjk} {shlex.join(ctx_args(ctx))}")
+    out += summary_table(
+        report,
+        names,
+        {v: f"{pages_dir}/{p}" for v, p in page_of_variant.items()},
+        f"{shown_gjk} {shlex.join(ctx_args(ctx))}",
+    )
     return "\n".join(out + ["", END]) + "\n"
 
 
@@ -623,23 +739,35 @@ def splice(doc, block, title=TITLE):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--report", help="read this report.json of `gjk-validate run --peers` "
-                    "instead of running the campaign")
+    ap.add_argument(
+        "--report",
+        help="read this report.json of `gjk-validate run --peers` "
+        "instead of running the campaign",
+    )
     ap.add_argument("--gjk-validate", default=str(ROOT / "build/release/validation/gjk-validate"))
     ap.add_argument("--doc", default=str(ROOT / "docs/peers.md"))
     ap.add_argument("--svg-dir", help="default: <doc's folder>/peers")
-    ap.add_argument("--out", default=str(ROOT / "reports/peers"),
-                    help="the campaign's report directory (replaced)")
-    ap.add_argument("run_args", nargs="*", help="after --: gjk-validate run's options instead of "
-                    "the default campaign's families")
+    ap.add_argument(
+        "--out",
+        default=str(ROOT / "reports/peers"),
+        help="the campaign's report directory (replaced)",
+    )
+    ap.add_argument(
+        "run_args",
+        nargs="*",
+        help="after --: gjk-validate run's options instead of " "the default campaign's families",
+    )
     a = ap.parse_args()
     doc = pathlib.Path(a.doc).resolve()
     svg_dir = pathlib.Path(a.svg_dir).resolve() if a.svg_dir else doc.parent / "peers"
     gjk = a.gjk_validate
     if not os.access(gjk, os.X_OK):
         fail(2, f"{gjk}: not found or not executable (build it: scripts/run.sh)")
-    shown_gjk = ("build/release/validation/gjk-validate" if pathlib.Path(gjk).resolve() ==
-                 (ROOT / "build/release/validation/gjk-validate").resolve() else "gjk-validate")
+    shown_gjk = (
+        "build/release/validation/gjk-validate"
+        if pathlib.Path(gjk).resolve() == (ROOT / "build/release/validation/gjk-validate").resolve()
+        else "gjk-validate"
+    )
     out = pathlib.Path(a.out).resolve()
     if a.report:
         report_path = pathlib.Path(a.report)
@@ -654,17 +782,21 @@ def main():
     me = "python3 scripts/peers_doc.py" + (" " + shlex.join(sys.argv[1:]) if sys.argv[1:] else "")
     (svg_dir / "repro").mkdir(parents=True, exist_ok=True)
     # The drawings and programs of peers no longer in the report go too.
-    for old in list(svg_dir.glob("*.svg")) + [f for f in (svg_dir / "repro").iterdir()
-                                              if f.is_file()]:
+    for old in list(svg_dir.glob("*.svg")) + [
+        f for f in (svg_dir / "repro").iterdir() if f.is_file()
+    ]:
         old.unlink()
     written = {}
     with tempfile.TemporaryDirectory(prefix="peers_doc.") as work:
         for name, (title, variants) in pages_of(report).items():
             page = svg_dir / f"{name}.md"
-            block = generated_page(report, variants, gjk, shown_gjk, me, page, svg_dir,
-                                   pathlib.Path(work))
+            block = generated_page(
+                report, variants, gjk, shown_gjk, me, page, svg_dir, pathlib.Path(work)
+            )
             written[page] = splice(page, block, f"# {title}: how gjk-validate judges it")
-    written[doc] = splice(doc, generated(report, shown_gjk, me, os.path.relpath(svg_dir, doc.parent)))
+    written[doc] = splice(
+        doc, generated(report, shown_gjk, me, os.path.relpath(svg_dir, doc.parent))
+    )
     doc.parent.mkdir(parents=True, exist_ok=True)
     for path, text in written.items():
         path.write_text(text)

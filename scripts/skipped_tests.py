@@ -18,7 +18,9 @@ import xml.etree.ElementTree as ET
 
 
 def reasons(output):
-    return [line[len("skipped: "):] for line in output.splitlines() if line.startswith("skipped: ")]
+    return [
+        line[len("skipped: ") :] for line in output.splitlines() if line.startswith("skipped: ")
+    ]
 
 
 def summary(stage, root):
@@ -33,9 +35,16 @@ def summary(stage, root):
             parts += [f"- {case.get('name')}: {r}" for r in reasons(output)]
     failed = sum(1 for case in root.iter("testcase") if case.find("failure") is not None)
     passed = sum(1 for _ in root.iter("testcase")) - failed - len(tests)
-    head = (f"skips ({stage}): {len(tests)} {'test' if len(tests) == 1 else 'tests'} skipped, "
-            f"{len(parts)} {'part' if len(parts) == 1 else 'parts'} of passing tests skipped")
-    return [head] + tests + parts + [f"{stage}: {passed} passed, {failed} failed, {len(tests)} skipped"]
+    head = (
+        f"skips ({stage}): {len(tests)} {'test' if len(tests) == 1 else 'tests'} skipped, "
+        f"{len(parts)} {'part' if len(parts) == 1 else 'parts'} of passing tests skipped"
+    )
+    return (
+        [head]
+        + tests
+        + parts
+        + [f"{stage}: {passed} passed, {failed} failed, {len(tests)} skipped"]
+    )
 
 
 def main():

@@ -33,21 +33,34 @@ def main():
         try:
             path_of[record["name"]] = record["variants"][variant]["path"]
         except KeyError:
-            print(f"split_cases_by_path: {jsonl_path}:{number}: case '{record.get('name')}' has no "
-                  f"path for variant '{variant}'", file=sys.stderr)
+            print(
+                f"split_cases_by_path: {jsonl_path}:{number}: case '{record.get('name')}' has no "
+                f"path for variant '{variant}'",
+                file=sys.stderr,
+            )
             return 2
     groups = {}
     for case in cases["cases"]:
         if case["name"] not in path_of:
-            print(f"split_cases_by_path: case '{case['name']}' is not in {jsonl_path}", file=sys.stderr)
+            print(
+                f"split_cases_by_path: case '{case['name']}' is not in {jsonl_path}",
+                file=sys.stderr,
+            )
             return 2
         groups.setdefault(path_of[case["name"]], []).append(case)
     for path, group in sorted(groups.items()):
         out = cases_path.with_name(f"{cases_path.stem}-{path}.json")
         comment = f"the {len(group)} cases of {cases_path.name} where {variant} took path '{path}'"
-        out.write_text(json.dumps({"format": "gjk-cases/1",
-                                   "comments": cases.get("comments", []) + [comment],
-                                   "cases": group}) + "\n")
+        out.write_text(
+            json.dumps(
+                {
+                    "format": "gjk-cases/1",
+                    "comments": cases.get("comments", []) + [comment],
+                    "cases": group,
+                }
+            )
+            + "\n"
+        )
         print(f"{out}: {len(group)} cases ({path})")
     return 0
 

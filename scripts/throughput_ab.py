@@ -27,9 +27,20 @@ PHASES = ["generate", "exact", "gjk", "witness", "total"]
 
 
 def run_once(exe, args, out):
-    cmd = [exe, "run", *sum((["--family", f] for f in args.family), []), "--variants", args.variants,
-           "--no-timing", "--no-default-plugins", "--threads", str(args.threads), "--no-progress",
-           "--out", str(out)]
+    cmd = [
+        exe,
+        "run",
+        *sum((["--family", f] for f in args.family), []),
+        "--variants",
+        args.variants,
+        "--no-timing",
+        "--no-default-plugins",
+        "--threads",
+        str(args.threads),
+        "--no-progress",
+        "--out",
+        str(out),
+    ]
     r = subprocess.run(cmd, capture_output=True, text=True)
     if r.returncode != 0:
         last = (r.stdout + r.stderr).strip().splitlines()[-1:] or ["(no output)"]
@@ -44,8 +55,11 @@ def measure(args, work):
     for r in range(args.rounds):
         for name, exe in (("old", args.old), ("new", args.new)):
             runs[name].append(run_once(exe, args, work / f"{name}-{r}"))
-            print(f"round {r + 1} {name}: " +
-                  " ".join(f"{k} {runs[name][-1][k]:.2f}" for k in PHASES), flush=True)
+            print(
+                f"round {r + 1} {name}: "
+                + " ".join(f"{k} {runs[name][-1][k]:.2f}" for k in PHASES),
+                flush=True,
+            )
     return runs
 
 
@@ -56,8 +70,11 @@ def report(runs):
         n = statistics.median(x[k] for x in runs["new"])
         print(f"{k:9s} {o:8.2f} {n:8.2f} {n / o:6.3f}")
     ratios = [n["total"] / o["total"] for o, n in zip(runs["old"], runs["new"])]
-    print("total new/old per round: " + ", ".join(f"{x:.3f}" for x in ratios) +
-          f"; median {statistics.median(ratios):.3f}")
+    print(
+        "total new/old per round: "
+        + ", ".join(f"{x:.3f}" for x in ratios)
+        + f"; median {statistics.median(ratios):.3f}"
+    )
 
 
 def main():

@@ -63,13 +63,21 @@ def main():
             errors.append(f"a command needing no optional part is skipped or an error: {e}")
         junit = t / "junit.xml"
         junit.write_text(JUNIT)
-        r = subprocess.run([sys.executable, str(SCRIPTS / "skipped_tests.py"), "release", str(junit)],
-                           capture_output=True, text=True)
+        r = subprocess.run(
+            [sys.executable, str(SCRIPTS / "skipped_tests.py"), "release", str(junit)],
+            capture_output=True,
+            text=True,
+        )
         if r.returncode != 0 or r.stdout != SUMMARY:
-            errors.append(f"skipped_tests.py exited {r.returncode}, printed:\n{r.stdout}{r.stderr}"
-                          f"expected:\n{SUMMARY}")
-        r = subprocess.run([sys.executable, str(SCRIPTS / "skipped_tests.py"), "release",
-                            str(t / "none.xml")], capture_output=True, text=True)
+            errors.append(
+                f"skipped_tests.py exited {r.returncode}, printed:\n{r.stdout}{r.stderr}"
+                f"expected:\n{SUMMARY}"
+            )
+        r = subprocess.run(
+            [sys.executable, str(SCRIPTS / "skipped_tests.py"), "release", str(t / "none.xml")],
+            capture_output=True,
+            text=True,
+        )
         if r.returncode != 2 or "none.xml" not in r.stderr:
             errors.append(f"a missing JUnit file: exit {r.returncode}, {r.stderr!r}")
     for e in errors:

@@ -43,12 +43,20 @@ def main():
         batch = median_seconds(lambda: gjk2d.distance_batch(points, oa, ob, position_b=position_b))
         loop = _gjk2d._batch_loop_seconds(points, oa, ob, position_b=position_b, repeats=7)
         single = median_seconds(
-            lambda: [gjk2d.distance(points[oa[i]:oa[i + 1]], points[ob[i]:ob[i + 1]],
-                                    position_b=position_b[i]) for i in range(pairs)], runs=3)
+            lambda: [
+                gjk2d.distance(
+                    points[oa[i] : oa[i + 1]], points[ob[i] : ob[i + 1]], position_b=position_b[i]
+                )
+                for i in range(pairs)
+            ],
+            runs=3,
+        )
         ns = 1e9 / pairs
-        print(f"{np.dtype(dtype).name}: {pairs} pairs; ns per query: distance_batch {batch * ns:.0f}, "
-              f"C++ loop {loop * ns:.0f}, overhead {(batch - loop) * ns:.0f}; "
-              f"one gjk2d.distance per pair {single * ns:.0f}")
+        print(
+            f"{np.dtype(dtype).name}: {pairs} pairs; ns per query: distance_batch {batch * ns:.0f}, "
+            f"C++ loop {loop * ns:.0f}, overhead {(batch - loop) * ns:.0f}; "
+            f"one gjk2d.distance per pair {single * ns:.0f}"
+        )
 
 
 if __name__ == "__main__":

@@ -24,15 +24,20 @@ def constant_batch(points, offsets_a, offsets_b, **poses):
 
 def ns_per_query(fn, batch):
     with tempfile.TemporaryDirectory() as out:
-        report = gjk2d.validate(fn, families="random:2048", out=out + "/r", name="overhead",
-                                batch=batch, progress=False)
+        report = gjk2d.validate(
+            fn, families="random:2048", out=out + "/r", name="overhead", batch=batch, progress=False
+        )
     return {v: report["families"][0]["variants"][v]["ns_per_query"] for v in ("double", "overhead")}
 
 
-for label, fn, batch in (("per pair, constant answer", constant, False),
-                         ("per batch, constant answers", constant_batch, True),
-                         ("per pair, gjk2d.distance", gjk2d.distance, False),
-                         ("per batch, gjk2d.distance_batch", gjk2d.distance_batch, True)):
+for label, fn, batch in (
+    ("per pair, constant answer", constant, False),
+    ("per batch, constant answers", constant_batch, True),
+    ("per pair, gjk2d.distance", gjk2d.distance, False),
+    ("per batch, gjk2d.distance_batch", gjk2d.distance_batch, True),
+):
     t = ns_per_query(fn, batch)
-    print(f"{label:34} {t['overhead']:9.0f} ns per query "
-          f"(gjk2d's double in the same run: {t['double']:.0f} ns)")
+    print(
+        f"{label:34} {t['overhead']:9.0f} ns per query "
+        f"(gjk2d's double in the same run: {t['double']:.0f} ns)"
+    )

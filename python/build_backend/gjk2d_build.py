@@ -49,8 +49,9 @@ def _project():
     with open(ROOT / "pyproject.toml", "rb") as f:
         project = tomllib.load(f)["project"]
     if project.get("dynamic") != ["version"] or "version" in project:
-        raise RuntimeError("pyproject.toml: [project] must leave the version dynamic "
-                           "(it is CMakeLists.txt's)")
+        raise RuntimeError(
+            "pyproject.toml: [project] must leave the version dynamic " "(it is CMakeLists.txt's)"
+        )
     return project
 
 
@@ -67,17 +68,24 @@ def _dist_info():
 def _metadata():
     """METADATA (core metadata 2.1) from pyproject.toml's [project] and the version."""
     p = _project()
-    lines = ["Metadata-Version: 2.1", "Name: " + p["name"], "Version: " + _version(),
-             "Summary: " + p["description"], "License: " + p["license"]["text"],
-             "Requires-Python: " + p["requires-python"]]
+    lines = [
+        "Metadata-Version: 2.1",
+        "Name: " + p["name"],
+        "Version: " + _version(),
+        "Summary: " + p["description"],
+        "License: " + p["license"]["text"],
+        "Requires-Python: " + p["requires-python"],
+    ]
     lines += ["Requires-Dist: " + d for d in p.get("dependencies", [])]
     lines += ["Project-URL: {}, {}".format(k, v) for k, v in p.get("urls", {}).items()]
     return "\n".join(lines) + "\n"
 
 
 def _wheel_file():
-    return ("Wheel-Version: 1.0\nGenerator: gjk2d_build\nRoot-Is-Purelib: false\n"
-            "Tag: {}\n".format(_tag()))
+    return (
+        "Wheel-Version: 1.0\nGenerator: gjk2d_build\nRoot-Is-Purelib: false\n"
+        "Tag: {}\n".format(_tag())
+    )
 
 
 def _run(cmd, **kw):
@@ -88,17 +96,30 @@ def _run(cmd, **kw):
 def _cmake_build(build, jobs):
     """Configures DIR when new, then builds _gjk2d there; returns the extension's path."""
     if not (build / "CMakeCache.txt").exists():
-        _run(["cmake", "-S", ROOT, "-B", build, "--preset", "release",
-              "-DGJK2D_BUILD_TESTS=OFF", "-DGJK2D_BUILD_BENCHMARKS=OFF",
-              "-DGJK2D_BUILD_EXAMPLES=OFF", "-DGJK2D_BUILD_PYTHON=ON",
-              "-DPython_EXECUTABLE=" + sys.executable])
+        _run(
+            [
+                "cmake",
+                "-S",
+                ROOT,
+                "-B",
+                build,
+                "--preset",
+                "release",
+                "-DGJK2D_BUILD_TESTS=OFF",
+                "-DGJK2D_BUILD_BENCHMARKS=OFF",
+                "-DGJK2D_BUILD_EXAMPLES=OFF",
+                "-DGJK2D_BUILD_PYTHON=ON",
+                "-DPython_EXECUTABLE=" + sys.executable,
+            ]
+        )
     jobs = jobs or os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
     _run(["cmake", "--build", build, "--target", "_gjk2d", "-j", jobs])
     module = build / "python" / "gjk2d" / EXTENSION
     if not module.is_file():
-        raise RuntimeError("build-dir {}: no python/gjk2d/{} after the build (is it a build of "
-                           "this tree, for this Python, {}?)".format(build, EXTENSION,
-                                                                       sys.executable))
+        raise RuntimeError(
+            "build-dir {}: no python/gjk2d/{} after the build (is it a build of "
+            "this tree, for this Python, {}?)".format(build, EXTENSION, sys.executable)
+        )
     return module
 
 
@@ -116,9 +137,20 @@ def _stage(module, stage):
     stubs = stage.parent / "stubs"
     env = dict(os.environ, PYTHONPATH=str(stage), PYTHONDONTWRITEBYTECODE="1")
     # Debian's mypy is compiled (mypyc): `-m mypy.stubgen` finds no code object, main() runs.
-    _run([sys.executable, "-c", "from mypy.stubgen import main; main()", "-q", "-m",
-          "gjk2d._gjk2d", "-o", stubs],
-         env=env, cwd=stage.parent)
+    _run(
+        [
+            sys.executable,
+            "-c",
+            "from mypy.stubgen import main; main()",
+            "-q",
+            "-m",
+            "gjk2d._gjk2d",
+            "-o",
+            stubs,
+        ],
+        env=env,
+        cwd=stage.parent,
+    )
     shutil.copyfile(stubs / "gjk2d" / "_gjk2d.pyi", package / "_gjk2d.pyi")
     (package / "py.typed").write_text("")  # PEP 561: the package carries its types
 
@@ -152,8 +184,11 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     settings = config_settings or {}
     unknown = set(settings) - {"build-dir", "jobs"}
     if unknown:
-        raise RuntimeError("unknown config settings {}: gjk2d_build takes build-dir and jobs"
-                           .format(sorted(unknown)))
+        raise RuntimeError(
+            "unknown config settings {}: gjk2d_build takes build-dir and jobs".format(
+                sorted(unknown)
+            )
+        )
     with tempfile.TemporaryDirectory(prefix="gjk2d-wheel-") as tmp:
         given = settings.get("build-dir")
         build = Path(given).resolve() if given else Path(tmp) / "cmake"

@@ -50,16 +50,28 @@ def world(points, position, rotation):
     return np.asarray(points, float) @ np.array([[c, s], [-s, c]]) + np.asarray(position, float)
 
 
-def gjk(points_a, points_b, radius_a=0.0, radius_b=0.0, position_a=(0, 0), rotation_a=(1, 0),
-        position_b=(0, 0), rotation_b=(1, 0), max_iterations=30):
+def gjk(
+    points_a,
+    points_b,
+    radius_a=0.0,
+    radius_b=0.0,
+    position_a=(0, 0),
+    rotation_a=(1, 0),
+    position_b=(0, 0),
+    rotation_b=(1, 0),
+    max_iterations=30,
+):
     """gjk2d.distance's arguments; returns (distance, point_a, point_b, iterations)."""
     a, b = world(points_a, position_a, rotation_a), world(points_b, position_b, rotation_b)
     simplex = [(0, 0)]  # vertex pairs (i, j): the simplex vertex w = a[i] - b[j]
     for iteration in range(1, max_iterations + 1):
         w = np.array([a[i] - b[j] for i, j in simplex])
         weights = [lambda w: np.ones(1), solve2, solve3][len(simplex) - 1](w)
-        simplex, w, weights = [v for v, k in zip(simplex, weights > 0) if k], w[weights > 0], \
-            weights[weights > 0]  # cull the vertices that do not contribute
+        simplex, w, weights = (
+            [v for v, k in zip(simplex, weights > 0) if k],
+            w[weights > 0],
+            weights[weights > 0],
+        )  # cull the vertices that do not contribute
         if len(simplex) == 3:
             break  # case 2: containment
         if len(simplex) == 2:  # the edge's perpendicular, turned towards the origin
@@ -86,23 +98,40 @@ def gjk(points_a, points_b, radius_a=0.0, radius_b=0.0, position_a=(0, 0), rotat
 
 
 # --- The batched form: what gjk2d.validate(..., batch=True) calls ---------------------------------
-def gjk_batch(points, offsets_a, offsets_b, radius_a, radius_b, position_a, rotation_a,
-              position_b, rotation_b):
+def gjk_batch(
+    points, offsets_a, offsets_b, radius_a, radius_b, position_a, rotation_a, position_b, rotation_b
+):
     """gjk2d.distance_batch's packing: pair i is points[offsets_a[i]:offsets_a[i + 1]] and
     points[offsets_b[i]:offsets_b[i + 1]]; returns arrays. A loop here: a vectorised GJK (NumPy
     lanes, JAX) takes the same arguments. An exception would count for every pair of the call:
     a pair that raises is answered NaN instead (a non-finite answer, a failure of that pair)."""
     n = len(offsets_a) - 1
-    out = {"distance": np.full(n, np.nan), "point_a": np.full((n, 2), np.nan),
-           "point_b": np.full((n, 2), np.nan), "iterations": np.zeros(n, np.int64)}
+    out = {
+        "distance": np.full(n, np.nan),
+        "point_a": np.full((n, 2), np.nan),
+        "point_b": np.full((n, 2), np.nan),
+        "iterations": np.zeros(n, np.int64),
+    }
     for i in range(n):
         try:
-            d, pa, pb, it = gjk(points[offsets_a[i]:offsets_a[i + 1]],
-                                points[offsets_b[i]:offsets_b[i + 1]], radius_a[i], radius_b[i],
-                                position_a[i], rotation_a[i], position_b[i], rotation_b[i])
+            d, pa, pb, it = gjk(
+                points[offsets_a[i] : offsets_a[i + 1]],
+                points[offsets_b[i] : offsets_b[i + 1]],
+                radius_a[i],
+                radius_b[i],
+                position_a[i],
+                rotation_a[i],
+                position_b[i],
+                rotation_b[i],
+            )
         except Exception:
             continue
-        out["distance"][i], out["point_a"][i], out["point_b"][i], out["iterations"][i] = d, pa, pb, it
+        out["distance"][i], out["point_a"][i], out["point_b"][i], out["iterations"][i] = (
+            d,
+            pa,
+            pb,
+            it,
+        )
     return out
 
 
@@ -114,21 +143,34 @@ def summary(report, name):
     failing = [r for r in rows if r["failures"] > 0]
     cases = sum(r["cases"] for r in rows)
     failures = sum(r["failures"] for r in rows)
-    lines.append(f"{name}: {failures} failures in {cases} cases ({len(failing)} of {len(rows)} "
-                 f"families); exit code {report['exit_code']}")
+    lines.append(
+        f"{name}: {failures} failures in {cases} cases ({len(failing)} of {len(rows)} "
+        f"families); exit code {report['exit_code']}"
+    )
     header = ("family", "failed", "beyond", "f.o+s", "inval.", "nonfin", "raised", "err/bound")
     lines.append("  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9}".format(*header))
     for r in sorted(failing, key=lambda r: (-r["failures"], r["family"])):
-        lines.append("  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9.3g}".format(
-            r["family"], f"{r['failures']}/{r['cases']}", r["beyond_bound"],
-            r["false_separation"] + r["false_overlap"], r["invalid"], r["nonfinite"],
-            r["plugin_errors"], r["bound_ratio_max"] or 0.0))
+        lines.append(
+            "  {:26} {:>9} {:>6} {:>6} {:>6} {:>6} {:>6} {:>9.3g}".format(
+                r["family"],
+                f"{r['failures']}/{r['cases']}",
+                r["beyond_bound"],
+                r["false_separation"] + r["false_overlap"],
+                r["invalid"],
+                r["nonfinite"],
+                r["plugin_errors"],
+                r["bound_ratio_max"] or 0.0,
+            )
+        )
     timed = [r["ns_per_query"] for r in rows if r["ns_per_query"]]
-    double = [r["ns_per_query"] for r in report.rows()
-              if r["variant"] == "double" and r["ns_per_query"]]
+    double = [
+        r["ns_per_query"] for r in report.rows() if r["variant"] == "double" and r["ns_per_query"]
+    ]
     if timed and double:
-        lines.append(f"  time per query: median over families {np.median(timed) / 1e3:.1f} us "
-                     f"(gjk2d's double: {np.median(double) / 1e3:.2f} us)")
+        lines.append(
+            f"  time per query: median over families {np.median(timed) / 1e3:.1f} us "
+            f"(gjk2d's double: {np.median(double) / 1e3:.2f} us)"
+        )
     return "\n".join(lines)
 
 
@@ -136,23 +178,31 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", required=True, help="directory for the two report directories")
     parser.add_argument("--random", type=int, default=2000, help="cases of random")
-    parser.add_argument("--hard", type=int, default=None,
-                        help="cases of each hard sub-family (default: their built-in counts)")
+    parser.add_argument(
+        "--hard",
+        type=int,
+        default=None,
+        help="cases of each hard sub-family (default: their built-in counts)",
+    )
     parser.add_argument("--engine", type=int, default=200, help="cases of each engine family")
     parser.add_argument("--passes", type=int, default=None, help="timed passes (run --passes)")
     args = parser.parse_args()
-    families = [f"random:{args.random}",
-                "hard" if args.hard is None else f"hard:{args.hard}",
-                f"engine:{args.engine}"]
+    families = [
+        f"random:{args.random}",
+        "hard" if args.hard is None else f"hard:{args.hard}",
+        f"engine:{args.engine}",
+    ]
     common = dict(families=families, passes=args.passes, progress=False)
     np.seterr(over="ignore", invalid="ignore")  # the extreme-scale family overflows: counted
     per_pair = gjk2d.validate(gjk, out=args.out + "/numpy-gjk", name="numpy-gjk", **common)
     print(summary(per_pair, "numpy-gjk"))
-    batched = gjk2d.validate(gjk_batch, out=args.out + "/numpy-gjk-batch", name="numpy-gjk",
-                             batch=True, **common)
+    batched = gjk2d.validate(
+        gjk_batch, out=args.out + "/numpy-gjk-batch", name="numpy-gjk", batch=True, **common
+    )
     print(summary(batched, "numpy-gjk") + "  (batched)")
-    same = [(r["family"], r["failures"]) for r in per_pair.rows()] == \
-           [(r["family"], r["failures"]) for r in batched.rows()]
+    same = [(r["family"], r["failures"]) for r in per_pair.rows()] == [
+        (r["family"], r["failures"]) for r in batched.rows()
+    ]
     print("the batched call's failures are the per-pair call's:", same)
     return 0 if same else 1
 

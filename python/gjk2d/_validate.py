@@ -62,23 +62,54 @@ def _run_arguments(name, families, cases, out, options):
     args += ["--variants", ",".join(variants + [name])]
     if options["judge"]:
         args += ["--judge", name]
-    for option, key in (("--seed", "seed"), ("--threads", "threads"), ("--passes", "passes"),
-                        ("--worst", "worst"), ("--chunk", "chunk"),
-                        ("--exact-route", "exact_route")):
+    for option, key in (
+        ("--seed", "seed"),
+        ("--threads", "threads"),
+        ("--passes", "passes"),
+        ("--worst", "worst"),
+        ("--chunk", "chunk"),
+        ("--exact-route", "exact_route"),
+    ):
         if options[key] is not None:
             args += [option, str(options[key])]
-    for flag, key, wanted in (("--no-timing", "timing", False), ("--per-case", "per_case", True),
-                              ("--verbose", "verbose", True), ("--no-progress", "progress", False)):
+    for flag, key, wanted in (
+        ("--no-timing", "timing", False),
+        ("--per-case", "per_case", True),
+        ("--verbose", "verbose", True),
+        ("--no-progress", "progress", False),
+    ):
         if bool(options[key]) == wanted:
             args.append(flag)
     return [a for a in args if a is not None]
 
 
-def validate(fn, families=None, cases=None, out=None, *, name=None, batch=False,
-             dtype="float64", judge=False, variants=("double",), default_cases=False, seed=None,
-             threads=None, timing=True, passes=None, per_case=False, worst=None, chunk=None,
-             exact_route=None, default_plugins=False, accepts_radius=True, max_vertices=0,
-             library=None, progress=True, verbose=False):
+def validate(
+    fn,
+    families=None,
+    cases=None,
+    out=None,
+    *,
+    name=None,
+    batch=False,
+    dtype="float64",
+    judge=False,
+    variants=("double",),
+    default_cases=False,
+    seed=None,
+    threads=None,
+    timing=True,
+    passes=None,
+    per_case=False,
+    worst=None,
+    chunk=None,
+    exact_route=None,
+    default_plugins=False,
+    accepts_radius=True,
+    max_vertices=0,
+    library=None,
+    progress=True,
+    verbose=False,
+):
     """Runs fn as a variant of `gjk-validate run` and returns the report (a Report: report.json's
     dict, with .path the report directory).
 
@@ -104,10 +135,22 @@ def validate(fn, families=None, cases=None, out=None, *, name=None, batch=False,
         raise ValueError("batch: expected True or False")
     name = _variant_name(fn) if name is None else name
     dtype = numpy.dtype(dtype).name
-    options = dict(default_plugins=default_plugins, default_cases=default_cases,
-                   variants=variants, judge=judge, seed=seed, threads=threads, passes=passes,
-                   worst=worst, chunk=chunk, exact_route=exact_route, timing=timing,
-                   per_case=per_case, verbose=verbose, progress=progress)
+    options = dict(
+        default_plugins=default_plugins,
+        default_cases=default_cases,
+        variants=variants,
+        judge=judge,
+        seed=seed,
+        threads=threads,
+        passes=passes,
+        worst=worst,
+        chunk=chunk,
+        exact_route=exact_route,
+        timing=timing,
+        per_case=per_case,
+        verbose=verbose,
+        progress=progress,
+    )
     if library is None:
         library = f"Python {platform.python_version()}, NumPy {numpy.__version__}"
     made = tempfile.mkdtemp(prefix="gjk2d-validate-") if out is None else None
@@ -116,8 +159,17 @@ def validate(fn, families=None, cases=None, out=None, *, name=None, batch=False,
         args = _run_arguments(name, families, cases, out, options)
         sys.stdout.flush()  # before the runner's summary, which C's stdout prints
         sys.stderr.flush()
-        _gjk2d._validate(fn, name, batch, dtype, _source(fn), library, bool(accepts_radius),
-                         int(max_vertices), args)
+        _gjk2d._validate(
+            fn,
+            name,
+            batch,
+            dtype,
+            _source(fn),
+            library,
+            bool(accepts_radius),
+            int(max_vertices),
+            args,
+        )
     except BaseException:
         if made:
             shutil.rmtree(made, ignore_errors=True)
@@ -153,8 +205,10 @@ class Report(dict):
         try:
             import pandas
         except ImportError as e:
-            raise ImportError("Report.frame() needs pandas (apt-get install python3-pandas); "
-                              "Report.rows() gives the same rows as dicts") from e
+            raise ImportError(
+                "Report.frame() needs pandas (apt-get install python3-pandas); "
+                "Report.rows() gives the same rows as dicts"
+            ) from e
         return pandas.DataFrame(self.rows())
 
 

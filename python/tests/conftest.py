@@ -18,15 +18,26 @@ FAMILIES = ["random:4000", "hard", "engine:300"]
 
 
 def default_case_files():
-    return sorted(glob.glob(os.path.join(os.environ["GJK2D_BUILD"], "validation", "cases", "*.json")))
+    return sorted(
+        glob.glob(os.path.join(os.environ["GJK2D_BUILD"], "validation", "cases", "*.json"))
+    )
 
 
 @pytest.fixture(scope="session")
 def campaign(tmp_path_factory):
     """(cases by name, gjk-validate's cases.jsonl lines by name) for the double and float variants."""
     out = tmp_path_factory.mktemp("campaign") / "report"
-    args = [os.environ["GJK2D_VALIDATE"], "run", "--variants", "double,float", "--per-case",
-            "--no-timing", "--no-progress", "--out", str(out)]
+    args = [
+        os.environ["GJK2D_VALIDATE"],
+        "run",
+        "--variants",
+        "double,float",
+        "--per-case",
+        "--no-timing",
+        "--no-progress",
+        "--out",
+        str(out),
+    ]
     for f in FAMILIES:
         args += ["--family", f]
     for f in default_case_files():

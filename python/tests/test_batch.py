@@ -24,13 +24,25 @@ def test_each_pair_as_its_own_query(dtype):
     angle = rng.uniform(0, 6.3, pairs)
     rotation_b = np.stack([np.cos(angle), np.sin(angle)], axis=1)
     radius_a = rng.uniform(0, 0.3, pairs)
-    out = gjk2d.distance_batch(points, oa, ob, radius_a=radius_a, position_b=position_b,
-                               rotation_b=rotation_b, certify=True)
+    out = gjk2d.distance_batch(
+        points,
+        oa,
+        ob,
+        radius_a=radius_a,
+        position_b=position_b,
+        rotation_b=rotation_b,
+        certify=True,
+    )
     assert out["distance"].dtype == dtype and out["point_a"].shape == (pairs, 2)
     for i in range(pairs):
-        one = gjk2d.distance(points[oa[i]:oa[i + 1]], points[ob[i]:ob[i + 1]],
-                             radius_a=radius_a[i], position_b=position_b[i],
-                             rotation_b=rotation_b[i], certify=True)
+        one = gjk2d.distance(
+            points[oa[i] : oa[i + 1]],
+            points[ob[i] : ob[i + 1]],
+            radius_a=radius_a[i],
+            position_b=position_b[i],
+            rotation_b=rotation_b[i],
+            certify=True,
+        )
         assert out["distance"][i].tobytes() == dtype(one.distance).tobytes(), i
         assert np.array_equal(out["point_b"][i], np.array(one.point_b, dtype)), i
         assert np.array_equal(out["normal"][i], np.array(one.normal, dtype)), i

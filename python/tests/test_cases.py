@@ -22,8 +22,20 @@ def same_case(x, y):
 @pytest.mark.parametrize("family", ["random:50", "hard/sliver:7", "engine/pyramid-toi:20"])
 def test_generate_gives_the_cases_of_gjk_validate_generate(tmp_path, family):
     path = tmp_path / "cases.json"
-    subprocess.run([os.environ["GJK2D_VALIDATE"], "generate", "--family", family, "--seed", "9",
-                    "--out", str(path)], check=True, stderr=subprocess.DEVNULL)
+    subprocess.run(
+        [
+            os.environ["GJK2D_VALIDATE"],
+            "generate",
+            "--family",
+            family,
+            "--seed",
+            "9",
+            "--out",
+            str(path),
+        ],
+        check=True,
+        stderr=subprocess.DEVNULL,
+    )
     name, count = family.split(":")
     mine = gjk2d.generate(name, seed=9, count=int(count))
     theirs = gjk2d.read_cases(str(path))
@@ -51,15 +63,31 @@ def test_write_then_read_round_trips(tmp_path):
         same_case(x, y)
     assert back[0]["comment"] == "from Python"
     # The file is what gjk-validate runs: it reads it without a rejection.
-    subprocess.run([os.environ["GJK2D_VALIDATE"], "run", "--cases", path, "--variants", "double",
-                    "--no-timing", "--no-progress", "--out", str(tmp_path / "r")], check=True,
-                   stdout=subprocess.DEVNULL)
+    subprocess.run(
+        [
+            os.environ["GJK2D_VALIDATE"],
+            "run",
+            "--cases",
+            path,
+            "--variants",
+            "double",
+            "--no-timing",
+            "--no-progress",
+            "--out",
+            str(tmp_path / "r"),
+        ],
+        check=True,
+        stdout=subprocess.DEVNULL,
+    )
 
 
 def test_a_case_given_by_hand_is_written(tmp_path):
     path = str(tmp_path / "hand.json")
-    case = {"name": "hand", "a": {"points": [[0, 0], [1, 0]]},
-            "b": {"points": [[0, 2]], "radius": 0.5, "position": (1, 1), "rotation": (0, 1)}}
+    case = {
+        "name": "hand",
+        "a": {"points": [[0, 0], [1, 0]]},
+        "b": {"points": [[0, 2]], "radius": 0.5, "position": (1, 1), "rotation": (0, 1)},
+    }
     gjk2d.write_cases(path, [case])
     (back,) = gjk2d.read_cases(path)
     assert back["b"]["radius"] == 0.5 and back["b"]["rotation"] == (0.0, 1.0)
@@ -73,17 +101,25 @@ def write(tmp_path, text):
 
 
 def test_a_rejected_case_raises_naming_file_case_and_field(tmp_path):
-    path = write(tmp_path, '{"format": "gjk-cases/1", "cases": ['
-                 '{"name": "ok", "a": {"points": [[0, 0]]}, "b": {"points": [[1, 0]]}},'
-                 '{"name": "neg", "a": {"points": [[0, 0]], "radius": -1}, "b": {"points": [[1, 0]]}}]}')
-    with pytest.raises(gjk2d.InputError, match=r"^bad\.json#1 \(case 'neg'\): a\.radius is negative"):
+    path = write(
+        tmp_path,
+        '{"format": "gjk-cases/1", "cases": ['
+        '{"name": "ok", "a": {"points": [[0, 0]]}, "b": {"points": [[1, 0]]}},'
+        '{"name": "neg", "a": {"points": [[0, 0]], "radius": -1}, "b": {"points": [[1, 0]]}}]}',
+    )
+    with pytest.raises(
+        gjk2d.InputError, match=r"^bad\.json#1 \(case 'neg'\): a\.radius is negative"
+    ):
         gjk2d.read_cases(path)
 
 
 def test_a_bad_file_raises_the_runners_message(tmp_path):
     path = write(tmp_path, '{"format": "gjk-cases/1", "cases": [')
-    run = subprocess.run([os.environ["GJK2D_VALIDATE"], "run", "--cases", path, "--out",
-                          str(tmp_path / "r")], capture_output=True, text=True)
+    run = subprocess.run(
+        [os.environ["GJK2D_VALIDATE"], "run", "--cases", path, "--out", str(tmp_path / "r")],
+        capture_output=True,
+        text=True,
+    )
     assert run.returncode == 2
     with pytest.raises(ValueError) as raised:
         gjk2d.read_cases(path)
@@ -115,21 +151,31 @@ def bits(v):
 
 def columns_of(cases):
     """The array form of write_cases, built from case dicts (as a user's NumPy arrays would be)."""
+
     def shape(side):
-        return {"points": np.concatenate([c[side]["points"] for c in cases]),
-                "counts": np.array([len(c[side]["points"]) for c in cases]),
-                "radius": np.array([c[side]["radius"] for c in cases]),
-                "position": np.array([c[side]["position"] for c in cases]),
-                "rotation": np.array([c[side]["rotation"] for c in cases])}
-    return {"names": [c["name"] for c in cases], "a": shape("a"), "b": shape("b"),
-            "source": [c["source"] for c in cases], "comment": [c["comment"] for c in cases]}
+        return {
+            "points": np.concatenate([c[side]["points"] for c in cases]),
+            "counts": np.array([len(c[side]["points"]) for c in cases]),
+            "radius": np.array([c[side]["radius"] for c in cases]),
+            "position": np.array([c[side]["position"] for c in cases]),
+            "rotation": np.array([c[side]["rotation"] for c in cases]),
+        }
+
+    return {
+        "names": [c["name"] for c in cases],
+        "a": shape("a"),
+        "b": shape("b"),
+        "source": [c["source"] for c in cases],
+        "comment": [c["comment"] for c in cases],
+    }
 
 
 @pytest.mark.parametrize("fmt", ["json", "msgpack"])
 def test_numpy_columns_write_the_same_cases_as_dicts(tmp_path, fmt):
     # Float values (the engine families record floats) and doubles; radius, rotations, provenance.
-    cases = gjk2d.generate("engine/container-proximity", count=40, seed=4) + \
-        gjk2d.generate("random", count=40, seed=4)
+    cases = gjk2d.generate("engine/container-proximity", count=40, seed=4) + gjk2d.generate(
+        "random", count=40, seed=4
+    )
     cases[3]["source"], cases[5]["comment"] = "https://example.org/3", "\u00e9 five"
     by_dicts, by_columns = str(tmp_path / "d"), str(tmp_path / ("c." + fmt))
     gjk2d.write_cases(by_dicts, cases, comments=["x"], format="json")
@@ -151,9 +197,24 @@ def test_binary_file_layout_read_independently(tmp_path):
     msgpack = pytest.importorskip("msgpack")
     js, mp = tmp_path / "r.json", tmp_path / "r.bin"
     for path, fmt in ((js, "json"), (mp, "msgpack")):
-        subprocess.run([os.environ["GJK2D_VALIDATE"], "generate", "--family", "engine/bullets-toi:30",
-                        "--family", "random:20", "--seed", "2", "--format", fmt, "--out", str(path)],
-                       check=True, stderr=subprocess.DEVNULL)
+        subprocess.run(
+            [
+                os.environ["GJK2D_VALIDATE"],
+                "generate",
+                "--family",
+                "engine/bullets-toi:30",
+                "--family",
+                "random:20",
+                "--seed",
+                "2",
+                "--format",
+                fmt,
+                "--out",
+                str(path),
+            ],
+            check=True,
+            stderr=subprocess.DEVNULL,
+        )
     want = gjk2d.read_cases(str(js))
     with open(mp, "rb") as f:
         u = msgpack.Unpacker(f, raw=False)
@@ -165,14 +226,23 @@ def test_binary_file_layout_read_independently(tmp_path):
             for side in ("a", "b"):
                 s = block[side]
                 counts = np.frombuffer(s["counts"], "<u4")
-                points = np.split(np.frombuffer(s["points"], "<f8").reshape(-1, 2),
-                                  np.cumsum(counts)[:-1])
+                points = np.split(
+                    np.frombuffer(s["points"], "<f8").reshape(-1, 2), np.cumsum(counts)[:-1]
+                )
                 p, q = (np.frombuffer(s[k], "<f8").reshape(-1, 2) for k in ("p", "q"))
-                shapes[side] = [{"points": points[i], "radius": np.frombuffer(s["radius"], "<f8")[i],
-                                 "position": tuple(p[i]), "rotation": tuple(q[i])}
-                                for i in range(len(counts))]
-            got += [{"name": n, "a": shapes["a"][i], "b": shapes["b"][i]}
-                    for i, n in enumerate(block["names"])]
+                shapes[side] = [
+                    {
+                        "points": points[i],
+                        "radius": np.frombuffer(s["radius"], "<f8")[i],
+                        "position": tuple(p[i]),
+                        "rotation": tuple(q[i]),
+                    }
+                    for i in range(len(counts))
+                ]
+            got += [
+                {"name": n, "a": shapes["a"][i], "b": shapes["b"][i]}
+                for i, n in enumerate(block["names"])
+            ]
     assert len(got) == len(want) == 50
     for x, y in zip(want, got):
         same_case(x, y)

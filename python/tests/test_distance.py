@@ -31,7 +31,8 @@ def float_args(case):
 
 def representable_in_float(args):
     return all(np.all(np.isfinite(np.asarray(v, np.float32))) for v in args.values()) and all(
-        np.any(np.asarray(args["rotation_" + s]) != 0) for s in "ab")
+        np.any(np.asarray(args["rotation_" + s]) != 0) for s in "ab"
+    )
 
 
 @pytest.mark.parametrize("variant", ["double", "float"])
@@ -46,7 +47,10 @@ def test_same_bits_as_gjk_validate_on_the_default_campaign(campaign, variant):
         got = gjk2d.distance(**args)
         assert bits(got.distance) == bits(want["distance"]), name
         for field, key in (("point_a", "pointA"), ("point_b", "pointB"), ("normal", "normal")):
-            assert [bits(x) for x in getattr(got, field)] == [bits(x) for x in want[key]], (name, field)
+            assert [bits(x) for x in getattr(got, field)] == [bits(x) for x in want[key]], (
+                name,
+                field,
+            )
         assert (got.iterations, got.stop) == (want["iterations"], want["stop"]), name
         compared += 1
     assert compared > 7500
@@ -67,8 +71,16 @@ def test_radii_rotation_certify_and_correct_rounding():
     segment = np.array([[-1.0, 0.0], [1.0, 0.0]])
     # B: the segment turned by 90 degrees (c, s) = (0, 1), at (0, 5), radius 0.5; A radius 1.
     # Hand: B's lowest point is (0, 4), A's highest (0, 0): 4 - 1 - 0.5 = 2.5.
-    r = gjk2d.distance(segment, segment, radius_a=1.0, radius_b=0.5, position_b=(0, 5),
-                       rotation_b=(0, 1), certify=True, correctly_rounded=True)
+    r = gjk2d.distance(
+        segment,
+        segment,
+        radius_a=1.0,
+        radius_b=0.5,
+        position_b=(0, 5),
+        rotation_b=(0, 1),
+        certify=True,
+        correctly_rounded=True,
+    )
     assert r.distance == 2.5
     assert r.point_a == (0.0, 1.0) and r.point_b == (0.0, 3.5)
     lower, upper = r.interval
@@ -95,8 +107,15 @@ def test_signed_distance_on_overlap_separation_and_touching():
     # Capsules: parallel cores 0.75 apart, radii 0.5 each: 0.75 - 1 = -0.25, B leaves along +y,
     # pA on A's rounded surface y = 0.5, pB on B's y = 0.75 - 0.5 = 0.25.
     segment = np.array([[-1.0, 0.0], [1.0, 0.0]])
-    c = gjk2d.distance(segment, segment, radius_a=0.5, radius_b=0.5, position_b=(0.5, 0.75),
-                       signed=True, dtype="float32")
+    c = gjk2d.distance(
+        segment,
+        segment,
+        radius_a=0.5,
+        radius_b=0.5,
+        position_b=(0.5, 0.75),
+        signed=True,
+        dtype="float32",
+    )
     assert c.distance == pytest.approx(-0.25, abs=1e-6)
     assert c.normal == pytest.approx((0.0, 1.0), abs=1e-6)
     assert c.point_a[1] == pytest.approx(0.5, abs=1e-6)

@@ -34,8 +34,8 @@ def expectations(source):
     for node in tree.body:
         if isinstance(node, ast.Expr) and node.lineno == node.end_lineno:
             line = lines[node.lineno - 1]
-            if "#" in line[node.end_col_offset:]:
-                comment = line[node.end_col_offset:].split("#", 1)[1].strip()
+            if "#" in line[node.end_col_offset :]:
+                comment = line[node.end_col_offset :].split("#", 1)[1].strip()
                 out.append((node.lineno, ast.get_source_segment(source, node), node.value, comment))
     return out
 
@@ -46,15 +46,19 @@ def test_the_doc_has_python_blocks():
 
 def test_every_block_runs_and_shows_what_it_says(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    monkeypatch.setenv("PATH", os.path.dirname(os.environ["GJK2D_VALIDATE"]) + os.pathsep +
-                       os.environ.get("PATH", ""))
+    monkeypatch.setenv(
+        "PATH",
+        os.path.dirname(os.environ["GJK2D_VALIDATE"]) + os.pathsep + os.environ.get("PATH", ""),
+    )
     monkeypatch.syspath_prepend(str(ROOT / "python" / "examples"))  # the page's `import numpy_gjk`
     namespace = {"__name__": "__docs__"}
     checked = 0
     for i, source in enumerate(blocks()):
         exec(compile(source, f"{DOC.name} python block {i + 1}", "exec"), namespace)
         for lineno, expr, node, comment in expectations(source):
-            value = eval(compile(expr, f"{DOC.name} block {i + 1} line {lineno}", "eval"), namespace)
+            value = eval(
+                compile(expr, f"{DOC.name} block {i + 1} line {lineno}", "eval"), namespace
+            )
             assert shown(value, node) == comment, f"block {i + 1} line {lineno}: {expr}"
             checked += 1
     assert checked >= 3

@@ -83,8 +83,10 @@ import random
 def world(points, position=(0, 0), rotation=(1, 0)):
     c, s = Fraction(rotation[0]), Fraction(rotation[1])
     px, py = Fraction(position[0]), Fraction(position[1])
-    return [(c * Fraction(x) - s * Fraction(y) + px, s * Fraction(x) + c * Fraction(y) + py)
-            for x, y in points]
+    return [
+        (c * Fraction(x) - s * Fraction(y) + px, s * Fraction(x) + c * Fraction(y) + py)
+        for x, y in points
+    ]
 
 
 def pair_normals(pts):
@@ -122,16 +124,21 @@ def point_segment_squared(p, s0, s1):
 
 
 def hull_squared(p, pts):
-    return min(point_segment_squared(p, pts[i], pts[j])
-               for i in range(len(pts)) for j in range(i, len(pts)))
+    return min(
+        point_segment_squared(p, pts[i], pts[j])
+        for i in range(len(pts))
+        for j in range(i, len(pts))
+    )
 
 
 def reference(a, b):
     """(overlap, q): q the squared core distance when apart, the squared core depth on overlap."""
     if separated(a, b):
         return False, min(min(hull_squared(p, b) for p in a), min(hull_squared(p, a) for p in b))
-    depths = [max(Fraction(0), support_gap(n, a, b)) ** 2 / (n[0] ** 2 + n[1] ** 2)
-              for n in list(pair_normals(a)) + list(pair_normals(b))]
+    depths = [
+        max(Fraction(0), support_gap(n, a, b)) ** 2 / (n[0] ** 2 + n[1] ** 2)
+        for n in list(pair_normals(a)) + list(pair_normals(b))
+    ]
     return True, min(depths, default=Fraction(0))
 
 
@@ -173,8 +180,11 @@ def point_signed(p, pts):
     pq = (Fraction(p[0]), Fraction(p[1]))
     if separated([pq], pts):
         return math.sqrt(hull_squared(pq, pts))
-    gaps = [(max(n[0] * x + n[1] * y for x, y in pts) - (n[0] * pq[0] + n[1] * pq[1]))
-            / math.sqrt(n[0] ** 2 + n[1] ** 2) for n in pair_normals(pts)]
+    gaps = [
+        (max(n[0] * x + n[1] * y for x, y in pts) - (n[0] * pq[0] + n[1] * pq[1]))
+        / math.sqrt(n[0] ** 2 + n[1] ** 2)
+        for n in pair_normals(pts)
+    ]
     return -float(min(gaps, default=0))
 
 
@@ -200,7 +210,9 @@ def check_signed(points_a, points_b, **kw):
         # the float reference's own roundings are a few ulp(S): bound 8 ulp(S) (derivation as in
         # tests/exact/test_penetration.cpp).
         (ax, ay), (bx, by) = r["penetration_a"], r["penetration_b"]
-        scale = max([abs(float(v)) for p in a + b for v in p] + [abs(ax), abs(ay), abs(bx), abs(by), ra, rb])
+        scale = max(
+            [abs(float(v)) for p in a + b for v in p] + [abs(ax), abs(ay), abs(bx), abs(by), ra, rb]
+        )
         tol = 8 * ulp(scale)
         assert abs(point_signed((ax, ay), a) - ra) <= tol
         assert abs(point_signed((bx, by), b) - rb) <= tol
@@ -278,9 +290,19 @@ def test_signed_random_cases_against_fractions():
         pa, ra, qa, ca = random_shape(rng, grid)
         pb, rb, qb, cb = random_shape(rng, grid)
         try:
-            r = check_signed(np.array(pa), np.array(pb), radius_a=ra, radius_b=rb, position_a=qa,
-                             rotation_a=ca, position_b=qb, rotation_b=cb)
+            r = check_signed(
+                np.array(pa),
+                np.array(pb),
+                radius_a=ra,
+                radius_b=rb,
+                position_a=qa,
+                rotation_a=ca,
+                position_b=qb,
+                rotation_b=cb,
+            )
         except AssertionError as e:
-            raise AssertionError(f"seed {seed} case {k}: {pa} {ra} {qa} {ca} / {pb} {rb} {qb} {cb}") from e
+            raise AssertionError(
+                f"seed {seed} case {k}: {pa} {ra} {qa} {ca} / {pb} {rb} {qb} {cb}"
+            ) from e
         overlaps += r["overlap"]
     assert overlaps > 100, f"seed {seed}: {overlaps} overlapping"

@@ -58,8 +58,11 @@ def fail(msg):
 def run(cmd, **kw):
     p = subprocess.run(cmd, capture_output=True, text=True, **kw)
     if p.returncode != 0:
-        fail("{} exited {}\nstdout:\n{}\nstderr:\n{}".format(" ".join(cmd), p.returncode,
-                                                           p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {}\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
     return p
 
 
@@ -69,9 +72,19 @@ def can_hide():
         return False
     probe = tempfile.mkdtemp(prefix="gjk2d-unshare-probe-")
     try:
-        p = subprocess.run(["unshare", "-m", "--propagation", "private", "sh", "-c",
-                            'mount -t tmpfs none "$0" && test ! -e "$0/x"', probe],
-                           capture_output=True)
+        p = subprocess.run(
+            [
+                "unshare",
+                "-m",
+                "--propagation",
+                "private",
+                "sh",
+                "-c",
+                'mount -t tmpfs none "$0" && test ! -e "$0/x"',
+                probe,
+            ],
+            capture_output=True,
+        )
         return p.returncode == 0
     finally:
         shutil.rmtree(probe, ignore_errors=True)
@@ -80,8 +93,21 @@ def can_hide():
 def make_wheel(python, source, build):
     out = os.path.join(build, "python", "wheel")
     shutil.rmtree(out, ignore_errors=True)
-    run([python, "-m", "build", "--wheel", "--no-isolation", "-C", "build-dir=" + build,
-         "--outdir", out, source], cwd=build)
+    run(
+        [
+            python,
+            "-m",
+            "build",
+            "--wheel",
+            "--no-isolation",
+            "-C",
+            "build-dir=" + build,
+            "--outdir",
+            out,
+            source,
+        ],
+        cwd=build,
+    )
     wheels = glob.glob(os.path.join(out, "gjk2d-*.whl"))
     if len(wheels) != 1:
         fail("expected one wheel in {}, found {}".format(out, wheels))
@@ -98,17 +124,24 @@ def check(result, site):
     shipped = sorted(glob.glob(os.path.join(site, "gjk2d", "cases", "*.json")))
     if not shipped:
         fail("no case files in the wheel's gjk2d/cases")
-    if sorted(os.path.realpath(f) for f in result["inputs"]) != \
-            [os.path.realpath(f) for f in shipped]:
+    if sorted(os.path.realpath(f) for f in result["inputs"]) != [
+        os.path.realpath(f) for f in shipped
+    ]:
         fail("the report's case files {} are not the wheel's {}".format(result["inputs"], shipped))
     for f in shipped:
         if "file:" + os.path.basename(f) not in result["families"]:
-            fail("no family file:{} in the report: {}".format(os.path.basename(f),
-                                                              result["families"]))
+            fail(
+                "no family file:{} in the report: {}".format(
+                    os.path.basename(f), result["families"]
+                )
+            )
     # Unit squares [0, 1] and [4, 5] along x: 3 apart, exactly representable.
     if result["distance"] != 3.0 or result["exact"] != 3.0:
-        fail("distance {} and exact {}, expected 3.0 and 3.0".format(result["distance"],
-                                                                    result["exact"]))
+        fail(
+            "distance {} and exact {}, expected 3.0 and 3.0".format(
+                result["distance"], result["exact"]
+            )
+        )
     return len(shipped)
 
 
@@ -117,12 +150,26 @@ def check_types(venv_python, tmp):
     snippet = os.path.join(tmp, "typed.py")
     with open(snippet, "w") as f:
         f.write(TYPED)
-    p = subprocess.run([venv_python, "-m", "mypy", "--cache-dir", os.path.join(tmp, "mypy-cache"),
-                        "--no-error-summary", snippet], capture_output=True, text=True, cwd=tmp)
+    p = subprocess.run(
+        [
+            venv_python,
+            "-m",
+            "mypy",
+            "--cache-dir",
+            os.path.join(tmp, "mypy-cache"),
+            "--no-error-summary",
+            snippet,
+        ],
+        capture_output=True,
+        text=True,
+        cwd=tmp,
+    )
     errors = [line for line in p.stdout.splitlines() if ": error:" in line]
     if len(errors) != 1 or "typed.py:5:" not in errors[0] or '"float"' not in errors[0]:
-        fail("mypy against the stub: expected one error on line 5 (a float returned as str), "
-             "got:\n" + p.stdout + p.stderr)
+        fail(
+            "mypy against the stub: expected one error on line 5 (a float returned as str), "
+            "got:\n" + p.stdout + p.stderr
+        )
 
 
 def main():
@@ -140,24 +187,43 @@ def main():
         python = os.path.join(venv, "bin", "python")
         env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTHON", "GJK2D_"))}
         env["PYTHONDONTWRITEBYTECODE"] = "1"
-        run([python, "-m", "pip", "install", "--no-index", "--no-cache-dir", "--quiet", wheel],
-            env=env, cwd="/")
-        site = run([python, "-c", "import sysconfig; print(sysconfig.get_path('platlib'))"],
-                   env=env).stdout.strip()
+        run(
+            [python, "-m", "pip", "install", "--no-index", "--no-cache-dir", "--quiet", wheel],
+            env=env,
+            cwd="/",
+        )
+        site = run(
+            [python, "-c", "import sysconfig; print(sysconfig.get_path('platlib'))"], env=env
+        ).stdout.strip()
         cmd = [python, "-c", SMOKE, os.path.join(tmp, "report")]
         hide = can_hide()
         if hide:  # mounted over in this order: B may lie inside S (build/release)
             script = 'mount -t tmpfs none "$1" && mount -t tmpfs none "$2" && shift 2 && exec "$@"'
-            cmd = ["unshare", "-m", "--propagation", "private", "sh", "-c", script, "sh", build,
-                   source] + cmd
+            cmd = [
+                "unshare",
+                "-m",
+                "--propagation",
+                "private",
+                "sh",
+                "-c",
+                script,
+                "sh",
+                build,
+                source,
+            ] + cmd
         result = json.loads(run(cmd, env=env, cwd="/").stdout.splitlines()[-1])
         count = check(result, site)
         check_types(python, tmp)
-    print("wheel_check: {} installed in a venv; a query, the exact distance and validate with its "
-          "{} case files ran from site-packages; the stub type-checks; {}".format(
-              os.path.basename(wheel), count,
-              "source and build trees hidden by tmpfs mounts (unshare -m)" if hide
-              else "no mount namespace here: run from / only"))
+    print(
+        "wheel_check: {} installed in a venv; a query, the exact distance and validate with its "
+        "{} case files ran from site-packages; the stub type-checks; {}".format(
+            os.path.basename(wheel),
+            count,
+            "source and build trees hidden by tmpfs mounts (unshare -m)"
+            if hide
+            else "no mount namespace here: run from / only",
+        )
+    )
 
 
 if __name__ == "__main__":

@@ -78,8 +78,11 @@ def fail(msg):
 def run(cmd, expect=0):
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != expect:
-        fail("{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
-            " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
     return p
 
 
@@ -88,9 +91,25 @@ def campaign(a, extra=(), expect=0):
     for f in ["starts"]:  # crash-once-more's count of its starts
         if os.path.exists(os.path.join(a.work, f)):
             os.remove(os.path.join(a.work, f))
-    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double", "--no-default-plugins",
-           "--plugin", a.adapter, "--plugin-timeout", "2", "--per-case", "--passes", "3",
-           "--out", out, "--no-progress"] + list(extra)
+    cmd = [
+        a.exe,
+        "run",
+        "--cases",
+        a.cases,
+        "--variants",
+        "double",
+        "--no-default-plugins",
+        "--plugin",
+        a.adapter,
+        "--plugin-timeout",
+        "2",
+        "--per-case",
+        "--passes",
+        "3",
+        "--out",
+        out,
+        "--no-progress",
+    ] + list(extra)
     p = run(cmd, expect)
     report = json.load(open(os.path.join(out, "report.json")))
     lines = [json.loads(l) for l in open(os.path.join(out, "cases.jsonl"))]
@@ -130,8 +149,11 @@ def good(a):
         fail("the adapter's stderr reached gjk-validate's during the run:\n" + p.stderr)
     if "toy adapter good: ready" not in open(os.path.join(out, "plugin-good.log")).read():
         fail("the adapter's stderr is not in plugin-good.log")
-    print("adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
-        st["ns_per_query"]))
+    print(
+        "adapter_check: good: distances 1, 2, 3, 4 in cases.jsonl, timed {:.0f} ns/query".format(
+            st["ns_per_query"]
+        )
+    )
 
 
 def answered_all(lines, name):
@@ -156,8 +178,10 @@ def prepared(a):
     timing = variant_entry(report, "toy-prepared")["timing"]
     if timing["preparation"] != "case" or timing["timed_by"] != "adapter":
         fail("variants[].timing: {}".format(timing))
-    print("adapter_check: prepared: distances 1, 2, 3, 4, timed {:.0f} ns/query, preparation "
-          "case, timed by the adapter".format(st["ns_per_query"]))
+    print(
+        "adapter_check: prepared: distances 1, 2, 3, 4, timed {:.0f} ns/query, preparation "
+        "case, timed by the adapter".format(st["ns_per_query"])
+    )
 
 
 TIMED_REFUSALS = {
@@ -174,10 +198,16 @@ def timed_refused(a):
     st = stats_of(report, name)
     if st["ns_per_query"] is not None or st["failures"] != 0:
         fail("expected ns_per_query null and no failure: {}".format(st))
-    said = [l for l in p.stderr.splitlines()
-            if l.startswith("gjk-validate: executable adapter " + os.path.realpath(a.adapter))]
-    if len(said) != 1 or TIMED_REFUSALS[a.kind] not in said[0] or \
-            not said[0].endswith("; no ns/query"):
+    said = [
+        l
+        for l in p.stderr.splitlines()
+        if l.startswith("gjk-validate: executable adapter " + os.path.realpath(a.adapter))
+    ]
+    if (
+        len(said) != 1
+        or TIMED_REFUSALS[a.kind] not in said[0]
+        or not said[0].endswith("; no ns/query")
+    ):
         fail("expected one stderr line saying '{}':\n{}".format(TIMED_REFUSALS[a.kind], p.stderr))
     if report["exit_code"] != 0:
         fail("a refused timing decided the exit code")
@@ -198,7 +228,8 @@ def contained(a):
     if got["adapters/d3"].get("plugin_status") != status:
         fail("d3: {}".format(got["adapters/d3"]))
     if a.kind == "garbage" and not got["adapters/d3"]["plugin_detail"].startswith(
-            'malformed answer: "hello there'):
+        'malformed answer: "hello there'
+    ):
         fail("d3's detail: {}".format(got["adapters/d3"]))
     named = [l for l in p.stderr.splitlines() if "adapters/d3" in l]
     if len(named) != 1 or os.path.realpath(a.adapter) not in named[0]:
@@ -206,8 +237,11 @@ def contained(a):
     if report["exit_code"] != 0:
         fail("a comparison adapter decided the exit code")
     campaign(a, ["--judge", name, "--no-timing"], expect=1)
-    print("adapter_check: {}: d3 counted as {}, d1, d2, d4 answered; --judge exits 1".format(
-        a.kind, counter))
+    print(
+        "adapter_check: {}: d3 counted as {}, d1, d2, d4 answered; --judge exits 1".format(
+            a.kind, counter
+        )
+    )
 
 
 def restart_fails(a):
@@ -216,11 +250,14 @@ def restart_fails(a):
     got = answers(lines, "toy-crash-once-more")
     if st["crashed"] != 2 or [got["adapters/d" + k].get("distance") for k in "12"] != [1.0, 2.0]:
         fail("expected d3 and d4 crashed, d1 and d2 answered: {} {}".format(st, got))
-    if "restart" not in got["adapters/d4"]["plugin_detail"] and \
-            "start for the cases failed" not in got["adapters/d4"]["plugin_detail"]:
+    if (
+        "restart" not in got["adapters/d4"]["plugin_detail"]
+        and "start for the cases failed" not in got["adapters/d4"]["plugin_detail"]
+    ):
         fail("d4's detail: {}".format(got["adapters/d4"]))
-    lines = [l for l in p.stderr.splitlines()
-             if "executable adapter " + os.path.realpath(a.adapter) in l]
+    lines = [
+        l for l in p.stderr.splitlines() if "executable adapter " + os.path.realpath(a.adapter) in l
+    ]
     if len(lines) != 2 or "adapters/d3" not in lines[0] or "failed" not in lines[1]:
         fail("expected a line for d3 and one for the failed start:\n" + p.stderr)
     print("adapter_check: crash-once-more: d3 crashed, the restart failed, d4 crashed with it")
@@ -233,15 +270,24 @@ def pipeline_cases(path):
     """The 2000 cases of the pipeline check, and their distances by name."""
     square = [[0, 0], [1, 0], [1, 1], [0, 1]]
     k = [j / 512 for j in range(512)]  # 512 points on each edge of the unit square, in order
-    dense = ([[x, 0] for x in k] + [[1, y] for y in k] + [[1 - x, 1] for x in k] +
-             [[0, 1 - y] for y in k])
+    dense = (
+        [[x, 0] for x in k]
+        + [[1, y] for y in k]
+        + [[1 - x, 1] for x in k]
+        + [[0, 1 - y] for y in k]
+    )
     cases, want = [], {}
     for i in range(PIPELINE_CASES):
         d = 0.5 + i / 256  # B's edge x = 1 + d faces A's edge x = 1: the distance is d, exactly
         name = "pipeline/{:04d}".format(i)
         a = dense if i % 250 in (125, 130) else square
-        cases.append({"name": name, "a": {"points": a},
-                      "b": {"points": square, "transform": {"p": [1 + d, 0.0], "q": [1.0, 0.0]}}})
+        cases.append(
+            {
+                "name": name,
+                "a": {"points": a},
+                "b": {"points": square, "transform": {"p": [1 + d, 0.0], "q": [1.0, 0.0]}},
+            }
+        )
         want[name] = d
     with open(path, "w") as f:
         json.dump({"format": "gjk-cases/1", "cases": cases}, f)
@@ -278,8 +324,11 @@ def tree(a):
     expect["adapters/d3"] = None if a.kind == "fork-hang" else 3.0
     if {k: v.get("distance") for k, v in got.items()} != expect:
         fail("the adapter's answers: {}".format(got))
-    print("adapter_check: {}: the children of its {} starts ended with gjk-validate".format(
-        a.kind, starts))
+    print(
+        "adapter_check: {}: the children of its {} starts ended with gjk-validate".format(
+            a.kind, starts
+        )
+    )
 
 
 def pipeline_window(a):
@@ -302,19 +351,30 @@ def pipeline(a):
         got = answers(lines, "toy-" + kind)
         status = {"crash": "crashed", "hang": "hung", "garbage": "error"}.get(kind)
         named = [l for l in p.stderr.splitlines() if "case 'pipeline/" in l]
-        if status and (got["pipeline/0640"].get("plugin_status") != status or len(named) != 1 or
-                       "pipeline/0640" not in named[0]):
-            fail("{}: expected case 640 {} and one stderr line naming it: {}\n{}".format(
-                kind, status, got["pipeline/0640"], p.stderr))
+        if status and (
+            got["pipeline/0640"].get("plugin_status") != status
+            or len(named) != 1
+            or "pipeline/0640" not in named[0]
+        ):
+            fail(
+                "{}: expected case 640 {} and one stderr line naming it: {}\n{}".format(
+                    kind, status, got["pipeline/0640"], p.stderr
+                )
+            )
         lost = {n for n, v in got.items() if v.get("distance") != want[n]}
         expect = set() if kind == "pipeline" else {"pipeline/0640"}
         if len(got) != PIPELINE_CASES or lost != expect:
-            fail("{}: cases not answered with their distance: {} (expected {})".format(
-                kind, {n: got.get(n) for n in sorted(lost)[:5]}, expect))
+            fail(
+                "{}: cases not answered with their distance: {} (expected {})".format(
+                    kind, {n: got.get(n) for n in sorted(lost)[:5]}, expect
+                )
+            )
         if kind == "pipeline":
             snaps = pipeline_window(a)
-    print("adapter_check: pipeline: 2000 answers in order, window {} (requests, bytes before the "
-          "last); crash, hang, garbage lose case 640 alone".format(snaps))
+    print(
+        "adapter_check: pipeline: 2000 answers in order, window {} (requests, bytes before the "
+        "last); crash, hang, garbage lose case 640 alone".format(snaps)
+    )
 
 
 def bridge(a):
@@ -323,16 +383,34 @@ def bridge(a):
         f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
     os.chmod(wrapper, 0o755)
     out = os.path.join(a.work, "report")
-    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
-         "double,box2d-2.4.1,box2d-2.4.1-bridge", "--plugin", wrapper, "--per-case", "--no-timing",
-         "--out", out, "--no-progress"])
+    run(
+        [
+            a.exe,
+            "run",
+            "--family",
+            "random:300",
+            "--family",
+            "hard/rounded:40",
+            "--variants",
+            "double,box2d-2.4.1,box2d-2.4.1-bridge",
+            "--plugin",
+            wrapper,
+            "--per-case",
+            "--no-timing",
+            "--out",
+            out,
+            "--no-progress",
+        ]
+    )
     keys = ("distance", "pointA", "pointB", "iterations", "skipped")
     n = 0
     for l in open(os.path.join(out, "cases.jsonl")):
         j = json.loads(l)
         mine, theirs = (j["variants"][v] for v in ("box2d-2.4.1-bridge", "box2d-2.4.1"))
         if [mine.get(k) for k in keys] != [theirs.get(k) for k in keys]:
-            fail("{}: the bridge answered {}, the shared library {}".format(j["name"], mine, theirs))
+            fail(
+                "{}: the bridge answered {}, the shared library {}".format(j["name"], mine, theirs)
+            )
         n += 1
     if n != 340:
         fail("expected 340 cases, got {}".format(n))
@@ -341,12 +419,25 @@ def bridge(a):
     # its declared contract as the three `contract` lines (box2d.cpp's kContract: midpoint, its
     # source, no tolerance, margin 0), and a `prepared` line when the plugin exports
     # gjk2d_plugin_prepared.
-    h = subprocess.run([a.adapter, a.so, "-bridge"], input="gjk2d-adapter 1\n", capture_output=True,
-                       text=True, timeout=30).stdout.splitlines()
+    h = subprocess.run(
+        [a.adapter, a.so, "-bridge"],
+        input="gjk2d-adapter 1\n",
+        capture_output=True,
+        text=True,
+        timeout=30,
+    ).stdout.splitlines()
     name = "box2d-2.4.1-bridge"
-    want = [r"gjk2d-adapter 2", r"library .*", r"implementation {} .*".format(name),
-            r"contract {} overlap midpoint src/collision/b2_distance\.cpp:588-596 .*Box2D 2\.4\.1.*".format(name),
-            r"contract {} tolerance none none".format(name), r"contract {} margin 0".format(name), r"ready"]
+    want = [
+        r"gjk2d-adapter 2",
+        r"library .*",
+        r"implementation {} .*".format(name),
+        r"contract {} overlap midpoint src/collision/b2_distance\.cpp:588-596 .*Box2D 2\.4\.1.*".format(
+            name
+        ),
+        r"contract {} tolerance none none".format(name),
+        r"contract {} margin 0".format(name),
+        r"ready",
+    ]
     if len(h) == len(want) + 1:  # a plugin with prepared shapes: the bridge's `prepared` line
         want.insert(-1, r"prepared {} (shape|case)".format(name))
     if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
@@ -359,20 +450,45 @@ def bridge_prepared(a):
     with open(wrapper, "w") as f:
         f.write("#!/bin/sh\nexec {} {} -bridge\n".format(a.adapter, a.so))
     os.chmod(wrapper, 0o755)
-    h = subprocess.run([wrapper], input="gjk2d-adapter 1\n", capture_output=True, text=True,
-                       timeout=30).stdout.splitlines()
-    want = [r"gjk2d-adapter 2", r"library .*", r"implementation test-prepared-shape-bridge .*",
-            r"prepared test-prepared-shape-bridge shape",
-            r"implementation test-prepared-case-bridge .*",
-            r"prepared test-prepared-case-bridge case", r"ready"]
+    h = subprocess.run(
+        [wrapper], input="gjk2d-adapter 1\n", capture_output=True, text=True, timeout=30
+    ).stdout.splitlines()
+    want = [
+        r"gjk2d-adapter 2",
+        r"library .*",
+        r"implementation test-prepared-shape-bridge .*",
+        r"prepared test-prepared-shape-bridge shape",
+        r"implementation test-prepared-case-bridge .*",
+        r"prepared test-prepared-case-bridge case",
+        r"ready",
+    ]
     if len(h) != len(want) or not all(re.fullmatch(w, l) for w, l in zip(want, h)):
         fail("the bridge's handshake {} does not match {}".format(h, want))
     out = os.path.join(a.work, "report")
     names = ["test-prepared-shape", "test-prepared-case"]
-    run([a.exe, "run", "--family", "random:300", "--family", "hard/rounded:40", "--variants",
-         ",".join(["double"] + names + [n + "-bridge" for n in names]), "--no-default-plugins",
-         "--plugin", a.so, "--plugin", wrapper, "--per-case", "--passes", "3", "--out", out,
-         "--no-progress"])
+    run(
+        [
+            a.exe,
+            "run",
+            "--family",
+            "random:300",
+            "--family",
+            "hard/rounded:40",
+            "--variants",
+            ",".join(["double"] + names + [n + "-bridge" for n in names]),
+            "--no-default-plugins",
+            "--plugin",
+            a.so,
+            "--plugin",
+            wrapper,
+            "--per-case",
+            "--passes",
+            "3",
+            "--out",
+            out,
+            "--no-progress",
+        ]
+    )
     keys = ("distance", "pointA", "pointB", "iterations", "skipped", "plugin_status")
     n, errors = 0, 0
     for l in open(os.path.join(out, "cases.jsonl")):
@@ -389,11 +505,16 @@ def bridge_prepared(a):
     for name, scope in zip(names, ["shape", "case"]):
         st = [f["variants"][name + "-bridge"]["ns_per_query"] for f in report["families"]]
         timing = variant_entry(report, name + "-bridge")["timing"]
-        if not all((x or 0) > 0 for x in st) or timing["preparation"] != scope or \
-                timing["timed_by"] != "adapter":
+        if (
+            not all((x or 0) > 0 for x in st)
+            or timing["preparation"] != scope
+            or timing["timed_by"] != "adapter"
+        ):
             fail("{}-bridge: ns_per_query {}, timing {}".format(name, st, timing))
-    print("adapter_check: bridge-prepared: prepared lines by scope, 340 cases ({} errors) the "
-          "plugin's answers bit for bit, timed with two figures".format(errors))
+    print(
+        "adapter_check: bridge-prepared: prepared lines by scope, 340 cases ({} errors) the "
+        "plugin's answers bit for bit, timed with two figures".format(errors)
+    )
 
 
 def shared(a):
@@ -403,8 +524,23 @@ def shared(a):
     if "test-good-but-quirky" not in listed:
         fail("list does not show the shared library's variants:\n" + listed)
     out = os.path.join(a.work, "report")
-    run([a.exe, "run", "--family", "random:5", "--variants", "double", "--no-default-plugins",
-         "--plugin", a.adapter, "--no-timing", "--out", out, "--no-progress"])
+    run(
+        [
+            a.exe,
+            "run",
+            "--family",
+            "random:5",
+            "--variants",
+            "double",
+            "--no-default-plugins",
+            "--plugin",
+            a.adapter,
+            "--no-timing",
+            "--out",
+            out,
+            "--no-progress",
+        ]
+    )
     pl = plugin_of(json.load(open(os.path.join(out, "report.json"))), "test-good-but-quirky")
     if pl["kind"] != "shared-library" or pl["library"] != "":
         fail("context.plugins: {}".format(pl))
@@ -414,8 +550,25 @@ def shared(a):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
-    ap.add_argument("--kind", required=True, choices=["good", "crash", "hang", "garbage", "crash-once-more", "pipeline", "bridge", "shared",
-                             "prepared", "bridge-prepared", "fork-hang", "setsid"] + list(TIMED_REFUSALS))
+    ap.add_argument(
+        "--kind",
+        required=True,
+        choices=[
+            "good",
+            "crash",
+            "hang",
+            "garbage",
+            "crash-once-more",
+            "pipeline",
+            "bridge",
+            "shared",
+            "prepared",
+            "bridge-prepared",
+            "fork-hang",
+            "setsid",
+        ]
+        + list(TIMED_REFUSALS),
+    )
     ap.add_argument("--adapter", required=True)
     ap.add_argument("--cases")
     ap.add_argument("--so", help="bridge: the shared-library plugin the bridge hosts")
@@ -424,10 +577,18 @@ def main():
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
     os.environ["TOY_STATE_DIR"] = a.work  # inherited by gjk-validate and its adapters
-    {"good": good, "shared": shared, "crash-once-more": restart_fails, "bridge": bridge,
-     "pipeline": pipeline, "prepared": prepared,
-     "bridge-prepared": bridge_prepared, "fork-hang": tree, "setsid": tree,
-     **{k: timed_refused for k in TIMED_REFUSALS}}.get(a.kind, contained)(a)
+    {
+        "good": good,
+        "shared": shared,
+        "crash-once-more": restart_fails,
+        "bridge": bridge,
+        "pipeline": pipeline,
+        "prepared": prepared,
+        "bridge-prepared": bridge_prepared,
+        "fork-hang": tree,
+        "setsid": tree,
+        **{k: timed_refused for k in TIMED_REFUSALS},
+    }.get(a.kind, contained)(a)
 
 
 if __name__ == "__main__":

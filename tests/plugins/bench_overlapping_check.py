@@ -26,8 +26,10 @@ def check(cond, msg):
 
 def run(cmd):
     p = subprocess.run(cmd, capture_output=True, text=True)
-    check(p.returncode == 0, "{} exited {}:\n{}".format(" ".join(cmd), p.returncode,
-                                                        (p.stdout + p.stderr)[-3000:]))
+    check(
+        p.returncode == 0,
+        "{} exited {}:\n{}".format(" ".join(cmd), p.returncode, (p.stdout + p.stderr)[-3000:]),
+    )
 
 
 def main():
@@ -39,8 +41,20 @@ def main():
     os.makedirs(a.work, exist_ok=True)
     family = ["--family", "random:300", "--seed", "1"]
     out = os.path.join(a.work, "run")
-    run([a.exe, "run"] + family + ["--variants", "double", "--no-default-plugins", "--no-timing",
-                                   "--no-progress", "--per-case", "--out", out])
+    run(
+        [a.exe, "run"]
+        + family
+        + [
+            "--variants",
+            "double",
+            "--no-default-plugins",
+            "--no-timing",
+            "--no-progress",
+            "--per-case",
+            "--out",
+            out,
+        ]
+    )
     with open(os.path.join(out, "cases.jsonl")) as f:
         overlapping = sum(1 for line in f if json.loads(line)["exact"]["upper"] == 0)
     check(0 < overlapping < 300, "random:300 has {} overlapping cases".format(overlapping))
@@ -51,17 +65,27 @@ def main():
         plugin += ["--plugin", a.plugin]
     for flag, want in ((["--overlapping"], overlapping), ([], 300)):
         path = os.path.join(a.work, "bench{}.json".format("-overlapping" if flag else ""))
-        run([a.exe, "bench"] + family + flag + ["--variants", ",".join(variants)] + plugin +
-            ["--passes", "1", "--json", path])
+        run(
+            [a.exe, "bench"]
+            + family
+            + flag
+            + ["--variants", ",".join(variants)]
+            + plugin
+            + ["--passes", "1", "--json", path]
+        )
         with open(path) as f:
             j = json.load(f)
-        check(j["context"]["cases_total"] == want,
-              "{}: cases_total {} != {}".format(flag, j["context"]["cases_total"], want))
+        check(
+            j["context"]["cases_total"] == want,
+            "{}: cases_total {} != {}".format(flag, j["context"]["cases_total"], want),
+        )
         for v in variants:
             got = j["variants"][v]
             check(got["cases"] == want, "{} {}: cases {} != {}".format(flag, v, got["cases"], want))
-            check(got["ns_per_query"] is not None and got["ns_per_query"] > 0,
-                  "{} {}: ns_per_query {}".format(flag, v, got["ns_per_query"]))
+            check(
+                got["ns_per_query"] is not None and got["ns_per_query"] > 0,
+                "{} {}: ns_per_query {}".format(flag, v, got["ns_per_query"]),
+            )
     print("bench_overlapping_check: ok ({} of 300 overlapping)".format(overlapping))
 
 

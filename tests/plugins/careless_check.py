@@ -32,9 +32,15 @@ import shutil
 import subprocess
 import sys
 
-FAMILIES = [("random", 300), ("hard/touching-vertex", 24), ("hard/touching-edge", 24),
-            ("hard/identical-nested", 24), ("hard/rounded", 40), ("hard/near-zero-separation", 60),
-            ("hard/ulp-gap", 32)]
+FAMILIES = [
+    ("random", 300),
+    ("hard/touching-vertex", 24),
+    ("hard/touching-edge", 24),
+    ("hard/identical-nested", 24),
+    ("hard/rounded", 40),
+    ("hard/near-zero-separation", 60),
+    ("hard/ulp-gap", 32),
+]
 
 
 def fail(msg):
@@ -62,6 +68,7 @@ def hull(pts):
 
     def cross(o, a, b):
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
     lower, upper = [], []
     for p in pts:
         while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
@@ -84,11 +91,16 @@ def segment_distance(p, a, b):
 def shape_distance(shape, p):
     """Distance from world point p to the shape with its radius (0 inside), in double."""
     h = hull(world_points(shape))
-    if len(h) >= 3 and all((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0
-                           for a, b in zip(h, h[1:] + h[:1])):
+    if len(h) >= 3 and all(
+        (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) >= 0
+        for a, b in zip(h, h[1:] + h[:1])
+    ):
         return 0.0
-    d = min(segment_distance(p, a, b) for a, b in zip(h, h[1:] + h[:1])) if len(h) > 1 else \
-        math.hypot(p[0] - h[0][0], p[1] - h[0][1])
+    d = (
+        min(segment_distance(p, a, b) for a, b in zip(h, h[1:] + h[:1]))
+        if len(h) > 1
+        else math.hypot(p[0] - h[0][0], p[1] - h[0][1])
+    )
     return max(0.0, d - shape.get("radius", 0.0))
 
 
@@ -96,23 +108,44 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", required=True)
     ap.add_argument("--plugin", required=True)
-    ap.add_argument("--kind", required=True,
-                    choices=["negative", "nan_witness", "shift_witness", "swap_witness", "rel_error"])
+    ap.add_argument(
+        "--kind",
+        required=True,
+        choices=["negative", "nan_witness", "shift_witness", "swap_witness", "rel_error"],
+    )
     ap.add_argument("--work", required=True)
     a = ap.parse_args()
     name = "careless-" + a.kind.replace("_", "-")
     shutil.rmtree(a.work, ignore_errors=True)
     os.makedirs(a.work)
     out = os.path.join(a.work, "report")
-    cmd = [a.exe, "run", "--variants", "double", "--no-default-plugins", "--plugin", a.plugin,
-           "--judge", name, "--per-case", "--no-timing", "--threads", "2", "--out", out,
-           "--no-progress"]
+    cmd = [
+        a.exe,
+        "run",
+        "--variants",
+        "double",
+        "--no-default-plugins",
+        "--plugin",
+        a.plugin,
+        "--judge",
+        name,
+        "--per-case",
+        "--no-timing",
+        "--threads",
+        "2",
+        "--out",
+        out,
+        "--no-progress",
+    ]
     for fam, n in FAMILIES:
         cmd += ["--family", "{}:{}".format(fam, n)]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 1:
-        fail("{} exited {} (expected 1: the judged careless plugin fails)\nstdout:\n{}\nstderr:\n{}"
-             .format(" ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {} (expected 1: the judged careless plugin fails)\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
 
     report = json.load(open(os.path.join(out, "report.json")))
     for fam, n in FAMILIES:
@@ -122,7 +155,11 @@ def main():
         for v in ("double", name):
             st = f["variants"][v]
             if st["cases"] != n:
-                fail("{} x {}: {} cases, expected {} (every case kept)".format(fam, v, st["cases"], n))
+                fail(
+                    "{} x {}: {} cases, expected {} (every case kept)".format(
+                        fam, v, st["cases"], n
+                    )
+                )
         if f["variants"]["double"]["failures"] != 0:
             fail("{} x double: {} failures".format(fam, f["variants"]["double"]["failures"]))
 
@@ -155,32 +192,53 @@ def main():
             def expect(branch, want_failed, want_invalid=None, check_invalid=True):
                 branches[branch] = branches.get(branch, 0) + 1
                 if failed != want_failed or (check_invalid and invalid != want_invalid):
-                    fail("{}: case {} (exact distance {!r}, bound {!r}, witness bound {!r}): "
-                         "failed {}, invalid {}; expected failed {}, invalid {} ({})".format(
-                             a.kind, c["name"], exact, bound, wbound, failed, invalid,
-                             want_failed, want_invalid, branch))
+                    fail(
+                        "{}: case {} (exact distance {!r}, bound {!r}, witness bound {!r}): "
+                        "failed {}, invalid {}; expected failed {}, invalid {} ({})".format(
+                            a.kind,
+                            c["name"],
+                            exact,
+                            bound,
+                            wbound,
+                            failed,
+                            invalid,
+                            want_failed,
+                            want_invalid,
+                            branch,
+                        )
+                    )
 
             if a.kind == "negative":
                 want_mis = "false-overlap" if exact > 0 else None
-                expect("separated: false overlap" if exact > 0 else "overlapping: no misclass",
-                       True, "negative_distance")
+                expect(
+                    "separated: false overlap" if exact > 0 else "overlapping: no misclass",
+                    True,
+                    "negative_distance",
+                )
                 if mis != want_mis:
-                    fail("case {} (exact {!r}): misclassified {}, expected {}".format(
-                        c["name"], exact, mis, want_mis))
+                    fail(
+                        "case {} (exact {!r}): misclassified {}, expected {}".format(
+                            c["name"], exact, mis, want_mis
+                        )
+                    )
             elif a.kind == "nan_witness":
                 if not (isinstance(v["pointA"][0], str) and math.isnan(number(v["pointA"][0]))):
                     fail("case {}: pointA {} is not NaN".format(c["name"], v["pointA"]))
                 expect("every case (non-finite)", True, None)
             elif a.kind == "shift_witness":
                 case = shapes[c["name"]]
-                off = max(shape_distance(case["a"], [number(x) for x in v["pointA"]]),
-                          shape_distance(case["b"], [number(x) for x in v["pointB"]]))
+                off = max(
+                    shape_distance(case["a"], [number(x) for x in v["pointA"]]),
+                    shape_distance(case["b"], [number(x) for x in v["pointB"]]),
+                )
                 if off > 4 * wbound:
                     expect("moved off a shape: fails", True, "witness_off_shape")
                 elif off < wbound / 4:
                     expect("both still on their shapes: passes", False, None)
                 else:
-                    branches["between (not asserted)"] = branches.get("between (not asserted)", 0) + 1
+                    branches["between (not asserted)"] = (
+                        branches.get("between (not asserted)", 0) + 1
+                    )
             elif a.kind == "swap_witness":
                 # Swapped, A's point is B's: at the exact distance d from A, to within the witness
                 # bound (both points are within it of their shapes). It fails where d > 2 x bound
@@ -190,32 +248,44 @@ def main():
                 elif exact == 0:
                     expect("d = 0: passes", False, None)
                 else:
-                    branches["between (not asserted)"] = branches.get("between (not asserted)", 0) + 1
+                    branches["between (not asserted)"] = (
+                        branches.get("between (not asserted)", 0) + 1
+                    )
             elif a.kind == "rel_error":
                 d = number(v["distance"])
-                gap = math.hypot(number(v["pointB"][0]) - number(v["pointA"][0]),
-                                 number(v["pointB"][1]) - number(v["pointA"][1]))
+                gap = math.hypot(
+                    number(v["pointB"][0]) - number(v["pointA"][0]),
+                    number(v["pointB"][1]) - number(v["pointA"][1]),
+                )
                 if exact == 0:
                     expect("d = 0: passes", False, None)
                 elif abs(d - exact) > bound:
                     expect("error beyond the bound: fails", True, None, check_invalid=False)
                 elif abs(gap - d) > wbound:
-                    expect("error within the bound, gap beyond the witness bound: fails", True,
-                           "witness_gap")
+                    expect(
+                        "error within the bound, gap beyond the witness bound: fails",
+                        True,
+                        "witness_gap",
+                    )
                 else:
                     expect("error within both bounds: passes", False, None)
-    need = {"negative": ["separated: false overlap", "overlapping: no misclass"],
-            "shift_witness": ["moved off a shape: fails"],
-            "swap_witness": ["d > 2 x witness bound: fails", "d = 0: passes"],
-            "rel_error": ["d = 0: passes", "error beyond the bound: fails"]}.get(a.kind, [])
+    need = {
+        "negative": ["separated: false overlap", "overlapping: no misclass"],
+        "shift_witness": ["moved off a shape: fails"],
+        "swap_witness": ["d > 2 x witness bound: fails", "d = 0: passes"],
+        "rel_error": ["d = 0: passes", "error beyond the bound: fails"],
+    }.get(a.kind, [])
     for b in need:
         if branches.get(b, 0) == 0:
             fail("{}: no case in branch '{}' (branches: {})".format(a.kind, b, branches))
     total = sum(n for _, n in FAMILIES)
     if read != total:
         fail("cases.jsonl has {} cases, expected {}".format(read, total))
-    print("careless_check: {}: {} cases, {} failed; per branch {}".format(
-        a.kind, total, failures, branches))
+    print(
+        "careless_check: {}: {} cases, {} failed; per branch {}".format(
+            a.kind, total, failures, branches
+        )
+    )
 
 
 if __name__ == "__main__":

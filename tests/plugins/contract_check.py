@@ -48,13 +48,29 @@ def check(cond, msg):
 
 def campaign(a, out, extra=(), expect=0):
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double,toy-contract",
-           "--no-default-plugins", "--plugin", a.adapter, "--no-timing", "--no-progress",
-           "--per-case", "--out", out] + list(extra)
+    cmd = [
+        a.exe,
+        "run",
+        "--cases",
+        a.cases,
+        "--variants",
+        "double,toy-contract",
+        "--no-default-plugins",
+        "--plugin",
+        a.adapter,
+        "--no-timing",
+        "--no-progress",
+        "--per-case",
+        "--out",
+        out,
+    ] + list(extra)
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != expect:
-        fail("{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
-            " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {}, expected {}\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, expect, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
     with open(os.path.join(out, "report.json")) as f:
         return json.load(f), p.stdout
 
@@ -79,45 +95,86 @@ def main():
     st = r["families"][0]["variants"]["toy-contract"]
     cv = st["contract_violations"]
     check(cv["count"] == 2, "contract_violations.count {} != 2".format(cv["count"]))
-    check(cv["reasons"] == {"false_overlap": 1, "distance": 1},
-          "reasons {} != false_overlap 1, distance 1".format(cv["reasons"]))
-    check(cv["worst"]["case"] == "contract/false-overlap" and cv["worst"]["reason"] ==
-          "false_overlap" and abs(cv["worst"]["excess"] / 2.5e5 - 1) < 1e-6,
-          "worst {}".format(cv["worst"]))
-    check(st["beyond_bound_keeping_contract"] == 2,
-          "beyond_bound_keeping_contract {} != 2".format(st["beyond_bound_keeping_contract"]))
+    check(
+        cv["reasons"] == {"false_overlap": 1, "distance": 1},
+        "reasons {} != false_overlap 1, distance 1".format(cv["reasons"]),
+    )
+    check(
+        cv["worst"]["case"] == "contract/false-overlap"
+        and cv["worst"]["reason"] == "false_overlap"
+        and abs(cv["worst"]["excess"] / 2.5e5 - 1) < 1e-6,
+        "worst {}".format(cv["worst"]),
+    )
+    check(
+        st["beyond_bound_keeping_contract"] == 2,
+        "beyond_bound_keeping_contract {} != 2".format(st["beyond_bound_keeping_contract"]),
+    )
     check("penetration" not in st, "a penetration block for a contract of overlap zero")
     check(st["failures"] == 5, "failures (gjk2d's own rules) {} != 5".format(st["failures"]))
     dbl = r["families"][0]["variants"]["double"]
-    check(dbl["contract_violations"] == {"count": 0, "reasons": {}, "worst": None},
-          "double: {}".format(dbl["contract_violations"]))
+    check(
+        dbl["contract_violations"] == {"count": 0, "reasons": {}, "worst": None},
+        "double: {}".format(dbl["contract_violations"]),
+    )
     v = {x["name"]: x for x in r["variants"]}
     c = v["toy-contract"]["contract"]
-    check(c["own"] is False and c["overlap"] == "zero" and c["tolerance"]["abs"] == 1e-6 and
-          c["tolerance"]["rel"] is None, "contract {}".format(c))
+    check(
+        c["own"] is False
+        and c["overlap"] == "zero"
+        and c["tolerance"]["abs"] == 1e-6
+        and c["tolerance"]["rel"] is None,
+        "contract {}".format(c),
+    )
     check(v["double"]["contract"]["own"] is True, "double's contract {}".format(v["double"]))
     w = v["toy-contract"]["worst_contract_violation"]
-    check(w is not None and w["case"] == "contract/false-overlap" and
-          w["family"] == r["families"][0]["name"], "worst_contract_violation {}".format(w))
+    check(
+        w is not None
+        and w["case"] == "contract/false-overlap"
+        and w["family"] == r["families"][0]["name"],
+        "worst_contract_violation {}".format(w),
+    )
     check(v["double"]["worst_contract_violation"] is None, "double has a worst violation")
-    expect = {"contract/overlap": ("within_bound", None), "contract/near": ("outside_bound", None),
-              "contract/false-overlap": ("breaks_contract", "false_overlap"),
-              "contract/d1": ("within_bound", None), "contract/d3": ("outside_bound", None),
-              "contract/d4": ("breaks_contract", "distance")}
+    expect = {
+        "contract/overlap": ("within_bound", None),
+        "contract/near": ("outside_bound", None),
+        "contract/false-overlap": ("breaks_contract", "false_overlap"),
+        "contract/d1": ("within_bound", None),
+        "contract/d3": ("outside_bound", None),
+        "contract/d4": ("breaks_contract", "distance"),
+    }
     got = classes(os.path.join(a.work, "report"))
     check(got == expect, "classes {} != {}".format(got, expect))
     check(r["exit_code"] == 0, "exit_code {}".format(r["exit_code"]))
     check("breaks its contract" in stdout, "the terminal does not say 'breaks its contract'")
     for line in stdout.splitlines():
-        check(not ("toy-contract" in line and "fail" in line.lower()),
-              "the terminal says a comparison variant with a contract fails: " + line)
+        check(
+            not ("toy-contract" in line and "fail" in line.lower()),
+            "the terminal says a comparison variant with a contract fails: " + line,
+        )
     # explain: the answer's class, reason and excess, and what it was held to (judgedBy).
-    p = subprocess.run([a.exe, "explain", a.cases, "contract/d4", "--variants", "double,toy-contract",
-                        "--no-default-plugins", "--plugin", a.adapter], capture_output=True, text=True)
+    p = subprocess.run(
+        [
+            a.exe,
+            "explain",
+            a.cases,
+            "contract/d4",
+            "--variants",
+            "double,toy-contract",
+            "--no-default-plugins",
+            "--plugin",
+            a.adapter,
+        ],
+        capture_output=True,
+        text=True,
+    )
     check(p.returncode == 0, "explain exited {}: {}".format(p.returncode, p.stderr[-2000:]))
-    for want in ("** BREAKS ITS CONTRACT **", "contract: breaks its contract (distance, 1000 times",
-                 "held to: distance within 1e-06, points within 1e-06 (its stated tolerance: abs "
-                 "1e-06, rel none", "contract: keeps its contract, within gjk2d's bound"):
+    for want in (
+        "** BREAKS ITS CONTRACT **",
+        "contract: breaks its contract (distance, 1000 times",
+        "held to: distance within 1e-06, points within 1e-06 (its stated tolerance: abs "
+        "1e-06, rel none",
+        "contract: keeps its contract, within gjk2d's bound",
+    ):
         check(want in p.stdout, "explain does not say {!r}:\n{}".format(want, p.stdout))
     check("FAILED" not in p.stdout, "explain says FAILED:\n" + p.stdout)
     # compare: one more violation is a row of its own, with the legend (it gates with --all-variants).
@@ -126,11 +183,17 @@ def main():
     path = os.path.join(a.work, "worse.json")
     with open(path, "w") as f:
         json.dump(worse, f)
-    p = subprocess.run([a.exe, "compare", os.path.join(a.work, "report"), path, "--all-variants"],
-                       capture_output=True, text=True)
+    p = subprocess.run(
+        [a.exe, "compare", os.path.join(a.work, "report"), path, "--all-variants"],
+        capture_output=True,
+        text=True,
+    )
     check(p.returncode == 1, "compare exited {}: {}".format(p.returncode, p.stdout + p.stderr))
-    check("contract_violations" in p.stdout and "break their implementation's own contract" in
-          p.stdout, "compare does not show the contract row and legend:\n" + p.stdout)
+    check(
+        "contract_violations" in p.stdout
+        and "break their implementation's own contract" in p.stdout,
+        "compare does not show the contract row and legend:\n" + p.stdout,
+    )
     # Judged: its violations decide the exit code.
     r, _ = campaign(a, os.path.join(a.work, "judged"), ["--judge", "toy-contract"], expect=1)
     check(r["families"][0]["pass"] is False, "judged: the family passes")

@@ -38,12 +38,28 @@ def check(cond, msg):
 
 def variants(a, out, variant_list, plugin):
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [a.exe, "run", "--cases", a.cases, "--variants", variant_list, "--no-default-plugins",
-           "--plugin", plugin, "--no-timing", "--no-progress", "--out", out]
+    cmd = [
+        a.exe,
+        "run",
+        "--cases",
+        a.cases,
+        "--variants",
+        variant_list,
+        "--no-default-plugins",
+        "--plugin",
+        plugin,
+        "--no-timing",
+        "--no-progress",
+        "--out",
+        out,
+    ]
     p = subprocess.run(cmd, capture_output=True, text=True)
     if p.returncode != 0:
-        fail("{} exited {}\nstdout:\n{}\nstderr:\n{}".format(
-            " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {}\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
     with open(os.path.join(out, "report.json")) as f:
         return {v["name"]: v for v in json.load(f)["variants"]}
 
@@ -59,34 +75,52 @@ def main():
     c = v["toy-depth"]["contract"]
     source = "tests/plugins/adapters/toy.py"
     check(c["overlap"] == "penetration", "toy-depth overlap {}".format(c["overlap"]))
-    check(c["depth"] == {"abs": 1e-3, "rel": None, "source": source},
-          "toy-depth contract.depth {}".format(c["depth"]))
-    want = "its stated tolerance: abs 0.001, rel none ({}), plus gjk2d's depth bound for double".format(source)
-    check(c["judged_by_depth"] == want,
-          "toy-depth judged_by_depth {!r} != {!r}".format(c["judged_by_depth"], want))
+    check(
+        c["depth"] == {"abs": 1e-3, "rel": None, "source": source},
+        "toy-depth contract.depth {}".format(c["depth"]),
+    )
+    want = "its stated tolerance: abs 0.001, rel none ({}), plus gjk2d's depth bound for double".format(
+        source
+    )
+    check(
+        c["judged_by_depth"] == want,
+        "toy-depth judged_by_depth {!r} != {!r}".format(c["judged_by_depth"], want),
+    )
     d = v["double"]["contract"]
-    check(d["depth"] == {"abs": None, "rel": None, "source": ""},
-          "double contract.depth {}".format(d["depth"]))
-    check(d["judged_by_depth"] == "no depth answered (overlap common-point)",
-          "double judged_by_depth {!r}".format(d["judged_by_depth"]))
+    check(
+        d["depth"] == {"abs": None, "rel": None, "source": ""},
+        "double contract.depth {}".format(d["depth"]),
+    )
+    check(
+        d["judged_by_depth"] == "no depth answered (overlap common-point)",
+        "double judged_by_depth {!r}".format(d["judged_by_depth"]),
+    )
     ds = v["double-signed"]["contract"]
-    check(ds["overlap"] == "penetration" and ds["judged_by_depth"] ==
-          "gjk2d's own contract: gjk2d's depth bound for double",
-          "double-signed contract {}".format(ds))
+    check(
+        ds["overlap"] == "penetration"
+        and ds["judged_by_depth"] == "gjk2d's own contract: gjk2d's depth bound for double",
+        "double-signed contract {}".format(ds),
+    )
     if a.bridge:
         direct = variants(a, os.path.join(a.work, "so"), a.so_name, a.so)[a.so_name]["contract"]
         wrapper = os.path.join(a.work, "bridged.sh")
         with open(wrapper, "w") as f:
             f.write("#!/bin/sh\nexec '{}' '{}'\n".format(a.bridge, a.so))
         os.chmod(wrapper, 0o755)
-        bridged = variants(a, os.path.join(a.work, "bridge"), a.so_name,
-                           wrapper)[a.so_name]["contract"]
-        check(direct["overlap"] == "penetration", "{} overlap {}".format(a.so_name,
-                                                                        direct["overlap"]))
+        bridged = variants(a, os.path.join(a.work, "bridge"), a.so_name, wrapper)[a.so_name][
+            "contract"
+        ]
+        check(
+            direct["overlap"] == "penetration", "{} overlap {}".format(a.so_name, direct["overlap"])
+        )
         check(direct["depth"]["source"] != "", "{} states no depth source".format(a.so_name))
         for k in ("depth", "judged_by_depth", "overlap"):
-            check(direct[k] == bridged[k], "{}: {} {} as a shared library, {} through the bridge"
-                  .format(a.so_name, k, direct[k], bridged[k]))
+            check(
+                direct[k] == bridged[k],
+                "{}: {} {} as a shared library, {} through the bridge".format(
+                    a.so_name, k, direct[k], bridged[k]
+                ),
+            )
     print("depth_contract_check: ok")
 
 

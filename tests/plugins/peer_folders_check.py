@@ -20,7 +20,9 @@ import sys
 import tempfile
 
 ROW = re.compile(r"^peer ([A-Za-z0-9._-]+) (default|peers) ([A-Za-z0-9._-]+) (.+)$")
-REPRO = re.compile(r"^repro ([A-Za-z0-9._-]+) ([A-Za-z0-9._+*-]+) ([A-Za-z0-9._-]+\.in)( +[A-Z][A-Z0-9_]*=[^ ]+)*$")
+REPRO = re.compile(
+    r"^repro ([A-Za-z0-9._-]+) ([A-Za-z0-9._+*-]+) ([A-Za-z0-9._-]+\.in)( +[A-Z][A-Z0-9_]*=[^ ]+)*$"
+)
 
 
 def read_folders(plugins):
@@ -34,7 +36,11 @@ def read_folders(plugins):
             continue
         rows, nots, repros = [], [], []
         for no, line in enumerate(f.read_text().splitlines(), 1):
-            if not line.strip() or line.lstrip().startswith("#") or re.match(r"^package( \S+)+$", line):
+            if (
+                not line.strip()
+                or line.lstrip().startswith("#")
+                or re.match(r"^package( \S+)+$", line)
+            ):
                 continue
             m = ROW.match(line)
             r = REPRO.match(line)
@@ -43,18 +49,24 @@ def read_folders(plugins):
             elif r:
                 repros.append((r.group(1), r.group(3)))
                 if not (d / r.group(3)).is_file():
-                    problems.append(f"validation/plugins/{d.name}/peer.txt:{no}: the repro template "
-                                    f"{r.group(3)} is not in the folder")
+                    problems.append(
+                        f"validation/plugins/{d.name}/peer.txt:{no}: the repro template "
+                        f"{r.group(3)} is not in the folder"
+                    )
             elif line.startswith("not-a-peer "):
                 nots.append(line)
             else:
-                problems.append(f"validation/plugins/{d.name}/peer.txt:{no}: not a line of its format")
+                problems.append(
+                    f"validation/plugins/{d.name}/peer.txt:{no}: not a line of its format"
+                )
         if not rows and not nots:
             problems.append(f"validation/plugins/{d.name}/peer.txt: no row and no not-a-peer line")
         for file, template in repros:
             if file not in [f for f, _ in rows]:
-                problems.append(f"validation/plugins/{d.name}/peer.txt: the repro line for {file} "
-                                f"names no row of the folder")
+                problems.append(
+                    f"validation/plugins/{d.name}/peer.txt: the repro line for {file} "
+                    f"names no row of the folder"
+                )
         out.append((d.name, rows, nots, repros))
     return out, problems
 
@@ -65,8 +77,10 @@ def check(plugins, listed, built, built_root=None):
     rows = [(f, c) for _, rs, _, _ in folders for f, c in rs]
     nots = " ".join(n for _, _, ns, _ in folders for n in ns)
     if [f for f, _ in rows] != [f for f, _ in listed]:
-        problems.append(f"gjk-validate list shows {[f for f, _ in listed]}, the folders' rows are "
-                        f"{[f for f, _ in rows]}")
+        problems.append(
+            f"gjk-validate list shows {[f for f, _ in listed]}, the folders' rows are "
+            f"{[f for f, _ in rows]}"
+        )
     for (f, campaign), (g, shown) in zip(rows, listed):
         want = "default" if campaign == "default" else "--peers"
         if f == g and shown != want and shown != "not":
@@ -85,7 +99,7 @@ def check(plugins, listed, built, built_root=None):
 
 def list_peers(exe):
     text = subprocess.run([exe, "list"], capture_output=True, text=True, check=True).stdout
-    part = text[text.index("shipped peers"):].splitlines()[1:]
+    part = text[text.index("shipped peers") :].splitlines()[1:]
     out = []
     for line in part:
         m = re.match(r"^  (\S+)\s+(default|--peers|not)\b", line)
@@ -102,8 +116,11 @@ def main():
     ap.add_argument("--built", required=True, help="the build's plugin directory")
     a = ap.parse_args()
     plugins = pathlib.Path(a.plugins)
-    built = sorted(p.name for p in pathlib.Path(a.built).iterdir()
-                   if p.name.startswith("gjk2d-") and (p.is_file()))
+    built = sorted(
+        p.name
+        for p in pathlib.Path(a.built).iterdir()
+        if p.name.startswith("gjk2d-") and (p.is_file())
+    )
     listed = list_peers(a.exe)
     problems = check(plugins, listed, built, a.built)
     # The check must fail on a planted copy: a folder without its peer.txt, a row of no folder's.
@@ -113,14 +130,20 @@ def main():
         lost = sorted(copy.iterdir())[0]
         (lost / "peer.txt").unlink()
         extra = copy / sorted(copy.iterdir())[-1].name / "peer.txt"
-        extra.write_text(extra.read_text() + "peer gjk2d-nowhere.so peers - nothing\n"
-                         "repro gjk2d-nowhere.so * missing-repro.c.in\n")
+        extra.write_text(
+            extra.read_text() + "peer gjk2d-nowhere.so peers - nothing\n"
+            "repro gjk2d-nowhere.so * missing-repro.c.in\n"
+        )
         planted = check(copy, listed, built)
-        for want in (f"validation/plugins/{lost.name}/ has no peer.txt", "gjk2d-nowhere.so",
-                     "missing-repro.c.in is not in the folder"):
+        for want in (
+            f"validation/plugins/{lost.name}/ has no peer.txt",
+            "gjk2d-nowhere.so",
+            "missing-repro.c.in is not in the folder",
+        ):
             if not any(want in p for p in planted):
-                problems.append(f"the planted copy was not caught: no problem names '{want}' "
-                                f"({planted})")
+                problems.append(
+                    f"the planted copy was not caught: no problem names '{want}' " f"({planted})"
+                )
     for p in problems:
         print("FAIL: " + p)
     print(f"{len(listed)} rows listed, {len(built)} files built, {len(problems)} problems")

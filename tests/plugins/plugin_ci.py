@@ -44,8 +44,11 @@ def fail(msg):
 def run(cmd, expect=0, **kw):
     p = subprocess.run(cmd, capture_output=True, text=True, **kw)
     if expect is not None and p.returncode != expect:
-        fail("{} exited {} (expected {})\nstdout:\n{}\nstderr:\n{}".format(
-            " ".join(cmd), p.returncode, expect, p.stdout[-4000:], p.stderr[-4000:]))
+        fail(
+            "{} exited {} (expected {})\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, expect, p.stdout[-4000:], p.stderr[-4000:]
+            )
+        )
     return p
 
 
@@ -78,8 +81,11 @@ def same_answers(cases_jsonl, name, ref_name):
             mine, ref = c["variants"][name], c["variants"][ref_name]
             for key in ("distance", "pointA", "pointB", "iterations"):
                 if key not in ref or mine.get(key) != ref[key]:
-                    fail("{} differs from {} on {}: {} {} against {}".format(
-                        name, ref_name, c["name"], key, mine.get(key), ref.get(key)))
+                    fail(
+                        "{} differs from {} on {}: {} {} against {}".format(
+                            name, ref_name, c["name"], key, mine.get(key), ref.get(key)
+                        )
+                    )
             compared += 1
     return compared
 
@@ -93,14 +99,39 @@ def sdk(a):
     build = os.path.join(a.work, "example-build")
     env = dict(os.environ)
     env.pop("CMAKE_PREFIX_PATH", None)
-    run(["cmake", "-S", src, "-B", build, "-DCMAKE_PREFIX_PATH=" + prefix,
-         "-DCMAKE_BUILD_TYPE=Release"], env=env)
+    run(
+        [
+            "cmake",
+            "-S",
+            src,
+            "-B",
+            build,
+            "-DCMAKE_PREFIX_PATH=" + prefix,
+            "-DCMAKE_BUILD_TYPE=Release",
+        ],
+        env=env,
+    )
     run(["cmake", "--build", build], env=env)
     plugin = os.path.join(build, "example_gjk_plugin.so")
     out = os.path.join(a.work, "report")
-    p = run([os.path.join(prefix, "bin", "gjk-validate"), "run", "--family", "random:300",
-             "--family", "hard/sliver:20", "--plugin", plugin, "--passes", "1", "--out", out,
-             "--no-progress", "--per-case"])
+    p = run(
+        [
+            os.path.join(prefix, "bin", "gjk-validate"),
+            "run",
+            "--family",
+            "random:300",
+            "--family",
+            "hard/sliver:20",
+            "--plugin",
+            plugin,
+            "--passes",
+            "1",
+            "--out",
+            out,
+            "--no-progress",
+            "--per-case",
+        ]
+    )
     report = json.load(open(os.path.join(out, "report.json")))
     names = [v["name"] for v in report["variants"]]
     for name in ["example-gjk", "example-naive-f32", "box2d-2.4.1"]:
@@ -116,7 +147,11 @@ def sdk(a):
     # case and bit for bit (cases.jsonl: JSON numbers round-trip doubles).
     compared = same_answers(os.path.join(out, "cases.jsonl"), "example-gjk", "double")
     if compared != 320:
-        fail("cases.jsonl compared {} cases, expected 320 (random:300, hard/sliver:20)".format(compared))
+        fail(
+            "cases.jsonl compared {} cases, expected 320 (random:300, hard/sliver:20)".format(
+                compared
+            )
+        )
     # A user's program (tests/plugins/sdk_consumer/): the plain, certified and correctly rounded
     # queries, the batch in SIMD lanes and the exact side, through the installed headers
     # (gjk2d/...) and libraries, each checked against hand-derived values. Built out of tree twice:
@@ -129,21 +164,28 @@ def sdk(a):
     checked = run([exe]).stdout
     cm = os.path.join(a.work, "sdk-consumer-cmake")
     shutil.copytree(consumer_src, cm)
-    run(["cmake", "-S", cm, "-B", os.path.join(cm, "build"), "-DCMAKE_PREFIX_PATH=" + prefix], env=env)
+    run(
+        ["cmake", "-S", cm, "-B", os.path.join(cm, "build"), "-DCMAKE_PREFIX_PATH=" + prefix],
+        env=env,
+    )
     run(["cmake", "--build", os.path.join(cm, "build")], env=env)
     run([os.path.join(cm, "build", "sdk_consumer")])
     # The old include paths still compile for one release, and say which path replaces them.
     old = os.path.join(a.work, "old_paths.cpp")
     open(old, "w").write("#include <gjk/distance.hpp>\n#include <exact/exact.hpp>\nint main() {}\n")
     p = run(["c++", "-std=c++20", "-c", old, "-o", os.path.join(a.work, "old_paths.o")] + flags)
-    for path, new_path in [("gjk/distance.hpp", "gjk2d/distance.hpp"),
-                           ("exact/exact.hpp", "gjk2d/exact.hpp")]:
+    for path, new_path in [
+        ("gjk/distance.hpp", "gjk2d/distance.hpp"),
+        ("exact/exact.hpp", "gjk2d/exact.hpp"),
+    ]:
         warning = "<{}> is deprecated: include <{}>".format(path, new_path)
         if warning not in p.stderr:
             fail("compiling <{}> gave no warning '{}':\n{}".format(path, warning, p.stderr))
-    print("plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json; "
-          "tests/plugins/sdk_consumer linked through pkg-config and find_package, {}; the old "
-          "include paths warn".format(names[-3:], checked.strip().splitlines()[-1]))
+    print(
+        "plugin_ci: sdk: installed, example plugin built out of tree, variants {} in report.json; "
+        "tests/plugins/sdk_consumer linked through pkg-config and find_package, {}; the old "
+        "include paths warn".format(names[-3:], checked.strip().splitlines()[-1])
+    )
 
 
 def generated(exe, family, work):
@@ -160,13 +202,28 @@ def contained(a):
     # Two children answer a chunk of 128 tasks or more, one each half (PluginServers): a crash
     # must be found in either. A hang costs its timeout (twice in a block): fewer cases there.
     count = 80 if a.kind == "hang" else 400
-    cmd = [a.exe, "run", "--family", "random:{}".format(count), "--variants", "double",
-           "--no-default-plugins", "--threads", "2",
-           # A hang costs its timeout; a crash must be told apart from a hang even in a slow
-           # (sanitized) build.
-           "--plugin", a.plugin, "--plugin-timeout", "0.3" if a.kind == "hang" else "10",
-           "--passes", "1", "--out", out,
-           "--no-progress"]
+    cmd = [
+        a.exe,
+        "run",
+        "--family",
+        "random:{}".format(count),
+        "--variants",
+        "double",
+        "--no-default-plugins",
+        "--threads",
+        "2",
+        # A hang costs its timeout; a crash must be told apart from a hang even in a slow
+        # (sanitized) build.
+        "--plugin",
+        a.plugin,
+        "--plugin-timeout",
+        "0.3" if a.kind == "hang" else "10",
+        "--passes",
+        "1",
+        "--out",
+        out,
+        "--no-progress",
+    ]
     p = run(cmd)
     report = json.load(open(os.path.join(out, "report.json")))
     st = variant_stats(report, name)["random"]
@@ -181,13 +238,18 @@ def contained(a):
             fail("no case counted as {}: {}".format(incident, st))
         lines = [l for l in p.stderr.splitlines() if "plugin variant '{}'".format(name) in l]
         if len(lines) != st[incident] or not all(" on case 'random" in l for l in lines):
-            fail("expected {} stderr lines naming the case, got:\n{}".format(st[incident], p.stderr))
+            fail(
+                "expected {} stderr lines naming the case, got:\n{}".format(st[incident], p.stderr)
+            )
         # The plugin crashes or hangs exactly where (countA + countB) % 5 == 0 (test_plugin.cpp):
         # each such case, and no other, is named, however the child's answers cross the pipe
         # (in blocks: a lost block is answered again one case at a time to find the case).
         named = sorted(re.search(r" on case '([^']+)'", l).group(1) for l in lines)
-        expected = sorted(c["name"] for c in generated(a.exe, "random:{}".format(count), a.work)
-                          if (len(c["a"]["points"]) + len(c["b"]["points"])) % 5 == 0)
+        expected = sorted(
+            c["name"]
+            for c in generated(a.exe, "random:{}".format(count), a.work)
+            if (len(c["a"]["points"]) + len(c["b"]["points"])) % 5 == 0
+        )
         if named != expected:
             fail("the {} cases named {}, expected {}".format(incident, named, expected))
         ok = st["cases"] - st[incident] - st["plugin_errors"]
@@ -201,9 +263,18 @@ def contained(a):
         fail("a comparison plugin decided the exit code")
     # Judged on request: the error statuses (and crashes, hangs) fail the campaign.
     run(cmd + ["--judge", name, "--no-timing"], expect=1)
-    print("plugin_ci: {}: {} cases, {} refused, {} error statuses, {} crashed, {} hung; "
-          "double's {} cases kept".format(a.kind, st["cases"], st["refused"], st["plugin_errors"],
-                                          st["crashed"], st["hung"], count))
+    print(
+        "plugin_ci: {}: {} cases, {} refused, {} error statuses, {} crashed, {} hung; "
+        "double's {} cases kept".format(
+            a.kind,
+            st["cases"],
+            st["refused"],
+            st["plugin_errors"],
+            st["crashed"],
+            st["hung"],
+            count,
+        )
+    )
 
 
 def gone(pid, grace):
@@ -223,9 +294,28 @@ def tree(a):
     fresh(a.work)
     pids_file = os.path.join(a.work, "pids")
     env = dict(os.environ, GJK2D_TEST_PIDS=pids_file)
-    run([a.exe, "run", "--family", "random:40", "--variants", "double", "--no-default-plugins",
-         "--threads", "2", "--plugin", a.plugin, "--plugin-timeout", "0.3", "--no-timing",
-         "--out", os.path.join(a.work, "report"), "--no-progress"], env=env)
+    run(
+        [
+            a.exe,
+            "run",
+            "--family",
+            "random:40",
+            "--variants",
+            "double",
+            "--no-default-plugins",
+            "--threads",
+            "2",
+            "--plugin",
+            a.plugin,
+            "--plugin-timeout",
+            "0.3",
+            "--no-timing",
+            "--out",
+            os.path.join(a.work, "report"),
+            "--no-progress",
+        ],
+        env=env,
+    )
     pids = [int(l) for l in open(pids_file)] if os.path.exists(pids_file) else []
     left = [pid for pid in pids if not gone(pid, 2)]
     for pid in left:  # the check fails; nothing of it outlives it either
@@ -240,8 +330,22 @@ def tree(a):
 def box2d(a):
     fresh(a.work)
     out = os.path.join(a.work, "report")
-    run([a.exe, "run", "--family", "random:100", "--family", "hard/many-vertices:3", "--variants",
-         "float,box2d-2.4.1", "--no-timing", "--out", out, "--no-progress"])
+    run(
+        [
+            a.exe,
+            "run",
+            "--family",
+            "random:100",
+            "--family",
+            "hard/many-vertices:3",
+            "--variants",
+            "float,box2d-2.4.1",
+            "--no-timing",
+            "--out",
+            out,
+            "--no-progress",
+        ]
+    )
     report = json.load(open(os.path.join(out, "report.json")))
     st = variant_stats(report, "box2d-2.4.1")
     many = st["hard/many-vertices"]
@@ -252,8 +356,10 @@ def box2d(a):
         fail("random: expected 100 answered cases with iteration counts: {}".format(rnd))
     if rnd["nonfinite"] != 0:
         fail("random: Box2D gave non-finite answers on ordinary shapes: {}".format(rnd))
-    print("plugin_ci: box2d: 3 many-vertex cases refused, 100 random cases answered "
-          "(max error/bound {})".format(rnd["errors"]["bound_ratio"]["max"]))
+    print(
+        "plugin_ci: box2d: 3 many-vertex cases refused, 100 random cases answered "
+        "(max error/bound {})".format(rnd["errors"]["bound_ratio"]["max"])
+    )
 
 
 def python_files(build):
@@ -262,13 +368,24 @@ def python_files(build):
         return []
     return ["./usr/lib/python3/dist-packages/gjk2d/__init__.py"] + [
         "./usr/lib/python3/dist-packages/gjk2d/" + os.path.basename(so)
-        for so in glob.glob(os.path.join(build, "python", "gjk2d", "_gjk2d*.so"))]
+        for so in glob.glob(os.path.join(build, "python", "gjk2d", "_gjk2d*.so"))
+    ]
 
 
 def deb(a):
     fresh(a.work)
-    run(["cpack", "-G", "DEB", "--config", os.path.join(a.build, "CPackConfig.cmake"), "-B", a.work],
-        cwd=a.build)
+    run(
+        [
+            "cpack",
+            "-G",
+            "DEB",
+            "--config",
+            os.path.join(a.build, "CPackConfig.cmake"),
+            "-B",
+            a.work,
+        ],
+        cwd=a.build,
+    )
     debs = glob.glob(os.path.join(a.work, "gjk2d_*.deb"))
     if len(debs) != 1:
         fail("expected one gjk2d_*.deb in {}: {}".format(a.work, os.listdir(a.work)))
@@ -279,13 +396,21 @@ def deb(a):
         if dep not in fields:
             fail("Depends lacks {}: {}".format(dep, fields))
     files = run(["dpkg-deb", "-c", debs[0]]).stdout
-    for path in ["./usr/bin/gjk-validate", "./usr/include/gjk2d/plugin.h",
-                 "./usr/include/gjk2d/distance.hpp", "./usr/include/gjk2d/batch.hpp",
-                 "./usr/include/gjk2d/exact.hpp", "./usr/include/gjk/distance.hpp",
-                 "./usr/include/exact/exact.hpp", "./usr/lib/libgjk2d_batch.a",
-                 "./usr/lib/libgjk2d_exact.a", "./usr/lib/cmake/gjk2d/gjk2d-config.cmake",
-                 "./usr/lib/pkgconfig/gjk2d.pc", "./usr/lib/gjk2d/plugins/gjk2d-box2d.so",
-                 "./usr/share/gjk2d/cases/talk.json"] + python_files(a.build):
+    for path in [
+        "./usr/bin/gjk-validate",
+        "./usr/include/gjk2d/plugin.h",
+        "./usr/include/gjk2d/distance.hpp",
+        "./usr/include/gjk2d/batch.hpp",
+        "./usr/include/gjk2d/exact.hpp",
+        "./usr/include/gjk/distance.hpp",
+        "./usr/include/exact/exact.hpp",
+        "./usr/lib/libgjk2d_batch.a",
+        "./usr/lib/libgjk2d_exact.a",
+        "./usr/lib/cmake/gjk2d/gjk2d-config.cmake",
+        "./usr/lib/pkgconfig/gjk2d.pc",
+        "./usr/lib/gjk2d/plugins/gjk2d-box2d.so",
+        "./usr/share/gjk2d/cases/talk.json",
+    ] + python_files(a.build):
         if path not in files:
             fail("{} is not in the package:\n{}".format(path, files))
     print("plugin_ci: deb: {}\n{}".format(os.path.basename(debs[0]), fields.strip()))

@@ -71,14 +71,30 @@ def campaign(a, out, state, extra):
     shutil.rmtree(out, ignore_errors=True)
     shutil.rmtree(state, ignore_errors=True)
     os.makedirs(state)
-    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "float,toy-world",
-           "--no-default-plugins", "--plugin", a.adapter, "--no-progress", "--per-case",
-           "--out", out] + extra
-    p = subprocess.run(cmd, capture_output=True, text=True,
-                       env=dict(os.environ, TOY_STATE_DIR=state))
+    cmd = [
+        a.exe,
+        "run",
+        "--cases",
+        a.cases,
+        "--variants",
+        "float,toy-world",
+        "--no-default-plugins",
+        "--plugin",
+        a.adapter,
+        "--no-progress",
+        "--per-case",
+        "--out",
+        out,
+    ] + extra
+    p = subprocess.run(
+        cmd, capture_output=True, text=True, env=dict(os.environ, TOY_STATE_DIR=state)
+    )
     if p.returncode != 0:
-        fail("{} exited {}\nstdout:\n{}\nstderr:\n{}".format(
-            " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]))
+        fail(
+            "{} exited {}\nstdout:\n{}\nstderr:\n{}".format(
+                " ".join(cmd), p.returncode, p.stdout[-3000:], p.stderr[-3000:]
+            )
+        )
     with open(os.path.join(state, "requests")) as f:
         requests = [line.split() for line in f if line.strip()]
     with open(os.path.join(out, "report.json")) as f:
@@ -90,9 +106,9 @@ def shapes(tok):
     out, i = [], 0
     while i < len(tok):
         check(tok[i] in ("A", "B"), "a shape starts with {}".format(tok[i]))
-        r, px, py, c, s = (float(x) for x in tok[i + 1:i + 6])
+        r, px, py, c, s = (float(x) for x in tok[i + 1 : i + 6])
         n = int(tok[i + 6])
-        v = [float(x) for x in tok[i + 7:i + 7 + 2 * n]]
+        v = [float(x) for x in tok[i + 7 : i + 7 + 2 * n]]
         out.append((r, px, py, c, s, [(v[2 * k], v[2 * k + 1]) for k in range(n)]))
         i += 7 + 2 * n
     return out
@@ -109,57 +125,97 @@ def check_cases(out):
         cases = {c["name"]: c for c in map(json.loads, f)}
     r = cases["world/rotated"]
     v = r["variants"]["toy-world"]
-    check(v["truth"] == "world_input.float.exact" and v.get("input") == "world",
-          "toy-world judged on {} (input {})".format(v["truth"], v.get("input")))
+    check(
+        v["truth"] == "world_input.float.exact" and v.get("input") == "world",
+        "toy-world judged on {} (input {})".format(v["truth"], v.get("input")),
+    )
     w = r["world_input"]["float"]
-    check(w["exact"]["distance"] == WORLD_EXACT,
-          "world case's exact distance {} != {}".format(w["exact"]["distance"], WORLD_EXACT))
-    check(r["exact"]["distance"] == CASE_EXACT,
-          "case's exact distance {} != {}".format(r["exact"]["distance"], CASE_EXACT))
+    check(
+        w["exact"]["distance"] == WORLD_EXACT,
+        "world case's exact distance {} != {}".format(w["exact"]["distance"], WORLD_EXACT),
+    )
+    check(
+        r["exact"]["distance"] == CASE_EXACT,
+        "case's exact distance {} != {}".format(r["exact"]["distance"], CASE_EXACT),
+    )
     check(WORLD_EXACT != CASE_EXACT, "the test case does not tell the two truths apart")
-    check(w["input_rounding"] == abs(WORLD_EXACT - CASE_EXACT),
-          "input_rounding {} != {}".format(w["input_rounding"], abs(WORLD_EXACT - CASE_EXACT)))
+    check(
+        w["input_rounding"] == abs(WORLD_EXACT - CASE_EXACT),
+        "input_rounding {} != {}".format(w["input_rounding"], abs(WORLD_EXACT - CASE_EXACT)),
+    )
     check(not v["failed"], "toy-world's exact answer on its world case failed")
     check("input" not in r["variants"]["float"], "gjk2d's float variant given world points")
     skipped = cases["world/overflow"]["variants"]["toy-world"].get("skipped")
-    check(skipped == "world points not representable in the implementation's scalar type",
-          "world/overflow: toy-world skipped {!r}".format(skipped))
+    check(
+        skipped == "world points not representable in the implementation's scalar type",
+        "world/overflow: toy-world skipped {!r}".format(skipped),
+    )
 
 
 def check_report(r):
     v = next(x for x in r["variants"] if x["name"] == "toy-world")
-    check(v["contract"]["input"] == {"form": "world", "source": SOURCE},
-          "contract.input {}".format(v["contract"]["input"]))
-    want = {"form": "world", "source": SOURCE, "cases": 1,
-            "given": "world points rounded to float ({})".format(SOURCE)}
+    check(
+        v["contract"]["input"] == {"form": "world", "source": SOURCE},
+        "contract.input {}".format(v["contract"]["input"]),
+    )
+    want = {
+        "form": "world",
+        "source": SOURCE,
+        "cases": 1,
+        "given": "world points rounded to float ({})".format(SOURCE),
+    }
     check(v["input"] == want, "variants[].input {} != {}".format(v["input"], want))
     f = next(x for x in r["variants"] if x["name"] == "float")
-    check(f["input"]["form"] == "case" and f["input"]["given"] == "the case as given",
-          "float's input {}".format(f["input"]))
+    check(
+        f["input"]["form"] == "case" and f["input"]["given"] == "the case as given",
+        "float's input {}".format(f["input"]),
+    )
     st = r["families"][0]["variants"]["toy-world"]
-    check(st["cases"] == 1 and st["skipped"] == 1,
-          "toy-world: {} cases, {} skipped".format(st["cases"], st["skipped"]))
+    check(
+        st["cases"] == 1 and st["skipped"] == 1,
+        "toy-world: {} cases, {} skipped".format(st["cases"], st["skipped"]),
+    )
     ir = st["errors"]["input_rounding"]
-    check(ir["count"] == 1 and ir["max"] == abs(WORLD_EXACT - CASE_EXACT),
-          "toy-world's input_rounding {}".format(ir))
+    check(
+        ir["count"] == 1 and ir["max"] == abs(WORLD_EXACT - CASE_EXACT),
+        "toy-world's input_rounding {}".format(ir),
+    )
 
 
 def check_explain(a, state):
     """`explain` shows the world case toy-world was given, and says it is judged on it."""
     detail = os.path.join(a.work, "detail.json")
-    cmd = [a.exe, "explain", a.cases, "world/rotated", "--variants", "toy-world",
-           "--no-default-plugins", "--plugin", a.adapter, "--json", detail]
-    p = subprocess.run(cmd, capture_output=True, text=True,
-                       env=dict(os.environ, TOY_STATE_DIR=state))
+    cmd = [
+        a.exe,
+        "explain",
+        a.cases,
+        "world/rotated",
+        "--variants",
+        "toy-world",
+        "--no-default-plugins",
+        "--plugin",
+        a.adapter,
+        "--json",
+        detail,
+    ]
+    p = subprocess.run(
+        cmd, capture_output=True, text=True, env=dict(os.environ, TOY_STATE_DIR=state)
+    )
     check(p.returncode == 0, "{} exited {}: {}".format(" ".join(cmd), p.returncode, p.stderr))
-    for text in ("world case in float", "[0] local ({!r}, {!r})".format(WX, WY),
-                 "exact (world case, float): distance {!r}".format(WORLD_EXACT),
-                 "given the world case in float: judged on its exact result"):
+    for text in (
+        "world case in float",
+        "[0] local ({!r}, {!r})".format(WX, WY),
+        "exact (world case, float): distance {!r}".format(WORLD_EXACT),
+        "given the world case in float: judged on its exact result",
+    ):
         check(text in p.stdout, "explain does not say {!r}:\n{}".format(text, p.stdout))
     with open(detail) as f:
         w = json.load(f)["world_input"]["float"]
-    check(w["b"]["transform"] == {"p": [0.0, 0.0], "q": [1.0, 0.0]} and
-          w["b"]["points"] == [[WX, WY]], "explain --json world_input.float.b {}".format(w["b"]))
+    check(
+        w["b"]["transform"] == {"p": [0.0, 0.0], "q": [1.0, 0.0]}
+        and w["b"]["points"] == [[WX, WY]],
+        "explain --json world_input.float.b {}".format(w["b"]),
+    )
 
 
 def main():
@@ -170,18 +226,23 @@ def main():
     out, state = os.path.join(a.work, "report"), os.path.join(a.work, "state")
     r, requests = campaign(a, out, state, ["--no-timing"])
     distance = [t for t in requests if t[0] == "distance"]
-    check(len(distance) == 1 and len(requests) == 1,
-          "{} requests, {} distance: expected one (the overflow case is not sent)".format(
-              len(requests), len(distance)))
+    check(
+        len(distance) == 1 and len(requests) == 1,
+        "{} requests, {} distance: expected one (the overflow case is not sent)".format(
+            len(requests), len(distance)
+        ),
+    )
     check(distance[0][2] == "toy-world", "the request names {}".format(distance[0][2]))
     check_sent(distance[0][3:], "the distance request")
     check_cases(out)
     check_report(r)
     with open(os.path.join(out, "report.md")) as f:
         md = f.read()
-    check("- **toy-world**: on overlap `common-point` (gjk2d/distance.hpp, DistanceOutput); given "
-          "world points rounded to float (" in md, "report.md's contracts do not say what "
-          "toy-world is given")
+    check(
+        "- **toy-world**: on overlap `common-point` (gjk2d/distance.hpp, DistanceOutput); given "
+        "world points rounded to float (" in md,
+        "report.md's contracts do not say what " "toy-world is given",
+    )
     # Timed: every case of a `time` request (time ID NAME K M, then M cases) is the world case.
     _, requests = campaign(a, out + "-timed", state, ["--passes", "1"])
     timed = [t for t in requests if t[0] == "time"]
@@ -191,11 +252,14 @@ def main():
         check(m >= 1 and len(body) % m == 0, "time request of {} cases: {}".format(m, t))
         step = len(body) // m
         for k in range(m):
-            check_sent(body[k * step:(k + 1) * step], "a time request's case")
+            check_sent(body[k * step : (k + 1) * step], "a time request's case")
     check_explain(a, state)
-    print("world_check: ok: toy-world was sent ({!r}, {!r}) with identity transforms and judged "
-          "on the world case's exact distance {!r} (the case's: {!r})".format(
-              WX, WY, WORLD_EXACT, CASE_EXACT))
+    print(
+        "world_check: ok: toy-world was sent ({!r}, {!r}) with identity transforms and judged "
+        "on the world case's exact distance {!r} (the case's: {!r})".format(
+            WX, WY, WORLD_EXACT, CASE_EXACT
+        )
+    )
 
 
 if __name__ == "__main__":

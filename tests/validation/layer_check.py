@@ -20,7 +20,9 @@ def cmake_layers(cmake_text):
     """GJK2D_VALIDATION_LAYERS, lowest first: a layer may include itself and the layers before it."""
     m = re.search(r"set\(GJK2D_VALIDATION_LAYERS ([a-z ]+)\)", cmake_text)
     if not m:
-        raise SystemExit("layer_check: validation/CMakeLists.txt has no set(GJK2D_VALIDATION_LAYERS ...)")
+        raise SystemExit(
+            "layer_check: validation/CMakeLists.txt has no set(GJK2D_VALIDATION_LAYERS ...)"
+        )
     return m.group(1).split()
 
 
@@ -32,8 +34,10 @@ def check_links(cmake_text, layers):
         own = m.group(1)
         for other in re.findall(r"gjk2d_(\w+)", m.group(2)):
             if other in rank and rank[other] >= rank[own]:
-                problems.append(f"validation/CMakeLists.txt: layer '{own}' links layer '{other}', "
-                                f"which is not below it")
+                problems.append(
+                    f"validation/CMakeLists.txt: layer '{own}' links layer '{other}', "
+                    f"which is not below it"
+                )
     return problems
 
 
@@ -41,8 +45,10 @@ def check_docs(docs_text, layers):
     """The drawing in docs/judgement.md lists the layers top down, one per line."""
     drawn = [w for w in re.findall(r"^([a-z]+) {2,}", docs_text, re.M) if w in layers]
     if drawn != list(reversed(layers)):
-        return [f"docs/judgement.md: the layer drawing ({' > '.join(drawn)}) differs from "
-                f"GJK2D_VALIDATION_LAYERS ({' < '.join(layers)})"]
+        return [
+            f"docs/judgement.md: the layer drawing ({' > '.join(drawn)}) differs from "
+            f"GJK2D_VALIDATION_LAYERS ({' < '.join(layers)})"
+        ]
     return []
 
 
@@ -59,8 +65,10 @@ def check(src, layers):
     problems = []
     for folder in sorted(p for p in src.iterdir() if p.is_dir()):
         if folder.name not in rank:
-            problems.append(f"{folder}: a folder of validation/src/ that is not in the layer order "
-                            f"(GJK2D_VALIDATION_LAYERS in validation/CMakeLists.txt)")
+            problems.append(
+                f"{folder}: a folder of validation/src/ that is not in the layer order "
+                f"(GJK2D_VALIDATION_LAYERS in validation/CMakeLists.txt)"
+            )
             continue
         own = folder.name
         for path in sorted(folder.rglob("*")):
@@ -74,14 +82,20 @@ def check(src, layers):
                 other = m.group(1)
                 if rank[other] <= rank[own] or (rel, other) in EXCEPTIONS:
                     continue
-                problems.append(f"validation/src/{rel}:{number}: layer '{own}' includes layer "
-                                f"'{other}', which is above it ({' < '.join(layers)})")
+                problems.append(
+                    f"validation/src/{rel}:{number}: layer '{own}' includes layer "
+                    f"'{other}', which is above it ({' < '.join(layers)})"
+                )
     return problems
 
 
 def main():
     here = pathlib.Path(__file__).resolve().parent
-    src = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else here.parent.parent / "validation" / "src"
+    src = (
+        pathlib.Path(sys.argv[1])
+        if len(sys.argv) > 1
+        else here.parent.parent / "validation" / "src"
+    )
     if not src.is_dir():
         print(f"layer_check: {src}: not a directory", file=sys.stderr)
         return 2

@@ -26,6 +26,7 @@ def worst_case_commands(text, plugins, script):
     """The errors of the worst cases' commands: which plugins each loads, and its mark."""
     sys.path.insert(0, str(pathlib.Path(script).parent))
     from check_doc_commands import OPTIONAL
+
     errors, seen = [], 0
     for p in plugins:
         optional = [o for o in OPTIONAL if re.search(o[1], p["file"])]
@@ -36,11 +37,13 @@ def worst_case_commands(text, plugins, script):
             seen += 1
             for q in plugins:
                 loads = f"--plugin {q['file']}" in para or re.search(
-                    r"--plugin \S*" + re.escape(pathlib.Path(q["file"]).name) + r"\b", para)
+                    r"--plugin \S*" + re.escape(pathlib.Path(q["file"]).name) + r"\b", para
+                )
                 other = [o for o in OPTIONAL if re.search(o[1], q["file"])]
                 if bool(loads) != (not other or q is p):
-                    errors.append(f"{v}'s worst case command {'loads' if loads else 'lacks'} "
-                                  f"{q['file']}")
+                    errors.append(
+                        f"{v}'s worst case command {'loads' if loads else 'lacks'} " f"{q['file']}"
+                    )
             if optional and f"**{v}** ({optional[0][2]})" not in para:
                 errors.append(f"{v}'s worst case needs {optional[0][0]} and does not say so")
             if not optional and "(needs" in para.split("Command:")[0]:
@@ -66,9 +69,22 @@ def main():
         page_before, page_after = "# Box2D: a hand-written title\n\n", "\n\n## Hand-written\n"
         (t / "peers" / "box2d.md").write_text(page_before + BEGIN + "\nstale\n" + END + page_after)
         # Two family groups (hard, random), no timing: seconds.
-        cmd = [sys.executable, a.script, "--gjk-validate", a.exe, "--doc", str(doc),
-               "--out", str(t / "run"), "--", "--family", "hard/near-parallel:20",
-               "--family", "random:40", "--no-timing"]
+        cmd = [
+            sys.executable,
+            a.script,
+            "--gjk-validate",
+            a.exe,
+            "--doc",
+            str(doc),
+            "--out",
+            str(t / "run"),
+            "--",
+            "--family",
+            "hard/near-parallel:20",
+            "--family",
+            "random:40",
+            "--no-timing",
+        ]
         done = subprocess.run(cmd)
         if done.returncode != 0:
             print(f"FAIL: {cmd} exited {done.returncode}")
@@ -77,20 +93,25 @@ def main():
         report = json.loads((t / "run" / "report.json").read_text())
         plugins = report["context"]["plugins"]
         errors = []
-        pages = {p: (t / "peers" / p).read_text() for p in sorted(
-            f.name for f in (t / "peers").glob("*.md"))}
+        pages = {
+            p: (t / "peers" / p).read_text()
+            for p in sorted(f.name for f in (t / "peers").glob("*.md"))
+        }
         box2d = pages.get("box2d.md", "")
         if not box2d.startswith(page_before + BEGIN) or not box2d.endswith(END + page_after):
             errors.append("the text around the markers of peers/box2d.md was not kept as it was")
         for p in plugins:
             for v in p["variants"]:
-                if not any(l.startswith(f"| {v} | [") and "](peers/" in l
-                           for l in overview.splitlines()):
+                if not any(
+                    l.startswith(f"| {v} | [") and "](peers/" in l for l in overview.splitlines()
+                ):
                     errors.append(f"no verdict row linking a page for {v} in the overview")
         text = "\n".join([overview] + list(pages.values()))
         if not plugins:
-            errors.append("the report's context lists no plugin: the shipped Box2D 2.4.1 "
-                          "adapter should be loaded")
+            errors.append(
+                "the report's context lists no plugin: the shipped Box2D 2.4.1 "
+                "adapter should be loaded"
+            )
         if not overview.startswith(before + BEGIN) or not overview.endswith(END + after):
             errors.append("the text around the markers was not kept as it was")
         if "stale" in text:
@@ -112,9 +133,14 @@ def main():
             kind = (v.get("contract") or {}).get("overlap")
             given = (v.get("input") or {}).get("given")
             if v["name"] in ("double", "float") or "plugin" in v:
-                if not kind or not given or not any(
+                if (
+                    not kind
+                    or not given
+                    or not any(
                         l.startswith(f"| {v['name']} | {v['type']} | {given} | {kind} | ")
-                        for l in rows):
+                        for l in rows
+                    )
+                ):
                     errors.append(f"no contract row for {v['name']} (overlap {kind})")
         if "### Each peer's worst contract violation, with a repro" not in text:
             errors.append("no section of the peers' contract violations")
@@ -122,16 +148,24 @@ def main():
         # families, then the default case files.
         sys.path.insert(0, str(pathlib.Path(a.script).parent))
         import peers_doc
+
         default = peers_doc.default_campaign(a.exe)
         families = default[:-1]
-        if (default[-1:] != ["--default-cases"] or not families or len(families) % 2
-                or set(families[::2]) != {"--family"}):
+        if (
+            default[-1:] != ["--default-cases"]
+            or not families
+            or len(families) % 2
+            or set(families[::2]) != {"--family"}
+        ):
             errors.append(f"the default campaign read from `list` is {default}")
         # Each group here holds one family: the joined histograms' p99 and max must be that
         # family's, as the runner computed them (Hist::percentile).
-        cols = {"largest rel. error": ("rel", "max"), "p99 rel. error": ("rel", "p99"),
-                "largest error / gjk2d's bound": ("bound_ratio", "max"),
-                "p99 error / bound": ("bound_ratio", "p99")}
+        cols = {
+            "largest rel. error": ("rel", "max"),
+            "p99 rel. error": ("rel", "p99"),
+            "largest error / gjk2d's bound": ("bound_ratio", "max"),
+            "p99 error / bound": ("bound_ratio", "p99"),
+        }
         head = next(l for l in rows if l.startswith("| variant | family group |"))
         names = [c.strip() for c in head.strip("|").split("|")]
         for fam in report["families"]:

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 # A test adapter (toy.py): timed-extra (no `prepared` line, answers two figures).
 import sys
+
 sys.dont_write_bytecode = True  # nothing written beside the sources
 import toy  # noqa: E402
+
 toy.main("timed-extra")

@@ -53,11 +53,13 @@ import time
 
 def world(tok, i):
     """The shape at tok[i] ('A' or 'B'): its world points and radius, and the index after it."""
-    r, px, py, c, s = (float(x) for x in tok[i + 1:i + 6])
+    r, px, py, c, s = (float(x) for x in tok[i + 1 : i + 6])
     n = int(tok[i + 6])
-    v = [float(x) for x in tok[i + 7:i + 7 + 2 * n]]
-    pts = [(c * v[2 * k] - s * v[2 * k + 1] + px, s * v[2 * k] + c * v[2 * k + 1] + py)
-           for k in range(n)]
+    v = [float(x) for x in tok[i + 7 : i + 7 + 2 * n]]
+    pts = [
+        (c * v[2 * k] - s * v[2 * k + 1] + px, s * v[2 * k] + c * v[2 * k + 1] + py)
+        for k in range(n)
+    ]
     return pts, r, px, i + 7 + 2 * n
 
 
@@ -90,8 +92,7 @@ def distance(a, ra, b, rb):
     if d == 0 or d <= ra + rb:
         return 0.0, p, q
     u = ((q[0] - p[0]) / d, (q[1] - p[1]) / d)
-    return (d - ra - rb, (p[0] + ra * u[0], p[1] + ra * u[1]),
-            (q[0] - rb * u[0], q[1] - rb * u[1]))
+    return (d - ra - rb, (p[0] + ra * u[0], p[1] + ra * u[1]), (q[0] - rb * u[0], q[1] - rb * u[1]))
 
 
 def say(line):
@@ -238,10 +239,20 @@ def main(behaviour):
         sys.exit(3)
     if behaviour in ("fork-hang", "setsid"):
         spawn_sleeper(behaviour == "setsid")
-    version = {"version": 3, "contract": 2, "prepared": 2, "prepared-missing": 2,
-               "prepared-bad-scope": 2, "depth": 2, "depth-bad": 2, "depth-zero": 2,
-               "world": 2, "world-bad-form": 2, "world-twice": 2,
-               "world-unknown": 2}.get(behaviour, 1)
+    version = {
+        "version": 3,
+        "contract": 2,
+        "prepared": 2,
+        "prepared-missing": 2,
+        "prepared-bad-scope": 2,
+        "depth": 2,
+        "depth-bad": 2,
+        "depth-zero": 2,
+        "world": 2,
+        "world-bad-form": 2,
+        "world-twice": 2,
+        "world-unknown": 2,
+    }.get(behaviour, 1)
     say("gjk2d-adapter {}".format(version))
     say("library toy 1.0 (brute force, tests/plugins/adapters)")
     scalar = {"bad-description": "quad", "world": "float"}.get(behaviour, "double")
@@ -253,10 +264,17 @@ def main(behaviour):
         tolerance = "nan none" if behaviour == "depth-bad" else "1e-3 none"
         say("contract toy-{} depth {} tests/plugins/adapters/toy.py".format(behaviour, tolerance))
         overlap = "zero" if behaviour == "depth-zero" else "penetration"
-        say("contract toy-{} overlap {} tests/plugins/adapters/toy.py, answer()".format(
-            behaviour, overlap))
-    scope = {"prepared": "case", "prepared-missing": "shape", "prepared-bad-scope": "world",
-             "prepared-v1": "case"}.get(behaviour)
+        say(
+            "contract toy-{} overlap {} tests/plugins/adapters/toy.py, answer()".format(
+                behaviour, overlap
+            )
+        )
+    scope = {
+        "prepared": "case",
+        "prepared-missing": "shape",
+        "prepared-bad-scope": "world",
+        "prepared-v1": "case",
+    }.get(behaviour)
     if scope:
         say("prepared toy-{} {}".format(behaviour, scope))
     if behaviour.startswith("world"):

@@ -55,21 +55,21 @@ try:  # shapely 1.8 (Debian 12)
 except ImportError:  # shapely 2
     geos_version = shapely.geos_version
 
-GEOS_VERSION = '.'.join(str(v) for v in geos_version)
-IMPL = f'geos-{GEOS_VERSION}'
+GEOS_VERSION = ".".join(str(v) for v in geos_version)
+IMPL = f"geos-{GEOS_VERSION}"
 # What GEOS promises (the module docstring): the handshake's `contract` lines, protocol version 2.
 CONTRACT = [
-    f'contract {IMPL} overlap common-point include/geos/operation/distance/DistanceOp.h:53-61 (the '
+    f"contract {IMPL} overlap common-point include/geos/operation/distance/DistanceOp.h:53-61 (the "
     'nearest points: "a pair of points in the input geometries which have the minimum distance between '
     'them"), src/operation/distance/DistanceOp.cpp:253-269 (a vertex inside the other polygon: both '
-    'points at it), GEOS 3.11.1, via shapely 1.8.5 ops.nearest_points (shapely/ops.py:328-332)',
-    f'contract {IMPL} tolerance none none',
-    f'contract {IMPL} margin 0',
+    "points at it), GEOS 3.11.1, via shapely 1.8.5 ops.nearest_points (shapely/ops.py:328-332)",
+    f"contract {IMPL} tolerance none none",
+    f"contract {IMPL} margin 0",
 ]
 
 
 def say(line):
-    sys.stdout.write(line + '\n')
+    sys.stdout.write(line + "\n")
     sys.stdout.flush()
 
 
@@ -85,24 +85,24 @@ def read_shape(t, i, letter):
 
     def num(k, what):
         if k >= len(t):
-            raise RequestError(f'shape {letter}: missing {what}')
+            raise RequestError(f"shape {letter}: missing {what}")
         try:
             return float(t[k])
         except ValueError:
             raise RequestError(f'shape {letter}: {what} "{t[k]}" is not a number') from None
 
-    r, px, py, c, s = (num(i + 1 + k, w) for k, w in enumerate(('radius', 'px', 'py', 'c', 's')))
-    n = num(i + 6, 'n')
+    r, px, py, c, s = (num(i + 1 + k, w) for k, w in enumerate(("radius", "px", "py", "c", "s")))
+    n = num(i + 6, "n")
     if n != int(n) or n < 0:
         raise RequestError(f'shape {letter}: n "{t[i + 6]}" is not a count')
     n = int(n)
-    points = [(num(i + 7 + 2 * k, f'x{k}'), num(i + 8 + 2 * k, f'y{k}')) for k in range(n)]
+    points = [(num(i + 7 + 2 * k, f"x{k}"), num(i + 8 + 2 * k, f"y{k}")) for k in range(n)]
     return (r, px, py, c, s, points), i + 7 + 2 * n
 
 
 def read_case(t, i):
-    a, i = read_shape(t, i, 'A')
-    b, i = read_shape(t, i, 'B')
+    a, i = read_shape(t, i, "A")
+    b, i = read_shape(t, i, "B")
     return (a, b), i
 
 
@@ -143,7 +143,7 @@ def query(prepared):
 
 def refusal(case):
     if not case[0][5] or not case[1][5]:
-        return 'a shape without points'
+        return "a shape without points"
     return None
 
 
@@ -155,31 +155,31 @@ def answer(t):
     try:
         if len(t) < 3 or t[2] != IMPL:
             return say(f'error {rid} unknown implementation "{t[2] if len(t) > 2 else ""}"')
-        if t[0] == 'distance':
+        if t[0] == "distance":
             case, i = read_case(t, 3)
             if i != len(t):
-                raise RequestError(f'{len(t) - i} tokens after shape B')
+                raise RequestError(f"{len(t) - i} tokens after shape B")
             why = refusal(case)
             if why:
-                return say(f'refused {rid} {why}')
+                return say(f"refused {rid} {why}")
             d, ax, ay, bx, by = query(prepare(case))
-            return say(f'ok {rid} {d!r} {ax!r} {ay!r} {bx!r} {by!r} -1')
-        if t[0] == 'time':
+            return say(f"ok {rid} {d!r} {ax!r} {ay!r} {bx!r} {by!r} -1")
+        if t[0] == "time":
             try:
                 k_rounds, m = int(t[3]), int(t[4])
             except (IndexError, ValueError):
-                raise RequestError('time: K and m must be positive integers') from None
+                raise RequestError("time: K and m must be positive integers") from None
             if k_rounds < 1 or m < 1:
-                raise RequestError('time: K and m must be positive integers')
+                raise RequestError("time: K and m must be positive integers")
             cases, i = [], 5
             for k in range(m):
                 case, i = read_case(t, i)
                 why = refusal(case)
                 if why:
-                    return say(f'refused {rid} case {k + 1}: {why}')
+                    return say(f"refused {rid} case {k + 1}: {why}")
                 cases.append(case)
             if i != len(t):
-                raise RequestError(f'{len(t) - i} tokens after case {m}')
+                raise RequestError(f"{len(t) - i} tokens after case {m}")
             start = time.perf_counter_ns()
             prepared = [prepare(case) for case in cases]
             prepare_ns = time.perf_counter_ns() - start
@@ -188,10 +188,10 @@ def answer(t):
                 for p in prepared:
                     query(p)
             total = time.perf_counter_ns() - start
-            return say(f'timed {rid} {total} {prepare_ns}')
+            return say(f"timed {rid} {total} {prepare_ns}")
         return say(f'error {rid} unknown request "{t[0]}"')
     except RequestError as e:
-        return say(f'error {rid} {e}')
+        return say(f"error {rid} {e}")
     except Exception as e:  # shapely/GEOS raised: the case is an error, the stream goes on
         return say(f'error {rid} {type(e).__name__}: {" ".join(str(e).split())}')
 
@@ -207,20 +207,25 @@ def main():
             continue
         if not handshaken:
             # We speak version 2 whatever the host asks: the host judges a mismatch (the protocol's rule).
-            if t[0] != 'gjk2d-adapter':
-                print(f'gjk2d-geos: expected the handshake, got "{line.strip()[:80]}"', file=sys.stderr)
-            say('gjk2d-adapter 2')
-            say(f'library GEOS {GEOS_VERSION} via shapely {shapely.__version__}')
-            say(f'implementation {IMPL} double radius 0 GEOS {GEOS_VERSION} distance and nearest_points '
-                f'via shapely {shapely.__version__} (Point, LineString, convex hull), radii subtracted')
+            if t[0] != "gjk2d-adapter":
+                print(
+                    f'gjk2d-geos: expected the handshake, got "{line.strip()[:80]}"',
+                    file=sys.stderr,
+                )
+            say("gjk2d-adapter 2")
+            say(f"library GEOS {GEOS_VERSION} via shapely {shapely.__version__}")
+            say(
+                f"implementation {IMPL} double radius 0 GEOS {GEOS_VERSION} distance and nearest_points "
+                f"via shapely {shapely.__version__} (Point, LineString, convex hull), radii subtracted"
+            )
             for line in CONTRACT:
                 say(line)
-            say(f'prepared {IMPL} case')
-            say('ready')
+            say(f"prepared {IMPL} case")
+            say("ready")
             handshaken = True
             continue
         answer(t)
 
 
-if __name__ == '__main__':
+if __name__ == "__main__":
     main()

@@ -99,7 +99,8 @@ function freshRapier() {
   // Forgotten by the cache and by this module's children, the old instance and its memory can be
   // collected (measured: 100 fresh instances, 142 MB resident; 1.4 GB for 300 while the children
   // kept them).
-  for (const key of Object.keys(require.cache)) if (key.includes("rapier2d-compat")) delete require.cache[key];
+  for (const key of Object.keys(require.cache))
+    if (key.includes("rapier2d-compat")) delete require.cache[key];
   module.children = module.children.filter((child) => !child.id.includes("rapier2d-compat"));
   RAPIER = require(PACKAGE);
   return RAPIER.init();
@@ -156,7 +157,8 @@ function readShape(t, i, letter) {
   const num = (k, what) => {
     if (k >= t.length) throw new RequestError(`shape ${letter}: missing ${what}`);
     const v = parseNumber(t[k]);
-    if (v === undefined) throw new RequestError(`shape ${letter}: ${what} "${t[k]}" is not a number`);
+    if (v === undefined)
+      throw new RequestError(`shape ${letter}: ${what} "${t[k]}" is not a number`);
     return v;
   };
   const r = num(i + 1, "radius");
@@ -165,7 +167,8 @@ function readShape(t, i, letter) {
   const c = num(i + 4, "c");
   const s = num(i + 5, "s");
   const n = num(i + 6, "n");
-  if (!Number.isInteger(n) || n < 0) throw new RequestError(`shape ${letter}: n "${t[i + 6]}" is not a count`);
+  if (!Number.isInteger(n) || n < 0)
+    throw new RequestError(`shape ${letter}: n "${t[i + 6]}" is not a count`);
   const points = new Float64Array(2 * n);
   for (let k = 0; k < n; ++k) {
     points[2 * k] = num(i + 7 + 2 * k, `x${k}`);
@@ -193,7 +196,8 @@ function shapeRefusal(sh) {
   const n = sh.points.length / 2;
   if (n < 1) return `shape ${L} has no points`;
   const values = [sh.r, ...sh.points];
-  if (!values.every(Number.isFinite)) return `shape ${L} has a coordinate or radius that is not finite`;
+  if (!values.every(Number.isFinite))
+    return `shape ${L} has a coordinate or radius that is not finite`;
   if (!values.every((v) => Math.fround(v) === v))
     return `shape ${L} has a number that is not an f32, which Rapier's Float32Array would round`;
   if (sh.r < 0) return `shape ${L} has a negative radius`;
@@ -231,7 +235,8 @@ const COINCIDENT =
   "Rapier throws RuntimeError: unreachable on a ConvexPolygon of 3 or more coincident points: parry's convex " +
   `hull asserts two distinct points (src/transformation/convex_hull2.rs:107-110, ${PARRY})`;
 function coincident(points) {
-  for (let k = 2; k < points.length; k += 2) if (points[k] !== points[0] || points[k + 1] !== points[1]) return false;
+  for (let k = 2; k < points.length; k += 2)
+    if (points[k] !== points[0] || points[k + 1] !== points[1]) return false;
   return true;
 }
 function panics(c) {
@@ -243,9 +248,15 @@ const ORIGIN = { x: 0, y: 0 };
 function build(sh) {
   const n = sh.points.length / 2;
   if (n === 1) return new RAPIER.Ball(sh.r);
-  if (n === 2) return new RAPIER.Segment({ x: sh.points[0], y: sh.points[1] }, { x: sh.points[2], y: sh.points[3] });
+  if (n === 2)
+    return new RAPIER.Segment(
+      { x: sh.points[0], y: sh.points[1] },
+      { x: sh.points[2], y: sh.points[3] },
+    );
   const vertices = new Float32Array(sh.points); // exact: every value is an f32 (shapeRefusal)
-  return sh.r > 0 ? new RAPIER.RoundConvexPolygon(vertices, sh.r, false) : new RAPIER.ConvexPolygon(vertices, false);
+  return sh.r > 0
+    ? new RAPIER.RoundConvexPolygon(vertices, sh.r, false)
+    : new RAPIER.ConvexPolygon(vertices, false);
 }
 
 function prepare(sh) {
@@ -261,7 +272,13 @@ function num(v) {
 
 // One query on two prepared shapes, the same inside and outside the timed loop: angle 0 for both
 // (RawRotation.fromAngle(0): cos 0 = 1, sin 0 = 0, the identity), the f32 maximum as prediction.
-const target = new RAPIER.ShapeContact(0, { x: 0, y: 0 }, { x: 0, y: 0 }, { x: 0, y: 0 }, { x: 0, y: 0 });
+const target = new RAPIER.ShapeContact(
+  0,
+  { x: 0, y: 0 },
+  { x: 0, y: 0 },
+  { x: 0, y: 0 },
+  { x: 0, y: 0 },
+);
 function query(pa, pb) {
   return pa.shape.contactShape(pa.at, 0, pb.shape, pb.at, 0, PREDICTION, target);
 }
@@ -287,7 +304,9 @@ function answer(t) {
             `after 100 iterations or its EPA found no face)`,
         );
       const f = num;
-      return say(`ok ${id} ${f(o.distance)} ${f(o.point1.x)} ${f(o.point1.y)} ${f(o.point2.x)} ${f(o.point2.y)} -1`);
+      return say(
+        `ok ${id} ${f(o.distance)} ${f(o.point1.x)} ${f(o.point1.y)} ${f(o.point2.x)} ${f(o.point2.y)} -1`,
+      );
     }
     if (t[0] === "time") {
       const K = Number(t[3]);

@@ -64,7 +64,11 @@ def write_text(cases_json, out):
                 continue
             c = json.loads(line)
             names.append(c["name"])
-            o.write("case {}\n{}\n{}\n".format(c["name"], shape_line("A", c["a"]), shape_line("B", c["b"])))
+            o.write(
+                "case {}\n{}\n{}\n".format(
+                    c["name"], shape_line("A", c["a"]), shape_line("B", c["b"])
+                )
+            )
     return names
 
 
@@ -85,25 +89,44 @@ def compare(cases_jsonl, direct_csv, variant):
                 fail("case order differs: report {} against direct {}".format(c["name"], name))
             v = c.get("variants", {}).get(variant)
             if v is None:
-                bad.append("{}: no answer of {} in cases.jsonl ({})".format(name, variant, c.get("rejected")))
+                bad.append(
+                    "{}: no answer of {} in cases.jsonl ({})".format(
+                        name, variant, c.get("rejected")
+                    )
+                )
             elif v.get("skipped") == REFUSED or answer == "refused":
                 if v.get("skipped") == REFUSED and answer == "refused":
                     counts["refused"] += 1
                 else:
-                    bad.append("{}: runner {}, direct {}".format(name, v.get("skipped", "answered"), answer))
+                    bad.append(
+                        "{}: runner {}, direct {}".format(
+                            name, v.get("skipped", "answered"), answer
+                        )
+                    )
             elif v.get("skipped") == NOT_FLOAT:
                 counts["not_asked"] += 1
             elif "skipped" in v:
                 bad.append("{}: skipped by the runner: {}".format(name, v["skipped"]))
             elif "plugin_status" in v:
-                bad.append("{}: the adapter's call ended {} ({})".format(name, v["plugin_status"], v["plugin_detail"]))
+                bad.append(
+                    "{}: the adapter's call ended {} ({})".format(
+                        name, v["plugin_status"], v["plugin_detail"]
+                    )
+                )
             else:
                 d = answer.split(",")
                 got = [v["distance"], *v["pointA"], *v["pointB"]]
-                if [bits(x) for x in got] != [bits(x) for x in d[:5]] or v["iterations"] != int(d[5]):
-                    bad.append("{}: adapter {} {}, direct {}".format(
-                        name, [float(x) if not isinstance(x, str) else x for x in got], v["iterations"],
-                        [float.fromhex(x) for x in d[:5]] + [int(d[5])]))
+                if [bits(x) for x in got] != [bits(x) for x in d[:5]] or v["iterations"] != int(
+                    d[5]
+                ):
+                    bad.append(
+                        "{}: adapter {} {}, direct {}".format(
+                            name,
+                            [float(x) if not isinstance(x, str) else x for x in got],
+                            v["iterations"],
+                            [float.fromhex(x) for x in d[:5]] + [int(d[5])],
+                        )
+                    )
                 else:
                     counts["equal"] += 1
         if rj.readline() or dc.readline():
@@ -130,13 +153,36 @@ def main():
     names = write_text(cases_json, cases_txt)
     with open(direct_csv, "w") as out:
         run([args.direct, cases_txt], stdout=out)
-    run([args.exe, "run", "--cases", cases_json, "--no-default-plugins", "--plugin", args.plugin,
-         "--variants", args.variant, "--no-timing", "--no-progress", "--per-case", "--out", report])
+    run(
+        [
+            args.exe,
+            "run",
+            "--cases",
+            cases_json,
+            "--no-default-plugins",
+            "--plugin",
+            args.plugin,
+            "--variants",
+            args.variant,
+            "--no-timing",
+            "--no-progress",
+            "--per-case",
+            "--out",
+            report,
+        ]
+    )
     counts, bad = compare(os.path.join(report, "cases.jsonl"), direct_csv, args.variant)
-    print("box2d3_equal: {} cases ({}): {} answers equal bit for bit, {} refused by both (more than 8 "
-          "points), {} not asked (not representable in float); {} disagreements".format(
-              len(names), ", ".join(args.family), counts["equal"], counts["refused"], counts["not_asked"],
-              len(bad)))
+    print(
+        "box2d3_equal: {} cases ({}): {} answers equal bit for bit, {} refused by both (more than 8 "
+        "points), {} not asked (not representable in float); {} disagreements".format(
+            len(names),
+            ", ".join(args.family),
+            counts["equal"],
+            counts["refused"],
+            counts["not_asked"],
+            len(bad),
+        )
+    )
     if bad:
         fail("{} cases disagree; the first:\n  ".format(len(bad)) + "\n  ".join(bad[:10]))
     if counts["equal"] + counts["refused"] + counts["not_asked"] != len(names):

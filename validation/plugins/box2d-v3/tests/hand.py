@@ -39,7 +39,9 @@ import shutil
 import subprocess
 import sys
 
-REFUSED = "refused by the implementation (plugin)"  # kSkipRefused, validation/src/evaluate/evaluate.hpp
+REFUSED = (
+    "refused by the implementation (plugin)"  # kSkipRefused, validation/src/evaluate/evaluate.hpp
+)
 SQUARE = [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]
 
 
@@ -52,8 +54,11 @@ CASES = [
     ("squares-3-apart", shape(SQUARE), shape(SQUARE, p=(4, 0))),
     ("squares-overlap", shape(SQUARE), shape(SQUARE, p=(0.5, 0.25))),
     ("point-segment", shape([[0, 0]], p=(0, 2)), shape([[-1, 0], [1, 0]])),
-    ("rotated-rectangle", shape([[-2, -0.5], [2, -0.5], [2, 0.5], [-2, 0.5]], q=(0, 1)),
-     shape([[0, 0]], p=(0, 5))),
+    (
+        "rotated-rectangle",
+        shape([[-2, -0.5], [2, -0.5], [2, 0.5], [-2, 0.5]], q=(0, 1)),
+        shape([[0, 0]], p=(0, 5)),
+    ),
     ("circles", shape([[0, 0]], radius=0.5), shape([[0, 0]], p=(3, 4), radius=0.25)),
     ("circles-overlap", shape([[0, 0]], radius=1.0), shape([[0, 0]], p=(1.5, 0), radius=1.0)),
     ("nine-points", shape(NINE), shape([[0, 0]], p=(5, 0))),
@@ -78,7 +83,9 @@ def check(name, v):
     elif name == "rotated-rectangle":
         ok = d == 3 and [ax, ay, bx, by] == [0, 2, 0, 5]
     else:  # circles
-        ok = d == 4.25 and all(abs(x - e) <= 2e-6 for x, e in zip([ax, ay, bx, by], [0.3, 0.4, 2.85, 3.8]))
+        ok = d == 4.25 and all(
+            abs(x - e) <= 2e-6 for x, e in zip([ax, ay, bx, by], [0.3, 0.4, 2.85, 3.8])
+        )
     return None if ok else "distance {} pointA {} pointB {}".format(d, v["pointA"], v["pointB"])
 
 
@@ -89,28 +96,68 @@ def main():
     ap.add_argument("--bridge", help="gjk2d-adapter-bridge, to read the plugin's contract")
     args = ap.parse_args()
     if args.bridge:
-        h = subprocess.run([args.bridge, args.plugin], input="gjk2d-adapter 1\n", capture_output=True,
-                           text=True, timeout=30).stdout.splitlines()
-        want = ["contract {} overlap perimeter src/distance.c:".format(args.variant),
-                "contract {} tolerance none none".format(args.variant),
-                "contract {} margin 0".format(args.variant)]
-        if h[:1] != ["gjk2d-adapter 2"] or len(h) != 8 or not all(l.startswith(w) for l, w in zip(h[3:6], want)) \
-                or "erincatto/box2d 617d32ab" not in h[3] or h[6] != "prepared {} shape".format(args.variant):
-            print("box2d3_hand: FAIL: the contract read through the bridge: {}".format(h), file=sys.stderr)
+        h = subprocess.run(
+            [args.bridge, args.plugin],
+            input="gjk2d-adapter 1\n",
+            capture_output=True,
+            text=True,
+            timeout=30,
+        ).stdout.splitlines()
+        want = [
+            "contract {} overlap perimeter src/distance.c:".format(args.variant),
+            "contract {} tolerance none none".format(args.variant),
+            "contract {} margin 0".format(args.variant),
+        ]
+        if (
+            h[:1] != ["gjk2d-adapter 2"]
+            or len(h) != 8
+            or not all(l.startswith(w) for l, w in zip(h[3:6], want))
+            or "erincatto/box2d 617d32ab" not in h[3]
+            or h[6] != "prepared {} shape".format(args.variant)
+        ):
+            print(
+                "box2d3_hand: FAIL: the contract read through the bridge: {}".format(h),
+                file=sys.stderr,
+            )
             sys.exit(1)
         print("box2d3_hand: contract: {}".format(h[3]))
     shutil.rmtree(args.work, ignore_errors=True)
     os.makedirs(args.work)
     path = os.path.join(args.work, "hand.json")
     with open(path, "w") as f:
-        json.dump({"format": "gjk-cases/1",
-                   "cases": [{"name": "box2d3/" + n, "a": a, "b": b} for n, a, b in CASES]}, f)
+        json.dump(
+            {
+                "format": "gjk-cases/1",
+                "cases": [{"name": "box2d3/" + n, "a": a, "b": b} for n, a, b in CASES],
+            },
+            f,
+        )
     out = os.path.join(args.work, "report")
-    p = subprocess.run([args.exe, "run", "--cases", path, "--no-default-plugins", "--plugin", args.plugin,
-                        "--variants", args.variant, "--no-timing", "--no-progress", "--per-case",
-                        "--out", out], capture_output=True, text=True)
+    p = subprocess.run(
+        [
+            args.exe,
+            "run",
+            "--cases",
+            path,
+            "--no-default-plugins",
+            "--plugin",
+            args.plugin,
+            "--variants",
+            args.variant,
+            "--no-timing",
+            "--no-progress",
+            "--per-case",
+            "--out",
+            out,
+        ],
+        capture_output=True,
+        text=True,
+    )
     if p.returncode != 0:
-        print("box2d3_hand: FAIL: gjk-validate exited {}\n{}".format(p.returncode, p.stderr), file=sys.stderr)
+        print(
+            "box2d3_hand: FAIL: gjk-validate exited {}\n{}".format(p.returncode, p.stderr),
+            file=sys.stderr,
+        )
         sys.exit(1)
     failures = []
     with open(os.path.join(out, "cases.jsonl")) as f:

@@ -36,12 +36,27 @@ def main():
     a = ap.parse_args()
     out = os.path.join(a.work, "report")
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [a.exe, "run", "--cases", a.cases, "--variants", "double," + VARIANT,
-           "--no-default-plugins", "--plugin", a.plugin, "--no-timing", "--no-progress",
-           "--per-case", "--out", out]
+    cmd = [
+        a.exe,
+        "run",
+        "--cases",
+        a.cases,
+        "--variants",
+        "double," + VARIANT,
+        "--no-default-plugins",
+        "--plugin",
+        a.plugin,
+        "--no-timing",
+        "--no-progress",
+        "--per-case",
+        "--out",
+        out,
+    ]
     p = subprocess.run(cmd, capture_output=True, text=True)
-    check(p.returncode == 0, "{} exited {}:\n{}".format(" ".join(cmd), p.returncode,
-                                                        (p.stdout + p.stderr)[-3000:]))
+    check(
+        p.returncode == 0,
+        "{} exited {}:\n{}".format(" ".join(cmd), p.returncode, (p.stdout + p.stderr)[-3000:]),
+    )
     with open(os.path.join(out, "report.json")) as f:
         r = json.load(f)
     row = r["families"][0]["variants"][VARIANT]
@@ -60,8 +75,10 @@ def main():
     check(said in p.stderr + p.stdout, "the terminal does not say " + repr(said))
     with open(os.path.join(out, "plugin-gjk2d-fcl.log")) as f:
         log = f.read()
-    check("ComputeVisiblePatch" in log and "isOutsidePolytopeFace" in log,
-          "the plugin's log does not hold FCL's assertion:\n" + log[-2000:])
+    check(
+        "ComputeVisiblePatch" in log and "isOutsidePolytopeFace" in log,
+        "the plugin's log does not hold FCL's assertion:\n" + log[-2000:],
+    )
     print("signed_crash_check: ok")
 
 

@@ -26,14 +26,14 @@ import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.join(HERE, '..', '..', '..', '..')
+ROOT = os.path.join(HERE, "..", "..", "..", "..")
 sys.dont_write_bytecode = True  # importing adapter_driver leaves no __pycache__ in the source tree
-sys.path.insert(0, os.path.join(ROOT, 'tests', 'plugins'))
+sys.path.insert(0, os.path.join(ROOT, "tests", "plugins"))
 from adapter_driver import Adapter, fmt_case, shape  # noqa: E402
 
 
 def f32(x):
-    return struct.unpack('f', struct.pack('f', x))[0]
+    return struct.unpack("f", struct.pack("f", x))[0]
 
 
 def hull(pts):
@@ -43,6 +43,7 @@ def hull(pts):
 
     def cross(o, a, b):
         return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
     lo, up = [], []
     for p in pts:
         while len(lo) >= 2 and cross(lo[-2], lo[-1], p) <= 0:
@@ -68,8 +69,10 @@ def signed_distance(a, b):
     edges = [(m[i], m[(i + 1) % len(m)]) for i in range(len(m))]
     inside = all((q[0] - p[0]) * (-p[1]) - (q[1] - p[1]) * (-p[0]) > 0 for p, q in edges)
     if inside:
-        return -min(abs(p[0] * (q[1] - p[1]) - p[1] * (q[0] - p[0])) / math.hypot(q[0] - p[0], q[1] - p[1])
-                    for p, q in edges)
+        return -min(
+            abs(p[0] * (q[1] - p[1]) - p[1] * (q[0] - p[0])) / math.hypot(q[0] - p[0], q[1] - p[1])
+            for p, q in edges
+        )
     return min(segment_distance(p, q) for p, q in edges)
 
 
@@ -81,35 +84,39 @@ def polygon(rng, scale):
 
 
 def adapter_copy(work, factor, slack, one_query):
-    src = open(os.path.join(ROOT, 'validation', 'plugins', 'jolt', 'adapter.js')).read()
-    for old, new in [('const HEIGHT_FACTOR = 2;', f'const HEIGHT_FACTOR = {factor};'),
-                     ('const MAX_SEPARATION_SLACK = 1 + 1 / 8;', f'const MAX_SEPARATION_SLACK = {slack};')]:
+    src = open(os.path.join(ROOT, "validation", "plugins", "jolt", "adapter.js")).read()
+    for old, new in [
+        ("const HEIGHT_FACTOR = 2;", f"const HEIGHT_FACTOR = {factor};"),
+        ("const MAX_SEPARATION_SLACK = 1 + 1 / 8;", f"const MAX_SEPARATION_SLACK = {slack};"),
+    ]:
         if old not in src:
-            sys.exit(f'jolt_sweep: adapter.js has no line {old!r}')
+            sys.exit(f"jolt_sweep: adapter.js has no line {old!r}")
         src = src.replace(old, new)
     if one_query:
-        first = ('  p.b.ts.CollideShape(p.a.shape, unitScale, p.comA, overlapSettings, origin, collector, filter);\n'
-                 '  if (collector.HadHit()) return collector.mHit;\n  collector.Reset();\n')
+        first = (
+            "  p.b.ts.CollideShape(p.a.shape, unitScale, p.comA, overlapSettings, origin, collector, filter);\n"
+            "  if (collector.HadHit()) return collector.mHit;\n  collector.Reset();\n"
+        )
         if first not in src:
-            sys.exit('jolt_sweep: adapter.js has no first query to remove')
-        src = src.replace(first, '')
-    js = os.path.join(work, f'adapter-{factor}.js')
-    open(js, 'w').write(src)
-    wrapper = os.path.join(work, f'adapter-{factor}.sh')
-    modules = os.path.join(ROOT, 'build', 'npm', 'jolt', 'node_modules')
-    open(wrapper, 'w').write(f'#!/bin/sh\nNODE_PATH="{modules}" exec node "{js}"\n')
+            sys.exit("jolt_sweep: adapter.js has no first query to remove")
+        src = src.replace(first, "")
+    js = os.path.join(work, f"adapter-{factor}.js")
+    open(js, "w").write(src)
+    wrapper = os.path.join(work, f"adapter-{factor}.sh")
+    modules = os.path.join(ROOT, "build", "npm", "jolt", "node_modules")
+    open(wrapper, "w").write(f'#!/bin/sh\nNODE_PATH="{modules}" exec node "{js}"\n')
     os.chmod(wrapper, 0o755)
     return wrapper
 
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument('--cases', type=int, default=4000)
-    ap.add_argument('--seed', type=int, default=1)
-    ap.add_argument('--scale', type=float, default=1.0)
-    ap.add_argument('--factors', default='2')
-    ap.add_argument('--slack', default='1 + 1 / 8')
-    ap.add_argument('--one-query', action='store_true')
+    ap.add_argument("--cases", type=int, default=4000)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--scale", type=float, default=1.0)
+    ap.add_argument("--factors", default="2")
+    ap.add_argument("--slack", default="1 + 1 / 8")
+    ap.add_argument("--one-query", action="store_true")
     a = ap.parse_args()
     rng = random.Random(a.seed)
     cases = []
@@ -118,15 +125,15 @@ def main():
         if len(p) >= 3 and len(q) >= 3:
             cases.append((p, q, signed_distance(p, q)))
     with tempfile.TemporaryDirectory() as work:
-        for factor in a.factors.split(','):
+        for factor in a.factors.split(","):
             ad = Adapter(adapter_copy(work, factor, a.slack, a.one_query))
             over, sep, off, refused, errors, nonpositive = [], [], 0, 0, 0, 0
             for i, (p, q, s) in enumerate(cases):
-                t = ad.ask(f'distance {i} jolt-1.1.0 {fmt_case(shape(p), shape(q))}').split()
-                if t[0] == 'refused':
+                t = ad.ask(f"distance {i} jolt-1.1.0 {fmt_case(shape(p), shape(q))}").split()
+                if t[0] == "refused":
                     refused += 1
                     continue
-                if t[0] != 'ok':
+                if t[0] != "ok":
                     errors += 1
                     continue
                 d = float(t[2])
@@ -138,14 +145,16 @@ def main():
                     sep.append(abs(d - s) / s if s > 0 else abs(d))
             ad.close()
             within = sum(abs(r) <= 1e-6 for r in over)
-            print(f'factor {factor} (scale {a.scale}, slack {a.slack}{", one query" if a.one_query else ""}): '
-                  f'overlapping {len(over)}: depth within 1e-6 rel {within}, depth <= 0 {nonpositive}, '
-                  f'median rel {statistics.median(over) if over else math.nan:.2g}, '
-                  f'largest |rel| {max(map(abs, over)) if over else math.nan:.2g}; '
-                  f'separated {len(sep)}: median rel {statistics.median(sep) if sep else math.nan:.2g}, '
-                  f'largest {max(sep) if sep else math.nan:.2g}; off by > 1e-4 {off}; refused {refused}; '
-                  f'errors {errors}')
+            print(
+                f'factor {factor} (scale {a.scale}, slack {a.slack}{", one query" if a.one_query else ""}): '
+                f"overlapping {len(over)}: depth within 1e-6 rel {within}, depth <= 0 {nonpositive}, "
+                f"median rel {statistics.median(over) if over else math.nan:.2g}, "
+                f"largest |rel| {max(map(abs, over)) if over else math.nan:.2g}; "
+                f"separated {len(sep)}: median rel {statistics.median(sep) if sep else math.nan:.2g}, "
+                f"largest {max(sep) if sep else math.nan:.2g}; off by > 1e-4 {off}; refused {refused}; "
+                f"errors {errors}"
+            )
 
 
-if __name__ == '__main__':
+if __name__ == "__main__":
     main()

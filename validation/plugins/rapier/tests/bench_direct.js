@@ -22,11 +22,18 @@ function median(f) {
 }
 
 RAPIER.init().then(() => {
-  const square = (cx) => new Float32Array([cx - 0.5, -0.5, cx + 0.5, -0.5, cx + 0.5, 0.5, cx - 0.5, 0.5]);
+  const square = (cx) =>
+    new Float32Array([cx - 0.5, -0.5, cx + 0.5, -0.5, cx + 0.5, 0.5, cx - 0.5, 0.5]);
   const at = { x: 0, y: 0 };
   const a = new RAPIER.ConvexPolygon(square(0), false);
   const b = new RAPIER.ConvexPolygon(square(4), false);
-  const target = new RAPIER.ShapeContact(0, { x: 0, y: 0 }, { x: 0, y: 0 }, { x: 0, y: 0 }, { x: 0, y: 0 });
+  const target = new RAPIER.ShapeContact(
+    0,
+    { x: 0, y: 0 },
+    { x: 0, y: 0 },
+    { x: 0, y: 0 },
+    { x: 0, y: 0 },
+  );
   const world = new RAPIER.World({ x: 0, y: 0 });
   const ca = world.createCollider(RAPIER.ColliderDesc.convexHull(square(0)));
   const cb = world.createCollider(RAPIER.ColliderDesc.convexHull(square(4)));
@@ -36,15 +43,27 @@ RAPIER.init().then(() => {
   console.log(`contactShape ${JSON.stringify(one)}`);
   console.log(`contactCollider ${JSON.stringify(two)}`);
   const rows = [
-    ["Shape.contactShape (the adapter's query)", () => a.contactShape(at, 0, b, at, 0, PREDICTION, target)],
-    ["  of which ConvexPolygon.intoRaw() + free(), twice", () => (a.intoRaw().free(), b.intoRaw().free())],
-    ["  of which the 4 RawVector / RawRotation + free()", () => {
-      for (let k = 0; k < 2; ++k) {
-        RAPIER.VectorOps.intoRaw(at).free();
-        RAPIER.RotationOps.intoRaw(0).free();
-      }
-    }],
-    ["Collider.contactCollider (shapes kept in a World)", () => ca.contactCollider(cb, PREDICTION, target)],
+    [
+      "Shape.contactShape (the adapter's query)",
+      () => a.contactShape(at, 0, b, at, 0, PREDICTION, target),
+    ],
+    [
+      "  of which ConvexPolygon.intoRaw() + free(), twice",
+      () => (a.intoRaw().free(), b.intoRaw().free()),
+    ],
+    [
+      "  of which the 4 RawVector / RawRotation + free()",
+      () => {
+        for (let k = 0; k < 2; ++k) {
+          RAPIER.VectorOps.intoRaw(at).free();
+          RAPIER.RotationOps.intoRaw(0).free();
+        }
+      },
+    ],
+    [
+      "Collider.contactCollider (shapes kept in a World)",
+      () => ca.contactCollider(cb, PREDICTION, target),
+    ],
   ];
   for (const [what, f] of rows) console.log(`${median(f).toFixed(0).padStart(7)} ns  ${what}`);
 });

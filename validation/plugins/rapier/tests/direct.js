@@ -26,7 +26,8 @@ function bits(x) {
 
 function build(s) {
   const n = s.points.length;
-  if (n === 1) return { shape: new RAPIER.Ball(s.radius), at: { x: s.points[0][0], y: s.points[0][1] } };
+  if (n === 1)
+    return { shape: new RAPIER.Ball(s.radius), at: { x: s.points[0][0], y: s.points[0][1] } };
   const at = { x: 0, y: 0 };
   if (n === 2) {
     if (s.radius > 0) return null; // the bindings have no rounded segment with free end points
@@ -34,7 +35,10 @@ function build(s) {
     return { shape: new RAPIER.Segment({ x: p[0], y: p[1] }, { x: q[0], y: q[1] }), at };
   }
   const v = new Float32Array(s.points.flat());
-  const shape = s.radius > 0 ? new RAPIER.RoundConvexPolygon(v, s.radius, false) : new RAPIER.ConvexPolygon(v, false);
+  const shape =
+    s.radius > 0
+      ? new RAPIER.RoundConvexPolygon(v, s.radius, false)
+      : new RAPIER.ConvexPolygon(v, false);
   const raw = shape.intoRaw(); // what contactShape builds from it; undefined: Rapier builds none
   if (!raw) return null;
   raw.free();
@@ -63,7 +67,11 @@ RAPIER.init().then(() => {
       out.push(`${c.name} none null`);
       continue;
     }
-    out.push([c.name, r.distance, r.point1.x, r.point1.y, r.point2.x, r.point2.y].map((v, i) => (i ? bits(v) : v)).join(" "));
+    out.push(
+      [c.name, r.distance, r.point1.x, r.point1.y, r.point2.x, r.point2.y]
+        .map((v, i) => (i ? bits(v) : v))
+        .join(" "),
+    );
   }
   process.stdout.write(out.join("\n") + "\n");
 });
