@@ -655,7 +655,7 @@ template <class T>
 
 // Whether `options` are the reference ones: their twelve bytes compared at once, where Options'
 // defaulted == compares member by member, a branch each, at every query (docs/speed.md, "Prepared
-// shapes and the warm path (issue 54)").
+// shapes and the warm path").
 GJK_INLINE bool isReferenceOptions(const Options& options)
 {
     static_assert(std::has_unique_object_representations_v<Options>,
