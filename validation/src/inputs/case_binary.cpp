@@ -4,6 +4,7 @@
 // a copy per column and written from NumPy arrays as they are. docs/case-files.md, "Binary case
 // files", is the reference; docs/speed.md, "Case files", says why this format.
 #include "inputs/case_binary.hpp"
+#include "inputs/case_fields.hpp"
 
 #define MSGPACK_NO_BOOST
 #include <msgpack.hpp>
@@ -15,7 +16,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <set>
 
 namespace gjkval
 {
@@ -329,7 +329,7 @@ class Block
 
     std::size_t size() const { return size_; }
 
-    CaseEntry entry(std::size_t i, const std::string& base, std::set<std::string>& names) const
+    CaseEntry entry(std::size_t i, const std::string& base, NameSet& names) const
     {
         CaseEntry e;
         const std::size_t index = first_ + i;
@@ -346,7 +346,7 @@ class Block
                                        kMaxCaseNameBytes));
             if (hasControl(name))
                 fieldError("name contains a control character or is not valid UTF-8");
-            if (!names.insert(name).second)
+            if (!names.insert(name))
                 fieldError(fmt::format("duplicate case name '{}'", excerpt(name)));
             e.c.name = name;
             e.c.a = shapeAt(a_, i, "a");
@@ -544,7 +544,7 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
     CaseFileSummary summary;
     bool header = false, end = false;
     std::size_t blocks = 0;
-    std::set<std::string> names;
+    NameSet names; // about 6 bytes a case, as the JSON reader keeps them (case_fields.hpp)
     const auto where = [&]
     {
         return header ? fmt::format("in block {} (after case {})", blocks, summary.entries)
