@@ -218,22 +218,6 @@ struct FieldError
     throw FieldError{std::move(message)};
 }
 
-// True when s holds a control character (C0, DEL, C1) or is not valid UTF-8: refused in names, as
-// the JSON reader refuses them.
-bool hasControl(std::string_view s)
-{
-    for (std::size_t i = 0; i < s.size();)
-    {
-        const std::size_t n = utf8SequenceLength(s, i);
-        const unsigned c = static_cast<unsigned char>(s[i]);
-        if (n == 0 || c < 0x20 || c == 0x7F ||
-            (n == 2 && c == 0xC2 && static_cast<unsigned char>(s[i + 1]) < 0xA0))
-            return true;
-        i += n;
-    }
-    return false;
-}
-
 std::string_view strOf(const msgpack::object& o)
 {
     return {o.via.str.ptr, o.via.str.size};
@@ -344,7 +328,7 @@ class Block
             if (name.size() > kMaxCaseNameBytes)
                 fieldError(fmt::format("name is {} bytes long, more than {}", name.size(),
                                        kMaxCaseNameBytes));
-            if (hasControl(name))
+            if (isControl(name)) // case_fields.hpp: as the JSON reader refuses them
                 fieldError("name contains a control character or is not valid UTF-8");
             if (!names.insert(name))
                 fieldError(fmt::format("duplicate case name '{}'", excerpt(name)));

@@ -223,6 +223,8 @@ std::string readText(const RJson& c, const char* key)
     return s;
 }
 
+} // namespace
+
 bool isControl(std::string_view s)
 {
     for (std::size_t i = 0; i < s.size();)
@@ -236,7 +238,6 @@ bool isControl(std::string_view s)
     }
     return false;
 }
-} // namespace
 
 namespace
 {

@@ -20,6 +20,10 @@ using RJson = nlohmann::json; // reading: key order does not matter
 // "an object", "a number", ...: what a JSON value is, as messages name it.
 const char* typeName(const RJson& j);
 
+// True when s holds a control character (C0, DEL, C1) or is not valid UTF-8: what a case name
+// may not hold (names are printed, and looked up by `explain`), in either form of case file.
+bool isControl(std::string_view s);
+
 // The case names of a file seen so far, for the duplicate check, in memory that grows by about
 // 6 bytes a case (a file of any number of cases is read in one process): a name is kept as its
 // 64-bit hash, the top 16 bits choosing one of 65,536 buckets that each hold the other 48 bits
