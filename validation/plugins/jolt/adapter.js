@@ -88,20 +88,20 @@
 // jolt-physics is found through NODE_PATH, which the generated wrapper
 // build/<preset>/validation/plugins/gjk2d-jolt sets (CMakeLists.txt here). The package is an ES
 // module: it is loaded with import() of the file require.resolve finds.
-"use strict";
+'use strict';
 
-const readline = require("readline");
-const path = require("path");
-const fs = require("fs");
-const url = require("url");
+const readline = require('readline');
+const path = require('path');
+const fs = require('fs');
+const url = require('url');
 
-const PACKAGE = path.join(path.dirname(require.resolve("jolt-physics/package.json")));
+const PACKAGE = path.join(path.dirname(require.resolve('jolt-physics/package.json')));
 const PACKAGE_VERSION = JSON.parse(
-  fs.readFileSync(path.join(PACKAGE, "package.json"), "utf8"),
+  fs.readFileSync(path.join(PACKAGE, 'package.json'), 'utf8'),
 ).version;
 // The Jolt Physics release the package builds (JoltPhysics.js CMakeLists.txt, GIT_TAG "v5.6.0").
-const JOLT_VERSION = "5.6.0";
-const IMPL = "jolt-" + PACKAGE_VERSION;
+const JOLT_VERSION = '5.6.0';
+const IMPL = 'jolt-' + PACKAGE_VERSION;
 // The prisms' half height over eA + eB (docs/peers/jolt.md: measured).
 const HEIGHT_FACTOR = 2;
 // mMaxSeparationDistance over U, the upper bound of the distance: room for Jolt's own error, so
@@ -130,13 +130,13 @@ const CONTRACT = [
 class RequestError extends Error {}
 
 function say(line) {
-  process.stdout.write(line + "\n");
+  process.stdout.write(line + '\n');
 }
 
 // A number as the host writes it (fmt "{}": "0.1", "-3", "1e-300", "inf", "-inf", "nan");
 // undefined when it is none.
 function parseNumber(tok) {
-  if (/^[+-]?(inf|infinity)$/i.test(tok)) return tok[0] === "-" ? -Infinity : Infinity;
+  if (/^[+-]?(inf|infinity)$/i.test(tok)) return tok[0] === '-' ? -Infinity : Infinity;
   if (/^[+-]?nan$/i.test(tok)) return NaN;
   if (!/^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/.test(tok)) return undefined;
   return Number(tok);
@@ -152,12 +152,12 @@ function readShape(t, i, letter) {
       throw new RequestError(`shape ${letter}: ${what} "${t[k]}" is not a number`);
     return v;
   };
-  const r = num(i + 1, "radius");
-  const px = num(i + 2, "px");
-  const py = num(i + 3, "py");
-  const c = num(i + 4, "c");
-  const s = num(i + 5, "s");
-  const n = num(i + 6, "n");
+  const r = num(i + 1, 'radius');
+  const px = num(i + 2, 'px');
+  const py = num(i + 3, 'py');
+  const c = num(i + 4, 'c');
+  const s = num(i + 5, 's');
+  const n = num(i + 6, 'n');
   if (!Number.isInteger(n) || n < 0)
     throw new RequestError(`shape ${letter}: n "${t[i + 6]}" is not a count`);
   const points = new Array(n);
@@ -167,8 +167,8 @@ function readShape(t, i, letter) {
 }
 
 function readCase(t, i) {
-  const A = readShape(t, i, "A");
-  const B = readShape(t, A.next, "B");
+  const A = readShape(t, i, 'A');
+  const B = readShape(t, A.next, 'B');
   return { a: A.shape, b: B.shape, next: B.next };
 }
 
@@ -252,7 +252,7 @@ let J = null; // the Jolt module, once loaded
 let unitScale, origin, identity, filter, collector, overlapSettings;
 
 async function loadJolt() {
-  const file = require.resolve("jolt-physics/wasm-compat"); // the wasm inlined: no fetch, no file
+  const file = require.resolve('jolt-physics/wasm-compat'); // the wasm inlined: no fetch, no file
   const mod = await import(url.pathToFileURL(file).href);
   J = await mod.default();
   // CollisionDispatch's table of collide functions is filled by RegisterTypes(), which
@@ -421,7 +421,7 @@ function answerTime(id, t) {
       }
     }
     const total = process.hrtime.bigint() - start;
-    if (sink === 12345.678) process.stderr.write("\n"); // keeps the loop's results alive
+    if (sink === 12345.678) process.stderr.write('\n'); // keeps the loop's results alive
     return say(`timed ${id} ${total} ${prepNs}`);
   } finally {
     for (const p of prepared) if (p && !p.error) release(p);
@@ -430,26 +430,26 @@ function answerTime(id, t) {
 
 function answer(t) {
   const id = t[1];
-  if (!/^[0-9]+$/.test(id || "")) {
-    process.stderr.write(`gjk2d-jolt: request without an id: "${t.join(" ").slice(0, 80)}"\n`);
+  if (!/^[0-9]+$/.test(id || '')) {
+    process.stderr.write(`gjk2d-jolt: request without an id: "${t.join(' ').slice(0, 80)}"\n`);
     return;
   }
   try {
     if (t[2] !== IMPL) return say(`error ${id} unknown implementation "${t[2]}"`);
-    if (t[0] === "distance") {
+    if (t[0] === 'distance') {
       const c = readCase(t, 3);
       if (c.next !== t.length) throw new RequestError(`${t.length - c.next} tokens after shape B`);
       const why = refusal(c);
       if (why) return say(`refused ${id} ${why}`);
       return answerDistance(id, c);
     }
-    if (t[0] === "time") return answerTime(id, t);
+    if (t[0] === 'time') return answerTime(id, t);
     return say(`error ${id} unknown request "${t[0]}"`);
   } catch (e) {
     // Jolt threw (a WebAssembly trap on input it cannot take): the case is an error, the stream
     // goes on.
     const what = e instanceof RequestError ? e.message : `Jolt threw ${e.name}: ${e.message}`;
-    return say(`error ${id} ${String(what).replace(/\s+/g, " ")}`);
+    return say(`error ${id} ${String(what).replace(/\s+/g, ' ')}`);
   }
 }
 
@@ -458,17 +458,17 @@ const ready = loadJolt();
 let handshaken = false;
 let queue = Promise.resolve();
 const rl = readline.createInterface({ input: process.stdin, crlfDelay: Infinity, terminal: false });
-rl.on("line", (line) => {
+rl.on('line', (line) => {
   queue = queue
     .then(() => ready)
     .then(() => {
       const t = line.trim().split(/ +/);
-      if (t.length === 1 && t[0] === "") return;
+      if (t.length === 1 && t[0] === '') return;
       if (!handshaken) {
         // We speak version 2 whatever the host asks: the host judges a mismatch (the protocol's rule).
-        if (t[0] !== "gjk2d-adapter")
+        if (t[0] !== 'gjk2d-adapter')
           process.stderr.write(`gjk2d-jolt: expected the handshake, got "${line.slice(0, 80)}"\n`);
-        say("gjk2d-adapter 2");
+        say('gjk2d-adapter 2');
         say(`library Jolt Physics ${JOLT_VERSION} (jolt-physics ${PACKAGE_VERSION}, WebAssembly)`);
         say(
           `implementation ${IMPL} float no-radius 128 Jolt Physics ${JOLT_VERSION} TransformedShape::CollideShape of two prisms (ConvexHullShape, mMaxConvexRadius 0, mHullTolerance 0), mMaxSeparationDistance above the distance, closest hit`,
@@ -476,7 +476,7 @@ rl.on("line", (line) => {
         say(INPUT);
         CONTRACT.forEach(say);
         say(`prepared ${IMPL} case`);
-        say("ready");
+        say('ready');
         handshaken = true;
         return;
       }

@@ -32,19 +32,19 @@
 //
 // planck is found by require("planck") through NODE_PATH, which the generated wrapper
 // build/<preset>/validation/plugins/gjk2d-planck sets (CMakeLists.txt here).
-"use strict";
+'use strict';
 
-const planck = require("planck");
-const readline = require("readline");
+const planck = require('planck');
+const readline = require('readline');
 
 // planck's exports map hides "planck/package.json": read it beside dist/planck.js.
 const VERSION = JSON.parse(
-  require("fs").readFileSync(
-    require("path").join(require.resolve("planck"), "..", "..", "package.json"),
-    "utf8",
+  require('fs').readFileSync(
+    require('path').join(require.resolve('planck'), '..', '..', 'package.json'),
+    'utf8',
   ),
 ).version;
-const IMPL = "planck-" + VERSION;
+const IMPL = 'planck-' + VERSION;
 // What planck promises (the header comment): the handshake's `contract` lines, protocol version 2.
 const CONTRACT = [
   `contract ${IMPL} overlap midpoint src/collision/Distance.ts:211-217 (useRadii: "Shapes are overlapped when ` +
@@ -57,13 +57,13 @@ const CONTRACT = [
 class RequestError extends Error {}
 
 function say(line) {
-  process.stdout.write(line + "\n");
+  process.stdout.write(line + '\n');
 }
 
 // A number as the host writes it (fmt "{}": "0.1", "-3", "1e-300", "inf", "-inf", "nan");
 // undefined when it is none.
 function parseNumber(tok) {
-  if (/^[+-]?(inf|infinity)$/i.test(tok)) return tok[0] === "-" ? -Infinity : Infinity;
+  if (/^[+-]?(inf|infinity)$/i.test(tok)) return tok[0] === '-' ? -Infinity : Infinity;
   if (/^[+-]?nan$/i.test(tok)) return NaN;
   if (!/^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/.test(tok)) return undefined;
   return Number(tok);
@@ -80,12 +80,12 @@ function readShape(t, i, letter) {
       throw new RequestError(`shape ${letter}: ${what} "${t[k]}" is not a number`);
     return v;
   };
-  const r = num(i + 1, "radius");
-  const px = num(i + 2, "px");
-  const py = num(i + 3, "py");
-  const c = num(i + 4, "c");
-  const s = num(i + 5, "s");
-  const n = num(i + 6, "n");
+  const r = num(i + 1, 'radius');
+  const px = num(i + 2, 'px');
+  const py = num(i + 3, 'py');
+  const c = num(i + 4, 'c');
+  const s = num(i + 5, 's');
+  const n = num(i + 6, 'n');
   if (!Number.isInteger(n) || n < 0)
     throw new RequestError(`shape ${letter}: n "${t[i + 6]}" is not a count`);
   const vertices = new Array(n);
@@ -97,8 +97,8 @@ function readShape(t, i, letter) {
 
 // "A ... B ..." from index i: {a, b, next}.
 function readCase(t, i) {
-  const A = readShape(t, i, "A");
-  const B = readShape(t, A.next, "B");
+  const A = readShape(t, i, 'A');
+  const B = readShape(t, A.next, 'B');
   return { a: A.shape, b: B.shape, next: B.next };
 }
 
@@ -125,19 +125,19 @@ function query(proxyA, xfA, proxyB, xfB) {
 }
 
 function refusal(c) {
-  if (c.a.vertices.length < 1 || c.b.vertices.length < 1) return "a shape without points";
+  if (c.a.vertices.length < 1 || c.b.vertices.length < 1) return 'a shape without points';
   return null;
 }
 
 function answer(t) {
   const id = t[1];
-  if (!/^[0-9]+$/.test(id || "")) {
-    process.stderr.write(`gjk2d-planck: request without an id: "${t.join(" ").slice(0, 80)}"\n`);
+  if (!/^[0-9]+$/.test(id || '')) {
+    process.stderr.write(`gjk2d-planck: request without an id: "${t.join(' ').slice(0, 80)}"\n`);
     return;
   }
   try {
     if (t[2] !== IMPL) return say(`error ${id} unknown implementation "${t[2]}"`);
-    if (t[0] === "distance") {
+    if (t[0] === 'distance') {
       const c = readCase(t, 3);
       if (c.next !== t.length) throw new RequestError(`${t.length - c.next} tokens after shape B`);
       const why = refusal(c);
@@ -147,7 +147,7 @@ function answer(t) {
         `ok ${id} ${o.distance} ${o.pointA.x} ${o.pointA.y} ${o.pointB.x} ${o.pointB.y} ${o.iterations}`,
       );
     }
-    if (t[0] === "time") {
+    if (t[0] === 'time') {
       const K = Number(t[3]);
       const m = Number(t[4]);
       if (!Number.isInteger(K) || K < 1 || !Number.isInteger(m) || m < 1)
@@ -177,34 +177,34 @@ function answer(t) {
           sink += query(proxiesA[k], cases[k].a.xf, proxiesB[k], cases[k].b.xf).distance;
       }
       const total = process.hrtime.bigint() - start;
-      if (sink === -1) process.stderr.write("\n"); // keeps the loop's results alive
+      if (sink === -1) process.stderr.write('\n'); // keeps the loop's results alive
       return say(`timed ${id} ${total} ${prepared}`);
     }
     return say(`error ${id} unknown request "${t[0]}"`);
   } catch (e) {
     // planck threw (e.g. a TypeError on NaN input): the case is an error, the stream goes on.
     const what = e instanceof RequestError ? e.message : `planck threw ${e.name}: ${e.message}`;
-    return say(`error ${id} ${String(what).replace(/\s+/g, " ")}`);
+    return say(`error ${id} ${String(what).replace(/\s+/g, ' ')}`);
   }
 }
 
 let handshaken = false;
 const rl = readline.createInterface({ input: process.stdin, crlfDelay: Infinity, terminal: false });
-rl.on("line", (line) => {
+rl.on('line', (line) => {
   const t = line.trim().split(/ +/);
-  if (t.length === 1 && t[0] === "") return;
+  if (t.length === 1 && t[0] === '') return;
   if (!handshaken) {
     // We speak version 2 whatever the host asks: the host judges a mismatch (the protocol's rule).
-    if (t[0] !== "gjk2d-adapter")
+    if (t[0] !== 'gjk2d-adapter')
       process.stderr.write(`gjk2d-planck: expected the handshake, got "${line.slice(0, 80)}"\n`);
-    say("gjk2d-adapter 2");
+    say('gjk2d-adapter 2');
     say(`library planck.js ${VERSION}`);
     say(
       `implementation ${IMPL} double radius 0 planck.js ${VERSION} Distance (DistanceProxy.setVertices), cold SimplexCache, useRadii`,
     );
     CONTRACT.forEach(say);
     say(`prepared ${IMPL} shape`);
-    say("ready");
+    say('ready');
     handshaken = true;
     return;
   }

@@ -3,9 +3,9 @@
 // squares 3 apart (world points, angle 0), as the adapter's time request builds them; each figure
 // the median of 5 runs of N calls after 2000 warm-up calls.
 //   NODE_PATH=build/npm/rapier/node_modules node validation/plugins/rapier/tests/bench_direct.js
-"use strict";
+'use strict';
 
-const RAPIER = require("@dimforge/rapier2d-compat");
+const RAPIER = require('@dimforge/rapier2d-compat');
 
 const PREDICTION = 3.4028234663852886e38;
 const N = 20000;
@@ -48,11 +48,11 @@ RAPIER.init().then(() => {
       () => a.contactShape(at, 0, b, at, 0, PREDICTION, target),
     ],
     [
-      "  of which ConvexPolygon.intoRaw() + free(), twice",
+      '  of which ConvexPolygon.intoRaw() + free(), twice',
       () => (a.intoRaw().free(), b.intoRaw().free()),
     ],
     [
-      "  of which the 4 RawVector / RawRotation + free()",
+      '  of which the 4 RawVector / RawRotation + free()',
       () => {
         for (let k = 0; k < 2; ++k) {
           RAPIER.VectorOps.intoRaw(at).free();
@@ -61,7 +61,7 @@ RAPIER.init().then(() => {
       },
     ],
     [
-      "Collider.contactCollider (shapes kept in a World)",
+      'Collider.contactCollider (shapes kept in a World)',
       () => ca.contactCollider(cb, PREDICTION, target),
     ],
   ];

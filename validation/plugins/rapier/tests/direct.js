@@ -11,17 +11,17 @@
 // points a Segment; each at angle 0; shapeA.contactShape(posA, 0, shapeB, posB, 0, prediction)
 // with the f32 maximum as prediction.
 //   NODE_PATH=build/npm/rapier/node_modules node direct.js cases.json
-"use strict";
+'use strict';
 
-const fs = require("fs");
-const RAPIER = require("@dimforge/rapier2d-compat");
+const fs = require('fs');
+const RAPIER = require('@dimforge/rapier2d-compat');
 
 const PREDICTION = 3.4028234663852886e38; // f32::MAX
 
 function bits(x) {
   const view = new DataView(new ArrayBuffer(8));
   view.setFloat64(0, x);
-  return view.getBigUint64(0).toString(16).padStart(16, "0");
+  return view.getBigUint64(0).toString(16).padStart(16, '0');
 }
 
 function build(s) {
@@ -46,7 +46,7 @@ function build(s) {
 }
 
 RAPIER.init().then(() => {
-  const { cases } = JSON.parse(fs.readFileSync(process.argv[2], "utf8"));
+  const { cases } = JSON.parse(fs.readFileSync(process.argv[2], 'utf8'));
   const out = [];
   for (const c of cases) {
     let a, b, r;
@@ -56,7 +56,7 @@ RAPIER.init().then(() => {
       if (a && b) r = a.shape.contactShape(a.at, 0, b.shape, b.at, 0, PREDICTION);
     } catch (e) {
       // Rapier threw: a WebAssembly trap (a Rust panic), e.g. in its convex hull.
-      out.push(`${c.name} none threw ${e.name}: ${e.message}`.replace(/\s+/g, " "));
+      out.push(`${c.name} none threw ${e.name}: ${e.message}`.replace(/\s+/g, ' '));
       continue;
     }
     if (!a || !b) {
@@ -70,8 +70,8 @@ RAPIER.init().then(() => {
     out.push(
       [c.name, r.distance, r.point1.x, r.point1.y, r.point2.x, r.point2.y]
         .map((v, i) => (i ? bits(v) : v))
-        .join(" "),
+        .join(' '),
     );
   }
-  process.stdout.write(out.join("\n") + "\n");
+  process.stdout.write(out.join('\n') + '\n');
 });
