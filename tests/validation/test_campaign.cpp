@@ -409,6 +409,81 @@ TEST_CASE("rejected cases are reported and the other cases still run", "[campaig
     CHECK(rejectedLine["rejected"] == "a.points[1][0] is NaN");
 }
 
+// The message of the whole-file reader (readCaseFile) on `path`, or "" when it reads it.
+std::string wholeReadMessage(const std::string& path)
+{
+    try
+    {
+        readCaseFile(path);
+        return "";
+    }
+    catch (const InputError& e)
+    {
+        return e.what();
+    }
+}
+
+TEST_CASE("a case file is read once: refused up front when cut short, else where its fault is met",
+          "[campaign][files]")
+{
+    const std::string dir = tmpDir("read-once");
+    std::filesystem::create_directories(dir);
+    const std::vector<Case> cases = collectInputs({"random:30"}, {}, 7)[0].cases;
+    const std::string text = caseFileText({"thirty random cases"}, cases);
+    const auto file = [&](const std::string& name, const std::string& body)
+    {
+        std::ofstream(dir + "/" + name, std::ios::binary) << body;
+        return dir + "/" + name;
+    };
+    CampaignConfig c = smallConfig(2);
+    c.families = {};
+    c.perCase = false;
+    c.timing = false;
+
+    // A good file: only its start is read up front; its count and comment are known at its end.
+    c.caseFiles = {file("good.json", text)};
+    std::vector<CampaignInput> in = campaignInputs(c);
+    REQUIRE(in.size() == 1);
+    CHECK_FALSE(in[0].counted);
+    const Run good = run(c);
+    CHECK(good.exitCode == kExitPass);
+    CHECK(good.report["families"][0]["cases"] == 30);
+    CHECK(good.report["context"]["inputs"][0]["count"] == 30);
+    CHECK(good.report["context"]["cases_total"] == 30);
+    // merge reads the whole file up front (it streams nothing).
+    in = campaignInputs(c, FileCheck::Whole);
+    CHECK(in[0].counted);
+    CHECK(in[0].count == 30);
+    CHECK(in[0].reason == "thirty random cases");
+
+    // JSON broken after the 20th case: met as the file streams, with the whole reader's message.
+    std::string broken = text;
+    std::size_t at = 0;
+    for (int line = 0; line < 22; ++line) // the header's two lines, then 20 cases
+        at = broken.find('\n', at) + 1;
+    broken.insert(at, "@");
+    c.caseFiles = {file("broken.json", broken)};
+    const std::string brokenMessage = wholeReadMessage(c.caseFiles[0]);
+    REQUIRE_THAT(brokenMessage, Catch::Contains("broken.json:23:"));
+    in = campaignInputs(c); // its start is a case file's
+    CHECK_FALSE(in[0].counted);
+    CHECK_THROWS_WITH(run(c), brokenMessage);
+
+    // Cut short: refused up front, before any work, with the same message.
+    c.caseFiles = {file("short.json", text.substr(0, text.size() / 2))};
+    const std::string shortMessage = wholeReadMessage(c.caseFiles[0]);
+    REQUIRE_FALSE(shortMessage.empty());
+    CHECK_THROWS_WITH(campaignInputs(c), shortMessage);
+
+    // Not a case file at its start: refused up front.
+    c.caseFiles = {file("other.json", "{\"format\": \"gjk-cases/0\", \"cases\": [" +
+                                          text.substr(text.find("{\"name\""))) };
+    const std::string otherMessage = wholeReadMessage(c.caseFiles[0]);
+    REQUIRE_THAT(otherMessage, Catch::Contains("not a gjk-cases/1 file"));
+    in = campaignInputs(c); // "format" is checked at the end of the file
+    CHECK_THROWS_WITH(run(c), otherMessage);
+}
+
 TEST_CASE("failures beyond the bound give exit code 1", "[campaign]")
 {
     // The regression file: the naive closest-point direction misses by ~1e-9 on near-parallel

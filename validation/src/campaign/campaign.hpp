@@ -71,7 +71,8 @@ std::vector<std::string> defaultCaseFiles();
 void setDefaultCaseDir(std::string dir);
 
 // The campaign's inputs (inputs/sources.hpp). Throws InputError (exit code 2).
-std::vector<CampaignInput> campaignInputs(const CampaignConfig& config);
+std::vector<CampaignInput> campaignInputs(const CampaignConfig& config,
+                                          FileCheck check = FileCheck::Start);
 
 // A campaign's report (report/pages.hpp writes it) and its exit code.
 struct Campaign : CampaignReport

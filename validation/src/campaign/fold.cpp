@@ -70,9 +70,9 @@ std::vector<std::string> defaultCaseFiles()
     return files;
 }
 
-std::vector<CampaignInput> campaignInputs(const CampaignConfig& config)
+std::vector<CampaignInput> campaignInputs(const CampaignConfig& config, FileCheck check)
 {
-    return campaignInputs(config.families, config.caseFiles, config.seed);
+    return campaignInputs(config.families, config.caseFiles, config.seed, check);
 }
 
 EvalContext evalContext(const CampaignConfig& config)
@@ -277,6 +277,8 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
         {
             unsent.inputs += elapsed(t, Clock::now());
             const std::size_t j = chunk.first / chunkCases;
+            if (!r.input->counted) // a case file counted as it is read
+                progress.grow(chunk.size());
             progress.add(chunk.first - seen); // the chunks left out before it
             seen = chunk.first + chunk.size();
             if (skip(j)) // a case file passes every chunk
@@ -303,7 +305,13 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
             t = Clock::now();
         },
         skip, threads);
-    progress.add(r.input->count - std::min(seen, r.input->count));
+    CampaignInput& in = state.inputs[inputIndex];
+    if (!in.counted) // its end reached: its count and comments known
+    {
+        settleFileInput(in);
+        in.counted = true;
+    }
+    progress.add(in.count - std::min(seen, in.count));
     unsent.inputs += elapsed(t, Clock::now());
 }
 

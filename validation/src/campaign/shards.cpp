@@ -266,7 +266,8 @@ Campaign mergeShards(const std::vector<Json>& shards, const std::vector<std::str
     CampaignConfig config = configOf(shards[0].at("campaign"), base);
     const EvalContext ctx = evalContext(config);
     CampaignState state;
-    state.inputs = campaignInputs(config); // not resized below: families point into it
+    // Read whole: merge streams nothing, and needs each case file's count and comments.
+    state.inputs = campaignInputs(config, FileCheck::Whole); // not resized: families point into it
     for (const auto& in : state.inputs)
         state.families.push_back(emptyResult(in, config, ctx));
     for (const auto& shard : shards)

@@ -56,7 +56,8 @@ inline constexpr ExitCodeInfo kExitCodeTable[] = {
                  "for this machine's memory, "
                  "a plugin that cannot be used (missing, not loadable, another ABI version, a bad "
                  "description, given twice) "
-                 "(all detected before any work starts); also rejected "
+                 "(all detected before any work starts, but for a case file's fault past its "
+                 "first entry, met as it streams: docs/case-files.md, \"Limits\"); also rejected "
                  "cases (the report is still written, the other cases still run)."},
     {kExitSetup, "used only by scripts/setup.sh: missing Debian packages and not root."},
     {kExitInternal, "internal error: a broken invariant of gjk2d itself (std::logic_error or any "

@@ -49,6 +49,8 @@ class Progress
         std::fputc('\n', stderr);
     }
     void add(std::size_t n) { done_ += n; }
+    // More to do than the total said: an input counted as it is read.
+    void grow(std::size_t n) { total_ += n; }
 
   private:
     void loop()
@@ -59,17 +61,18 @@ class Progress
     }
     void draw()
     {
-        const std::size_t d = std::min(done_.load(), total_);
+        const std::size_t total = total_.load();
+        const std::size_t d = std::min(done_.load(), total);
         const int width = 40;
-        const int fill = total_ ? int(double(d) / double(total_) * width) : width;
+        const int fill = total ? int(double(d) / double(total) * width) : width;
         std::fprintf(stderr, "\r%-8s [%s%s] %zu/%zu", label_.c_str(),
                      std::string(std::size_t(fill), '#').c_str(),
-                     std::string(std::size_t(width - fill), ' ').c_str(), d, total_);
+                     std::string(std::size_t(width - fill), ' ').c_str(), d, total);
         std::fflush(stderr);
     }
     bool enabled_;
     std::string label_;
-    std::size_t total_;
+    std::atomic<std::size_t> total_;
     std::atomic<std::size_t> done_{0};
     std::thread thread_;
     std::mutex m_;

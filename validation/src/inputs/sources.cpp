@@ -3,12 +3,15 @@
 // (for the commands that hold their cases).
 #include "inputs/sources.hpp"
 
+#include "inputs/case_binary.hpp"
+
 #include "common/parallel.hpp"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <memory>
 #include <set>
@@ -96,35 +99,75 @@ void chunked(const std::function<void(const std::function<void(CaseEntry&&)>&)>&
         consume(chunk);
 }
 
+// Thrown by the consumer of a check that stops at the first entry.
+struct FirstEntryReached
+{
+};
+
+// True when the JSON file at `path` (a regular file, or a pipe's copy) ends with its closing brace, white space
+// after it aside: a file cut short does not.
+bool endsWithBrace(const std::string& path)
+{
+    std::ifstream f(path, std::ios::binary);
+    f.seekg(0, std::ios::end);
+    const std::streamoff size = f.tellg();
+    std::string tail(std::size_t(std::min<std::streamoff>(size, 4096)), '\0');
+    f.seekg(size - std::streamoff(tail.size()));
+    f.read(tail.data(), std::streamsize(tail.size()));
+    const std::size_t last = tail.find_last_not_of(" \t\r\n");
+    return f && last != std::string::npos && tail[last] == '}';
+}
+
+// Reads the file up to its first entry: InputError when it does not open as a case file. True
+// when that read ended the file (no entry): what it found is then the whole file's.
+bool readToFirstEntry(const std::string& readPath, const std::string& path,
+                      CaseFileSummary& summary)
+{
+    try
+    {
+        summary = streamCaseFile(readPath, path, [](CaseEntry&&) { throw FirstEntryReached(); });
+        return true;
+    }
+    catch (const FirstEntryReached&)
+    {
+        return false;
+    }
+}
+
 // hold: the caller keeps every case anyway (collectInputs), so the file is read once, whole.
-CampaignInput fileInput(const std::string& path, std::string name, bool hold)
+CampaignInput fileInput(const std::string& path, std::string name, bool hold, FileCheck check)
 {
     CampaignInput in;
     in.name = std::move(name);
     in.source = "file";
-    // Read once up front: a file that is not a case file is refused before any work.
+    in.read = std::make_shared<CaseFileSummary>();
+    in.input = {{"file", path}, {"count", 0}};
     std::shared_ptr<CaseFile> whole;
     std::shared_ptr<PipeCopy> copy; // a pipe cannot be read twice: its copy is
-    CaseFileSummary summary;
     std::error_code ec;
     if (hold)
     {
         whole = std::make_shared<CaseFile>(readCaseFile(path));
-        summary.comments = whole->comments;
-        summary.entries = whole->entries.size();
+        in.read->comments = whole->comments;
+        in.read->entries = whole->entries.size();
     }
     else
     {
-        if (fs::status(path, ec).type() == fs::file_type::fifo)
+        const bool pipe = fs::status(path, ec).type() == fs::file_type::fifo;
+        if (pipe)
             copy = std::make_shared<PipeCopy>(path);
-        summary = streamCaseFile(copy ? copy->path() : path, path, [](CaseEntry&&) {});
+        const std::string readPath = copy ? copy->path() : path;
+        const bool cutShort = !isBinaryCaseFile(readPath) && !endsWithBrace(readPath);
+        in.counted = check == FileCheck::Whole || cutShort ||
+                     readToFirstEntry(readPath, path, *in.read);
+        if (in.counted && (check == FileCheck::Whole || cutShort))
+            *in.read = streamCaseFile(readPath, path, [](CaseEntry&&) {});
     }
-    in.reason = summary.comments.empty() ? "cases from " + path : summary.comments.front();
-    in.count = summary.entries;
-    in.input = {{"file", path}, {"count", summary.entries}};
-    in.stream = [path, whole, copy](std::size_t chunkCases,
-                                    const std::function<void(CaseChunk&)>& consume,
-                                    const CampaignInput::SkipChunk&, int) // in order, on one thread
+    settleFileInput(in);
+    in.stream = [path, whole, copy, read = in.read](std::size_t chunkCases,
+                                                    const std::function<void(CaseChunk&)>& consume,
+                                                    const CampaignInput::SkipChunk&,
+                                                    int) // in order, on one thread
     {
         chunked(
             [&](const std::function<void(CaseEntry &&)>& each)
@@ -133,7 +176,7 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
                     for (auto e : whole->entries)
                         each(std::move(e));
                 else
-                    streamCaseFile(copy ? copy->path() : path, path, each);
+                    *read = streamCaseFile(copy ? copy->path() : path, path, each);
             },
             chunkCases, consume);
     };
@@ -142,7 +185,7 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold)
 
 std::vector<CampaignInput> inputsOf(const std::vector<std::string>& familySpecs,
                                     const std::vector<std::string>& caseFiles, std::uint64_t seed,
-                                    bool holdFiles)
+                                    bool holdFiles, FileCheck check)
 {
     std::vector<CampaignInput> out;
     std::set<std::string> names;
@@ -162,7 +205,7 @@ std::vector<CampaignInput> inputsOf(const std::vector<std::string>& familySpecs,
             if (!names.insert(name).second)
                 throw InputError(fmt::format("case file '{}' is given twice", path));
         }
-        out.push_back(fileInput(path, std::move(name), holdFiles));
+        out.push_back(fileInput(path, std::move(name), holdFiles, check));
     }
     return out;
 }
@@ -170,16 +213,24 @@ std::vector<CampaignInput> inputsOf(const std::vector<std::string>& familySpecs,
 
 std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& familySpecs,
                                           const std::vector<std::string>& caseFiles,
-                                          std::uint64_t seed)
+                                          std::uint64_t seed, FileCheck check)
 {
-    return inputsOf(familySpecs, caseFiles, seed, false);
+    return inputsOf(familySpecs, caseFiles, seed, false, check);
+}
+
+void settleFileInput(CampaignInput& in)
+{
+    const std::string path = in.input.at("file").get<std::string>();
+    in.count = in.read->entries;
+    in.reason = in.read->comments.empty() ? "cases from " + path : in.read->comments.front();
+    in.input["count"] = in.count;
 }
 
 std::vector<FamilyData> collectInputs(const std::vector<std::string>& familySpecs,
                                       const std::vector<std::string>& caseFiles, std::uint64_t seed)
 {
     std::vector<FamilyData> out;
-    for (auto& in : inputsOf(familySpecs, caseFiles, seed, true))
+    for (auto& in : inputsOf(familySpecs, caseFiles, seed, true, FileCheck::Whole))
     {
         FamilyData f{in.name, in.reason, in.source, in.input, {}, {}, {}, in.makeup, in.seed};
         in.stream(

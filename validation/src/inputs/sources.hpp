@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ struct CampaignInput
     std::uint64_t seed = 0;
     std::vector<MakeupSpec> makeup;
     std::size_t count = 0;
+    // A case file's count, comments (the reason) and its entry in context.inputs are known once
+    // it has been read to its end: up front (FileCheck::Whole), else when its stream ends, and
+    // settleFileInput then sets them from `read`. Null for a generated family.
+    std::shared_ptr<CaseFileSummary> read;
+    bool counted = true; // false for a case file until its stream has ended
     // Calls consume(chunk) for every chunk of at most chunkCases cases, in case order. Chunk j
     // (cases j*chunkCases ..) may be left out, neither made nor passed on, when skip(j) is true
     // (a shard's, a resumed run's): generated families do so, case files pass every chunk. A
@@ -46,12 +52,29 @@ struct CampaignInput
         stream;
 };
 
-// The inputs of a campaign, in order: the families of each spec, then the case files. A case file
-// is read once here, to refuse it whole (InputError: not JSON, not gjk-cases/1) before any case
-// is evaluated, and once more as it is streamed. Throws InputError (a family or file given twice).
+// How much of a case file is read before the campaign starts:
+// - Start: its beginning, up to its first entry. A file that does not open as a case file (not
+//   JSON, not the binary form, its first entry not reached) is still refused before any work, and
+//   so is a JSON file that does not end with its closing brace (a file cut short: it is then read
+//   whole up front, for the message). A fault further in (JSON broken mid-file, a wrong "format"
+//   after "cases") stops the campaign when the stream reaches it, with the same message and exit
+//   code, and no report. Each file is read once.
+// - Whole: the whole file, once up front and once more as it is streamed (merge, which streams
+//   nothing, reads it for its count and comments).
+enum class FileCheck
+{
+    Start,
+    Whole
+};
+
+// The inputs of a campaign, in order: the families of each spec, then the case files, checked as
+// `check` says. Throws InputError (a family or file given twice, a file refused).
 std::vector<CampaignInput> campaignInputs(const std::vector<std::string>& familySpecs,
                                           const std::vector<std::string>& caseFiles,
-                                          std::uint64_t seed);
+                                          std::uint64_t seed, FileCheck check = FileCheck::Start);
+
+// A case file's count, reason and context entry, from what its read found (in.read).
+void settleFileInput(CampaignInput& in);
 
 // An input held whole, for the commands that need every case at once (bench, search); a case
 // file is read once.
