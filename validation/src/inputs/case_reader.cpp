@@ -20,8 +20,10 @@
 #include <unistd.h>
 
 #include <array>
+#include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -487,7 +489,7 @@ class CaseStream
         if (tail[0] == '"')
             after = tail.find('"', 1) + 1;
         else
-            while (after < tail.size() && std::strchr("0123456789.eE+-", tail[after]) != nullptr)
+            while (after < tail.size() && isNumberChar(tail[after]))
                 ++after;
         placeholder_.clear();
         for (std::size_t i = tail.size(); i-- > after;)
@@ -524,34 +526,34 @@ class CaseStream
     // the fast path leaves it to the SAX path: unbalanced before the input ends, larger than
     // kMaxFastCaseBytes, with a control character outside JSON's white space, or with a string
     // the scan does not vouch for (an escape, a control character or a byte above 0x7F: simdjson
-    // and nlohmann might differ on it).
+    // and nlohmann might differ on it). Bytes that need no look (digits, commas, letters of a
+    // string) are passed sixteen at a time (skipPlain); each other byte is looked at alone.
     bool scan()
     {
         skipped_ = SkippedCase();
         std::size_t depth = 0;
-        std::size_t i = 0;
-        const auto more = [&] // false when the case cannot be completed from here
-        { return !(i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_); };
-        for (;; ++i)
+        bool inString = false;
+        for (std::size_t i = 0;; ++i)
         {
-            if (begin_ + i == end_ && !more())
-                return false;
-            auto c = static_cast<unsigned char>(buf_[begin_ + i]);
+            i = skipPlain(i, inString);
+            if (begin_ + i == end_ &&
+                (i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_))
+                return false; // the case cannot be completed from here
+            const auto c = static_cast<unsigned char>(buf_[begin_ + i]);
+            if (inString)
+            {
+                if (c == '"')
+                    inString = false;
+                else if (c == '\\' || c < 0x20 || c >= 0x80)
+                    return false;
+                continue;
+            }
             if (kOutside[c] == 0)
                 continue;
             switch (c)
             {
-            case '"': // to the closing quote, each byte checked
-                for (++i;; ++i)
-                {
-                    if (begin_ + i == end_ && !more())
-                        return false;
-                    c = static_cast<unsigned char>(buf_[begin_ + i]);
-                    if (c == '"')
-                        break;
-                    if (c == '\\' || c < 0x20 || c >= 0x80)
-                        return false;
-                }
+            case '"':
+                inString = true;
                 break;
             case '{':
             case '[':
@@ -588,13 +590,61 @@ class CaseStream
         return t;
     }();
 
+    // The offset, from i on, of the first byte the scan must look at (in a string: a quote, a
+    // backslash, a control character or a byte above 0x7F; outside: those of kOutside, and tabs
+    // and carriage returns), or of the first of the last fifteen bytes in the buffer (the scan
+    // looks at those one by one). Sixteen bytes at a time, with GCC's vector extensions.
+    std::size_t skipPlain(std::size_t i, bool inString) const
+    {
+        using Bytes = unsigned char __attribute__((vector_size(16)));
+        const Bytes quote = Bytes{} + '"', ctl = Bytes{} + 0x20, printable = Bytes{} + 0x60;
+        while (begin_ + i + 16 <= end_)
+        {
+            Bytes v;
+            std::memcpy(&v, buf_.data() + begin_ + i, 16);
+            // (c - 0x20) mod 256 >= 0x60: c below 0x20 or above 0x7F.
+            auto marked = (v - ctl) >= printable;
+            if (inString)
+                marked |= v == quote || v == Bytes{} + '\\';
+            else
+            {
+                // c | 0x20 maps '"' (and 0x02) to 0x22, '[' and '{' to 0x7B, ']' and '}' to 0x7D.
+                const Bytes folded = v | ctl;
+                marked |= folded == quote || folded == Bytes{} + '{' || folded == Bytes{} + '}';
+            }
+            std::uint64_t half[2];
+            std::memcpy(half, &marked, 16);
+            if (half[0] != 0)
+                return i + firstMarked(half[0]);
+            if (half[1] != 0)
+                return i + 8 + firstMarked(half[1]);
+            i += 16;
+        }
+        return i;
+    }
+
+    // The first marked byte (all bits set) of eight bytes read as a word.
+    static std::size_t firstMarked(std::uint64_t marks)
+    {
+        if constexpr (std::endian::native == std::endian::little)
+            return std::size_t(std::countr_zero(marks)) / 8;
+        else
+            return std::size_t(std::countl_zero(marks)) / 8;
+    }
+
+    static bool isNumberChar(char c)
+    {
+        return (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+    }
+
     // Where the last string or number of the case just scanned begins: after it come only white
     // space and closing brackets (a case the fast path accepts has no true, false or null).
     std::size_t lastTokenStart() const
     {
         const char* p = buf_.data() + begin_;
         std::size_t i = skipped_.bytes;
-        while (i > 0 && std::strchr("}] \t\r\n", p[i - 1]) != nullptr)
+        while (i > 0 && (p[i - 1] == '}' || p[i - 1] == ']' || p[i - 1] == ' ' ||
+                         p[i - 1] == '\t' || p[i - 1] == '\r' || p[i - 1] == '\n'))
             --i;
         if (i == 0)
             return 0;
@@ -605,7 +655,7 @@ class CaseStream
                 --i;
             return i > 0 ? i - 1 : 0;
         }
-        while (i > 0 && std::strchr("0123456789.eE+-", p[i - 1]) != nullptr)
+        while (i > 0 && isNumberChar(p[i - 1]))
             --i;
         return i;
     }
