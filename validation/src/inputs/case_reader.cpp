@@ -402,11 +402,15 @@ class FastCaseParser
 // (takeFastCase). The placeholder is valid JSON ending as the case ends, from the case's last
 // string or number on (`{"":{"":[[1]]}}` for a case ending `1]]}}`): nlohmann quotes the
 // characters from there on as "last read" in a message about what follows the case. A refused
-// case is read by the SAX parser as it is.
+// case is read by the SAX parser as it is. Where a comma and another case the fast path accepts
+// follow a case it accepted, the first is handed to the handler at once (`direct`) and the SAX
+// parser never sees it: only the last case of such a run becomes a placeholder, so every message
+// about what follows stays the same.
 class CaseStream
 {
   public:
-    CaseStream(ByteInput& in, std::string shown) : in_(in), shown_(std::move(shown))
+    CaseStream(ByteInput& in, std::string shown, std::function<void(Case&&)> direct)
+        : in_(in), shown_(std::move(shown)), direct_(std::move(direct))
     {
         buf_.resize(std::size_t(1) << 20);
     }
@@ -476,8 +480,54 @@ class CaseStream
             buf_[begin_] != '{')
             return;
         expect_ = Expect::Nothing;
-        if (scan() && parser_.parse(buf_.data() + begin_, skipped_.bytes, fast_))
-            makePlaceholder();
+        if (!scan(0, true) || !parser_.parse(buf_.data() + begin_, skipped_.bytes, fast_))
+            return;
+        while (nextFastCase())
+        {
+        }
+        makePlaceholder();
+    }
+
+    // With the case at begin_ read (skipped_, fast_): when white space, a comma, white space and
+    // another case the fast path reads follow it, all in the buffer already, hands the first case
+    // to the handler, passes it and what follows it up to the second, and returns true with the
+    // second read in its place. Otherwise leaves everything as it was. Nothing more is read from
+    // the input here: a case that arrived is handed on before the next one does (a pipe).
+    bool nextFastCase()
+    {
+        const auto white = [&](std::size_t& i) // to the next other byte; false at the end
+        {
+            for (; begin_ + i < end_; ++i)
+            {
+                const char c = buf_[begin_ + i];
+                if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
+                    return true;
+            }
+            return false;
+        };
+        std::size_t from = skipped_.bytes;
+        if (!white(from) || buf_[begin_ + from] != ',')
+            return false;
+        ++from;
+        if (!white(from) || buf_[begin_ + from] != '{')
+            return false;
+        const SkippedCase first = skipped_;
+        const std::size_t firstToken = lastToken_;
+        if (!scan(from, false) ||
+            !parser_.parse(buf_.data() + begin_ + from, skipped_.bytes, next_))
+        {
+            skipped_ = first;
+            lastToken_ = firstToken;
+            return false;
+        }
+        direct_(std::move(fast_));
+        std::swap(fast_, next_);
+        skip(pos, first);
+        for (std::size_t i = first.bytes; i < from; ++i)
+            pos.advance(buf_[begin_ + i]);
+        begin_ += from;
+        delta_ += from;
+        return true;
     }
 
     // The placeholder of the case just scanned: openers for the closers after its last token,
@@ -522,24 +572,25 @@ class CaseStream
         return end_ > begin_;
     }
 
-    // Finds the end of the object at begin_ (skipped_), reading more input as needed. False when
+    // Finds the end of the object at begin_ + from (skipped_, offsets from there), reading more
+    // input as needed when `read`. False when
     // the fast path leaves it to the SAX path: unbalanced before the input ends, larger than
     // kMaxFastCaseBytes, with a control character outside JSON's white space, or with a string
     // the scan does not vouch for (an escape, a control character or a byte above 0x7F: simdjson
     // and nlohmann might differ on it). Bytes that need no look (digits, commas, letters of a
     // string) are passed sixteen at a time (skipPlain); each other byte is looked at alone.
-    bool scan()
+    bool scan(std::size_t from, bool read)
     {
         skipped_ = SkippedCase();
         std::size_t depth = 0;
         bool inString = false;
         for (std::size_t i = 0;; ++i)
         {
-            i = skipPlain(i, inString);
-            if (begin_ + i == end_ &&
-                (i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_))
+            i = skipPlain(from + i, inString) - from;
+            if (begin_ + from + i == end_ && (!read || i >= kMaxFastCaseBytes ||
+                                              !fill(from + i + 1) || begin_ + from + i == end_))
                 return false; // the case cannot be completed from here
-            const auto c = static_cast<unsigned char>(buf_[begin_ + i]);
+            const auto c = static_cast<unsigned char>(buf_[begin_ + from + i]);
             if (inString)
             {
                 if (c == '"')
@@ -564,7 +615,7 @@ class CaseStream
                 if (--depth == 0)
                 {
                     skipped_.bytes = i + 1;
-                    lastToken_ = lastTokenStart();
+                    lastToken_ = lastTokenStart(from);
                     return true;
                 }
                 break;
@@ -639,9 +690,9 @@ class CaseStream
 
     // Where the last string or number of the case just scanned begins: after it come only white
     // space and closing brackets (a case the fast path accepts has no true, false or null).
-    std::size_t lastTokenStart() const
+    std::size_t lastTokenStart(std::size_t from) const
     {
-        const char* p = buf_.data() + begin_;
+        const char* p = buf_.data() + begin_ + from;
         std::size_t i = skipped_.bytes;
         while (i > 0 && (p[i - 1] == '}' || p[i - 1] == ']' || p[i - 1] == ' ' ||
                          p[i - 1] == '\t' || p[i - 1] == '\r' || p[i - 1] == '\n'))
@@ -674,6 +725,8 @@ class CaseStream
     std::size_t delta_ = 0;
     FastCaseParser parser_;
     Case fast_;
+    Case next_; // the case after fast_, while nextFastCase reads it
+    std::function<void(Case&&)> direct_;
 };
 
 // An input iterator over a CaseStream, for nlohmann's sax_parse.
@@ -712,7 +765,7 @@ class CaseFileHandler
     // Reads the whole input; returns the file's comments and number of entries.
     CaseFileSummary parse(ByteInput& input)
     {
-        CaseStream in(input, shown_);
+        CaseStream in(input, shown_, [this](Case&& c) { takeCase(std::move(c)); });
         stream_ = &in;
         StreamIterator first{&in}, last{nullptr};
         if (!RJson::sax_parse(first, last, this))
@@ -820,12 +873,18 @@ class CaseFileHandler
         Case fast;
         if (placeholderDepth_ == 0 && stream_->takeFastCase(fast))
         {
-            ++frames_.back().count; // as place() counts an entry
-            consume_(acceptCase(std::move(fast), entries_, base_, names_));
-            ++entries_;
+            takeCase(std::move(fast));
             stream_->expectCase(false);
         }
         return true;
+    }
+
+    // The next entry of "cases", read by the fast path.
+    void takeCase(Case&& c)
+    {
+        ++frames_.back().count; // as place() counts an entry
+        consume_(acceptCase(std::move(c), entries_, base_, names_));
+        ++entries_;
     }
 
     // Byte offset where the literal of `length` bytes just read starts. The lexer reads one
