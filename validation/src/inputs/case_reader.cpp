@@ -573,60 +573,82 @@ class CaseStream
     }
 
     // Finds the end of the object at begin_ + from (skipped_, offsets from there), reading more
-    // input as needed when `read`. False when
-    // the fast path leaves it to the SAX path: unbalanced before the input ends, larger than
-    // kMaxFastCaseBytes, with a control character outside JSON's white space, or with a string
-    // the scan does not vouch for (an escape, a control character or a byte above 0x7F: simdjson
-    // and nlohmann might differ on it). Bytes that need no look (digits, commas, letters of a
-    // string) are passed sixteen at a time (skipPlain); each other byte is looked at alone.
+    // input as needed when `read`. False when the fast path leaves it to the SAX path: unbalanced
+    // before the input ends, larger than kMaxFastCaseBytes, with a control character outside
+    // JSON's white space, or with a string the scan does not vouch for (an escape, a control
+    // character or a byte above 0x7F: simdjson and nlohmann might differ on it). Where the buffer
+    // holds sixteen bytes, only the bytes marked in them (marks) are looked at; the last bytes of
+    // the buffer one by one.
     bool scan(std::size_t from, bool read)
     {
         skipped_ = SkippedCase();
         std::size_t depth = 0;
         bool inString = false;
-        for (std::size_t i = 0;; ++i)
+        std::size_t i = 0;
+        // One byte at case offset at: false to stop the scan (done tells whether it succeeded).
+        bool done = false;
+        const auto look = [&](std::size_t at, unsigned char c)
         {
-            i = skipPlain(from + i, inString) - from;
-            if (begin_ + from + i == end_ && (!read || i >= kMaxFastCaseBytes ||
-                                              !fill(from + i + 1) || begin_ + from + i == end_))
-                return false; // the case cannot be completed from here
-            const auto c = static_cast<unsigned char>(buf_[begin_ + from + i]);
             if (inString)
             {
                 if (c == '"')
                     inString = false;
                 else if (c == '\\' || c < 0x20 || c >= 0x80)
                     return false;
-                continue;
+                return true;
             }
             if (kOutside[c] == 0)
-                continue;
+                return true;
             switch (c)
             {
             case '"':
                 inString = true;
-                break;
+                return true;
             case '{':
             case '[':
                 ++depth;
-                break;
+                return true;
             case '}':
             case ']':
-                if (--depth == 0)
-                {
-                    skipped_.bytes = i + 1;
-                    lastToken_ = lastTokenStart(from);
+                if (--depth != 0)
                     return true;
-                }
-                break;
+                skipped_.bytes = at + 1;
+                lastToken_ = lastTokenStart(from);
+                done = true;
+                return false;
             case '\n':
                 ++skipped_.newlines;
                 skipped_.prevNewline = skipped_.lastNewline;
-                skipped_.lastNewline = i;
-                break;
+                skipped_.lastNewline = at;
+                return true;
             default: // not JSON white space, or above 0x7F
                 return false;
             }
+        };
+        for (;;)
+        {
+            if (begin_ + from + i + 16 <= end_)
+            {
+                const std::size_t block = begin_ + from + i;
+                for (unsigned m = marks(block, inString); m != 0;)
+                {
+                    const unsigned k = unsigned(std::countr_zero(m));
+                    const bool wasInString = inString;
+                    if (!look(i + k, static_cast<unsigned char>(buf_[block + k])))
+                        return done;
+                    m &= m - 1;
+                    if (inString != wasInString) // the rest of the block, marked for the new mode
+                        m = marks(block, inString) & ~((2u << k) - 1);
+                }
+                i += 16;
+                continue;
+            }
+            if (begin_ + from + i == end_ && (!read || i >= kMaxFastCaseBytes ||
+                                              !fill(from + i + 1) || begin_ + from + i == end_))
+                return false; // the case cannot be completed from here
+            if (!look(i, static_cast<unsigned char>(buf_[begin_ + from + i])))
+                return done;
+            ++i;
         }
     }
 
@@ -641,46 +663,37 @@ class CaseStream
         return t;
     }();
 
-    // The offset, from i on, of the first byte the scan must look at (in a string: a quote, a
-    // backslash, a control character or a byte above 0x7F; outside: those of kOutside, and tabs
-    // and carriage returns), or of the first of the last fifteen bytes in the buffer (the scan
-    // looks at those one by one). Sixteen bytes at a time, with GCC's vector extensions.
-    std::size_t skipPlain(std::size_t i, bool inString) const
+    // Bit k set for each byte buf_[at + k] of the sixteen from `at` that the scan must look at:
+    // in a string, a quote, a backslash, a control character or a byte above 0x7F; outside, those
+    // of kOutside, and tabs and carriage returns. With GCC's vector extensions.
+    unsigned marks(std::size_t at, bool inString) const
     {
         using Bytes = unsigned char __attribute__((vector_size(16)));
         const Bytes quote = Bytes{} + '"', ctl = Bytes{} + 0x20, printable = Bytes{} + 0x60;
-        while (begin_ + i + 16 <= end_)
+        Bytes v;
+        std::memcpy(&v, buf_.data() + at, 16);
+        // (c - 0x20) mod 256 >= 0x60: c below 0x20 or above 0x7F.
+        auto marked = (v - ctl) >= printable;
+        if (inString)
+            marked |= v == quote || v == Bytes{} + '\\';
+        else
         {
-            Bytes v;
-            std::memcpy(&v, buf_.data() + begin_ + i, 16);
-            // (c - 0x20) mod 256 >= 0x60: c below 0x20 or above 0x7F.
-            auto marked = (v - ctl) >= printable;
-            if (inString)
-                marked |= v == quote || v == Bytes{} + '\\';
-            else
-            {
-                // c | 0x20 maps '"' (and 0x02) to 0x22, '[' and '{' to 0x7B, ']' and '}' to 0x7D.
-                const Bytes folded = v | ctl;
-                marked |= folded == quote || folded == Bytes{} + '{' || folded == Bytes{} + '}';
-            }
-            std::uint64_t half[2];
-            std::memcpy(half, &marked, 16);
-            if (half[0] != 0)
-                return i + firstMarked(half[0]);
-            if (half[1] != 0)
-                return i + 8 + firstMarked(half[1]);
-            i += 16;
+            // c | 0x20 maps '"' (and 0x02) to 0x22, '[' and '{' to 0x7B, ']' and '}' to 0x7D.
+            const Bytes folded = v | ctl;
+            marked |= folded == quote || folded == Bytes{} + '{' || folded == Bytes{} + '}';
         }
-        return i;
+        std::uint64_t half[2];
+        std::memcpy(half, &marked, 16);
+        return byteMarks(half[0]) | byteMarks(half[1]) << 8;
     }
 
-    // The first marked byte (all bits set) of eight bytes read as a word.
-    static std::size_t firstMarked(std::uint64_t marks)
+    // Bit j set when byte j (in memory order) of eight bytes, each 0x00 or 0xFF, is 0xFF: the
+    // multiplication gathers each byte's top bit into the top byte.
+    static unsigned byteMarks(std::uint64_t bytes)
     {
-        if constexpr (std::endian::native == std::endian::little)
-            return std::size_t(std::countr_zero(marks)) / 8;
-        else
-            return std::size_t(std::countl_zero(marks)) / 8;
+        if constexpr (std::endian::native == std::endian::big)
+            bytes = __builtin_bswap64(bytes);
+        return unsigned(((bytes & 0x8080808080808080u) * 0x0002040810204081u) >> 56);
     }
 
     static bool isNumberChar(char c)
