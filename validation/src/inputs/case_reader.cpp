@@ -317,20 +317,24 @@ class FastCaseParser
         return n == 2;
     }
 
+    // The points are read into points_ (its capacity kept from case to case) and copied out at
+    // their final size: one allocation a shape instead of one each time the vector grows.
     bool points(Value& v, std::vector<std::array<double, 2>>& out)
     {
         simdjson::ondemand::array a;
         if (v.get_array().get(a))
             return false;
+        points_.clear();
         for (auto element : a)
         {
             Value p;
-            if (out.size() == kMaxShapePoints || element.get(p) || !count())
+            if (points_.size() == kMaxShapePoints || element.get(p) || !count())
                 return false;
-            out.emplace_back();
-            if (!pair(p, out.back()))
+            points_.emplace_back();
+            if (!pair(p, points_.back()))
                 return false;
         }
+        out.assign(points_.begin(), points_.end());
         return !out.empty();
     }
 
@@ -392,6 +396,7 @@ class FastCaseParser
     simdjson::ondemand::parser parser_;
     std::vector<char> padded_;
     std::size_t values_ = 0;
+    std::vector<std::array<double, 2>> points_;
 };
 
 // The input as the SAX parser reads it, one character at a time, with its position recorded; and
