@@ -587,63 +587,22 @@ class CaseStream
     bool scan(std::size_t from, bool read)
     {
         skipped_ = SkippedCase();
-        std::size_t depth = 0;
-        bool inString = false;
+        ScanState st;
         std::size_t i = 0;
-        // One byte at case offset at: false to stop the scan (done tells whether it succeeded).
-        bool done = false;
-        const auto look = [&](std::size_t at, unsigned char c)
-        {
-            if (inString)
-            {
-                if (c == '"')
-                    inString = false;
-                else if (c == '\\' || c < 0x20 || c >= 0x80)
-                    return false;
-                return true;
-            }
-            if (kOutside[c] == 0)
-                return true;
-            switch (c)
-            {
-            case '"':
-                inString = true;
-                return true;
-            case '{':
-            case '[':
-                ++depth;
-                return true;
-            case '}':
-            case ']':
-                if (--depth != 0)
-                    return true;
-                skipped_.bytes = at + 1;
-                lastToken_ = lastTokenStart(from);
-                done = true;
-                return false;
-            case '\n':
-                ++skipped_.newlines;
-                skipped_.prevNewline = skipped_.lastNewline;
-                skipped_.lastNewline = at;
-                return true;
-            default: // not JSON white space, or above 0x7F
-                return false;
-            }
-        };
         for (;;)
         {
             if (begin_ + from + i + 16 <= end_)
             {
                 const std::size_t block = begin_ + from + i;
-                for (unsigned m = marks(block, inString); m != 0;)
+                for (unsigned m = marks(block, st.inString); m != 0;)
                 {
                     const unsigned k = unsigned(std::countr_zero(m));
-                    const bool wasInString = inString;
-                    if (!look(i + k, static_cast<unsigned char>(buf_[block + k])))
-                        return done;
+                    const bool wasInString = st.inString;
+                    if (!look(st, from, i + k, static_cast<unsigned char>(buf_[block + k])))
+                        return st.done;
                     m &= m - 1;
-                    if (inString != wasInString) // the rest of the block, marked for the new mode
-                        m = marks(block, inString) & ~((2u << k) - 1);
+                    if (st.inString != wasInString) // the rest of the block, for the new mode
+                        m = marks(block, st.inString) & ~((2u << k) - 1);
                 }
                 i += 16;
                 continue;
@@ -651,9 +610,55 @@ class CaseStream
             if (begin_ + from + i == end_ && (!read || i >= kMaxFastCaseBytes ||
                                               !fill(from + i + 1) || begin_ + from + i == end_))
                 return false; // the case cannot be completed from here
-            if (!look(i, static_cast<unsigned char>(buf_[begin_ + from + i])))
-                return done;
+            if (!look(st, from, i, static_cast<unsigned char>(buf_[begin_ + from + i])))
+                return st.done;
             ++i;
+        }
+    }
+
+    struct ScanState
+    {
+        std::size_t depth = 0;
+        bool inString = false;
+        bool done = false; // the case's end was found
+    };
+
+    // The scan's look at byte c, at offset `at` of the case at begin_ + from: false to stop (at
+    // the case's end, st.done, or at a byte the fast path refuses).
+    bool look(ScanState& st, std::size_t from, std::size_t at, unsigned char c)
+    {
+        if (st.inString)
+        {
+            if (c == '"')
+                st.inString = false;
+            return c == '"' || !(c == '\\' || c < 0x20 || c >= 0x80);
+        }
+        if (kOutside[c] == 0)
+            return true;
+        switch (c)
+        {
+        case '"':
+            st.inString = true;
+            return true;
+        case '{':
+        case '[':
+            ++st.depth;
+            return true;
+        case '}':
+        case ']':
+            if (--st.depth != 0)
+                return true;
+            skipped_.bytes = at + 1;
+            lastToken_ = lastTokenStart(from);
+            st.done = true;
+            return false;
+        case '\n':
+            ++skipped_.newlines;
+            skipped_.prevNewline = skipped_.lastNewline;
+            skipped_.lastNewline = at;
+            return true;
+        default: // not JSON white space, or above 0x7F
+            return false;
         }
     }
 
