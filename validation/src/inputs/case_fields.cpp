@@ -4,7 +4,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -241,9 +243,31 @@ bool isControl(std::string_view s)
 
 namespace
 {
+// How long a label's quote of a case name is at most (excerpt's cut).
+constexpr std::size_t kQuotedNameBytes = 60;
+
+// "BASE#INDEX (case 'NAME')", NAME quoted by excerpt. A name of printable ASCII without a
+// backslash and not longer than the cut is its own excerpt: that label, the one of nearly every
+// case of a large file, is put together directly (its formatting showed in the reader's
+// profile: docs/speed.md, "Case files").
 std::string namedLabel(const std::string& base, std::size_t index, const std::string& name)
 {
-    return fmt::format("{}#{} (case '{}')", base, index, excerpt(name));
+    const bool plain = name.size() <= kQuotedNameBytes &&
+                       std::all_of(name.begin(), name.end(),
+                                   [](char c) { return c >= 0x20 && c < 0x7F && c != '\\'; });
+    if (!plain)
+        return fmt::format("{}#{} (case '{}')", base, index, excerpt(name, kQuotedNameBytes));
+    char digits[24];
+    const auto end = std::to_chars(digits, digits + sizeof digits, index).ptr;
+    std::string label;
+    label.reserve(base.size() + std::size_t(end - digits) + name.size() + 10);
+    label.append(base)
+        .append(1, '#')
+        .append(digits, end)
+        .append(" (case '")
+        .append(name)
+        .append("')");
+    return label;
 }
 
 std::string duplicateName(const std::string& name)

@@ -20,8 +20,10 @@
 #include <unistd.h>
 
 #include <array>
+#include <bit>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -315,20 +317,24 @@ class FastCaseParser
         return n == 2;
     }
 
+    // The points are read into points_ (its capacity kept from case to case) and copied out at
+    // their final size: one allocation a shape instead of one each time the vector grows.
     bool points(Value& v, std::vector<std::array<double, 2>>& out)
     {
         simdjson::ondemand::array a;
         if (v.get_array().get(a))
             return false;
+        points_.clear();
         for (auto element : a)
         {
             Value p;
-            if (out.size() == kMaxShapePoints || element.get(p) || !count())
+            if (points_.size() == kMaxShapePoints || element.get(p) || !count())
                 return false;
-            out.emplace_back();
-            if (!pair(p, out.back()))
+            points_.emplace_back();
+            if (!pair(p, points_.back()))
                 return false;
         }
+        out.assign(points_.begin(), points_.end());
         return !out.empty();
     }
 
@@ -390,6 +396,7 @@ class FastCaseParser
     simdjson::ondemand::parser parser_;
     std::vector<char> padded_;
     std::size_t values_ = 0;
+    std::vector<std::array<double, 2>> points_;
 };
 
 // The input as the SAX parser reads it, one character at a time, with its position recorded; and
@@ -400,11 +407,15 @@ class FastCaseParser
 // (takeFastCase). The placeholder is valid JSON ending as the case ends, from the case's last
 // string or number on (`{"":{"":[[1]]}}` for a case ending `1]]}}`): nlohmann quotes the
 // characters from there on as "last read" in a message about what follows the case. A refused
-// case is read by the SAX parser as it is.
+// case is read by the SAX parser as it is. Where a comma and another case the fast path accepts
+// follow a case it accepted, the first is handed to the handler at once (`direct`) and the SAX
+// parser never sees it: only the last case of such a run becomes a placeholder, so every message
+// about what follows stays the same.
 class CaseStream
 {
   public:
-    CaseStream(ByteInput& in, std::string shown) : in_(in), shown_(std::move(shown))
+    CaseStream(ByteInput& in, std::string shown, std::function<void(Case&&)> direct)
+        : in_(in), shown_(std::move(shown)), direct_(std::move(direct))
     {
         buf_.resize(std::size_t(1) << 20);
     }
@@ -474,8 +485,54 @@ class CaseStream
             buf_[begin_] != '{')
             return;
         expect_ = Expect::Nothing;
-        if (scan() && parser_.parse(buf_.data() + begin_, skipped_.bytes, fast_))
-            makePlaceholder();
+        if (!scan(0, true) || !parser_.parse(buf_.data() + begin_, skipped_.bytes, fast_))
+            return;
+        while (nextFastCase())
+        {
+        }
+        makePlaceholder();
+    }
+
+    // With the case at begin_ read (skipped_, fast_): when white space, a comma, white space and
+    // another case the fast path reads follow it, all in the buffer already, hands the first case
+    // to the handler, passes it and what follows it up to the second, and returns true with the
+    // second read in its place. Otherwise leaves everything as it was. Nothing more is read from
+    // the input here: a case that arrived is handed on before the next one does (a pipe).
+    bool nextFastCase()
+    {
+        const auto white = [&](std::size_t& i) // to the next other byte; false at the end
+        {
+            for (; begin_ + i < end_; ++i)
+            {
+                const char c = buf_[begin_ + i];
+                if (c != ' ' && c != '\t' && c != '\n' && c != '\r')
+                    return true;
+            }
+            return false;
+        };
+        std::size_t from = skipped_.bytes;
+        if (!white(from) || buf_[begin_ + from] != ',')
+            return false;
+        ++from;
+        if (!white(from) || buf_[begin_ + from] != '{')
+            return false;
+        const SkippedCase first = skipped_;
+        const std::size_t firstToken = lastToken_;
+        if (!scan(from, false) ||
+            !parser_.parse(buf_.data() + begin_ + from, skipped_.bytes, next_))
+        {
+            skipped_ = first;
+            lastToken_ = firstToken;
+            return false;
+        }
+        direct_(std::move(fast_));
+        std::swap(fast_, next_);
+        skip(pos, first);
+        for (std::size_t i = first.bytes; i < from; ++i)
+            pos.advance(buf_[begin_ + i]);
+        begin_ += from;
+        delta_ += from;
+        return true;
     }
 
     // The placeholder of the case just scanned: openers for the closers after its last token,
@@ -487,7 +544,7 @@ class CaseStream
         if (tail[0] == '"')
             after = tail.find('"', 1) + 1;
         else
-            while (after < tail.size() && std::strchr("0123456789.eE+-", tail[after]) != nullptr)
+            while (after < tail.size() && isNumberChar(tail[after]))
                 ++after;
         placeholder_.clear();
         for (std::size_t i = tail.size(); i-- > after;)
@@ -520,60 +577,88 @@ class CaseStream
         return end_ > begin_;
     }
 
-    // Finds the end of the object at begin_ (skipped_), reading more input as needed. False when
-    // the fast path leaves it to the SAX path: unbalanced before the input ends, larger than
-    // kMaxFastCaseBytes, with a control character outside JSON's white space, or with a string
-    // the scan does not vouch for (an escape, a control character or a byte above 0x7F: simdjson
-    // and nlohmann might differ on it).
-    bool scan()
+    // Finds the end of the object at begin_ + from (skipped_, offsets from there), reading more
+    // input as needed when `read`. False when the fast path leaves it to the SAX path: unbalanced
+    // before the input ends, larger than kMaxFastCaseBytes, with a control character outside
+    // JSON's white space, or with a string the scan does not vouch for (an escape, a control
+    // character or a byte above 0x7F: simdjson and nlohmann might differ on it). Where the buffer
+    // holds sixteen bytes, only the bytes marked in them (marks) are looked at; the last bytes of
+    // the buffer one by one.
+    bool scan(std::size_t from, bool read)
     {
         skipped_ = SkippedCase();
-        std::size_t depth = 0;
+        ScanState st;
         std::size_t i = 0;
-        const auto more = [&] // false when the case cannot be completed from here
-        { return !(i >= kMaxFastCaseBytes || !fill(i + 1) || begin_ + i == end_); };
-        for (;; ++i)
+        for (;;)
         {
-            if (begin_ + i == end_ && !more())
-                return false;
-            auto c = static_cast<unsigned char>(buf_[begin_ + i]);
-            if (kOutside[c] == 0)
-                continue;
-            switch (c)
+            if (begin_ + from + i + 16 <= end_)
             {
-            case '"': // to the closing quote, each byte checked
-                for (++i;; ++i)
+                const std::size_t block = begin_ + from + i;
+                for (unsigned m = marks(block, st.inString); m != 0;)
                 {
-                    if (begin_ + i == end_ && !more())
-                        return false;
-                    c = static_cast<unsigned char>(buf_[begin_ + i]);
-                    if (c == '"')
-                        break;
-                    if (c == '\\' || c < 0x20 || c >= 0x80)
-                        return false;
+                    const unsigned k = unsigned(std::countr_zero(m));
+                    const bool wasInString = st.inString;
+                    if (!look(st, from, i + k, static_cast<unsigned char>(buf_[block + k])))
+                        return st.done;
+                    m &= m - 1;
+                    if (st.inString != wasInString) // the rest of the block, for the new mode
+                        m = marks(block, st.inString) & ~((2u << k) - 1);
                 }
-                break;
-            case '{':
-            case '[':
-                ++depth;
-                break;
-            case '}':
-            case ']':
-                if (--depth == 0)
-                {
-                    skipped_.bytes = i + 1;
-                    lastToken_ = lastTokenStart();
-                    return true;
-                }
-                break;
-            case '\n':
-                ++skipped_.newlines;
-                skipped_.prevNewline = skipped_.lastNewline;
-                skipped_.lastNewline = i;
-                break;
-            default: // not JSON white space, or above 0x7F
-                return false;
+                i += 16;
+                continue;
             }
+            if (begin_ + from + i == end_ && (!read || i >= kMaxFastCaseBytes ||
+                                              !fill(from + i + 1) || begin_ + from + i == end_))
+                return false; // the case cannot be completed from here
+            if (!look(st, from, i, static_cast<unsigned char>(buf_[begin_ + from + i])))
+                return st.done;
+            ++i;
+        }
+    }
+
+    struct ScanState
+    {
+        std::size_t depth = 0;
+        bool inString = false;
+        bool done = false; // the case's end was found
+    };
+
+    // The scan's look at byte c, at offset `at` of the case at begin_ + from: false to stop (at
+    // the case's end, st.done, or at a byte the fast path refuses).
+    bool look(ScanState& st, std::size_t from, std::size_t at, unsigned char c)
+    {
+        if (st.inString)
+        {
+            if (c == '"')
+                st.inString = false;
+            return c == '"' || !(c == '\\' || c < 0x20 || c >= 0x80);
+        }
+        if (kOutside[c] == 0)
+            return true;
+        switch (c)
+        {
+        case '"':
+            st.inString = true;
+            return true;
+        case '{':
+        case '[':
+            ++st.depth;
+            return true;
+        case '}':
+        case ']':
+            if (--st.depth != 0)
+                return true;
+            skipped_.bytes = at + 1;
+            lastToken_ = lastTokenStart(from);
+            st.done = true;
+            return false;
+        case '\n':
+            ++skipped_.newlines;
+            skipped_.prevNewline = skipped_.lastNewline;
+            skipped_.lastNewline = at;
+            return true;
+        default: // not JSON white space, or above 0x7F
+            return false;
         }
     }
 
@@ -588,13 +673,52 @@ class CaseStream
         return t;
     }();
 
+    // Bit k set for each byte buf_[at + k] of the sixteen from `at` that the scan must look at:
+    // in a string, a quote, a backslash, a control character or a byte above 0x7F; outside, those
+    // of kOutside, and tabs and carriage returns. With GCC's vector extensions.
+    unsigned marks(std::size_t at, bool inString) const
+    {
+        using Bytes = unsigned char __attribute__((vector_size(16)));
+        const Bytes quote = Bytes{} + '"', ctl = Bytes{} + 0x20, printable = Bytes{} + 0x60;
+        Bytes v;
+        std::memcpy(&v, buf_.data() + at, 16);
+        // (c - 0x20) mod 256 >= 0x60: c below 0x20 or above 0x7F.
+        auto marked = (v - ctl) >= printable;
+        if (inString)
+            marked |= v == quote || v == Bytes{} + '\\';
+        else
+        {
+            // c | 0x20 maps '"' (and 0x02) to 0x22, '[' and '{' to 0x7B, ']' and '}' to 0x7D.
+            const Bytes folded = v | ctl;
+            marked |= folded == quote || folded == Bytes{} + '{' || folded == Bytes{} + '}';
+        }
+        std::uint64_t half[2];
+        std::memcpy(half, &marked, 16);
+        return byteMarks(half[0]) | byteMarks(half[1]) << 8;
+    }
+
+    // Bit j set when byte j (in memory order) of eight bytes, each 0x00 or 0xFF, is 0xFF: the
+    // multiplication gathers each byte's top bit into the top byte.
+    static unsigned byteMarks(std::uint64_t bytes)
+    {
+        if constexpr (std::endian::native == std::endian::big)
+            bytes = __builtin_bswap64(bytes);
+        return unsigned(((bytes & 0x8080808080808080u) * 0x0002040810204081u) >> 56);
+    }
+
+    static bool isNumberChar(char c)
+    {
+        return (c >= '0' && c <= '9') || c == '.' || c == 'e' || c == 'E' || c == '+' || c == '-';
+    }
+
     // Where the last string or number of the case just scanned begins: after it come only white
     // space and closing brackets (a case the fast path accepts has no true, false or null).
-    std::size_t lastTokenStart() const
+    std::size_t lastTokenStart(std::size_t from) const
     {
-        const char* p = buf_.data() + begin_;
+        const char* p = buf_.data() + begin_ + from;
         std::size_t i = skipped_.bytes;
-        while (i > 0 && std::strchr("}] \t\r\n", p[i - 1]) != nullptr)
+        while (i > 0 && (p[i - 1] == '}' || p[i - 1] == ']' || p[i - 1] == ' ' ||
+                         p[i - 1] == '\t' || p[i - 1] == '\r' || p[i - 1] == '\n'))
             --i;
         if (i == 0)
             return 0;
@@ -605,7 +729,7 @@ class CaseStream
                 --i;
             return i > 0 ? i - 1 : 0;
         }
-        while (i > 0 && std::strchr("0123456789.eE+-", p[i - 1]) != nullptr)
+        while (i > 0 && isNumberChar(p[i - 1]))
             --i;
         return i;
     }
@@ -624,6 +748,8 @@ class CaseStream
     std::size_t delta_ = 0;
     FastCaseParser parser_;
     Case fast_;
+    Case next_; // the case after fast_, while nextFastCase reads it
+    std::function<void(Case&&)> direct_;
 };
 
 // An input iterator over a CaseStream, for nlohmann's sax_parse.
@@ -662,7 +788,7 @@ class CaseFileHandler
     // Reads the whole input; returns the file's comments and number of entries.
     CaseFileSummary parse(ByteInput& input)
     {
-        CaseStream in(input, shown_);
+        CaseStream in(input, shown_, [this](Case&& c) { takeCase(std::move(c)); });
         stream_ = &in;
         StreamIterator first{&in}, last{nullptr};
         if (!RJson::sax_parse(first, last, this))
@@ -770,12 +896,18 @@ class CaseFileHandler
         Case fast;
         if (placeholderDepth_ == 0 && stream_->takeFastCase(fast))
         {
-            ++frames_.back().count; // as place() counts an entry
-            consume_(acceptCase(std::move(fast), entries_, base_, names_));
-            ++entries_;
+            takeCase(std::move(fast));
             stream_->expectCase(false);
         }
         return true;
+    }
+
+    // The next entry of "cases", read by the fast path.
+    void takeCase(Case&& c)
+    {
+        ++frames_.back().count; // as place() counts an entry
+        consume_(acceptCase(std::move(c), entries_, base_, names_));
+        ++entries_;
     }
 
     // Byte offset where the literal of `length` bytes just read starts. The lexer reads one
