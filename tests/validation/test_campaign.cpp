@@ -477,7 +477,7 @@ TEST_CASE("a case file is read once: refused up front when cut short, else where
 
     // Not a case file at its start: refused up front.
     c.caseFiles = {file("other.json", "{\"format\": \"gjk-cases/0\", \"cases\": [" +
-                                          text.substr(text.find("{\"name\""))) };
+                                          text.substr(text.find("{\"name\"")))};
     const std::string otherMessage = wholeReadMessage(c.caseFiles[0]);
     REQUIRE_THAT(otherMessage, Catch::Contains("not a gjk-cases/1 file"));
     in = campaignInputs(c); // "format" is checked at the end of the file

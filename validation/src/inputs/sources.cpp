@@ -104,8 +104,8 @@ struct FirstEntryReached
 {
 };
 
-// True when the JSON file at `path` (a regular file, or a pipe's copy) ends with its closing brace, white space
-// after it aside: a file cut short does not.
+// True when the JSON file at `path` (a regular file, or a pipe's copy) ends with its closing brace,
+// white space after it aside: a file cut short does not.
 bool endsWithBrace(const std::string& path)
 {
     std::ifstream f(path, std::ios::binary);
@@ -158,8 +158,8 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold, Fi
             copy = std::make_shared<PipeCopy>(path);
         const std::string readPath = copy ? copy->path() : path;
         const bool cutShort = !isBinaryCaseFile(readPath) && !endsWithBrace(readPath);
-        in.counted = check == FileCheck::Whole || cutShort ||
-                     readToFirstEntry(readPath, path, *in.read);
+        in.counted =
+            check == FileCheck::Whole || cutShort || readToFirstEntry(readPath, path, *in.read);
         if (in.counted && (check == FileCheck::Whole || cutShort))
             *in.read = streamCaseFile(readPath, path, [](CaseEntry&&) {});
     }
