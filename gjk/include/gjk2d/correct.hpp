@@ -19,8 +19,9 @@
 //      a rounding midpoint goes on to stage 4's double-double tail (rare: docs/gjk.md,
 //      "Correctly rounded distance").
 //   4. CorrectPath::DoubleDouble: the features' distance recomputed from the original input in
-//      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, no FMA:
-//      std::fma is a library call on the x86-64 baseline) and sums (Knuth's TwoSum), every
+//      double-double, with error-free products (Dekker's TwoProduct with Veltkamp's split, or one
+//      fused multiply-add where the CPU has it: "The error-free products", below; the same bits)
+//      and sums (Knuth's TwoSum), every
 //      quantity carrying a rigorous bound on its distance to the exact value (that arithmetic:
 //      gjk2d/exact_arithmetic.hpp). That gives
 //        U = the distance from the origin to the feature (a point or a segment of Z = A' - B'),
@@ -65,6 +66,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <type_traits>
 
@@ -74,14 +76,15 @@ namespace gjk::correct
 {
 
 // The world point of a local one, as terms: (c x - s y + px, s x + c y + py), with sign +1 or -1.
+template <class P = DekkerProducts>
 GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<double>& xf,
                                       Vec2<double> v, double sign)
 {
-    tx.addProduct(sign * xf.q.c, v.x);
-    tx.addProduct(-sign * xf.q.s, v.y);
+    tx.addProduct<P>(sign * xf.q.c, v.x);
+    tx.addProduct<P>(-sign * xf.q.s, v.y);
     tx.add(sign * xf.p.x);
-    ty.addProduct(sign * xf.q.s, v.x);
-    ty.addProduct(sign * xf.q.c, v.y);
+    ty.addProduct<P>(sign * xf.q.s, v.x);
+    ty.addProduct<P>(sign * xf.q.c, v.y);
     ty.add(sign * xf.p.y);
 }
 
@@ -93,6 +96,7 @@ GJK_CORRECT_INLINE void addWorldPoint(Terms& tx, Terms& ty, const Transform<doub
 // the sum in both lanes (heavy cancellation): exactSum's further passes then decide. Float data
 // (the four coordinates and both rotations floats, as float engines give) skip the products'
 // splits and guards (floatProduct): the pieces, and so W, are bit for bit the same.
+template <class P = DekkerProducts>
 GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int i, int j,
                                             ApproxVec& W)
 {
@@ -115,8 +119,8 @@ GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int
     }
     else
     {
-        p1 = twoProduct(f1, g1), p2 = twoProduct(f2, g2), p3 = twoProduct(f3, g3),
-        p4 = twoProduct(f4, g4);
+        p1 = P::twoProduct(f1, g1), p2 = P::twoProduct(f2, g2), p3 = P::twoProduct(f3, g3),
+        p4 = P::twoProduct(f4, g4);
         exact = exact & exactProduct(f1, g1, p1.hi) & exactProduct(f2, g2, p2.hi) &
                 exactProduct(f3, g3, p3.hi) & exactProduct(f4, g4, p4.hi);
     }
@@ -139,29 +143,33 @@ GJK_CORRECT_INLINE bool minkowskiPointLanes(const DistanceInput<double>& in, int
 }
 
 // W = xfA * A[i] - xfB * B[j], a point of Z.
-GJK_CORRECT_INLINE ApproxVec minkowskiPoint(Context& cx, const DistanceInput<double>& in, int i,
-                                            int j)
+template <class Cx>
+GJK_CORRECT_INLINE ApproxVec minkowskiPoint(Cx& cx, const DistanceInput<double>& in, int i, int j)
 {
+    using P = typename Cx::Products;
     ApproxVec W;
-    if (minkowskiPointLanes(in, i, j, W)) [[likely]]
+    if (minkowskiPointLanes<P>(in, i, j, W)) [[likely]]
         return W;
     Terms tx, ty;
-    addWorldPoint(tx, ty, in.transformA, in.proxyA.points[i], 1);
-    addWorldPoint(tx, ty, in.transformB, in.proxyB.points[j], -1);
+    addWorldPoint<P>(tx, ty, in.transformA, in.proxyA.points[i], 1);
+    addWorldPoint<P>(tx, ty, in.transformB, in.proxyB.points[j], -1);
     return {exactSum(cx, tx), exactSum(cx, ty)};
 }
 
 // e = W(i2, j2) - W(i1, j1) from the local differences (the translations cancel exactly).
-GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<double>& in, int i1,
-                                           int j1, int i2, int j2)
+template <class Cx>
+GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Cx& cx, const DistanceInput<double>& in, int i1, int j1,
+                                           int i2, int j2)
 {
+    using P = typename Cx::Products;
     Terms tx, ty;
     auto side = [&](const Transform<double>& xf, Vec2<double> p2, Vec2<double> p1, double sign)
+                    GJK_CORRECT_LAMBDA_INLINE
     {
-        tx.addProductOfDifference(sign * xf.q.c, p2.x, p1.x);
-        tx.addProductOfDifference(-sign * xf.q.s, p2.y, p1.y);
-        ty.addProductOfDifference(sign * xf.q.s, p2.x, p1.x);
-        ty.addProductOfDifference(sign * xf.q.c, p2.y, p1.y);
+        tx.addProductOfDifference<P>(sign * xf.q.c, p2.x, p1.x);
+        tx.addProductOfDifference<P>(-sign * xf.q.s, p2.y, p1.y);
+        ty.addProductOfDifference<P>(sign * xf.q.s, p2.x, p1.x);
+        ty.addProductOfDifference<P>(sign * xf.q.c, p2.y, p1.y);
     };
     if (i1 != i2)
         side(in.transformA, in.proxyA.points[i2], in.proxyA.points[i1], 1);
@@ -174,14 +182,15 @@ GJK_CORRECT_INLINE ApproxVec minkowskiEdge(Context& cx, const DistanceInput<doub
 // direction e), each sign certified in double from the values' bounds; both in two lanes.
 GJK_CORRECT_INLINE bool projectsInside(const ApproxVec& a2, const ApproxVec& a1, const ApproxVec& e)
 {
-    auto lanes = [](const Approx& p0, const Approx& p1, const Approx& q) -> ApproxVec2
+    auto lanes = [](const Approx& p0, const Approx& p1, const Approx& q)
+                     GJK_CORRECT_LAMBDA_INLINE -> ApproxVec2
     {
         return {pair(p0.hi, p1.hi), pair(p0.lo, p1.lo), pair(p0.err, p1.err),
                 pair(q.hi, q.hi),   pair(q.lo, q.lo),   pair(q.err, q.err)};
     };
     const ApproxVec2 x = lanes(a2.x, a1.x, e.x), y = lanes(a2.y, a1.y, e.y);
     const V2 g = x.ph * x.qh + y.ph * y.qh;
-    auto term = [](const ApproxVec2& t)
+    auto term = [](const ApproxVec2& t) GJK_CORRECT_LAMBDA_INLINE
     {
         const V2 dp = abs2(t.pl) + t.pe, dq = abs2(t.ql) + t.qe;
         return (((3 * 0x1p-53) * abs2(t.ph * t.qh) + dp * abs2(t.qh)) + dq * abs2(t.ph)) + dp * dq;
@@ -625,7 +634,8 @@ GJK_CORRECT_INLINE bool containmentCertified(const DistanceInput<double>& in,
 // recomputed from the shapes' local differences when that difference is not accurate to
 // kEdgeAccuracy of e. cross(e, W1) = cross(W2, W1), computed beside e rather than after it.
 // False when a guard fails or the projection is not certainly inside.
-GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in, Features& f)
+template <class Cx>
+GJK_CORRECT_INLINE bool edgeFeature(Cx& cx, const DistanceInput<double>& in, Features& f)
 {
     f.W2 = minkowskiPoint(cx, in, f.a2, f.b2);
     f.unum = cross(cx, f.W2, f.W1);
@@ -642,7 +652,8 @@ GJK_CORRECT_INLINE bool edgeFeature(Context& cx, const DistanceInput<double>& in
 
 // The final features of a one- or two-point simplex, their points of Z and direction n. False
 // when a guard fails or an edge's side is not decided (the caller then needs exact).
-GJK_CORRECT_INLINE bool featuresOf(Context& cx, const DistanceInput<double>& in,
+template <class Cx>
+GJK_CORRECT_INLINE bool featuresOf(Cx& cx, const DistanceInput<double>& in,
                                    const SimplexCache& cache, Features& f)
 {
     f.isEdge = cache.count == 2;
@@ -703,7 +714,7 @@ GJK_CORRECT_INLINE bool decideExtended(const DistanceInput<double>& in, Features
 // U, the distance from the origin to the feature (|W1|, or |cross(e, W1)| / |e|), in double-double
 // with its bound. normV = |n_v| for the direction n_v = n's values (sq = |n_v|^2); the exact
 // length (|W1| or |e|) lies within lengthErr of it.
-GJK_CORRECT_INLINE Approx upperBound(Context& cx, const Features& f, Approx& normV)
+template <class Cx> GJK_CORRECT_INLINE Approx upperBound(Cx& cx, const Features& f, Approx& normV)
 {
     const ApproxVec& v = f.isEdge ? f.e : f.W1;
     const Approx sq = dot(cx, valuesOf(v), valuesOf(v));
@@ -717,7 +728,8 @@ GJK_CORRECT_INLINE Approx upperBound(Context& cx, const Features& f, Approx& nor
 
 // The lowest of n_v.W over the candidate pairs' points W of Z, its bound widened to cover every
 // other value's lower end: the minimum of the exact values lies within it.
-GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<double>& in,
+template <class Cx>
+GJK_CORRECT_INLINE Approx lowestSupportValue(Cx& cx, const DistanceInput<double>& in,
                                              const Features& f, const int* candA, int ca,
                                              const int* candB, int cb)
 {
@@ -761,7 +773,8 @@ GJK_CORRECT_INLINE Approx lowestSupportValue(Context& cx, const DistanceInput<do
 // direction (any direction gives a lower bound): min over the candidate pairs of n_v.W / |n_v|,
 // from the few vertices that can attain the support. False when there are too many candidates
 // or a guard fails.
-GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in, const Features& f,
+template <class Cx>
+GJK_CORRECT_INLINE bool lowerBound(Cx& cx, const DistanceInput<double>& in, const Features& f,
                                    const Approx& normV, Approx& L)
 {
     int candA[kMaxCandidates + 1], candB[kMaxCandidates + 1];
@@ -773,11 +786,12 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
     return cx.ok;
 }
 
-// The refinement of a plain double query's output (Options::correctlyRounded). `cache` is the
-// cache the plain query returned: its index pairs are the final features. Out of line, so that
-// gjk::distance does not carry its code and stack frame into the default query.
-[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache,
-                                     const Options& options, DistanceOutput<double>& out)
+// The refinement of a plain double query's output with the error-free products of Cx (Context or
+// FmaContext). `cache` is the cache the plain query returned: its index pairs are the final
+// features.
+template <class Cx>
+GJK_CORRECT_INLINE void refineWith(const DistanceInput<double>& in, const SimplexCache& cache,
+                                   const Options& options, DistanceOutput<double>& out)
 {
     out.path = CorrectPath::NeedsExact;
     const double rA = options.useRadii ? in.proxyA.radius : 0.0;
@@ -795,7 +809,7 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
         out.distance = 0;
         return;
     }
-    Context cx;
+    Cx cx;
     Features f;
     if (!featuresOf(cx, in, cache, f) || decideExtended(in, f, rA, rB, out))
         return;
@@ -822,6 +836,97 @@ GJK_CORRECT_INLINE bool lowerBound(Context& cx, const DistanceInput<double>& in,
     Approx L;
     if (lowerBound(cx, in, f, normV, L))
         writeAnswer(out, roundInterval(sub(L, r), xh), CorrectPath::DoubleDouble);
+}
+
+// --- The error-free products: Dekker's, or the FMA's where the CPU has it ------------------------
+//
+// x86-64's baseline has no fused multiply-add, so a build for it cannot use one directly (std::fma
+// is a library call there). With GCC and Clang on x86 the refinement is compiled twice: as it is
+// (Dekker's TwoProduct) and, in refineFma, for a target with FMA (each TwoProduct one multiply and
+// one fused multiply-subtract: twoProductFma). The CPU is asked once (fmaAvailable), on the first
+// refinement. Both give the same bits (twoProductFma: an exact product's error is unique), so
+// the choice changes only the speed (docs/speed.md, "double-correct at 1.5x"). The environment
+// variable GJK2D_NO_FMA, set and neither empty nor "0", forces Dekker's products (read once, on
+// the first refinement): a compiler flag such as -mno-fma cannot, since the FMA code is compiled
+// for its own target whatever the flags. GJK2D_NO_FMA_DISPATCH (a macro) compiles Dekker's path
+// alone.
+enum class Products
+{
+    Dekker,
+    Fma,
+};
+
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__)) &&                             \
+    !defined(GJK2D_NO_FMA_DISPATCH)
+#define GJK2D_FMA_DISPATCH 1
+// GCC's SLP vectorizer fuses a * b +- c * d into a fused multiply-add behind -ffp-contract=off's
+// back where the target has FMA (gjk2d/detail/fp_begin.hpp): refineFma's other arithmetic would
+// then round differently from Dekker's path. Clang does not. GCC inlines the forced-inline steps
+// into it nonetheless.
+#if defined(__clang__)
+#define GJK2D_FMA_TARGET __attribute__((target("fma")))
+#else
+#define GJK2D_FMA_TARGET __attribute__((target("fma"), optimize("no-tree-slp-vectorize")))
+#endif
+
+// True when the CPU (and the OS, which must save the AVX registers) can run FMA code.
+inline bool fmaAvailable()
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("fma");
+}
+
+[[gnu::noinline]] GJK2D_FMA_TARGET inline void refineFma(const DistanceInput<double>& in,
+                                                         const SimplexCache& cache,
+                                                         const Options& options,
+                                                         DistanceOutput<double>& out)
+{
+    refineWith<FmaContext>(in, cache, options, out);
+}
+#else
+inline bool fmaAvailable()
+{
+    return false;
+}
+#endif
+
+// The products the refinement uses: the FMA's when the CPU has it and GJK2D_NO_FMA does not say
+// otherwise.
+inline Products chooseProducts()
+{
+    const char* off = std::getenv("GJK2D_NO_FMA");
+    const bool forced = off != nullptr && off[0] != '\0' && !(off[0] == '0' && off[1] == '\0');
+    return !forced && fmaAvailable() ? Products::Fma : Products::Dekker;
+}
+inline Products productsInUse()
+{
+    static const Products chosen = chooseProducts(); // once: a thread-safe static
+    return chosen;
+}
+
+// The refinement with the given products (the tests run both): Products::Fma needs
+// fmaAvailable().
+inline void refineWithProducts(Products products, const DistanceInput<double>& in,
+                               const SimplexCache& cache, const Options& options,
+                               DistanceOutput<double>& out)
+{
+#if defined(GJK2D_FMA_DISPATCH)
+    if (products == Products::Fma)
+        refineFma(in, cache, options, out);
+    else
+        refineWith<Context>(in, cache, options, out);
+#else
+    (void)products;
+    refineWith<Context>(in, cache, options, out);
+#endif
+}
+
+// The refinement of a plain double query's output (Options::correctlyRounded). Out of line, so that
+// gjk::distance does not carry its code and stack frame into the default query.
+[[gnu::noinline]] inline void refine(const DistanceInput<double>& in, const SimplexCache& cache,
+                                     const Options& options, DistanceOutput<double>& out)
+{
+    refineWithProducts(productsInUse(), in, cache, options, out);
 }
 
 } // namespace gjk::correct

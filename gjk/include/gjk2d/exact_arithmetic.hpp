@@ -1,9 +1,11 @@
 // The arithmetic of the correctly rounded distance (gjk2d/correct.hpp), on doubles only: error-free
-// transformations (Knuth's TwoSum, Dekker's TwoProduct), double-double values that carry a
-// rigorous bound on their distance to the exact value (Approx), exact sums of a few error-free
-// pieces (Terms, exactSum), the same operations in two lanes (a point's x and y side by side), and
-// Shewchuk's floating-point expansions (exact sums of any length, for exact ties). Every guard
-// that fails turns a Context's `ok` false: the caller then needs exact arithmetic.
+// transformations (Knuth's TwoSum, Dekker's TwoProduct or one fused multiply-add), double-double
+// values that carry a rigorous bound on their distance to the exact value (Approx), exact sums of a
+// few error-free pieces (Terms, exactSum), the same operations in two lanes (a point's x and y side
+// by side), and Shewchuk's floating-point expansions (exact sums of any length, for exact ties).
+// Every guard that fails turns a Context's `ok` false: the caller then needs exact arithmetic. The
+// Context also names which error-free product its operations use (DekkerProducts or
+// FmaProducts, below); both give the same bits.
 #pragma once
 
 #include <bit>
@@ -18,10 +20,14 @@
 // instantiates the query.
 // Spelled as GJK_INLINE (gjk2d/detail/macros.hpp) is, so that this header needs no other gjk
 // header.
+// GJK_CORRECT_LAMBDA_INLINE does the same for a lambda (a lambda is not inlined into
+// gjk2d/correct.hpp's refineFma otherwise: GCC keeps functions whose options differ apart).
 #if defined(GJK2D_CHECKED) || !defined(__GNUC__)
 #define GJK_CORRECT_INLINE inline
+#define GJK_CORRECT_LAMBDA_INLINE
 #else
 #define GJK_CORRECT_INLINE [[gnu::always_inline]] inline
+#define GJK_CORRECT_LAMBDA_INLINE __attribute__((always_inline))
 #endif
 
 namespace gjk::correct
@@ -57,6 +63,24 @@ GJK_CORRECT_INLINE DD twoProduct(double a, double b)
     const double cb = split * b, bh = cb - (cb - b), bl = b - bh;
     return {p, ((ah * bh - p) + ah * bl + al * bh) + al * bl};
 }
+#if defined(__GNUC__)
+// The same with one fused multiply-add: e = fma(a, b, -p) is a b - p rounded once, and a b - p is
+// a double wherever Dekker's e is exact (no partial product below 2^-1074: exactProduct's guard,
+// and the ranges of mul, div and squareRoot), so there the two give the same e, bit for bit (an
+// exact e is unique). Where a product underflows, both err by at most a few 2^-1074, which kTiny
+// covers. Called only from code compiled for FMA (gjk2d/correct.hpp's refineFma); anywhere else
+// __builtin_fma is a call to libm's fma, which is exact too, only slow.
+GJK_CORRECT_INLINE DD twoProductFma(double a, double b)
+{
+    const double p = a * b;
+    return {p, __builtin_fma(a, b, -p)};
+}
+#endif
+
+// The error-free product an evaluation context uses (its template argument; defined with the
+// lanes, below).
+struct DekkerProducts;
+struct FmaProducts;
 
 // --- Double-double values with a bound ---------------------------------------------------------
 //
@@ -85,11 +109,15 @@ GJK_CORRECT_INLINE double mag(const Approx& a)
 } // >= |hi + lo|
 
 // The evaluation context: `ok` turns false when a guard fails (the caller then needs exact).
-struct Context
+// Products (DekkerProducts or FmaProducts) is the error-free product of its operations.
+template <class P> struct BasicContext
 {
+    using Products = P;
     bool ok = true;
-    void require(bool c) { ok = ok && c; }
+    GJK_CORRECT_INLINE void require(bool c) { ok = ok && c; }
 };
+using Context = BasicContext<DekkerProducts>;
+using FmaContext = BasicContext<FmaProducts>;
 
 GJK_CORRECT_INLINE Approx exactly(double v)
 {
@@ -117,10 +145,10 @@ GJK_CORRECT_INLINE Approx sub(const Approx& a, const Approx& b)
     return add(a, negate(b));
 }
 
-GJK_CORRECT_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
+template <class Cx> GJK_CORRECT_INLINE Approx mul(Cx& cx, const Approx& a, const Approx& b)
 {
     cx.require(std::abs(a.hi) <= 0x1p450 && std::abs(b.hi) <= 0x1p450); // product <= 2^900
-    const DD p = twoProduct(a.hi, b.hi);
+    const DD p = Cx::Products::twoProduct(a.hi, b.hi);
     const double t = a.hi * b.lo + a.lo * b.hi;
     const DD r = fastTwoSum(p.hi, p.lo + t);
     const double e =
@@ -128,7 +156,7 @@ GJK_CORRECT_INLINE Approx mul(Context& cx, const Approx& a, const Approx& b)
     return {r.hi, r.lo, e * kSafe};
 }
 
-GJK_CORRECT_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
+template <class Cx> GJK_CORRECT_INLINE Approx div(Cx& cx, const Approx& a, const Approx& b)
 {
     const double bLow = std::abs(b.hi) * (1 - 0x1p-50) - b.err * kSafe; // <= |exact b|
     cx.require(std::abs(b.hi) >= 0x1p-400 && bLow > 0 && std::abs(a.hi) <= 0x1p900 &&
@@ -136,7 +164,7 @@ GJK_CORRECT_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
     if (!cx.ok)
         return {};
     const double th = a.hi / b.hi;
-    const DD c = twoProduct(b.hi, th);
+    const DD c = Cx::Products::twoProduct(b.hi, th);
     const DD t = fastTwoSum(c.hi, b.lo * th);
     const DD r = fastTwoSum(t.hi, t.lo + c.lo);
     const DD pi = twoSum(a.hi, -r.hi);
@@ -148,14 +176,14 @@ GJK_CORRECT_INLINE Approx div(Context& cx, const Approx& a, const Approx& b)
     return {q.hi, q.lo, e * kSafe};
 }
 
-GJK_CORRECT_INLINE Approx squareRoot(Context& cx, const Approx& a)
+template <class Cx> GJK_CORRECT_INLINE Approx squareRoot(Cx& cx, const Approx& a)
 {
     const double aLow = a.hi * (1 - 0x1p-50) - a.err * kSafe; // <= exact a
     cx.require(a.hi >= 0x1p-800 && a.hi <= 0x1p900 && aLow > 0);
     if (!cx.ok)
         return {};
     const double s = std::sqrt(a.hi);
-    const DD p = twoProduct(s, s);
+    const DD p = Cx::Products::twoProduct(s, s);
     const double r = ((a.hi - p.hi) - p.lo) + a.lo;
     const DD q = fastTwoSum(s, r / (2 * s));
     // |sqrt(a) - sqrt(av)| = |a - av| / (sqrt(a) + sqrt(av)) <= err / sqrt(aLow)
@@ -189,19 +217,20 @@ struct Terms
         ok = ok && std::abs(x) <= 0x1p900;
         big[nb++] = x;
     }
-    GJK_CORRECT_INLINE void addProduct(double a, double b)
+    template <class P = DekkerProducts> GJK_CORRECT_INLINE void addProduct(double a, double b)
     {
-        const DD p = twoProduct(a, b);
+        const DD p = P::twoProduct(a, b);
         ok = ok && exactProduct(a, b, p.hi);
         big[nb++] = p.hi;
         small[ns++] = p.lo;
     }
     // a * (x - y), the difference taken exactly first.
+    template <class P = DekkerProducts>
     GJK_CORRECT_INLINE void addProductOfDifference(double a, double x, double y)
     {
         const DD d = twoSum(x, -y);
-        addProduct(a, d.hi);
-        addProduct(a, d.lo);
+        addProduct<P>(a, d.hi);
+        addProduct<P>(a, d.lo);
     }
 };
 
@@ -214,7 +243,7 @@ struct Terms
 // VecSum passes over all the pieces follow (up to three), each shrinking it by about u. A rest of
 // 2^-40 leaves a bound of n 2^-92 of the result, far below the half ulp (2^-53) the final
 // rounding must resolve.
-GJK_CORRECT_INLINE Approx exactSum(Context& cx, Terms t)
+template <class Cx> GJK_CORRECT_INLINE Approx exactSum(Cx& cx, Terms t)
 {
     cx.require(t.ok);
     if (t.nb == 0)
@@ -404,6 +433,32 @@ GJK_CORRECT_INLINE bool low29BitsZero(V2 a, V2 b, V2 c, V2 d)
     return (m & low) == 0;
 #endif
 }
+#if defined(__GNUC__)
+GJK_CORRECT_INLINE DD2 twoProductFma(V2 a, V2 b) // twoProductFma above, lane by lane
+{
+    const V2 p = a * b;
+    return {p, pair(__builtin_fma(a[0], b[0], -p[0]), __builtin_fma(a[1], b[1], -p[1]))};
+}
+#endif
+
+// The two error-free products, as an evaluation context's template argument. Dekker's is the
+// default and the only one where the compiler is not GCC or Clang.
+struct DekkerProducts
+{
+    GJK_CORRECT_INLINE static DD twoProduct(double a, double b)
+    {
+        return correct::twoProduct(a, b);
+    }
+    GJK_CORRECT_INLINE static DD2 twoProduct(V2 a, V2 b) { return correct::twoProduct(a, b); }
+};
+#if defined(__GNUC__)
+struct FmaProducts
+{
+    GJK_CORRECT_INLINE static DD twoProduct(double a, double b) { return twoProductFma(a, b); }
+    GJK_CORRECT_INLINE static DD2 twoProduct(V2 a, V2 b) { return twoProductFma(a, b); }
+};
+#endif
+
 // twoProduct for factors that are both floats (isFloat2): the product is exact, its trailing part
 // 0, exactly what twoProduct returns for it.
 GJK_CORRECT_INLINE DD2 floatProduct(V2 a, V2 b)
@@ -425,13 +480,14 @@ GJK_CORRECT_INLINE DD2 fastTwoSum(V2 a, V2 b) // fastTwoSum above, lane by lane
     return {s, b - (s - a)};
 }
 // mul above, lane by lane: the products a0 b0 and a1 b1 at once.
-GJK_CORRECT_INLINE void mulLanes(Context& cx, const Approx& a0, const Approx& b0, const Approx& a1,
+template <class Cx>
+GJK_CORRECT_INLINE void mulLanes(Cx& cx, const Approx& a0, const Approx& b0, const Approx& a1,
                                  const Approx& b1, Approx& r0, Approx& r1)
 {
     const V2 ah = pair(a0.hi, a1.hi), al = pair(a0.lo, a1.lo), ae = pair(a0.err, a1.err);
     const V2 bh = pair(b0.hi, b1.hi), bl = pair(b0.lo, b1.lo), be = pair(b0.err, b1.err);
     cx.require(all2((abs2(ah) <= 0x1p450) & (abs2(bh) <= 0x1p450))); // products <= 2^900
-    const DD2 p = twoProduct(ah, bh);
+    const DD2 p = Cx::Products::twoProduct(ah, bh);
     const V2 t = ah * bl + al * bh;
     const DD2 r = fastTwoSum(p.hi, p.lo + t);
     const V2 magA = (1 + 0x1p-50) * abs2(ah), magB = (1 + 0x1p-50) * abs2(bh); // mag() above
@@ -458,13 +514,13 @@ GJK_CORRECT_INLINE void addLanes(const Approx& a0, const Approx& b0, const Appro
     r0 = {s.hi[0], s.lo[0], e[0]};
     r1 = {s.hi[1], s.lo[1], e[1]};
 }
-GJK_CORRECT_INLINE Approx dot(Context& cx, const ApproxVec& a, const ApproxVec& b)
+template <class Cx> GJK_CORRECT_INLINE Approx dot(Cx& cx, const ApproxVec& a, const ApproxVec& b)
 {
     Approx p, q;
     mulLanes(cx, a.x, b.x, a.y, b.y, p, q);
     return add(p, q);
 }
-GJK_CORRECT_INLINE Approx cross(Context& cx, const ApproxVec& a, const ApproxVec& b)
+template <class Cx> GJK_CORRECT_INLINE Approx cross(Cx& cx, const ApproxVec& a, const ApproxVec& b)
 {
     Approx p, q;
     mulLanes(cx, a.x, b.y, a.y, b.x, p, q);
