@@ -12,7 +12,14 @@ import json
 import sys
 
 CONTEXT_VOLATILE = ["date", "host", "threads", "elapsed_s", "throughput", "command", "git_revision"]
-STATS_VOLATILE = ["ns_per_query", "ns_spread", "ratio_to_baseline", "timing_passes"]
+STATS_VOLATILE = [
+    "ns_per_query",
+    "ns_spread",
+    "ratio_to_baseline",
+    "timing_passes",
+    "prepare_ns_per_shape",
+    "prepared_ns_per_query",
+]
 # How the truth was decided, not what it is (--truth filtered and exact give the same truths, bit
 # for bit; docs/exact.md, "The filter"): the context's "truth" and the Stats' "truth" counts.
 TRUTH_PATH = "truth"

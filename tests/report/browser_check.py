@@ -822,13 +822,26 @@ def check_data_views(views, report):
             num((f.get("variants") or {}).get(v["name"], {}).get("prepare_ns_per_shape")) > 0
             for f in fams.values()
         )
-        want = (
-            ["no preparation: the plain query takes the points as given"]
-            if t.get("preparation") == "none"
-            else [t.get("includes")]
-            + (["timed by the adapter"] if t.get("timed_by") == "adapter" else [])
-            + (["ns/shape to prepare"] if prepared else [])
-        )
+        own = t.get("preparation") == "none" and "plugin" not in v
+        form = t.get("prepared") if isinstance(t.get("prepared"), dict) else None
+        if own and form is None:  # a report written before timing.prepared
+            want = ["no preparation: the plain query takes the points as given"]
+        elif own and not form.get("timed"):
+            want = ["the plain query, the points as given; " + str(form.get("includes"))]
+        elif own:  # both figures, weighted by the families' cases, and the preparation
+            want = [
+                "plain: ",
+                " ns/query, the points as given; prepared: ",
+                str(form.get("includes")),
+            ]
+            want += ["ns/shape to prepare"] if prepared else []
+            fails += check_own_figures(v["name"], text or "", fams)
+        else:
+            want = (
+                [t.get("includes")]
+                + (["timed by the adapter"] if t.get("timed_by") == "adapter" else [])
+                + (["ns/shape to prepare"] if prepared else [])
+            )
         if text is None or any(w not in text for w in want):
             fails.append(
                 f'the context does not say what ns/query of {v.get("name")!r} includes ({want}): {text!r}'
@@ -846,6 +859,34 @@ def check_data_views(views, report):
         )
     fails += check_penetration(views, report, fams)
     log("data views checked:", checked, f"(invalid answers in all: {total_invalid})")
+    return fails
+
+
+def weighted(name, key, fams):
+    "A figure of the variant's family stats weighted by the families' cases; None when none has it."
+    pairs = [
+        (num(st.get(key)), num(st.get("cases")))
+        for f in fams.values()
+        for st in [(f.get("variants") or {}).get(name) or {}]
+        if num(st.get(key)) == num(st.get(key)) and num(st.get("cases")) > 0
+    ]
+    cases = sum(n for _, n in pairs)
+    return sum(x * n for x, n in pairs) / cases if cases else None
+
+
+def check_own_figures(name, text, fams):
+    """gjk2d's own variant with a prepared form: the context gives its plain and prepared ns/query
+    (ns_per_query and prepared_ns_per_query, weighted by the families' cases) to three digits, and
+    the prepared figure is there only when the report has it."""
+    fails = []
+    for label, key in (("plain", "ns_per_query"), ("prepared", "prepared_ns_per_query")):
+        m = re.search(label + r": ([0-9.,]+|—) ns/query", text)
+        want = weighted(name, key, fams)
+        shown = float(m.group(1).replace(",", "")) if m and m.group(1) != "—" else None
+        if m is None or (want is None) != (shown is None):
+            fails.append(f"the context gives {name!r} no {label} ns/query ({want}): {text!r}")
+        elif want is not None and abs(shown - want) > 0.005 * want:
+            fails.append(f"the context gives {name!r} {label} {shown} ns/query, not {want:.3g}")
     return fails
 
 

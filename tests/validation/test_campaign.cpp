@@ -15,6 +15,7 @@
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 using namespace gjkval;
 
@@ -624,16 +625,55 @@ TEST_CASE("the terminal summary reads like the report page's first screen", "[ca
 TEST_CASE("what a variant's ns/query includes, in report.md and on the terminal",
           "[campaign][report]")
 {
-    // Issue 50: variants[].timing and prepare_ns_per_shape. gjk2d's own variants prepare nothing,
-    // in one row; a variant that prepares its shapes has its preparation figure, the families'
-    // weighted by their cases; an adapter's own timing and a figure with shape set-up are marked.
+    // variants[].timing and prepare_ns_per_shape. gjk2d's own variants with a prepared form give
+    // two figures, the plain query's and the same queries' on prepared shapes, and the preparation
+    // per shape; one without it says why, in a row per reason; a variant that prepares its shapes
+    // has its preparation figure, the families' weighted by their cases; an adapter's own timing
+    // and a figure with shape set-up are marked.
     CampaignConfig c = smallConfig(2);
     c.families = {"random:200", "hard/talk-segment"};
     c.variants = parseVariants("double,float,double-closest-point");
     Json r = run(c).report;
-    CHECK_THAT(renderMarkdown(r),
-               Catch::Contains("| gjk2d's own (3 variants) | no preparation: the "
-                               "plain query takes the points as given | - |"));
+    for (const auto& f : r["families"])
+        for (const char* name : {"double", "float"})
+        {
+            INFO(f["name"] << " " << name);
+            const Json& st = f["variants"][name];
+            CHECK(st["ns_per_query"].get<double>() > 0);
+            CHECK(st["prepared_ns_per_query"].get<double>() > 0);
+            CHECK(st["prepare_ns_per_shape"].get<double>() > 0);
+        }
+    for (const auto& f : r["families"])
+    {
+        const Json& st = f["variants"]["double-closest-point"];
+        CHECK(st["ns_per_query"].get<double>() > 0);
+        CHECK(st["prepared_ns_per_query"].is_null());
+        CHECK(st["prepare_ns_per_shape"].is_null());
+    }
+    CHECK(r["variants"][0]["timing"]["prepared"]["timed"] == true);
+    CHECK(r["variants"][2]["timing"]["prepared"]["timed"] == false);
+    {
+        const std::string md = renderMarkdown(r);
+        CHECK_THAT(md, !Catch::Contains("no preparation: the plain query takes the points"));
+        std::size_t rows = 0; // in the timing table (the families' tables have rows per variant)
+        const std::size_t at = md.find("\n### Timing\n");
+        REQUIRE(at != std::string::npos);
+        for (const auto& l : linesOf(md.substr(at, md.find("\n#", at + 1) - at)))
+            if (l.rfind("| double | ", 0) == 0 || l.rfind("| float | ", 0) == 0)
+            {
+                ++rows;
+                CHECK_THAT(l,
+                           Catch::Matches("\\| [a-z]+ \\| plain: [0-9.]+ ns/query, the points as "
+                                          "given; prepared: [0-9.]+ ns/query, the same queries "
+                                          "on shapes prepared once by gjk::prepare [^|]* \\| "
+                                          "[0-9.]+ \\|"));
+            }
+        CHECK(rows == 2);
+        CHECK_THAT(md, Catch::Contains("| gjk2d's own (1 variant: double-closest-point) | the "
+                                       "plain query, the points as given; no prepared form: with "
+                                       "these options the query on prepared shapes runs the plain "
+                                       "query | - |"));
+    }
     // Made a prepared peer timed by its adapter (the names of a real one are tested with the
     // plugins): 100 ns/shape on 200 cases and 400 on 16 weigh to (100 * 200 + 400 * 16) / 216.
     Json& v = r["variants"][2];
@@ -647,8 +687,28 @@ TEST_CASE("what a variant's ns/query includes, in report.md and on the terminal"
                      r["families"][0]["variants"]["double-closest-point"]["cases"].get<double>(),
                  cases1 =
                      r["families"][1]["variants"]["double-closest-point"]["cases"].get<double>();
+    // double's figures made up as well, weighted alike: plain 60 and 90 ns/query, prepared 50 and
+    // 80, 20 and 30 ns/shape. A report written before timing.prepared (float's removed): its old
+    // words, in a row of their own.
+    const double d0 = r["families"][0]["variants"]["double"]["cases"].get<double>(),
+                 d1 = r["families"][1]["variants"]["double"]["cases"].get<double>();
+    for (auto [key, x0, x1] :
+         {std::tuple{"ns_per_query", 60.0, 90.0}, std::tuple{"prepared_ns_per_query", 50.0, 80.0},
+          std::tuple{"prepare_ns_per_shape", 20.0, 30.0}})
+    {
+        r["families"][0]["variants"]["double"][key] = x0;
+        r["families"][1]["variants"]["double"][key] = x1;
+    }
+    const auto weighed = [&](double x0, double x1) { return (x0 * d0 + x1 * d1) / (d0 + d1); };
+    r["variants"][1]["timing"].erase("prepared");
     const std::string md = renderMarkdown(r);
-    CHECK_THAT(md, Catch::Contains("| gjk2d's own (2 variants) |"));
+    CHECK_THAT(md, Catch::Contains(fmt::format("| double | plain: {:.1f} ns/query, the points as "
+                                               "given; prepared: {:.1f} ns/query, the same",
+                                               weighed(60, 90), weighed(50, 80))));
+    CHECK_THAT(md, Catch::Contains(fmt::format("per shape | {:.1f} |", weighed(20, 30))));
+    CHECK_THAT(md, Catch::Contains("| gjk2d's own (1 variant: float) | no preparation: the plain "
+                                   "query takes the points as given | - |"));
+    CHECK_THAT(md, !Catch::Contains("double-closest-point) |"));
     CHECK_THAT(md, Catch::Contains(fmt::format(
                        "| double-closest-point | the query alone; timed by the adapter | {:.1f} |",
                        (100 * cases0 + 400 * cases1) / (cases0 + cases1))));

@@ -376,6 +376,7 @@ TEST_CASE("the report's Stats keys keep their order", "[stats]")
                                            "ns_spread",
                                            "timing_passes",
                                            "prepare_ns_per_shape",
+                                           "prepared_ns_per_query",
                                            "ratio_to_baseline",
                                            "truth"}); // issue 34: appended
     std::vector<std::string> truth;

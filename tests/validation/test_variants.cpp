@@ -294,8 +294,63 @@ TEST_CASE("bench: the variants' passes alternate", "[variants][bench]")
     CHECK(r[1].nsPerQuery == 25.0);
     CHECK(r[0].passes == 3);
     CHECK(r[1].cases == 2);
-    CHECK(r[0].prepareNsPerShape == -1.0); // no preparation step
+    CHECK(r[0].prepareNsPerShape == -1.0); // a loop without a preparation step
     CHECK(r[1].prepareNsPerShape == 7.5);
+    CHECK(r[0].preparedNsPerQuery == -1.0); // only timeAlternated pairs a prepared loop
+}
+
+TEST_CASE("gjk2d's own variants are timed plain and on prepared shapes", "[variants][timing]")
+{
+    // The variants of the reference options, not batched, have a prepared form (the query on
+    // gjk::PreparedShape decides its range checks before the loop with those options alone): the
+    // table's names, listed here by hand.
+    std::set<std::string> withForm;
+    for (const auto& v : variantTable())
+        if (hasPreparedForm(v))
+            withForm.insert(v.name);
+    CHECK(withForm == std::set<std::string>{"double", "float", "double-warm", "float-warm",
+                                            "double-every-start", "float-every-start"});
+
+    // Timed: both figures and the preparation per shape for those, the plain figure alone for the
+    // others; a warm variant's prepared loop is warm as its plain one.
+    std::vector<PreparedCase> prepared;
+    for (int i = 0; i < 40; ++i)
+    {
+        Case c = caseOf(regular(6 + i % 5), regular(4 + i % 3, false));
+        c.b.px = 2.5 + 0.01 * i;
+        prepared.push_back(prepare(c));
+    }
+    std::vector<const PreparedCase*> cases;
+    for (const auto& p : prepared)
+        cases.push_back(&p);
+    const std::vector<const VariantInfo*> variants =
+        parseVariants("double,float-warm,double-closest-point,double-batch");
+    TimingConfig tc;
+    tc.minPasses = tc.maxPasses = 3;
+    tc.minPassSeconds = 1e-4;
+    const std::vector<TimingResult> r = timeAlternated(
+        std::vector<std::vector<const PreparedCase*>>(variants.size(), cases), variants, tc, 10);
+    REQUIRE(r.size() == variants.size());
+    for (std::size_t k = 0; k < r.size(); ++k)
+    {
+        INFO(variants[k]->name);
+        CHECK(r[k].nsPerQuery > 0); // the plain figure stays
+        CHECK(r[k].cases == cases.size());
+        CHECK(r[k].passes == 3);
+        if (k < 2)
+        {
+            CHECK(r[k].preparedNsPerQuery > 0);
+            CHECK(r[k].prepareNsPerShape > 0);
+        }
+        else
+        {
+            CHECK(r[k].preparedNsPerQuery == -1.0);
+            CHECK(r[k].prepareNsPerShape == -1.0);
+        }
+    }
+    CHECK(preparedLoop(cases, *variants[1], tc).warm);
+    CHECK_FALSE(preparedLoop(cases, *variants[0], tc).warm);
+    CHECK_FALSE(preparedLoop(cases, *variants[2], tc).pass); // no prepared form: an empty loop
 }
 
 TEST_CASE("every-start variants judge the worst answer over many starts", "[variants]")

@@ -1289,28 +1289,52 @@
     return sec;
   }
 
-  // What a variant's ns/query includes (report.variants[].timing) and, where it has a preparation
-  // step, the ns to prepare one shape (families[].variants[].prepare_ns_per_shape, weighted by the
-  // families' cases); null for a report written before the field. gjk2d's own variants prepare
-  // nothing. The same words as report.md's timing table (validation/src/report/report.cpp).
-  function timingText(v, report) {
-    var t = v && v.timing && typeof v.timing === 'object' ? v.timing : null;
-    if (!t) return null;
-    if (t.preparation === 'none')
-      return 'no preparation: the plain query takes the points as given';
+  // A figure of a variant's family stats (families[].variants[].KEY) weighted by the families'
+  // cases; null when no family has it.
+  function weightedFigure(v, report, key) {
     var sum = 0,
       cases = 0;
     families(report).forEach(function (f) {
       var st = familyVariants(f)[v.name];
-      if (st && isNum(st.prepare_ns_per_shape) && num(st.cases) > 0) {
-        sum += num(st.prepare_ns_per_shape) * num(st.cases);
+      if (st && isNum(st[key]) && num(st.cases) > 0) {
+        sum += num(st[key]) * num(st.cases);
         cases += num(st.cases);
       }
     });
+    return cases > 0 ? sum / cases : null;
+  }
+
+  // What a variant's ns/query includes (report.variants[].timing) and, where it has a preparation
+  // step, the ns to prepare one shape (families[].variants[].prepare_ns_per_shape); the figures
+  // weighted by the families' cases; null for a report written before the field. gjk2d's own
+  // variant: the plain query and, with a prepared form (timing.prepared.timed), both figures
+  // (ns_per_query and prepared_ns_per_query), else why it has none. The same words as report.md's
+  // timing table (validation/src/report/report.cpp, timingWords).
+  function timingText(v, report) {
+    var t = v && v.timing && typeof v.timing === 'object' ? v.timing : null;
+    if (!t) return null;
+    var prepare = weightedFigure(v, report, 'prepare_ns_per_shape');
+    var perShape = prepare !== null ? fmt(prepare) + ' ns/shape to prepare' : null;
+    if (t.preparation === 'none' && !v.plugin) {
+      var p = t.prepared && typeof t.prepared === 'object' ? t.prepared : null;
+      if (!p) return 'no preparation: the plain query takes the points as given';
+      if (!p.timed) return 'the plain query, the points as given; ' + String(p.includes || '');
+      var ns = function (key) {
+        var x = weightedFigure(v, report, key);
+        return x !== null ? fmt(x) : '—';
+      };
+      return [
+        'plain: ' + ns('ns_per_query') + ' ns/query, the points as given',
+        'prepared: ' + ns('prepared_ns_per_query') + ' ns/query, ' + String(p.includes || ''),
+        perShape,
+      ]
+        .filter(Boolean)
+        .join('; ');
+    }
     return [
       has(t.includes) ? String(t.includes) : null,
       t.timed_by === 'adapter' ? 'timed by the adapter' : null,
-      cases > 0 ? fmt(sum / cases) + ' ns/shape to prepare' : null,
+      perShape,
     ]
       .filter(Boolean)
       .join('; ');

@@ -342,6 +342,7 @@ void timeVariants(CampaignState& state, const CampaignConfig& config, const Eval
             s.nsMax = t[k].nsMax;
             s.timingPasses = t[k].passes;
             s.prepareNsPerShape = t[k].prepareNsPerShape;
+            s.preparedNsPerQuery = t[k].preparedNsPerQuery;
         }
         p.add(1);
     }

@@ -40,7 +40,8 @@ Json shardState(const CampaignState& state, const CampaignConfig& config, Shard 
         for (const auto& s : f.stats)
         {
             stats.push_back(s.state());
-            timing.push_back({s.nsPerQuery, s.nsMin, s.nsMax, s.timingPasses, s.prepareNsPerShape});
+            timing.push_back({s.nsPerQuery, s.nsMin, s.nsMax, s.timingPasses, s.prepareNsPerShape,
+                              s.preparedNsPerQuery});
         }
         std::vector<Case> worst;
         Json worstAt = Json::array();
@@ -165,8 +166,10 @@ void mergeShard(CampaignState& state, const Json& j, Shard shard, const EvalCont
                 f.stats[k].nsMin = t[1].get<double>();
                 f.stats[k].nsMax = t[2].get<double>();
                 f.stats[k].timingPasses = t[3].get<int>();
-                // A shard of gjk-shard/3 before the preparation was timed has four numbers.
+                // A shard of gjk-shard/3 before the preparation was timed has four numbers,
+                // before gjk2d's prepared shapes were timed five.
                 f.stats[k].prepareNsPerShape = t.size() > 4 ? t[4].get<double>() : -1.0;
+                f.stats[k].preparedNsPerQuery = t.size() > 5 ? t[5].get<double>() : -1.0;
             }
         }
         f.makeup.merge(MakeupFold::fromState(f.input->makeup, s.at("makeup")));

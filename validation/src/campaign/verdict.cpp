@@ -304,8 +304,8 @@ Json stripVolatile(Json r)
         c.erase(k);
     for (auto& f : r["families"])
         for (auto& [name, s] : f["variants"].items())
-            for (const char* k :
-                 {"ns_per_query", "ns_spread", "ratio_to_baseline", "timing_passes"})
+            for (const char* k : {"ns_per_query", "ns_spread", "ratio_to_baseline", "timing_passes",
+                                  "prepare_ns_per_shape", "prepared_ns_per_query"})
                 s.erase(k);
     return r;
 }

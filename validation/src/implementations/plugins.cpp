@@ -430,9 +430,19 @@ Json timingJson(const VariantInfo& v)
         "the query and the shapes' set-up, every call (no preparation step offered)",
     };
     const Preparation p = preparationOf(v);
-    return {{"preparation", preparationName(p)},
-            {"includes", includes[int(p)]},
-            {"timed_by", selfTimed(v) ? "adapter" : "gjk-validate"}};
+    Json j = {{"preparation", preparationName(p)},
+              {"includes", includes[int(p)]},
+              {"timed_by", selfTimed(v) ? "adapter" : "gjk-validate"}};
+    if (v.plugin == nullptr) // gjk2d's own: the second figure, on prepared shapes, or why none
+        j["prepared"] = {
+            {"timed", hasPreparedForm(v)},
+            {"includes", hasPreparedForm(v)
+                             ? "the same queries on shapes prepared once by gjk::prepare "
+                               "(gjk2d/prepared.hpp), the preparation timed apart, per shape"
+                         : v.batch ? "no prepared form: gjk::distanceBatchLanes takes plain inputs"
+                                   : "no prepared form: with these options the query on prepared "
+                                     "shapes runs the plain query"}};
+    return j;
 }
 
 const char* pluginKindName(PluginKind k)

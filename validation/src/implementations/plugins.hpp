@@ -67,7 +67,8 @@ Preparation preparationOf(const VariantInfo& v); // None for gjk2d's own variant
 // `timed` answers), not gjk-validate's clock.
 bool selfTimed(const VariantInfo& v);
 // report.json's variants[].timing: {"preparation": preparationName, "includes": what ns/query
-// includes in words, "timed_by": "gjk-validate" or "adapter"}.
+// includes in words, "timed_by": "gjk-validate" or "adapter"}; for gjk2d's own variants also
+// "prepared": {"timed": hasPreparedForm, "includes": what prepared_ns_per_query is, or why none}.
 Json timingJson(const VariantInfo& v);
 
 struct PluginImpl

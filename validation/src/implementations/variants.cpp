@@ -203,6 +203,11 @@ bool needsConvexOrder(const VariantInfo& v)
     return v.options.support == gjk::SupportStrategy::BinarySearch;
 }
 
+bool hasPreparedForm(const VariantInfo& v)
+{
+    return v.plugin == nullptr && !v.batch && v.options == gjk::referenceOptions;
+}
+
 const char* scalarName(Scalar s)
 {
     return s == Scalar::Float ? "float" : "double";

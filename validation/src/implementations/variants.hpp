@@ -71,6 +71,12 @@ const VariantInfo* findVariant(const std::string& name);
 // collinear points allowed, no repeated consecutive point); cases where they are not are skipped
 // as not applicable (PreparedCase::binaryOk).
 bool needsConvexOrder(const VariantInfo& v);
+// Whether the variant's query has a prepared form of its own, timed beside the plain one
+// (timing/timing.hpp, preparedLoop): gjk::distance on two gjk::PreparedShape (gjk2d/prepared.hpp)
+// decides its range checks before the loop with the reference options only; with any other
+// options that overload runs the plain query, and gjk::distanceBatchLanes takes plain inputs. So:
+// gjk2d's own variants of the reference options, cold, warm or every start, not batched.
+bool hasPreparedForm(const VariantInfo& v);
 // The library uses the linear scan for shapes of at most this many points whatever the strategy
 // (gjk2d/types.hpp, usesBinarySearch): they always fit.
 inline constexpr int kLinearSupportMaxPoints = gjk::linearScanMaxCount;

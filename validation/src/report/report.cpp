@@ -176,19 +176,20 @@ double numberOf(const Json& v)
 
 // One variant over the families, as the terminal's variant table and report.md's timing table
 // give it: counts summed; the largest error / bound (or, a variant without a bound, normalised
-// error); ns/query and ns/shape to prepare as the timed families' figures weighted by their cases
-// (NaN: not measured in any family).
+// error); ns/query (plain and, gjk2d's own, on prepared shapes) and ns/shape to prepare as the
+// timed families' figures weighted by their cases (NaN: not measured in any family).
 struct VariantTotals
 {
     std::uint64_t cases = 0, failures = 0, misclassified = 0, violations = 0, outsideBound = 0;
     double worstBound = std::nan(""), worstNorm = std::nan("");
     double nsPerQuery = std::nan(""), prepareNsPerShape = std::nan("");
+    double preparedNsPerQuery = std::nan("");
 };
 
 VariantTotals variantTotals(const Json& r, const std::string& name)
 {
     VariantTotals t;
-    double ns[2] = {0, 0}, prepare[2] = {0, 0}; // sum of figure x cases, sum of cases
+    double ns[2] = {0, 0}, prepare[2] = {0, 0}, prepared[2] = {0, 0}; // figure x cases, cases
     for (const auto& f : r["families"])
     {
         if (!f["variants"].contains(name))
@@ -206,7 +207,8 @@ VariantTotals variantTotals(const Json& r, const std::string& name)
         if (e.contains("normalized"))
             t.worstNorm = std::fmax(t.worstNorm, numberOf(e["normalized"]["max"]));
         for (auto [key, sums] :
-             {std::pair{"ns_per_query", ns}, std::pair{"prepare_ns_per_shape", prepare}})
+             {std::pair{"ns_per_query", ns}, std::pair{"prepare_ns_per_shape", prepare},
+              std::pair{"prepared_ns_per_query", prepared}})
             if (st.contains(key) && st[key].is_number() && n > 0)
             {
                 sums[0] += st[key].get<double>() * double(n);
@@ -217,6 +219,8 @@ VariantTotals variantTotals(const Json& r, const std::string& name)
         t.nsPerQuery = ns[0] / ns[1];
     if (prepare[1] > 0)
         t.prepareNsPerShape = prepare[0] / prepare[1];
+    if (prepared[1] > 0)
+        t.preparedNsPerQuery = prepared[0] / prepared[1];
     return t;
 }
 
@@ -302,17 +306,41 @@ std::string penetrationWords(const PenetrationTotals& t, bool judgedVariant, boo
                        largestText(t.rel));
 }
 
+// Whether variants[].timing says gjk2d's own variant: the plain query, nothing prepared for it.
+bool ownTiming(const Json& v)
+{
+    return v["timing"].value("preparation", "") == "none" && !v.contains("plugin");
+}
+
+// Whether gjk2d's own variant was timed on prepared shapes too (variants[].timing.prepared.timed).
+bool preparedTimed(const Json& v)
+{
+    const Json& t = v["timing"];
+    return t.contains("prepared") && t["prepared"].is_object() &&
+           t["prepared"].value("timed", false);
+}
+
 // What a variant's ns/query includes (variants[].timing, docs/report-schema.md), in words; "" for a
-// report written before the field. gjk2d's own variants have nothing to prepare.
-std::string timingWords(const Json& v)
+// report written before the field. gjk2d's own variant: the plain query and, with a prepared form
+// (timing.prepared.timed), both figures (`totals`: variantTotals), else why it has none (a report
+// written before timing.prepared: that the plain query takes the points as given).
+std::string timingWords(const Json& v, const VariantTotals& totals)
 {
     if (!v.contains("timing") || !v["timing"].is_object())
         return "";
     const Json& t = v["timing"];
-    if (t.value("preparation", "") == "none")
+    if (!ownTiming(v))
+        return t.value("includes", "") +
+               (t.value("timed_by", "") == "adapter" ? "; timed by the adapter" : "");
+    if (!t.contains("prepared") || !t["prepared"].is_object())
         return "no preparation: the plain query takes the points as given";
-    return t.value("includes", "") +
-           (t.value("timed_by", "") == "adapter" ? "; timed by the adapter" : "");
+    const Json& p = t["prepared"];
+    if (!preparedTimed(v))
+        return "the plain query, the points as given; " + p.value("includes", "");
+    const auto ns = [](double x) { return std::isnan(x) ? "-" : fmt::format("{:.1f}", x); };
+    return fmt::format("plain: {} ns/query, the points as given; prepared: {} ns/query, {}",
+                       ns(totals.nsPerQuery), ns(totals.preparedNsPerQuery),
+                       p.value("includes", ""));
 }
 
 } // namespace
@@ -429,40 +457,46 @@ std::string penetrationMarkdown(const Json& r, const std::map<std::string, bool>
 }
 
 // What each variant's ns/query includes and who timed it (variants[].timing), and its preparation
-// figure where it has one; gjk2d's own variants, which prepare nothing, in one row. Nothing for a
-// report written before the field.
+// figure where it has one. gjk2d's own variants with a prepared form a row each, with both
+// figures; those without one in a row per reason, in the order first met. Nothing for a report
+// written before the field.
 std::string timingMarkdown(const Json& r)
 {
     std::string rows;
-    std::size_t own = 0;
+    std::vector<std::pair<std::string, std::vector<std::string>>> unprepared; // words, variants
     for (const auto& v : r["variants"])
     {
-        const std::string words = timingWords(v);
+        const std::string name = v["name"].get<std::string>();
+        const VariantTotals t = variantTotals(r, name);
+        const std::string words = timingWords(v, t);
         if (words.empty())
             continue;
-        if (v["timing"].value("preparation", "") == "none" && !v.contains("plugin"))
+        if (ownTiming(v) && !preparedTimed(v))
         {
-            ++own;
+            auto at = std::find_if(unprepared.begin(), unprepared.end(),
+                                   [&](const auto& u) { return u.first == words; });
+            if (at == unprepared.end())
+                at = unprepared.insert(unprepared.end(), {words, {}});
+            at->second.push_back(name);
             continue;
         }
-        const double prepare = variantTotals(r, v["name"].get<std::string>()).prepareNsPerShape;
-        rows += fmt::format("| {} | {} | {} |\n", v["name"].get<std::string>(), mdEscape(words),
-                            std::isnan(prepare) ? "-" : fmt::format("{:.1f}", prepare));
+        rows += fmt::format(
+            "| {} | {} | {} |\n", name, mdEscape(words),
+            std::isnan(t.prepareNsPerShape) ? "-" : fmt::format("{:.1f}", t.prepareNsPerShape));
     }
-    if (own > 0)
-        rows =
-            fmt::format("| gjk2d's own ({} variants) | no preparation: the plain query takes the "
-                        "points as given | - |\n",
-                        own) +
-            rows;
+    for (const auto& [words, names] : unprepared)
+        rows += fmt::format("| gjk2d's own ({} variant{}: {}) | {} | - |\n", names.size(),
+                            names.size() == 1 ? "" : "s", fmt::join(names, ", "), mdEscape(words));
     if (rows.empty())
         return rows;
     return "\n### Timing\n\n| variant | ns/query includes | ns/shape to prepare "
            "|\n|---|---|---|\n" +
            rows +
-           "\nns/shape to prepare: preparing one shape, timed apart from the query (the families' "
-           "figures weighted by their cases; - when there is nothing to prepare or it was not "
-           "timed). ns/query per family is in the families' tables.\n";
+           "\nns/query and ns/shape to prepare: the families' figures weighted by their cases; "
+           "preparing one shape is timed apart from the query (- when there is nothing to prepare "
+           "or it was not timed). ns/query per family is in the families' tables; gjk2d's own "
+           "variants give both figures, the plain query's (ns_per_query) and the same queries' on "
+           "prepared shapes (prepared_ns_per_query).\n";
 }
 
 // The variants: judged or comparison, type, options (or the plugin's path) and the bound.

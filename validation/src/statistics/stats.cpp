@@ -540,6 +540,7 @@ Json Stats::toJson() const
     j["ns_spread"] = nsPerQuery >= 0 ? Json::array({nsMin, nsMax}) : Json(nullptr);
     j["timing_passes"] = timingPasses;
     j["prepare_ns_per_shape"] = prepareNsPerShape >= 0 ? Json(prepareNsPerShape) : Json(nullptr);
+    j["prepared_ns_per_query"] = preparedNsPerQuery >= 0 ? Json(preparedNsPerQuery) : Json(nullptr);
     j["ratio_to_baseline"] = ratioToBaseline >= 0 ? Json(ratioToBaseline) : Json(nullptr);
     j["truth"] = truthJson(*this); // last (Section::Truth)
     return j;

@@ -200,8 +200,12 @@ struct Stats
     double nsPerQuery = -1, nsMin = -1, nsMax = -1, ratioToBaseline = -1;
     int timingPasses = 0;
     // The preparation of one shape, timed apart from the query (a variant with a preparation step:
-    // implementations/plugins.hpp, Preparation); -1: none measured.
+    // implementations/plugins.hpp, Preparation; gjk2d's own with a prepared form: gjk::prepare);
+    // -1: none measured.
     double prepareNsPerShape = -1;
+    // gjk2d's own variant with a prepared form: the same queries on prepared shapes, nsPerQuery
+    // staying the plain query's (timing/timing.hpp, preparedLoop); -1: none measured.
+    double preparedNsPerQuery = -1;
 
     // Folds one judged query (case `name`, its place `index` in the family) of variant `vi`.
     void add(const VariantOutcome& v, const std::string& name, std::uint64_t index,

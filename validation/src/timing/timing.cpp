@@ -1,6 +1,6 @@
 // Timed passes of the variants: the cases in one contiguous array per scalar type, a loop per kind
-// of variant (plain, correctly rounded, batch, plugin) that keeps the whole answer, and the median
-// over the passes.
+// of variant (plain, on prepared shapes, correctly rounded, batch, plugin) that keeps the whole
+// answer, and the median over the passes.
 #include "timing/timing.hpp"
 
 #include "evaluate/evaluate.hpp"
@@ -129,6 +129,82 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
+// A variant's prepared form (preparedLoop): the TimingSet's shapes prepared once by gjk::prepare,
+// the preparation timed here, apart from the passes.
+template <class T> struct PreparedTimingSet
+{
+    TimingSet<T> set;
+    std::vector<gjk::PreparedShape<T>> a, b;
+    double nsPerShape = -1;
+
+    PreparedTimingSet(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
+                      bool warm)
+        : set(cases, o, warm)
+    {
+        const std::size_t n = set.inputs.size();
+        a.reserve(n);
+        b.reserve(n);
+        const auto t0 = Clock::now();
+        for (const gjk::DistanceInput<T>& in : set.inputs)
+        {
+            a.push_back(gjk::prepare(in.proxyA));
+            b.push_back(gjk::prepare(in.proxyB));
+        }
+        const auto t1 = Clock::now();
+        if (n > 0)
+            nsPerShape = std::chrono::duration<double, std::nano>(t1 - t0).count() / double(2 * n);
+    }
+};
+
+// timePass's loops on prepared shapes: the same queries, cold or from copies of the warm caches,
+// through the prepared overload of gjk::distance with the case's transforms.
+template <class T>
+double timePassPrepared(const PreparedTimingSet<T>& p, const gjk::Options& o, int reps)
+{
+    const TimingSet<T>& set = p.set;
+    const auto t0 = Clock::now();
+    double acc = 0;
+    const std::size_t n = set.inputs.size();
+    if (set.caches.empty())
+    {
+        for (int r = 0; r < reps; ++r)
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                gjk::SimplexCache cache;
+                const gjk::DistanceInput<T>& in = set.inputs[i];
+                acc += kept(gjk::distance(p.a[i], in.transformA, p.b[i], in.transformB, cache, o));
+            }
+    }
+    else
+    {
+        for (int r = 0; r < reps; ++r)
+            for (std::size_t i = 0; i < n; ++i)
+            {
+                gjk::SimplexCache cache = set.caches[i];
+                const gjk::DistanceInput<T>& in = set.inputs[i];
+                acc += kept(gjk::distance(p.a[i], in.transformA, p.b[i], in.transformB, cache, o));
+            }
+    }
+    const auto t1 = Clock::now();
+    g_timingSink = g_timingSink + acc;
+    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
+template <class T>
+TimedLoop preparedLoopT(const std::vector<const PreparedCase*>& cases, const gjk::Options& o,
+                        bool warm)
+{
+    TimedLoop loop;
+    loop.cases = cases.size();
+    loop.warm = warm;
+    if (cases.empty())
+        return loop;
+    auto state = std::make_shared<PreparedTimingSet<T>>(cases, o, warm);
+    loop.pass = [state, o](int reps) { return timePassPrepared<T>(*state, o, reps); };
+    loop.prepareNsPerShape = [state] { return state->nsPerShape; };
+    return loop;
+}
+
 // A batch variant: each rep is one gjk::distanceBatchLanes over all the cases (fresh caches, or
 // copies of the warm ones), as an engine's step or a campaign's chunk would call it.
 template <class T>
@@ -244,6 +320,16 @@ TimedLoop variantLoop(const std::vector<const PreparedCase*>& cases, const Varia
                                      : loopT<double>(cases, v.options, warm, v.batch);
 }
 
+TimedLoop preparedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                       const TimingConfig& cfg)
+{
+    if (!hasPreparedForm(v))
+        return {};
+    const bool warm = v.start == Start::Warm || cfg.warm;
+    return v.scalar == Scalar::Float ? preparedLoopT<float>(cases, v.options, warm)
+                                     : preparedLoopT<double>(cases, v.options, warm);
+}
+
 PinnedToOneCpu::PinnedToOneCpu()
 {
     CPU_ZERO(&previous_);
@@ -306,12 +392,28 @@ std::vector<TimingResult> timeAlternated(const std::vector<std::vector<const Pre
                                          const std::vector<const VariantInfo*>& variants,
                                          const TimingConfig& cfg, double pluginTimeoutSeconds)
 {
+    const std::size_t n = variants.size();
     std::vector<TimedLoop> loops;
-    for (std::size_t k = 0; k < variants.size(); ++k)
+    for (std::size_t k = 0; k < n; ++k)
         loops.push_back(variantLoop(cases[k], *variants[k], cfg, pluginTimeoutSeconds));
+    std::vector<std::size_t> prepared(n, 0); // the index of variant k's prepared loop; 0: none
+    for (std::size_t k = 0; k < n; ++k)
+        if (hasPreparedForm(*variants[k]) && !cases[k].empty())
+        {
+            prepared[k] = loops.size();
+            loops.push_back(preparedLoop(cases[k], *variants[k], cfg));
+        }
     std::vector<TimingResult> results = medianOfAlternatedPasses(loops, cfg);
-    for (std::size_t k = 0; k < results.size(); ++k)
+    for (std::size_t k = 0; k < n; ++k)
+    {
         results[k].cases = loops[k].cases;
+        if (prepared[k] > 0)
+        {
+            results[k].preparedNsPerQuery = results[prepared[k]].nsPerQuery;
+            results[k].prepareNsPerShape = results[prepared[k]].prepareNsPerShape;
+        }
+    }
+    results.resize(n);
     return results;
 }
 

@@ -29,9 +29,14 @@ struct TimingResult
     int repsPerPass = 0; // loops over the cases in one pass
     std::size_t cases = 0;
     bool warm = false; // warm-started queries were timed
-    // A variant with a preparation step (Preparation::Shape or Case): the preparation of all the
-    // timed cases' shapes, once, over their number; -1: not measured.
+    // A variant with a preparation step (Preparation::Shape or Case), or gjk2d's own with a
+    // prepared form (gjk::prepare): the preparation of all the timed cases' shapes, once, over
+    // their number; -1: not measured.
     double prepareNsPerShape = -1;
+    // gjk2d's own variant with a prepared form (hasPreparedForm; timeAlternated): the median per
+    // query of the same queries on prepared shapes (preparedLoop), nsPerQuery staying the plain
+    // query's; -1: not measured.
+    double preparedNsPerQuery = -1;
 };
 
 // A variant's timed loop over `cases` (none skipped for it: see skipReason()): pass(reps) runs
@@ -50,9 +55,9 @@ struct TimedLoop
 };
 
 // The one timed loop of every kind of variant, for `run` (per family) and `bench`:
-// - gjk2d's: cold queries (fresh SimplexCache), or warm ones when v.start is Start::Warm or
-//   cfg.warm (the caches prepared by a cold query of each case before timing, each timed query
-//   starting from a copy of its case's cache); nothing to prepare (Preparation::None);
+// - gjk2d's: the plain query (Preparation::None: the points as given), cold (fresh SimplexCache),
+//   or warm when v.start is Start::Warm or cfg.warm (the caches prepared by a cold query of each
+//   case before timing, each timed query starting from a copy of its case's cache);
 // - a shared library's, in a served child (timing/plugin_timing.hpp, sharedLibraryLoop): on
 //   prepared shapes where it exports gjk2d_plugin_prepared, else through distance_f/distance_d;
 // - an executable adapter's (adapterLoop, its own figures) and an in-process callback's
@@ -60,9 +65,19 @@ struct TimedLoop
 TimedLoop variantLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
                       const TimingConfig& cfg, double pluginTimeoutSeconds);
 
+// gjk2d's own variant's second loop, on prepared shapes (hasPreparedForm; an empty loop without
+// one): as a peer's prepared shapes are timed (plugin_timing.hpp, sharedLibraryLoop), every case's
+// two shapes prepared once by gjk::prepare, timed apart (prepareNsPerShape: the whole preparation
+// over the number of shapes); a pass is the same queries as variantLoop's, cold or warm alike, on
+// the prepared shapes and the case's transforms.
+TimedLoop preparedLoop(const std::vector<const PreparedCase*>& cases, const VariantInfo& v,
+                       const TimingConfig& cfg);
+
 // Times every variant k over cases[k], their passes alternated (medianOfAlternatedPasses): the
-// timing of `run` (per family) and of `bench`. A loop that is lost (a plugin's crash or hang, an
-// adapter's refused figure) gives nsPerQuery = -1, with a line on stderr.
+// timing of `run` (per family) and of `bench`. A variant with a prepared form has its
+// preparedLoop alternated with the others too (TimingResult::preparedNsPerQuery and
+// prepareNsPerShape). A loop that is lost (a plugin's crash or hang, an adapter's refused figure)
+// gives nsPerQuery = -1, with a line on stderr.
 std::vector<TimingResult> timeAlternated(const std::vector<std::vector<const PreparedCase*>>& cases,
                                          const std::vector<const VariantInfo*>& variants,
                                          const TimingConfig& cfg, double pluginTimeoutSeconds);
