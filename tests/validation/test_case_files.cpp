@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -17,6 +18,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <set>
 #include <thread>
 
 #include <fcntl.h>
@@ -721,6 +723,35 @@ TEST_CASE("duplicate names are found among many, in a few bytes a name", "[cases
     CHECK(names.insert("random/200000"));
     CHECK(names.insert(""));
     CHECK_FALSE(names.insert(""));
+}
+
+TEST_CASE("the name set answers as a set of strings, whichever way it keeps a name", "[cases]")
+{
+    // Names of every kind NameSet keeps apart: counted (a stem and a counter, in order, shuffled
+    // past kMaxRanges ranges, or for more stems than kCountedStems), and hashed (no counter, a
+    // leading 0, 19 digits). Each is inserted twice, in a shuffled order; std::set decides.
+    std::vector<std::string> names;
+    for (int i = 0; i < 5000; ++i)
+        names.push_back("random/" + std::to_string(i)); // in order: one range
+    for (int i = 0; i < 3000; ++i)
+        names.push_back("s/" + std::to_string(i * 7 % 3001 * 2)); // even only: past kMaxRanges
+    for (std::size_t stem = 0; stem < NameSet::kCountedStems + 10; ++stem)
+        names.push_back("stem" + std::to_string(stem) + "-" + std::to_string(stem % 3));
+    for (const char* n : {"0", "1", "00", "01", "c01", "c1", "c10", "x", "", "1234567890123456789",
+                          "123456789012345678", "c999999999999999999", "c99999999999999999"})
+        names.emplace_back(n);
+    std::vector<std::string> order = names;
+    order.insert(order.end(), names.begin(), names.end());
+    std::mt19937_64 rng(7);
+    std::shuffle(order.begin(), order.end(), rng);
+    NameSet set;
+    std::set<std::string> reference;
+    for (const std::string& n : order)
+    {
+        INFO(n);
+        REQUIRE(set.insert(n) == reference.insert(n).second);
+    }
+    CHECK(reference.size() == names.size()); // the names listed are all different
 }
 
 TEST_CASE("the streaming reader reads from disk what the whole-file reader reads", "[cases][files]")

@@ -528,7 +528,7 @@ CaseFileSummary readBinary(const std::function<std::size_t(char*, std::size_t)>&
     CaseFileSummary summary;
     bool header = false, end = false;
     std::size_t blocks = 0;
-    NameSet names; // about 6 bytes a case, as the JSON reader keeps them (case_fields.hpp)
+    NameSet names; // as the JSON reader keeps them (case_fields.hpp)
     const auto where = [&]
     {
         return header ? fmt::format("in block {} (after case {})", blocks, summary.entries)

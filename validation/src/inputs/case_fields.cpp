@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 
 namespace gjkval
 {
@@ -75,11 +76,80 @@ std::uint64_t record(const unsigned char* p)
         v = v << 8 | p[i];
     return v;
 }
+
+// A name's trailing counter: where its digits start and their value, or nullopt when it has
+// none that NameSet counts (none, a leading 0, or more than 18 digits: the value fits 63 bits).
+std::optional<std::pair<std::size_t, std::uint64_t>> trailingCounter(std::string_view name)
+{
+    std::size_t start = name.size();
+    while (start > 0 && name[start - 1] >= '0' && name[start - 1] <= '9')
+        --start;
+    const std::size_t digits = name.size() - start;
+    if (digits == 0 || digits > 18 || (digits > 1 && name[start] == '0'))
+        return std::nullopt;
+    std::uint64_t value = 0;
+    for (std::size_t i = start; i < name.size(); ++i)
+        value = value * 10 + std::uint64_t(name[i] - '0');
+    return std::pair{start, value};
+}
 } // namespace
 
 NameSet::NameSet() : buckets_(std::size_t(1) << 16) {}
 
 bool NameSet::insert(std::string_view name)
+{
+    const auto counter = trailingCounter(name);
+    if (!counter)
+        return insertHashed(name);
+    const std::string_view stem = name.substr(0, counter->first);
+    auto it = stems_.find(stem);
+    if (it == stems_.end())
+    {
+        if (stems_.size() >= kCountedStems) // a stem first seen now: hashed for good
+            return insertHashed(name);
+        it = stems_.emplace(std::string(stem), Stem{}).first;
+    }
+    return it->second.hashed ? insertHashed(name) : insertCounted(it, counter->second);
+}
+
+// Adds `counter` to its stem's ranges, merging with the ranges it touches; past kMaxRanges, the
+// stem's counters go to the hashes, and so do its names from then on.
+bool NameSet::insertCounted(std::map<std::string, Stem, std::less<>>::iterator stem,
+                            std::uint64_t counter)
+{
+    auto& ranges = stem->second.ranges;
+    auto next = ranges.upper_bound(counter); // the first range starting past counter
+    if (next != ranges.begin() && counter < std::prev(next)->second)
+        return false; // inside the range before
+    const bool joinsBefore = next != ranges.begin() && std::prev(next)->second == counter;
+    const bool joinsAfter = next != ranges.end() && next->first == counter + 1;
+    if (joinsBefore && joinsAfter)
+    {
+        std::prev(next)->second = next->second;
+        ranges.erase(next);
+    }
+    else if (joinsBefore)
+        std::prev(next)->second = counter + 1;
+    else if (joinsAfter)
+    {
+        const std::uint64_t end = next->second;
+        ranges.erase(next);
+        ranges.emplace(counter, end);
+    }
+    else
+        ranges.emplace(counter, counter + 1);
+    if (ranges.size() > kMaxRanges)
+    {
+        for (const auto& [first, end] : ranges)
+            for (std::uint64_t k = first; k < end; ++k)
+                insertHashed(stem->first + std::to_string(k));
+        ranges.clear();
+        stem->second.hashed = true;
+    }
+    return true;
+}
+
+bool NameSet::insertHashed(std::string_view name)
 {
     const std::uint64_t h = nameHash(name);
     std::vector<unsigned char>& b = buckets_[h >> 48];

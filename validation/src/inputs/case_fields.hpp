@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,19 +25,38 @@ const char* typeName(const RJson& j);
 // may not hold (names are printed, and looked up by `explain`), in either form of case file.
 bool isControl(std::string_view s);
 
-// The case names of a file seen so far, for the duplicate check, in memory that grows by about
-// 6 bytes a case (a file of any number of cases is read in one process): a name is kept as its
-// 64-bit hash, the top 16 bits choosing one of 65,536 buckets that each hold the other 48 bits
-// sorted. Two different names are taken for the same when their hashes are equal: for n names a
-// chance of about n^2 / 2^65 in the whole file (the hash mixes every byte of the name).
+// The case names of a file seen so far, for the duplicate check, in memory that does not grow
+// with the file when its names are a stem and a counter, as `generate`'s and gjk2d.write_cases'
+// are, and by about 6 bytes a case otherwise (a file of any number of cases is read in one
+// process):
+// - a name that ends in a counter (1 to 18 decimal digits, no leading 0) is kept exactly, as a
+//   range of its stem's counters, for the first kCountedStems stems, while a stem's ranges are at
+//   most kMaxRanges (past that, its counters seen so far move to the hashes);
+// - any other name is kept as its 64-bit hash, the top 16 bits choosing one of 65,536 buckets
+//   that each hold the other 48 bits sorted. Two different names are taken for the same when
+//   their hashes are equal: for n names a chance of about n^2 / 2^65 in the whole file (the hash
+//   mixes every byte of the name).
 class NameSet
 {
   public:
+    static constexpr std::size_t kCountedStems = 64;
+    static constexpr std::size_t kMaxRanges = 1024;
+
     NameSet();
     // True when `name` was not seen before (it is now).
     bool insert(std::string_view name);
 
   private:
+    struct Stem
+    {
+        std::map<std::uint64_t, std::uint64_t> ranges; // first counter -> one past the last
+        bool hashed = false;                           // its counters moved to the hashes
+    };
+    bool insertHashed(std::string_view name);
+    bool insertCounted(std::map<std::string, Stem, std::less<>>::iterator stem,
+                       std::uint64_t counter);
+
+    std::map<std::string, Stem, std::less<>> stems_;
     std::vector<std::vector<unsigned char>> buckets_;
 };
 
