@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fcntl.h>
 #include <filesystem>
@@ -178,6 +179,39 @@ TEST_CASE("cli report directory holds one whole run", "[cli]")
     }
     CHECK(contains(after.at("report.json"), "\"seed\": 2"));
     CHECK(leftovers(d).empty());
+}
+
+// elapsed_s accounts for the run: its phases add up to its total. Before the chunks' set-up (the
+// outcomes' allocation) was counted in exact, 3.7 % of a 100,000-case run went to no phase; the
+// bound below allows 0.5 % and a millisecond of clock reads between phases.
+TEST_CASE("cli report's elapsed_s phases add up to its total", "[cli]")
+{
+    const fs::path d = freshDir("elapsed") / "out";
+    for (const std::string source : {"generated", "file"})
+    {
+        INFO(source);
+        std::vector<std::string> args = {
+            "run",       "--variants", "double", "--no-timing", "--no-default-plugins",
+            "--threads", "1",          "--out",  d.string()};
+        if (source == "generated")
+            args.insert(args.end(), {"--family", "random:20000", "--seed", "5"});
+        else
+        {
+            const std::string cases = (d.parent_path() / "r.json").string();
+            REQUIRE(runCli({"generate", "--family", "random:20000", "--seed", "5", "--out", cases})
+                        .code == kExitPass);
+            args.insert(args.end(), {"--cases", cases});
+        }
+        REQUIRE(runCli(args).code == kExitPass);
+        const Json e = Json::parse(slurp(d / "report.json"))["context"]["elapsed_s"];
+        double phases = 0;
+        for (const auto& [key, v] : e.items())
+            if (key != "total")
+                phases += v.get<double>();
+        const double total = e["total"].get<double>();
+        CHECK(total > 0);
+        CHECK(std::abs(total - phases) <= 0.005 * total + 1e-3);
+    }
 }
 
 // The whole directory is replaced, so one that holds anything else is refused up front (exit 2)
