@@ -101,7 +101,10 @@ double timePassCorrect(const TimingSet<double>& set, const gjk::Options& o, int 
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
 }
 
-template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& o, int reps)
+// The timed loops: `reps` passes over the set, each query cold or from a copy of its case's warm
+// cache (as in the accuracy run), answered by query(i, cache). A template on the query, so that
+// each loop is compiled with its query inline.
+template <class T, class Query> double timeLoops(const TimingSet<T>& set, int reps, Query query)
 {
     const auto t0 = Clock::now();
     double acc = 0;
@@ -111,8 +114,8 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
         for (int r = 0; r < reps; ++r)
             for (std::size_t i = 0; i < n; ++i)
             {
-                gjk::SimplexCache cache; // cold, as in the accuracy run
-                acc += kept(gjk::distance(set.inputs[i], cache, o));
+                gjk::SimplexCache cache; // cold
+                acc += kept(query(i, cache));
             }
     }
     else
@@ -121,12 +124,19 @@ template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& 
             for (std::size_t i = 0; i < n; ++i)
             {
                 gjk::SimplexCache cache = set.caches[i]; // warm: from the case's previous query
-                acc += kept(gjk::distance(set.inputs[i], cache, o));
+                acc += kept(query(i, cache));
             }
     }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
     return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
+template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& o, int reps)
+{
+    return timeLoops(set, reps,
+                     [&](std::size_t i, gjk::SimplexCache& cache)
+                     { return gjk::distance(set.inputs[i], cache, o); });
 }
 
 // A variant's prepared form (preparedLoop): the TimingSet's shapes prepared once by gjk::prepare,
@@ -161,33 +171,13 @@ template <class T> struct PreparedTimingSet
 template <class T>
 double timePassPrepared(const PreparedTimingSet<T>& p, const gjk::Options& o, int reps)
 {
-    const TimingSet<T>& set = p.set;
-    const auto t0 = Clock::now();
-    double acc = 0;
-    const std::size_t n = set.inputs.size();
-    if (set.caches.empty())
-    {
-        for (int r = 0; r < reps; ++r)
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                gjk::SimplexCache cache;
-                const gjk::DistanceInput<T>& in = set.inputs[i];
-                acc += kept(gjk::distance(p.a[i], in.transformA, p.b[i], in.transformB, cache, o));
-            }
-    }
-    else
-    {
-        for (int r = 0; r < reps; ++r)
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                gjk::SimplexCache cache = set.caches[i];
-                const gjk::DistanceInput<T>& in = set.inputs[i];
-                acc += kept(gjk::distance(p.a[i], in.transformA, p.b[i], in.transformB, cache, o));
-            }
-    }
-    const auto t1 = Clock::now();
-    g_timingSink = g_timingSink + acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    return timeLoops(p.set, reps,
+                     [&](std::size_t i, gjk::SimplexCache& cache)
+                     {
+                         const gjk::DistanceInput<T>& in = p.set.inputs[i];
+                         return gjk::distance(p.a[i], in.transformA, p.b[i], in.transformB, cache,
+                                              o);
+                     });
 }
 
 template <class T>
