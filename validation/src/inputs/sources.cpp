@@ -158,10 +158,10 @@ CampaignInput fileInput(const std::string& path, std::string name, bool hold, Fi
             copy = std::make_shared<PipeCopy>(path);
         const std::string readPath = copy ? copy->path() : path;
         const bool cutShort = !isBinaryCaseFile(readPath) && !endsWithBrace(readPath);
-        in.counted =
-            check == FileCheck::Whole || cutShort || readToFirstEntry(readPath, path, *in.read);
-        if (in.counted && (check == FileCheck::Whole || cutShort))
+        const bool readWhole = check == FileCheck::Whole || cutShort; // cut short: for its message
+        if (readWhole)
             *in.read = streamCaseFile(readPath, path, [](CaseEntry&&) {});
+        in.counted = readWhole || readToFirstEntry(readPath, path, *in.read);
     }
     settleFileInput(in);
     in.stream = [path, whole, copy, read = in.read](std::size_t chunkCases,

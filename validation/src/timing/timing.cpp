@@ -27,6 +27,17 @@ namespace
 {
 using Clock = std::chrono::steady_clock;
 
+double nsBetween(Clock::time_point t0, Clock::time_point t1)
+{
+    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+}
+
+// Whether gjk2d's own variant is timed warm-started, plain or prepared alike.
+bool timedWarm(const VariantInfo& v, const TimingConfig& cfg)
+{
+    return v.start == Start::Warm || cfg.warm;
+}
+
 volatile double g_timingSink = 0; // keeps the timed loops from being optimised away
 
 // What a timed loop keeps of an answer: every number of it, summed as a tree (short dependency
@@ -98,7 +109,7 @@ double timePassCorrect(const TimingSet<double>& set, const gjk::Options& o, int 
         }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    return nsBetween(t0, t1);
 }
 
 // The timed loops: `reps` passes over the set, each query cold or from a copy of its case's warm
@@ -129,7 +140,7 @@ template <class T, class Query> double timeLoops(const TimingSet<T>& set, int re
     }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    return nsBetween(t0, t1);
 }
 
 template <class T> double timePass(const TimingSet<T>& set, const gjk::Options& o, int reps)
@@ -162,7 +173,7 @@ template <class T> struct PreparedTimingSet
         }
         const auto t1 = Clock::now();
         if (n > 0)
-            nsPerShape = std::chrono::duration<double, std::nano>(t1 - t0).count() / double(2 * n);
+            nsPerShape = nsBetween(t0, t1) / double(2 * n);
     }
 };
 
@@ -217,7 +228,7 @@ double timePassBatch(const TimingSet<T>& set, const gjk::Options& o, int reps,
     }
     const auto t1 = Clock::now();
     g_timingSink = g_timingSink + acc;
-    return std::chrono::duration<double, std::nano>(t1 - t0).count();
+    return nsBetween(t0, t1);
 }
 
 // The loop's state (the contiguous inputs, a batch's caches and outputs), owned by its pass.
@@ -305,7 +316,7 @@ TimedLoop variantLoop(const std::vector<const PreparedCase*>& cases, const Varia
         return inProcessLoop(cases, v);
     if (v.plugin)
         return sharedLibraryLoop(cases, v, cfg, pluginTimeoutSeconds);
-    const bool warm = v.start == Start::Warm || cfg.warm;
+    const bool warm = timedWarm(v, cfg);
     return v.scalar == Scalar::Float ? loopT<float>(cases, v.options, warm, v.batch)
                                      : loopT<double>(cases, v.options, warm, v.batch);
 }
@@ -315,7 +326,7 @@ TimedLoop preparedLoop(const std::vector<const PreparedCase*>& cases, const Vari
 {
     if (!hasPreparedForm(v))
         return {};
-    const bool warm = v.start == Start::Warm || cfg.warm;
+    const bool warm = timedWarm(v, cfg);
     return v.scalar == Scalar::Float ? preparedLoopT<float>(cases, v.options, warm)
                                      : preparedLoopT<double>(cases, v.options, warm);
 }
