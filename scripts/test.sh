@@ -23,8 +23,8 @@ ctest --preset release -j "$jobs" --output-junit "$PWD/build/release/ctest-junit
 
 cmake --preset sanitize -DGJK2D_BUILD_VALIDATION=ON >/dev/null
 cmake --build --preset sanitize -j "$jobs"
-# Labels flags and cross build with their own compilers and flags, release-only repeats a release
-# comparison (tests/plugins/CMakeLists.txt): each runs once, above.
+# Labels flags and cross build with their own compilers and flags; release-only gives the same answer
+# from either build (docs/testing.md, "The tests"): each runs once, above.
 ctest --preset sanitize -j "$jobs" -LE "flags|release-only|cross|browser" \
   --output-junit "$PWD/build/sanitize/ctest-junit.xml" --test-output-size-passed 1000000
 

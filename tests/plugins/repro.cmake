@@ -47,6 +47,11 @@ foreach(entry IN LISTS _repros)
                    --node-path ${PROJECT_SOURCE_DIR}/build/npm/planck/node_modules
                    --work ${_ci}/repro-${_k}-${shown} ${more})
   set_tests_properties("${name}" PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 600)
+  # A peer's program against the report: the same comparison from either build. The first (planck,
+  # with its bug report) also runs under the sanitizers, for repro's own code; the rest once.
+  if(_k GREATER 1)
+    set_tests_properties("${name}" PROPERTIES LABELS release-only)
+  endif()
 endforeach()
 # What repro refuses, each with exit 2 and one line (docs/cli.md, "Exit codes"): a
 # user's plugin, which has no template, and one of gjk2d's own variants.
