@@ -2,9 +2,8 @@
 # Instructions per cold query, per stage, under callgrind: gjk2d's query (double or float) or Box2D
 # v3's b2ShapeDistance on the same cases (docs/speed.md, "The cold query on engine data").
 #   scripts/stage_profile/stage_profile.sh OUTDIR CASES.txt d|f|b [REPS]
-# CASES.txt: a case file converted by ../shared/anchors/json2txt.py. The driver is built with the
-# release build's flags (-O3 -ffp-contract=off -DNDEBUG) plus -g, Box2D with the anchors' harness
-# flags (-O2 -ffp-contract=off -DNDEBUG) plus -g. Needs g++, gcc, valgrind, addr2line and the
+# CASES.txt: a case file converted by ../shared/anchors/json2txt.py. The driver is built by
+# build_driver.sh (its flags). Needs g++, gcc, valgrind, addr2line and the
 # anchors' directory beside the repository (ANCHORS to point elsewhere); GJK_INCLUDE profiles
 # another revision's headers (e.g. a `git archive` of it). Exit codes: 0 printed,
 # 2 bad usage or a missing tool or file.
@@ -18,13 +17,7 @@ for tool in g++ gcc valgrind addr2line python3; do
   command -v $tool >/dev/null || { echo "stage_profile: $tool not found" >&2; exit 2; }
 done
 [[ -f $anchors/cases.h && -f $cases ]] || { echo "stage_profile: no $anchors/cases.h or $cases" >&2; exit 2; }
-mkdir -p "$out"
-b2=$anchors/box2d-v3
-for f in distance math_functions core; do
-  gcc -std=c17 -O2 -g -ffp-contract=off -DNDEBUG -I"$b2/include" -I"$b2/src" -c "$b2/src/$f.c" -o "$out/box2d_$f.o"
-done
-g++ -std=c++20 -O3 -g -ffp-contract=off -DNDEBUG -I"$gjk_include" -I"$b2/include" -I"$anchors" \
-  "$root/scripts/stage_profile/stage_driver.cpp" "$out"/box2d_{distance,math_functions,core}.o -o "$out/stage_driver" -lm
+ANCHORS=$anchors GJK_INCLUDE=$gjk_include "$root/scripts/stage_profile/build_driver.sh" "$out"
 "$out/stage_driver" "$mode" "$cases" 1
 valgrind --tool=callgrind --dump-instr=yes --callgrind-out-file="$out/callgrind.$mode" \
   "$out/stage_driver" "$mode" "$cases" "$reps" >/dev/null 2>&1

@@ -7,8 +7,8 @@ and the world frame are the query's contract.
     scripts/stage_profile/weigh_parts.py OUTDIR CASES.txt
 
 CASES.txt: cases as stage_profile.sh takes them (random_cases.py writes them). Builds
-stage_driver.cpp once per part as stage_profile.sh does (needs the anchors beside the repository,
-ANCHORS to point elsewhere), runs `dw` (10 passes) and `d` (3 passes) under callgrind. Each edit
+stage_driver.cpp once per part with build_driver.sh on the edited headers (needs the anchors beside
+the repository, ANCHORS to point elsewhere), runs `dw` (10 passes) and `d` (3 passes) under callgrind. Each edit
 must match the headers exactly: when the code it names has changed, the script stops (exit 1) rather
 than weigh something else. Exit codes: 0 printed, 1 an edit no longer matches, 2 bad usage or a
 missing tool or file.
@@ -21,6 +21,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BUILD = os.path.join(ROOT, "scripts", "stage_profile", "build_driver.sh")
 
 # Each part: (file, text, replacement) edits, applied to a copy of gjk/include/gjk2d.
 RANGE_CHECKS = [
@@ -113,7 +114,7 @@ def main():
         return 2
     out, cases = sys.argv[1], os.path.abspath(sys.argv[2])
     anchors = os.environ.get("ANCHORS", os.path.join(ROOT, "..", "shared", "anchors"))
-    for tool in ("g++", "gcc", "valgrind", "callgrind_annotate"):
+    for tool in ("valgrind", "callgrind_annotate"):
         if shutil.which(tool) is None:
             print(f"weigh_parts: {tool} not found", file=sys.stderr)
             return 2
@@ -121,28 +122,6 @@ def main():
         print(f"weigh_parts: no {anchors}/cases.h or {cases}", file=sys.stderr)
         return 2
     os.makedirs(out, exist_ok=True)
-    b2 = os.path.join(anchors, "box2d-v3")
-    objects = []
-    for f in ("distance", "math_functions", "core"):
-        obj = os.path.join(out, f"box2d_{f}.o")
-        subprocess.run(
-            [
-                "gcc",
-                "-std=c17",
-                "-O2",
-                "-g",
-                "-ffp-contract=off",
-                "-DNDEBUG",
-                f"-I{b2}/include",
-                f"-I{b2}/src",
-                "-c",
-                f"{b2}/src/{f}.c",
-                "-o",
-                obj,
-            ],
-            check=True,
-        )
-        objects.append(obj)
     count = sum(1 for line in open(cases) if line.startswith("case "))
     print("| taken out | warm | cold |")
     print("|---|---|---|")
@@ -150,26 +129,9 @@ def main():
         where = os.path.join(out, f"part{index}")
         os.makedirs(where, exist_ok=True)
         include = copy_headers(where, edits)
+        env = dict(os.environ, ANCHORS=anchors, GJK_INCLUDE=include)
+        subprocess.run([BUILD, where], check=True, env=env)
         driver = os.path.join(where, "stage_driver")
-        subprocess.run(
-            [
-                "g++",
-                "-std=c++20",
-                "-O3",
-                "-g",
-                "-ffp-contract=off",
-                "-DNDEBUG",
-                f"-I{include}",
-                f"-I{b2}/include",
-                f"-I{anchors}",
-                os.path.join(ROOT, "scripts", "stage_profile", "stage_driver.cpp"),
-                *objects,
-                "-o",
-                driver,
-                "-lm",
-            ],
-            check=True,
-        )
         warm = instructions(driver, "dw", cases, 10, "queryWarm<double>(gjk", where) / (10 * count)
         cold = instructions(driver, "d", cases, 3, "query<double>(gjk", where) / (3 * count)
         print(f"| {name} | {warm:.1f} | {cold:.1f} |")
