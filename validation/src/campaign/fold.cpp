@@ -111,10 +111,9 @@ struct EvaluatedChunk
 };
 
 EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int threads,
-                             Progress& progress, PhaseSeconds& seconds)
+                             Progress& progress, PhaseClock& clock, PhaseSeconds& seconds)
 {
-    auto t0 = Clock::now(); // the outcomes' allocation is the exact phase's
-    EvaluatedChunk e;
+    EvaluatedChunk e; // the outcomes' allocation is the exact phase's
     e.outcomes.resize(chunk.size());
     e.prepared.resize(chunk.size());
     for (std::size_t i = 0; i < chunk.size(); ++i)
@@ -130,7 +129,7 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
                             e.prepared[i] = prepare(chunk.cases[i]);
                     }
                 });
-    auto t1 = Clock::now();
+    clock.lap(seconds.exact);
     // Plugin variants, in child processes, between the parallel phases (no worker thread runs).
     answerPluginVariants(chunk.cases.data(), e.prepared.data(), e.outcomes.data(), chunk.size(),
                          ctx);
@@ -145,13 +144,10 @@ EvaluatedChunk evaluateChunk(const CaseChunk& chunk, const EvalContext& ctx, int
                     }
                     runVariants(chunk.cases[i], e.prepared[i], ctx, o);
                 });
-    auto t2 = Clock::now();
+    clock.lap(seconds.gjk);
     parallelFor(chunk.size(), threads, none,
                 [&](std::size_t i) { checkWitnesses(chunk.cases[i], ctx, e.outcomes[i]); });
-    auto t3 = Clock::now();
-    seconds.exact += elapsed(t0, t1);
-    seconds.gjk += elapsed(t1, t2);
-    seconds.witness += elapsed(t2, t3);
+    clock.lap(seconds.witness);
     return e;
 }
 
@@ -256,12 +252,13 @@ void addSeconds(PhaseSeconds& to, const PhaseSeconds& s)
 
 // One input (state.families[inputIndex]), streamed: its cases are generated or read chunk by
 // chunk, and the plan's chunks are evaluated, then folded by `folder`. state.seconds is the
-// folder's: the phases' seconds measured here go to it with each fold (`unsent` holds those not
-// sent yet: skipped chunks', the stream's end), so no two threads write it.
+// folder's: the phases' seconds lapped here (on state.clock) go to it with each fold (`unsent`
+// holds those not sent yet: skipped chunks', the stream's end), so no two threads write it.
 void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPlan& plan,
               const EvalContext& ctx, int threads, Progress& progress, CampaignState& state,
               ChunkFolder& folder, PhaseSeconds& unsent, std::ostream* perCase)
 {
+    PhaseClock& clock = state.clock;
     FamilyResult& r = state.families[inputIndex];
     const std::size_t chunkCases = std::max<std::size_t>(1, config.chunkCases);
     const auto skip = [&](std::size_t chunk)
@@ -269,13 +266,12 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
         const ChunkPosition at{inputIndex, chunk};
         return !plan.shard.owns(at.input, at.chunk) || at < plan.resumeAt;
     };
-    auto t = Clock::now();
     std::size_t seen = 0; // cases up to the end of the last chunk passed on (for the progress)
     r.input->stream(
         chunkCases,
         [&](CaseChunk& chunk)
         {
-            unsent.inputs += elapsed(t, Clock::now());
+            clock.lap(unsent.inputs);
             const std::size_t j = chunk.first / chunkCases;
             if (!r.input->counted) // a case file counted as it is read
                 progress.grow(chunk.size());
@@ -285,8 +281,7 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
                 progress.add(chunk.size());
             else
             {
-                EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, unsent);
-                const auto tFold = Clock::now();
+                EvaluatedChunk e = evaluateChunk(chunk, ctx, threads, progress, clock, unsent);
                 // Everything by value or bound to objects that outlive the folder: the fold may
                 // still run after this input's stream has returned.
                 folder.submit(
@@ -300,9 +295,8 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
                             pl.afterChunk({inputIndex, j + 1});
                     });
                 unsent = {};
-                unsent.fold = elapsed(tFold, Clock::now()); // the next fold adds it
+                clock.lap(unsent.fold); // the next fold adds it
             }
-            t = Clock::now();
         },
         skip, threads);
     CampaignInput& in = state.inputs[inputIndex];
@@ -312,7 +306,7 @@ void runInput(std::size_t inputIndex, const CampaignConfig& config, const FoldPl
         in.counted = true;
     }
     progress.add(in.count - std::min(seen, in.count));
-    unsent.inputs += elapsed(t, Clock::now());
+    clock.lap(unsent.inputs);
 }
 
 // --- Timing: single-threaded, apart from everything else ---------------------------------------
@@ -367,26 +361,27 @@ CampaignState foldCampaign(const CampaignConfig& config, std::vector<CampaignInp
         plan.resumeAt = resumeFrom(state, config, shard, ctx);
     if (!config.checkpointDir.empty())
         plan.afterChunk = checkpointAfterChunk(state, config, shard, threads);
+    PhaseSeconds unsent;
     {
         Progress progress(config.progress, "cases", total);
-        PhaseSeconds unsent;
         ChunkFolder folder(threads >= 2);
-        unsent.setup = elapsed(commandStart(), Clock::now());
+        state.clock.last = commandStart();
+        state.clock.lap(unsent.setup);
         for (std::size_t i = 0; i < state.inputs.size(); ++i)
             runInput(i, config, plan, ctx, threads, progress, state, folder, unsent, perCase);
-        const auto tLast = Clock::now();
         folder.finish();
-        unsent.fold += elapsed(tLast, Clock::now());
-        addSeconds(state.seconds, unsent);
     }
+    state.clock.lap(unsent.fold);
+    addSeconds(state.seconds, unsent);
     // A shard times only the inputs whose first chunk it holds: the merge takes those.
     for (std::size_t i = 0; i < state.families.size(); ++i)
         if (!shard.owns(i, 0))
             state.families[i].timing = {};
-    const auto tTiming = Clock::now();
-    if (config.timing)
+    if (config.timing) // untimed, the phase stays 0 (the report page reads it so)
+    {
         timeVariants(state, config, ctx);
-    state.seconds.timing = elapsed(tTiming, Clock::now());
+        state.clock.lap(state.seconds.timing);
+    }
     return state;
 }
 

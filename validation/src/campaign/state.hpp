@@ -34,6 +34,21 @@ struct PhaseSeconds
     double setup = 0, inputs = 0, exact = 0, gjk = 0, witness = 0, fold = 0, timing = 0, report = 0;
 };
 
+// The driving thread's wall time cut into phases with no gap between them: each lap gives one
+// phase the time since the lap before, so the phases add up to the time from the first `last` to
+// the last lap by construction. (Timing each phase on its own clock left the moments between them
+// to no phase: 0.9 % of a 0.46 s run on a loaded CI machine, stop 65.)
+struct PhaseClock
+{
+    Clock::time_point last;
+    void lap(double& phase)
+    {
+        const auto now = Clock::now();
+        phase += elapsed(last, now);
+        last = now;
+    }
+};
+
 // The valid cases of a family kept for the timed passes (the first kTimingSampleCases), and which
 // variants run on each.
 struct TimingSample
@@ -66,6 +81,7 @@ struct CampaignState
     std::vector<FamilyResult> families;
     std::vector<RejectedCase> rejected; // the first kMaxRejectedListed in case order
     PhaseSeconds seconds;
+    PhaseClock clock; // a fold's: its last lap is where the report phase begins
 };
 
 // Which chunks a fold evaluates (the shard's, from where a checkpoint left off), and what it does

@@ -252,7 +252,6 @@ Json contextOf(const CampaignState& state, const CampaignConfig& config, int thr
 Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, const EvalContext& ctx,
                         int threads, double seconds)
 {
-    const auto tReport = Clock::now();
     const std::size_t baseline = baselineIndex(ctx);
     setTimingRatios(state, baseline);
 
@@ -286,12 +285,12 @@ Campaign finishCampaign(CampaignState& state, const CampaignConfig& config, cons
     report["worst"] = std::move(worst);
     report["exit_code"] = camp.exitCode;
     report["passed"] = camp.exitCode == kExitPass;
-    if (seconds == kSinceCommandStart) // the phases and the total end now, together
+    if (seconds == kSinceCommandStart) // the report's lap: the phases and the total end together
     {
-        const auto now = Clock::now();
         Json& e = report["context"]["elapsed_s"];
-        e["report"] = state.seconds.report = elapsed(tReport, now);
-        e["total"] = elapsed(commandStart(), now);
+        state.clock.lap(state.seconds.report);
+        e["report"] = state.seconds.report;
+        e["total"] = elapsed(commandStart(), state.clock.last);
     }
     camp.report = std::move(report);
     return camp;
