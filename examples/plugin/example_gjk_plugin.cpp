@@ -67,7 +67,8 @@ const gjk2d_implementation kImplementations[] = {
      GJK2D_ACCEPTS_RADIUS, 0, 0, &exampleNaive, nullptr},
 };
 
-const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations};
+// contracts: nullptr holds both implementations to gjk2d's own (docs/plugin-abi.md).
+const gjk2d_plugin kPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kImplementations, nullptr};
 
 } // namespace
 

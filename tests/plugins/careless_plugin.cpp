@@ -49,7 +49,7 @@ const gjk2d_implementation kCareless[] = {
      GJK2D_SCALAR_DOUBLE, GJK2D_ACCEPTS_RADIUS, 0, 0, nullptr, &careless},
 };
 
-const gjk2d_plugin kCarelessPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kCareless};
+const gjk2d_plugin kCarelessPlugin = {GJK2D_PLUGIN_ABI_VERSION, 1, kCareless, nullptr};
 
 } // namespace
 

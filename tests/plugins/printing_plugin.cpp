@@ -43,7 +43,7 @@ const gjk2d_implementation kPrinting[] = {
     {"printing-naive-f32", "the example's example-naive-f32, printing on every call",
      GJK2D_SCALAR_FLOAT, GJK2D_ACCEPTS_RADIUS, 0, 0, &printingNaive, nullptr},
 };
-const gjk2d_plugin kPrintingPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kPrinting};
+const gjk2d_plugin kPrintingPlugin = {GJK2D_PLUGIN_ABI_VERSION, 2, kPrinting, nullptr};
 } // namespace
 
 extern "C" GJK2D_PLUGIN_EXPORT const gjk2d_plugin* gjk2d_plugin_describe(void)

@@ -111,7 +111,7 @@ const gjk2d_plugin kPlugin = {
 #else
     GJK2D_PLUGIN_ABI_VERSION,
 #endif
-    1, kImplementations};
+    1, kImplementations, nullptr};
 
 } // namespace
 
